@@ -1,0 +1,38 @@
+// `tactile`: the headless twin of the workbench. Verbs follow DESIGN.md section 6.
+#include <cstdio>
+#include <exception>
+
+#include "app/cli/cli_common.h"
+
+int main(int argc, char** argv) {
+  using namespace tactile::cli;
+  CLI::App app{
+      "tactile: simulate, import, label, train and evaluate tactile-navigation runs.\n"
+      "Run 'tactile VERB --help' for the options of a verb."};
+  app.name("tactile");
+  app.require_subcommand(1, 1);
+  app.fallthrough(false);
+
+  CLI::App* bench = app.add_subcommand("bench", "Measure the speed of the core pieces");
+  bench->require_subcommand(1, 1);
+
+  registerRunVerbs(app, *bench);
+  registerSimVerbs(app, *bench);
+  registerLearnVerbs(app, *bench);
+  registerStorageVerbs(app, *bench);
+
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::CallForHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForAllHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForVersion& e) {
+    return app.exit(e);
+  } catch (const CLI::ParseError& e) {
+    printError(e.what());
+    std::fputs("Run 'tactile --help' or 'tactile VERB --help' for usage.\n", stderr);
+    return kExitUsage;
+  }
+  return lastExitCode();
+}
