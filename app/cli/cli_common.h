@@ -38,6 +38,7 @@ CLI::App* addPlannedVerb(CLI::App& parent, const std::string& name, const std::s
 void registerRunVerbs(CLI::App& app, CLI::App& bench);
 void registerSimVerbs(CLI::App& app, CLI::App& bench);
 void registerLearnVerbs(CLI::App& app, CLI::App& bench);
+void registerFitVerbs(CLI::App& app, CLI::App& bench);
 void registerStorageVerbs(CLI::App& app, CLI::App& bench);
 
 }  // namespace tactile::cli

@@ -1,4 +1,4 @@
-// Learning verbs: train, sweep, report, classify, fit, bench learn.
+// Learning verbs: train, sweep, report, classify.
 #include "app/cli/cli_common.h"
 
 namespace tactile::cli {
@@ -8,8 +8,6 @@ void registerLearnVerbs(CLI::App& app, CLI::App& bench) {
   addPlannedVerb(app, "sweep", "Sweep model order, covariance form and variance floor");
   addPlannedVerb(app, "report", "Confusion matrices and rate tables of a sweep or model");
   addPlannedVerb(app, "classify", "Classify each step and group of a run with a model");
-  addPlannedVerb(app, "fit", "Train and test a classifier on feature-table CSV files");
-  addPlannedVerb(bench, "learn", "Fit time against error over model orders and forms");
 }
 
 }  // namespace tactile::cli

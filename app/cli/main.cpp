@@ -19,6 +19,7 @@ int main(int argc, char** argv) {
   registerRunVerbs(app, *bench);
   registerSimVerbs(app, *bench);
   registerLearnVerbs(app, *bench);
+  registerFitVerbs(app, *bench);
   registerStorageVerbs(app, *bench);
 
   try {
