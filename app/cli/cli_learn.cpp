@@ -3,7 +3,7 @@
 
 namespace tactile::cli {
 
-void registerLearnVerbs(CLI::App& app, CLI::App& bench) {
+void registerLearnVerbs(CLI::App& app, CLI::App& /*bench*/) {
   addPlannedVerb(app, "train", "Train per-group classifiers on labelled runs");
   addPlannedVerb(app, "sweep", "Sweep model order, covariance form and variance floor");
   addPlannedVerb(app, "report", "Confusion matrices and rate tables of a sweep or model");
