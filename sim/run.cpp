@@ -6,8 +6,7 @@
 
 namespace tactile {
 namespace {
-constexpr std::array<std::string_view, 4> kOutcomeNames{"unknown", "success", "gave-up",
-                                                        "timeout"};
+constexpr std::array<std::string_view, 4> kOutcomeNames{"unknown", "success", "gave-up", "timeout"};
 }  // namespace
 
 std::string_view runOutcomeName(RunOutcome outcome) {
@@ -82,7 +81,8 @@ RunOutcome RunData::outcome() const {
 }
 
 void RunData::reserve(std::size_t steps, bool withTruth) {
-  for (auto* column : {&x, &y, &theta, &v, &omega}) column->reserve(steps);
+  for (auto* column : {&x, &y, &theta, &v, &omega})
+    column->reserve(steps);
   blocked.reserve(steps);
   sensors.reserve(steps * kValuesPerStep);
   if (withTruth) truth.reserve(steps * kGroupCount);
@@ -101,8 +101,8 @@ void RunData::appendStep(double px, double py, double ptheta, double pv, double 
 }
 
 bool operator==(const RunData& a, const RunData& b) {
-  return a.metadata == b.metadata && a.x == b.x && a.y == b.y && a.theta == b.theta &&
-         a.v == b.v && a.omega == b.omega && a.blocked == b.blocked && a.sensors == b.sensors &&
+  return a.metadata == b.metadata && a.x == b.x && a.y == b.y && a.theta == b.theta && a.v == b.v &&
+         a.omega == b.omega && a.blocked == b.blocked && a.sensors == b.sensors &&
          a.truth == b.truth && a.extraColumns == b.extraColumns && a.extraValues == b.extraValues;
 }
 

@@ -60,7 +60,9 @@ class RunData {
   double shear(std::size_t step, int sensor) const {
     return sensors[step * kValuesPerStep + shearOffset(sensor)];
   }
-  const double* stepSensors(std::size_t step) const { return sensors.data() + step * kValuesPerStep; }
+  const double* stepSensors(std::size_t step) const {
+    return sensors.data() + step * kValuesPerStep;
+  }
   ContactClass truthAt(std::size_t step, SensorGroup g) const {
     return truth[step * kGroupCount + groupIndex(g)];
   }

@@ -1,12 +1,644 @@
 #include "sim/run_csv.h"
 
+#include <unistd.h>
+#include <array>
+#include <atomic>
+#include <cerrno>
+#include <charconv>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <string>
+#include <system_error>
+
+#include "sim/text_parse.h"
+
 namespace tactile {
-// Placeholder while the reader is written.
-std::string RunCsvError::toString() const { return file + ":" + std::to_string(line) + ": " + message; }
-RunCsvResult parseRunCsv(std::string_view, std::string_view f, const ProgressFn&) { return RunCsvError{std::string(f), 0, {}, 0, "not implemented"}; }
-RunCsvResult readRunCsv(const std::filesystem::path& p, const ProgressFn&) { return RunCsvError{p.string(), 0, {}, 0, "not implemented"}; }
-std::string formatRunCsv(const RunData&) { return {}; }
-std::string writeRunCsv(const RunData&, const std::filesystem::path&) { return "not implemented"; }
-bool readFileText(const std::filesystem::path&, std::string&, std::string& e) { e = "not implemented"; return false; }
-std::string writeFileAtomically(const std::filesystem::path&, std::string_view) { return "not implemented"; }
+namespace {
+
+enum class ColumnKind : std::uint8_t {
+  Step,
+  X,
+  Y,
+  Theta,
+  V,
+  Omega,
+  Blocked,
+  Normal,
+  Shear,
+  Truth,
+  Extra
+};
+
+struct Column {
+  ColumnKind kind;
+  int index;  // sensor, group or extra-column index
+  std::string name;
+};
+
+constexpr std::array<std::string_view, 7> kPoseColumns{"step", "x",     "y",      "theta",
+                                                       "v",    "omega", "blocked"};
+
+std::string truthColumnName(int group) {
+  return "truth_" + std::string(kSensorGroups[group].shortName);
+}
+
+// Maps a header name to its column role; false for a name that is not part of version 1.
+bool classifyColumn(std::string_view name, Column& out) {
+  for (std::size_t i = 0; i < kPoseColumns.size(); ++i) {
+    if (name == kPoseColumns[i]) {
+      out.kind = static_cast<ColumnKind>(i);
+      out.index = 0;
+      return true;
+    }
+  }
+  if (name.size() >= 2 && (name[0] == 'n' || name[0] == 's')) {
+    std::int64_t sensor = -1;
+    const std::string_view digits = name.substr(1);
+    // No leading zeros or signs: "n03" is not a column name.
+    if (parseInteger(digits, sensor) && sensor >= 0 && sensor < kSensorCount &&
+        std::to_string(sensor) == digits) {
+      out.kind = name[0] == 'n' ? ColumnKind::Normal : ColumnKind::Shear;
+      out.index = static_cast<int>(sensor);
+      return true;
+    }
+  }
+  if (name.starts_with("truth_")) {
+    for (int g = 0; g < kGroupCount; ++g) {
+      if (name.substr(6) == kSensorGroups[g].shortName) {
+        out.kind = ColumnKind::Truth;
+        out.index = g;
+        return true;
+      }
+    }
+    return false;
+  }
+  if (name.starts_with("x_") && name.size() > 2) {
+    out.kind = ColumnKind::Extra;
+    return true;
+  }
+  return false;
+}
+
+std::string shown(std::string_view text) {
+  constexpr std::size_t kMaxShown = 40;
+  std::string out = "'";
+  out.append(text.substr(0, kMaxShown));
+  if (text.size() > kMaxShown) out += "...";
+  out += "'";
+  return out;
+}
+
+std::string_view trim(std::string_view s) {
+  while (!s.empty() && (s.front() == ' ' || s.front() == '\t'))
+    s.remove_prefix(1);
+  while (!s.empty() && (s.back() == ' ' || s.back() == '\t'))
+    s.remove_suffix(1);
+  return s;
+}
+
+// Walks the text one physical line at a time; strips "\n" or "\r\n".
+class LineCursor {
+ public:
+  explicit LineCursor(std::string_view text) : text_(text) {}
+
+  bool atEnd() const { return pos_ >= text_.size(); }
+  std::size_t lineNumber() const { return line_; }
+  std::size_t offset() const { return pos_; }
+  bool lastHadNewline() const { return hadNewline_; }
+  bool nextStartsWith(char c) const { return pos_ < text_.size() && text_[pos_] == c; }
+
+  std::string_view next() {
+    const char* begin = text_.data() + pos_;
+    const std::size_t remaining = text_.size() - pos_;
+    const void* nl = std::memchr(begin, '\n', remaining);
+    std::size_t length = nl ? static_cast<const char*>(nl) - begin : remaining;
+    pos_ += length + (nl ? 1 : 0);
+    hadNewline_ = nl != nullptr;
+    ++line_;
+    if (nl && length > 0 && begin[length - 1] == '\r') --length;
+    return {begin, length};
+  }
+
+  // True when every remaining line is empty (trailing blank lines are tolerated).
+  bool onlyBlankLinesLeft() const {
+    for (std::size_t i = pos_; i < text_.size(); ++i) {
+      if (text_[i] != '\n' && text_[i] != '\r') return false;
+    }
+    return true;
+  }
+
+ private:
+  std::string_view text_;
+  std::size_t pos_ = 0;
+  std::size_t line_ = 0;
+  bool hadNewline_ = false;
+};
+
+class Parser {
+ public:
+  Parser(std::string_view text, std::string_view fileName, const ProgressFn& progress)
+      : text_(text), file_(fileName), progress_(progress), cursor_(text) {}
+
+  RunCsvResult parse() {
+    if (text_.starts_with("\xEF\xBB\xBF")) {
+      text_.remove_prefix(3);
+      cursor_ = LineCursor(text_);
+    }
+    if (text_.empty()) return fail(0, "empty file: expected a header line");
+    if (!parseMetadata() || !parseHeader() || !parseRows()) return std::move(*error_);
+    return std::move(run_);
+  }
+
+ private:
+  RunCsvError makeError(std::size_t line, std::string message, int column = -1) const {
+    RunCsvError e;
+    e.file = std::string(file_);
+    e.line = line;
+    if (column >= 0 && column < static_cast<int>(columns_.size())) {
+      e.column = columns_[column].name;
+      e.columnPosition = static_cast<std::size_t>(column) + 1;
+    } else if (column >= 0) {
+      e.columnPosition = static_cast<std::size_t>(column) + 1;
+    }
+    e.message = std::move(message);
+    return e;
+  }
+
+  RunCsvError fail(std::size_t line, std::string message, int column = -1) {
+    return makeError(line, std::move(message), column);
+  }
+
+  bool setError(std::size_t line, std::string message, int column = -1) {
+    error_ = makeError(line, std::move(message), column);
+    return false;
+  }
+
+  bool parseMetadata() {
+    std::vector<double> numbers;
+    while (cursor_.nextStartsWith('#')) {
+      const std::string_view line = cursor_.next();
+      const std::size_t lineNo = cursor_.lineNumber();
+      const std::string_view body = line.substr(1);
+      const std::size_t colon = body.find(':');
+      const std::string_view key =
+          colon == std::string_view::npos ? "" : trim(body.substr(0, colon));
+      if (key.empty() || key.find_first_of(" \t") != std::string_view::npos) {
+        return setError(lineNo, "expected a metadata line '# key: value', found " + shown(line));
+      }
+      const std::string value(trim(body.substr(colon + 1)));
+      for (std::size_t i = 0; i < run_.metadata.size(); ++i) {
+        if (run_.metadata[i].first == key) {
+          return setError(lineNo, "repeated metadata key '" + std::string(key) +
+                                      "' (first given on line " +
+                                      std::to_string(metadataLines_[i]) + ")");
+        }
+      }
+      if (key == "format" && value != kRunFormat) {
+        return setError(lineNo,
+                        "expected format '" + std::string(kRunFormat) + "', found " + shown(value));
+      }
+      double dt = 0.0;
+      if (key == "dt" && !(parseFiniteDouble(value, dt) && dt > 0.0)) {
+        return setError(lineNo,
+                        "expected 'dt' to be a positive number of seconds, found " + shown(value));
+      }
+      if (key == "start" && !parseDoubleList(value, 3, numbers)) {
+        return setError(lineNo,
+                        "expected 'start' as three numbers x,y,theta, found " + shown(value));
+      }
+      if (key == "goal" && !parseDoubleList(value, 2, numbers)) {
+        return setError(lineNo, "expected 'goal' as two numbers x,y, found " + shown(value));
+      }
+      if (key == "outcome" && !parseRunOutcome(value)) {
+        return setError(
+            lineNo,
+            "expected 'outcome' to be success, gave-up, timeout or unknown, found " + shown(value));
+      }
+      run_.metadata.emplace_back(std::string(key), value);
+      metadataLines_.push_back(lineNo);
+    }
+    return true;
+  }
+
+  bool parseHeader() {
+    if (cursor_.atEnd()) {
+      return setError(cursor_.lineNumber(), "expected a header line after the metadata lines");
+    }
+    const std::string_view line = cursor_.next();
+    headerLine_ = cursor_.lineNumber();
+    if (line.empty()) return setError(headerLine_, "expected the header line, found an empty line");
+    std::size_t start = 0;
+    std::array<int, kPoseColumns.size()> poseSeen{};
+    std::array<int, kValuesPerStep> sensorSeen{};
+    std::array<int, kGroupCount> truthSeen{};
+    poseSeen.fill(-1);
+    sensorSeen.fill(-1);
+    truthSeen.fill(-1);
+    while (true) {
+      const std::size_t comma = line.find(',', start);
+      const std::string_view name = line.substr(
+          start, comma == std::string_view::npos ? std::string_view::npos : comma - start);
+      const int position = static_cast<int>(columns_.size());
+      Column column{ColumnKind::Extra, 0, std::string(name)};
+      if (name.empty()) {
+        columns_.push_back(column);
+        return setError(headerLine_, "expected a column name, found an empty field", position);
+      }
+      if (!classifyColumn(name, column)) {
+        columns_.push_back(column);
+        return setError(headerLine_,
+                        "unknown column " + shown(name) +
+                            " (expected step, x, y, theta, v, omega, blocked, n0..n43, s0..s43, "
+                            "truth_<group>, or a name prefixed 'x_')",
+                        position);
+      }
+      int* seen = nullptr;
+      switch (column.kind) {
+        case ColumnKind::Normal:
+          seen = &sensorSeen[normalOffset(column.index)];
+          break;
+        case ColumnKind::Shear:
+          seen = &sensorSeen[shearOffset(column.index)];
+          break;
+        case ColumnKind::Truth:
+          seen = &truthSeen[column.index];
+          break;
+        case ColumnKind::Extra:
+          for (const Column& other : columns_) {
+            if (other.name == name) {
+              columns_.push_back(column);
+              return setError(headerLine_, "duplicate column " + shown(name), position);
+            }
+          }
+          column.index = static_cast<int>(run_.extraColumns.size());
+          run_.extraColumns.emplace_back(name);
+          break;
+        default:
+          seen = &poseSeen[static_cast<std::size_t>(column.kind)];
+      }
+      if (seen != nullptr) {
+        if (*seen >= 0) {
+          columns_.push_back(column);
+          return setError(headerLine_,
+                          "duplicate column " + shown(name) + " (first at position " +
+                              std::to_string(*seen + 1) + ")",
+                          position);
+        }
+        *seen = position;
+      }
+      columns_.push_back(std::move(column));
+      if (comma == std::string_view::npos) break;
+      start = comma + 1;
+    }
+    for (std::size_t i = 0; i < poseSeen.size(); ++i) {
+      if (poseSeen[i] < 0) {
+        return setError(headerLine_, "missing column '" + std::string(kPoseColumns[i]) + "'");
+      }
+    }
+    for (int v = 0; v < kValuesPerStep; ++v) {
+      if (sensorSeen[v] < 0) {
+        return setError(headerLine_, std::string("missing column '") + (v % 2 ? 's' : 'n') +
+                                         std::to_string(v / 2) + "'");
+      }
+    }
+    int truthCount = 0;
+    for (int g = 0; g < kGroupCount; ++g)
+      truthCount += truthSeen[g] >= 0;
+    if (truthCount != 0 && truthCount != kGroupCount) {
+      for (int g = 0; g < kGroupCount; ++g) {
+        if (truthSeen[g] < 0) {
+          return setError(headerLine_, "missing column '" + truthColumnName(g) +
+                                           "' (truth columns come all eight or none)");
+        }
+      }
+    }
+    hasTruth_ = truthCount == kGroupCount;
+    return true;
+  }
+
+  std::string fieldCountMessage(std::size_t found, bool lastLine) const {
+    std::string m =
+        "expected " + std::to_string(columns_.size()) + " fields, found " + std::to_string(found);
+    if (lastLine) m = "truncated last line: " + m;
+    return m;
+  }
+
+  bool parseRows() {
+    // Reserve from the first row's length so long runs do not reallocate repeatedly.
+    const std::size_t remaining = text_.size() - cursor_.offset();
+    std::size_t firstLength = remaining;
+    if (const void* nl = std::memchr(text_.data() + cursor_.offset(), '\n', remaining)) {
+      firstLength = static_cast<const char*>(nl) - (text_.data() + cursor_.offset()) + 1;
+    }
+    const std::size_t estimate = remaining / std::max<std::size_t>(firstLength, 1) + 16;
+    run_.reserve(estimate, hasTruth_);
+    const std::size_t extraCount = run_.extraColumns.size();
+    if (extraCount > 0) run_.extraValues.reserve(estimate * extraCount);
+
+    constexpr std::size_t kProgressBytes = 1 << 20;
+    std::size_t nextProgress = kProgressBytes;
+    std::array<double, kValuesPerStep> values{};
+    std::array<ContactClass, kGroupCount> truth{};
+    std::array<double, 5> pose{};
+    std::size_t step = 0;
+    std::int64_t blocked = 0;
+
+    while (!cursor_.atEnd()) {
+      const std::string_view line = cursor_.next();
+      const std::size_t lineNo = cursor_.lineNumber();
+      if (line.empty()) {
+        if (cursor_.onlyBlankLinesLeft()) break;
+        return setError(lineNo, "empty line between rows (expected a row of " +
+                                    std::to_string(columns_.size()) + " fields)");
+      }
+      if (line.front() == '#') {
+        return setError(lineNo, "metadata line '#' after the header (metadata lines go first)");
+      }
+      const bool lastLine = !cursor_.lastHadNewline();
+      const char* p = line.data();
+      const char* const end = line.data() + line.size();
+      const std::size_t extraBase = run_.extraValues.size();
+      for (std::size_t c = 0; c < columns_.size(); ++c) {
+        const Column& column = columns_[c];
+        const bool lastColumn = c + 1 == columns_.size();
+        // The field runs to the next comma (or the end of the line).
+        const char* fieldEnd = static_cast<const char*>(std::memchr(p, ',', end - p));
+        if (fieldEnd == nullptr) fieldEnd = end;
+        if (fieldEnd == end && !lastColumn) {
+          run_.extraValues.resize(extraBase);
+          return setError(lineNo, fieldCountMessage(c + 1, lastLine), static_cast<int>(c + 1));
+        }
+        if (fieldEnd != end && lastColumn) {
+          std::size_t found = columns_.size();
+          for (const char* q = fieldEnd; q < end; ++q)
+            found += *q == ',';
+          run_.extraValues.resize(extraBase);
+          return setError(lineNo, fieldCountMessage(found, false),
+                          static_cast<int>(columns_.size()));
+        }
+        const std::string_view field(p, fieldEnd - p);
+        p = fieldEnd + 1;
+        if (!parseField(column, field, lineNo, static_cast<int>(c), step, values, truth, pose,
+                        blocked)) {
+          run_.extraValues.resize(extraBase);
+          return false;
+        }
+      }
+      run_.appendStep(pose[0], pose[1], pose[2], pose[3], pose[4], blocked != 0, values.data(),
+                      hasTruth_ ? truth.data() : nullptr);
+      ++step;
+      if (progress_ && cursor_.offset() >= nextProgress) {
+        nextProgress = cursor_.offset() + kProgressBytes;
+        if (!progress_(cursor_.offset(), text_.size())) {
+          return setError(lineNo, "reading cancelled");
+        }
+      }
+    }
+    if (step == 0) {
+      return setError(headerLine_, "no steps: the file has a header but no rows");
+    }
+    if (progress_) progress_(text_.size(), text_.size());
+    return true;
+  }
+
+  bool numberError(std::size_t lineNo, int c, std::string_view field, const char* what) {
+    if (field.empty()) {
+      return setError(lineNo, std::string("expected ") + what + ", found an empty field", c);
+    }
+    return setError(lineNo, std::string("expected ") + what + ", found " + shown(field), c);
+  }
+
+  bool parseNumber(std::string_view field, std::size_t lineNo, int c, double& out) {
+    const char* end = field.data() + field.size();
+    auto [ptr, ec] = std::from_chars(field.data(), end, out, std::chars_format::general);
+    if (ptr != end || field.empty() ||
+        (ec != std::errc() && ec != std::errc::result_out_of_range)) {
+      return numberError(lineNo, c, field, "a number");
+    }
+    if (ec == std::errc::result_out_of_range || !std::isfinite(out)) {
+      return numberError(lineNo, c, field, "a finite number (no NaN or infinity)");
+    }
+    return true;
+  }
+
+  bool parseField(const Column& column, std::string_view field, std::size_t lineNo, int c,
+                  std::size_t step, std::array<double, kValuesPerStep>& values,
+                  std::array<ContactClass, kGroupCount>& truth, std::array<double, 5>& pose,
+                  std::int64_t& blocked) {
+    switch (column.kind) {
+      case ColumnKind::Normal: {
+        double& v = values[normalOffset(column.index)];
+        if (!parseNumber(field, lineNo, c, v)) return false;
+        if (v < 0.0 || v > kMaxNormal) {
+          return numberError(lineNo, c, field, "a normal value in [0, 5]");
+        }
+        return true;
+      }
+      case ColumnKind::Shear: {
+        double& v = values[shearOffset(column.index)];
+        if (!parseNumber(field, lineNo, c, v)) return false;
+        if (v < -kMaxShear || v > kMaxShear) {
+          return numberError(lineNo, c, field, "a shear value in [-5, 5]");
+        }
+        return true;
+      }
+      case ColumnKind::X:
+      case ColumnKind::Y:
+      case ColumnKind::Theta:
+      case ColumnKind::V:
+      case ColumnKind::Omega:
+        return parseNumber(
+            field, lineNo, c,
+            pose[static_cast<std::size_t>(column.kind) - static_cast<std::size_t>(ColumnKind::X)]);
+      case ColumnKind::Step: {
+        std::int64_t value = -1;
+        if (!parseInteger(field, value)) return numberError(lineNo, c, field, "an integer step");
+        if (value != static_cast<std::int64_t>(step)) {
+          return setError(lineNo,
+                          "expected step " + std::to_string(step) +
+                              " (steps count from 0 by 1), found " + shown(field),
+                          c);
+        }
+        return true;
+      }
+      case ColumnKind::Blocked:
+        if (!parseInteger(field, blocked) || (blocked != 0 && blocked != 1)) {
+          return numberError(lineNo, c, field, "0 or 1");
+        }
+        return true;
+      case ColumnKind::Truth: {
+        const std::optional<ContactClass> cls = parseContactClass(field);
+        if (!cls) {
+          return numberError(lineNo, c, field,
+                             "a contact class (NoContact, Wall, Corner, LeavingWall or DeadPath)");
+        }
+        truth[column.index] = *cls;
+        return true;
+      }
+      case ColumnKind::Extra:
+        run_.extraValues.emplace_back(field);
+        return true;
+    }
+    return true;
+  }
+
+  std::string_view text_;
+  std::string_view file_;
+  const ProgressFn& progress_;
+  LineCursor cursor_;
+  RunData run_;
+  std::vector<std::size_t> metadataLines_;
+  std::vector<Column> columns_;
+  std::size_t headerLine_ = 0;
+  bool hasTruth_ = false;
+  std::optional<RunCsvError> error_;
+};
+
+// Appends the shortest decimal text that reads back as exactly `value`.
+inline char* putDouble(char* out, double value) {
+  if (value == 0.0 && !std::signbit(value)) {
+    *out = '0';
+    return out + 1;
+  }
+  return std::to_chars(out, out + 32, value).ptr;
+}
+
+}  // namespace
+
+std::string RunCsvError::toString() const {
+  std::string out = file;
+  if (line > 0) out += ":" + std::to_string(line);
+  out += ": ";
+  if (!column.empty()) {
+    out += "column '" + column + "' (position " + std::to_string(columnPosition) + "): ";
+  } else if (columnPosition > 0) {
+    out += "field " + std::to_string(columnPosition) + ": ";
+  }
+  out += message;
+  return out;
+}
+
+RunCsvResult parseRunCsv(std::string_view text, std::string_view fileName,
+                         const ProgressFn& progress) {
+  return Parser(text, fileName, progress).parse();
+}
+
+RunCsvResult readRunCsv(const std::filesystem::path& path, const ProgressFn& progress) {
+  std::string text;
+  std::string error;
+  if (!readFileText(path, text, error)) {
+    return RunCsvError{path.string(), 0, {}, 0, error};
+  }
+  return parseRunCsv(text, path.string(), progress);
+}
+
+std::string formatRunCsv(const RunData& run) {
+  const std::size_t steps = run.stepCount();
+  const std::size_t extras = run.extraColumns.size();
+  std::string out;
+  out.reserve(256 + steps * (kValuesPerStep * 4 + 64 + (run.hasTruth() ? 64 : 0)));
+  for (const auto& [key, value] : run.metadata) {
+    out += "# ";
+    out += key;
+    out += ": ";
+    out += value;
+    out += '\n';
+  }
+  out += "step,x,y,theta,v,omega,blocked";
+  for (int s = 0; s < kSensorCount; ++s) {
+    out += ",n" + std::to_string(s) + ",s" + std::to_string(s);
+  }
+  if (run.hasTruth()) {
+    for (int g = 0; g < kGroupCount; ++g)
+      out += "," + truthColumnName(g);
+  }
+  for (const std::string& name : run.extraColumns)
+    out += "," + name;
+  out += '\n';
+
+  // Worst case per value: 24 characters plus a comma.
+  std::string line(32 * (8 + kValuesPerStep) + 16 * kGroupCount, '\0');
+  for (std::size_t i = 0; i < steps; ++i) {
+    char* p = line.data();
+    p = std::to_chars(p, p + 24, i).ptr;
+    for (double value : {run.x[i], run.y[i], run.theta[i], run.v[i], run.omega[i]}) {
+      *p++ = ',';
+      p = putDouble(p, value);
+    }
+    *p++ = ',';
+    *p++ = run.blocked[i] ? '1' : '0';
+    const double* values = run.stepSensors(i);
+    for (int v = 0; v < kValuesPerStep; ++v) {
+      *p++ = ',';
+      p = putDouble(p, values[v]);
+    }
+    out.append(line.data(), p - line.data());
+    if (run.hasTruth()) {
+      for (int g = 0; g < kGroupCount; ++g) {
+        out += ',';
+        out += contactClassName(run.truth[i * kGroupCount + g]);
+      }
+    }
+    for (std::size_t e = 0; e < extras; ++e) {
+      out += ',';
+      out += run.extraValues[i * extras + e];
+    }
+    out += '\n';
+  }
+  return out;
+}
+
+std::string writeRunCsv(const RunData& run, const std::filesystem::path& path) {
+  return writeFileAtomically(path, formatRunCsv(run));
+}
+
+bool readFileText(const std::filesystem::path& path, std::string& text, std::string& error) {
+  std::FILE* f = std::fopen(path.c_str(), "rb");
+  if (f == nullptr) {
+    error = std::string("cannot open: ") + std::strerror(errno);
+    return false;
+  }
+  std::error_code ec;
+  const auto size = std::filesystem::file_size(path, ec);
+  text.clear();
+  if (!ec) text.resize(size);
+  std::size_t got = ec ? 0 : std::fread(text.data(), 1, text.size(), f);
+  // Files that grow while read, or report no size (pipes), are read to the end.
+  char buffer[65536];
+  text.resize(got);
+  while (std::size_t n = std::fread(buffer, 1, sizeof buffer, f))
+    text.append(buffer, n);
+  const bool failed = std::ferror(f) != 0;
+  std::fclose(f);
+  if (failed) {
+    error = "read error";
+    return false;
+  }
+  return true;
+}
+
+std::string writeFileAtomically(const std::filesystem::path& path, std::string_view text) {
+  std::filesystem::path temp = path;
+  static std::atomic<unsigned> counter{0};
+  temp += ".tmp-" + std::to_string(::getpid()) + "-" + std::to_string(counter++);
+  std::FILE* f = std::fopen(temp.c_str(), "wb");
+  if (f == nullptr) {
+    return path.string() + ": cannot write: " + std::strerror(errno);
+  }
+  const bool wrote = std::fwrite(text.data(), 1, text.size(), f) == text.size();
+  const bool closed = std::fclose(f) == 0;
+  std::error_code ec;
+  if (!wrote || !closed) {
+    std::filesystem::remove(temp, ec);
+    return path.string() + ": write failed (disk full?)";
+  }
+  std::filesystem::rename(temp, path, ec);
+  if (ec) {
+    std::filesystem::remove(temp, ec);
+    return path.string() + ": cannot replace the file: " + ec.message();
+  }
+  return {};
+}
+
 }  // namespace tactile

@@ -50,7 +50,9 @@ constexpr const GroupInfo& groupInfo(SensorGroup g) {
   return kSensorGroups[static_cast<std::size_t>(g)];
 }
 
-constexpr int groupIndex(SensorGroup g) { return static_cast<int>(g); }
+constexpr int groupIndex(SensorGroup g) {
+  return static_cast<int>(g);
+}
 
 // The group a sensor index belongs to; index must be in [0, kSensorCount).
 constexpr SensorGroup groupOfSensor(int sensor) {
@@ -64,7 +66,11 @@ constexpr SensorGroup groupOfSensor(int sensor) {
 std::optional<SensorGroup> parseSensorGroup(std::string_view name);
 
 // Offset of the normal / shear value of a sensor within one step's kValuesPerStep values.
-constexpr int normalOffset(int sensor) { return 2 * sensor; }
-constexpr int shearOffset(int sensor) { return 2 * sensor + 1; }
+constexpr int normalOffset(int sensor) {
+  return 2 * sensor;
+}
+constexpr int shearOffset(int sensor) {
+  return 2 * sensor + 1;
+}
 
 }  // namespace tactile

@@ -1,0 +1,116 @@
+// Per-class model sets: the Gaussian classifier (thesis 4.3) and the GMM classifier (thesis 4.4).
+//
+// Classes are indices 0..C-1 with names; samples are Eigen matrices with one row per sample
+// (N x D), see gmm.h.
+#pragma once
+
+#include <Eigen/Core>
+
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "analysis/gmm.h"
+#include "sim/progress.h"
+
+namespace tactile {
+
+enum class ClassifierMethod { Gaussian, Gmm };
+// "gaussian", "gmm".
+std::string_view classifierMethodName(ClassifierMethod method);
+std::optional<ClassifierMethod> parseClassifierMethod(std::string_view name);
+
+// Class priors added to the log-likelihoods before the argmax.
+enum class PriorMode { Equal, Empirical };
+std::string_view priorModeName(PriorMode mode);
+std::optional<PriorMode> parsePriorMode(std::string_view name);
+
+struct ClassifierOptions {
+  ClassifierMethod method = ClassifierMethod::Gmm;
+  // GMM settings (method Gmm). For method Gaussian only `floor` is used: 0 = plain unbiased
+  // covariance (singular is an error), > 0 = its eigenvalues clamped at `floor`.
+  GmmOptions gmm;
+  PriorMode priors = PriorMode::Equal;
+  // Gaussian method: also fit a "rest" Gaussian per class (all other classes' samples) for the
+  // one-vs-rest log-likelihood ratio of thesis 4.3.
+  bool oneVsRest = true;
+  int threads = 1;  // 0 = all cores; results do not depend on it
+};
+
+// A trained (or loaded) classifier: one GaussianMixture per class (a one-component NodalFull
+// mixture for the Gaussian method), log priors, and for the Gaussian method optional one-vs-rest
+// "rest" models.
+class ClassModelSet {
+ public:
+  ClassModelSet() = default;
+
+  // Validates and builds a model set: names and models non-empty, same size, all models of the
+  // same dimension; logPriors empty (= equal) or one finite value per class with
+  // logsumexp(logPriors) = 0 within 1e-9; restModels empty or one per class. nullopt + *error on
+  // failure.
+  static std::optional<ClassModelSet> create(ClassifierMethod method,
+                                             std::vector<std::string> classNames,
+                                             std::vector<GaussianMixture> models,
+                                             Eigen::VectorXd logPriors = {},
+                                             std::vector<GaussianMixture> restModels = {},
+                                             std::string* error = nullptr);
+
+  ClassifierMethod method() const { return method_; }
+  int classCount() const { return static_cast<int>(models_.size()); }
+  int dimension() const { return models_.empty() ? 0 : models_.front().dimension(); }
+  const std::vector<std::string>& classNames() const { return names_; }
+  const GaussianMixture& model(int c) const { return models_[static_cast<std::size_t>(c)]; }
+  const std::vector<GaussianMixture>& models() const { return models_; }
+  bool hasRestModels() const { return !restModels_.empty(); }
+  const GaussianMixture& restModel(int c) const { return restModels_[static_cast<std::size_t>(c)]; }
+  const std::vector<GaussianMixture>& restModels() const { return restModels_; }
+  const Eigen::VectorXd& logPriors() const { return logPriors_; }  // always C entries
+
+  // log p(x_n | class c) for every row: out is N x C.
+  void logLikelihoods(const Eigen::MatrixXd& samples, Eigen::MatrixXd& out) const;
+  // argmax_c [log p(x | c) + log P(c)]; ties go to the lowest class index. Every row gets a
+  // defined class even when all likelihoods underflow (log space throughout).
+  std::vector<int> predict(const Eigen::MatrixXd& samples) const;
+  int predictOne(const Eigen::Ref<const Eigen::VectorXd>& x) const;
+  // Same as predict, given precomputed logLikelihoods (N x C).
+  std::vector<int> predictFromLogLikelihoods(const Eigen::MatrixXd& logLik) const;
+  // One-vs-rest log-likelihood ratio with equal priors (thesis 4.3):
+  // L = log N(x | mu_c, Sigma_c) - log N(x | mu_rest, Sigma_rest); L > 0 means class c.
+  // Requires hasRestModels(). out is N.
+  void oneVsRestLogRatio(const Eigen::MatrixXd& samples, int c, Eigen::VectorXd& out) const;
+
+ private:
+  ClassifierMethod method_ = ClassifierMethod::Gmm;
+  std::vector<std::string> names_;
+  std::vector<GaussianMixture> models_;
+  std::vector<GaussianMixture> restModels_;
+  Eigen::VectorXd logPriors_;
+};
+
+struct ClassifierFit {
+  bool ok = false;
+  std::string reason;  // names the class that failed and why
+  ClassModelSet model;
+  std::vector<int> iterations;                 // per class (1 for the Gaussian method)
+  std::vector<bool> converged;                 // per class
+  std::vector<double> trainMeanLogLikelihood;  // per class, nats
+  double fitSeconds = 0.0;                     // wall time of the fits alone
+};
+
+// Trains one model per class. samplesPerClass[c] holds class c's training rows (N_c x D).
+// Errors (ok == false, reason naming the class): no classes, a class with zero samples, a class
+// with fewer samples than dimensions, mismatched dimensions, non-finite values, a failed fit.
+// Progress: (classes done, classes); returning false cancels.
+ClassifierFit trainClassifier(const std::vector<Eigen::MatrixXd>& samplesPerClass,
+                              const std::vector<std::string>& classNames,
+                              const ClassifierOptions& options, const ProgressFn& progress = {});
+
+// Unbiased (N-1) maximum-likelihood Gaussian of thesis 4.3 as a one-component NodalFull mixture:
+// mu = (1/N) sum x_n, Sigma = 1/(N-1) sum (x_n - mu)(x_n - mu)^T (two-pass, centred); if floor > 0
+// the eigenvalues of Sigma are clamped at floor. Fails (nullopt + *error) for N < 2, N < D, or a
+// singular Sigma with floor 0.
+std::optional<GaussianMixture> fitGaussian(const Eigen::MatrixXd& samples, double floor,
+                                           std::string* error = nullptr);
+
+}  // namespace tactile

@@ -1,0 +1,297 @@
+#include "analysis/features.h"
+
+#include <cmath>
+#include <map>
+
+#include "sim/text_parse.h"
+
+namespace tactile::analysis {
+
+std::string_view featureKindName(FeatureKind kind) {
+  switch (kind) {
+    case FeatureKind::Normal:
+      return "normal";
+    case FeatureKind::Magnitude:
+      return "magnitude";
+    case FeatureKind::NormalShear:
+      return "normal+shear";
+  }
+  return "normal";
+}
+
+std::optional<FeatureKind> parseFeatureKind(std::string_view name) {
+  for (FeatureKind k : {FeatureKind::Normal, FeatureKind::Magnitude, FeatureKind::NormalShear}) {
+    if (featureKindName(k) == name) return k;
+  }
+  return std::nullopt;
+}
+
+int featureDimension(SensorGroup group, FeatureKind kind) {
+  const int n = groupInfo(group).sensorCount;
+  return kind == FeatureKind::NormalShear ? 2 * n : n;
+}
+
+bool groupIsZero(const RunData& run, std::size_t step, SensorGroup group) {
+  const GroupInfo& info = groupInfo(group);
+  const double* values = run.stepSensors(step) + normalOffset(info.firstSensor);
+  for (int i = 0; i < 2 * info.sensorCount; ++i) {
+    if (values[i] != 0.0) return false;
+  }
+  return true;
+}
+
+void groupFeatures(const RunData& run, std::size_t step, SensorGroup group, FeatureKind kind,
+                   double* out) {
+  const GroupInfo& info = groupInfo(group);
+  const double* values = run.stepSensors(step);
+  for (int i = 0; i < info.sensorCount; ++i) {
+    const int sensor = info.firstSensor + i;
+    const double n = values[normalOffset(sensor)];
+    const double s = values[shearOffset(sensor)];
+    switch (kind) {
+      case FeatureKind::Normal:
+        out[i] = n;
+        break;
+      case FeatureKind::Magnitude:
+        out[i] = std::hypot(n, s);  // |(n, s)| = sqrt(n^2 + s^2)
+        break;
+      case FeatureKind::NormalShear:
+        out[2 * i] = n;
+        out[2 * i + 1] = s;
+        break;
+    }
+  }
+}
+
+GroupSteps extractGroupSteps(const RunData& run, SensorGroup group, FeatureKind kind) {
+  GroupSteps out;
+  out.group = group;
+  out.kind = kind;
+  const std::size_t steps = run.stepCount();
+  const int d = featureDimension(group, kind);
+  out.features.setZero(static_cast<Eigen::Index>(steps), d);
+  out.isZero.assign(steps, 0);
+  std::vector<double> row(static_cast<std::size_t>(d));
+  for (std::size_t t = 0; t < steps; ++t) {
+    if (groupIsZero(run, t, group)) {
+      out.isZero[t] = 1;
+      continue;
+    }
+    groupFeatures(run, t, group, kind, row.data());
+    for (int j = 0; j < d; ++j)
+      out.features(static_cast<Eigen::Index>(t), j) = row[j];
+  }
+  return out;
+}
+
+namespace {
+
+// Splits one CSV line at commas (label files carry no quoted fields).
+std::vector<std::string_view> splitFields(std::string_view line) {
+  std::vector<std::string_view> fields;
+  while (true) {
+    const std::size_t comma = line.find(',');
+    fields.push_back(line.substr(0, comma));
+    if (comma == std::string_view::npos) break;
+    line.remove_prefix(comma + 1);
+  }
+  return fields;
+}
+
+std::string where(std::string_view file, std::size_t line) {
+  return std::string(file) + ":" + std::to_string(line) + ": ";
+}
+
+}  // namespace
+
+LabelParseResult parseLabelCsv(std::string_view text, std::string_view fileName) {
+  LabelParseResult result;
+  if (text.substr(0, 3) == "\xEF\xBB\xBF") text.remove_prefix(3);
+  std::size_t lineNo = 0;
+  int colRun = -1, colGroup = -1, colFirst = -1, colLast = -1, colClass = -1, colAnnotator = -1;
+  std::size_t columnCount = 0;
+  bool haveHeader = false;
+  auto fail = [&](std::size_t line, const std::string& message) {
+    result.segments.clear();
+    result.error = where(fileName, line) + message;
+    return result;
+  };
+  while (!text.empty()) {
+    const std::size_t nl = text.find('\n');
+    std::string_view line = text.substr(0, nl);
+    text.remove_prefix(nl == std::string_view::npos ? text.size() : nl + 1);
+    ++lineNo;
+    if (!line.empty() && line.back() == '\r') line.remove_suffix(1);
+    if (line.empty()) {
+      if (text.empty()) break;
+      return fail(lineNo, "empty line");
+    }
+    const std::vector<std::string_view> fields = splitFields(line);
+    if (!haveHeader) {
+      haveHeader = true;
+      columnCount = fields.size();
+      for (std::size_t i = 0; i < fields.size(); ++i) {
+        const std::string_view f = fields[i];
+        int* slot = f == "run"          ? &colRun
+                    : f == "group"      ? &colGroup
+                    : f == "first_step" ? &colFirst
+                    : f == "last_step"  ? &colLast
+                    : f == "class"      ? &colClass
+                    : f == "annotator"  ? &colAnnotator
+                                        : nullptr;
+        if (slot == nullptr) {
+          return fail(lineNo, "unknown column '" + std::string(f) + "' (position " +
+                                  std::to_string(i + 1) +
+                                  "); expected run,group,first_step,last_step,class[,annotator]");
+        }
+        if (*slot >= 0) return fail(lineNo, "column '" + std::string(f) + "' appears twice");
+        *slot = static_cast<int>(i);
+      }
+      for (auto [col, name] : {std::pair{colRun, "run"}, std::pair{colGroup, "group"},
+                               std::pair{colFirst, "first_step"}, std::pair{colLast, "last_step"},
+                               std::pair{colClass, "class"}}) {
+        if (col < 0) return fail(lineNo, std::string("missing column '") + name + "'");
+      }
+      continue;
+    }
+    if (fields.size() != columnCount) {
+      return fail(lineNo, "expected " + std::to_string(columnCount) + " fields, found " +
+                              std::to_string(fields.size()));
+    }
+    LabelSegment seg;
+    seg.run = std::string(fields[colRun]);
+    if (seg.run.empty()) return fail(lineNo, "column 'run': empty run name");
+    const std::optional<SensorGroup> group = parseSensorGroup(fields[colGroup]);
+    if (!group) {
+      return fail(lineNo,
+                  "column 'group': expected a group name (F, FLC, L, RLC, B, RRC, R, FRC), "
+                  "found '" +
+                      std::string(fields[colGroup]) + "'");
+    }
+    seg.group = *group;
+    std::int64_t first = 0, last = 0;
+    if (!parseInteger(fields[colFirst], first) || first < 0) {
+      return fail(lineNo, "column 'first_step': expected a step number >= 0, found '" +
+                              std::string(fields[colFirst]) + "'");
+    }
+    if (!parseInteger(fields[colLast], last) || last < first) {
+      return fail(lineNo, "column 'last_step': expected a step number >= first_step, found '" +
+                              std::string(fields[colLast]) + "'");
+    }
+    seg.firstStep = static_cast<std::size_t>(first);
+    seg.lastStep = static_cast<std::size_t>(last);
+    const std::optional<ContactClass> cls = parseContactClass(fields[colClass]);
+    if (!cls) {
+      return fail(lineNo,
+                  "column 'class': expected NoContact, Wall, Corner, LeavingWall or DeadPath, "
+                  "found '" +
+                      std::string(fields[colClass]) + "'");
+    }
+    seg.label = *cls;
+    if (colAnnotator >= 0) seg.annotator = std::string(fields[colAnnotator]);
+    result.segments.push_back(std::move(seg));
+  }
+  if (!haveHeader) return fail(1, "empty label file (expected a header line)");
+  return result;
+}
+
+std::vector<std::optional<ContactClass>> labelsFromTruth(const RunData& run) {
+  std::vector<std::optional<ContactClass>> labels(run.stepCount() * kGroupCount);
+  if (!run.hasTruth()) return labels;
+  for (std::size_t i = 0; i < labels.size(); ++i)
+    labels[i] = run.truth[i];
+  return labels;
+}
+
+std::vector<std::optional<ContactClass>> labelsFromSegments(
+    const RunData& run, std::string_view runName, const std::vector<LabelSegment>& segments,
+    std::string& error) {
+  error.clear();
+  std::vector<std::optional<ContactClass>> labels(run.stepCount() * kGroupCount);
+  for (const LabelSegment& seg : segments) {
+    if (seg.run != runName) continue;
+    if (seg.lastStep >= run.stepCount()) {
+      error = "label segment " + std::string(groupInfo(seg.group).shortName) + " steps " +
+              std::to_string(seg.firstStep) + "-" + std::to_string(seg.lastStep) + " of run '" +
+              std::string(runName) + "' reaches past its last step " +
+              std::to_string(run.stepCount() == 0 ? 0 : run.stepCount() - 1);
+      return {};
+    }
+    for (std::size_t t = seg.firstStep; t <= seg.lastStep; ++t) {
+      labels[t * kGroupCount + static_cast<std::size_t>(groupIndex(seg.group))] = seg.label;
+    }
+  }
+  return labels;
+}
+
+std::vector<ContactClass> GroupDataSet::classesPresent() const {
+  const auto counts = classCounts();
+  std::vector<ContactClass> out;
+  for (int c = 0; c < kContactClassCount; ++c) {
+    if (counts[static_cast<std::size_t>(c)] > 0) out.push_back(static_cast<ContactClass>(c));
+  }
+  return out;
+}
+
+std::array<std::size_t, kContactClassCount> GroupDataSet::classCounts() const {
+  std::array<std::size_t, kContactClassCount> counts{};
+  for (ContactClass c : y)
+    ++counts[static_cast<std::size_t>(c)];
+  return counts;
+}
+
+Eigen::MatrixXd GroupDataSet::rowsOf(ContactClass c) const {
+  const std::size_t n = classCounts()[static_cast<std::size_t>(c)];
+  Eigen::MatrixXd out(static_cast<Eigen::Index>(n), x.cols());
+  Eigen::Index r = 0;
+  for (std::size_t i = 0; i < y.size(); ++i) {
+    if (y[i] == c) out.row(r++) = x.row(static_cast<Eigen::Index>(i));
+  }
+  return out;
+}
+
+GroupDataSet buildGroupDataSet(const std::vector<LabelledRun>& runs, SensorGroup group,
+                               FeatureKind kind) {
+  GroupDataSet out;
+  out.group = group;
+  out.kind = kind;
+  const int d = featureDimension(group, kind);
+  const std::size_t g = static_cast<std::size_t>(groupIndex(group));
+  // First pass counts the samples so the matrix is allocated once.
+  std::size_t samples = 0;
+  for (const LabelledRun& lr : runs) {
+    for (std::size_t t = 0; t < lr.run->stepCount(); ++t) {
+      const std::optional<ContactClass>& label = lr.labels[t * kGroupCount + g];
+      if (!label) {
+        ++out.unlabelledRows;
+      } else if (groupIsZero(*lr.run, t, group)) {
+        ++out.zeroRows;
+        ++out.zeroRowsByClass[static_cast<std::size_t>(*label)];
+      } else {
+        ++samples;
+      }
+    }
+  }
+  out.x.resize(static_cast<Eigen::Index>(samples), d);
+  out.y.reserve(samples);
+  out.runIndex.reserve(samples);
+  out.step.reserve(samples);
+  std::vector<double> row(static_cast<std::size_t>(d));
+  for (std::size_t r = 0; r < runs.size(); ++r) {
+    const LabelledRun& lr = runs[r];
+    for (std::size_t t = 0; t < lr.run->stepCount(); ++t) {
+      const std::optional<ContactClass>& label = lr.labels[t * kGroupCount + g];
+      if (!label || groupIsZero(*lr.run, t, group)) continue;
+      groupFeatures(*lr.run, t, group, kind, row.data());
+      const Eigen::Index i = static_cast<Eigen::Index>(out.y.size());
+      for (int j = 0; j < d; ++j)
+        out.x(i, j) = row[static_cast<std::size_t>(j)];
+      out.y.push_back(*label);
+      out.runIndex.push_back(static_cast<std::uint32_t>(r));
+      out.step.push_back(static_cast<std::uint32_t>(t));
+    }
+  }
+  return out;
+}
+
+}  // namespace tactile::analysis

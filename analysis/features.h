@@ -1,0 +1,114 @@
+// Feature vectors per sensor group and step (DESIGN.md section 5), and labelled data sets built
+// from runs for training and testing the per-group classifiers.
+#pragma once
+
+#include <Eigen/Core>
+
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "sim/contact_class.h"
+#include "sim/run.h"
+#include "sim/sensor_layout.h"
+
+namespace tactile::analysis {
+
+// What a group's feature vector holds at one step.
+enum class FeatureKind : std::uint8_t {
+  Normal,       // the group's n values (default)
+  Magnitude,    // sqrt(n^2 + s^2) per sensor
+  NormalShear,  // n0, s0, n1, s1, ... per sensor
+};
+
+std::string_view featureKindName(FeatureKind kind);  // "normal", "magnitude", "normal+shear"
+std::optional<FeatureKind> parseFeatureKind(std::string_view name);
+
+// Dimension D of a group's feature vector: sensorCount, or 2 * sensorCount for normal+shear.
+int featureDimension(SensorGroup group, FeatureKind kind);
+
+// True when every n and s value of the group is exactly zero at `step`: NoContact by rule, and no
+// model is evaluated for it.
+bool groupIsZero(const RunData& run, std::size_t step, SensorGroup group);
+
+// Writes the group's feature vector at `step` into out[0 .. featureDimension).
+void groupFeatures(const RunData& run, std::size_t step, SensorGroup group, FeatureKind kind,
+                   double* out);
+
+// All steps of one run for one group: one row per step, and the no-contact flag of each step.
+struct GroupSteps {
+  SensorGroup group = SensorGroup::Front;
+  FeatureKind kind = FeatureKind::Normal;
+  Eigen::MatrixXd features;          // stepCount x D (rows of zero groups are zero)
+  std::vector<std::uint8_t> isZero;  // 1 where the group is NoContact by rule
+};
+GroupSteps extractGroupSteps(const RunData& run, SensorGroup group, FeatureKind kind);
+
+// One labelled segment of DESIGN.md section 4: `run,group,first_step,last_step,class[,annotator]`,
+// inclusive step range.
+struct LabelSegment {
+  std::string run;  // run identifier, matched against the names given with the runs
+  SensorGroup group = SensorGroup::Front;
+  std::size_t firstStep = 0;
+  std::size_t lastStep = 0;
+  ContactClass label = ContactClass::NoContact;
+  std::string annotator;
+};
+
+struct LabelParseResult {
+  std::vector<LabelSegment> segments;
+  std::string error;  // "FILE:LINE: ..." when the text was rejected (segments then empty)
+  bool ok() const { return error.empty(); }
+};
+
+// Parses a label CSV (header `run,group,first_step,last_step,class[,annotator]`, columns found by
+// name). Groups accept short or long names; classes the exact spellings; first_step <= last_step.
+LabelParseResult parseLabelCsv(std::string_view text, std::string_view fileName);
+
+// Per-step classes of one run for every group: stepCount * kGroupCount entries in group order,
+// nullopt where no label covers the step. From the run's truth columns...
+std::vector<std::optional<ContactClass>> labelsFromTruth(const RunData& run);
+// ...or from label segments whose `run` equals `runName` (later segments override earlier ones).
+// Segments reaching past the run's last step are an error (returned in `error`).
+std::vector<std::optional<ContactClass>> labelsFromSegments(
+    const RunData& run, std::string_view runName, const std::vector<LabelSegment>& segments,
+    std::string& error);
+
+// A run together with its per-step, per-group labels (as produced by the two functions above).
+struct LabelledRun {
+  const RunData* run = nullptr;
+  std::vector<std::optional<ContactClass>> labels;  // stepCount * kGroupCount
+};
+
+// Labelled samples of one group from many runs. Rows whose group is all zero are not samples
+// (NoContact by rule); they are counted in `zeroRows` (and `zeroRowsByClass` by their label, to
+// score the rule in reports). Unlabelled steps are skipped.
+struct GroupDataSet {
+  SensorGroup group = SensorGroup::Front;
+  FeatureKind kind = FeatureKind::Normal;
+  Eigen::MatrixXd x;                    // N x D
+  std::vector<ContactClass> y;          // N labels
+  std::vector<std::uint32_t> runIndex;  // which LabelledRun each row came from
+  std::vector<std::uint32_t> step;      // which step
+  std::size_t zeroRows = 0;
+  std::array<std::size_t, kContactClassCount> zeroRowsByClass{};
+  std::size_t unlabelledRows = 0;
+
+  std::size_t size() const { return y.size(); }
+  int dimension() const { return static_cast<int>(x.cols()); }
+  // Classes present among the samples, in ContactClass order: only these are modelled.
+  std::vector<ContactClass> classesPresent() const;
+  // Samples per class, indexed by ContactClass.
+  std::array<std::size_t, kContactClassCount> classCounts() const;
+  // Rows of one class, in data order.
+  Eigen::MatrixXd rowsOf(ContactClass c) const;
+};
+
+GroupDataSet buildGroupDataSet(const std::vector<LabelledRun>& runs, SensorGroup group,
+                               FeatureKind kind);
+
+}  // namespace tactile::analysis

@@ -1,0 +1,165 @@
+// Gaussian mixture models fitted by expectation-maximisation (thesis 4.4).
+//
+// Data layout: every function here takes samples as an Eigen::MatrixXd with ONE ROW PER SAMPLE
+// (N x D, Eigen's default column-major storage). EM works on blocks of rows of that matrix with
+// matrix products against all components at once, so no transposed copy is made.
+#pragma once
+
+#include <Eigen/Core>
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "sim/progress.h"
+
+namespace tactile {
+
+// Covariance form of a mixture: nodal = one covariance per component, grand = one covariance
+// shared (tied) by all components; full or diagonal.
+enum class CovarianceForm { NodalFull, NodalDiag, GrandFull, GrandDiag };
+inline constexpr CovarianceForm kAllCovarianceForms[] = {
+    CovarianceForm::NodalFull, CovarianceForm::NodalDiag, CovarianceForm::GrandFull,
+    CovarianceForm::GrandDiag};
+// "nodal-full", "nodal-diag", "grand-full", "grand-diag".
+std::string_view covarianceFormName(CovarianceForm form);
+std::optional<CovarianceForm> parseCovarianceForm(std::string_view name);
+inline bool isDiagonal(CovarianceForm f) {
+  return f == CovarianceForm::NodalDiag || f == CovarianceForm::GrandDiag;
+}
+inline bool isNodal(CovarianceForm f) {
+  return f == CovarianceForm::NodalFull || f == CovarianceForm::NodalDiag;
+}
+
+// How the variance floor is applied after each M-step.
+//  Floor: clamp, sigma^2 = max(sigma^2, floor) on the diagonal entries of diagonal forms and on
+//         the eigenvalues of full forms (the thesis's variance minimum constraint).
+//  Add:   Sigma + floor * I (scikit-learn's reg_covar).
+enum class Regularization { Floor, Add };
+// "floor", "add".
+std::string_view regularizationName(Regularization reg);
+std::optional<Regularization> parseRegularization(std::string_view name);
+
+// Initialisation of EM.
+//  KMeansPlusPlus: k-means++ seeding followed by a few Lloyd iterations, then one M-step from the
+//                  hard assignment (default).
+//  RandomFromData: means are distinct random training rows, weights equal, covariances the data
+//                  covariance; re-initialised when maxIterations do not converge (thesis 4.4.2.1).
+enum class GmmInit { KMeansPlusPlus, RandomFromData };
+// "kmeans++", "random-from-data".
+std::string_view gmmInitName(GmmInit init);
+std::optional<GmmInit> parseGmmInit(std::string_view name);
+
+// Convergence rule on the mean log-likelihood per sample l_t = (1/N) sum_n log p(x_n) of the
+// parameters before M-step t:
+//  Relative: |l_t - l_{t-1}| < tolerance * max(1, |l_t|)   (default)
+//  Absolute: |l_t - l_{t-1}| < tolerance                    (scikit-learn's rule)
+enum class ConvergenceRule { Relative, Absolute };
+std::string_view convergenceRuleName(ConvergenceRule rule);
+std::optional<ConvergenceRule> parseConvergenceRule(std::string_view name);
+
+struct GmmOptions {
+  int components = 1;  // model order M
+  CovarianceForm form = CovarianceForm::NodalDiag;
+  double floor = 1e-3;  // variance floor (Floor) or reg_covar (Add); >= 0
+  Regularization reg = Regularization::Floor;
+  GmmInit init = GmmInit::KMeansPlusPlus;
+  std::uint64_t seed = 1;
+  int restarts = 1;  // independent initialisations; the best final log-likelihood is kept
+  int maxIterations = 100;
+  double tolerance = 1e-3;
+  ConvergenceRule rule = ConvergenceRule::Relative;
+  int kmeansIterations = 10;     // Lloyd iterations after k-means++ seeding (0 = seeding only)
+  int maxReinitialisations = 5;  // RandomFromData: extra attempts when EM does not converge
+  int threads = 1;               // worker threads for E/M steps (0 = all cores); results do not
+                                 // depend on this number
+  bool keepTrace = false;        // record the mean log-likelihood of every iteration
+};
+
+// A fitted or loaded mixture p(x) = sum_i w_i N(x | mu_i, Sigma_i). Immutable after creation;
+// caches the Cholesky factors and log-determinants used by every density evaluation, so a model
+// rebuilt from the same weights/means/covariances (e.g. read from a model file) evaluates to
+// bit-identical densities.
+class GaussianMixture {
+ public:
+  GaussianMixture() = default;  // empty (0 components); logDensity of an empty model is -inf
+
+  // Validates and builds a mixture. weights: K; means: K x D; covariances: K matrices (nodal
+  // forms) or 1 matrix (grand forms), each D x D, symmetric (relative 1e-12), positive definite,
+  // with zero off-diagonal entries for diagonal forms; weights non-negative, summing to 1 within
+  // 1e-9 (they are then renormalised). On failure returns nullopt and sets *error (if given) to a
+  // message naming the offending component.
+  static std::optional<GaussianMixture> create(const Eigen::VectorXd& weights,
+                                               const Eigen::MatrixXd& means,
+                                               const std::vector<Eigen::MatrixXd>& covariances,
+                                               CovarianceForm form, std::string* error = nullptr);
+
+  int components() const { return static_cast<int>(weights_.size()); }
+  int dimension() const { return static_cast<int>(means_.cols()); }
+  CovarianceForm form() const { return form_; }
+  const Eigen::VectorXd& weights() const { return weights_; }
+  const Eigen::MatrixXd& means() const { return means_; }  // K x D, one row per component
+  // K matrices (nodal) or 1 (grand), each D x D (diagonal forms: off-diagonals exactly zero).
+  const std::vector<Eigen::MatrixXd>& covariances() const { return covariances_; }
+  // Covariance of component k (the shared one for grand forms).
+  const Eigen::MatrixXd& covariance(int k) const {
+    return covariances_[isNodal(form_) ? static_cast<std::size_t>(k) : 0];
+  }
+
+  // log p(x) = logsumexp_i [log w_i - D/2 log(2 pi) - 1/2 log|Sigma_i|
+  //                         - 1/2 |L_i^{-1}(x - mu_i)|^2],  Sigma_i = L_i L_i^T.
+  double logDensity(const Eigen::Ref<const Eigen::VectorXd>& x) const;
+  // log p(x_n) for every row of samples (N x D) into out (resized to N). Blocked and vectorised.
+  void logDensities(const Eigen::MatrixXd& samples, Eigen::VectorXd& out) const;
+  // log w_i + log N(x_n | mu_i, Sigma_i) for every row and component: out is N x K.
+  void weightedComponentLogDensities(const Eigen::MatrixXd& samples, Eigen::MatrixXd& out) const;
+  // Posterior p(i | x) of each component for one sample (sums to 1; computed in log space).
+  Eigen::VectorXd responsibilities(const Eigen::Ref<const Eigen::VectorXd>& x) const;
+  // Mean over rows of log p(x_n), in nats (held-out score).
+  double meanLogLikelihood(const Eigen::MatrixXd& samples) const;
+  // Free parameters: (K-1) + K*D + covariance parameters of the form.
+  int parameterCount() const;
+
+ private:
+  friend class GmmEngine;  // EM's internal builder (gmm.cpp)
+  // Computes the cached factors from weights_/means_/covariances_; false if not positive definite.
+  bool buildCache(std::string* error);
+
+  CovarianceForm form_ = CovarianceForm::NodalDiag;
+  Eigen::VectorXd weights_;
+  Eigen::MatrixXd means_;
+  std::vector<Eigen::MatrixXd> covariances_;
+  // Cache. precisionFactors_: D x (K*D), block i is U_i = L_i^{-T} (upper), so that
+  // |L_i^{-1}(x - mu_i)|^2 = |(x - mu_i)^T U_i|^2. For diagonal forms block i is diag(1/sigma).
+  Eigen::MatrixXd precisionFactors_;
+  Eigen::MatrixXd shiftedMeans_;  // 1 x (K*D): block i is mu_i^T U_i
+  Eigen::VectorXd logConstants_;  // log w_i - D/2 log(2 pi) - 1/2 log|Sigma_i|
+};
+
+struct GmmFit {
+  bool ok = false;
+  std::string reason;  // why the fit failed (ok == false), empty otherwise
+  GaussianMixture model;
+  int iterations = 0;              // EM iterations of the kept run
+  int totalIterations = 0;         // over all restarts and re-initialisations
+  bool converged = false;          // the kept run met the tolerance within maxIterations
+  double logLikelihood = 0.0;      // total log-likelihood of the training data under `model`, nats
+  double meanLogLikelihood = 0.0;  // logLikelihood / N
+  double bic = 0.0;                // -2 logL + p ln N
+  double aic = 0.0;                // -2 logL + 2 p
+  int droppedComponents = 0;       // components removed because they lost all their weight
+  std::vector<double> trace;       // options.keepTrace: mean log-likelihood before each M-step,
+                                   // then the final model's, for the kept run
+};
+
+// Fits a mixture to samples (N x D, one row per sample) by EM. Never returns NaN parameters: a
+// fit that cannot succeed (too few samples, non-finite input, singular covariance with floor 0,
+// cancellation through progress) has ok == false and a reason. The progress callback is called
+// once per EM iteration with (iterations done, maximum iterations over all attempts); returning
+// false cancels the fit.
+GmmFit fitGmm(const Eigen::MatrixXd& samples, const GmmOptions& options,
+              const ProgressFn& progress = {});
+
+}  // namespace tactile

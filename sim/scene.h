@@ -1,0 +1,59 @@
+// Scenes (DESIGN.md section 4): bounds, polygonal obstacles, a start pose and a goal, loaded from
+// JSON and validated, with errors that name the obstacle and the vertex.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "sim/geometry.h"
+#include "sim/run.h"
+
+namespace tactile {
+
+struct SceneBounds {
+  double xmin = 0.0;
+  double ymin = 0.0;
+  double xmax = 0.0;
+  double ymax = 0.0;
+};
+
+struct Obstacle {
+  std::vector<Vec2> polygon;  // closed implicitly (last vertex joins the first), any orientation
+};
+
+struct Scene {
+  std::string name;
+  SceneBounds bounds;
+  std::vector<Obstacle> obstacles;
+  Pose2d start;
+  Vec2 goal = Vec2::Zero();
+};
+
+// A scene or the reason there is none. `usageError` marks problems with what the user typed
+// (an unknown scene name, a malformed `random:N:SEED`), as opposed to a bad file (exit 2 vs 1).
+struct SceneResult {
+  std::optional<Scene> scene;
+  std::string error;
+  bool usageError = false;
+
+  bool ok() const { return scene.has_value(); }
+};
+
+// Parses scene JSON. `sourceName` (file or scene name) prefixes every error message. Checks the
+// schema and the polygons (validateSceneGeometry) but not the start pose (that needs the robot:
+// see checkStartPose in sim/world.h).
+SceneResult parseSceneJson(std::string_view text, std::string_view sourceName);
+
+// Polygon and pose checks that need no robot: bounds non-empty; every obstacle has at least three
+// finite vertices inside the bounds, no two consecutive vertices equal, non-zero area, and no two
+// non-adjacent edges that touch (not self-intersecting); start and goal inside the bounds; goal
+// not inside an obstacle. Returns "" or the first problem, e.g.
+// "obstacle 3: edge from vertex 1 to vertex 2 crosses edge from vertex 4 to vertex 5".
+std::string validateSceneGeometry(const Scene& scene);
+
+// Scene as JSON text (the format parseSceneJson reads).
+std::string sceneToJson(const Scene& scene);
+
+}  // namespace tactile

@@ -1,0 +1,51 @@
+// Ground truth per sensor group per step, from the geometry (DESIGN.md section 3).
+//
+// Inputs per step: for every dome, whether it touches an obstacle (raw, unfiltered) and the
+// feature it touches: the interior of an edge, or a vertex (convex = sticking out into free
+// space, concave, or flat = a nearly straight joint); and the recorded (filtered) values.
+// Rules for group g at step k, first match wins:
+//   1. NoContact   all recorded values of g are 0 (the same rule the classifiers use).
+//   2. LeavingWall no dome of g touches anything any more, but values are still decaying.
+//   3. DeadPath    g is F, FLC, FRC, L or R and touches something, while the front (F, FLC or
+//                  FRC), the left side L and the right side R all touch: a pocket the robot can
+//                  only back out of.
+//   4. LeavingWall g was Wall within the last kLeavingWallSteps steps on edge e, and now touches
+//                  a convex vertex at an end of e (sliding off the wall's end), or, for a group
+//                  that had at least 4 domes on the wall, at most half of that count still touch.
+//   5. Corner      g touches a convex or concave vertex, or two edges whose directions differ by
+//                  more than kFlatVertexDegrees (a concave corner between walls).
+//   6. Wall        otherwise: all contacts on one straight wall.
+#pragma once
+
+#include <array>
+#include <cstddef>
+
+#include "sim/contact_class.h"
+#include "sim/sensor_layout.h"
+
+namespace tactile {
+
+class World;
+struct PoseContact;
+
+inline constexpr int kLeavingWallSteps = 10;
+
+class TruthTracker {
+ public:
+  void reset();
+  // Classifies step `contact` (raw) with recorded values `values` (kValuesPerStep).
+  void update(const World& world, const PoseContact& contact, const double* values);
+  const std::array<ContactClass, kGroupCount>& classes() const { return classes_; }
+
+ private:
+  struct GroupHistory {
+    long long lastWallStep = -1000000;
+    int wallEdge = -1;
+    int wallCount = 0;
+  };
+  std::array<ContactClass, kGroupCount> classes_{};
+  std::array<GroupHistory, kGroupCount> history_{};
+  long long step_ = 0;
+};
+
+}  // namespace tactile

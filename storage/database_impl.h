@@ -1,0 +1,60 @@
+// Internal: the state behind RunDatabase, shared by its implementation files.
+#pragma once
+
+#include <exception>
+#include <string>
+#include <unordered_map>
+
+#include "storage/run_database.h"
+#include "storage/sqlite_db.h"
+
+namespace tactile::storage {
+
+struct RunDatabase::Impl {
+  std::filesystem::path path;
+  std::filesystem::path backup;
+  db::Connection connection;
+  // Prepared statements reused across calls, keyed by the address of their SQL literal.
+  std::unordered_map<const char*, db::Statement> statements;
+
+  // The cached statement for a string literal; ready to bind (reset if it was stepped).
+  db::Statement& statement(const char* sql) {
+    auto it = statements.find(sql);
+    if (it == statements.end()) it = statements.emplace(sql, db::Statement(connection, sql)).first;
+    it->second.reset();
+    return it->second;
+  }
+
+  std::int64_t runIdByName(std::string_view name);  // throws DbError when absent
+  std::int64_t labelSetIdByName(std::string_view name);  // 0 when absent
+  std::int64_t ensureLabelSet(const std::string& name);  // inside a caller's transaction
+  std::int64_t runStepCount(std::int64_t runId);         // throws when the run is absent
+  // Newest-wins insertion inside a caller's transaction; `keepId` != 0 reuses that id.
+  std::int64_t insertSegmentNewestWins(std::int64_t setId, const LabelSegment& segment,
+                                       std::int64_t keepId);
+};
+
+// Current UTC time as "YYYY-MM-DDTHH:MM:SSZ".
+std::string utcNow();
+
+// Runs `fn` and turns any exception into a failed Result / Status.
+template <class T, class Fn>
+Result<T> guarded(Fn&& fn) {
+  try {
+    return Result<T>(fn());
+  } catch (const std::exception& e) {
+    return Result<T>::failure(e.what());
+  }
+}
+
+template <class Fn>
+Status guardedStatus(Fn&& fn) {
+  try {
+    fn();
+    return Status::success();
+  } catch (const std::exception& e) {
+    return Status::failure(e.what());
+  }
+}
+
+}  // namespace tactile::storage

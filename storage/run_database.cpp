@@ -1,0 +1,262 @@
+// Opening, run listing, integrity check, models and sweeps. Import, reading and labels live in
+// run_import.cpp, run_read.cpp and labels.cpp.
+#include "storage/run_database.h"
+
+#include <sqlite3.h>
+
+#include <ctime>
+
+#include "storage/database_impl.h"
+#include "storage/schema.h"
+
+namespace tactile::storage {
+
+std::string utcNow() {
+  const std::time_t now = std::time(nullptr);
+  std::tm parts{};
+  gmtime_r(&now, &parts);
+  char text[32];
+  std::strftime(text, sizeof text, "%Y-%m-%dT%H:%M:%SZ", &parts);
+  return text;
+}
+
+RunDatabase::RunDatabase(std::unique_ptr<Impl> impl) : impl_(std::move(impl)) {}
+RunDatabase::~RunDatabase() {
+  if (impl_ == nullptr) return;
+  impl_->statements.clear();  // finalize before the connection closes
+}
+
+const std::filesystem::path& RunDatabase::path() const { return impl_->path; }
+const std::filesystem::path& RunDatabase::migrationBackup() const { return impl_->backup; }
+
+Result<std::unique_ptr<RunDatabase>> RunDatabase::open(const std::filesystem::path& path,
+                                                       const OpenOptions& options) {
+  using R = Result<std::unique_ptr<RunDatabase>>;
+  try {
+    const bool inMemory = path.empty() || path == ":memory:";
+    std::error_code ec;
+    if (!inMemory && !options.create && !std::filesystem::exists(path, ec)) {
+      return R::failure("no database file '" + path.string() + "'");
+    }
+    auto impl = std::make_unique<Impl>();
+    impl->path = inMemory ? std::filesystem::path(":memory:") : path;
+    impl->connection = db::Connection::open(impl->path, options.create);
+    db::Connection& c = impl->connection;
+    const bool fresh = c.queryInt("PRAGMA user_version") == 0 &&
+                       c.queryInt("SELECT count(*) FROM sqlite_schema") == 0;
+    if (fresh) {
+      // Rows of the steps table are ~0.8 KB; big pages keep the clustered b-tree shallow and wide
+      // (SQLite advises rows under 1/20 of a page for WITHOUT ROWID tables). Must precede WAL.
+      c.exec("PRAGMA page_size = 65536");
+    }
+    if (!inMemory) {
+      {
+        db::Statement mode(c, "PRAGMA journal_mode = WAL");
+        mode.step();
+        const std::string journal = mode.columnText(0);
+        if (journal != "wal") {
+          return R::failure("cannot switch '" + path.string() + "' to WAL (journal mode " +
+                            journal + ")");
+        }
+      }
+    }
+    c.exec("PRAGMA synchronous = NORMAL");
+    c.exec("PRAGMA foreign_keys = ON");
+    c.exec("PRAGMA temp_store = MEMORY");
+    c.exec("PRAGMA cache_size = -" + std::to_string(options.cacheKiB));
+    c.exec("PRAGMA mmap_size = 1073741824");
+    const db::MigrationReport report = db::migrate(c, impl->path);
+    impl->backup = report.backupPath;
+    return R(std::unique_ptr<RunDatabase>(new RunDatabase(std::move(impl))));
+  } catch (const std::exception& e) {
+    return R::failure(e.what());
+  }
+}
+
+// ---- runs ----------------------------------------------------------------------------------
+
+namespace {
+
+constexpr const char* kRunColumns =
+    "SELECT id, name, source_file, checksum, scene, scene_id IS NOT NULL, subject, outcome, dt, "
+    "step_count, has_truth, imported_at FROM runs ";
+
+RunInfo readRunInfo(const db::Statement& s) {
+  RunInfo info;
+  info.id = s.columnInt(0);
+  info.name = s.columnText(1);
+  info.sourceFile = s.columnText(2);
+  info.checksum = s.columnText(3);
+  info.scene = s.columnText(4);
+  info.sceneStored = s.columnInt(5) != 0;
+  info.subject = s.columnText(6);
+  info.outcome = s.columnText(7);
+  if (!s.columnIsNull(8)) info.dtSeconds = s.columnDouble(8);
+  info.stepCount = s.columnInt(9);
+  info.hasTruth = s.columnInt(10) != 0;
+  info.importedAt = s.columnText(11);
+  return info;
+}
+
+}  // namespace
+
+Result<std::vector<RunInfo>> RunDatabase::listRuns() {
+  return guarded<std::vector<RunInfo>>([&] {
+    static const std::string sql = std::string(kRunColumns) + "ORDER BY name";
+    db::Statement& s = impl_->statement(sql.c_str());
+    std::vector<RunInfo> runs;
+    while (s.step()) runs.push_back(readRunInfo(s));
+    return runs;
+  });
+}
+
+Result<RunInfo> RunDatabase::findRun(std::string_view name) {
+  return guarded<RunInfo>([&] {
+    static const std::string sql = std::string(kRunColumns) + "WHERE name = ?";
+    db::Statement& s = impl_->statement(sql.c_str());
+    s.bind(1, name);
+    if (!s.step()) throw db::DbError("no run named '" + std::string(name) + "'");
+    RunInfo info = readRunInfo(s);
+    s.reset();
+    return info;
+  });
+}
+
+Result<RunInfo> RunDatabase::runInfo(std::int64_t runId) {
+  return guarded<RunInfo>([&] {
+    static const std::string sql = std::string(kRunColumns) + "WHERE id = ?";
+    db::Statement& s = impl_->statement(sql.c_str());
+    s.bind(1, runId);
+    if (!s.step()) throw db::DbError("no run with id " + std::to_string(runId));
+    RunInfo info = readRunInfo(s);
+    s.reset();
+    return info;
+  });
+}
+
+Status RunDatabase::deleteRun(std::int64_t runId) {
+  return guardedStatus([&] {
+    db::Transaction transaction(impl_->connection);
+    db::Statement& s = impl_->statement("DELETE FROM runs WHERE id = ?");
+    s.bind(1, runId).run();
+    if (impl_->connection.changes() == 0) {
+      throw db::DbError("no run with id " + std::to_string(runId));
+    }
+    transaction.commit();
+  });
+}
+
+std::int64_t RunDatabase::Impl::runIdByName(std::string_view name) {
+  db::Statement& s = statement("SELECT id FROM runs WHERE name = ?");
+  s.bind(1, name);
+  if (!s.step()) throw db::DbError("no run named '" + std::string(name) + "'");
+  const std::int64_t id = s.columnInt(0);
+  s.reset();
+  return id;
+}
+
+std::int64_t RunDatabase::Impl::runStepCount(std::int64_t runId) {
+  db::Statement& s = statement("SELECT step_count FROM runs WHERE id = ?");
+  s.bind(1, runId);
+  if (!s.step()) throw db::DbError("no run with id " + std::to_string(runId));
+  const std::int64_t count = s.columnInt(0);
+  s.reset();
+  return count;
+}
+
+// ---- check ---------------------------------------------------------------------------------
+
+IntegrityReport RunDatabase::check() {
+  IntegrityReport report;
+  try {
+    db::Connection& c = impl_->connection;
+    report.schemaVersion = db::schemaVersion(c);
+    {
+      db::Statement s(c, "PRAGMA integrity_check");
+      while (s.step()) {
+        std::string line = s.columnText(0);
+        if (line != "ok") report.problems.push_back("integrity: " + line);
+      }
+    }
+    {
+      db::Statement s(c, "PRAGMA foreign_key_check");
+      while (s.step()) {
+        report.problems.push_back("foreign key: table " + s.columnText(0) + " row " +
+                                  std::to_string(s.columnInt(1)) + " refers to a missing " +
+                                  s.columnText(2) + " row");
+      }
+    }
+    report.runs = c.queryInt("SELECT count(*) FROM runs");
+    report.steps = c.queryInt("SELECT coalesce(sum(step_count), 0) FROM runs");
+    report.labelSets = c.queryInt("SELECT count(*) FROM label_sets");
+    const std::int64_t storedSteps = c.queryInt("SELECT count(*) FROM steps");
+    if (storedSteps != report.steps) {
+      report.problems.push_back("runs declare " + std::to_string(report.steps) +
+                                " steps but the steps table holds " +
+                                std::to_string(storedSteps));
+    }
+    report.ok = report.problems.empty() && report.schemaVersion == db::kSchemaVersion;
+  } catch (const std::exception& e) {
+    report.ok = false;
+    report.problems.push_back(e.what());
+  }
+  return report;
+}
+
+// ---- models and sweeps -----------------------------------------------------------------------
+
+Result<std::int64_t> RunDatabase::saveModel(const std::string& name, const std::string& json,
+                                            const std::string& trainedOnJson,
+                                            const std::string& metricsJson) {
+  return guarded<std::int64_t>([&] {
+    db::Transaction transaction(impl_->connection);
+    const std::string now = utcNow();
+    db::Statement& s = impl_->statement(
+        "INSERT INTO models(name, json, trained_on, metrics, created_at) VALUES(?, ?, ?, ?, ?) "
+        "ON CONFLICT(name) DO UPDATE SET json = excluded.json, trained_on = excluded.trained_on, "
+        "metrics = excluded.metrics, created_at = excluded.created_at");
+    s.bind(1, name).bind(2, json).bind(3, trainedOnJson).bind(4, metricsJson).bind(5, now).run();
+    db::Statement& id = impl_->statement("SELECT id FROM models WHERE name = ?");
+    id.bind(1, name);
+    id.step();
+    const std::int64_t modelId = id.columnInt(0);
+    id.reset();
+    transaction.commit();
+    return modelId;
+  });
+}
+
+Result<std::string> RunDatabase::loadModel(const std::string& name) {
+  return guarded<std::string>([&] {
+    db::Statement& s = impl_->statement("SELECT json FROM models WHERE name = ?");
+    s.bind(1, name);
+    if (!s.step()) throw db::DbError("no model named '" + name + "'");
+    std::string json = s.columnText(0);
+    s.reset();
+    return json;
+  });
+}
+
+Result<std::int64_t> RunDatabase::saveSweep(
+    const std::string& name, const std::string& configurationJson,
+    const std::vector<std::pair<std::string, std::string>>& cells) {
+  return guarded<std::int64_t>([&] {
+    db::Transaction transaction(impl_->connection);
+    const std::string now = utcNow();
+    impl_->statement("INSERT INTO sweeps(name, configuration, created_at) VALUES(?, ?, ?)")
+        .bind(1, name)
+        .bind(2, configurationJson)
+        .bind(3, now)
+        .run();
+    const std::int64_t sweepId = impl_->connection.lastInsertRowId();
+    db::Statement& cell = impl_->statement(
+        "INSERT INTO sweep_cells(sweep_id, configuration, metrics) VALUES(?, ?, ?)");
+    for (const auto& [configuration, metrics] : cells) {
+      cell.bind(1, sweepId).bind(2, configuration).bind(3, metrics).run();
+    }
+    transaction.commit();
+    return sweepId;
+  });
+}
+
+}  // namespace tactile::storage

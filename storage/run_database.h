@@ -1,0 +1,266 @@
+// The run database: one SQLite file holding recorded runs, their scenes, ground truth, label sets,
+// models and sweep results (DESIGN.md sections 2, 4 and 7; design notes in docs/storage.md).
+//
+// This is the API the CLI and the workbench use. Every call returns a result with a message
+// instead of throwing. One RunDatabase is one connection: use it from one thread at a time (open a
+// second RunDatabase on the same file for a reader thread; WAL lets readers run beside a writer).
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <filesystem>
+#include <memory>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <utility>
+#include <variant>
+#include <vector>
+
+#include "sim/contact_class.h"
+#include "sim/progress.h"
+#include "sim/run.h"
+#include "sim/sensor_layout.h"
+
+namespace tactile::storage {
+
+// A value or an error message; never both.
+template <class T>
+class Result {
+ public:
+  Result(T value) : value_(std::move(value)) {}
+  static Result failure(std::string message) { return Result(Error{std::move(message)}); }
+
+  bool ok() const { return value_.index() == 0; }
+  explicit operator bool() const { return ok(); }
+  T& value() { return std::get<0>(value_); }
+  const T& value() const { return std::get<0>(value_); }
+  T* operator->() { return &value(); }
+  const T* operator->() const { return &value(); }
+  const std::string& error() const { return std::get<1>(value_).message; }
+
+ private:
+  struct Error {
+    std::string message;
+  };
+  explicit Result(Error error) : value_(std::move(error)) {}
+  std::variant<T, Error> value_;
+};
+
+// Success or a message.
+struct Status {
+  std::string error;  // empty on success
+  bool ok() const { return error.empty(); }
+  explicit operator bool() const { return ok(); }
+  static Status success() { return {}; }
+  static Status failure(std::string message) { return {std::move(message)}; }
+};
+
+// One stored run, without its steps.
+struct RunInfo {
+  std::int64_t id = 0;
+  std::string name;
+  std::string sourceFile;
+  std::string checksum;  // of the imported file's bytes (see docs/storage.md)
+  std::string scene;     // the run's `scene` metadata value, empty if none
+  bool sceneStored = false;
+  std::string subject;
+  std::string outcome;  // "success", "gave-up", "timeout" or "unknown"
+  std::optional<double> dtSeconds;
+  std::int64_t stepCount = 0;
+  bool hasTruth = false;
+  std::string importedAt;  // UTC, ISO 8601
+};
+
+// Consecutive steps of a run: `data` holds the run's metadata and steps [firstStep, firstStep +
+// data.stepCount()).
+struct RunWindow {
+  std::int64_t firstStep = 0;
+  RunData data;
+};
+
+// Min and max of every sensor value over the steps [firstStep, lastStep].
+struct SummaryBucket {
+  std::int64_t firstStep = 0;
+  std::int64_t lastStep = 0;
+  std::array<double, kValuesPerStep> min{};
+  std::array<double, kValuesPerStep> max{};
+};
+
+// A decimated view of a step range for plotting (min/max per bucket; DESIGN.md section 7).
+struct RunSummary {
+  std::int64_t firstStep = 0;
+  std::int64_t lastStep = -1;
+  // Steps per stored block the buckets were built from; 1 when computed from the steps
+  // themselves. Bucket boundaries fall on multiples of it (see docs/storage.md).
+  std::int64_t blockSteps = 1;
+  std::vector<SummaryBucket> buckets;
+};
+
+// ---- import ----------------------------------------------------------------------------------
+
+enum class ImportStatus { Imported, Skipped, Failed };
+
+struct ImportOutcome {
+  std::string file;
+  ImportStatus status = ImportStatus::Failed;
+  std::string runName;
+  std::int64_t runId = 0;  // the new run, or for Skipped the run already holding this file
+  std::int64_t steps = 0;
+  std::string message;                // why it failed or was skipped (file:line: ... for errors)
+  std::vector<std::string> warnings;  // e.g. a scene that could not be resolved
+};
+
+struct ImportOptions {
+  // The run's name; only for a single file. Empty: the file's stem.
+  std::string name;
+  // Parser threads for many files; 0 = one per hardware thread. Writing is always one thread.
+  unsigned threads = 0;
+  // Test hook: throw after writing this many steps of a run (checks that nothing is kept).
+  std::int64_t failAfterSteps = -1;
+};
+
+// ---- labels ----------------------------------------------------------------------------------
+
+struct LabelSetInfo {
+  std::int64_t id = 0;
+  std::string name;
+  std::string annotator;
+  std::string createdAt;
+  std::int64_t segmentCount = 0;
+};
+
+// An inclusive step range of one sensor group of one run with one class.
+struct LabelSegment {
+  std::int64_t id = 0;  // assigned by the database
+  std::string run;      // run name (filled on read; on write, used when runId is 0)
+  std::int64_t runId = 0;
+  SensorGroup group = SensorGroup::Front;
+  std::int64_t firstStep = 0;
+  std::int64_t lastStep = 0;
+  ContactClass cls = ContactClass::NoContact;
+  std::string annotator;
+};
+
+struct IntegrityReport {
+  bool ok = false;
+  int schemaVersion = 0;
+  std::vector<std::string> problems;  // integrity_check and foreign_key_check findings
+  std::int64_t runs = 0;
+  std::int64_t steps = 0;
+  std::int64_t labelSets = 0;
+};
+
+struct OpenOptions {
+  bool create = true;  // create the file when absent
+  // Page cache per connection in KiB (PRAGMA cache_size = -cacheKiB).
+  int cacheKiB = 256 * 1024;
+};
+
+class RunDatabase {
+ public:
+  // Opens or creates a database file (":memory:" for a private in-memory one): WAL journal,
+  // synchronous=NORMAL, foreign keys on, schema migrated to the newest version (an older file is
+  // first copied to "<file>.v<N>.bak"); a file from a newer program is an error.
+  static Result<std::unique_ptr<RunDatabase>> open(const std::filesystem::path& path,
+                                                   const OpenOptions& options = {});
+  ~RunDatabase();
+  RunDatabase(const RunDatabase&) = delete;
+  RunDatabase& operator=(const RunDatabase&) = delete;
+
+  const std::filesystem::path& path() const;
+  // The backup written when opening migrated an older file (empty otherwise).
+  const std::filesystem::path& migrationBackup() const;
+
+  // ---- runs ----
+  // Imports run files. Each file is one transaction: it is stored completely or not at all. A
+  // file whose checksum is already stored is skipped. Files are parsed on `options.threads`
+  // threads and written by the calling thread, in the given order. `progress` gets (files done,
+  // files total); returning false stops after the file being written (the rest are reported as
+  // Failed with "cancelled"). Outcomes are in input order.
+  std::vector<ImportOutcome> importFiles(const std::vector<std::filesystem::path>& files,
+                                         const ImportOptions& options = {},
+                                         const ProgressFn& progress = {});
+  // Imports run-file text (as if read from `fileName`; a relative scene path resolves against
+  // `fileName`'s folder).
+  ImportOutcome importText(std::string_view text, const std::string& fileName,
+                           const ImportOptions& options = {});
+  // Stores a run built in memory (e.g. just recorded). The checksum is that of its CSV text.
+  ImportOutcome importRun(const RunData& run, const std::string& name,
+                          const std::string& sourceFile = {});
+
+  Result<std::vector<RunInfo>> listRuns();
+  Result<RunInfo> findRun(std::string_view name);
+  Result<RunInfo> runInfo(std::int64_t runId);
+  Status deleteRun(std::int64_t runId);  // with its steps, truth and label segments
+
+  // The whole run, equal value for value to what was imported.
+  Result<RunData> loadRun(std::int64_t runId);
+  // Steps [firstStep, firstStep + count) clipped to the run; reads only those rows.
+  Result<RunWindow> loadWindow(std::int64_t runId, std::int64_t firstStep, std::int64_t count);
+  // Min/max per bucket of about (lastStep - firstStep + 1) / buckets steps over the range (clipped
+  // to the run; lastStep < 0 means the last step), read from stored block summaries when the
+  // buckets are wide, so a whole huge run is summarised without loading it.
+  Result<RunSummary> loadSummary(std::int64_t runId, std::int64_t firstStep, std::int64_t lastStep,
+                                 int buckets);
+  // The JSON text of the scene the run was recorded in, if it could be resolved at import.
+  Result<std::optional<std::string>> sceneJson(std::int64_t runId);
+  // Writes the run as a run CSV file (atomically).
+  Status exportRun(std::int64_t runId, const std::filesystem::path& file);
+
+  // ---- label sets: every call below that changes something is one committed transaction ----
+  Result<std::vector<LabelSetInfo>> listLabelSets();
+  Result<LabelSetInfo> findLabelSet(std::string_view name);
+  Result<std::int64_t> createLabelSet(const std::string& name, const std::string& annotator = {});
+  Status renameLabelSet(std::int64_t setId, const std::string& newName);
+  Result<std::int64_t> copyLabelSet(std::int64_t setId, const std::string& newName);
+  Status deleteLabelSet(std::int64_t setId);
+
+  // Adds a segment. Newest wins: any older segment of the same set, run and group overlapping
+  // [firstStep, lastStep] is trimmed, split or removed so that only the new one covers that range.
+  // The range must lie within the run. Returns the new segment's id.
+  Result<std::int64_t> addSegment(std::int64_t setId, const LabelSegment& segment);
+  // Replaces a segment's range, group and class (it keeps its id and wins over the range it now
+  // covers, as if newly added).
+  Status changeSegment(std::int64_t segmentId, const LabelSegment& segment);
+  Status removeSegment(std::int64_t segmentId);
+  // Segments of a set (of one run when runId != 0), ordered by run, group, first step.
+  Result<std::vector<LabelSegment>> segments(std::int64_t setId, std::int64_t runId = 0);
+
+  // Label files (DESIGN.md section 4): CSV `run,group,first_step,last_step,class[,annotator]` or
+  // JSON, chosen by the extension (.json, otherwise CSV). Import adds the file's segments in file
+  // order (later rows win where they overlap) to the set, creating it when absent, in one
+  // transaction: a file with any error changes nothing. Returns the number of segments read.
+  Result<std::int64_t> importLabels(const std::string& setName, const std::filesystem::path& file);
+  Status exportLabels(const std::string& setName, const std::filesystem::path& file);
+
+  // Turns a run's truth columns into segments of the set (created when absent): maximal ranges of
+  // one class per group, NoContact included, replacing the set's segments of that run. One
+  // transaction per run. Returns the number of segments written; an error if the run has no truth.
+  Result<std::int64_t> autolabel(std::int64_t runId, const std::string& setName);
+
+  // ---- models and sweeps (stored as JSON; the analysis part defines their content) ----
+  Result<std::int64_t> saveModel(const std::string& name, const std::string& json,
+                                 const std::string& trainedOnJson = "{}",
+                                 const std::string& metricsJson = "{}");
+  Result<std::string> loadModel(const std::string& name);
+  Result<std::int64_t> saveSweep(const std::string& name, const std::string& configurationJson,
+                                 const std::vector<std::pair<std::string, std::string>>& cells);
+
+  // PRAGMA integrity_check and foreign_key_check, schema version and counts.
+  IntegrityReport check();
+
+  struct Impl;
+
+ private:
+  explicit RunDatabase(std::unique_ptr<Impl> impl);
+  std::unique_ptr<Impl> impl_;
+};
+
+// Fast 64-bit checksum of bytes as 16 hex digits (not cryptographic; detects re-imports).
+std::string checksumHex(std::string_view bytes);
+
+// Block sizes (steps) of the stored min/max summaries, finest first.
+inline constexpr std::array<std::int64_t, 4> kSummaryBlockSteps{16, 128, 1024, 8192};
+
+}  // namespace tactile::storage

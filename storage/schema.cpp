@@ -1,0 +1,181 @@
+#include "storage/schema.h"
+
+#include <array>
+#include <system_error>
+
+namespace tactile::db {
+namespace {
+
+// Column notes that apply throughout:
+// - groups are stored by short name ("F", "FLC", ...) and classes by their exact file spelling, so
+//   the database reads well from the sqlite3 shell;
+// - float64 columns of steps have no declared type: with REAL affinity SQLite would store
+//   integral values as integers and lose the sign of -0.0, and we promise bit-exact round trips;
+// - the sensors BLOB holds 88 little-endian float64 values n0, s0, ..., n43, s43.
+constexpr std::string_view kVersion1 = R"sql(
+CREATE TABLE scenes(
+  id INTEGER PRIMARY KEY,
+  name TEXT NOT NULL,
+  checksum TEXT NOT NULL UNIQUE,
+  json TEXT NOT NULL
+);
+CREATE TABLE runs(
+  id INTEGER PRIMARY KEY,
+  name TEXT NOT NULL UNIQUE,
+  source_file TEXT NOT NULL,
+  checksum TEXT NOT NULL,
+  scene TEXT,
+  scene_id INTEGER REFERENCES scenes(id),
+  subject TEXT,
+  outcome TEXT NOT NULL,
+  dt REAL,
+  step_count INTEGER NOT NULL CHECK(step_count >= 0),
+  has_truth INTEGER NOT NULL CHECK(has_truth IN (0, 1)),
+  metadata TEXT NOT NULL,
+  extra_columns TEXT NOT NULL,
+  imported_at TEXT NOT NULL
+);
+CREATE INDEX runs_by_checksum ON runs(checksum);
+CREATE TABLE steps(
+  run_id INTEGER NOT NULL REFERENCES runs(id) ON DELETE CASCADE,
+  step INTEGER NOT NULL,
+  x, y, theta, v, omega,
+  blocked INTEGER NOT NULL,
+  sensors BLOB NOT NULL,
+  extra BLOB,
+  PRIMARY KEY(run_id, step)
+) WITHOUT ROWID;
+CREATE TABLE truth_segments(
+  run_id INTEGER NOT NULL REFERENCES runs(id) ON DELETE CASCADE,
+  grp TEXT NOT NULL,
+  first_step INTEGER NOT NULL,
+  last_step INTEGER NOT NULL,
+  class TEXT NOT NULL,
+  PRIMARY KEY(run_id, grp, first_step)
+) WITHOUT ROWID;
+CREATE TABLE step_blocks(
+  run_id INTEGER NOT NULL REFERENCES runs(id) ON DELETE CASCADE,
+  level INTEGER NOT NULL,
+  block INTEGER NOT NULL,
+  minmax BLOB NOT NULL,
+  PRIMARY KEY(run_id, level, block)
+) WITHOUT ROWID;
+)sql";
+
+constexpr std::string_view kVersion2 = R"sql(
+CREATE TABLE label_sets(
+  id INTEGER PRIMARY KEY,
+  name TEXT NOT NULL UNIQUE,
+  annotator TEXT NOT NULL DEFAULT '',
+  created_at TEXT NOT NULL
+);
+CREATE TABLE label_segments(
+  id INTEGER PRIMARY KEY,
+  set_id INTEGER NOT NULL REFERENCES label_sets(id) ON DELETE CASCADE,
+  run_id INTEGER NOT NULL REFERENCES runs(id) ON DELETE CASCADE,
+  grp TEXT NOT NULL CHECK(grp IN ('F','FLC','L','RLC','B','RRC','R','FRC')),
+  first_step INTEGER NOT NULL CHECK(first_step >= 0),
+  last_step INTEGER NOT NULL,
+  class TEXT NOT NULL CHECK(class IN ('NoContact','Wall','Corner','LeavingWall','DeadPath')),
+  annotator TEXT NOT NULL DEFAULT '',
+  created_at TEXT NOT NULL,
+  CHECK(last_step >= first_step)
+);
+CREATE INDEX label_segments_by_range ON label_segments(set_id, run_id, grp, first_step);
+CREATE INDEX label_segments_by_run ON label_segments(run_id);
+)sql";
+
+constexpr std::string_view kVersion3 = R"sql(
+CREATE TABLE models(
+  id INTEGER PRIMARY KEY,
+  name TEXT NOT NULL UNIQUE,
+  json TEXT NOT NULL,
+  trained_on TEXT NOT NULL DEFAULT '{}',
+  metrics TEXT NOT NULL DEFAULT '{}',
+  created_at TEXT NOT NULL
+);
+CREATE TABLE sweeps(
+  id INTEGER PRIMARY KEY,
+  name TEXT NOT NULL,
+  configuration TEXT NOT NULL,
+  created_at TEXT NOT NULL
+);
+CREATE TABLE sweep_cells(
+  id INTEGER PRIMARY KEY,
+  sweep_id INTEGER NOT NULL REFERENCES sweeps(id) ON DELETE CASCADE,
+  configuration TEXT NOT NULL,
+  metrics TEXT NOT NULL
+);
+CREATE INDEX sweep_cells_by_sweep ON sweep_cells(sweep_id);
+)sql";
+
+constexpr std::array<Migration, 3> kMigrations{{
+    {1, "runs, steps, truth, step summaries, scenes", kVersion1},
+    {2, "label sets and segments", kVersion2},
+    {3, "models, sweeps and sweep cells", kVersion3},
+}};
+static_assert(kMigrations.back().version == kSchemaVersion);
+
+}  // namespace
+
+std::span<const Migration> migrations() { return kMigrations; }
+
+int schemaVersion(Connection& connection) {
+  return static_cast<int>(connection.queryInt("PRAGMA user_version"));
+}
+
+std::filesystem::path backupPath(const std::filesystem::path& dbPath, int version) {
+  const std::string base = dbPath.string() + ".v" + std::to_string(version);
+  std::filesystem::path candidate = base + ".bak";
+  std::error_code ec;
+  for (int i = 1; std::filesystem::exists(candidate, ec); ++i) {
+    candidate = base + "-" + std::to_string(i) + ".bak";
+  }
+  return candidate;
+}
+
+MigrationReport migrate(Connection& connection, const std::filesystem::path& dbPath,
+                        int targetVersion) {
+  MigrationReport report;
+  report.fromVersion = schemaVersion(connection);
+  report.toVersion = report.fromVersion;
+  const std::string name = dbPath.string();
+  if (report.fromVersion > kSchemaVersion) {
+    throw DbError("database '" + name + "' has schema version " +
+                  std::to_string(report.fromVersion) + ", newer than version " +
+                  std::to_string(kSchemaVersion) +
+                  " that this program understands; use a newer tactile");
+  }
+  const auto applicationId = connection.queryInt("PRAGMA application_id");
+  if (applicationId != 0 && applicationId != kApplicationId) {
+    throw DbError("'" + name + "' is an SQLite database of another application, not a tactile one");
+  }
+  if (report.fromVersion == 0 &&
+      connection.queryInt("SELECT count(*) FROM sqlite_schema") != 0) {
+    throw DbError("'" + name + "' holds tables but no tactile schema version; not a tactile database");
+  }
+  if (report.fromVersion >= targetVersion) return report;
+
+  const bool inMemory = name.empty() || name == ":memory:";
+  if (report.fromVersion > 0 && !inMemory) {
+    report.backupPath = backupPath(dbPath, report.fromVersion);
+    backupTo(connection, report.backupPath);
+  }
+  Transaction transaction(connection);
+  for (const Migration& migration : kMigrations) {
+    if (migration.version <= report.fromVersion || migration.version > targetVersion) continue;
+    try {
+      connection.exec(migration.sql);
+    } catch (const DbError& e) {
+      throw DbError("migration to schema version " + std::to_string(migration.version) + " (" +
+                    std::string(migration.description) + ") failed: " + e.what());
+    }
+  }
+  connection.exec("PRAGMA application_id = " + std::to_string(kApplicationId));
+  connection.exec("PRAGMA user_version = " + std::to_string(targetVersion));
+  transaction.commit();
+  report.toVersion = targetVersion;
+  return report;
+}
+
+}  // namespace tactile::db

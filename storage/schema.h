@@ -1,0 +1,52 @@
+// The database schema and its versioned migrations (PRAGMA user_version), in the spirit of
+// Mixxx's SchemaManager: an ordered list of migrations, each taking the schema from version N-1 to
+// N; opening runs the missing ones in one transaction after a backup copy of the file.
+#pragma once
+
+#include <filesystem>
+#include <span>
+#include <string>
+#include <string_view>
+
+#include "storage/sqlite_db.h"
+
+namespace tactile::db {
+
+// The schema version this program writes. A database with a higher user_version was written by
+// a newer program and is refused rather than misread.
+inline constexpr int kSchemaVersion = 3;
+
+// PRAGMA application_id of tactile databases ("TACT"), so that another program's SQLite file is
+// recognised and refused instead of being "migrated".
+inline constexpr int kApplicationId = 0x54414354;
+
+struct Migration {
+  int version;  // the schema version after this migration
+  std::string_view description;
+  std::string_view sql;
+};
+
+// All migrations, in version order (version 1 creates the first schema).
+std::span<const Migration> migrations();
+
+struct MigrationReport {
+  int fromVersion = 0;
+  int toVersion = 0;
+  std::filesystem::path backupPath;  // empty when no backup was needed (new or current database)
+};
+
+// The database's user_version.
+int schemaVersion(Connection& connection);
+
+// Brings the database to `targetVersion` (the newest by default; lower targets exist for tests
+// that need an old database). A database newer than kSchemaVersion, or one that belongs to
+// another application, is an error. An existing database with older data is first copied to
+// `backupPath(dbPath, version)`; then all missing migrations run in one transaction, so a failure
+// leaves the file as it was. Throws DbError with a clear message.
+MigrationReport migrate(Connection& connection, const std::filesystem::path& dbPath,
+                        int targetVersion = kSchemaVersion);
+
+// "<db>.v<version>.bak", or with a numeric suffix when that file already exists.
+std::filesystem::path backupPath(const std::filesystem::path& dbPath, int version);
+
+}  // namespace tactile::db

@@ -1,0 +1,405 @@
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstring>
+#include <filesystem>
+#include <limits>
+#include <random>
+#include <string>
+
+#include "sim/run_csv.h"
+
+namespace tactile {
+namespace {
+
+// A run with values drawn so that their shortest text is long (full double precision).
+RunData makeRun(std::size_t steps, bool withTruth, unsigned seed = 1) {
+  std::mt19937_64 rng(seed);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  RunData run;
+  run.metadata = {{"format", "tactile-run 1"}, {"scene", "practice"}, {"dt", "0.1"},
+                  {"start", "100,200,0.5"},    {"goal", "900,400"},   {"outcome", "success"}};
+  run.reserve(steps, withTruth);
+  std::array<double, kValuesPerStep> values{};
+  std::array<ContactClass, kGroupCount> truth{};
+  for (std::size_t i = 0; i < steps; ++i) {
+    for (int s = 0; s < kSensorCount; ++s) {
+      const bool touching = unit(rng) < 0.3;
+      values[normalOffset(s)] = touching ? 5.0 * unit(rng) : 0.0;
+      values[shearOffset(s)] = touching ? 10.0 * unit(rng) - 5.0 : 0.0;
+    }
+    for (int g = 0; g < kGroupCount; ++g) {
+      truth[g] = static_cast<ContactClass>((i + g) % kContactClassCount);
+    }
+    run.appendStep(1000 * unit(rng), -1e-7 * unit(rng), 6.283 * unit(rng) - 3.14, 20 * unit(rng),
+                   unit(rng) - 0.5, (i % 17) == 3, values.data(),
+                   withTruth ? truth.data() : nullptr);
+  }
+  return run;
+}
+
+bool bitEqual(const std::vector<double>& a, const std::vector<double>& b) {
+  return a.size() == b.size() && std::memcmp(a.data(), b.data(), a.size() * sizeof(double)) == 0;
+}
+
+void expectSameRun(const RunData& a, const RunData& b) {
+  EXPECT_EQ(a.metadata, b.metadata);
+  EXPECT_TRUE(bitEqual(a.x, b.x));
+  EXPECT_TRUE(bitEqual(a.y, b.y));
+  EXPECT_TRUE(bitEqual(a.theta, b.theta));
+  EXPECT_TRUE(bitEqual(a.v, b.v));
+  EXPECT_TRUE(bitEqual(a.omega, b.omega));
+  EXPECT_TRUE(bitEqual(a.sensors, b.sensors));
+  EXPECT_EQ(a.blocked, b.blocked);
+  EXPECT_EQ(a.truth, b.truth);
+  EXPECT_EQ(a.extraColumns, b.extraColumns);
+  EXPECT_EQ(a.extraValues, b.extraValues);
+}
+
+// The text of a small valid run (3 steps, with truth) to be broken by each test.
+std::string validText() {
+  return formatRunCsv(makeRun(3, true));
+}
+
+std::size_t metadataLineCount() {
+  return 6;
+}
+
+// Replaces physical line `lineNo` (1-based) of `text`.
+std::string replaceLine(const std::string& text, std::size_t lineNo, const std::string& line) {
+  std::size_t begin = 0;
+  for (std::size_t i = 1; i < lineNo; ++i)
+    begin = text.find('\n', begin) + 1;
+  const std::size_t end = text.find('\n', begin);
+  return text.substr(0, begin) + line + text.substr(end);
+}
+
+std::string lineAt(const std::string& text, std::size_t lineNo) {
+  std::size_t begin = 0;
+  for (std::size_t i = 1; i < lineNo; ++i)
+    begin = text.find('\n', begin) + 1;
+  return text.substr(begin, text.find('\n', begin) - begin);
+}
+
+// Replaces field `position` (1-based) of line `lineNo`.
+std::string replaceField(const std::string& text, std::size_t lineNo, std::size_t position,
+                         const std::string& value) {
+  std::string line = lineAt(text, lineNo);
+  std::size_t begin = 0;
+  for (std::size_t i = 1; i < position; ++i)
+    begin = line.find(',', begin) + 1;
+  std::size_t end = line.find(',', begin);
+  if (end == std::string::npos) end = line.size();
+  line = line.substr(0, begin) + value + line.substr(end);
+  return replaceLine(text, lineNo, line);
+}
+
+// `column` "*" skips the column check.
+RunCsvError expectError(const std::string& text, std::size_t line, const std::string& column,
+                        const std::string& fragment) {
+  RunCsvResult result = parseRunCsv(text, "bad.csv");
+  EXPECT_FALSE(result.ok()) << "accepted a bad file";
+  if (result.ok()) return {};
+  const RunCsvError& e = result.error();
+  EXPECT_EQ(e.file, "bad.csv");
+  EXPECT_EQ(e.line, line) << e.toString();
+  if (column != "*") {
+    EXPECT_EQ(e.column, column) << e.toString();
+  }
+  EXPECT_NE(e.message.find(fragment), std::string::npos) << e.toString();
+  return e;
+}
+
+const std::size_t kHeader = metadataLineCount() + 1;  // physical line of the header
+const std::size_t kRow0 = kHeader + 1;
+
+TEST(RunCsv, RoundTripIsBitExact) {
+  RunData run = makeRun(200, true, 7);
+  run.x[3] = -0.0;
+  run.y[4] = std::numeric_limits<double>::denorm_min();
+  run.theta[5] = 1e300;
+  run.v[6] = 0.1 + 0.2;
+  const std::string text = formatRunCsv(run);
+  RunCsvResult back = parseRunCsv(text, "rt.csv");
+  ASSERT_TRUE(back.ok()) << back.error().toString();
+  expectSameRun(run, back.run());
+  EXPECT_TRUE(std::signbit(back.run().x[3]));
+  EXPECT_EQ(formatRunCsv(back.run()), text);
+}
+
+TEST(RunCsv, RoundTripWithoutTruthAndWithExtraColumns) {
+  RunData run = makeRun(5, false);
+  run.extraColumns = {"x_note", "x_operator"};
+  for (std::size_t i = 0; i < 5; ++i) {
+    run.extraValues.push_back("n" + std::to_string(i));
+    run.extraValues.push_back(i == 2 ? "" : "ann");
+  }
+  RunCsvResult back = parseRunCsv(formatRunCsv(run), "x.csv");
+  ASSERT_TRUE(back.ok()) << back.error().toString();
+  EXPECT_FALSE(back.run().hasTruth());
+  expectSameRun(run, back.run());
+}
+
+TEST(RunCsv, HundredThousandStepFileRoundTrips) {
+  const RunData run = makeRun(100000, true, 3);
+  const auto path = std::filesystem::temp_directory_path() / "tactile_run_100k.csv";
+  ASSERT_EQ(writeRunCsv(run, path), "");
+  RunCsvResult back = readRunCsv(path);
+  std::filesystem::remove(path);
+  ASSERT_TRUE(back.ok()) << back.error().toString();
+  ASSERT_EQ(back.run().stepCount(), 100000u);
+  expectSameRun(run, back.run());
+}
+
+TEST(RunCsv, ColumnsAreFoundByNameInAnyOrder) {
+  // A hand-written file with reordered columns: omega first, sensors interleaved backwards.
+  std::string header = "omega";
+  std::string row0 = "0.25";
+  for (int s = kSensorCount - 1; s >= 0; --s) {
+    header += ",s" + std::to_string(s) + ",n" + std::to_string(s);
+    row0 += s == 5 ? ",-1.5,2.5" : ",0,0";
+  }
+  header += ",blocked,theta,y,x,step,v,x_tag";
+  row0 += ",1,0.5,2,1,0,3,hello";
+  RunCsvResult r = parseRunCsv(header + "\n" + row0 + "\n", "order.csv");
+  ASSERT_TRUE(r.ok()) << r.error().toString();
+  const RunData& run = r.run();
+  EXPECT_EQ(run.stepCount(), 1u);
+  EXPECT_EQ(run.omega[0], 0.25);
+  EXPECT_EQ(run.x[0], 1.0);
+  EXPECT_EQ(run.y[0], 2.0);
+  EXPECT_EQ(run.v[0], 3.0);
+  EXPECT_EQ(run.blocked[0], 1);
+  EXPECT_EQ(run.normal(0, 5), 2.5);
+  EXPECT_EQ(run.shear(0, 5), -1.5);
+  EXPECT_EQ(run.extraValues[0], "hello");
+}
+
+TEST(RunCsv, AcceptsBomCrlfAndMissingFinalNewline) {
+  std::string text = validText();
+  std::string crlf;
+  for (char c : text) {
+    if (c == '\n') crlf += '\r';
+    crlf += c;
+  }
+  crlf.pop_back();  // no final newline
+  crlf.pop_back();
+  RunCsvResult r = parseRunCsv("\xEF\xBB\xBF" + crlf, "bom.csv");
+  ASSERT_TRUE(r.ok()) << r.error().toString();
+  RunCsvResult plain = parseRunCsv(text, "plain.csv");
+  ASSERT_TRUE(plain.ok());
+  expectSameRun(plain.run(), r.run());
+}
+
+TEST(RunCsv, MetadataIsOptionalAndUnknownKeysAreKept) {
+  std::string text = validText();
+  const std::size_t headerStart = text.find("step,");
+  RunCsvResult bare = parseRunCsv(text.substr(headerStart), "bare.csv");
+  ASSERT_TRUE(bare.ok()) << bare.error().toString();
+  EXPECT_TRUE(bare.run().metadata.empty());
+  RunCsvResult extra = parseRunCsv("# robot: obrero-2\n" + text, "m.csv");
+  ASSERT_TRUE(extra.ok()) << extra.error().toString();
+  ASSERT_NE(extra.run().meta("robot"), nullptr);
+  EXPECT_EQ(*extra.run().meta("robot"), "obrero-2");
+  EXPECT_EQ(extra.run().dtSeconds(), 0.1);
+  EXPECT_EQ(extra.run().outcome(), RunOutcome::Success);
+  ASSERT_TRUE(extra.run().start());
+  EXPECT_EQ(extra.run().start()->theta, 0.5);
+}
+
+TEST(RunCsvErrors, EmptyFile) {
+  expectError("", 0, "", "empty file");
+  expectError("\xEF\xBB\xBF", 0, "", "empty file");
+}
+
+TEST(RunCsvErrors, HeaderOnly) {
+  std::string text = validText();
+  text = text.substr(0, text.find('\n', text.find("step,")) + 1);
+  expectError(text, kHeader, "", "no steps");
+}
+
+TEST(RunCsvErrors, MissingColumn) {
+  std::string text = validText();
+  std::string header = lineAt(text, kHeader);
+  header.replace(header.find(",n12,"), 5, ",x_n12,");
+  expectError(replaceLine(text, kHeader, header), kHeader, "", "missing column 'n12'");
+}
+
+TEST(RunCsvErrors, DuplicateColumn) {
+  std::string text = validText();
+  std::string header = lineAt(text, kHeader);
+  header.replace(header.find(",s3,"), 4, ",s2,");
+  const RunCsvError e = expectError(replaceLine(text, kHeader, header), kHeader, "s2", "duplicate");
+  // step..blocked are 7 columns, then n0 s0 n1 s1 n2 s2 n3 s3: s3 is the 15th, s2 the 13th.
+  EXPECT_EQ(e.columnPosition, 15u);
+  EXPECT_NE(e.message.find("first at position 13"), std::string::npos);
+}
+
+TEST(RunCsvErrors, UnknownColumn) {
+  std::string text = validText();
+  text = replaceField(text, kHeader, 3, "why");
+  expectError(text, kHeader, "why", "unknown column 'why'");
+  // Look-alikes of real columns are unknown too.
+  expectError(replaceField(validText(), kHeader, 9, "n00"), kHeader, "n00", "unknown column");
+  expectError(replaceField(validText(), kHeader, 9, "n44"), kHeader, "n44", "unknown column");
+}
+
+TEST(RunCsvErrors, PartialTruthColumns) {
+  std::string text = validText();
+  std::string header = lineAt(text, kHeader);
+  header.replace(header.find(",truth_RRC"), 10, ",x_RRC");
+  expectError(replaceLine(text, kHeader, header), kHeader, "", "missing column 'truth_RRC'");
+}
+
+TEST(RunCsvErrors, WrongFieldCount) {
+  std::string text = validText();
+  std::string row = lineAt(text, kRow0 + 1);
+  const std::size_t fields = std::count(row.begin(), row.end(), ',') + 1;
+  // One field too many.
+  RunCsvError e = expectError(
+      replaceLine(text, kRow0 + 1, row + ",7"), kRow0 + 1, "",
+      "expected " + std::to_string(fields) + " fields, found " + std::to_string(fields + 1));
+  EXPECT_EQ(e.columnPosition, fields + 1);
+  // One field too few: the first missing column is named.
+  row = row.substr(0, row.rfind(','));
+  e = expectError(replaceLine(text, kRow0 + 1, row), kRow0 + 1, "truth_FRC", "found");
+  EXPECT_EQ(e.columnPosition, fields);
+}
+
+TEST(RunCsvErrors, NonNumber) {
+  expectError(replaceField(validText(), kRow0, 2, "abc"), kRow0, "x", "expected a number");
+  expectError(replaceField(validText(), kRow0, 2, ""), kRow0, "x", "empty field");
+  expectError(replaceField(validText(), kRow0, 3, "+1"), kRow0, "y", "expected a number");
+  expectError(replaceField(validText(), kRow0, 3, "0x1p3"), kRow0, "y", "expected a number");
+  expectError(replaceField(validText(), kRow0, 4, " 1"), kRow0, "theta", "expected a number");
+  expectError(replaceField(validText(), kRow0, 4, "\"1\""), kRow0, "theta", "expected a number");
+  expectError(replaceField(validText(), kRow0, 1, "0.0"), kRow0, "step", "integer");
+  expectError(replaceField(validText(), kRow0, 7, "yes"), kRow0, "blocked", "0 or 1");
+}
+
+TEST(RunCsvErrors, NanAndInfinity) {
+  expectError(replaceField(validText(), kRow0, 5, "nan"), kRow0, "v", "finite");
+  expectError(replaceField(validText(), kRow0, 6, "inf"), kRow0, "omega", "finite");
+  expectError(replaceField(validText(), kRow0, 6, "-infinity"), kRow0, "omega", "finite");
+  expectError(replaceField(validText(), kRow0, 2, "1e999"), kRow0, "x", "finite");
+}
+
+TEST(RunCsvErrors, ValueOutOfRange) {
+  expectError(replaceField(validText(), kRow0 + 2, 8, "5.0001"), kRow0 + 2, "n0", "[0, 5]");
+  expectError(replaceField(validText(), kRow0, 8, "-0.5"), kRow0, "n0", "[0, 5]");
+  expectError(replaceField(validText(), kRow0, 9, "-5.5"), kRow0, "s0", "[-5, 5]");
+  expectError(replaceField(validText(), kRow0, 7, "2"), kRow0, "blocked", "0 or 1");
+}
+
+TEST(RunCsvErrors, StepsNotCountingFromZeroByOne) {
+  expectError(replaceField(validText(), kRow0 + 1, 1, "2"), kRow0 + 1, "step", "expected step 1");
+  expectError(replaceField(validText(), kRow0, 1, "1"), kRow0, "step", "expected step 0");
+}
+
+TEST(RunCsvErrors, UnknownClassName) {
+  const std::size_t truthF = 7 + kValuesPerStep + 1;
+  expectError(replaceField(validText(), kRow0, truthF, "wall"), kRow0, "truth_F", "contact class");
+  expectError(replaceField(validText(), kRow0, truthF + 3, "Hole"), kRow0, "truth_RLC",
+              "contact class");
+}
+
+TEST(RunCsvErrors, TruncatedLastLine) {
+  std::string text = validText();
+  text.resize(text.size() - 40);  // cut into the last row, no final newline
+  const RunCsvError e = expectError(text, kRow0 + 2, "*", "truncated last line");
+  EXPECT_GT(e.columnPosition, 0u);
+}
+
+TEST(RunCsvErrors, EmptyLineBetweenRows) {
+  std::string text = validText();
+  const std::string row1 = lineAt(text, kRow0 + 1);
+  text = replaceLine(text, kRow0 + 1, "\n" + row1);
+  expectError(text, kRow0 + 1, "", "empty line");
+}
+
+TEST(RunCsvErrors, TrailingBlankLinesAreAccepted) {
+  RunCsvResult r = parseRunCsv(validText() + "\n\r\n", "t.csv");
+  ASSERT_TRUE(r.ok()) << r.error().toString();
+  EXPECT_EQ(r.run().stepCount(), 3u);
+}
+
+TEST(RunCsvErrors, MetadataLineAfterHeader) {
+  std::string text = validText();
+  text = replaceLine(text, kRow0 + 1, "# scene: late\n" + lineAt(text, kRow0 + 1));
+  expectError(text, kRow0 + 1, "", "after the header");
+}
+
+TEST(RunCsvErrors, RepeatedMetadataKey) {
+  const RunCsvError e = expectError("# dt: 0.1\n" + validText(), 4, "", "repeated metadata key");
+  EXPECT_NE(e.message.find("line 1"), std::string::npos);
+}
+
+TEST(RunCsvErrors, WrongFormatVersion) {
+  std::string text = replaceLine(validText(), 1, "# format: tactile-run 2");
+  expectError(text, 1, "", "expected format 'tactile-run 1'");
+}
+
+TEST(RunCsvErrors, MalformedKnownMetadata) {
+  expectError(replaceLine(validText(), 3, "# dt: fast"), 3, "", "'dt'");
+  expectError(replaceLine(validText(), 3, "# dt: -0.1"), 3, "", "'dt'");
+  expectError(replaceLine(validText(), 4, "# start: 1,2"), 4, "", "'start'");
+  expectError(replaceLine(validText(), 5, "# goal: 1,b"), 5, "", "'goal'");
+  expectError(replaceLine(validText(), 6, "# outcome: maybe"), 6, "", "'outcome'");
+  expectError(replaceLine(validText(), 2, "# just a comment"), 2, "", "'# key: value'");
+}
+
+TEST(RunCsvErrors, BomAndCrlfDoNotHideLineNumbers) {
+  std::string text = replaceField(validText(), kRow0 + 1, 2, "oops");
+  std::string crlf = "\xEF\xBB\xBF";
+  for (char c : text) {
+    if (c == '\n') crlf += '\r';
+    crlf += c;
+  }
+  expectError(crlf, kRow0 + 1, "x", "'oops'");
+}
+
+TEST(RunCsvErrors, MessageNamesFileLineAndColumn) {
+  RunCsvResult r = parseRunCsv(replaceField(validText(), kRow0, 10, "9"), "runs/a.csv");
+  ASSERT_FALSE(r.ok());
+  EXPECT_EQ(r.error().toString(),
+            "runs/a.csv:" + std::to_string(kRow0) +
+                ": column 'n1' (position 10): expected a normal value in [0, 5], found '9'");
+}
+
+TEST(RunCsvErrors, UnreadableFile) {
+  RunCsvResult r = readRunCsv("/nonexistent/dir/run.csv");
+  ASSERT_FALSE(r.ok());
+  EXPECT_NE(r.error().toString().find("/nonexistent/dir/run.csv"), std::string::npos);
+  EXPECT_NE(r.error().message.find("cannot open"), std::string::npos);
+}
+
+TEST(RunCsv, ProgressIsReportedAndCancelStops) {
+  const std::string text = formatRunCsv(makeRun(20000, false));
+  std::size_t calls = 0;
+  std::size_t last = 0;
+  RunCsvResult r = parseRunCsv(text, "p.csv", [&](std::size_t done, std::size_t total) {
+    ++calls;
+    EXPECT_EQ(total, text.size());
+    EXPECT_GE(done, last);
+    last = done;
+    return true;
+  });
+  ASSERT_TRUE(r.ok());
+  EXPECT_GT(calls, 1u);
+  EXPECT_EQ(last, text.size());
+  RunCsvResult cancelled =
+      parseRunCsv(text, "p.csv", [](std::size_t, std::size_t) { return false; });
+  ASSERT_FALSE(cancelled.ok());
+  EXPECT_NE(cancelled.error().message.find("cancelled"), std::string::npos);
+}
+
+TEST(RunCsv, AtomicWriteLeavesNoFileOnFailure) {
+  const auto dir = std::filesystem::temp_directory_path() / "tactile_no_such_dir_xyz";
+  std::filesystem::remove_all(dir);
+  const std::string error = writeRunCsv(makeRun(2, false), dir / "out.csv");
+  EXPECT_FALSE(error.empty());
+  EXPECT_FALSE(std::filesystem::exists(dir));
+}
+
+}  // namespace
+}  // namespace tactile
