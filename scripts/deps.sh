@@ -1,0 +1,56 @@
+#!/usr/bin/env bash
+# Installs the Debian packages the build and the tests need, if any is missing.
+# Sourced by run.sh and test.sh; as root it installs, with sudo it asks, otherwise it prints the
+# exact command and fails.
+set -euo pipefail
+
+TACTILE_PACKAGES=(
+  cmake g++ make pkg-config clang-format
+  qt6-base-dev qt6-tools-dev qt6-l10n-tools qt6-tools-dev-tools libgl-dev
+  libqcustomplot-dev libqcustomplot2.1-qt6
+  libeigen3-dev libsqlite3-dev sqlite3 nlohmann-json3-dev libcli11-dev
+  libgtest-dev libgmock-dev libbenchmark-dev
+  xvfb xauth
+)
+
+tactile_missing_packages() {
+  local missing=()
+  for p in "${TACTILE_PACKAGES[@]}"; do
+    if ! dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed"; then
+      missing+=("$p")
+    fi
+  done
+  echo "${missing[@]:-}"
+}
+
+tactile_install_deps() {
+  local missing
+  missing=$(tactile_missing_packages)
+  [ -z "$missing" ] && return 0
+  echo "Installing missing Debian packages: $missing"
+  local apt=(env DEBIAN_FRONTEND=noninteractive apt-get)
+  if [ "$(id -u)" -eq 0 ]; then
+    "${apt[@]}" update -qq
+    # shellcheck disable=SC2086
+    "${apt[@]}" install -y -qq --no-install-recommends $missing
+  elif command -v sudo >/dev/null 2>&1 && sudo -n true 2>/dev/null; then
+    sudo "${apt[@]}" update -qq
+    # shellcheck disable=SC2086
+    sudo "${apt[@]}" install -y -qq --no-install-recommends $missing
+  else
+    echo "These Debian packages are missing. Install them as root, then run this script again:" >&2
+    echo "  apt-get install $missing" >&2
+    return 1
+  fi
+}
+
+# Configures (once) and builds the Release tree in build/.
+tactile_build() {
+  local root=$1
+  local jobs
+  jobs=$(nproc 2>/dev/null || echo 2)
+  if [ ! -f "$root/build/CMakeCache.txt" ]; then
+    cmake -S "$root" -B "$root/build" -DCMAKE_BUILD_TYPE=Release
+  fi
+  cmake --build "$root/build" -j"$jobs"
+}

@@ -1,0 +1,11 @@
+#!/usr/bin/env bash
+# Installs what is missing, builds (reusing build/), and runs every test.
+set -euo pipefail
+root=$(cd "$(dirname "$0")/.." && pwd)
+# shellcheck source=scripts/deps.sh
+source "$root/scripts/deps.sh"
+tactile_install_deps
+tactile_build "$root"
+cd "$root/build"
+export QT_QPA_PLATFORM=offscreen
+ctest --output-on-failure -j"$(nproc 2>/dev/null || echo 2)" --timeout 600
