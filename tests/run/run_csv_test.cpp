@@ -4,38 +4,16 @@
 #include <cstring>
 #include <filesystem>
 #include <limits>
-#include <random>
 #include <string>
 
 #include "sim/run_csv.h"
+#include "sim/synthetic_run.h"
 
 namespace tactile {
 namespace {
 
-// A run with values drawn so that their shortest text is long (full double precision).
 RunData makeRun(std::size_t steps, bool withTruth, unsigned seed = 1) {
-  std::mt19937_64 rng(seed);
-  std::uniform_real_distribution<double> unit(0.0, 1.0);
-  RunData run;
-  run.metadata = {{"format", "tactile-run 1"}, {"scene", "practice"}, {"dt", "0.1"},
-                  {"start", "100,200,0.5"},    {"goal", "900,400"},   {"outcome", "success"}};
-  run.reserve(steps, withTruth);
-  std::array<double, kValuesPerStep> values{};
-  std::array<ContactClass, kGroupCount> truth{};
-  for (std::size_t i = 0; i < steps; ++i) {
-    for (int s = 0; s < kSensorCount; ++s) {
-      const bool touching = unit(rng) < 0.3;
-      values[normalOffset(s)] = touching ? 5.0 * unit(rng) : 0.0;
-      values[shearOffset(s)] = touching ? 10.0 * unit(rng) - 5.0 : 0.0;
-    }
-    for (int g = 0; g < kGroupCount; ++g) {
-      truth[g] = static_cast<ContactClass>((i + g) % kContactClassCount);
-    }
-    run.appendStep(1000 * unit(rng), -1e-7 * unit(rng), 6.283 * unit(rng) - 3.14, 20 * unit(rng),
-                   unit(rng) - 0.5, (i % 17) == 3, values.data(),
-                   withTruth ? truth.data() : nullptr);
-  }
-  return run;
+  return makeSyntheticRun(steps, withTruth, seed);
 }
 
 bool bitEqual(const std::vector<double>& a, const std::vector<double>& b) {
