@@ -25,7 +25,7 @@ struct RunDatabase::Impl {
     return it->second;
   }
 
-  std::int64_t runIdByName(std::string_view name);  // throws DbError when absent
+  std::int64_t runIdByName(std::string_view name);       // throws DbError when absent
   std::int64_t labelSetIdByName(std::string_view name);  // 0 when absent
   std::int64_t ensureLabelSet(const std::string& name);  // inside a caller's transaction
   std::int64_t runStepCount(std::int64_t runId);         // throws when the run is absent

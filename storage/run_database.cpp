@@ -26,8 +26,12 @@ RunDatabase::~RunDatabase() {
   impl_->statements.clear();  // finalize before the connection closes
 }
 
-const std::filesystem::path& RunDatabase::path() const { return impl_->path; }
-const std::filesystem::path& RunDatabase::migrationBackup() const { return impl_->backup; }
+const std::filesystem::path& RunDatabase::path() const {
+  return impl_->path;
+}
+const std::filesystem::path& RunDatabase::migrationBackup() const {
+  return impl_->backup;
+}
 
 Result<std::unique_ptr<RunDatabase>> RunDatabase::open(const std::filesystem::path& path,
                                                        const OpenOptions& options) {
@@ -105,7 +109,8 @@ Result<std::vector<RunInfo>> RunDatabase::listRuns() {
     static const std::string sql = std::string(kRunColumns) + "ORDER BY name";
     db::Statement& s = impl_->statement(sql.c_str());
     std::vector<RunInfo> runs;
-    while (s.step()) runs.push_back(readRunInfo(s));
+    while (s.step())
+      runs.push_back(readRunInfo(s));
     return runs;
   });
 }
@@ -192,8 +197,7 @@ IntegrityReport RunDatabase::check() {
     const std::int64_t storedSteps = c.queryInt("SELECT count(*) FROM steps");
     if (storedSteps != report.steps) {
       report.problems.push_back("runs declare " + std::to_string(report.steps) +
-                                " steps but the steps table holds " +
-                                std::to_string(storedSteps));
+                                " steps but the steps table holds " + std::to_string(storedSteps));
     }
     report.ok = report.problems.empty() && report.schemaVersion == db::kSchemaVersion;
   } catch (const std::exception& e) {

@@ -11,7 +11,10 @@ namespace {
 //   the database reads well from the sqlite3 shell;
 // - float64 columns of steps have no declared type: with REAL affinity SQLite would store
 //   integral values as integers and lose the sign of -0.0, and we promise bit-exact round trips;
-// - the sensors BLOB holds 88 little-endian float64 values n0, s0, ..., n43, s43.
+// - the sensors BLOB holds 88 little-endian float64 values n0, s0, ..., n43, s43;
+// - runs.metadata (key, value, key, value, ...), runs.extra_columns (x_ names) and steps.extra
+//   (x_ values) are lists of strings, each a 4-byte little-endian length and the bytes, so that
+//   they round-trip byte for byte.
 constexpr std::string_view kVersion1 = R"sql(
 CREATE TABLE scenes(
   id INTEGER PRIMARY KEY,
@@ -31,8 +34,8 @@ CREATE TABLE runs(
   dt REAL,
   step_count INTEGER NOT NULL CHECK(step_count >= 0),
   has_truth INTEGER NOT NULL CHECK(has_truth IN (0, 1)),
-  metadata TEXT NOT NULL,
-  extra_columns TEXT NOT NULL,
+  metadata BLOB NOT NULL,
+  extra_columns BLOB NOT NULL,
   imported_at TEXT NOT NULL
 );
 CREATE INDEX runs_by_checksum ON runs(checksum);
@@ -118,7 +121,9 @@ static_assert(kMigrations.back().version == kSchemaVersion);
 
 }  // namespace
 
-std::span<const Migration> migrations() { return kMigrations; }
+std::span<const Migration> migrations() {
+  return kMigrations;
+}
 
 int schemaVersion(Connection& connection) {
   return static_cast<int>(connection.queryInt("PRAGMA user_version"));
@@ -150,9 +155,9 @@ MigrationReport migrate(Connection& connection, const std::filesystem::path& dbP
   if (applicationId != 0 && applicationId != kApplicationId) {
     throw DbError("'" + name + "' is an SQLite database of another application, not a tactile one");
   }
-  if (report.fromVersion == 0 &&
-      connection.queryInt("SELECT count(*) FROM sqlite_schema") != 0) {
-    throw DbError("'" + name + "' holds tables but no tactile schema version; not a tactile database");
+  if (report.fromVersion == 0 && connection.queryInt("SELECT count(*) FROM sqlite_schema") != 0) {
+    throw DbError("'" + name +
+                  "' holds tables but no tactile schema version; not a tactile database");
   }
   if (report.fromVersion >= targetVersion) return report;
 

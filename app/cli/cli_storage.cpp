@@ -1,15 +1,534 @@
-// Database verbs: import, export-run, labels, autolabel, db, bench storage.
+// Database verbs: import, export-run, labels import|export, autolabel, db check, bench storage.
+#include <sys/resource.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <memory>
+#include <nlohmann/json.hpp>
+#include <random>
+#include <string>
+#include <vector>
+
 #include "app/cli/cli_common.h"
+#include "sim/run_csv.h"
+#include "storage/run_database.h"
+#include "storage/synthetic_run.h"
 
 namespace tactile::cli {
+namespace {
+
+namespace fs = std::filesystem;
+using storage::ImportStatus;
+using storage::RunDatabase;
+
+std::unique_ptr<RunDatabase> openDatabase(const std::string& path) {
+  auto db = RunDatabase::open(path);
+  if (!db) throw std::runtime_error(db.error());
+  if (!db.value()->migrationBackup().empty()) {
+    printWarning("migrated '" + path + "' to the current schema; the old file was copied to " +
+                 db.value()->migrationBackup().string());
+  }
+  return std::move(db.value());
+}
+
+void printJson(const nlohmann::json& doc) {
+  std::printf("%s\n", doc.dump().c_str());
+}
+
+// Files as given; a folder stands for the *.csv files in it (sorted, not recursive).
+std::vector<fs::path> expandInputs(const std::vector<std::string>& inputs) {
+  std::vector<fs::path> files;
+  for (const std::string& input : inputs) {
+    std::error_code ec;
+    if (fs::is_directory(input, ec)) {
+      std::vector<fs::path> inFolder;
+      for (const auto& entry : fs::directory_iterator(input, ec)) {
+        if (entry.is_regular_file() && entry.path().extension() == ".csv") {
+          inFolder.push_back(entry.path());
+        }
+      }
+      if (ec) throw std::runtime_error(input + ": cannot list folder: " + ec.message());
+      std::sort(inFolder.begin(), inFolder.end());
+      if (inFolder.empty()) printWarning(input + ": no .csv files in this folder");
+      files.insert(files.end(), inFolder.begin(), inFolder.end());
+    } else {
+      files.emplace_back(input);
+    }
+  }
+  return files;
+}
+
+// ---- import ----------------------------------------------------------------------------------
+
+struct ImportArgs {
+  std::string db;
+  std::vector<std::string> files;
+  std::string name;
+  unsigned threads = 0;
+  bool json = false;
+};
+
+int runImport(const ImportArgs& a) {
+  std::vector<fs::path> files = expandInputs(a.files);
+  if (!a.name.empty() && files.size() != 1) {
+    throw UsageError("--name needs exactly one file, got " + std::to_string(files.size()));
+  }
+  auto db = openDatabase(a.db);
+  storage::ImportOptions options;
+  options.name = a.name;
+  options.threads = a.threads;
+  const auto t0 = std::chrono::steady_clock::now();
+  const auto outcomes = db->importFiles(files, options);
+  const double seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  nlohmann::json runs = nlohmann::json::array();
+  nlohmann::json skipped = nlohmann::json::array();
+  nlohmann::json failed = nlohmann::json::array();
+  std::int64_t steps = 0;
+  for (const auto& outcome : outcomes) {
+    for (const std::string& warning : outcome.warnings)
+      printWarning(warning);
+    switch (outcome.status) {
+      case ImportStatus::Imported:
+        steps += outcome.steps;
+        runs.push_back({{"name", outcome.runName},
+                        {"id", outcome.runId},
+                        {"steps", outcome.steps},
+                        {"file", outcome.file}});
+        if (!a.json) {
+          std::printf("imported %s as run '%s' (id %lld, %lld steps)\n", outcome.file.c_str(),
+                      outcome.runName.c_str(), static_cast<long long>(outcome.runId),
+                      static_cast<long long>(outcome.steps));
+        }
+        break;
+      case ImportStatus::Skipped:
+        skipped.push_back({{"file", outcome.file},
+                           {"name", outcome.runName},
+                           {"id", outcome.runId},
+                           {"message", outcome.message}});
+        if (!a.json) std::printf("skipped %s\n", outcome.message.c_str());
+        break;
+      case ImportStatus::Failed:
+        failed.push_back({{"file", outcome.file}, {"message", outcome.message}});
+        printError(outcome.message);
+        break;
+    }
+  }
+  if (a.json) {
+    printJson({{"runs", runs},
+               {"skipped", skipped},
+               {"failed", failed},
+               {"steps", steps},
+               {"seconds", seconds}});
+  } else if (outcomes.size() > 1) {
+    std::printf("%zu imported, %zu skipped, %zu failed; %lld steps in %.3f s\n", runs.size(),
+                skipped.size(), failed.size(), static_cast<long long>(steps), seconds);
+  }
+  return failed.empty() ? kExitOk : kExitFailure;
+}
+
+// ---- export-run ------------------------------------------------------------------------------
+
+int runExport(const std::string& dbPath, const std::string& runName, const std::string& out) {
+  auto db = openDatabase(dbPath);
+  auto run = db->findRun(runName);
+  if (!run) throw std::runtime_error(dbPath + ": " + run.error());
+  const auto status = db->exportRun(run->id, out);
+  if (!status) throw std::runtime_error(status.error);
+  return kExitOk;
+}
+
+// ---- labels ----------------------------------------------------------------------------------
+
+int runLabelsImport(const std::string& dbPath, const std::string& set, const std::string& file,
+                    bool json) {
+  auto db = openDatabase(dbPath);
+  auto count = db->importLabels(set, file);
+  if (!count) throw std::runtime_error(count.error());
+  if (json) {
+    printJson({{"set", set}, {"segments", count.value()}});
+  } else {
+    std::printf("imported %lld segments from %s into label set '%s'\n",
+                static_cast<long long>(count.value()), file.c_str(), set.c_str());
+  }
+  return kExitOk;
+}
+
+int runLabelsExport(const std::string& dbPath, const std::string& set, const std::string& file) {
+  auto db = openDatabase(dbPath);
+  const auto status = db->exportLabels(set, file);
+  if (!status) throw std::runtime_error(status.error);
+  return kExitOk;
+}
+
+// ---- autolabel -------------------------------------------------------------------------------
+
+int runAutolabel(const std::string& dbPath, const std::string& runName, bool all,
+                 const std::string& set, bool json) {
+  if (all == !runName.empty()) throw UsageError("give exactly one of --run NAME or --all");
+  auto db = openDatabase(dbPath);
+  std::vector<storage::RunInfo> runs;
+  if (all) {
+    auto listed = db->listRuns();
+    if (!listed) throw std::runtime_error(listed.error());
+    runs = std::move(listed.value());
+  } else {
+    auto run = db->findRun(runName);
+    if (!run) throw std::runtime_error(dbPath + ": " + run.error());
+    runs.push_back(std::move(run.value()));
+  }
+  nlohmann::json labelled = nlohmann::json::array();
+  int failures = 0;
+  for (const auto& run : runs) {
+    if (all && !run.hasTruth) {
+      printWarning("run '" + run.name + "' has no truth columns; not labelled");
+      continue;
+    }
+    auto count = db->autolabel(run.id, set);
+    if (!count) {
+      printError(count.error());
+      ++failures;
+      continue;
+    }
+    labelled.push_back({{"run", run.name}, {"segments", count.value()}});
+    if (!json) {
+      std::printf("labelled run '%s': %lld segments in set '%s'\n", run.name.c_str(),
+                  static_cast<long long>(count.value()), set.c_str());
+    }
+  }
+  if (json) printJson({{"set", set}, {"runs", labelled}});
+  if (failures > 0) return kExitFailure;
+  if (labelled.empty()) {
+    printError(runs.empty() ? "the database holds no runs" : "no run has truth columns");
+    return kExitFailure;
+  }
+  return kExitOk;
+}
+
+// ---- db check --------------------------------------------------------------------------------
+
+int runCheck(const std::string& dbPath, bool json) {
+  auto db = openDatabase(dbPath);
+  const storage::IntegrityReport report = db->check();
+  if (json) {
+    printJson({{"ok", report.ok},
+               {"schema_version", report.schemaVersion},
+               {"runs", report.runs},
+               {"steps", report.steps},
+               {"label_sets", report.labelSets},
+               {"problems", report.problems}});
+  } else {
+    for (const std::string& problem : report.problems)
+      printError(dbPath + ": " + problem);
+    std::printf("%s: %s, schema version %d, %lld runs, %lld steps, %lld label sets\n",
+                dbPath.c_str(), report.ok ? "ok" : "DAMAGED", report.schemaVersion,
+                static_cast<long long>(report.runs), static_cast<long long>(report.steps),
+                static_cast<long long>(report.labelSets));
+  }
+  return report.ok ? kExitOk : kExitFailure;
+}
+
+// ---- bench storage ---------------------------------------------------------------------------
+
+struct BenchArgs {
+  std::int64_t steps = 1000000;
+  int files = 8;
+  std::int64_t bigSteps = 1000000;
+  int repeats = 15;
+  std::string dir;
+  bool keep = false;
+  bool compare = true;
+  bool json = false;
+};
+
+double median(std::vector<double> values) {
+  std::sort(values.begin(), values.end());
+  const std::size_t n = values.size();
+  return n == 0 ? 0.0 : (n % 2 == 1 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]));
+}
+
+// CPU seconds (user + system) of this process, or of its finished children.
+double cpuSeconds(int who) {
+  rusage usage{};
+  getrusage(who, &usage);
+  return static_cast<double>(usage.ru_utime.tv_sec + usage.ru_stime.tv_sec) +
+         1e-6 * static_cast<double>(usage.ru_utime.tv_usec + usage.ru_stime.tv_usec);
+}
+
+double secondsSince(std::chrono::steady_clock::time_point t0) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+
+// Times the sqlite3 shell's `.import --csv` of the same files (metadata lines skipped) into a plain
+// table with the same journal settings; < 0 when the shell is not available or fails.
+double timeSqliteShellImport(const std::vector<fs::path>& files, const fs::path& dbPath,
+                             std::size_t metadataLines, double& cpuOut) {
+  if (std::system("command -v sqlite3 > /dev/null 2>&1") != 0) return -1.0;
+  const fs::path script = dbPath.string() + ".sql";
+  {
+    std::ofstream out(script);
+    out << "PRAGMA page_size = 65536;\nPRAGMA journal_mode = WAL;\nPRAGMA synchronous = NORMAL;\n"
+        << "PRAGMA cache_size = -262144;\n";
+    for (const fs::path& file : files) {
+      out << ".import --csv --skip " << metadataLines << " '" << file.string() << "' steps\n";
+    }
+  }
+  const std::string command =
+      "sqlite3 '" + dbPath.string() + "' < '" + script.string() + "' > /dev/null";
+  const auto t0 = std::chrono::steady_clock::now();
+  const double cpu0 = cpuSeconds(RUSAGE_CHILDREN);
+  const int rc = std::system(command.c_str());
+  const double seconds = secondsSince(t0);
+  cpuOut = cpuSeconds(RUSAGE_CHILDREN) - cpu0;
+  return rc == 0 ? seconds : -1.0;
+}
+
+int runBenchStorage(const BenchArgs& a) {
+  if (a.steps < a.files || a.files < 1) throw UsageError("--steps must be at least --files >= 1");
+  if (a.bigSteps < 20000) throw UsageError("--big-steps must be at least 20000");
+  fs::path dir = a.dir.empty() ? fs::temp_directory_path() /
+                                     ("tactile-bench-storage-" + std::to_string(::getpid()))
+                               : fs::path(a.dir);
+  std::error_code ec;
+  const bool ownDir = !fs::exists(dir, ec);
+  fs::create_directories(dir);
+  nlohmann::json result = {{"steps", a.steps}, {"files", a.files}, {"big_steps", a.bigSteps}};
+
+  // 1. Many files: parallel parsing, one writer.
+  std::vector<fs::path> files;
+  for (int f = 0; f < a.files; ++f) {
+    const std::int64_t n = a.steps / a.files + (f < a.steps % a.files ? 1 : 0);
+    files.push_back(dir / ("bench-" + std::to_string(f) + ".csv"));
+    const std::string error =
+        writeRunCsv(storage::makeSyntheticRun(static_cast<std::size_t>(n), 100 + f), files.back());
+    if (!error.empty()) throw std::runtime_error(files.back().string() + ": " + error);
+  }
+  std::uintmax_t bytes = 0;
+  for (const auto& file : files)
+    bytes += fs::file_size(file);
+  const std::size_t metadataLines =
+      storage::makeSyntheticRun(1, 1).metadata.size();  // metadata lines before the header
+  const fs::path dbPath = dir / "bench.db";
+  for (const char* suffix : {"", "-wal", "-shm"})
+    fs::remove(dbPath.string() + suffix);
+  double importSeconds = 0.0;
+  double importCpu = 0.0;
+  {
+    auto db = openDatabase(dbPath.string());
+    const auto t0 = std::chrono::steady_clock::now();
+    const double cpu0 = cpuSeconds(RUSAGE_SELF);
+    const auto outcomes = db->importFiles(files);
+    importSeconds = secondsSince(t0);
+    importCpu = cpuSeconds(RUSAGE_SELF) - cpu0;
+    for (const auto& outcome : outcomes) {
+      if (outcome.status != ImportStatus::Imported) throw std::runtime_error(outcome.message);
+    }
+  }
+  result["import_seconds"] = importSeconds;
+  result["import_steps_per_second"] = static_cast<double>(a.steps) / importSeconds;
+  result["csv_megabytes"] = static_cast<double>(bytes) / 1e6;
+  result["import_cpu_seconds"] = importCpu;
+  // What two cores would give if this process had them to itself (parsing runs on both).
+  result["import_steps_per_second_2_idle_cores"] =
+      static_cast<double>(a.steps) / std::max(importCpu / 2.0, 1e-9);
+  if (a.compare) {
+    const fs::path shellDb = dir / "sqlite3-shell.db";
+    for (const char* suffix : {"", "-wal", "-shm"})
+      fs::remove(shellDb.string() + suffix);
+    double shellCpu = 0.0;
+    const double shellSeconds = timeSqliteShellImport(files, shellDb, metadataLines, shellCpu);
+    if (shellSeconds > 0) {
+      result["sqlite3_shell_import_seconds"] = shellSeconds;
+      result["sqlite3_shell_cpu_seconds"] = shellCpu;
+      result["sqlite3_shell_steps_per_second"] = static_cast<double>(a.steps) / shellSeconds;
+      result["speedup_vs_sqlite3_shell"] = shellSeconds / importSeconds;
+    }
+    for (const char* suffix : {"", "-wal", "-shm", ".sql"})
+      fs::remove(shellDb.string() + suffix);
+  }
+
+  // 2. One big run: single-file import, then windows and summaries.
+  const fs::path big = dir / "big.csv";
+  {
+    const std::string error =
+        writeRunCsv(storage::makeSyntheticRun(static_cast<std::size_t>(a.bigSteps), 7), big);
+    if (!error.empty()) throw std::runtime_error(big.string() + ": " + error);
+  }
+  auto db = openDatabase(dbPath.string());
+  {
+    const auto t0 = std::chrono::steady_clock::now();
+    const double cpu0 = cpuSeconds(RUSAGE_SELF);
+    const auto outcomes = db->importFiles({big});
+    const double seconds = secondsSince(t0);
+    result["single_file_cpu_seconds"] = cpuSeconds(RUSAGE_SELF) - cpu0;
+    if (outcomes[0].status != ImportStatus::Imported) throw std::runtime_error(outcomes[0].message);
+    result["single_file_import_seconds"] = seconds;
+    result["single_file_steps_per_second"] = static_cast<double>(a.bigSteps) / seconds;
+  }
+  const auto run = db->findRun("big");
+  if (!run) throw std::runtime_error(run.error());
+  std::mt19937_64 rng(3);
+  std::vector<double> windowMs;
+  std::vector<double> summaryMs;
+  for (int r = 0; r < a.repeats; ++r) {
+    const std::int64_t first =
+        std::uniform_int_distribution<std::int64_t>(0, a.bigSteps - 10000)(rng);
+    auto t0 = std::chrono::steady_clock::now();
+    auto window = db->loadWindow(run->id, first, 10000);
+    windowMs.push_back(1e3 * secondsSince(t0));
+    if (!window || window->data.stepCount() != 10000) throw std::runtime_error("window failed");
+    t0 = std::chrono::steady_clock::now();
+    auto summary = db->loadSummary(run->id, 0, -1, 2000);
+    summaryMs.push_back(1e3 * secondsSince(t0));
+    if (!summary || summary->buckets.empty()) throw std::runtime_error("summary failed");
+  }
+  result["window_10000_ms_median"] = median(windowMs);
+  result["summary_2000_buckets_ms_median"] = median(summaryMs);
+  {
+    const auto t0 = std::chrono::steady_clock::now();
+    auto whole = db->loadRun(run->id);
+    result["load_whole_run_seconds"] = secondsSince(t0);
+    if (!whole) throw std::runtime_error(whole.error());
+  }
+  db.reset();
+  if (!a.keep) {
+    // Only what this benchmark wrote; a folder given by the user stays.
+    for (const auto& file : files)
+      fs::remove(file, ec);
+    fs::remove(big, ec);
+    for (const char* suffix : {"", "-wal", "-shm"})
+      fs::remove(dbPath.string() + suffix, ec);
+    if (ownDir) fs::remove(dir, ec);
+  }
+
+  if (a.json) {
+    printJson(result);
+  } else {
+    std::printf(
+        "import, %d files, %lld steps (%.1f MB CSV): %.3f s wall = %.0f steps/s; %.3f s CPU "
+        "(%.0f steps/s on 2 idle cores)\n",
+        a.files, static_cast<long long>(a.steps), result["csv_megabytes"].get<double>(),
+        importSeconds, result["import_steps_per_second"].get<double>(), importCpu,
+        result["import_steps_per_second_2_idle_cores"].get<double>());
+    if (result.contains("sqlite3_shell_import_seconds")) {
+      std::printf(
+          "sqlite3 shell .import of the same files: %.3f s wall = %.0f steps/s, %.3f s CPU "
+          "(ours %.2fx faster in wall time)\n",
+          result["sqlite3_shell_import_seconds"].get<double>(),
+          result["sqlite3_shell_steps_per_second"].get<double>(),
+          result["sqlite3_shell_cpu_seconds"].get<double>(),
+          result["speedup_vs_sqlite3_shell"].get<double>());
+    }
+    std::printf("import, 1 file, %lld steps: %.3f s wall = %.0f steps/s, %.3f s CPU\n",
+                static_cast<long long>(a.bigSteps),
+                result["single_file_import_seconds"].get<double>(),
+                result["single_file_steps_per_second"].get<double>(),
+                result["single_file_cpu_seconds"].get<double>());
+    std::printf("window of 10000 steps: %.2f ms (median of %d)\n", median(windowMs), a.repeats);
+    std::printf("summary of the whole run, 2000 buckets: %.2f ms (median of %d)\n",
+                median(summaryMs), a.repeats);
+    std::printf("whole run load: %.3f s\n", result["load_whole_run_seconds"].get<double>());
+  }
+  return kExitOk;
+}
+
+}  // namespace
 
 void registerStorageVerbs(CLI::App& app, CLI::App& bench) {
-  addPlannedVerb(app, "import", "Import run CSV files into a database");
-  addPlannedVerb(app, "export-run", "Export a stored run back to a run CSV file");
-  addPlannedVerb(app, "labels", "Import or export label sets");
-  addPlannedVerb(app, "autolabel", "Turn a run's ground truth into a label set");
-  addPlannedVerb(app, "db", "Check a database's integrity and schema version");
-  addPlannedVerb(bench, "storage", "Import and window-loading speed of the database");
+  {
+    auto args = std::make_shared<ImportArgs>();
+    CLI::App* cmd = app.add_subcommand("import", "Import run CSV files into a database");
+    cmd->add_option("--db", args->db, "Database file (created when absent)")->required();
+    cmd->add_option("files", args->files, "Run files, or folders of *.csv run files")->required();
+    cmd->add_option("--name", args->name, "Run name (one file only; default: the file's stem)");
+    cmd->add_option("--threads", args->threads, "Parser threads (default: one per core)");
+    cmd->add_flag("--json", args->json, R"(Print {"runs":[{"name","id","steps"}],...})");
+    setAction(cmd, [args] { return runImport(*args); });
+  }
+  {
+    auto db = std::make_shared<std::string>();
+    auto run = std::make_shared<std::string>();
+    auto out = std::make_shared<std::string>();
+    CLI::App* cmd = app.add_subcommand("export-run", "Export a stored run back to a run CSV file");
+    cmd->add_option("--db", *db, "Database file")->required();
+    cmd->add_option("--run", *run, "Run name")->required();
+    cmd->add_option("--out", *out, "Output run file (written atomically)")->required();
+    setAction(cmd, [db, run, out] { return runExport(*db, *run, *out); });
+  }
+  {
+    CLI::App* labels = app.add_subcommand("labels", "Import or export label sets (CSV or JSON)");
+    labels->require_subcommand(1, 1);
+    struct LabelArgs {
+      std::string db, set, file;
+      bool json = false;
+    };
+    auto importArgs = std::make_shared<LabelArgs>();
+    CLI::App* imp = labels->add_subcommand(
+        "import", "Add a label file's segments to a set (created when absent); newest wins");
+    imp->add_option("--db", importArgs->db, "Database file")->required();
+    imp->add_option("--set", importArgs->set, "Label set name")->required();
+    imp->add_option("file", importArgs->file, "Label file: .json, otherwise CSV")->required();
+    imp->add_flag("--json", importArgs->json, "Print a JSON summary");
+    setAction(imp, [importArgs] {
+      return runLabelsImport(importArgs->db, importArgs->set, importArgs->file, importArgs->json);
+    });
+    auto exportArgs = std::make_shared<LabelArgs>();
+    CLI::App* exp = labels->add_subcommand("export", "Write a label set to a file");
+    exp->add_option("--db", exportArgs->db, "Database file")->required();
+    exp->add_option("--set", exportArgs->set, "Label set name")->required();
+    exp->add_option("file", exportArgs->file, "Label file: .json, otherwise CSV")->required();
+    setAction(exp, [exportArgs] {
+      return runLabelsExport(exportArgs->db, exportArgs->set, exportArgs->file);
+    });
+  }
+  {
+    struct AutoArgs {
+      std::string db, run, set;
+      bool all = false;
+      bool json = false;
+    };
+    auto args = std::make_shared<AutoArgs>();
+    CLI::App* cmd = app.add_subcommand(
+        "autolabel", "Turn runs' truth columns into a label set (NoContact ranges included)");
+    cmd->add_option("--db", args->db, "Database file")->required();
+    cmd->add_option("--run", args->run, "Run name");
+    cmd->add_flag("--all", args->all, "Every run with truth columns");
+    cmd->add_option("--set", args->set, "Label set name (created when absent)")->required();
+    cmd->add_flag("--json", args->json, "Print a JSON summary");
+    setAction(cmd, [args] {
+      return runAutolabel(args->db, args->run, args->all, args->set, args->json);
+    });
+  }
+  {
+    CLI::App* dbCmd = app.add_subcommand("db", "Database maintenance");
+    dbCmd->require_subcommand(1, 1);
+    auto path = std::make_shared<std::string>();
+    auto json = std::make_shared<bool>(false);
+    CLI::App* check =
+        dbCmd->add_subcommand("check", "Check a database's integrity and schema version");
+    check->add_option("--db", *path, "Database file")->required();
+    check->add_flag("--json", *json, "Print a JSON report");
+    setAction(check, [path, json] { return runCheck(*path, *json); });
+  }
+  {
+    auto args = std::make_shared<BenchArgs>();
+    CLI::App* cmd = bench.add_subcommand(
+        "storage", "Import speed (against the sqlite3 shell), window and summary loading");
+    cmd->add_option("--steps", args->steps, "Steps over all files of the many-file import");
+    cmd->add_option("--files", args->files, "Files of the many-file import");
+    cmd->add_option("--big-steps", args->bigSteps, "Steps of the big run for windows/summaries");
+    cmd->add_option("--repeats", args->repeats, "Window and summary loads to take the median of");
+    cmd->add_option("--dir", args->dir, "Work folder (default: a new temporary folder)");
+    cmd->add_flag("--keep", args->keep, "Keep the generated files and database");
+    cmd->add_flag("!--no-compare", args->compare, "Skip the sqlite3 shell comparison");
+    cmd->add_flag("--json", args->json, "Print the figures as JSON");
+    setAction(cmd, [args] { return runBenchStorage(*args); });
+  }
 }
 
 }  // namespace tactile::cli

@@ -1,0 +1,202 @@
+#include "storage/label_files.h"
+
+#include <nlohmann/json.hpp>
+
+#include "sim/text_parse.h"
+
+namespace tactile::storage {
+namespace {
+
+std::vector<std::string_view> splitComma(std::string_view line) {
+  std::vector<std::string_view> fields;
+  while (true) {
+    const std::size_t comma = line.find(',');
+    fields.push_back(line.substr(0, comma));
+    if (comma == std::string_view::npos) break;
+    line.remove_prefix(comma + 1);
+  }
+  return fields;
+}
+
+// Checks one record's fields; returns an error text or empty.
+std::string fillRecord(LabelRecord& record, std::string_view group, std::string_view first,
+                       std::string_view last, std::string_view cls) {
+  if (record.run.empty()) return "empty run name";
+  const auto g = parseSensorGroup(group);
+  if (!g)
+    return "unknown group '" + std::string(group) + "' (expected F, FLC, L, RLC, B, RRC, R, FRC)";
+  record.group = *g;
+  if (!parseInteger(first, record.firstStep) || record.firstStep < 0) {
+    return "first_step '" + std::string(first) + "' is not a step number";
+  }
+  if (!parseInteger(last, record.lastStep) || record.lastStep < record.firstStep) {
+    return "last_step '" + std::string(last) + "' is not a step number >= first_step";
+  }
+  const auto c = parseContactClass(cls);
+  if (!c) {
+    return "unknown class '" + std::string(cls) +
+           "' (expected NoContact, Wall, Corner, LeavingWall or DeadPath)";
+  }
+  record.cls = *c;
+  return {};
+}
+
+}  // namespace
+
+LabelFileResult parseLabelCsv(std::string_view text, std::string_view fileName) {
+  LabelFileResult result;
+  auto fail = [&](std::size_t line, const std::string& message) {
+    result.records.clear();
+    result.error = std::string(fileName) + ":" + std::to_string(line) + ": " + message;
+    return result;
+  };
+  if (text.starts_with("\xEF\xBB\xBF")) text.remove_prefix(3);
+  std::size_t lineNo = 0;
+  bool header = true;
+  bool withAnnotator = false;
+  while (!text.empty()) {
+    const std::size_t newline = text.find('\n');
+    std::string_view line = text.substr(0, newline);
+    text.remove_prefix(newline == std::string_view::npos ? text.size() : newline + 1);
+    ++lineNo;
+    if (line.ends_with('\r')) line.remove_suffix(1);
+    if (header) {
+      if (line == "run,group,first_step,last_step,class") {
+        withAnnotator = false;
+      } else if (line == "run,group,first_step,last_step,class,annotator") {
+        withAnnotator = true;
+      } else {
+        return fail(lineNo,
+                    "expected the header 'run,group,first_step,last_step,class' "
+                    "(optionally ',annotator'), found '" +
+                        std::string(line) + "'");
+      }
+      header = false;
+      continue;
+    }
+    if (line.empty()) return fail(lineNo, "empty line");
+    const auto fields = splitComma(line);
+    const std::size_t expected = withAnnotator ? 6 : 5;
+    if (fields.size() != expected) {
+      return fail(lineNo, "expected " + std::to_string(expected) + " fields, found " +
+                              std::to_string(fields.size()));
+    }
+    LabelRecord record;
+    record.line = lineNo;
+    record.run = std::string(fields[0]);
+    if (std::string error = fillRecord(record, fields[1], fields[2], fields[3], fields[4]);
+        !error.empty()) {
+      return fail(lineNo, error);
+    }
+    if (withAnnotator) record.annotator = std::string(fields[5]);
+    result.records.push_back(std::move(record));
+  }
+  if (header) return fail(1, "empty file (expected a header)");
+  return result;
+}
+
+LabelFileResult parseLabelJson(std::string_view text, std::string_view fileName) {
+  LabelFileResult result;
+  const std::string name(fileName);
+  nlohmann::json doc = nlohmann::json::parse(text, nullptr, false);
+  if (doc.is_discarded()) {
+    result.error = name + ": not valid JSON";
+    return result;
+  }
+  const nlohmann::json* segments = &doc;
+  if (doc.is_object()) {
+    if (doc.contains("format") && doc["format"] != "tactile-labels") {
+      result.error = name + ": format is not \"tactile-labels\"";
+      return result;
+    }
+    if (doc.contains("version") && doc["version"] != 1) {
+      result.error = name + ": unsupported label file version " + doc["version"].dump();
+      return result;
+    }
+    if (!doc.contains("segments")) {
+      result.error = name + ": missing \"segments\"";
+      return result;
+    }
+    segments = &doc["segments"];
+  }
+  if (!segments->is_array()) {
+    result.error = name + ": \"segments\" is not an array";
+    return result;
+  }
+  std::size_t index = 0;
+  for (const nlohmann::json& item : *segments) {
+    ++index;
+    auto fail = [&](const std::string& message) {
+      result.records.clear();
+      result.error = name + ": segment " + std::to_string(index) + ": " + message;
+      return result;
+    };
+    if (!item.is_object()) return fail("not an object");
+    for (const char* key : {"run", "group", "class"}) {
+      if (!item.contains(key) || !item[key].is_string()) {
+        return fail(std::string("missing text field \"") + key + "\"");
+      }
+    }
+    for (const char* key : {"first_step", "last_step"}) {
+      if (!item.contains(key) || !item[key].is_number_integer()) {
+        return fail(std::string("missing integer field \"") + key + "\"");
+      }
+    }
+    LabelRecord record;
+    record.line = index;
+    record.run = item["run"].get<std::string>();
+    const std::string first = std::to_string(item["first_step"].get<std::int64_t>());
+    const std::string last = std::to_string(item["last_step"].get<std::int64_t>());
+    if (std::string error = fillRecord(record, item["group"].get<std::string>(), first, last,
+                                       item["class"].get<std::string>());
+        !error.empty()) {
+      return fail(error);
+    }
+    if (item.contains("annotator")) {
+      if (!item["annotator"].is_string()) return fail("\"annotator\" is not text");
+      record.annotator = item["annotator"].get<std::string>();
+    }
+    result.records.push_back(std::move(record));
+  }
+  return result;
+}
+
+std::string formatLabelCsv(const std::vector<LabelRecord>& records) {
+  bool withAnnotator = false;
+  for (const LabelRecord& r : records)
+    withAnnotator = withAnnotator || !r.annotator.empty();
+  std::string out = withAnnotator ? "run,group,first_step,last_step,class,annotator\n"
+                                  : "run,group,first_step,last_step,class\n";
+  for (const LabelRecord& r : records) {
+    out += r.run;
+    out += ',';
+    out += groupInfo(r.group).shortName;
+    out += ',' + std::to_string(r.firstStep) + ',' + std::to_string(r.lastStep) + ',';
+    out += contactClassName(r.cls);
+    if (withAnnotator) out += ',' + r.annotator;
+    out += '\n';
+  }
+  return out;
+}
+
+std::string formatLabelJson(const std::vector<LabelRecord>& records, std::string_view setName,
+                            std::string_view setAnnotator) {
+  nlohmann::json segments = nlohmann::json::array();
+  for (const LabelRecord& r : records) {
+    nlohmann::json item = {{"run", r.run},
+                           {"group", groupInfo(r.group).shortName},
+                           {"first_step", r.firstStep},
+                           {"last_step", r.lastStep},
+                           {"class", contactClassName(r.cls)}};
+    if (!r.annotator.empty()) item["annotator"] = r.annotator;
+    segments.push_back(std::move(item));
+  }
+  nlohmann::json doc = {{"format", "tactile-labels"},
+                        {"version", 1},
+                        {"set", setName},
+                        {"annotator", setAnnotator},
+                        {"segments", std::move(segments)}};
+  return doc.dump(1) + "\n";
+}
+
+}  // namespace tactile::storage

@@ -1,0 +1,391 @@
+// Label sets and segments. Every public call that changes something is one committed
+// transaction, so a killed process loses at most the edit in flight.
+#include <algorithm>
+#include <map>
+
+#include "sim/run_csv.h"
+#include "storage/database_impl.h"
+#include "storage/label_files.h"
+
+namespace tactile::storage {
+namespace {
+
+bool isJsonPath(const std::filesystem::path& file) {
+  std::string ext = file.extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(),
+                 [](unsigned char c) { return std::tolower(c); });
+  return ext == ".json";
+}
+
+}  // namespace
+
+std::int64_t RunDatabase::Impl::labelSetIdByName(std::string_view name) {
+  db::Statement& s = statement("SELECT id FROM label_sets WHERE name = ?");
+  s.bind(1, name);
+  const std::int64_t id = s.step() ? s.columnInt(0) : 0;
+  s.reset();
+  return id;
+}
+
+std::int64_t RunDatabase::Impl::ensureLabelSet(const std::string& name) {
+  if (name.empty()) throw db::DbError("a label set needs a name");
+  if (const std::int64_t id = labelSetIdByName(name); id != 0) return id;
+  const std::string now = utcNow();
+  statement("INSERT INTO label_sets(name, created_at) VALUES(?, ?)")
+      .bind(1, name)
+      .bind(2, now)
+      .run();
+  return connection.lastInsertRowId();
+}
+
+std::int64_t RunDatabase::Impl::insertSegmentNewestWins(std::int64_t setId,
+                                                        const LabelSegment& segment,
+                                                        std::int64_t keepId) {
+  std::int64_t runId = segment.runId;
+  if (runId == 0) runId = runIdByName(segment.run);
+  const std::int64_t steps = runStepCount(runId);
+  if (segment.firstStep < 0 || segment.lastStep < segment.firstStep || segment.lastStep >= steps) {
+    throw db::DbError("segment " + std::to_string(segment.firstStep) + ".." +
+                      std::to_string(segment.lastStep) + " is not within the run's steps 0.." +
+                      std::to_string(steps - 1));
+  }
+  const std::string_view group = groupInfo(segment.group).shortName;
+  const std::int64_t a = segment.firstStep;
+  const std::int64_t b = segment.lastStep;
+
+  struct Old {
+    std::int64_t id, first, last;
+    std::string cls, annotator, created;
+  };
+  std::vector<Old> overlapping;
+  {
+    db::Statement& s = statement(
+        "SELECT id, first_step, last_step, class, annotator, created_at FROM label_segments "
+        "WHERE set_id = ? AND run_id = ? AND grp = ? AND first_step <= ? AND last_step >= ?");
+    s.bind(1, setId).bind(2, runId).bind(3, group).bind(4, b).bind(5, a);
+    while (s.step()) {
+      overlapping.push_back({s.columnInt(0), s.columnInt(1), s.columnInt(2), s.columnText(3),
+                             s.columnText(4), s.columnText(5)});
+    }
+    s.reset();
+  }
+  for (const Old& old : overlapping) {
+    if (old.first >= a && old.last <= b) {
+      statement("DELETE FROM label_segments WHERE id = ?").bind(1, old.id).run();
+      continue;
+    }
+    if (old.first < a) {
+      statement("UPDATE label_segments SET last_step = ? WHERE id = ?")
+          .bind(1, a - 1)
+          .bind(2, old.id)
+          .run();
+      if (old.last > b) {  // the new segment splits the old one: keep its right part too
+        statement(
+            "INSERT INTO label_segments(set_id, run_id, grp, first_step, last_step, class, "
+            "annotator, created_at) VALUES(?, ?, ?, ?, ?, ?, ?, ?)")
+            .bind(1, setId)
+            .bind(2, runId)
+            .bind(3, group)
+            .bind(4, b + 1)
+            .bind(5, old.last)
+            .bind(6, old.cls)
+            .bind(7, old.annotator)
+            .bind(8, old.created)
+            .run();
+      }
+    } else {
+      statement("UPDATE label_segments SET first_step = ? WHERE id = ?")
+          .bind(1, b + 1)
+          .bind(2, old.id)
+          .run();
+    }
+  }
+  const std::string now = utcNow();
+  db::Statement& insert = statement(
+      "INSERT INTO label_segments(id, set_id, run_id, grp, first_step, last_step, class, "
+      "annotator, created_at) VALUES(?, ?, ?, ?, ?, ?, ?, ?, ?)");
+  if (keepId != 0) {
+    insert.bind(1, keepId);
+  } else {
+    insert.bindNull(1);
+  }
+  insert.bind(2, setId)
+      .bind(3, runId)
+      .bind(4, group)
+      .bind(5, a)
+      .bind(6, b)
+      .bind(7, contactClassName(segment.cls))
+      .bind(8, segment.annotator)
+      .bind(9, now)
+      .run();
+  return connection.lastInsertRowId();
+}
+
+Result<std::vector<LabelSetInfo>> RunDatabase::listLabelSets() {
+  return guarded<std::vector<LabelSetInfo>>([&] {
+    db::Statement& s = impl_->statement(
+        "SELECT id, name, annotator, created_at, "
+        "(SELECT count(*) FROM label_segments WHERE set_id = label_sets.id) "
+        "FROM label_sets ORDER BY name");
+    std::vector<LabelSetInfo> sets;
+    while (s.step()) {
+      sets.push_back(
+          {s.columnInt(0), s.columnText(1), s.columnText(2), s.columnText(3), s.columnInt(4)});
+    }
+    return sets;
+  });
+}
+
+Result<LabelSetInfo> RunDatabase::findLabelSet(std::string_view name) {
+  Result<std::vector<LabelSetInfo>> sets = listLabelSets();
+  if (!sets) return Result<LabelSetInfo>::failure(sets.error());
+  for (LabelSetInfo& info : sets.value()) {
+    if (info.name == name) return info;
+  }
+  return Result<LabelSetInfo>::failure("no label set named '" + std::string(name) + "'");
+}
+
+Result<std::int64_t> RunDatabase::createLabelSet(const std::string& name,
+                                                 const std::string& annotator) {
+  return guarded<std::int64_t>([&] {
+    if (name.empty()) throw db::DbError("a label set needs a name");
+    db::Transaction transaction(impl_->connection);
+    if (impl_->labelSetIdByName(name) != 0) {
+      throw db::DbError("a label set named '" + name + "' already exists");
+    }
+    const std::string now = utcNow();
+    impl_->statement("INSERT INTO label_sets(name, annotator, created_at) VALUES(?, ?, ?)")
+        .bind(1, name)
+        .bind(2, annotator)
+        .bind(3, now)
+        .run();
+    const std::int64_t id = impl_->connection.lastInsertRowId();
+    transaction.commit();
+    return id;
+  });
+}
+
+Status RunDatabase::renameLabelSet(std::int64_t setId, const std::string& newName) {
+  return guardedStatus([&] {
+    if (newName.empty()) throw db::DbError("a label set needs a name");
+    db::Transaction transaction(impl_->connection);
+    const std::int64_t existing = impl_->labelSetIdByName(newName);
+    if (existing != 0 && existing != setId) {
+      throw db::DbError("a label set named '" + newName + "' already exists");
+    }
+    impl_->statement("UPDATE label_sets SET name = ? WHERE id = ?")
+        .bind(1, newName)
+        .bind(2, setId)
+        .run();
+    if (impl_->connection.changes() == 0) {
+      throw db::DbError("no label set with id " + std::to_string(setId));
+    }
+    transaction.commit();
+  });
+}
+
+Result<std::int64_t> RunDatabase::copyLabelSet(std::int64_t setId, const std::string& newName) {
+  return guarded<std::int64_t>([&] {
+    if (newName.empty()) throw db::DbError("a label set needs a name");
+    db::Transaction transaction(impl_->connection);
+    if (impl_->labelSetIdByName(newName) != 0) {
+      throw db::DbError("a label set named '" + newName + "' already exists");
+    }
+    const std::string now = utcNow();
+    impl_
+        ->statement(
+            "INSERT INTO label_sets(name, annotator, created_at) "
+            "SELECT ?, annotator, ? FROM label_sets WHERE id = ?")
+        .bind(1, newName)
+        .bind(2, now)
+        .bind(3, setId)
+        .run();
+    if (impl_->connection.changes() == 0) {
+      throw db::DbError("no label set with id " + std::to_string(setId));
+    }
+    const std::int64_t id = impl_->connection.lastInsertRowId();
+    impl_
+        ->statement(
+            "INSERT INTO label_segments(set_id, run_id, grp, first_step, last_step, class, "
+            "annotator, created_at) SELECT ?, run_id, grp, first_step, last_step, class, "
+            "annotator, created_at FROM label_segments WHERE set_id = ? ORDER BY id")
+        .bind(1, id)
+        .bind(2, setId)
+        .run();
+    transaction.commit();
+    return id;
+  });
+}
+
+Status RunDatabase::deleteLabelSet(std::int64_t setId) {
+  return guardedStatus([&] {
+    db::Transaction transaction(impl_->connection);
+    impl_->statement("DELETE FROM label_sets WHERE id = ?").bind(1, setId).run();
+    if (impl_->connection.changes() == 0) {
+      throw db::DbError("no label set with id " + std::to_string(setId));
+    }
+    transaction.commit();
+  });
+}
+
+Result<std::int64_t> RunDatabase::addSegment(std::int64_t setId, const LabelSegment& segment) {
+  return guarded<std::int64_t>([&] {
+    db::Transaction transaction(impl_->connection);
+    db::Statement& set = impl_->statement("SELECT 1 FROM label_sets WHERE id = ?");
+    set.bind(1, setId);
+    if (!set.step()) throw db::DbError("no label set with id " + std::to_string(setId));
+    set.reset();
+    const std::int64_t id = impl_->insertSegmentNewestWins(setId, segment, 0);
+    transaction.commit();
+    return id;
+  });
+}
+
+Status RunDatabase::changeSegment(std::int64_t segmentId, const LabelSegment& segment) {
+  return guardedStatus([&] {
+    db::Transaction transaction(impl_->connection);
+    db::Statement& s = impl_->statement("SELECT set_id, run_id FROM label_segments WHERE id = ?");
+    s.bind(1, segmentId);
+    if (!s.step()) throw db::DbError("no label segment with id " + std::to_string(segmentId));
+    const std::int64_t setId = s.columnInt(0);
+    LabelSegment changed = segment;
+    if (changed.runId == 0 && changed.run.empty()) changed.runId = s.columnInt(1);
+    s.reset();
+    impl_->statement("DELETE FROM label_segments WHERE id = ?").bind(1, segmentId).run();
+    impl_->insertSegmentNewestWins(setId, changed, segmentId);
+    transaction.commit();
+  });
+}
+
+Status RunDatabase::removeSegment(std::int64_t segmentId) {
+  return guardedStatus([&] {
+    db::Transaction transaction(impl_->connection);
+    impl_->statement("DELETE FROM label_segments WHERE id = ?").bind(1, segmentId).run();
+    if (impl_->connection.changes() == 0) {
+      throw db::DbError("no label segment with id " + std::to_string(segmentId));
+    }
+    transaction.commit();
+  });
+}
+
+Result<std::vector<LabelSegment>> RunDatabase::segments(std::int64_t setId, std::int64_t runId) {
+  return guarded<std::vector<LabelSegment>>([&] {
+    db::Statement& s = impl_->statement(
+        "SELECT label_segments.id, runs.name, run_id, grp, first_step, last_step, class, "
+        "annotator FROM label_segments JOIN runs ON runs.id = run_id "
+        "WHERE set_id = ?1 AND (?2 = 0 OR run_id = ?2)");
+    s.bind(1, setId).bind(2, runId);
+    std::vector<LabelSegment> out;
+    while (s.step()) {
+      LabelSegment segment;
+      segment.id = s.columnInt(0);
+      segment.run = s.columnText(1);
+      segment.runId = s.columnInt(2);
+      const auto group = parseSensorGroup(s.columnTextView(3));
+      const auto cls = parseContactClass(s.columnTextView(6));
+      if (!group || !cls)
+        throw db::DbError("malformed label segment " + std::to_string(segment.id));
+      segment.group = *group;
+      segment.firstStep = s.columnInt(4);
+      segment.lastStep = s.columnInt(5);
+      segment.cls = *cls;
+      segment.annotator = s.columnText(7);
+      out.push_back(std::move(segment));
+    }
+    std::sort(out.begin(), out.end(), [](const LabelSegment& l, const LabelSegment& r) {
+      return std::tie(l.run, l.group, l.firstStep) < std::tie(r.run, r.group, r.firstStep);
+    });
+    return out;
+  });
+}
+
+Result<std::int64_t> RunDatabase::importLabels(const std::string& setName,
+                                               const std::filesystem::path& file) {
+  return guarded<std::int64_t>([&] {
+    std::string text;
+    std::string error;
+    if (!readFileText(file, text, error)) throw db::DbError(file.string() + ": " + error);
+    LabelFileResult parsed =
+        isJsonPath(file) ? parseLabelJson(text, file.string()) : parseLabelCsv(text, file.string());
+    if (!parsed.error.empty()) throw db::DbError(parsed.error);
+    db::Transaction transaction(impl_->connection);
+    const std::int64_t setId = impl_->ensureLabelSet(setName);
+    std::map<std::string, std::int64_t> runIds;
+    for (const LabelRecord& record : parsed.records) {
+      const std::string where = file.string() + ":" + std::to_string(record.line) + ": ";
+      auto it = runIds.find(record.run);
+      if (it == runIds.end()) {
+        db::Statement& s = impl_->statement("SELECT id FROM runs WHERE name = ?");
+        s.bind(1, record.run);
+        if (!s.step())
+          throw db::DbError(where + "no run named '" + record.run + "' in the database");
+        it = runIds.emplace(record.run, s.columnInt(0)).first;
+        s.reset();
+      }
+      LabelSegment segment;
+      segment.runId = it->second;
+      segment.group = record.group;
+      segment.firstStep = record.firstStep;
+      segment.lastStep = record.lastStep;
+      segment.cls = record.cls;
+      segment.annotator = record.annotator;
+      try {
+        impl_->insertSegmentNewestWins(setId, segment, 0);
+      } catch (const db::DbError& e) {
+        throw db::DbError(where + e.what());
+      }
+    }
+    transaction.commit();
+    return static_cast<std::int64_t>(parsed.records.size());
+  });
+}
+
+Status RunDatabase::exportLabels(const std::string& setName, const std::filesystem::path& file) {
+  Result<LabelSetInfo> set = findLabelSet(setName);
+  if (!set) return Status::failure(set.error());
+  Result<std::vector<LabelSegment>> all = segments(set->id);
+  if (!all) return Status::failure(all.error());
+  std::vector<LabelRecord> records;
+  records.reserve(all->size());
+  for (const LabelSegment& s : all.value()) {
+    records.push_back({s.run, s.group, s.firstStep, s.lastStep, s.cls, s.annotator, 0});
+  }
+  const std::string text = isJsonPath(file) ? formatLabelJson(records, set->name, set->annotator)
+                                            : formatLabelCsv(records);
+  std::string error = writeFileAtomically(file, text);
+  if (!error.empty()) return Status::failure(file.string() + ": " + error);
+  return Status::success();
+}
+
+Result<std::int64_t> RunDatabase::autolabel(std::int64_t runId, const std::string& setName) {
+  return guarded<std::int64_t>([&] {
+    db::Transaction transaction(impl_->connection);
+    db::Statement& s = impl_->statement("SELECT name, has_truth FROM runs WHERE id = ?");
+    s.bind(1, runId);
+    if (!s.step()) throw db::DbError("no run with id " + std::to_string(runId));
+    const std::string runName = s.columnText(0);
+    const bool hasTruth = s.columnInt(1) != 0;
+    s.reset();
+    if (!hasTruth) throw db::DbError("run '" + runName + "' has no truth columns to label from");
+    const std::int64_t setId = impl_->ensureLabelSet(setName);
+    impl_->statement("DELETE FROM label_segments WHERE set_id = ? AND run_id = ?")
+        .bind(1, setId)
+        .bind(2, runId)
+        .run();
+    const std::string now = utcNow();
+    impl_
+        ->statement(
+            "INSERT INTO label_segments(set_id, run_id, grp, first_step, last_step, class, "
+            "annotator, created_at) SELECT ?, run_id, grp, first_step, last_step, class, "
+            "'truth', ? FROM truth_segments WHERE run_id = ? ORDER BY grp, first_step")
+        .bind(1, setId)
+        .bind(2, now)
+        .bind(3, runId)
+        .run();
+    const std::int64_t written = impl_->connection.changes();
+    transaction.commit();
+    return written;
+  });
+}
+
+}  // namespace tactile::storage

@@ -1,0 +1,297 @@
+// Reading runs back: whole, by window, and as min/max summaries built from stored blocks.
+#include <algorithm>
+#include <cstring>
+
+#include "sim/run_csv.h"
+#include "storage/database_impl.h"
+#include "storage/run_codec.h"
+
+namespace tactile::storage {
+namespace {
+
+constexpr std::size_t kSensorBytes = kValuesPerStep * sizeof(double);
+
+struct RunHeader {
+  std::int64_t stepCount = 0;
+  bool hasTruth = false;
+  std::vector<std::pair<std::string, std::string>> metadata;
+  std::vector<std::string> extraColumns;
+};
+
+RunHeader readHeader(RunDatabase::Impl& impl, std::int64_t runId) {
+  db::Statement& s = impl.statement(
+      "SELECT step_count, has_truth, metadata, extra_columns FROM runs WHERE id = ?");
+  s.bind(1, runId);
+  if (!s.step()) throw db::DbError("no run with id " + std::to_string(runId));
+  RunHeader header;
+  header.stepCount = s.columnInt(0);
+  header.hasTruth = s.columnInt(1) != 0;
+  std::vector<std::string> pairs;
+  if (!decodeStrings(s.columnBlob(2), s.columnBytes(2), pairs) || pairs.size() % 2 != 0 ||
+      !decodeStrings(s.columnBlob(3), s.columnBytes(3), header.extraColumns)) {
+    throw db::DbError("malformed metadata of run " + std::to_string(runId));
+  }
+  for (std::size_t i = 0; i < pairs.size(); i += 2) {
+    header.metadata.emplace_back(std::move(pairs[i]), std::move(pairs[i + 1]));
+  }
+  s.reset();
+  return header;
+}
+
+RunWindow readWindow(RunDatabase::Impl& impl, std::int64_t runId, std::int64_t firstStep,
+                     std::int64_t count) {
+  RunHeader header = readHeader(impl, runId);
+  RunWindow window;
+  firstStep = std::clamp<std::int64_t>(firstStep, 0, header.stepCount);
+  const std::int64_t end =
+      count <= 0 ? firstStep : std::min<std::int64_t>(header.stepCount, firstStep + count);
+  const auto n = static_cast<std::size_t>(end - firstStep);
+  window.firstStep = firstStep;
+  RunData& run = window.data;
+  run.metadata = std::move(header.metadata);
+  run.extraColumns = std::move(header.extraColumns);
+  for (auto* column : {&run.x, &run.y, &run.theta, &run.v, &run.omega})
+    column->resize(n);
+  run.blocked.resize(n);
+  run.sensors.resize(n * kValuesPerStep);
+  if (!run.extraColumns.empty()) run.extraValues.reserve(n * run.extraColumns.size());
+
+  db::Statement& s = impl.statement(
+      "SELECT step, x, y, theta, v, omega, blocked, sensors, extra FROM steps "
+      "WHERE run_id = ? AND step >= ? AND step < ? ORDER BY step");
+  s.bind(1, runId).bind(2, firstStep).bind(3, end);
+  std::size_t row = 0;
+  while (s.step()) {
+    if (row >= n || s.columnInt(0) != firstStep + static_cast<std::int64_t>(row)) {
+      throw db::DbError("run " + std::to_string(runId) + " has a gap or extra row at step " +
+                        std::to_string(s.columnInt(0)));
+    }
+    run.x[row] = s.columnDouble(1);
+    run.y[row] = s.columnDouble(2);
+    run.theta[row] = s.columnDouble(3);
+    run.v[row] = s.columnDouble(4);
+    run.omega[row] = s.columnDouble(5);
+    run.blocked[row] = static_cast<std::uint8_t>(s.columnInt(6));
+    const void* blob = s.columnBlob(7);
+    if (s.columnBytes(7) != kSensorBytes) {
+      throw db::DbError("step " + std::to_string(firstStep + static_cast<std::int64_t>(row)) +
+                        " of run " + std::to_string(runId) + " has a malformed sensors blob");
+    }
+    std::memcpy(run.sensors.data() + row * kValuesPerStep, blob, kSensorBytes);
+    if (!run.extraColumns.empty() &&
+        !decodeExtra(s.columnBlob(8), s.columnBytes(8), run.extraColumns.size(), run.extraValues)) {
+      throw db::DbError("malformed x_ values at step " + std::to_string(firstStep + row));
+    }
+    ++row;
+  }
+  if (row != n) {
+    throw db::DbError("run " + std::to_string(runId) + " is missing steps from " +
+                      std::to_string(firstStep + static_cast<std::int64_t>(row)));
+  }
+
+  if (header.hasTruth) {
+    run.truth.assign(n * kGroupCount, ContactClass::NoContact);
+    std::vector<bool> covered(n * kGroupCount, false);
+    db::Statement& t = impl.statement(
+        "SELECT grp, first_step, last_step, class FROM truth_segments "
+        "WHERE run_id = ? AND first_step < ? AND last_step >= ?");
+    t.bind(1, runId).bind(2, end).bind(3, firstStep);
+    while (t.step()) {
+      const auto group = parseSensorGroup(t.columnTextView(0));
+      const auto cls = parseContactClass(t.columnTextView(3));
+      if (!group || !cls)
+        throw db::DbError("malformed truth segment of run " + std::to_string(runId));
+      const std::int64_t lo = std::max(firstStep, t.columnInt(1));
+      const std::int64_t hi = std::min(end - 1, t.columnInt(2));
+      for (std::int64_t step = lo; step <= hi; ++step) {
+        const auto index = static_cast<std::size_t>(step - firstStep) * kGroupCount +
+                           static_cast<std::size_t>(groupIndex(*group));
+        run.truth[index] = *cls;
+        covered[index] = true;
+      }
+    }
+    if (std::find(covered.begin(), covered.end(), false) != covered.end()) {
+      throw db::DbError("truth of run " + std::to_string(runId) + " has gaps");
+    }
+  }
+  return window;
+}
+
+// A piece of a summary range: steps [first, last] whose min/max come from one stored block of
+// `level` (or, for level -1, from one step).
+struct Piece {
+  int level;
+  std::int64_t index;
+  std::int64_t first;
+  std::int64_t last;
+};
+
+// Covers [first, last] exactly with pieces: single steps and finer blocks at the ragged ends,
+// blocks of `top` in the middle (the classic segment-tree decomposition).
+std::vector<Piece> decompose(std::int64_t first, std::int64_t last, std::int64_t runSteps,
+                             int top) {
+  std::vector<Piece> pieces;
+  auto size = [](int level) { return level < 0 ? std::int64_t{1} : kSummaryBlockSteps[level]; };
+  auto pieceEnd = [&](int level, std::int64_t start) {
+    return std::min(start + size(level), runSteps) - 1;
+  };
+  std::int64_t cur = first;
+  // Left ragged end: climb levels until aligned to the top block size.
+  for (int level = -1; level < top && cur <= last; ++level) {
+    const std::int64_t next = size(level + 1);
+    while (cur <= last && cur % next != 0 && pieceEnd(level, cur) <= last) {
+      pieces.push_back({level, cur / size(level), cur, pieceEnd(level, cur)});
+      cur = pieceEnd(level, cur) + 1;
+    }
+  }
+  // Middle and right end: descend levels.
+  for (int level = top; level >= -1 && cur <= last; --level) {
+    while (cur <= last && pieceEnd(level, cur) <= last) {
+      pieces.push_back({level, cur / size(level), cur, pieceEnd(level, cur)});
+      cur = pieceEnd(level, cur) + 1;
+    }
+  }
+  return pieces;
+}
+
+RunSummary readSummary(RunDatabase::Impl& impl, std::int64_t runId, std::int64_t firstStep,
+                       std::int64_t lastStep, int bucketCount) {
+  if (bucketCount <= 0) throw db::DbError("a summary needs at least one bucket");
+  const std::int64_t runSteps = impl.runStepCount(runId);
+  RunSummary summary;
+  if (lastStep < 0 || lastStep >= runSteps) lastStep = runSteps - 1;
+  firstStep = std::max<std::int64_t>(0, firstStep);
+  summary.firstStep = firstStep;
+  summary.lastStep = lastStep;
+  if (firstStep > lastStep) return summary;
+  const std::int64_t length = lastStep - firstStep + 1;
+  const std::int64_t buckets = std::min<std::int64_t>(bucketCount, length);
+  // The coarsest level whose blocks are no wider than a bucket: bucket widths then differ by at
+  // most one block from the ideal width, and at most ~2 * buckets blocks are read.
+  const std::int64_t ideal = length / buckets;
+  int top = -1;
+  for (int level = 0; level < static_cast<int>(kSummaryBlockSteps.size()); ++level) {
+    if (kSummaryBlockSteps[level] <= ideal) top = level;
+  }
+  summary.blockSteps = top < 0 ? 1 : kSummaryBlockSteps[top];
+  const std::vector<Piece> pieces = decompose(firstStep, lastStep, runSteps, top);
+
+  summary.buckets.resize(static_cast<std::size_t>(buckets));
+  std::vector<bool> filled(summary.buckets.size(), false);
+  auto merge = [&](const Piece& piece, const double* mins, const double* maxs) {
+    const auto b = static_cast<std::size_t>((piece.first - firstStep) * buckets / length);
+    SummaryBucket& bucket = summary.buckets[b];
+    if (!filled[b]) {
+      filled[b] = true;
+      bucket.firstStep = piece.first;
+      std::copy(mins, mins + kValuesPerStep, bucket.min.begin());
+      std::copy(maxs, maxs + kValuesPerStep, bucket.max.begin());
+    } else {
+      for (int k = 0; k < kValuesPerStep; ++k) {
+        bucket.min[k] = std::min(bucket.min[k], mins[k]);
+        bucket.max[k] = std::max(bucket.max[k], maxs[k]);
+      }
+    }
+    bucket.lastStep = piece.last;
+  };
+
+  // Pieces of one level are contiguous index ranges (at most one on each side of the middle), so
+  // a few range queries read them all in step order.
+  std::size_t i = 0;
+  while (i < pieces.size()) {
+    std::size_t j = i;
+    while (j + 1 < pieces.size() && pieces[j + 1].level == pieces[i].level)
+      ++j;
+    const int level = pieces[i].level;
+    std::size_t k = i;
+    if (level < 0) {
+      db::Statement& s = impl.statement(
+          "SELECT step, sensors FROM steps WHERE run_id = ? AND step >= ? AND step <= ? "
+          "ORDER BY step");
+      s.bind(1, runId).bind(2, pieces[i].first).bind(3, pieces[j].last);
+      while (s.step() && k <= j) {
+        if (s.columnInt(0) != pieces[k].first || s.columnBytes(1) != kSensorBytes) {
+          throw db::DbError("steps of run " + std::to_string(runId) + " are inconsistent");
+        }
+        const auto* values = static_cast<const double*>(s.columnBlob(1));
+        double row[kValuesPerStep];
+        std::memcpy(row, values, kSensorBytes);  // blobs need not be aligned
+        merge(pieces[k], row, row);
+        ++k;
+      }
+      s.reset();
+    } else {
+      db::Statement& s = impl.statement(
+          "SELECT block, minmax FROM step_blocks WHERE run_id = ? AND level = ? AND block >= ? "
+          "AND block <= ? ORDER BY block");
+      s.bind(1, runId).bind(2, level).bind(3, pieces[i].index).bind(4, pieces[j].index);
+      double values[kSummaryValues];
+      while (s.step() && k <= j) {
+        if (s.columnInt(0) != pieces[k].index ||
+            s.columnBytes(1) != kSummaryValues * sizeof(double)) {
+          throw db::DbError("summary blocks of run " + std::to_string(runId) + " are inconsistent");
+        }
+        std::memcpy(values, s.columnBlob(1), sizeof values);
+        merge(pieces[k], values, values + kValuesPerStep);
+        ++k;
+      }
+      s.reset();
+    }
+    if (k != j + 1) {
+      throw db::DbError("run " + std::to_string(runId) + " is missing stored steps or blocks");
+    }
+    i = j + 1;
+  }
+  // Buckets narrower than a piece stay empty; drop them so every bucket holds data.
+  std::vector<SummaryBucket> kept;
+  kept.reserve(summary.buckets.size());
+  for (std::size_t b = 0; b < summary.buckets.size(); ++b) {
+    if (filled[b]) kept.push_back(summary.buckets[b]);
+  }
+  summary.buckets = std::move(kept);
+  return summary;
+}
+
+}  // namespace
+
+Result<RunData> RunDatabase::loadRun(std::int64_t runId) {
+  return guarded<RunData>([&] {
+    const std::int64_t steps = impl_->runStepCount(runId);
+    return std::move(readWindow(*impl_, runId, 0, steps).data);
+  });
+}
+
+Result<RunWindow> RunDatabase::loadWindow(std::int64_t runId, std::int64_t firstStep,
+                                          std::int64_t count) {
+  return guarded<RunWindow>([&] { return readWindow(*impl_, runId, firstStep, count); });
+}
+
+Result<RunSummary> RunDatabase::loadSummary(std::int64_t runId, std::int64_t firstStep,
+                                            std::int64_t lastStep, int buckets) {
+  return guarded<RunSummary>(
+      [&] { return readSummary(*impl_, runId, firstStep, lastStep, buckets); });
+}
+
+Result<std::optional<std::string>> RunDatabase::sceneJson(std::int64_t runId) {
+  return guarded<std::optional<std::string>>([&] {
+    db::Statement& s = impl_->statement(
+        "SELECT scenes.json FROM runs LEFT JOIN scenes ON scenes.id = runs.scene_id "
+        "WHERE runs.id = ?");
+    s.bind(1, runId);
+    if (!s.step()) throw db::DbError("no run with id " + std::to_string(runId));
+    std::optional<std::string> json;
+    if (!s.columnIsNull(0)) json = s.columnText(0);
+    s.reset();
+    return json;
+  });
+}
+
+Status RunDatabase::exportRun(std::int64_t runId, const std::filesystem::path& file) {
+  Result<RunData> run = loadRun(runId);
+  if (!run) return Status::failure(run.error());
+  std::string error = writeRunCsv(run.value(), file);
+  if (!error.empty()) return Status::failure(file.string() + ": " + error);
+  return Status::success();
+}
+
+}  // namespace tactile::storage

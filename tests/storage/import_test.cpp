@@ -1,0 +1,305 @@
+#include <gtest/gtest.h>
+
+#include <fstream>
+
+#include "sim/run_csv.h"
+#include "storage/sqlite_db.h"
+#include "storage_test_util.h"
+
+namespace tactile::storage {
+namespace {
+
+using test::makeRun;
+using test::TempDir;
+
+std::int64_t countRows(const std::filesystem::path& db, const std::string& table) {
+  db::Connection c = db::Connection::open(db, false, true);
+  return c.queryInt("SELECT count(*) FROM " + table);
+}
+
+void writeText(const std::filesystem::path& path, const std::string& text) {
+  std::ofstream(path, std::ios::binary) << text;
+}
+
+TEST(Import, FileRoundTripsBitForBitAndExportsIdenticalText) {
+  TempDir dir;
+  const RunData original = makeRun(500, true);
+  ASSERT_EQ(writeRunCsv(original, dir / "r1.csv"), "");
+  auto db = test::openDb(dir / "runs.db");
+  ASSERT_NE(db, nullptr);
+  auto outcomes = db->importFiles({dir / "r1.csv"});
+  ASSERT_EQ(outcomes.size(), 1u);
+  ASSERT_EQ(outcomes[0].status, ImportStatus::Imported) << outcomes[0].message;
+  EXPECT_EQ(outcomes[0].runName, "r1");
+  EXPECT_EQ(outcomes[0].steps, 500);
+
+  auto loaded = db->loadRun(outcomes[0].runId);
+  ASSERT_TRUE(loaded.ok()) << loaded.error();
+  test::expectSameRun(original, loaded.value());
+  EXPECT_TRUE(std::signbit(loaded->y[0]));  // -0.0 keeps its sign
+
+  ASSERT_TRUE(db->exportRun(outcomes[0].runId, dir / "out.csv").ok());
+  std::string exported;
+  std::string original_text;
+  std::string error;
+  ASSERT_TRUE(readFileText(dir / "out.csv", exported, error));
+  ASSERT_TRUE(readFileText(dir / "r1.csv", original_text, error));
+  EXPECT_EQ(exported, original_text);
+
+  auto info = db->findRun("r1");
+  ASSERT_TRUE(info.ok());
+  EXPECT_EQ(info->stepCount, 500);
+  EXPECT_TRUE(info->hasTruth);
+  EXPECT_EQ(info->outcome, "success");
+  EXPECT_EQ(info->subject, "sim");
+  ASSERT_TRUE(info->dtSeconds.has_value());
+  EXPECT_DOUBLE_EQ(*info->dtSeconds, 0.1);
+}
+
+TEST(Import, ExtraColumnsAndNoTruthRoundTrip) {
+  RunData original = makeRun(40, false, 3);
+  original.extraColumns = {"x_note", "x_empty"};
+  for (std::size_t i = 0; i < original.stepCount(); ++i) {
+    original.extraValues.push_back("n" + std::to_string(i));
+    original.extraValues.push_back("");
+  }
+  auto db = test::openDb(":memory:");
+  ASSERT_NE(db, nullptr);
+  const auto outcome = db->importText(formatRunCsv(original), "extra.csv");
+  ASSERT_EQ(outcome.status, ImportStatus::Imported) << outcome.message;
+  auto loaded = db->loadRun(outcome.runId);
+  ASSERT_TRUE(loaded.ok()) << loaded.error();
+  test::expectSameRun(original, loaded.value());
+  EXPECT_FALSE(loaded->hasTruth());
+}
+
+TEST(Import, BadFileStoresNothingAndNamesTheLine) {
+  TempDir dir;
+  std::string text = formatRunCsv(makeRun(30, true));
+  // Break a sensor value on the 20th line.
+  std::size_t pos = 0;
+  for (int i = 1; i < 20; ++i)
+    pos = text.find('\n', pos) + 1;
+  text.replace(text.find(',', pos), 1, ",abc,");
+  writeText(dir / "bad.csv", text);
+  auto db = test::openDb(dir / "runs.db");
+  ASSERT_NE(db, nullptr);
+  auto outcomes = db->importFiles({dir / "bad.csv"});
+  ASSERT_EQ(outcomes[0].status, ImportStatus::Failed);
+  EXPECT_NE(outcomes[0].message.find("bad.csv:20"), std::string::npos) << outcomes[0].message;
+  db.reset();
+  EXPECT_EQ(countRows(dir / "runs.db", "runs"), 0);
+  EXPECT_EQ(countRows(dir / "runs.db", "steps"), 0);
+}
+
+TEST(Import, MissingFileIsReported) {
+  TempDir dir;
+  auto db = test::openDb(":memory:");
+  auto outcomes = db->importFiles({dir / "absent.csv"});
+  ASSERT_EQ(outcomes[0].status, ImportStatus::Failed);
+  EXPECT_NE(outcomes[0].message.find("absent.csv"), std::string::npos);
+}
+
+TEST(Import, SameChecksumIsSkippedWithAMessage) {
+  TempDir dir;
+  ASSERT_EQ(writeRunCsv(makeRun(20, true), dir / "a.csv"), "");
+  std::filesystem::copy_file(dir / "a.csv", dir / "copy-of-a.csv");
+  auto db = test::openDb(dir / "runs.db");
+  auto first = db->importFiles({dir / "a.csv"});
+  ASSERT_EQ(first[0].status, ImportStatus::Imported);
+  auto again = db->importFiles({dir / "a.csv", dir / "copy-of-a.csv"});
+  for (const auto& outcome : again) {
+    EXPECT_EQ(outcome.status, ImportStatus::Skipped);
+    EXPECT_EQ(outcome.runId, first[0].runId);
+    EXPECT_NE(outcome.message.find("already imported as run 'a'"), std::string::npos)
+        << outcome.message;
+  }
+  EXPECT_EQ(db->listRuns()->size(), 1u);
+}
+
+TEST(Import, ExistingNameWithOtherContentFails) {
+  auto db = test::openDb(":memory:");
+  ASSERT_EQ(db->importText(formatRunCsv(makeRun(5, true, 1)), "dir1/run.csv").status,
+            ImportStatus::Imported);
+  const auto clash = db->importText(formatRunCsv(makeRun(5, true, 2)), "dir2/run.csv");
+  EXPECT_EQ(clash.status, ImportStatus::Failed);
+  EXPECT_NE(clash.message.find("already exists"), std::string::npos) << clash.message;
+  ImportOptions renamed;
+  renamed.name = "run-2";
+  EXPECT_EQ(db->importText(formatRunCsv(makeRun(5, true, 2)), "dir2/run.csv", renamed).status,
+            ImportStatus::Imported);
+}
+
+TEST(Import, ManyFilesInParallelKeepInputOrder) {
+  TempDir dir;
+  std::vector<std::filesystem::path> files;
+  for (int i = 0; i < 7; ++i) {
+    const auto path = dir / ("run" + std::to_string(i) + ".csv");
+    if (i == 3) {
+      writeText(path, "# format: tactile-run 1\nstep,x\n");
+    } else {
+      ASSERT_EQ(writeRunCsv(makeRun(100 + i, i % 2 == 0, 10 + i), path), "");
+    }
+    files.push_back(path);
+  }
+  auto db = test::openDb(dir / "runs.db");
+  ImportOptions options;
+  options.threads = 3;
+  std::size_t lastDone = 0;
+  auto outcomes = db->importFiles(files, options, [&](std::size_t done, std::size_t total) {
+    EXPECT_EQ(total, files.size());
+    EXPECT_EQ(done, lastDone + 1);
+    lastDone = done;
+    return true;
+  });
+  ASSERT_EQ(outcomes.size(), files.size());
+  for (int i = 0; i < 7; ++i) {
+    EXPECT_EQ(outcomes[i].file, files[i].string());
+    EXPECT_EQ(outcomes[i].status, i == 3 ? ImportStatus::Failed : ImportStatus::Imported)
+        << outcomes[i].message;
+    if (i != 3) {
+      EXPECT_EQ(outcomes[i].steps, 100 + i);
+    }
+  }
+  EXPECT_EQ(db->listRuns()->size(), 6u);
+  auto run5 = db->findRun("run5");
+  ASSERT_TRUE(run5.ok());
+  auto loaded = db->loadRun(run5->id);
+  ASSERT_TRUE(loaded.ok());
+  test::expectSameRun(makeRun(105, false, 15), loaded.value());
+}
+
+TEST(Import, CancelStopsAfterTheFileBeingWritten) {
+  TempDir dir;
+  std::vector<std::filesystem::path> files;
+  for (int i = 0; i < 5; ++i) {
+    files.push_back(dir / ("c" + std::to_string(i) + ".csv"));
+    ASSERT_EQ(writeRunCsv(makeRun(10, false, 100 + i), files.back()), "");
+  }
+  auto db = test::openDb(":memory:");
+  ImportOptions options;
+  options.threads = 2;
+  auto outcomes =
+      db->importFiles(files, options, [](std::size_t done, std::size_t) { return done < 2; });
+  ASSERT_EQ(outcomes.size(), 5u);
+  EXPECT_EQ(outcomes[1].status, ImportStatus::Imported);
+  EXPECT_EQ(outcomes[2].status, ImportStatus::Failed);
+  EXPECT_NE(outcomes[4].message.find("cancelled"), std::string::npos);
+  EXPECT_EQ(db->listRuns()->size(), 2u);
+}
+
+TEST(Import, FailureMidRunRollsBackEverything) {
+  TempDir dir;
+  auto db = test::openDb(dir / "runs.db");
+  ImportOptions failing;
+  failing.failAfterSteps = 150;
+  const std::string text = formatRunCsv(makeRun(300, true));
+  const auto outcome = db->importText(text, "half.csv", failing);
+  EXPECT_EQ(outcome.status, ImportStatus::Failed);
+  EXPECT_NE(outcome.message.find("injected failure"), std::string::npos);
+  for (const char* table : {"runs", "steps", "truth_segments", "step_blocks", "scenes"}) {
+    db::Connection c = db::Connection::open(dir / "runs.db", false, true);
+    EXPECT_EQ(c.queryInt(std::string("SELECT count(*) FROM ") + table), 0) << table;
+  }
+  // The same file then imports normally (no stale statement or transaction state).
+  EXPECT_EQ(db->importText(text, "half.csv").status, ImportStatus::Imported);
+}
+
+TEST(Import, BuiltinSceneIsStoredOnce) {
+  auto db = test::openDb(":memory:");
+  const auto a = db->importText(formatRunCsv(makeRun(5, false, 1)), "a.csv");
+  const auto b = db->importText(formatRunCsv(makeRun(5, false, 2)), "b.csv");
+  ASSERT_EQ(a.status, ImportStatus::Imported);
+  ASSERT_EQ(b.status, ImportStatus::Imported);
+  EXPECT_TRUE(a.warnings.empty());
+  auto json = db->sceneJson(a.runId);
+  ASSERT_TRUE(json.ok());
+  ASSERT_TRUE(json->has_value());
+  EXPECT_NE(json->value().find("\"practice\""), std::string::npos);
+  EXPECT_EQ(db->sceneJson(b.runId).value(), json.value());
+  EXPECT_TRUE(db->findRun("a")->sceneStored);
+}
+
+TEST(Import, SceneFileRelativeToTheRunFile) {
+  TempDir dir;
+  std::filesystem::create_directories(dir / "scenes");
+  const std::string sceneText =
+      R"({"name":"corridor","bounds":[0,0,10,10],"obstacles":[],"start":{"x":1,"y":1,"theta":0},"goal":{"x":9,"y":9}})";
+  writeText(dir / "scenes" / "corridor.json", sceneText);
+  RunData run = makeRun(8, false);
+  run.setMeta("scene", "scenes/corridor.json");
+  ASSERT_EQ(writeRunCsv(run, dir / "c.csv"), "");
+  auto db = test::openDb(":memory:");
+  auto outcomes = db->importFiles({dir / "c.csv"});
+  ASSERT_EQ(outcomes[0].status, ImportStatus::Imported) << outcomes[0].message;
+  EXPECT_TRUE(outcomes[0].warnings.empty());
+  EXPECT_EQ(db->sceneJson(outcomes[0].runId).value(), sceneText);
+}
+
+TEST(Import, UnresolvableSceneIsAWarningNotAFailure) {
+  RunData run = makeRun(8, false);
+  run.setMeta("scene", "no-such-scene");
+  auto db = test::openDb(":memory:");
+  const auto outcome = db->importText(formatRunCsv(run), "/tmp/x/lost.csv");
+  ASSERT_EQ(outcome.status, ImportStatus::Imported) << outcome.message;
+  ASSERT_EQ(outcome.warnings.size(), 1u);
+  EXPECT_NE(outcome.warnings[0].find("no-such-scene"), std::string::npos);
+  EXPECT_FALSE(db->sceneJson(outcome.runId)->has_value());
+  EXPECT_EQ(db->findRun("lost")->scene, "no-such-scene");
+}
+
+TEST(Import, RecordedRunThenItsExportedFileIsADuplicate) {
+  TempDir dir;
+  auto db = test::openDb(":memory:");
+  const RunData run = makeRun(12, true);
+  const auto stored = db->importRun(run, "recorded");
+  ASSERT_EQ(stored.status, ImportStatus::Imported) << stored.message;
+  ASSERT_TRUE(db->exportRun(stored.runId, dir / "recorded.csv").ok());
+  auto again = db->importFiles({dir / "recorded.csv"});
+  EXPECT_EQ(again[0].status, ImportStatus::Skipped);
+}
+
+TEST(Import, NonFiniteInMemoryRunIsRejected) {
+  auto db = test::openDb(":memory:");
+  RunData run = makeRun(4, false);
+  run.sensors[5] = std::nan("");
+  const auto outcome = db->importRun(run, "nan");
+  EXPECT_EQ(outcome.status, ImportStatus::Failed);
+  EXPECT_NE(outcome.message.find("not finite"), std::string::npos);
+  EXPECT_TRUE(db->listRuns()->empty());
+}
+
+TEST(Import, InconsistentInMemoryRunIsRejected) {
+  auto db = test::openDb(":memory:");
+  RunData run = makeRun(4, false);
+  run.sensors.pop_back();
+  EXPECT_EQ(db->importRun(run, "short").status, ImportStatus::Failed);
+}
+
+TEST(Import, DeleteRunRemovesItsRows) {
+  TempDir dir;
+  auto db = test::openDb(dir / "runs.db");
+  const auto outcome = db->importText(formatRunCsv(makeRun(50, true)), "d.csv");
+  ASSERT_EQ(outcome.status, ImportStatus::Imported);
+  auto set = db->autolabel(outcome.runId, "auto");
+  ASSERT_TRUE(set.ok());
+  ASSERT_TRUE(db->deleteRun(outcome.runId).ok());
+  for (const char* table : {"runs", "steps", "truth_segments", "step_blocks", "label_segments"}) {
+    db::Connection c = db::Connection::open(dir / "runs.db", false, true);
+    EXPECT_EQ(c.queryInt(std::string("SELECT count(*) FROM ") + table), 0) << table;
+  }
+  EXPECT_FALSE(db->deleteRun(outcome.runId).ok());
+}
+
+TEST(Import, ChecksumDependsOnEveryByte) {
+  const std::string a = "step,x\n0,1\n";
+  std::string b = a;
+  b[8] = '2';
+  EXPECT_NE(checksumHex(a), checksumHex(b));
+  EXPECT_EQ(checksumHex(a), checksumHex(std::string(a)));
+  EXPECT_NE(checksumHex(""), checksumHex(std::string(1, '\0')));
+  EXPECT_EQ(checksumHex(a).size(), 16u);
+}
+
+}  // namespace
+}  // namespace tactile::storage
