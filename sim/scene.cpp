@@ -25,7 +25,9 @@ const json& member(const json& obj, const char* key, const std::string& where) {
   return *it;
 }
 
-std::string obstacleLabel(std::size_t i) { return "obstacle " + std::to_string(i); }
+std::string obstacleLabel(std::size_t i) {
+  return "obstacle " + std::to_string(i);
+}
 
 std::string validatePolygon(const std::vector<Vec2>& poly, std::size_t index,
                             const SceneBounds& b) {
@@ -45,9 +47,6 @@ std::string validatePolygon(const std::vector<Vec2>& poly, std::size_t index,
              std::to_string((v + 1) % n) + ")";
     }
   }
-  double area2 = 0.0;
-  for (std::size_t v = 0; v < n; ++v) area2 += cross2(poly[v], poly[(v + 1) % n]);
-  if (area2 == 0.0) return label + ": the polygon has zero area";
   // Non-adjacent edges must not touch; adjacent edges may only share their common vertex.
   for (std::size_t i = 0; i < n; ++i) {
     const Vec2& a = poly[i];
@@ -75,6 +74,10 @@ std::string validatePolygon(const std::vector<Vec2>& poly, std::size_t index,
       }
     }
   }
+  double area2 = 0.0;
+  for (std::size_t v = 0; v < n; ++v)
+    area2 += cross2(poly[v], poly[(v + 1) % n]);
+  if (area2 == 0.0) return label + ": the polygon has zero area";
   return {};
 }
 
@@ -172,7 +175,8 @@ std::string sceneToJson(const Scene& scene) {
   json obstacles = json::array();
   for (const Obstacle& o : scene.obstacles) {
     json poly = json::array();
-    for (const Vec2& p : o.polygon) poly.push_back({p.x(), p.y()});
+    for (const Vec2& p : o.polygon)
+      poly.push_back({p.x(), p.y()});
     obstacles.push_back({{"polygon", poly}});
   }
   doc["obstacles"] = obstacles;

@@ -13,14 +13,20 @@ Simulator::Simulator(std::shared_ptr<const World> world, SimConfig config)
   innerHi_ = Vec2(g.frontX() - cornerRadius_, g.halfWidth() - cornerRadius_);
   double far = 0.0;
   for (double x : {innerLo_.x(), innerHi_.x()}) {
-    for (double y : {innerLo_.y(), innerHi_.y()}) far = std::max(far, std::hypot(x, y));
+    for (double y : {innerLo_.y(), innerHi_.y()})
+      far = std::max(far, std::hypot(x, y));
   }
   outlineRadius_ = far + cornerRadius_;
   candidates_.reserve(1024);
   bodyA_.reserve(1024);
   bodyB_.reserve(1024);
   truth_.reset();
-  reset(world_->scene().start);
+  if (!reset(world_->scene().start)) {
+    // A blocked start (callers check with isBlocked first): stand there anyway, blocked.
+    pose_ = world_->scene().start;
+    blocked_ = true;
+    contact_ = evaluate(pose_);
+  }
 }
 
 double Simulator::motionBound(double v, double omega) const {
@@ -43,7 +49,8 @@ void Simulator::gatherCandidates(const Pose2d& pose, double reach) {
   if (!config_.useIndex) {
     const int n = static_cast<int>(world_->edges().size());
     candidates_.resize(n);
-    for (int i = 0; i < n; ++i) candidates_[i] = i;
+    for (int i = 0; i < n; ++i)
+      candidates_[i] = i;
     return;
   }
   // Axis-aligned box of the body at `pose`, grown by `reach`.
@@ -178,6 +185,8 @@ void Simulator::evaluateInto(const Pose2d& pose, PoseContact& out) {
 void Simulator::step(double v, double omega) {
   if (!std::isfinite(v)) v = 0.0;
   if (!std::isfinite(omega)) omega = 0.0;
+  v = std::clamp(v, -kMaxSpeedUnits, kMaxSpeedUnits);
+  omega = std::clamp(omega, -kMaxTurnRate, kMaxTurnRate);
   const double dt = config_.dtSeconds;
   const double motion = motionBound(v, omega);
   const double r = config_.geometry.domeRadiusUnits;

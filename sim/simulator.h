@@ -15,6 +15,10 @@
 
 namespace tactile {
 
+// Commands are clamped to these (a safety net: the sub-step count grows with speed).
+inline constexpr double kMaxSpeedUnits = 3000.0;  // units/s
+inline constexpr double kMaxTurnRate = 20.0;      // rad/s
+
 struct SimConfig {
   RobotGeometry geometry;
   double dtSeconds = 0.1;
@@ -22,8 +26,9 @@ struct SimConfig {
   double filterTauSeconds = 0.03;
   // Largest motion of any body point between two collision checks within a step (no tunnelling).
   double maxSubstepUnits = 1.0;
-  // Filtered values below this are recorded as exactly 0, so a released dome reads zero.
-  double zeroBelowUnits = 1e-3;
+  // Filtered values of a released dome below this are recorded as exactly 0 (1% of full
+  // compression), so a released dome reads zero within a few steps.
+  double zeroBelowUnits = 0.05;
   // false: test every edge of the scene (the brute-force reference of the spatial index).
   bool useIndex = true;
 };
@@ -51,7 +56,8 @@ class Simulator {
   // pose is blocked.
   bool reset(const Pose2d& pose);
 
-  // One step of dt: tries to move by (v, omega). If any sub-pose along the way is blocked, the
+  // One step of dt: tries to move by (v, omega) (non-finite values count as 0; clamped to
+  // kMaxSpeedUnits and kMaxTurnRate). If any sub-pose along the way is blocked, the
   // step is cancelled (pose kept, blocked() true). Then the dome values are filtered toward the
   // raw contact at the resulting pose and the ground truth is updated.
   void step(double v, double omega);

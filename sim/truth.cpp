@@ -22,9 +22,7 @@ void TruthTracker::update(const World& world, const PoseContact& contact, const 
   }
   const auto touches = [&](SensorGroup g) { return touching[groupIndex(g)] > 0; };
   const bool pocket =
-      (touches(SensorGroup::Front) || touches(SensorGroup::FrontLeftCorner) ||
-       touches(SensorGroup::FrontRightCorner)) &&
-      touches(SensorGroup::Left) && touches(SensorGroup::Right);
+      touches(SensorGroup::Front) && touches(SensorGroup::Left) && touches(SensorGroup::Right);
   const double flatCos = std::cos(kFlatVertexDegrees * std::numbers::pi / 180.0);
 
   for (const GroupInfo& info : kSensorGroups) {
@@ -43,27 +41,36 @@ void TruthTracker::update(const World& world, const PoseContact& contact, const 
     if (!anyValue) {
       cls = ContactClass::NoContact;
     } else if (count == 0) {
-      cls = ContactClass::LeavingWall;
+      // Released, values still decaying: leaving what it touched. A fading wall contact is
+      // LeavingWall; a fading corner or dead path keeps its class.
+      const ContactClass previous = classes_[g];
+      cls = (previous == ContactClass::Corner || previous == ContactClass::DeadPath)
+                ? previous
+                : ContactClass::LeavingWall;
     } else if (pocket && frontOrSide) {
       cls = ContactClass::DeadPath;
     } else {
       bool vertex = false;
       bool offWallEnd = false;
       bool twoDirections = false;
+      bool onlyWallEdge = recentWall;
       int firstEdge = -1;
       int deepestEdge = -1;
       double deepest = -1.0;
       for (int d = info.firstSensor; d < info.firstSensor + info.sensorCount; ++d) {
         const DomeContact& dc = contact.domes[d];
         if (dc.edge < 0) continue;
-        if (dc.vertex >= 0) {
-          const VertexKind kind = world.vertexKind(dc.vertex);
-          if (kind != VertexKind::Flat) vertex = true;
-          if (kind == VertexKind::Convex && recentWall &&
-              (dc.vertex == edges[h.wallEdge].vertexA || dc.vertex == edges[h.wallEdge].vertexB)) {
+        if (recentWall) {
+          const Edge& wall = edges[h.wallEdge];
+          const bool onWall =
+              dc.edge == h.wallEdge ||
+              (dc.vertex >= 0 && (dc.vertex == wall.vertexA || dc.vertex == wall.vertexB));
+          onlyWallEdge = onlyWallEdge && onWall;
+          if (onWall && dc.vertex >= 0 && world.vertexKind(dc.vertex) == VertexKind::Convex) {
             offWallEnd = true;
           }
         }
+        if (dc.vertex >= 0 && world.vertexKind(dc.vertex) != VertexKind::Flat) vertex = true;
         if (firstEdge < 0) {
           firstEdge = dc.edge;
         } else if (std::abs(edges[firstEdge].dir.dot(edges[dc.edge].dir)) < flatCos) {
@@ -74,8 +81,8 @@ void TruthTracker::update(const World& world, const PoseContact& contact, const 
           deepestEdge = dc.edge;
         }
       }
-      const bool thinned = recentWall && h.wallCount >= 4 && 2 * count <= h.wallCount;
-      if (recentWall && (offWallEnd || thinned)) {
+      const bool stillLeaving = h.leavingCount >= 0 && count <= h.leavingCount;
+      if (onlyWallEdge && (offWallEnd || stillLeaving)) {
         cls = ContactClass::LeavingWall;
       } else if (vertex || twoDirections) {
         cls = ContactClass::Corner;
@@ -87,6 +94,7 @@ void TruthTracker::update(const World& world, const PoseContact& contact, const 
         h.wallEdge = deepestEdge;
       }
     }
+    h.leavingCount = cls == ContactClass::LeavingWall ? count : -1;
     classes_[g] = cls;
   }
   ++step_;

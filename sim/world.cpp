@@ -17,7 +17,8 @@ void addLoop(const std::vector<Vec2>& loop, int obstacle, std::vector<Edge>& edg
     e.a = loop[i];
     e.b = loop[(i + 1) % n];
     const Vec2 d = e.b - e.a;
-    e.dir = d / d.norm();
+    const double length = d.norm();
+    e.dir = length > 0.0 ? Vec2(d / length) : Vec2::UnitX();  // unvalidated scenes stay finite
     e.obstacle = obstacle;
     e.vertexA = first + i;
     e.vertexB = first + (i + 1) % n;
@@ -66,13 +67,16 @@ EdgeIndex::EdgeIndex(const std::vector<Edge>& edges, const SceneBounds& bounds,
       }
     }
   };
-  for (const Edge& e : edges) forEachCell(e, [&](std::size_t cell) { ++counts[cell + 1]; });
-  for (std::size_t i = 1; i <= cells; ++i) counts[i] += counts[i - 1];
+  for (const Edge& e : edges)
+    forEachCell(e, [&](std::size_t cell) { ++counts[cell + 1]; });
+  for (std::size_t i = 1; i <= cells; ++i)
+    counts[i] += counts[i - 1];
   cellStart_ = counts;
   cellEdges_.resize(counts[cells]);
   std::vector<std::uint32_t> fill(counts.begin(), counts.end() - 1);
   for (std::size_t id = 0; id < edges.size(); ++id) {
-    forEachCell(edges[id], [&](std::size_t cell) { cellEdges_[fill[cell]++] = static_cast<int>(id); });
+    forEachCell(edges[id],
+                [&](std::size_t cell) { cellEdges_[fill[cell]++] = static_cast<int>(id); });
   }
 }
 
@@ -117,7 +121,8 @@ World::World(Scene scene, double cellSizeUnits) : scene_(std::move(scene)) {
   for (std::size_t i = 0; i < scene_.obstacles.size(); ++i) {
     std::vector<Vec2> loop = scene_.obstacles[i].polygon;
     double area2 = 0.0;
-    for (std::size_t v = 0; v < loop.size(); ++v) area2 += cross2(loop[v], loop[(v + 1) % loop.size()]);
+    for (std::size_t v = 0; v < loop.size(); ++v)
+      area2 += cross2(loop[v], loop[(v + 1) % loop.size()]);
     if (area2 < 0.0) std::reverse(loop.begin(), loop.end());  // counter-clockwise
     addLoop(loop, static_cast<int>(i), edges_, vertexKinds_);
   }

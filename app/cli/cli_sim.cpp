@@ -1,12 +1,319 @@
-// Simulator verbs: simulate, navigate, bench sim.
+// Simulator verbs: simulate, navigate (planned), bench sim.
+#include <unistd.h>
+
+#include <chrono>
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <filesystem>
+#include <map>
+#include <memory>
+#include <mutex>
+#include <nlohmann/json.hpp>
+#include <sstream>
+#include <string>
+#include <vector>
+
 #include "app/cli/cli_common.h"
+#include "sim/builtin_scenes.h"
+#include "sim/recorder.h"
+#include "sim/run_csv.h"
+#include "sim/scene_source.h"
 
 namespace tactile::cli {
+namespace {
+
+struct SimulateArgs {
+  std::string scene;
+  std::string driver = "wall-follow";
+  std::int64_t steps = 5000;
+  std::uint64_t seed = 1;
+  std::string out;
+  std::string outDir;
+  std::int64_t runs = 1;
+  unsigned threads = 0;
+  double dt = 0.1;
+  bool json = false;
+  bool quiet = false;
+};
+
+double secondsSince(std::chrono::steady_clock::time_point t0) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+
+// Loads the scene or throws (UsageError for what the user typed wrong).
+std::shared_ptr<const World> loadWorld(const std::string& spec) {
+  SceneResult loaded = loadScene(spec);
+  if (!loaded.ok()) {
+    if (loaded.usageError) throw UsageError(loaded.error);
+    throw std::runtime_error(loaded.error);
+  }
+  return std::make_shared<const World>(std::move(*loaded.scene));
+}
+
+std::string sceneLabel(const std::string& spec, const World& world) {
+  // Files are recorded by their scene name; built-ins and random specs by what was typed.
+  if (spec.starts_with("random:") || builtinSceneJson(spec)) return spec;
+  return world.scene().name;
+}
+
+int runSimulate(const SimulateArgs& a) {
+  if (a.steps <= 0) throw UsageError("--steps must be at least 1, got " + std::to_string(a.steps));
+  if (static_cast<std::uint64_t>(a.steps) > kMaxStepsPerRun) {
+    throw UsageError("--steps must be at most " + std::to_string(kMaxStepsPerRun) + ", got " +
+                     std::to_string(a.steps));
+  }
+  if (a.runs <= 0 || static_cast<std::uint64_t>(a.runs) > kMaxRunsPerBatch) {
+    throw UsageError("--runs must be between 1 and " + std::to_string(kMaxRunsPerBatch));
+  }
+  if (!(a.dt > 0.0 && a.dt <= 1.0)) throw UsageError("--dt must be in (0, 1] seconds");
+  if (a.driver != "wall-follow" && a.driver != "random") {
+    throw UsageError("--driver must be wall-follow or random, got '" + a.driver + "'");
+  }
+  const bool batch = !a.outDir.empty();
+  if (batch == !a.out.empty()) throw UsageError("give exactly one of --out FILE or --out-dir DIR");
+  if (!batch && a.runs != 1) throw UsageError("--runs needs --out-dir");
+
+  std::shared_ptr<const World> world = loadWorld(a.scene);
+  const std::string label = sceneLabel(a.scene, *world);
+  RunOptions options;
+  options.maxSteps = static_cast<std::size_t>(a.steps);
+  options.seed = a.seed;
+  options.driver = a.driver;
+  options.config.dtSeconds = a.dt;
+
+  const auto t0 = std::chrono::steady_clock::now();
+  std::size_t totalSteps = 0;
+  std::map<std::string, int> outcomes;
+  std::vector<std::string> files;
+  const bool tty = isatty(2) != 0;
+  if (!batch) {
+    ProgressFn progress;
+    if (!a.quiet && tty) {
+      progress = [](std::size_t done, std::size_t total) {
+        std::fprintf(stderr, "\rsimulate: step %zu/%zu", done, total);
+        return true;
+      };
+    }
+    RunResult result = simulateRun(world, label, options, progress);
+    if (!a.quiet && tty) std::fprintf(stderr, "\n");
+    if (!result.ok()) throw std::runtime_error(result.error);
+    std::string error = writeRunCsv(result.run, a.out);
+    if (!error.empty()) throw std::runtime_error(error);
+    totalSteps = result.run.stepCount();
+    ++outcomes[std::string(runOutcomeName(result.outcome))];
+    files.push_back(a.out);
+  } else {
+    std::error_code ec;
+    std::filesystem::create_directories(a.outDir, ec);
+    if (ec) throw std::runtime_error(a.outDir + ": cannot create directory: " + ec.message());
+    const std::size_t runs = static_cast<std::size_t>(a.runs);
+    const int width = std::max<int>(4, static_cast<int>(std::to_string(runs - 1).size()));
+    std::mutex mutex;
+    files.resize(runs);
+    std::vector<std::string> outcomeOf(runs);
+    std::vector<std::size_t> stepsOf(runs, 0);
+    const RunSink sink = [&](std::size_t i, RunResult& r) -> std::string {
+      char name[64];
+      std::snprintf(name, sizeof name, "run_%0*zu.csv", width, i);
+      const std::filesystem::path path = std::filesystem::path(a.outDir) / name;
+      std::string error = writeRunCsv(r.run, path);
+      if (!error.empty()) return error;
+      std::lock_guard lock(mutex);
+      files[i] = path.string();
+      outcomeOf[i] = std::string(runOutcomeName(r.outcome));
+      stepsOf[i] = r.run.stepCount();
+      return {};
+    };
+    std::size_t lastShown = 0;
+    const ProgressFn progress = [&](std::size_t done, std::size_t total) {
+      if (a.quiet) return true;
+      if (tty) {
+        std::fprintf(stderr, "\rsimulate: %zu/%zu runs", done, total);
+        if (done == total) std::fprintf(stderr, "\n");
+      } else if (done == total || done * 10 / total != lastShown * 10 / total) {
+        std::fprintf(stderr, "simulate: %zu/%zu runs\n", done, total);
+      }
+      lastShown = done;
+      return true;
+    };
+    std::string error = simulateBatch(world, label, options, runs, a.threads, sink, progress);
+    if (!error.empty()) throw std::runtime_error(error);
+    for (std::size_t i = 0; i < runs; ++i) {
+      totalSteps += stepsOf[i];
+      ++outcomes[outcomeOf[i]];
+    }
+  }
+  const double seconds = secondsSince(t0);
+  const double rate = seconds > 0.0 ? static_cast<double>(totalSteps) / seconds : 0.0;
+  if (a.json) {
+    nlohmann::json j;
+    j["scene"] = label;
+    j["driver"] = a.driver;
+    j["runs"] = a.runs;
+    j["steps"] = totalSteps;
+    j["outcomes"] = outcomes;
+    j["seconds"] = seconds;
+    j["steps_per_second"] = rate;
+    j["files"] = files;
+    std::printf("%s\n", j.dump().c_str());
+  } else {
+    std::ostringstream o;
+    for (const auto& [k, v] : outcomes)
+      o << " " << k << "=" << v;
+    std::printf("simulated %lld run(s), %zu steps in %.3f s (%.0f steps/s); outcomes:%s\n",
+                static_cast<long long>(a.runs), totalSteps, seconds, rate, o.str().c_str());
+    if (!batch)
+      std::printf("wrote %s\n", a.out.c_str());
+    else
+      std::printf("wrote %lld files to %s\n", static_cast<long long>(a.runs), a.outDir.c_str());
+  }
+  return kExitOk;
+}
+
+struct BenchArgs {
+  std::vector<std::size_t> counts{10, 100, 1000, 10000};
+  std::int64_t steps = 20000;
+  std::int64_t bruteSteps = 1000;
+  int repeats = 3;
+  bool json = false;
+};
+
+struct Measurement {
+  double stepsPerSecond = 0.0;
+  double contactFraction = 0.0;  // steps with any truth other than NoContact
+};
+
+// Median steps/s of `repeats` timed runs of `steps` steps (random driver, seed 1, recorded to
+// memory, no stop at the goal).
+Measurement measure(const std::shared_ptr<const World>& world, std::size_t steps, bool useIndex,
+                    int repeats) {
+  std::vector<double> rates;
+  Measurement m;
+  for (int r = 0; r < repeats; ++r) {
+    RunOptions options;
+    options.maxSteps = steps;
+    options.seed = 1;
+    options.driver = "random";
+    options.stopAtGoal = false;
+    options.config.useIndex = useIndex;
+    const auto t0 = std::chrono::steady_clock::now();
+    RunResult result = simulateRun(world, "bench", options);
+    const double s = secondsSince(t0);
+    if (!result.ok()) throw std::runtime_error(result.error);
+    rates.push_back(static_cast<double>(result.run.stepCount()) / s);
+    std::size_t touching = 0;
+    for (std::size_t k = 0; k < result.run.stepCount(); ++k) {
+      for (const GroupInfo& g : kSensorGroups) {
+        if (result.run.truthAt(k, g.group) != ContactClass::NoContact) {
+          ++touching;
+          break;
+        }
+      }
+    }
+    m.contactFraction = static_cast<double>(touching) / static_cast<double>(result.run.stepCount());
+  }
+  std::sort(rates.begin(), rates.end());
+  m.stepsPerSecond = rates[rates.size() / 2];
+  return m;
+}
+
+int runBench(const BenchArgs& a) {
+  if (a.steps <= 0 || static_cast<std::uint64_t>(a.steps) > kMaxStepsPerRun) {
+    throw UsageError("--steps must be between 1 and " + std::to_string(kMaxStepsPerRun));
+  }
+  if (a.bruteSteps < 0 || a.bruteSteps > a.steps) {
+    throw UsageError("--brute-steps must be between 0 and --steps");
+  }
+  if (a.repeats <= 0) throw UsageError("--repeats must be at least 1");
+  for (std::size_t n : a.counts) {
+    if (n > kMaxProceduralObstacles) {
+      throw UsageError("obstacle counts must be at most " +
+                       std::to_string(kMaxProceduralObstacles));
+    }
+  }
+  nlohmann::json rows = nlohmann::json::array();
+  if (!a.json) {
+    std::printf("%-16s %9s %8s %8s %12s %14s %10s\n", "scene", "obstacles", "edges", "contact",
+                "steps/s", "brute steps/s", "step time");
+  }
+  double first = 0.0;
+  std::vector<std::string> scenes{"room1"};
+  for (std::size_t n : a.counts)
+    scenes.push_back("random:" + std::to_string(n) + ":1");
+  for (const std::string& spec : scenes) {
+    std::shared_ptr<const World> world = loadWorld(spec);
+    const Measurement m = measure(world, static_cast<std::size_t>(a.steps), true, a.repeats);
+    const double brute =
+        a.bruteSteps > 0
+            ? measure(world, static_cast<std::size_t>(a.bruteSteps), false, 1).stepsPerSecond
+            : 0.0;
+    const bool procedural = spec.starts_with("random:");
+    if (procedural && first == 0.0) first = m.stepsPerSecond;
+    // Step time relative to the smallest procedural scene.
+    const double ratio = procedural ? first / m.stepsPerSecond : 0.0;
+    const std::size_t obstacles = world->scene().obstacles.size();
+    const std::size_t edges = world->edges().size();
+    if (a.json) {
+      rows.push_back({{"scene", spec},
+                      {"obstacles", obstacles},
+                      {"edges", edges},
+                      {"contact_fraction", m.contactFraction},
+                      {"steps_per_second", m.stepsPerSecond},
+                      {"brute_force_steps_per_second", brute},
+                      {"step_time_vs_smallest", ratio}});
+    } else {
+      char ratioText[32] = "";
+      if (procedural) std::snprintf(ratioText, sizeof ratioText, "%.2fx", ratio);
+      std::printf("%-16s %9zu %8zu %7.0f%% %12.0f %14.0f %10s\n", spec.c_str(), obstacles, edges,
+                  100.0 * m.contactFraction, m.stepsPerSecond, brute, ratioText);
+      std::fflush(stdout);
+    }
+  }
+  if (a.json) {
+    nlohmann::json j;
+    j["benchmark"] = "sim";
+    j["driver"] = "random";
+    j["steps"] = a.steps;
+    j["brute_steps"] = a.bruteSteps;
+    j["repeats"] = a.repeats;
+    j["rows"] = rows;
+    std::printf("%s\n", j.dump().c_str());
+  }
+  return kExitOk;
+}
+
+}  // namespace
 
 void registerSimVerbs(CLI::App& app, CLI::App& bench) {
-  addPlannedVerb(app, "simulate", "Drive the simulated robot through a scene and record runs");
+  auto args = std::make_shared<SimulateArgs>();
+  CLI::App* sim =
+      app.add_subcommand("simulate", "Drive the simulated robot through a scene and record runs");
+  sim->add_option("--scene", args->scene,
+                  "Built-in scene name, scene JSON file, or random:N:SEED (procedural)")
+      ->required();
+  sim->add_option("--driver", args->driver, "wall-follow (Bug-2 explorer) or random");
+  sim->add_option("--steps", args->steps, "Maximum steps per run (1..1000000)");
+  sim->add_option("--seed", args->seed, "Seed; run i of a batch uses SEED+i");
+  sim->add_option("--out", args->out, "Output run file (single run)");
+  sim->add_option("--out-dir", args->outDir, "Output directory (batch: run_0000.csv, ...)");
+  sim->add_option("--runs", args->runs, "Number of runs in a batch (needs --out-dir)");
+  sim->add_option("--threads", args->threads, "Worker threads for a batch (0 = all cores)");
+  sim->add_option("--dt", args->dt, "Step length in seconds");
+  sim->add_flag("--json", args->json, "Print one JSON summary object on stdout");
+  sim->add_flag("--quiet", args->quiet, "No progress on stderr");
+  setAction(sim, [args] { return runSimulate(*args); });
+
   addPlannedVerb(app, "navigate", "Navigate a scene by touch with trained models");
-  addPlannedVerb(bench, "sim", "Simulator steps per second against obstacle count");
+
+  auto bargs = std::make_shared<BenchArgs>();
+  CLI::App* b = bench.add_subcommand("sim", "Simulator steps per second against obstacle count");
+  b->add_option("--counts", bargs->counts, "Obstacle counts of the procedural scenes");
+  b->add_option("--steps", bargs->steps, "Steps per timed run");
+  b->add_option("--brute-steps", bargs->bruteSteps, "Steps for the brute-force figure (0: skip)");
+  b->add_option("--repeats", bargs->repeats, "Timed runs per scene (median reported)");
+  b->add_flag("--json", bargs->json, "Print one JSON object on stdout");
+  setAction(b, [bargs] { return runBench(*bargs); });
 }
 
 }  // namespace tactile::cli

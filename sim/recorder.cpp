@@ -1,0 +1,151 @@
+#include "sim/recorder.h"
+
+#include <algorithm>
+#include <atomic>
+#include <charconv>
+#include <mutex>
+#include <thread>
+#include <vector>
+
+namespace tactile {
+
+std::string formatNumber(double value) {
+  char buf[64];
+  auto [ptr, ec] = std::to_chars(buf, buf + sizeof buf, value);
+  return ec == std::errc() ? std::string(buf, ptr) : std::string("0");
+}
+
+Recorder::Recorder(const Simulator& sim, std::string_view sceneName, std::string_view subject,
+                   std::size_t reserveSteps) {
+  const Scene& scene = sim.world().scene();
+  const Pose2d& p = sim.pose();
+  run_.setMeta("format", std::string(kRunFormat));
+  run_.setMeta("scene", std::string(sceneName));
+  run_.setMeta("subject", std::string(subject));
+  run_.setMeta("dt", formatNumber(sim.config().dtSeconds));
+  run_.setMeta("start", formatNumber(p.x) + "," + formatNumber(p.y) + "," + formatNumber(p.theta));
+  run_.setMeta("goal", formatNumber(scene.goal.x()) + "," + formatNumber(scene.goal.y()));
+  run_.setMeta("outcome", std::string(runOutcomeName(RunOutcome::Unknown)));
+  if (reserveSteps > 0) run_.reserve(reserveSteps, true);
+}
+
+void Recorder::record(const Simulator& sim, const Command& command) {
+  const Pose2d& p = sim.pose();
+  run_.appendStep(p.x, p.y, p.theta, command.v, command.omega, sim.blocked(), sim.sensors().data(),
+                  sim.truth().data());
+}
+
+RunResult simulateRun(std::shared_ptr<const World> world, std::string_view sceneName,
+                      const RunOptions& options, const ProgressFn& progress) {
+  std::unique_ptr<Driver> driver = makeDriver(options.driver, options.seed);
+  if (!driver) {
+    RunResult r;
+    r.error = "unknown driver '" + options.driver + "'";
+    return r;
+  }
+  return simulateRunWith(std::move(world), sceneName, *driver, options, progress);
+}
+
+RunResult simulateRunWith(std::shared_ptr<const World> world, std::string_view sceneName,
+                          Driver& driver, const RunOptions& options, const ProgressFn& progress) {
+  RunResult result;
+  if (options.maxSteps > kMaxStepsPerRun) {
+    result.error = "at most " + std::to_string(kMaxStepsPerRun) + " steps per run";
+    return result;
+  }
+  Simulator sim(world, options.config);
+  if (sim.isBlocked(world->scene().start)) {
+    result.error = "the start pose overlaps an obstacle";
+    return result;
+  }
+  const std::string name = driver.name();
+  // Reserve for typical runs only: a run that ends early should not hold memory for maxSteps.
+  Recorder recorder(sim, sceneName, name, std::min<std::size_t>(options.maxSteps, 1u << 16));
+  recorder.setMeta("driver", name);
+  recorder.setMeta("seed", std::to_string(options.seed));
+  Observation obs;
+  obs.dtSeconds = options.config.dtSeconds;
+  obs.start = sim.pose();
+  obs.goal = world->scene().goal;
+  obs.values = &sim.sensors();
+  const double centreOffset =
+      0.5 * (options.config.geometry.frontX() + options.config.geometry.backX());
+  RunOutcome outcome = RunOutcome::Timeout;
+  for (std::size_t k = 0; k < options.maxSteps; ++k) {
+    obs.step = k;
+    obs.pose = sim.pose();
+    obs.blocked = sim.blocked();
+    const Command command = driver.next(obs);
+    sim.step(command.v, command.omega);
+    recorder.record(sim, command);
+    const Vec2 centre = bodyToWorld(sim.pose(), Vec2(centreOffset, 0.0));
+    if (options.stopAtGoal && (centre - world->scene().goal).norm() < options.goalRadiusUnits) {
+      outcome = RunOutcome::Success;
+      break;
+    }
+    if (options.stopAtGoal && driver.gaveUp()) {
+      outcome = RunOutcome::GaveUp;
+      break;
+    }
+    if (progress && (k & 1023) == 1023 && !progress(k + 1, options.maxSteps)) {
+      result.error = "cancelled";
+      return result;
+    }
+  }
+  recorder.setOutcome(outcome);
+  result.outcome = outcome;
+  result.run = recorder.take();
+  return result;
+}
+
+std::string simulateBatch(std::shared_ptr<const World> world, std::string_view sceneName,
+                          const RunOptions& options, std::size_t runs, unsigned threads,
+                          const RunSink& sink, const ProgressFn& progress) {
+  if (runs > kMaxRunsPerBatch) return "at most " + std::to_string(kMaxRunsPerBatch) + " runs";
+  if (threads == 0) threads = std::max(1u, std::thread::hardware_concurrency());
+  threads = std::min(threads, 256u);
+  threads = static_cast<unsigned>(std::min<std::size_t>(threads, std::max<std::size_t>(runs, 1)));
+  std::atomic<std::size_t> nextRun{0};
+  std::atomic<bool> stop{false};
+  std::mutex mutex;
+  std::size_t done = 0;
+  std::string firstError;
+  const auto fail = [&](std::string error) {
+    std::lock_guard lock(mutex);
+    if (firstError.empty()) firstError = std::move(error);
+    stop = true;
+  };
+  const auto worker = [&] {
+    while (!stop) {
+      const std::size_t i = nextRun.fetch_add(1);
+      if (i >= runs) return;
+      RunOptions mine = options;
+      mine.seed = options.seed + i;
+      RunResult result = simulateRun(world, sceneName, mine);
+      if (!result.ok()) {
+        fail("run " + std::to_string(i) + ": " + result.error);
+        return;
+      }
+      std::string error = sink ? sink(i, result) : std::string();
+      if (!error.empty()) {
+        fail(std::move(error));
+        return;
+      }
+      std::lock_guard lock(mutex);
+      ++done;
+      if (progress && !progress(done, runs)) {
+        if (firstError.empty()) firstError = "cancelled";
+        stop = true;
+      }
+    }
+  };
+  std::vector<std::thread> pool;
+  for (unsigned t = 1; t < threads; ++t)
+    pool.emplace_back(worker);
+  worker();
+  for (std::thread& t : pool)
+    t.join();
+  return firstError;
+}
+
+}  // namespace tactile

@@ -1,0 +1,80 @@
+// Recorder and run loop: drive a Simulator with a Driver and record every step into a RunData
+// (DESIGN.md section 4: metadata, pose, command, blocked, 88 dome values, 8 truth columns).
+#pragma once
+
+#include <cstdint>
+#include <functional>
+#include <memory>
+#include <string>
+
+#include "sim/driver.h"
+#include "sim/progress.h"
+#include "sim/run.h"
+#include "sim/simulator.h"
+
+namespace tactile {
+
+inline constexpr std::size_t kMaxStepsPerRun = 1'000'000;  // ~0.7 GB of values per run
+inline constexpr std::size_t kMaxRunsPerBatch = 100'000;
+
+// Shortest round-trip text of a double (metadata values).
+std::string formatNumber(double value);
+
+// Records steps of a Simulator into a RunData with metadata. Usable step by step (the GUI) or
+// through simulateRun.
+class Recorder {
+ public:
+  // Sets format, scene, subject, dt, start, goal, outcome (unknown) and the extra keys.
+  Recorder(const Simulator& sim, std::string_view sceneName, std::string_view subject,
+           std::size_t reserveSteps = 0);
+  // Appends the simulator's current step (after Simulator::step) with the command it was given.
+  void record(const Simulator& sim, const Command& command);
+  void setMeta(std::string_view key, std::string value) { run_.setMeta(key, std::move(value)); }
+  void setOutcome(RunOutcome outcome) {
+    run_.setMeta("outcome", std::string(runOutcomeName(outcome)));
+  }
+  const RunData& run() const { return run_; }
+  RunData take() { return std::move(run_); }
+
+ private:
+  RunData run_;
+};
+
+struct RunOptions {
+  std::size_t maxSteps = 5000;
+  std::uint64_t seed = 1;
+  std::string driver = "wall-follow";
+  SimConfig config;
+  // The run succeeds (and stops) when the body centre comes this close to the goal.
+  double goalRadiusUnits = 60.0;
+  // false: run all maxSteps even past the goal (benchmarks).
+  bool stopAtGoal = true;
+};
+
+struct RunResult {
+  RunData run;
+  RunOutcome outcome = RunOutcome::Unknown;
+  std::string error;  // empty on success
+  bool ok() const { return error.empty(); }
+};
+
+// One run: success when the goal is reached, gave-up when the driver gives up, timeout after
+// maxSteps. Deterministic: the same world, options and binary give the same RunData. `progress`
+// gets (steps done, maxSteps) every 1024 steps; returning false cancels (error "cancelled").
+RunResult simulateRun(std::shared_ptr<const World> world, std::string_view sceneName,
+                      const RunOptions& options, const ProgressFn& progress = {});
+// Same, with a caller-made driver (e.g. a manual queue or a future navigator).
+RunResult simulateRunWith(std::shared_ptr<const World> world, std::string_view sceneName,
+                          Driver& driver, const RunOptions& options,
+                          const ProgressFn& progress = {});
+
+// Batch: run i uses seed options.seed + i. Runs are spread over `threads` workers (0 = all
+// cores, at most 256); `sink(i, result)` is called from worker threads (once per run, any order)
+// and returns "" or an error that stops the batch. `progress` gets (runs done, runs) from one
+// thread at a time. Returns "" or the first error.
+using RunSink = std::function<std::string(std::size_t index, RunResult& result)>;
+std::string simulateBatch(std::shared_ptr<const World> world, std::string_view sceneName,
+                          const RunOptions& options, std::size_t runs, unsigned threads,
+                          const RunSink& sink, const ProgressFn& progress = {});
+
+}  // namespace tactile

@@ -1,0 +1,160 @@
+#include "sim/scene_source.h"
+
+#include <cmath>
+#include <memory>
+#include <numbers>
+#include <random>
+
+#include "sim/builtin_scenes.h"
+#include "sim/recorder.h"
+#include "sim/run_csv.h"
+#include "sim/simulator.h"
+#include "sim/text_parse.h"
+
+namespace tactile {
+namespace {
+
+double unit(std::mt19937_64& rng) {
+  return static_cast<double>(rng() >> 11) * 0x1.0p-53;
+}
+
+constexpr double kCellUnits = 300.0;
+
+}  // namespace
+
+Scene generateProceduralScene(std::size_t obstacles, std::uint64_t seed) {
+  std::mt19937_64 rng(seed ^ 0x9e3779b97f4a7c15ULL);
+  Scene scene;
+  scene.name = "random:" + std::to_string(obstacles) + ":" + std::to_string(seed);
+  // Cells: enough for the obstacles plus the cleared cells around start and goal.
+  const std::size_t needed = obstacles + 8;
+  int rows = std::max(3, static_cast<int>(std::ceil(std::sqrt(static_cast<double>(needed)))));
+  int cols = std::max(4, static_cast<int>(std::ceil(static_cast<double>(needed) / rows)));
+  while (static_cast<std::size_t>(rows) * cols < needed + 4)
+    ++cols;
+  const double width = cols * kCellUnits;
+  const double height = rows * kCellUnits;
+  scene.bounds = {0.0, 0.0, width, height};
+  const int midRow = rows / 2;
+  const Vec2 start((0.5) * kCellUnits, (midRow + 0.5) * kCellUnits);
+  const Vec2 goal((cols - 0.5) * kCellUnits, (midRow + 0.5) * kCellUnits);
+  scene.start = Pose2d{start.x() - 35.0, start.y(), 0.0};
+  scene.goal = goal;
+  const auto reserved = [&](int r, int c) {
+    const bool nearStart = c <= 1 && std::abs(r - midRow) <= 1;
+    const bool nearGoal = c >= cols - 1 && std::abs(r - midRow) <= 1;
+    return nearStart || nearGoal;
+  };
+  std::vector<std::pair<int, int>> cells;
+  for (int r = 0; r < rows; ++r) {
+    for (int c = 0; c < cols; ++c) {
+      if (!reserved(r, c)) cells.emplace_back(r, c);
+    }
+  }
+  // Deterministic shuffle (Fisher-Yates with our own uniform draw), take the first N cells.
+  for (std::size_t i = cells.size(); i > 1; --i) {
+    const std::size_t j = static_cast<std::size_t>(unit(rng) * i);
+    std::swap(cells[i - 1], cells[j]);
+  }
+  const double margin = 15.0;
+  for (std::size_t k = 0; k < obstacles && k < cells.size(); ++k) {
+    const auto [r, c] = cells[k];
+    const int shape = static_cast<int>(unit(rng) * 4.0);
+    const double size = 20.0 + 110.0 * unit(rng);
+    const double aspect = 0.4 + 0.6 * unit(rng);
+    const double angle = shape == 0 ? 0.0 : 2.0 * std::numbers::pi * unit(rng);
+    std::vector<Vec2> local;
+    if (shape <= 1) {
+      const double hx = 0.5 * size;
+      const double hy = 0.5 * size * aspect;
+      local = {Vec2(-hx, -hy), Vec2(hx, -hy), Vec2(hx, hy), Vec2(-hx, hy)};
+    } else {
+      const int sides = shape == 2 ? 3 : 5;
+      for (int i = 0; i < sides; ++i) {
+        const double a = 2.0 * std::numbers::pi * i / sides;
+        local.emplace_back(0.5 * size * std::cos(a), 0.5 * size * std::sin(a));
+      }
+    }
+    // Place the shape inside its cell with a margin, at a random offset.
+    const double reach = 0.5 * size * std::sqrt(2.0);
+    const double freeSpan = kCellUnits - 2.0 * (reach + margin);
+    const double cx = c * kCellUnits + reach + margin + std::max(0.0, freeSpan) * unit(rng);
+    const double cy = r * kCellUnits + reach + margin + std::max(0.0, freeSpan) * unit(rng);
+    Obstacle o;
+    const double ca = std::cos(angle);
+    const double sa = std::sin(angle);
+    for (const Vec2& p : local) {
+      // Rounded to 1/1024 so the JSON form of the scene reproduces it exactly.
+      const double x = std::round((cx + ca * p.x() - sa * p.y()) * 1024.0) / 1024.0;
+      const double y = std::round((cy + sa * p.x() + ca * p.y()) * 1024.0) / 1024.0;
+      o.polygon.emplace_back(x, y);
+    }
+    scene.obstacles.push_back(std::move(o));
+  }
+  return scene;
+}
+
+std::string checkStartPose(const Scene& scene, const RobotGeometry& geometry) {
+  SimConfig config;
+  config.geometry = geometry;
+  Simulator sim(std::make_shared<const World>(scene), config);
+  if (sim.isBlocked(scene.start)) {
+    return "start: the robot at (" + formatNumber(scene.start.x) + ", " +
+           formatNumber(scene.start.y) + ", " + formatNumber(scene.start.theta) +
+           ") overlaps an obstacle or the bounds";
+  }
+  return {};
+}
+
+SceneResult loadScene(std::string_view spec, const RobotGeometry& geometry) {
+  SceneResult result;
+  if (spec.starts_with("random:")) {
+    std::string_view rest = spec.substr(7);
+    const std::size_t colon = rest.find(':');
+    std::int64_t n = 0;
+    std::int64_t seed = 0;
+    if (colon == std::string_view::npos || !parseInteger(rest.substr(0, colon), n) ||
+        !parseInteger(rest.substr(colon + 1), seed) || seed < 0) {
+      result.error = "scene '" + std::string(spec) +
+                     "': expected random:N:SEED with integers N >= 0 and SEED >= 0";
+      result.usageError = true;
+      return result;
+    }
+    if (n < 0 || static_cast<std::size_t>(n) > kMaxProceduralObstacles) {
+      result.error = "scene '" + std::string(spec) + "': N must be between 0 and " +
+                     std::to_string(kMaxProceduralObstacles);
+      result.usageError = true;
+      return result;
+    }
+    result.scene =
+        generateProceduralScene(static_cast<std::size_t>(n), static_cast<std::uint64_t>(seed));
+  } else if (auto json = builtinSceneJson(spec)) {
+    result = parseSceneJson(*json, spec);
+  } else if (spec.find('/') != std::string_view::npos || spec.ends_with(".json") ||
+             std::filesystem::exists(std::filesystem::path(std::string(spec)))) {
+    std::string text;
+    std::string error;
+    if (!readFileText(std::filesystem::path(std::string(spec)), text, error)) {
+      result.error = std::string(spec) + ": " + error;
+      return result;
+    }
+    result = parseSceneJson(text, spec);
+  } else {
+    std::string names;
+    for (const std::string& n : builtinSceneNames())
+      names += (names.empty() ? "" : ", ") + n;
+    result.error = "unknown scene '" + std::string(spec) + "' (built-in scenes: " + names +
+                   "; or a .json file, or random:N:SEED)";
+    result.usageError = true;
+    return result;
+  }
+  if (!result.ok()) return result;
+  std::string error = checkStartPose(*result.scene, geometry);
+  if (!error.empty()) {
+    result.error = std::string(spec) + ": " + error;
+    result.scene.reset();
+  }
+  return result;
+}
+
+}  // namespace tactile

@@ -1,0 +1,204 @@
+#include <gtest/gtest.h>
+
+#include "sim/builtin_scenes.h"
+#include "sim/scene.h"
+#include "sim/scene_source.h"
+
+namespace tactile {
+namespace {
+
+std::string sceneText(const std::string& obstacles, const std::string& start = "200, 500, 0",
+                      const std::string& goal = "900, 500") {
+  std::string s =
+      "{\"name\": \"t\", \"bounds\": [0, 0, 1000, 1000], \"obstacles\": [" + obstacles + "], ";
+  const auto comma1 = start.find(',');
+  const auto comma2 = start.rfind(',');
+  s += "\"start\": {\"x\": " + start.substr(0, comma1) +
+       ", \"y\": " + start.substr(comma1 + 1, comma2 - comma1 - 1) +
+       ", \"theta\": " + start.substr(comma2 + 1) + "}, ";
+  const auto c = goal.find(',');
+  s += "\"goal\": {\"x\": " + goal.substr(0, c) + ", \"y\": " + goal.substr(c + 1) + "}}";
+  return s;
+}
+
+TEST(SceneJson, ParsesAValidScene) {
+  SceneResult r = parseSceneJson(sceneText("{\"polygon\": [[500,500],[600,500],[600,600]]}"), "f");
+  ASSERT_TRUE(r.ok()) << r.error;
+  EXPECT_EQ(r.scene->name, "t");
+  ASSERT_EQ(r.scene->obstacles.size(), 1u);
+  EXPECT_EQ(r.scene->obstacles[0].polygon[1], Vec2(600, 500));
+  EXPECT_DOUBLE_EQ(r.scene->goal.x(), 900.0);
+  EXPECT_DOUBLE_EQ(r.scene->start.y, 500.0);
+}
+
+TEST(SceneJson, InvalidJsonNamesTheSource) {
+  SceneResult r = parseSceneJson("{\"name\": ", "bad.json");
+  ASSERT_FALSE(r.ok());
+  EXPECT_NE(r.error.find("bad.json"), std::string::npos);
+  EXPECT_NE(r.error.find("not valid JSON"), std::string::npos);
+}
+
+TEST(SceneJson, MissingKeyIsNamed) {
+  SceneResult r =
+      parseSceneJson("{\"name\": \"x\", \"bounds\": [0,0,1,1], \"obstacles\": []}", "f");
+  ASSERT_FALSE(r.ok());
+  EXPECT_NE(r.error.find("missing \"start\""), std::string::npos) << r.error;
+}
+
+TEST(SceneJson, NonNumericVertexNamesObstacleAndVertex) {
+  SceneResult r = parseSceneJson(
+      sceneText("{\"polygon\": [[1,1],[5,1],[5,5]]}, {\"polygon\": [[1,1],[\"a\",1],[5,5]]}"), "f");
+  ASSERT_FALSE(r.ok());
+  EXPECT_NE(r.error.find("obstacle 1 vertex 1"), std::string::npos) << r.error;
+}
+
+TEST(SceneJson, VertexOutsideBoundsNamesObstacleAndVertex) {
+  SceneResult r = parseSceneJson(sceneText("{\"polygon\": [[500,500],[600,500],[1600,600]]}"), "f");
+  ASSERT_FALSE(r.ok());
+  EXPECT_NE(r.error.find("obstacle 0 vertex 2"), std::string::npos) << r.error;
+  EXPECT_NE(r.error.find("outside the bounds"), std::string::npos) << r.error;
+}
+
+TEST(SceneJson, SelfIntersectingPolygonNamesTheEdges) {
+  // A bow tie: edge 0-1 crosses edge 2-3.
+  SceneResult r =
+      parseSceneJson(sceneText("{\"polygon\": [[500,500],[600,600],[600,500],[500,600]]}"), "f");
+  ASSERT_FALSE(r.ok());
+  EXPECT_NE(r.error.find("obstacle 0: edge from vertex 0 to vertex 1 crosses edge from vertex 2 "
+                         "to vertex 3"),
+            std::string::npos)
+      << r.error;
+}
+
+TEST(SceneJson, RepeatedVertexIsNamed) {
+  SceneResult r =
+      parseSceneJson(sceneText("{\"polygon\": [[500,500],[600,500],[600,500],[600,600]]}"), "f");
+  ASSERT_FALSE(r.ok());
+  EXPECT_NE(r.error.find("obstacle 0 vertex 1: repeats"), std::string::npos) << r.error;
+}
+
+TEST(SceneJson, TwoVerticesAreNotAPolygon) {
+  SceneResult r = parseSceneJson(sceneText("{\"polygon\": [[500,500],[600,500]]}"), "f");
+  ASSERT_FALSE(r.ok());
+  EXPECT_NE(r.error.find("at least 3 vertices"), std::string::npos) << r.error;
+}
+
+TEST(SceneJson, ZeroAreaPolygonIsRejected) {
+  SceneResult r = parseSceneJson(sceneText("{\"polygon\": [[500,500],[600,500],[700,500]]}"), "f");
+  ASSERT_FALSE(r.ok());
+  EXPECT_NE(r.error.find("obstacle 0"), std::string::npos) << r.error;
+}
+
+TEST(SceneJson, GoalOutsideBoundsIsRejected) {
+  SceneResult r = parseSceneJson(sceneText("", "200, 500, 0", "1200, 500"), "f");
+  ASSERT_FALSE(r.ok());
+  EXPECT_NE(r.error.find("goal"), std::string::npos) << r.error;
+}
+
+TEST(SceneJson, GoalInsideObstacleIsRejected) {
+  SceneResult r = parseSceneJson(
+      sceneText("{\"polygon\": [[800,400],[950,400],[950,600],[800,600]]}", "200, 500, 0"), "f");
+  ASSERT_FALSE(r.ok());
+  EXPECT_NE(r.error.find("goal: lies inside obstacle 0"), std::string::npos) << r.error;
+}
+
+TEST(SceneJson, BoundsMustBeOrdered) {
+  SceneResult r = parseSceneJson(
+      "{\"name\":\"x\",\"bounds\":[10,0,0,10],\"obstacles\":[],\"start\":{\"x\":1,\"y\":1,"
+      "\"theta\":0},\"goal\":{\"x\":2,\"y\":2}}",
+      "f");
+  ASSERT_FALSE(r.ok());
+  EXPECT_NE(r.error.find("bounds"), std::string::npos) << r.error;
+}
+
+TEST(SceneSource, StartPoseInObstacleIsAFileError) {
+  Scene s;
+  s.name = "x";
+  s.bounds = {0, 0, 1000, 1000};
+  s.obstacles.push_back(Obstacle{{Vec2(250, 450), Vec2(300, 450), Vec2(300, 550), Vec2(250, 550)}});
+  s.start = {200, 500, 0};
+  s.goal = Vec2(900, 500);
+  EXPECT_NE(checkStartPose(s).find("overlaps"), std::string::npos);
+  s.start = {200, 500, 3.14159};
+  s.obstacles[0] = Obstacle{{Vec2(600, 450), Vec2(700, 450), Vec2(700, 550), Vec2(600, 550)}};
+  EXPECT_EQ(checkStartPose(s), "");
+}
+
+TEST(SceneSource, StartTooCloseToTheBoundsIsRejected) {
+  Scene s;
+  s.name = "x";
+  s.bounds = {0, 0, 1000, 1000};
+  s.start = {10, 500, 0};  // the back overhangs the wall at x = 0
+  s.goal = Vec2(900, 500);
+  EXPECT_NE(checkStartPose(s), "");
+}
+
+TEST(SceneSource, UnknownNameIsAUsageError) {
+  SceneResult r = loadScene("no-such-scene");
+  ASSERT_FALSE(r.ok());
+  EXPECT_TRUE(r.usageError);
+  EXPECT_NE(r.error.find("practice"), std::string::npos) << r.error;
+}
+
+TEST(SceneSource, MissingFileIsNotAUsageError) {
+  SceneResult r = loadScene("/nonexistent/dir/scene.json");
+  ASSERT_FALSE(r.ok());
+  EXPECT_FALSE(r.usageError);
+  EXPECT_NE(r.error.find("/nonexistent/dir/scene.json"), std::string::npos);
+}
+
+TEST(SceneSource, MalformedRandomSpecIsAUsageError) {
+  for (const char* spec : {"random:", "random:10", "random:x:1", "random:-5:1", "random:10:-1",
+                           "random:10001:1", "random:10:1:2"}) {
+    SceneResult r = loadScene(spec);
+    EXPECT_FALSE(r.ok()) << spec;
+    EXPECT_TRUE(r.usageError) << spec;
+  }
+}
+
+TEST(SceneSource, EveryBuiltinSceneLoads) {
+  const std::vector<std::string> names = builtinSceneNames();
+  for (const char* required : {"practice", "room1", "room2", "room3", "chapter5"}) {
+    EXPECT_NE(std::find(names.begin(), names.end(), required), names.end()) << required;
+  }
+  for (const std::string& name : names) {
+    SceneResult r = loadScene(name);
+    EXPECT_TRUE(r.ok()) << name << ": " << r.error;
+  }
+}
+
+TEST(Procedural, HasTheRequestedObstacleCountAndIsValid) {
+  for (std::size_t n : {0u, 1u, 10u, 500u}) {
+    const Scene s = generateProceduralScene(n, 3);
+    EXPECT_EQ(s.obstacles.size(), n);
+    EXPECT_EQ(validateSceneGeometry(s), "") << n;
+    EXPECT_EQ(checkStartPose(s), "") << n;
+  }
+}
+
+TEST(Procedural, DensityIsConstant) {
+  const Scene a = generateProceduralScene(100, 1);
+  const Scene b = generateProceduralScene(10000, 1);
+  const auto density = [](const Scene& s) {
+    const double area = (s.bounds.xmax - s.bounds.xmin) * (s.bounds.ymax - s.bounds.ymin);
+    return static_cast<double>(s.obstacles.size()) / area;
+  };
+  EXPECT_NEAR(density(a) / density(b), 1.0, 0.25);
+}
+
+TEST(Procedural, SameSeedSameSceneOtherSeedOtherScene) {
+  EXPECT_EQ(sceneToJson(generateProceduralScene(50, 9)),
+            sceneToJson(generateProceduralScene(50, 9)));
+  EXPECT_NE(sceneToJson(generateProceduralScene(50, 9)),
+            sceneToJson(generateProceduralScene(50, 10)));
+}
+
+TEST(Procedural, JsonRoundTripIsExact) {
+  const Scene s = generateProceduralScene(30, 4);
+  SceneResult r = parseSceneJson(sceneToJson(s), "roundtrip");
+  ASSERT_TRUE(r.ok()) << r.error;
+  EXPECT_EQ(sceneToJson(*r.scene), sceneToJson(s));
+}
+
+}  // namespace
+}  // namespace tactile
