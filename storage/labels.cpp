@@ -3,9 +3,9 @@
 #include <algorithm>
 #include <map>
 
+#include "sim/label_file.h"
 #include "sim/run_csv.h"
 #include "storage/database_impl.h"
-#include "storage/label_files.h"
 
 namespace tactile::storage {
 namespace {

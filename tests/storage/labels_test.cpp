@@ -2,8 +2,8 @@
 
 #include <fstream>
 
+#include "sim/label_file.h"
 #include "sim/run_csv.h"
-#include "storage/label_files.h"
 #include "storage_test_util.h"
 
 namespace tactile::storage {

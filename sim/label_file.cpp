@@ -1,10 +1,13 @@
-#include "storage/label_files.h"
+#include "sim/label_file.h"
+
+#include <algorithm>
+#include <array>
 
 #include <nlohmann/json.hpp>
 
 #include "sim/text_parse.h"
 
-namespace tactile::storage {
+namespace tactile {
 namespace {
 
 std::vector<std::string_view> splitComma(std::string_view line) {
@@ -51,9 +54,13 @@ LabelFileResult parseLabelCsv(std::string_view text, std::string_view fileName) 
     return result;
   };
   if (text.starts_with("\xEF\xBB\xBF")) text.remove_prefix(3);
+  // Column positions by name: run, group, first_step, last_step, class, annotator (optional).
+  constexpr std::array<std::string_view, 6> kNames{"run",       "group", "first_step",
+                                                   "last_step", "class", "annotator"};
+  std::array<int, 6> position{-1, -1, -1, -1, -1, -1};
+  std::size_t columnCount = 0;
   std::size_t lineNo = 0;
   bool header = true;
-  bool withAnnotator = false;
   while (!text.empty()) {
     const std::size_t newline = text.find('\n');
     std::string_view line = text.substr(0, newline);
@@ -61,34 +68,50 @@ LabelFileResult parseLabelCsv(std::string_view text, std::string_view fileName) 
     ++lineNo;
     if (line.ends_with('\r')) line.remove_suffix(1);
     if (header) {
-      if (line == "run,group,first_step,last_step,class") {
-        withAnnotator = false;
-      } else if (line == "run,group,first_step,last_step,class,annotator") {
-        withAnnotator = true;
-      } else {
-        return fail(lineNo,
-                    "expected the header 'run,group,first_step,last_step,class' "
-                    "(optionally ',annotator'), found '" +
-                        std::string(line) + "'");
+      const auto names = splitComma(line);
+      columnCount = names.size();
+      for (std::size_t i = 0; i < names.size(); ++i) {
+        const auto it = std::find(kNames.begin(), kNames.end(), names[i]);
+        if (it == kNames.end()) {
+          return fail(lineNo, "column " + std::to_string(i + 1) + ": unknown column '" +
+                                  std::string(names[i]) +
+                                  "' (expected run, group, first_step, last_step, class and "
+                                  "optionally annotator)");
+        }
+        int& slot = position[it - kNames.begin()];
+        if (slot >= 0) {
+          return fail(lineNo, "column " + std::to_string(i + 1) + ": duplicate column '" +
+                                  std::string(names[i]) + "'");
+        }
+        slot = static_cast<int>(i);
+      }
+      for (std::size_t k = 0; k + 1 < kNames.size(); ++k) {
+        if (position[k] < 0) {
+          return fail(lineNo, "missing column '" + std::string(kNames[k]) + "'");
+        }
       }
       header = false;
       continue;
     }
-    if (line.empty()) return fail(lineNo, "empty line");
+    if (line.empty()) {
+      // Blank lines at the very end are tolerated, as in run files.
+      if (text.find_first_not_of("\r\n") == std::string_view::npos) break;
+      return fail(lineNo, "empty line between rows");
+    }
     const auto fields = splitComma(line);
-    const std::size_t expected = withAnnotator ? 6 : 5;
-    if (fields.size() != expected) {
-      return fail(lineNo, "expected " + std::to_string(expected) + " fields, found " +
+    if (fields.size() != columnCount) {
+      return fail(lineNo, "expected " + std::to_string(columnCount) + " fields, found " +
                               std::to_string(fields.size()));
     }
     LabelRecord record;
     record.line = lineNo;
-    record.run = std::string(fields[0]);
-    if (std::string error = fillRecord(record, fields[1], fields[2], fields[3], fields[4]);
+    record.run = std::string(fields[position[0]]);
+    if (std::string error = fillRecord(record, fields[position[1]], fields[position[2]],
+                                       fields[position[3]], fields[position[4]]);
         !error.empty()) {
       return fail(lineNo, error);
     }
-    if (withAnnotator) record.annotator = std::string(fields[5]);
+    if (position[5] >= 0) record.annotator = std::string(fields[position[5]]);
     result.records.push_back(std::move(record));
   }
   if (header) return fail(1, "empty file (expected a header)");
@@ -199,4 +222,4 @@ std::string formatLabelJson(const std::vector<LabelRecord>& records, std::string
   return doc.dump(1) + "\n";
 }
 
-}  // namespace tactile::storage
+}  // namespace tactile

@@ -1,6 +1,6 @@
-// Label files (DESIGN.md section 4): CSV `run,group,first_step,last_step,class[,annotator]` with
-// inclusive step ranges, or JSON with the same fields. Pure text in, records out; the database
-// resolves run names.
+// The one reader and writer of label files (DESIGN.md section 4): CSV
+// `run,group,first_step,last_step,class[,annotator]` with inclusive step ranges, or JSON with the
+// same fields. Pure text in, records out; the database resolves run names.
 #pragma once
 
 #include <cstdint>
@@ -11,7 +11,7 @@
 #include "sim/contact_class.h"
 #include "sim/sensor_layout.h"
 
-namespace tactile::storage {
+namespace tactile {
 
 struct LabelRecord {
   std::string run;
@@ -28,8 +28,10 @@ struct LabelFileResult {
   std::string error;  // "FILE:LINE: ..." when the file was rejected
 };
 
-// CSV: a header naming exactly those columns (annotator optional), one row per segment. A UTF-8
-// BOM, CRLF line ends and a missing final newline are accepted; empty lines are not.
+// CSV: a header naming those columns in any order (annotator optional), one row per segment.
+// Groups by short or long name, classes by exact spelling, 0 <= first_step <= last_step. A UTF-8
+// BOM, CRLF line ends, a missing final newline and trailing blank lines are accepted; a blank line
+// between rows is not. Errors read "FILE:LINE: ...".
 LabelFileResult parseLabelCsv(std::string_view text, std::string_view fileName);
 // JSON: {"format":"tactile-labels","version":1,"set":...,"segments":[{"run","group",
 // "first_step","last_step","class"[,"annotator"]}]} or a bare array of such segment objects.
@@ -40,4 +42,4 @@ std::string formatLabelCsv(const std::vector<LabelRecord>& records);
 std::string formatLabelJson(const std::vector<LabelRecord>& records, std::string_view setName,
                             std::string_view setAnnotator);
 
-}  // namespace tactile::storage
+}  // namespace tactile
