@@ -84,116 +84,6 @@ GroupSteps extractGroupSteps(const RunData& run, SensorGroup group, FeatureKind 
   return out;
 }
 
-namespace {
-
-// Splits one CSV line at commas (label files carry no quoted fields).
-std::vector<std::string_view> splitFields(std::string_view line) {
-  std::vector<std::string_view> fields;
-  while (true) {
-    const std::size_t comma = line.find(',');
-    fields.push_back(line.substr(0, comma));
-    if (comma == std::string_view::npos) break;
-    line.remove_prefix(comma + 1);
-  }
-  return fields;
-}
-
-std::string where(std::string_view file, std::size_t line) {
-  return std::string(file) + ":" + std::to_string(line) + ": ";
-}
-
-}  // namespace
-
-LabelParseResult parseLabelCsv(std::string_view text, std::string_view fileName) {
-  LabelParseResult result;
-  if (text.substr(0, 3) == "\xEF\xBB\xBF") text.remove_prefix(3);
-  std::size_t lineNo = 0;
-  int colRun = -1, colGroup = -1, colFirst = -1, colLast = -1, colClass = -1, colAnnotator = -1;
-  std::size_t columnCount = 0;
-  bool haveHeader = false;
-  auto fail = [&](std::size_t line, const std::string& message) {
-    result.segments.clear();
-    result.error = where(fileName, line) + message;
-    return result;
-  };
-  while (!text.empty()) {
-    const std::size_t nl = text.find('\n');
-    std::string_view line = text.substr(0, nl);
-    text.remove_prefix(nl == std::string_view::npos ? text.size() : nl + 1);
-    ++lineNo;
-    if (!line.empty() && line.back() == '\r') line.remove_suffix(1);
-    if (line.empty()) {
-      if (text.empty()) break;
-      return fail(lineNo, "empty line");
-    }
-    const std::vector<std::string_view> fields = splitFields(line);
-    if (!haveHeader) {
-      haveHeader = true;
-      columnCount = fields.size();
-      for (std::size_t i = 0; i < fields.size(); ++i) {
-        const std::string_view f = fields[i];
-        int* slot = f == "run"          ? &colRun
-                    : f == "group"      ? &colGroup
-                    : f == "first_step" ? &colFirst
-                    : f == "last_step"  ? &colLast
-                    : f == "class"      ? &colClass
-                    : f == "annotator"  ? &colAnnotator
-                                        : nullptr;
-        if (slot == nullptr) {
-          return fail(lineNo, "unknown column '" + std::string(f) + "' (position " +
-                                  std::to_string(i + 1) +
-                                  "); expected run,group,first_step,last_step,class[,annotator]");
-        }
-        if (*slot >= 0) return fail(lineNo, "column '" + std::string(f) + "' appears twice");
-        *slot = static_cast<int>(i);
-      }
-      for (auto [col, name] : {std::pair{colRun, "run"}, std::pair{colGroup, "group"},
-                               std::pair{colFirst, "first_step"}, std::pair{colLast, "last_step"},
-                               std::pair{colClass, "class"}}) {
-        if (col < 0) return fail(lineNo, std::string("missing column '") + name + "'");
-      }
-      continue;
-    }
-    if (fields.size() != columnCount) {
-      return fail(lineNo, "expected " + std::to_string(columnCount) + " fields, found " +
-                              std::to_string(fields.size()));
-    }
-    LabelSegment seg;
-    seg.run = std::string(fields[colRun]);
-    if (seg.run.empty()) return fail(lineNo, "column 'run': empty run name");
-    const std::optional<SensorGroup> group = parseSensorGroup(fields[colGroup]);
-    if (!group) {
-      return fail(lineNo,
-                  "column 'group': expected a group name (F, FLC, L, RLC, B, RRC, R, FRC), "
-                  "found '" +
-                      std::string(fields[colGroup]) + "'");
-    }
-    seg.group = *group;
-    std::int64_t first = 0, last = 0;
-    if (!parseInteger(fields[colFirst], first) || first < 0) {
-      return fail(lineNo, "column 'first_step': expected a step number >= 0, found '" +
-                              std::string(fields[colFirst]) + "'");
-    }
-    if (!parseInteger(fields[colLast], last) || last < first) {
-      return fail(lineNo, "column 'last_step': expected a step number >= first_step, found '" +
-                              std::string(fields[colLast]) + "'");
-    }
-    seg.firstStep = static_cast<std::size_t>(first);
-    seg.lastStep = static_cast<std::size_t>(last);
-    const std::optional<ContactClass> cls = parseContactClass(fields[colClass]);
-    if (!cls) {
-      return fail(lineNo,
-                  "column 'class': expected NoContact, Wall, Corner, LeavingWall or DeadPath, "
-                  "found '" +
-                      std::string(fields[colClass]) + "'");
-    }
-    seg.label = *cls;
-    if (colAnnotator >= 0) seg.annotator = std::string(fields[colAnnotator]);
-    result.segments.push_back(std::move(seg));
-  }
-  if (!haveHeader) return fail(1, "empty label file (expected a header line)");
-  return result;
-}
 
 std::vector<std::optional<ContactClass>> labelsFromTruth(const RunData& run) {
   std::vector<std::optional<ContactClass>> labels(run.stepCount() * kGroupCount);
@@ -204,21 +94,22 @@ std::vector<std::optional<ContactClass>> labelsFromTruth(const RunData& run) {
 }
 
 std::vector<std::optional<ContactClass>> labelsFromSegments(
-    const RunData& run, std::string_view runName, const std::vector<LabelSegment>& segments,
+    const RunData& run, std::string_view runName, const std::vector<LabelRecord>& segments,
     std::string& error) {
   error.clear();
   std::vector<std::optional<ContactClass>> labels(run.stepCount() * kGroupCount);
-  for (const LabelSegment& seg : segments) {
+  for (const LabelRecord& seg : segments) {
     if (seg.run != runName) continue;
-    if (seg.lastStep >= run.stepCount()) {
+    if (static_cast<std::size_t>(seg.lastStep) >= run.stepCount()) {
       error = "label segment " + std::string(groupInfo(seg.group).shortName) + " steps " +
               std::to_string(seg.firstStep) + "-" + std::to_string(seg.lastStep) + " of run '" +
               std::string(runName) + "' reaches past its last step " +
               std::to_string(run.stepCount() == 0 ? 0 : run.stepCount() - 1);
       return {};
     }
-    for (std::size_t t = seg.firstStep; t <= seg.lastStep; ++t) {
-      labels[t * kGroupCount + static_cast<std::size_t>(groupIndex(seg.group))] = seg.label;
+    for (auto t = static_cast<std::size_t>(seg.firstStep);
+         t <= static_cast<std::size_t>(seg.lastStep); ++t) {
+      labels[t * kGroupCount + static_cast<std::size_t>(groupIndex(seg.group))] = seg.cls;
     }
   }
   return labels;

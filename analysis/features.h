@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "sim/contact_class.h"
+#include "sim/label_file.h"
 #include "sim/run.h"
 #include "sim/sensor_layout.h"
 
@@ -48,34 +49,13 @@ struct GroupSteps {
 };
 GroupSteps extractGroupSteps(const RunData& run, SensorGroup group, FeatureKind kind);
 
-// One labelled segment of DESIGN.md section 4: `run,group,first_step,last_step,class[,annotator]`,
-// inclusive step range.
-struct LabelSegment {
-  std::string run;  // run identifier, matched against the names given with the runs
-  SensorGroup group = SensorGroup::Front;
-  std::size_t firstStep = 0;
-  std::size_t lastStep = 0;
-  ContactClass label = ContactClass::NoContact;
-  std::string annotator;
-};
-
-struct LabelParseResult {
-  std::vector<LabelSegment> segments;
-  std::string error;  // "FILE:LINE: ..." when the text was rejected (segments then empty)
-  bool ok() const { return error.empty(); }
-};
-
-// Parses a label CSV (header `run,group,first_step,last_step,class[,annotator]`, columns found by
-// name). Groups accept short or long names; classes the exact spellings; first_step <= last_step.
-LabelParseResult parseLabelCsv(std::string_view text, std::string_view fileName);
-
 // Per-step classes of one run for every group: stepCount * kGroupCount entries in group order,
 // nullopt where no label covers the step. From the run's truth columns...
 std::vector<std::optional<ContactClass>> labelsFromTruth(const RunData& run);
 // ...or from label segments whose `run` equals `runName` (later segments override earlier ones).
 // Segments reaching past the run's last step are an error (returned in `error`).
 std::vector<std::optional<ContactClass>> labelsFromSegments(
-    const RunData& run, std::string_view runName, const std::vector<LabelSegment>& segments,
+    const RunData& run, std::string_view runName, const std::vector<LabelRecord>& segments,
     std::string& error);
 
 // A run together with its per-step, per-group labels (as produced by the two functions above).

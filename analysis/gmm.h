@@ -13,6 +13,7 @@
 #include <string_view>
 #include <vector>
 
+#include "analysis/gmm_kernels.h"
 #include "sim/progress.h"
 
 namespace tactile {
@@ -123,7 +124,6 @@ class GaussianMixture {
   int parameterCount() const;
 
  private:
-  friend class GmmEngine;  // EM's internal builder (gmm.cpp)
   // Computes the cached factors from weights_/means_/covariances_; false if not positive definite.
   bool buildCache(std::string* error);
 
@@ -131,11 +131,11 @@ class GaussianMixture {
   Eigen::VectorXd weights_;
   Eigen::MatrixXd means_;
   std::vector<Eigen::MatrixXd> covariances_;
-  // Cache. precisionFactors_: D x (K*D), block i is U_i = L_i^{-T} (upper), so that
-  // |L_i^{-1}(x - mu_i)|^2 = |(x - mu_i)^T U_i|^2. For diagonal forms block i is diag(1/sigma).
-  Eigen::MatrixXd precisionFactors_;
-  Eigen::MatrixXd shiftedMeans_;  // 1 x (K*D): block i is mu_i^T U_i
-  Eigen::VectorXd logConstants_;  // log w_i - D/2 log(2 pi) - 1/2 log|Sigma_i|
+  // Cache, rebuilt deterministically from the parameters: the kernel works in a frame centred on
+  // the weighted mean of the component means (centre_), which keeps large common offsets out of
+  // the Mahalanobis sums.
+  Eigen::VectorXd centre_;
+  GmmDensityCache cache_;
 };
 
 struct GmmFit {

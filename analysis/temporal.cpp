@@ -43,10 +43,16 @@ Eigen::VectorXd logPosteriorOf(const Eigen::Ref<const Eigen::VectorXd>& logLik,
 }  // namespace
 
 double logSumExp(const Eigen::Ref<const Eigen::VectorXd>& v) {
+  // Plain loops: GCC 12 reports a false maybe-uninitialized inside Eigen's AVX-512 reductions.
   if (v.size() == 0) return kNegInf;
-  const double m = v.maxCoeff();
+  double m = v[0];
+  for (Eigen::Index i = 1; i < v.size(); ++i)
+    m = std::max(m, v[i]);
   if (!std::isfinite(m)) return m;  // all -inf (or +inf)
-  return m + std::log((v.array() - m).exp().sum());
+  double sum = 0.0;
+  for (Eigen::Index i = 0; i < v.size(); ++i)
+    sum += std::exp(v[i] - m);
+  return m + std::log(sum);
 }
 
 Decisions argmaxDecisions(const StepLikelihoods& steps) {
@@ -163,7 +169,7 @@ HmmFilterResult hmmForwardFilter(const StepLikelihoods& steps, double stayProbab
       // Every class underflowed (or the transitions forbid every state): keep the prediction,
       // renormalised, so the filter stays defined.
       joint = predicted.array() - logSumExp(predicted);
-      if (!std::isfinite(joint.maxCoeff())) joint = priors;
+      if (!std::isfinite(joint[argmaxOf(joint)])) joint = priors;
     }
     alpha = joint;
     result.logPosterior.row(t) = alpha.transpose();

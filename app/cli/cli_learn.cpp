@@ -1,13 +1,749 @@
-// Learning verbs: train, sweep, report, classify.
+// Learning verbs on labelled runs: train, sweep, report, classify (DESIGN.md section 6).
+#include <nlohmann/json.hpp>
+
+#include <cstdio>
+#include <deque>
+#include <filesystem>
+#include <iostream>
+#include <limits>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "analysis/features.h"
+#include "analysis/model_file.h"
+#include "analysis/report.h"
+#include "analysis/sweep.h"
+#include "analysis/temporal.h"
+#include "analysis/training.h"
 #include "app/cli/cli_common.h"
+#include "sim/label_file.h"
+#include "sim/run_csv.h"
 
 namespace tactile::cli {
+namespace {
+
+using analysis::FeatureKind;
+using analysis::LabelledRun;
+using nlohmann::json;
+
+// Runs read from files, kept at stable addresses for LabelledRun pointers.
+struct LoadedRuns {
+  std::deque<RunData> runs;
+  std::vector<std::string> paths;
+  std::vector<LabelledRun> labelled;
+};
+
+// Reads every run; the first bad file is an error naming file and line.
+void readRuns(const std::vector<std::string>& paths, LoadedRuns& out) {
+  for (const std::string& path : paths) {
+    RunCsvResult r = readRunCsv(path);
+    if (!r.ok()) throw std::runtime_error(r.error().toString());
+    out.runs.push_back(std::move(r.run()));
+    out.paths.push_back(path);
+  }
+}
+
+// A label file, CSV or JSON by its extension, through the one label-file reader.
+std::vector<LabelRecord> readLabels(const std::string& path) {
+  std::string text, error;
+  if (!readFileText(path, text, error)) throw std::runtime_error(path + ": " + error);
+  const bool json = std::filesystem::path(path).extension() == ".json";
+  LabelFileResult parsed = json ? parseLabelJson(text, path) : parseLabelCsv(text, path);
+  if (!parsed.error.empty()) throw std::runtime_error(parsed.error);
+  return std::move(parsed.records);
+}
+
+// Labels of each loaded run: from the label file when given (its `run` column is matched against
+// the path as given, the file name, then the stem), else from the run's truth columns.
+void attachLabels(LoadedRuns& loaded, const std::string& labelsPath) {
+  std::vector<LabelRecord> segments;
+  if (!labelsPath.empty()) segments = readLabels(labelsPath);
+  for (std::size_t i = 0; i < loaded.runs.size(); ++i) {
+    const RunData& run = loaded.runs[i];
+    const std::string& path = loaded.paths[i];
+    LabelledRun lr{&run, {}};
+    if (labelsPath.empty()) {
+      if (!run.hasTruth()) {
+        throw std::runtime_error(path + ": the run has no truth_* columns; give --labels");
+      }
+      lr.labels = analysis::labelsFromTruth(run);
+    } else {
+      const std::filesystem::path p(path);
+      std::string name;
+      for (const std::string& candidate : {path, p.filename().string(), p.stem().string()}) {
+        for (const LabelRecord& s : segments) {
+          if (s.run == candidate) {
+            name = candidate;
+            break;
+          }
+        }
+        if (!name.empty()) break;
+      }
+      if (name.empty()) {
+        printWarning(labelsPath + ": no label segments for run '" + p.stem().string() + "' (" +
+                     path + ")");
+      }
+      std::string error;
+      lr.labels = analysis::labelsFromSegments(run, name, segments, error);
+      if (!error.empty()) throw std::runtime_error(labelsPath + ": " + error);
+    }
+    loaded.labelled.push_back(std::move(lr));
+  }
+}
+
+std::vector<SensorGroup> parseGroups(const std::vector<std::string>& names) {
+  std::vector<SensorGroup> out;
+  for (const std::string& n : names) {
+    const auto g = parseSensorGroup(n);
+    if (!g) throw UsageError("unknown group '" + n + "' (expected F, FLC, L, RLC, B, RRC, R, FRC)");
+    out.push_back(*g);
+  }
+  return out;
+}
+
+template <typename T, typename Parse>
+std::vector<T> parseNames(const std::vector<std::string>& names, Parse parse, const char* what) {
+  std::vector<T> out;
+  for (const std::string& n : names) {
+    const auto v = parse(n);
+    if (!v) throw UsageError(std::string("unknown ") + what + " '" + n + "'");
+    out.push_back(*v);
+  }
+  return out;
+}
+
+FeatureKind parseFeatures(const std::string& name) {
+  const auto f = analysis::parseFeatureKind(name);
+  if (!f) throw UsageError("unknown --features '" + name + "' (normal, magnitude, normal+shear)");
+  return *f;
+}
+
+void writeText(const std::string& path, const std::string& text) {
+  if (path.empty() || path == "-") {
+    std::fwrite(text.data(), 1, text.size(), stdout);
+    return;
+  }
+  const std::string error = writeFileAtomically(path, text);
+  if (!error.empty()) throw std::runtime_error(path + ": " + error);
+}
+
+json countsJson(const std::array<std::size_t, kContactClassCount>& counts) {
+  json out = json::object();
+  for (int c = 0; c < kContactClassCount; ++c) {
+    if (counts[static_cast<std::size_t>(c)] > 0) {
+      out[std::string(kContactClassNames[static_cast<std::size_t>(c)])] =
+          counts[static_cast<std::size_t>(c)];
+    }
+  }
+  return out;
+}
+
+// ---------------------------------------------------------------------------------------------
+// train
+
+struct TrainArgs {
+  std::vector<std::string> runs;
+  std::vector<std::string> testRuns;
+  std::string labels;
+  std::string method = "gmm";
+  int order = 16;
+  std::string cov = "nodal-diag";
+  double floor = 0.03;
+  std::string reg = "floor";
+  std::string init = "kmeans++";
+  std::uint64_t seed = 1;
+  int restarts = 1;
+  int maxIterations = 100;
+  double tolerance = 1e-3;
+  std::string features = "normal";
+  std::string priors = "equal";
+  std::vector<std::string> groups;
+  double holdout = 0.0;
+  int threads = 0;
+  std::string out;
+  bool json = false;
+};
+
+int runTrain(const TrainArgs& a) {
+  analysis::TrainSettings settings;
+  settings.features = parseFeatures(a.features);
+  ClassifierOptions& o = settings.classifier;
+  const auto method = parseClassifierMethod(a.method);
+  if (!method) throw UsageError("unknown --method '" + a.method + "' (gaussian, gmm)");
+  o.method = *method;
+  const auto form = parseCovarianceForm(a.cov);
+  if (!form) throw UsageError("unknown --cov '" + a.cov + "'");
+  const auto reg = parseRegularization(a.reg);
+  if (!reg) throw UsageError("unknown --reg '" + a.reg + "' (floor, add)");
+  const auto init = parseGmmInit(a.init);
+  if (!init) throw UsageError("unknown --init '" + a.init + "' (kmeans++, random-from-data)");
+  const auto priors = parsePriorMode(a.priors);
+  if (!priors) throw UsageError("unknown --priors '" + a.priors + "' (equal, empirical)");
+  if (a.order < 1) throw UsageError("--order must be >= 1");
+  if (a.floor < 0.0) throw UsageError("--floor must be >= 0");
+  if (a.holdout < 0.0 || a.holdout >= 1.0) throw UsageError("--holdout must be in [0, 1)");
+  if (!a.testRuns.empty() && a.holdout > 0.0) {
+    throw UsageError("give either --test-runs or --holdout, not both");
+  }
+  o.priors = *priors;
+  o.threads = a.threads;
+  o.gmm.components = a.order;
+  o.gmm.form = *form;
+  o.gmm.floor = a.floor;
+  o.gmm.reg = *reg;
+  o.gmm.init = *init;
+  o.gmm.seed = a.seed;
+  o.gmm.restarts = a.restarts;
+  o.gmm.maxIterations = a.maxIterations;
+  o.gmm.tolerance = a.tolerance;
+  o.gmm.threads = a.threads;
+  std::vector<SensorGroup> groups = parseGroups(a.groups);
+  if (groups.empty()) {
+    for (const GroupInfo& g : kSensorGroups)
+      groups.push_back(g.group);
+  }
+
+  LoadedRuns loaded, loadedTest;
+  readRuns(a.runs, loaded);
+  attachLabels(loaded, a.labels);
+  std::vector<LabelledRun> train = loaded.labelled, test;
+  std::string evaluatedOn = "training data";
+  const std::vector<LabelledRun>* testRuns = &train;
+  if (!a.testRuns.empty()) {
+    readRuns(a.testRuns, loadedTest);
+    attachLabels(loadedTest, a.labels);
+    test = loadedTest.labelled;
+    testRuns = &test;
+    evaluatedOn = "test runs";
+  } else if (a.holdout > 0.0) {
+    analysis::splitLabelledRuns(loaded.labelled, a.holdout, train, test);
+    testRuns = &test;
+    evaluatedOn = "held-out steps (last " +
+                  std::to_string(static_cast<int>(a.holdout * 100 + 0.5)) + "% of each run)";
+  }
+
+  analysis::ModelBundle bundle;
+  json summary = json::array();
+  bool failed = false;
+  for (SensorGroup g : groups) {
+    const std::string gName(groupInfo(g).shortName);
+    const analysis::GroupDataSet data = analysis::buildGroupDataSet(train, g, settings.features);
+    if (data.size() == 0) {
+      printWarning("group " + gName + ": no labelled contact samples; no model");
+      continue;
+    }
+    analysis::GroupTrainResult tr = analysis::trainGroupModel(data, settings);
+    if (!tr.ok) {
+      printError(tr.reason);
+      failed = true;
+      continue;
+    }
+    for (ContactClass c : tr.classes.unmodelled) {
+      printWarning("group " + gName + ": class " + std::string(contactClassName(c)) +
+                   " has too few samples to model");
+    }
+    const analysis::GroupDataSet evalData =
+        testRuns == &train ? data : analysis::buildGroupDataSet(*testRuns, g, settings.features);
+    const analysis::GroupEvaluation ev = analysis::evaluateGroupModel(tr.model, evalData, testRuns);
+    json trainedOn;
+    trainedOn["runs"] = loaded.paths;
+    trainedOn["labels"] = a.labels.empty() ? "truth columns" : a.labels;
+    trainedOn["samples"] = data.size();
+    trainedOn["class_counts"] = countsJson(data.classCounts());
+    trainedOn["zero_rows"] = data.zeroRows;
+    trainedOn["holdout"] = a.holdout;
+    trainedOn["init"] = a.init;
+    trainedOn["seed"] = a.seed;
+    trainedOn["restarts"] = a.restarts;
+    trainedOn["max_iterations"] = a.maxIterations;
+    trainedOn["tolerance"] = a.tolerance;
+    trainedOn["priors"] = a.priors;
+    if (!tr.classes.unmodelled.empty()) {
+      json un = json::array();
+      for (ContactClass c : tr.classes.unmodelled)
+        un.push_back(contactClassName(c));
+      trainedOn["unmodelled_classes"] = std::move(un);
+    }
+    tr.model.trainedOn = std::move(trainedOn);
+    json metrics;
+    metrics["evaluated_on"] = evaluatedOn;
+    if (!a.testRuns.empty()) metrics["test_runs"] = loadedTest.paths;
+    metrics["fit_s"] = tr.fit.fitSeconds;
+    json iters = json::object(), conv = json::object(), trainLl = json::object();
+    for (std::size_t c = 0; c < tr.model.classes.size(); ++c) {
+      const std::string cn(contactClassName(tr.model.classes[c]));
+      if (c < tr.fit.iterations.size()) iters[cn] = tr.fit.iterations[c];
+      if (c < tr.fit.converged.size()) conv[cn] = static_cast<bool>(tr.fit.converged[c]);
+      if (c < tr.fit.trainMeanLogLikelihood.size()) trainLl[cn] = tr.fit.trainMeanLogLikelihood[c];
+    }
+    metrics["iterations"] = std::move(iters);
+    metrics["converged"] = std::move(conv);
+    metrics["train_mean_loglik"] = std::move(trainLl);
+    metrics["evaluation"] = analysis::evaluationToJson(ev);
+    tr.model.metrics = metrics;
+    summary.push_back({{"group", gName},
+                       {"samples", data.size()},
+                       {"classes", tr.model.classifier.classNames()},
+                       {"fit_s", tr.fit.fitSeconds},
+                       {"accuracy", ev.metrics.accuracy},
+                       {"balanced_accuracy", ev.metrics.balancedAccuracy}});
+    bundle.models.push_back(std::move(tr.model));
+  }
+  if (failed) return kExitFailure;
+  if (bundle.models.empty()) throw std::runtime_error("no group has labelled contact samples");
+  const std::string error = analysis::writeModelBundleFile(a.out, bundle);
+  if (!error.empty()) throw std::runtime_error(a.out + ": " + error);
+  if (a.json) {
+    std::cout << json{{"out", a.out}, {"evaluated_on", evaluatedOn}, {"groups", summary}}.dump()
+              << "\n";
+  } else {
+    std::printf("wrote %zu group model(s) to %s (scores on %s)\n", bundle.models.size(),
+                a.out.c_str(), evaluatedOn.c_str());
+    for (const json& s : summary) {
+      std::printf("  %-4s %7zu samples  accuracy %5.1f%%  balanced %5.1f%%  fit %.3f s\n",
+                  s["group"].get<std::string>().c_str(), s["samples"].get<std::size_t>(),
+                  100.0 * s["accuracy"].get<double>(), 100.0 * s["balanced_accuracy"].get<double>(),
+                  s["fit_s"].get<double>());
+    }
+  }
+  return kExitOk;
+}
+
+// ---------------------------------------------------------------------------------------------
+// sweep
+
+struct SweepArgs {
+  std::vector<std::string> runs;
+  std::vector<std::string> testRuns;
+  std::string labels;
+  double holdout = 0.3;
+  std::vector<std::string> groups;
+  std::vector<std::string> methods{"gmm"};
+  std::vector<int> orders{1, 2, 4, 8, 16, 32, 64};
+  std::vector<std::string> covs{"nodal-full", "nodal-diag", "grand-full", "grand-diag"};
+  std::vector<double> floors{0.01, 0.03, 0.1};
+  std::vector<std::string> features{"normal"};
+  std::vector<std::uint64_t> seeds{1};
+  std::string reg = "floor";
+  std::string init = "kmeans++";
+  int restarts = 1;
+  int maxIterations = 100;
+  double tolerance = 1e-3;
+  int threads = 0;
+  bool progress = false;
+  std::string out;
+  bool json = false;
+};
+
+int runSweepVerb(const SweepArgs& a) {
+  analysis::SweepGrid grid;
+  grid.groups = parseGroups(a.groups);
+  grid.methods = parseNames<ClassifierMethod>(a.methods, parseClassifierMethod, "method");
+  grid.forms = parseNames<CovarianceForm>(a.covs, parseCovarianceForm, "covariance form");
+  grid.features = parseNames<FeatureKind>(a.features, analysis::parseFeatureKind, "features");
+  grid.orders = a.orders;
+  grid.floors = a.floors;
+  grid.seeds = a.seeds;
+  for (int k : grid.orders) {
+    if (k < 1) throw UsageError("--orders must be >= 1");
+  }
+  for (double f : grid.floors) {
+    if (f < 0.0) throw UsageError("--floors must be >= 0");
+  }
+  const auto reg = parseRegularization(a.reg);
+  if (!reg) throw UsageError("unknown --reg '" + a.reg + "'");
+  const auto init = parseGmmInit(a.init);
+  if (!init) throw UsageError("unknown --init '" + a.init + "'");
+  grid.regularization = *reg;
+  grid.init = *init;
+  grid.restarts = a.restarts;
+  grid.maxIterations = a.maxIterations;
+  grid.tolerance = a.tolerance;
+  if (a.holdout <= 0.0 || a.holdout >= 1.0) throw UsageError("--holdout must be in (0, 1)");
+
+  LoadedRuns loaded, loadedTest;
+  readRuns(a.runs, loaded);
+  attachLabels(loaded, a.labels);
+  std::vector<LabelledRun> train, test;
+  if (!a.testRuns.empty()) {
+    readRuns(a.testRuns, loadedTest);
+    attachLabels(loadedTest, a.labels);
+    train = loaded.labelled;
+    test = loadedTest.labelled;
+  } else {
+    analysis::splitLabelledRuns(loaded.labelled, a.holdout, train, test);
+  }
+  analysis::SweepOptions options;
+  options.threads = a.threads;
+  ProgressFn progress;
+  if (a.progress) {
+    progress = [](std::size_t done, std::size_t total) {
+      std::fprintf(stderr, "\rsweep: %zu / %zu cells", done, total);
+      if (done == total) std::fputc('\n', stderr);
+      return true;
+    };
+  }
+  const analysis::SweepResult result = analysis::runSweep(train, test, grid, options, progress);
+  json doc = analysis::sweepToJson(result);
+  doc["runs"] = loaded.paths;
+  doc["test_runs"] = loadedTest.paths;
+  doc["labels"] = a.labels.empty() ? "truth columns" : a.labels;
+  doc["holdout"] = a.testRuns.empty() ? a.holdout : 0.0;
+  writeText(a.out, doc.dump(1) + "\n");
+  std::size_t ok = 0;
+  for (const auto& c : result.cells)
+    ok += c.ok ? 1 : 0;
+  if (a.json) {
+    std::cout << json{{"out", a.out},
+                      {"cells", result.cells.size()},
+                      {"fitted", ok},
+                      {"threads", result.threads},
+                      {"wall_s", result.wallSeconds}}
+                     .dump()
+              << "\n";
+  } else {
+    std::printf("sweep: %zu cells (%zu fitted) in %.2f s on %d threads -> %s\n",
+                result.cells.size(), ok, result.wallSeconds, result.threads, a.out.c_str());
+  }
+  return kExitOk;
+}
+
+// ---------------------------------------------------------------------------------------------
+// report
+
+int runReport(const std::string& path, bool csv) {
+  std::string text, error;
+  if (!readFileText(path, text, error)) throw std::runtime_error(path + ": " + error);
+  json value;
+  try {
+    value = json::parse(text);
+  } catch (const json::parse_error& e) {
+    std::size_t line = 1;
+    for (std::size_t i = 0; i + 1 < e.byte && i < text.size(); ++i)
+      line += text[i] == '\n';
+    throw std::runtime_error(path + ":" + std::to_string(line) + ": invalid JSON: " + e.what());
+  }
+  const analysis::TableStyle style = csv ? analysis::TableStyle::Csv : analysis::TableStyle::Text;
+  const std::string format = value.is_object() ? value.value("format", "") : "";
+  if (format == "tactile-sweep") {
+    analysis::SweepResult sweep;
+    const std::string err = analysis::sweepFromJson(value, sweep);
+    if (!err.empty()) throw std::runtime_error(path + ": " + err);
+    writeText("", analysis::sweepReport(sweep, style));
+    return kExitOk;
+  }
+  if (format == analysis::kModelFormat || format == analysis::kModelBundleFormat) {
+    // Validate through the one model reader before reporting.
+    const analysis::ModelReadResult models = analysis::modelsFromJson(value, path);
+    if (!models.ok()) throw std::runtime_error(models.error);
+    writeText("", analysis::modelReport(value, style));
+    return kExitOk;
+  }
+  throw std::runtime_error(path + ": not a sweep or model file (format '" + format + "')");
+}
+
+// ---------------------------------------------------------------------------------------------
+// classify
+
+struct ClassifyArgs {
+  std::string model;
+  std::string run;
+  std::string out;
+  bool json = false;
+  std::string temporal = "none";
+  int count = 3;
+  double threshold = 5.0;
+  int window = 0;
+  double stay = 0.9;
+};
+
+int runClassify(const ClassifyArgs& a) {
+  if (a.temporal != "none" && a.temporal != "count" && a.temporal != "sum" && a.temporal != "hmm") {
+    throw UsageError("unknown --temporal '" + a.temporal + "' (none, count, sum, hmm)");
+  }
+  if (a.count < 1) throw UsageError("--count must be >= 1");
+  if (a.stay < 0.0 || a.stay > 1.0) throw UsageError("--stay must be in [0, 1]");
+  const analysis::ModelReadResult models = analysis::readModelFile(a.model);
+  if (!models.ok()) throw std::runtime_error(models.error);
+  RunCsvResult read = readRunCsv(a.run);
+  if (!read.ok()) throw std::runtime_error(read.error().toString());
+  const RunData& run = read.run();
+  const std::size_t steps = run.stepCount();
+
+  struct GroupOutput {
+    const analysis::GroupModel* model = nullptr;
+    std::vector<std::uint8_t> rule;             // NoContact by rule
+    std::vector<std::optional<int>> predicted;  // class index in the model
+    Eigen::MatrixXd logLik;                     // steps x C (rows of rule steps unused)
+    analysis::Decisions decided;
+  };
+  std::vector<GroupOutput> groups(kGroupCount);
+  for (const GroupInfo& info : kSensorGroups) {
+    GroupOutput& go = groups[static_cast<std::size_t>(groupIndex(info.group))];
+    go.model = models.bundle.find(info.group);
+    const FeatureKind kind = go.model ? go.model->features : FeatureKind::Normal;
+    analysis::GroupSteps gs = analysis::extractGroupSteps(run, info.group, kind);
+    go.rule = gs.isZero;
+    go.predicted.assign(steps, std::nullopt);
+    if (go.model == nullptr) continue;
+    // Only contact rows are evaluated (no-contact groups skip the model).
+    std::vector<Eigen::Index> contactRows;
+    for (std::size_t t = 0; t < steps; ++t) {
+      if (!gs.isZero[t]) contactRows.push_back(static_cast<Eigen::Index>(t));
+    }
+    const int classes = go.model->classifier.classCount();
+    go.logLik = Eigen::MatrixXd::Constant(static_cast<Eigen::Index>(steps), classes,
+                                          -std::numeric_limits<double>::infinity());
+    if (!contactRows.empty()) {
+      Eigen::MatrixXd x(static_cast<Eigen::Index>(contactRows.size()), gs.features.cols());
+      for (std::size_t i = 0; i < contactRows.size(); ++i) {
+        x.row(static_cast<Eigen::Index>(i)) = gs.features.row(contactRows[i]);
+      }
+      Eigen::MatrixXd ll;
+      go.model->classifier.logLikelihoods(x, ll);
+      const std::vector<int> pred = go.model->classifier.predictFromLogLikelihoods(ll);
+      for (std::size_t i = 0; i < contactRows.size(); ++i) {
+        go.logLik.row(contactRows[i]) = ll.row(static_cast<Eigen::Index>(i));
+        go.predicted[static_cast<std::size_t>(contactRows[i])] = pred[i];
+      }
+    }
+    if (a.temporal != "none") {
+      analysis::StepLikelihoods sl{go.logLik, {}, go.model->classifier.logPriors()};
+      sl.observed.resize(steps);
+      for (std::size_t t = 0; t < steps; ++t)
+        sl.observed[t] = gs.isZero[t] ? 0 : 1;
+      if (a.temporal == "count") go.decided = analysis::consecutiveCountDecisions(sl, a.count);
+      if (a.temporal == "sum") {
+        go.decided = analysis::summedLogProbabilityDecisions(sl, a.threshold, a.window);
+      }
+      if (a.temporal == "hmm") go.decided = analysis::hmmForwardFilter(sl, a.stay).decisions;
+    }
+  }
+  for (const GroupInfo& info : kSensorGroups) {
+    if (models.bundle.find(info.group) == nullptr) {
+      printWarning(a.model + ": no model for group " + std::string(info.shortName) +
+                   "; its contact steps are left unclassified");
+    }
+  }
+
+  auto className = [&](const GroupOutput& go, std::size_t t) -> std::string {
+    if (go.rule[t]) return "NoContact";
+    if (!go.predicted[t]) return "";
+    return go.model->classifier.classNames()[static_cast<std::size_t>(*go.predicted[t])];
+  };
+  auto decidedName = [&](const GroupOutput& go, std::size_t t) -> std::string {
+    if (go.rule[t]) return "NoContact";
+    if (go.decided.empty() || !go.decided[t]) return "";
+    return go.model->classifier.classNames()[static_cast<std::size_t>(*go.decided[t])];
+  };
+  const bool withDecided = a.temporal != "none";
+
+  if (a.json) {
+    json doc;
+    doc["run"] = a.run;
+    doc["model"] = a.model;
+    doc["steps"] = steps;
+    if (withDecided) doc["temporal"] = a.temporal;
+    json gj = json::object();
+    for (const GroupInfo& info : kSensorGroups) {
+      const GroupOutput& go = groups[static_cast<std::size_t>(groupIndex(info.group))];
+      json g;
+      g["model"] = go.model != nullptr;
+      json cls = json::array(), rule = json::array(), dec = json::array();
+      for (std::size_t t = 0; t < steps; ++t) {
+        const std::string c = className(go, t);
+        cls.push_back(c.empty() ? json(nullptr) : json(c));
+        rule.push_back(go.rule[t] != 0);
+        if (withDecided) {
+          const std::string d = decidedName(go, t);
+          dec.push_back(d.empty() ? json(nullptr) : json(d));
+        }
+      }
+      g["class"] = std::move(cls);
+      g["no_contact_rule"] = std::move(rule);
+      if (withDecided && go.model) g["decided"] = std::move(dec);
+      if (go.model) {
+        json ll = json::object();
+        for (int c = 0; c < go.model->classifier.classCount(); ++c) {
+          json col = json::array();
+          for (std::size_t t = 0; t < steps; ++t) {
+            col.push_back(go.rule[t] ? json(nullptr)
+                                     : json(go.logLik(static_cast<Eigen::Index>(t), c)));
+          }
+          ll[go.model->classifier.classNames()[static_cast<std::size_t>(c)]] = std::move(col);
+        }
+        g["loglik"] = std::move(ll);
+      }
+      gj[std::string(info.shortName)] = std::move(g);
+    }
+    doc["groups"] = std::move(gj);
+    const std::string text = doc.dump() + "\n";
+    if (a.out.empty()) {
+      std::fwrite(text.data(), 1, text.size(), stdout);
+    } else {
+      writeText(a.out, text);
+      std::cout << json{{"out", a.out}, {"steps", steps}}.dump() << "\n";
+    }
+    return kExitOk;
+  }
+
+  // CSV, long form: one line per step and group.
+  std::string csv = "step,group,class,no_contact_rule";
+  for (std::string_view n : kContactClassNames)
+    csv += ",loglik_" + std::string(n);
+  if (withDecided) csv += ",decided";
+  csv += "\n";
+  for (std::size_t t = 0; t < steps; ++t) {
+    for (const GroupInfo& info : kSensorGroups) {
+      const GroupOutput& go = groups[static_cast<std::size_t>(groupIndex(info.group))];
+      csv += std::to_string(t) + "," + std::string(info.shortName) + "," + className(go, t) + "," +
+             (go.rule[t] ? "1" : "0");
+      for (int c = 0; c < kContactClassCount; ++c) {
+        csv += ",";
+        if (go.model == nullptr || go.rule[t]) continue;
+        for (std::size_t k = 0; k < go.model->classes.size(); ++k) {
+          if (static_cast<int>(go.model->classes[k]) == c) {
+            csv +=
+                json(go.logLik(static_cast<Eigen::Index>(t), static_cast<Eigen::Index>(k))).dump();
+          }
+        }
+      }
+      if (withDecided) csv += "," + decidedName(go, t);
+      csv += "\n";
+    }
+  }
+  writeText(a.out, csv);
+  return kExitOk;
+}
+
+}  // namespace
 
 void registerLearnVerbs(CLI::App& app, CLI::App& /*bench*/) {
-  addPlannedVerb(app, "train", "Train per-group classifiers on labelled runs");
-  addPlannedVerb(app, "sweep", "Sweep model order, covariance form and variance floor");
-  addPlannedVerb(app, "report", "Confusion matrices and rate tables of a sweep or model");
-  addPlannedVerb(app, "classify", "Classify each step and group of a run with a model");
+  // train
+  {
+    auto args = std::make_shared<TrainArgs>();
+    CLI::App* cmd = app.add_subcommand(
+        "train",
+        "Train one classifier per sensor group on labelled runs and write a model bundle.\n"
+        "Labels come from --labels, else from the runs' truth columns.");
+    cmd->add_option("--runs", args->runs, "Run CSV files to train on")->required()->expected(1, -1);
+    cmd->add_option("--labels", args->labels,
+                    "Label CSV (run,group,first_step,last_step,class[,annotator]); its run column "
+                    "matches a run's path, file name or stem");
+    cmd->add_option("--test-runs", args->testRuns, "Run CSV files to score the models on")
+        ->expected(1, -1);
+    cmd->add_option("--holdout", args->holdout,
+                    "Score on the last fraction of each run's steps instead (0 = score on the "
+                    "training data)")
+        ->capture_default_str();
+    cmd->add_option("--method", args->method, "gaussian or gmm")->capture_default_str();
+    cmd->add_option("--order", args->order, "Components per class (gmm)")->capture_default_str();
+    cmd->add_option("--cov", args->cov, "nodal-full, nodal-diag, grand-full or grand-diag")
+        ->capture_default_str();
+    cmd->add_option("--floor", args->floor, "Variance floor (or reg_covar with --reg add)")
+        ->capture_default_str();
+    cmd->add_option("--reg", args->reg, "floor (clamp) or add")->capture_default_str();
+    cmd->add_option("--init", args->init, "kmeans++ or random-from-data")->capture_default_str();
+    cmd->add_option("--seed", args->seed, "Random seed")->capture_default_str();
+    cmd->add_option("--restarts", args->restarts, "EM restarts, best kept")->capture_default_str();
+    cmd->add_option("--max-iterations", args->maxIterations, "EM iteration limit")
+        ->capture_default_str();
+    cmd->add_option("--tol", args->tolerance, "Relative convergence tolerance per sample")
+        ->capture_default_str();
+    cmd->add_option("--features", args->features, "normal, magnitude or normal+shear")
+        ->capture_default_str();
+    cmd->add_option("--priors", args->priors, "equal or empirical")->capture_default_str();
+    cmd->add_option("--groups", args->groups, "Groups to train (default all), e.g. R,L")
+        ->delimiter(',');
+    cmd->add_option("--threads", args->threads, "Threads per fit (0 = all cores)")
+        ->capture_default_str();
+    cmd->add_option("--out", args->out, "Model bundle JSON to write")->required();
+    cmd->add_flag("--json", args->json, "Print a JSON summary");
+    setAction(cmd, [args] { return runTrain(*args); });
+  }
+  // sweep
+  {
+    auto args = std::make_shared<SweepArgs>();
+    CLI::App* cmd = app.add_subcommand(
+        "sweep",
+        "Train and score a grid of classifiers (group x method x order x covariance x floor x "
+        "features x seed) on all cores and write SWEEP.json");
+    cmd->add_option("--runs", args->runs, "Run CSV files")->required()->expected(1, -1);
+    cmd->add_option("--labels", args->labels, "Label CSV (default: the runs' truth columns)");
+    cmd->add_option("--test-runs", args->testRuns, "Score on these runs instead of a holdout")
+        ->expected(1, -1);
+    cmd->add_option("--holdout", args->holdout, "Last fraction of each run's steps held out")
+        ->capture_default_str();
+    cmd->add_option("--groups", args->groups, "Groups (default all)")->delimiter(',');
+    cmd->add_option("--methods", args->methods, "gmm and/or gaussian")
+        ->delimiter(',')
+        ->capture_default_str();
+    cmd->add_option("--orders", args->orders, "Model orders")
+        ->delimiter(',')
+        ->capture_default_str();
+    cmd->add_option("--covs", args->covs, "Covariance forms")
+        ->delimiter(',')
+        ->capture_default_str();
+    cmd->add_option("--floors", args->floors, "Variance floors")
+        ->delimiter(',')
+        ->capture_default_str();
+    cmd->add_option("--features", args->features, "Feature kinds")
+        ->delimiter(',')
+        ->capture_default_str();
+    cmd->add_option("--seeds", args->seeds, "Seeds")->delimiter(',')->capture_default_str();
+    cmd->add_option("--reg", args->reg, "floor or add")->capture_default_str();
+    cmd->add_option("--init", args->init, "kmeans++ or random-from-data")->capture_default_str();
+    cmd->add_option("--restarts", args->restarts, "EM restarts per fit")->capture_default_str();
+    cmd->add_option("--max-iterations", args->maxIterations, "EM iteration limit")
+        ->capture_default_str();
+    cmd->add_option("--tol", args->tolerance, "Relative convergence tolerance")
+        ->capture_default_str();
+    cmd->add_option("--threads", args->threads, "Worker threads (0 = all cores)")
+        ->capture_default_str();
+    cmd->add_flag("--progress", args->progress, "Print progress on stderr");
+    cmd->add_option("--out", args->out, "SWEEP.json to write")->required();
+    cmd->add_flag("--json", args->json, "Print a JSON summary");
+    setAction(cmd, [args] { return runSweepVerb(*args); });
+  }
+  // report
+  {
+    auto path = std::make_shared<std::string>();
+    auto csv = std::make_shared<bool>(false);
+    CLI::App* cmd = app.add_subcommand(
+        "report",
+        "Print the tables of a sweep (best cells, rate against floor and order, confusion "
+        "matrices) or of a model file (confusion, per-class rates, one-vs-rest rates, contact "
+        "patterns)");
+    cmd->add_option("FILE", *path, "SWEEP.json or MODEL.json")->required();
+    cmd->add_flag("--csv", *csv, "CSV tables instead of aligned text");
+    setAction(cmd, [path, csv] { return runReport(*path, *csv); });
+  }
+  // classify
+  {
+    auto args = std::make_shared<ClassifyArgs>();
+    CLI::App* cmd = app.add_subcommand(
+        "classify",
+        "Classify every step and group of a run with a model (bundle): class and per-class "
+        "log-likelihoods, as CSV (one line per step and group) or JSON");
+    cmd->add_option("--model", args->model, "Model or model bundle JSON")->required();
+    cmd->add_option("--run", args->run, "Run CSV")->required();
+    cmd->add_option("--out", args->out, "Write here instead of stdout");
+    cmd->add_flag("--json", args->json, "JSON instead of CSV");
+    cmd->add_option("--temporal", args->temporal,
+                    "Temporal decision (thesis 4.6): none, count, sum or hmm")
+        ->capture_default_str();
+    cmd->add_option("--count", args->count, "count: consecutive steps required")
+        ->capture_default_str();
+    cmd->add_option("--threshold", args->threshold, "sum: log-probability margin, nats")
+        ->capture_default_str();
+    cmd->add_option("--window", args->window, "sum: sliding window in steps (0 = whole contact)")
+        ->capture_default_str();
+    cmd->add_option("--stay", args->stay, "hmm: self-transition probability")
+        ->capture_default_str();
+    setAction(cmd, [args] { return runClassify(*args); });
+  }
 }
 
 }  // namespace tactile::cli

@@ -1,0 +1,200 @@
+#include "analysis/feature_table.h"
+
+#include <charconv>
+#include <cmath>
+#include <cstdio>
+#include <unordered_map>
+
+#include "sim/run_csv.h"
+
+namespace tactile {
+
+namespace {
+
+std::string located(std::string_view file, std::size_t line, std::string_view message) {
+  return std::string(file) + ":" + std::to_string(line) + ": " + std::string(message);
+}
+
+// Next line of text (without its '\n' and a trailing '\r'); advances pos.
+std::string_view nextLine(std::string_view text, std::size_t& pos) {
+  const std::size_t end = text.find('\n', pos);
+  std::string_view line =
+      text.substr(pos, end == std::string_view::npos ? text.size() - pos : end - pos);
+  pos = end == std::string_view::npos ? text.size() + 1 : end + 1;
+  if (!line.empty() && line.back() == '\r') line.remove_suffix(1);
+  return line;
+}
+
+}  // namespace
+
+FeatureTableResult parseFeatureTable(std::string_view text, std::string_view fileName) {
+  FeatureTableResult result;
+  std::size_t pos = 0;
+  std::size_t lineNo = 0;
+  std::string_view header;
+  while (pos <= text.size()) {
+    header = nextLine(text, pos);
+    ++lineNo;
+    if (!header.empty()) break;
+  }
+  if (header.empty()) {
+    result.error = located(fileName, 1, "empty file: expected the header f0,...,f{D-1},label");
+    return result;
+  }
+  // Header: f0,f1,...,f{D-1},label
+  std::vector<std::string_view> names;
+  for (std::size_t start = 0;;) {
+    const std::size_t comma = header.find(',', start);
+    names.push_back(header.substr(
+        start, comma == std::string_view::npos ? std::string_view::npos : comma - start));
+    if (comma == std::string_view::npos) break;
+    start = comma + 1;
+  }
+  if (names.size() < 2 || names.back() != "label") {
+    result.error = located(fileName, lineNo,
+                           "header must be f0,...,f{D-1},label (the last column must be 'label')");
+    return result;
+  }
+  const std::size_t d = names.size() - 1;
+  for (std::size_t j = 0; j < d; ++j) {
+    if (names[j] != "f" + std::to_string(j)) {
+      result.error =
+          located(fileName, lineNo,
+                  "column " + std::to_string(j + 1) + ": header '" + std::string(names[j]) +
+                      "', expected 'f" + std::to_string(j) + "'");
+      return result;
+    }
+  }
+  std::vector<double> values;
+  values.reserve(text.size() / 8);
+  std::vector<int> labels;
+  std::unordered_map<std::string, int> classIndex;
+  FeatureTable& table = result.table;
+  while (pos <= text.size()) {
+    const std::string_view line = nextLine(text, pos);
+    ++lineNo;
+    if (line.empty()) continue;
+    const char* p = line.data();
+    const char* end = line.data() + line.size();
+    for (std::size_t j = 0; j < d; ++j) {
+      const char* fieldEnd = p;
+      while (fieldEnd < end && *fieldEnd != ',')
+        ++fieldEnd;
+      if (fieldEnd == end) {
+        result.error =
+            located(fileName, lineNo,
+                    "expected " + std::to_string(d + 1) + " fields, got " + std::to_string(j + 1));
+        return result;
+      }
+      double v = 0.0;
+      const auto [ptr, ec] = std::from_chars(p, fieldEnd, v, std::chars_format::general);
+      if (ec != std::errc() || ptr != fieldEnd || !std::isfinite(v)) {
+        result.error = located(fileName, lineNo,
+                               "column " + std::to_string(j + 1) + " (f" + std::to_string(j) +
+                                   "): '" + std::string(p, fieldEnd) + "' is not a finite number");
+        return result;
+      }
+      values.push_back(v);
+      p = fieldEnd + 1;
+    }
+    const std::string_view label(p, static_cast<std::size_t>(end - p));
+    if (label.find(',') != std::string_view::npos) {
+      result.error = located(fileName, lineNo, "more than " + std::to_string(d + 1) + " fields");
+      return result;
+    }
+    if (label.empty()) {
+      result.error =
+          located(fileName, lineNo, "column " + std::to_string(d + 1) + " (label): empty label");
+      return result;
+    }
+    auto [it, inserted] =
+        classIndex.try_emplace(std::string(label), static_cast<int>(table.classNames.size()));
+    if (inserted) table.classNames.emplace_back(label);
+    labels.push_back(it->second);
+    table.lines.push_back(static_cast<int>(lineNo));
+  }
+  const Eigen::Index n = static_cast<Eigen::Index>(labels.size());
+  if (n == 0) {
+    result.error = located(fileName, lineNo, "the table has a header but no rows");
+    return result;
+  }
+  table.features =
+      Eigen::Map<const Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>>(
+          values.data(), n, static_cast<Eigen::Index>(d));
+  table.labels = std::move(labels);
+  result.ok = true;
+  return result;
+}
+
+FeatureTableResult readFeatureTable(const std::filesystem::path& path) {
+  std::string text;
+  std::string error;
+  if (!readFileText(path, text, error)) {
+    FeatureTableResult r;
+    const std::string name = path.string();
+    r.error = error.find(name) == std::string::npos
+                  ? name + ": " + (error.empty() ? "cannot read the file" : error)
+                  : error;
+    return r;
+  }
+  return parseFeatureTable(text, path.string());
+}
+
+std::string formatFeatureTable(const FeatureTable& table) {
+  std::string out;
+  const int d = table.dimension();
+  for (int j = 0; j < d; ++j)
+    out += "f" + std::to_string(j) + ",";
+  out += "label\n";
+  char buffer[64];
+  for (Eigen::Index r = 0; r < table.features.rows(); ++r) {
+    for (int j = 0; j < d; ++j) {
+      const auto [ptr, ec] = std::to_chars(buffer, buffer + sizeof buffer, table.features(r, j));
+      out.append(buffer, ec == std::errc() ? ptr : buffer);
+      out += ',';
+    }
+    out += table.classNames[static_cast<std::size_t>(table.labels[static_cast<std::size_t>(r)])];
+    out += '\n';
+  }
+  return out;
+}
+
+std::vector<Eigen::MatrixXd> splitByClass(const FeatureTable& table) {
+  const std::size_t classes = table.classNames.size();
+  std::vector<Eigen::Index> counts(classes, 0);
+  for (int l : table.labels)
+    ++counts[static_cast<std::size_t>(l)];
+  std::vector<Eigen::MatrixXd> out(classes);
+  for (std::size_t c = 0; c < classes; ++c)
+    out[c].resize(counts[c], table.features.cols());
+  std::vector<Eigen::Index> fill(classes, 0);
+  for (Eigen::Index r = 0; r < table.features.rows(); ++r) {
+    const auto c = static_cast<std::size_t>(table.labels[static_cast<std::size_t>(r)]);
+    out[c].row(fill[c]++) = table.features.row(r);
+  }
+  return out;
+}
+
+bool remapLabels(FeatureTable& table, const std::vector<std::string>& classNames,
+                 std::string_view fileName, std::string& error) {
+  std::vector<int> map(table.classNames.size(), -1);
+  for (std::size_t c = 0; c < table.classNames.size(); ++c)
+    for (std::size_t t = 0; t < classNames.size(); ++t)
+      if (classNames[t] == table.classNames[c]) map[c] = static_cast<int>(t);
+  for (std::size_t r = 0; r < table.labels.size(); ++r) {
+    const int m = map[static_cast<std::size_t>(table.labels[r])];
+    if (m < 0) {
+      const std::size_t line =
+          r < table.lines.size() ? static_cast<std::size_t>(table.lines[r]) : r + 2;
+      error = located(fileName, line,
+                      "label '" + table.classNames[static_cast<std::size_t>(table.labels[r])] +
+                          "' does not occur in the training table");
+      return false;
+    }
+    table.labels[r] = m;
+  }
+  table.classNames = classNames;
+  return true;
+}
+
+}  // namespace tactile

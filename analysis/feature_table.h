@@ -1,0 +1,46 @@
+// The bring-your-own feature table (DESIGN.md section 4): CSV with header `f0,...,f{D-1},label`
+// and one sample per row; labels are free text naming the class.
+#pragma once
+
+#include <Eigen/Core>
+
+#include <filesystem>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace tactile {
+
+struct FeatureTable {
+  std::vector<std::string> classNames;  // in order of first appearance
+  Eigen::MatrixXd features;             // N x D, one row per sample
+  std::vector<int> labels;              // N indices into classNames
+  std::vector<int> lines;               // N source line numbers (header = line 1), if parsed
+  int dimension() const { return static_cast<int>(features.cols()); }
+  int rows() const { return static_cast<int>(features.rows()); }
+};
+
+struct FeatureTableResult {
+  bool ok = false;
+  std::string error;  // "FILE:LINE: column C (fJ): ..." on failure
+  FeatureTable table;
+};
+
+// Parses the text of a feature table; `fileName` only names the source in error messages. Numbers
+// are strict std::from_chars literals and must be finite; labels must be non-empty; blank lines
+// (and a trailing '\r' on every line) are ignored.
+FeatureTableResult parseFeatureTable(std::string_view text, std::string_view fileName);
+FeatureTableResult readFeatureTable(const std::filesystem::path& path);
+
+// Writes a table in the same format (numbers with 17 significant digits, round-trip exact).
+std::string formatFeatureTable(const FeatureTable& table);
+
+// Rows of each class of `table` in row order: result[c] is N_c x D.
+std::vector<Eigen::MatrixXd> splitByClass(const FeatureTable& table);
+
+// Maps the labels of `table` onto `classNames` (e.g. a test table onto the training classes).
+// Returns false with a message naming the first unknown label and its line (header = line 1).
+bool remapLabels(FeatureTable& table, const std::vector<std::string>& classNames,
+                 std::string_view fileName, std::string& error);
+
+}  // namespace tactile

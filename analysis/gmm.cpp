@@ -1,0 +1,719 @@
+// GCC 12 reports false -Wmaybe-uninitialized inside Eigen's AVX-512 kernels at -O3.
+#pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
+
+// EM for Gaussian mixtures (thesis 4.4), blocked and multi-threaded.
+//
+// Numerical scheme (see docs/learning.md):
+//  - the data are centred once on their column means; every density is evaluated in log space
+//    through Cholesky factors (full forms) or 1/sigma (diagonal forms) and combined by log-sum-exp;
+//  - the M-step statistics of component i are accumulated around its previous mean c_i
+//    (shifted/centred accumulation): S1 = sum r (x - c_i), S2 = sum r (x - c_i)(x - c_i)^T, so
+//    Sigma_i = S2 / N_i - d d^T with d = S1 / N_i small; no large-offset cancellation;
+//  - rows are split into a fixed number of chunks that depends only on N; each chunk accumulates
+//    its own statistics, and chunks are reduced in index order, so results do not depend on the
+//    number of threads.
+#include "analysis/gmm.h"
+
+#include <Eigen/Dense>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <limits>
+#include <sstream>
+#include <thread>
+
+#include "analysis/gaussian.h"
+#include "analysis/kmeans.h"
+
+namespace tactile {
+
+// ---------------------------------------------------------------------------------------------
+// Name tables.
+
+namespace {
+constexpr std::array<std::pair<CovarianceForm, std::string_view>, 4> kFormNames{{
+    {CovarianceForm::NodalFull, "nodal-full"},
+    {CovarianceForm::NodalDiag, "nodal-diag"},
+    {CovarianceForm::GrandFull, "grand-full"},
+    {CovarianceForm::GrandDiag, "grand-diag"},
+}};
+constexpr std::array<std::pair<Regularization, std::string_view>, 2> kRegNames{{
+    {Regularization::Floor, "floor"},
+    {Regularization::Add, "add"},
+}};
+constexpr std::array<std::pair<GmmInit, std::string_view>, 2> kInitNames{{
+    {GmmInit::KMeansPlusPlus, "kmeans++"},
+    {GmmInit::RandomFromData, "random-from-data"},
+}};
+constexpr std::array<std::pair<ConvergenceRule, std::string_view>, 2> kRuleNames{{
+    {ConvergenceRule::Relative, "relative"},
+    {ConvergenceRule::Absolute, "absolute"},
+}};
+
+template <class E, std::size_t N>
+std::string_view nameOf(const std::array<std::pair<E, std::string_view>, N>& table, E value) {
+  for (const auto& [v, name] : table)
+    if (v == value) return name;
+  return "?";
+}
+template <class E, std::size_t N>
+std::optional<E> parseName(const std::array<std::pair<E, std::string_view>, N>& table,
+                           std::string_view text) {
+  for (const auto& [v, name] : table)
+    if (name == text) return v;
+  return std::nullopt;
+}
+
+constexpr Eigen::Index kBlockRows = 256;
+// Rows rounded up to the kernels' vector width (8).
+int paddedRows(Eigen::Index rows) {
+  return static_cast<int>((rows + 7) / 8 * 8);
+}
+constexpr int kMaxChunks = 16;
+// A component whose total responsibility falls below this many samples has lost its weight: it
+// is removed and the remaining weights renormalised (docs/learning.md, "empty components").
+constexpr double kMinComponentMass = 1e-6;
+// Fits on fewer rows than this run single-threaded (thread start-up would dominate).
+constexpr Eigen::Index kMinRowsForThreads = 4096;
+
+std::string formatDouble(double v) {
+  std::ostringstream s;
+  s << v;
+  return s.str();
+}
+
+}  // namespace
+
+std::string_view covarianceFormName(CovarianceForm form) {
+  return nameOf(kFormNames, form);
+}
+std::optional<CovarianceForm> parseCovarianceForm(std::string_view name) {
+  return parseName(kFormNames, name);
+}
+std::string_view regularizationName(Regularization reg) {
+  return nameOf(kRegNames, reg);
+}
+std::optional<Regularization> parseRegularization(std::string_view name) {
+  return parseName(kRegNames, name);
+}
+std::string_view gmmInitName(GmmInit init) {
+  return nameOf(kInitNames, init);
+}
+std::optional<GmmInit> parseGmmInit(std::string_view name) {
+  return parseName(kInitNames, name);
+}
+std::string_view convergenceRuleName(ConvergenceRule rule) {
+  return nameOf(kRuleNames, rule);
+}
+std::optional<ConvergenceRule> parseConvergenceRule(std::string_view name) {
+  return parseName(kRuleNames, name);
+}
+
+// ---------------------------------------------------------------------------------------------
+// GaussianMixture.
+
+std::optional<GaussianMixture> GaussianMixture::create(
+    const Eigen::VectorXd& weights, const Eigen::MatrixXd& means,
+    const std::vector<Eigen::MatrixXd>& covariances, CovarianceForm form, std::string* error) {
+  const auto fail = [&](const std::string& message) -> std::optional<GaussianMixture> {
+    if (error) *error = message;
+    return std::nullopt;
+  };
+  const Eigen::Index k = weights.size();
+  if (k < 1) return fail("a mixture needs at least one component");
+  if (means.rows() != k)
+    return fail("means have " + std::to_string(means.rows()) + " rows for " + std::to_string(k) +
+                " weights");
+  const Eigen::Index d = means.cols();
+  if (d < 1) return fail("means have no columns (dimension 0)");
+  const std::size_t covCount = isNodal(form) ? static_cast<std::size_t>(k) : 1;
+  if (covariances.size() != covCount)
+    return fail(std::string(covarianceFormName(form)) + " needs " + std::to_string(covCount) +
+                " covariance matrices, got " + std::to_string(covariances.size()));
+  if (!weights.allFinite()) return fail("weights are not all finite");
+  if (!means.allFinite()) return fail("means are not all finite");
+  for (Eigen::Index i = 0; i < k; ++i)
+    if (weights(i) < 0.0) return fail("weight " + std::to_string(i) + " is negative");
+  const double sum = weights.sum();
+  if (!(std::abs(sum - 1.0) <= 1e-9))
+    return fail("weights sum to " + formatDouble(sum) + ", not 1");
+  for (std::size_t i = 0; i < covCount; ++i) {
+    const Eigen::MatrixXd& c = covariances[i];
+    const std::string which = "covariance " + std::to_string(i);
+    if (c.rows() != d || c.cols() != d)
+      return fail(which + " is " + std::to_string(c.rows()) + "x" + std::to_string(c.cols()) +
+                  ", expected " + std::to_string(d) + "x" + std::to_string(d));
+    if (!c.allFinite()) return fail(which + " is not all finite");
+    const double scale = c.cwiseAbs().maxCoeff();
+    for (Eigen::Index r = 0; r < d; ++r) {
+      for (Eigen::Index s = 0; s < r; ++s) {
+        if (std::abs(c(r, s) - c(s, r)) > 1e-12 * scale) return fail(which + " is not symmetric");
+        if (isDiagonal(form) && (c(r, s) != 0.0 || c(s, r) != 0.0))
+          return fail(which + " has off-diagonal entries but the form is " +
+                      std::string(covarianceFormName(form)));
+      }
+    }
+  }
+  GaussianMixture m;
+  m.form_ = form;
+  m.weights_ = weights;
+  m.means_ = means;
+  m.covariances_ = covariances;
+  if (!m.buildCache(error)) return std::nullopt;
+  return m;
+}
+
+bool GaussianMixture::buildCache(std::string* error) {
+  centre_ = means_.transpose() * weights_;
+  const Eigen::MatrixXd shifted = means_.rowwise() - centre_.transpose();
+  int bad = -1;
+  if (!buildDensityCache(weights_, shifted, covariances_, isDiagonal(form_), isNodal(form_), cache_,
+                         &bad)) {
+    if (error) *error = "covariance " + std::to_string(bad) + " is not positive definite";
+    return false;
+  }
+  return true;
+}
+
+void GaussianMixture::weightedComponentLogDensities(const Eigen::MatrixXd& samples,
+                                                    Eigen::MatrixXd& out) const {
+  const Eigen::Index n = samples.rows();
+  const int k = components();
+  const int d = dimension();
+  out.resize(n, k);
+  if (k == 0 || n == 0) return;
+  const int ld = static_cast<int>(kBlockRows);
+  Eigen::MatrixXd xb = Eigen::MatrixXd::Zero(kBlockRows, d);
+  Eigen::MatrixXd logp(kBlockRows, k);
+  for (Eigen::Index start = 0; start < n; start += kBlockRows) {
+    const Eigen::Index b = std::min(kBlockRows, n - start);
+    xb.topRows(b) = samples.middleRows(start, b).rowwise() - centre_.transpose();
+    blockComponentLogDensities(cache_, xb.data(), kBlockRows, paddedRows(b), logp.data(), ld);
+    out.middleRows(start, b) = logp.topRows(b);
+  }
+}
+
+void GaussianMixture::logDensities(const Eigen::MatrixXd& samples, Eigen::VectorXd& out) const {
+  const Eigen::Index n = samples.rows();
+  const int k = components();
+  const int d = dimension();
+  out.resize(n);
+  if (k == 0) {
+    out.setConstant(-std::numeric_limits<double>::infinity());
+    return;
+  }
+  const int ld = static_cast<int>(kBlockRows);
+  Eigen::MatrixXd xb = Eigen::MatrixXd::Zero(kBlockRows, d);
+  Eigen::MatrixXd logp(kBlockRows, k);
+  Eigen::VectorXd scratch(2 * kBlockRows);
+  Eigen::VectorXd lse(kBlockRows);
+  for (Eigen::Index start = 0; start < n; start += kBlockRows) {
+    const Eigen::Index b = std::min(kBlockRows, n - start);
+    xb.topRows(b) = samples.middleRows(start, b).rowwise() - centre_.transpose();
+    blockComponentLogDensities(cache_, xb.data(), kBlockRows, paddedRows(b), logp.data(), ld);
+    blockLogSumExp(logp.data(), ld, paddedRows(b), k, lse.data(), nullptr, scratch.data());
+    out.segment(start, b) = lse.head(b);
+  }
+}
+
+double GaussianMixture::logDensity(const Eigen::Ref<const Eigen::VectorXd>& x) const {
+  if (components() == 0) return -std::numeric_limits<double>::infinity();
+  Eigen::MatrixXd row = x.transpose();
+  Eigen::VectorXd out;
+  logDensities(row, out);
+  return out(0);
+}
+
+Eigen::VectorXd GaussianMixture::responsibilities(
+    const Eigen::Ref<const Eigen::VectorXd>& x) const {
+  const int k = components();
+  const int d = dimension();
+  Eigen::VectorXd resp(k);
+  if (k == 0) return resp;
+  Eigen::MatrixXd xb = Eigen::MatrixXd::Zero(8, d);
+  xb.row(0) = (x - centre_).transpose();
+  Eigen::MatrixXd logp(8, k);
+  blockComponentLogDensities(cache_, xb.data(), 8, 8, logp.data(), 8);
+  Eigen::MatrixXd r(8, k);
+  Eigen::VectorXd scratch(16);
+  Eigen::VectorXd logSum(8);
+  blockLogSumExp(logp.data(), 8, 8, k, logSum.data(), r.data(), scratch.data());
+  resp = r.row(0).transpose();
+  return resp;
+}
+
+double GaussianMixture::meanLogLikelihood(const Eigen::MatrixXd& samples) const {
+  if (samples.rows() == 0) return 0.0;
+  Eigen::VectorXd out;
+  logDensities(samples, out);
+  return out.mean();
+}
+
+int GaussianMixture::parameterCount() const {
+  const int k = components();
+  const int d = dimension();
+  int cov = 0;
+  switch (form_) {
+    case CovarianceForm::NodalFull:
+      cov = k * d * (d + 1) / 2;
+      break;
+    case CovarianceForm::NodalDiag:
+      cov = k * d;
+      break;
+    case CovarianceForm::GrandFull:
+      cov = d * (d + 1) / 2;
+      break;
+    case CovarianceForm::GrandDiag:
+      cov = d;
+      break;
+  }
+  return (k - 1) + k * d + cov;
+}
+
+// ---------------------------------------------------------------------------------------------
+// EM engine.
+
+namespace {
+
+// Sufficient statistics of one chunk of rows, accumulated around the previous means c_i.
+struct Stats {
+  Eigen::VectorXd nk;  // K: sum_n r_ni
+  Eigen::MatrixXd s1;  // K x D: sum_n r_ni (x_n - c_i)
+  Eigen::MatrixXd s2;  // diagonal: K x D, sum r (x - c)^2; full: D x (K*D), lower triangles
+  double logLik = 0.0;
+
+  void reset(int k, int d, bool diagonal, bool withMoments) {
+    logLik = 0.0;
+    if (!withMoments) return;
+    nk.setZero(k);
+    s1.setZero(k, d);
+    if (diagonal)
+      s2.setZero(k, d);
+    else
+      s2.setZero(d, static_cast<Eigen::Index>(k) * d);
+  }
+  void add(const Stats& o, bool withMoments) {
+    logLik += o.logLik;
+    if (!withMoments) return;
+    nk += o.nk;
+    s1 += o.s1;
+    s2 += o.s2;
+  }
+};
+
+struct EmState {
+  Eigen::VectorXd weights;            // K
+  Eigen::MatrixXd means;              // K x D, in the centred frame
+  std::vector<Eigen::MatrixXd> covs;  // K (nodal) or 1 (grand), D x D
+  GmmDensityCache cache;
+};
+
+struct Chunking {
+  Eigen::Index rows = 0;
+  int chunks = 1;
+  Eigen::Index begin(int c) const { return rows * c / chunks; }
+  Eigen::Index end(int c) const { return rows * (c + 1) / chunks; }
+};
+
+Chunking makeChunking(Eigen::Index n) {
+  Chunking ch;
+  ch.rows = n;
+  const Eigen::Index wanted = (n + 4 * kBlockRows - 1) / (4 * kBlockRows);
+  ch.chunks = static_cast<int>(std::clamp<Eigen::Index>(wanted, 1, kMaxChunks));
+  return ch;
+}
+
+// Runs f(chunk) for every chunk on `threads` threads (the calling thread is one of them).
+template <class F>
+void forEachChunk(int chunks, int threads, F&& f) {
+  threads = std::clamp(threads, 1, chunks);
+  if (threads == 1) {
+    for (int c = 0; c < chunks; ++c)
+      f(c);
+    return;
+  }
+  std::vector<std::thread> pool;
+  pool.reserve(static_cast<std::size_t>(threads - 1));
+  for (int t = 1; t < threads; ++t)
+    pool.emplace_back([&, t] {
+      for (int c = t; c < chunks; c += threads)
+        f(c);
+    });
+  for (int c = 0; c < chunks; c += threads)
+    f(c);
+  for (auto& th : pool)
+    th.join();
+}
+
+// One E-step pass over the centred data: log-likelihood, and if withMoments the M-step statistics
+// around the current means. Per-chunk results are reduced in chunk order into `total`.
+void emPass(const Eigen::MatrixXd& x, const EmState& state, bool withMoments, int threads,
+            const Chunking& ch, std::vector<Stats>& chunkStats, Stats& total) {
+  const GmmDensityCache& cache = state.cache;
+  const int k = cache.components;
+  const int d = cache.dimension;
+  const bool diagonal = cache.diagonal;
+  const Eigen::Index n = x.rows();
+  chunkStats.resize(static_cast<std::size_t>(ch.chunks));
+  forEachChunk(ch.chunks, threads, [&](int c) {
+    Stats& st = chunkStats[static_cast<std::size_t>(c)];
+    st.reset(k, d, diagonal, withMoments);
+    // Eigen-allocated (64-byte aligned) buffers with a fixed leading dimension: every vectorised
+    // reduction below then splits its work identically whatever the thread and allocation.
+    const int ld = static_cast<int>(kBlockRows);
+    Eigen::VectorXd logp(kBlockRows * k);
+    Eigen::VectorXd resp(withMoments ? kBlockRows * k : 0);
+    Eigen::VectorXd lse(kBlockRows);
+    Eigen::VectorXd scratch(2 * kBlockRows);
+    Eigen::MatrixXd tail;  // zero-padded copy of a last block shorter than kBlockRows
+    const Eigen::Index chunkEnd = ch.end(c);
+    for (Eigen::Index start = ch.begin(c); start < chunkEnd; start += kBlockRows) {
+      const int b = static_cast<int>(std::min(kBlockRows, chunkEnd - start));
+      const int bp = paddedRows(b);
+      const double* xb = x.data() + start;
+      Eigen::Index ldx = n;
+      if (bp != b || start + bp > n) {
+        tail = Eigen::MatrixXd::Zero(bp, d);
+        tail.topRows(b) = x.middleRows(start, b);
+        xb = tail.data();
+        ldx = bp;
+      }
+      blockComponentLogDensities(cache, xb, ldx, bp, logp.data(), ld);
+      blockLogSumExp(logp.data(), ld, bp, k, lse.data(), withMoments ? resp.data() : nullptr,
+                     scratch.data());
+      st.logLik += lse.head(b).sum();
+      if (!withMoments) continue;
+      for (int i = 0; i < k && bp != b; ++i)
+        for (int r = b; r < bp; ++r)
+          resp(static_cast<Eigen::Index>(i) * ld + r) = 0.0;
+      blockAccumulateStats(cache, xb, ldx, bp, resp.data(), ld, st.nk, st.s1, st.s2);
+    }
+  });
+  total = Stats{};
+  total.reset(k, d, diagonal, withMoments);
+  for (const Stats& st : chunkStats)
+    total.add(st, withMoments);
+}
+
+// Applies the variance floor or the additive regularisation to one covariance.
+Eigen::MatrixXd regularize(const Eigen::MatrixXd& cov, const GmmOptions& o) {
+  const bool diagonal = isDiagonal(o.form);
+  const Eigen::Index d = cov.rows();
+  if (diagonal) {
+    Eigen::MatrixXd out = Eigen::MatrixXd::Zero(d, d);
+    for (Eigen::Index j = 0; j < d; ++j)
+      out(j, j) =
+          o.reg == Regularization::Floor ? std::max(cov(j, j), o.floor) : cov(j, j) + o.floor;
+    return out;
+  }
+  if (o.reg == Regularization::Add) {
+    Eigen::MatrixXd out = 0.5 * (cov + cov.transpose());
+    out.diagonal().array() += o.floor;
+    return out;
+  }
+  return clampEigenvalues(cov, o.floor);
+}
+
+std::string singularReason(int component, int k, const GmmOptions& o) {
+  std::string who = isNodal(o.form)
+                        ? "component " + std::to_string(component + 1) + " of " + std::to_string(k)
+                        : "the shared (grand) covariance";
+  return "covariance of " + who + " is singular with variance floor " + formatDouble(o.floor) +
+         " (" + std::string(regularizationName(o.reg)) +
+         "): duplicate or degenerate samples need a positive --floor";
+}
+
+// M-step from statistics accumulated around state.means. Components with mass below
+// kMinComponentMass are dropped. Returns false with a reason if a covariance is singular.
+bool mStep(const Stats& st, const EmState& old, const GmmOptions& o, EmState& next, int& dropped,
+           std::string& reason) {
+  const int k = static_cast<int>(old.weights.size());
+  const int d = static_cast<int>(old.means.cols());
+  const bool diagonal = isDiagonal(o.form);
+  const bool nodal = isNodal(o.form);
+  std::vector<int> kept;
+  double mass = 0.0;
+  for (int i = 0; i < k; ++i) {
+    if (st.nk(i) >= kMinComponentMass && std::isfinite(st.nk(i))) {
+      kept.push_back(i);
+      mass += st.nk(i);
+    }
+  }
+  if (kept.empty()) {
+    reason = "every component lost its weight (no sample is explained by the model)";
+    return false;
+  }
+  dropped += k - static_cast<int>(kept.size());
+  const int kk = static_cast<int>(kept.size());
+  next.weights.resize(kk);
+  next.means.resize(kk, d);
+  std::vector<Eigen::MatrixXd> raw(static_cast<std::size_t>(kk));
+  for (int a = 0; a < kk; ++a) {
+    const int i = kept[static_cast<std::size_t>(a)];
+    const double ni = st.nk(i);
+    next.weights(a) = ni / mass;
+    const Eigen::VectorXd delta = st.s1.row(i).transpose() / ni;
+    next.means.row(a) = old.means.row(i) + delta.transpose();
+    Eigen::MatrixXd cov(d, d);
+    if (diagonal) {
+      cov.setZero();
+      for (int j = 0; j < d; ++j)
+        cov(j, j) = st.s2(i, j) / ni - delta(j) * delta(j);
+    } else {
+      const auto block = st.s2.middleCols(static_cast<Eigen::Index>(i) * d, d);
+      for (int j = 0; j < d; ++j)
+        for (int l = 0; l <= j; ++l) {
+          cov(j, l) = block(j, l) / ni - delta(j) * delta(l);
+          cov(l, j) = cov(j, l);
+        }
+    }
+    raw[static_cast<std::size_t>(a)] = std::move(cov);
+  }
+  next.covs.clear();
+  if (nodal) {
+    for (int a = 0; a < kk; ++a)
+      next.covs.push_back(regularize(raw[static_cast<std::size_t>(a)], o));
+  } else {
+    Eigen::MatrixXd pooled = Eigen::MatrixXd::Zero(d, d);
+    for (int a = 0; a < kk; ++a)
+      pooled += next.weights(a) * raw[static_cast<std::size_t>(a)];
+    next.covs.push_back(regularize(pooled, o));
+  }
+  int bad = -1;
+  if (!buildDensityCache(next.weights, next.means, next.covs, diagonal, nodal, next.cache, &bad)) {
+    reason = singularReason(nodal ? kept[static_cast<std::size_t>(bad)] : 0, k, o);
+    return false;
+  }
+  return true;
+}
+
+// Statistics of a hard assignment (one-hot responsibilities) around `centres`.
+Stats hardAssignmentStats(const Eigen::MatrixXd& x, const Eigen::MatrixXd& centres,
+                          const std::vector<int>& assignment, bool diagonal) {
+  const int k = static_cast<int>(centres.rows());
+  const int d = static_cast<int>(x.cols());
+  Stats st;
+  st.reset(k, d, diagonal, true);
+  Eigen::VectorXd z(d);
+  for (Eigen::Index r = 0; r < x.rows(); ++r) {
+    const int a = assignment[static_cast<std::size_t>(r)];
+    z = x.row(r).transpose() - centres.row(a).transpose();
+    st.nk(a) += 1.0;
+    st.s1.row(a) += z.transpose();
+    if (diagonal) {
+      st.s2.row(a) += z.array().square().matrix().transpose();
+    } else {
+      auto block = st.s2.middleCols(static_cast<Eigen::Index>(a) * d, d);
+      for (int j = 0; j < d; ++j)
+        for (int l = 0; l <= j; ++l)
+          block(j, l) += z(j) * z(l);
+    }
+  }
+  return st;
+}
+
+struct Attempt {
+  bool ok = false;
+  bool cancelled = false;
+  std::string reason;
+  EmState state;
+  int iterations = 0;
+  bool converged = false;
+  double logLik = -std::numeric_limits<double>::infinity();  // total, final model
+  int dropped = 0;
+  std::vector<double> trace;
+};
+
+struct ProgressCounter {
+  const ProgressFn* fn = nullptr;
+  std::size_t done = 0;
+  std::size_t total = 0;
+  bool tick() {
+    ++done;
+    return !fn || !*fn || (*fn)(done, total);
+  }
+};
+
+bool initialState(const Eigen::MatrixXd& x, const GmmOptions& o, Rng& rng, int threads,
+                  EmState& state, int& dropped, std::string& reason) {
+  const Eigen::Index n = x.rows();
+  const int d = static_cast<int>(x.cols());
+  const int k = o.components;
+  const bool diagonal = isDiagonal(o.form);
+  if (o.init == GmmInit::KMeansPlusPlus) {
+    Eigen::MatrixXd centres = kmeansPlusPlus(x, k, rng, threads);
+    std::vector<int> assignment;
+    if (o.kmeansIterations > 0)
+      lloydIterations(x, centres, o.kmeansIterations, assignment, threads);
+    else
+      assignNearest(x, centres, assignment, threads);
+    const Stats st = hardAssignmentStats(x, centres, assignment, diagonal);
+    EmState seed;
+    seed.weights = Eigen::VectorXd::Constant(k, 1.0 / k);
+    seed.means = centres;
+    return mStep(st, seed, o, state, dropped, reason);
+  }
+  // Random rows as means (distinct indices while there are enough rows), equal weights, the data
+  // covariance (biased, around the data mean, which is 0 in the centred frame) for every component.
+  std::vector<Eigen::Index> index(static_cast<std::size_t>(n));
+  for (Eigen::Index i = 0; i < n; ++i)
+    index[static_cast<std::size_t>(i)] = i;
+  state.means.resize(k, d);
+  for (int i = 0; i < k; ++i) {
+    const Eigen::Index slot = i % n;
+    if (slot == 0 && i > 0) {
+      // more components than rows: start a new round of the shuffle
+    }
+    const Eigen::Index pick =
+        slot + static_cast<Eigen::Index>(rng.below(static_cast<std::uint64_t>(n - slot)));
+    std::swap(index[static_cast<std::size_t>(slot)], index[static_cast<std::size_t>(pick)]);
+    state.means.row(i) = x.row(index[static_cast<std::size_t>(slot)]);
+  }
+  state.weights = Eigen::VectorXd::Constant(k, 1.0 / k);
+  const Eigen::RowVectorXd mean = x.colwise().mean();
+  const Eigen::MatrixXd centred = x.rowwise() - mean;
+  Eigen::MatrixXd cov = (centred.transpose() * centred) / static_cast<double>(n);
+  if (diagonal) cov = Eigen::MatrixXd(cov.diagonal().asDiagonal());
+  const Eigen::MatrixXd reg = regularize(cov, o);
+  state.covs.assign(isNodal(o.form) ? static_cast<std::size_t>(k) : 1, reg);
+  int bad = -1;
+  if (!buildDensityCache(state.weights, state.means, state.covs, diagonal, isNodal(o.form),
+                         state.cache, &bad)) {
+    reason = "the data covariance is singular with variance floor " + formatDouble(o.floor) +
+             ": duplicate or degenerate samples need a positive --floor";
+    return false;
+  }
+  return true;
+}
+
+bool hasConverged(double previous, double current, const GmmOptions& o) {
+  const double change = std::abs(current - previous);
+  if (o.rule == ConvergenceRule::Absolute) return change < o.tolerance;
+  return change < o.tolerance * std::max(1.0, std::abs(current));
+}
+
+Attempt runEm(const Eigen::MatrixXd& x, const GmmOptions& o, std::uint64_t seed, int threads,
+              ProgressCounter& progress) {
+  Attempt at;
+  const Eigen::Index n = x.rows();
+  const double nd = static_cast<double>(n);
+  Rng rng(seed);
+  if (!initialState(x, o, rng, threads, at.state, at.dropped, at.reason)) return at;
+  const Chunking ch = makeChunking(n);
+  std::vector<Stats> chunkStats;
+  Stats total;
+  EmState next;
+  double previous = -std::numeric_limits<double>::infinity();
+  for (int it = 1; it <= o.maxIterations; ++it) {
+    emPass(x, at.state, true, threads, ch, chunkStats, total);
+    const double current = total.logLik / nd;
+    if (!std::isfinite(current)) {
+      at.reason = "the log-likelihood is not finite at iteration " + std::to_string(it) +
+                  " (a sample lies where every component has zero density)";
+      return at;
+    }
+    if (o.keepTrace) at.trace.push_back(current);
+    if (!mStep(total, at.state, o, next, at.dropped, at.reason)) return at;
+    std::swap(at.state, next);
+    at.iterations = it;
+    if (!progress.tick()) {
+      at.cancelled = true;
+      at.reason = "cancelled";
+      return at;
+    }
+    if (it > 1 && hasConverged(previous, current, o)) {
+      at.converged = true;
+      break;
+    }
+    previous = current;
+  }
+  emPass(x, at.state, false, threads, ch, chunkStats, total);
+  if (!std::isfinite(total.logLik)) {
+    at.reason = "the final log-likelihood is not finite";
+    return at;
+  }
+  at.logLik = total.logLik;
+  if (o.keepTrace) at.trace.push_back(total.logLik / nd);
+  at.ok = true;
+  return at;
+}
+
+}  // namespace
+
+GmmFit fitGmm(const Eigen::MatrixXd& samples, const GmmOptions& o, const ProgressFn& progress) {
+  GmmFit fit;
+  const Eigen::Index n = samples.rows();
+  const Eigen::Index d = samples.cols();
+  const auto fail = [&](std::string reason) {
+    fit.ok = false;
+    fit.reason = std::move(reason);
+    return fit;
+  };
+  if (n < 1) return fail("no samples to fit");
+  if (d < 1) return fail("samples have no features (dimension 0)");
+  if (o.components < 1) return fail("the model order must be at least 1");
+  if (!(o.floor >= 0.0) || !std::isfinite(o.floor))
+    return fail("the variance floor must be finite and >= 0");
+  if (o.maxIterations < 1) return fail("the iteration limit must be at least 1");
+  if (!(o.tolerance >= 0.0)) return fail("the tolerance must be >= 0");
+  if (o.restarts < 1) return fail("restarts must be at least 1");
+  if (!samples.allFinite()) return fail("the samples contain a non-finite value");
+
+  int threads = o.threads > 0 ? o.threads
+                              : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  if (n < kMinRowsForThreads) threads = 1;
+
+  // Centre once on the column means: keeps common offsets out of every sum.
+  const Eigen::RowVectorXd offset = samples.colwise().mean();
+  const Eigen::MatrixXd x = samples.rowwise() - offset;
+
+  const int reinitialisations =
+      o.init == GmmInit::RandomFromData ? std::max(0, o.maxReinitialisations) : 0;
+  ProgressCounter counter;
+  counter.fn = &progress;
+  counter.total = static_cast<std::size_t>(o.maxIterations) * static_cast<std::size_t>(o.restarts) *
+                  static_cast<std::size_t>(1 + reinitialisations);
+
+  Attempt best;
+  std::string lastReason;
+  for (int r = 0; r < o.restarts; ++r) {
+    std::uint64_t stream = o.seed ^ (0xA0761D6478BD642FULL * static_cast<std::uint64_t>(r));
+    Attempt bestOfRestart;
+    for (int attempt = 0; attempt <= reinitialisations; ++attempt) {
+      const std::uint64_t seed = splitMix64(stream);
+      Attempt at = runEm(x, o, seed, threads, counter);
+      fit.totalIterations += at.iterations;
+      if (at.cancelled) return fail("cancelled");
+      if (!at.ok) {
+        lastReason = at.reason;
+        continue;
+      }
+      const bool converged = at.converged;
+      if (!bestOfRestart.ok || at.logLik > bestOfRestart.logLik) bestOfRestart = std::move(at);
+      if (converged) break;  // random-from-data: re-initialise only when not converged
+    }
+    if (bestOfRestart.ok && (!best.ok || bestOfRestart.logLik > best.logLik))
+      best = std::move(bestOfRestart);
+  }
+  if (!best.ok) return fail(lastReason.empty() ? "the fit failed" : lastReason);
+
+  Eigen::MatrixXd means = best.state.means.rowwise() + offset;
+  std::string error;
+  auto model = GaussianMixture::create(best.state.weights, means, best.state.covs, o.form, &error);
+  if (!model) return fail("the fitted model is invalid: " + error);
+  fit.model = std::move(*model);
+  fit.ok = true;
+  fit.iterations = best.iterations;
+  fit.converged = best.converged;
+  fit.logLikelihood = best.logLik;
+  fit.meanLogLikelihood = best.logLik / static_cast<double>(n);
+  const double p = fit.model.parameterCount();
+  fit.bic = -2.0 * best.logLik + p * std::log(static_cast<double>(n));
+  fit.aic = -2.0 * best.logLik + 2.0 * p;
+  fit.droppedComponents = best.dropped;
+  fit.trace = std::move(best.trace);
+  return fit;
+}
+
+}  // namespace tactile

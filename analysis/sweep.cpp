@@ -1,0 +1,409 @@
+#include "analysis/sweep.h"
+
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <map>
+#include <mutex>
+#include <numeric>
+#include <thread>
+
+#include "analysis/training.h"
+
+namespace tactile::analysis {
+
+using nlohmann::json;
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double secondsSince(Clock::time_point start) {
+  return std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+// Data shared by every cell of one (group, features): extracted once, read-only afterwards.
+struct SharedGroupData {
+  GroupDataSet train;
+  GroupDataSet test;
+  ClassSelection selection;
+  std::vector<Eigen::MatrixXd> perClass;  // training rows of each modelled class
+  std::vector<std::string> names;
+};
+
+std::vector<SensorGroup> groupsOf(const SweepGrid& grid) {
+  if (!grid.groups.empty()) return grid.groups;
+  std::vector<SensorGroup> all;
+  for (const GroupInfo& info : kSensorGroups)
+    all.push_back(info.group);
+  return all;
+}
+
+int dataKey(SensorGroup g, FeatureKind f) {
+  return groupIndex(g) * 8 + static_cast<int>(f);
+}
+
+// Rough cost of a cell, to start the expensive ones first (the result does not depend on it).
+double cellCost(const SweepCell& cell, std::size_t rows, int dim) {
+  const double k = cell.method == ClassifierMethod::Gaussian ? 1.0 : cell.order;
+  const double perComponent = isDiagonal(cell.form) ? dim : static_cast<double>(dim) * dim;
+  return static_cast<double>(rows) * k * perComponent;
+}
+
+SweepCellResult runCell(const SweepCell& cell, const SweepGrid& grid, const SharedGroupData& data,
+                        const std::atomic<bool>& cancel) {
+  SweepCellResult r;
+  r.cell = cell;
+  r.trainRows = data.train.size();
+  r.testRows = data.test.size();
+  r.classes = data.selection.modelled;
+  r.unmodelled = data.selection.unmodelled;
+  if (data.train.size() == 0) {
+    r.reason = "no labelled contact samples";
+    return r;
+  }
+  if (data.perClass.empty()) {
+    r.reason = "no class has enough samples (at least max(2, D))";
+    return r;
+  }
+  ClassifierOptions options;
+  options.method = cell.method;
+  options.priors = grid.priors;
+  options.oneVsRest = false;
+  options.threads = 1;
+  options.gmm.components = cell.method == ClassifierMethod::Gaussian ? 1 : cell.order;
+  options.gmm.form = cell.form;
+  options.gmm.floor = cell.floor;
+  options.gmm.reg = grid.regularization;
+  options.gmm.init = grid.init;
+  options.gmm.seed = cell.seed;
+  options.gmm.restarts = grid.restarts;
+  options.gmm.maxIterations = grid.maxIterations;
+  options.gmm.tolerance = grid.tolerance;
+  options.gmm.threads = 1;
+  const ClassifierFit fit =
+      trainClassifier(data.perClass, data.names, options,
+                      [&cancel](std::size_t, std::size_t) { return !cancel.load(); });
+  r.fitSeconds = fit.fitSeconds;
+  if (!fit.ok) {
+    r.reason = fit.reason;
+    return r;
+  }
+  r.converged = true;
+  for (std::size_t c = 0; c < fit.iterations.size(); ++c) {
+    r.iterations += fit.iterations[c];
+    r.maxIterations = std::max(r.maxIterations, fit.iterations[c]);
+    if (c < fit.converged.size() && !fit.converged[c]) r.converged = false;
+  }
+  const GroupEvaluation ev = evaluateClassifier(fit.model, data.selection.modelled, data.test);
+  r.predictSeconds = ev.predictSeconds;
+  r.confusion = ev.confusion;
+  r.metrics = ev.metrics;
+  r.meanLogLikelihood = ev.meanLogLikelihood;
+  r.ok = true;
+  return r;
+}
+
+}  // namespace
+
+std::vector<SweepCell> expandGrid(const SweepGrid& grid) {
+  std::vector<SweepCell> cells;
+  for (SensorGroup g : groupsOf(grid)) {
+    for (FeatureKind f : grid.features) {
+      for (ClassifierMethod m : grid.methods) {
+        if (m == ClassifierMethod::Gaussian) {
+          for (double floor : grid.floors) {
+            for (std::uint64_t seed : grid.seeds) {
+              cells.push_back({g, m, 1, CovarianceForm::NodalFull, floor, f, seed});
+            }
+          }
+          continue;
+        }
+        for (CovarianceForm form : grid.forms) {
+          for (int order : grid.orders) {
+            for (double floor : grid.floors) {
+              for (std::uint64_t seed : grid.seeds) {
+                cells.push_back({g, m, order, form, floor, f, seed});
+              }
+            }
+          }
+        }
+      }
+    }
+  }
+  return cells;
+}
+
+SweepResult runSweep(const std::vector<LabelledRun>& train, const std::vector<LabelledRun>& test,
+                     const SweepGrid& grid, const SweepOptions& options,
+                     const ProgressFn& progress) {
+  const auto wallStart = Clock::now();
+  SweepResult result;
+  result.grid = grid;
+  const std::vector<SweepCell> cells = expandGrid(grid);
+
+  // Shared work: one data extraction per (group, features).
+  std::map<int, SharedGroupData> shared;
+  for (const SweepCell& cell : cells) {
+    const int key = dataKey(cell.group, cell.features);
+    if (shared.count(key) != 0) continue;
+    SharedGroupData& d = shared[key];
+    d.train = buildGroupDataSet(train, cell.group, cell.features);
+    d.test = buildGroupDataSet(test, cell.group, cell.features);
+    d.selection = selectClasses(d.train);
+    for (ContactClass c : d.selection.modelled) {
+      d.perClass.push_back(d.train.rowsOf(c));
+      d.names.emplace_back(contactClassName(c));
+    }
+    SweepDataSummary s;
+    s.group = cell.group;
+    s.features = cell.features;
+    s.trainRows = d.train.size();
+    s.testRows = d.test.size();
+    s.trainCounts = d.train.classCounts();
+    s.testCounts = d.test.classCounts();
+    s.trainZeroRows = d.train.zeroRows;
+    s.testZeroRows = d.test.zeroRows;
+    result.data.push_back(s);
+  }
+  result.extractSeconds = secondsSince(wallStart);
+
+  // Expensive cells first; the slot of each result is its grid position.
+  std::vector<std::size_t> order(cells.size());
+  std::iota(order.begin(), order.end(), 0);
+  std::vector<double> cost(cells.size());
+  for (std::size_t i = 0; i < cells.size(); ++i) {
+    const SharedGroupData& d = shared.at(dataKey(cells[i].group, cells[i].features));
+    cost[i] = cellCost(cells[i], d.train.size(), d.train.dimension());
+  }
+  std::stable_sort(order.begin(), order.end(),
+                   [&cost](std::size_t a, std::size_t b) { return cost[a] > cost[b]; });
+
+  int threads =
+      options.threads > 0 ? options.threads : static_cast<int>(std::thread::hardware_concurrency());
+  threads =
+      std::max(1, std::min<int>(threads, static_cast<int>(std::max<std::size_t>(cells.size(), 1))));
+  result.threads = threads;
+
+  std::vector<std::optional<SweepCellResult>> slots(cells.size());
+  std::atomic<std::size_t> next{0};
+  std::atomic<bool> cancel{false};
+  std::mutex progressMutex;
+  std::size_t done = 0;
+  if (progress && !progress(0, cells.size())) cancel = true;
+
+  auto worker = [&]() {
+    while (!cancel.load()) {
+      const std::size_t k = next.fetch_add(1);
+      if (k >= order.size()) return;
+      const std::size_t i = order[k];
+      SweepCellResult r =
+          runCell(cells[i], grid, shared.at(dataKey(cells[i].group, cells[i].features)), cancel);
+      // A fit stopped by cancellation is not a result.
+      if (cancel.load() && !r.ok) return;
+      slots[i] = std::move(r);
+      std::lock_guard<std::mutex> lock(progressMutex);
+      ++done;
+      if (progress && !progress(done, cells.size())) cancel = true;
+    }
+  };
+  std::vector<std::thread> pool;
+  for (int t = 1; t < threads; ++t)
+    pool.emplace_back(worker);
+  worker();
+  for (std::thread& t : pool)
+    t.join();
+
+  result.cancelled = cancel.load();
+  for (std::optional<SweepCellResult>& s : slots) {
+    if (s) result.cells.push_back(std::move(*s));
+  }
+  result.wallSeconds = secondsSince(wallStart);
+  return result;
+}
+
+namespace {
+
+json classList(const std::vector<ContactClass>& classes) {
+  json out = json::array();
+  for (ContactClass c : classes)
+    out.push_back(contactClassName(c));
+  return out;
+}
+
+json countsJson(const std::array<std::size_t, kContactClassCount>& counts) {
+  json out = json::object();
+  for (int c = 0; c < kContactClassCount; ++c) {
+    if (counts[static_cast<std::size_t>(c)] > 0) {
+      out[std::string(kContactClassNames[static_cast<std::size_t>(c)])] =
+          counts[static_cast<std::size_t>(c)];
+    }
+  }
+  return out;
+}
+
+}  // namespace
+
+json sweepToJson(const SweepResult& result) {
+  json out;
+  out["format"] = "tactile-sweep";
+  out["version"] = 1;
+  const SweepGrid& g = result.grid;
+  json grid;
+  json groups = json::array();
+  for (SensorGroup s : groupsOf(g))
+    groups.push_back(groupInfo(s).shortName);
+  grid["groups"] = std::move(groups);
+  json methods = json::array();
+  for (ClassifierMethod m : g.methods)
+    methods.push_back(classifierMethodName(m));
+  grid["methods"] = std::move(methods);
+  grid["orders"] = g.orders;
+  json forms = json::array();
+  for (CovarianceForm f : g.forms)
+    forms.push_back(covarianceFormName(f));
+  grid["covariances"] = std::move(forms);
+  grid["floors"] = g.floors;
+  json features = json::array();
+  for (FeatureKind f : g.features)
+    features.push_back(featureKindName(f));
+  grid["features"] = std::move(features);
+  grid["seeds"] = g.seeds;
+  grid["regularization"] = regularizationName(g.regularization);
+  grid["init"] = gmmInitName(g.init);
+  grid["restarts"] = g.restarts;
+  grid["max_iterations"] = g.maxIterations;
+  grid["tolerance"] = g.tolerance;
+  grid["priors"] = priorModeName(g.priors);
+  out["grid"] = std::move(grid);
+  json data = json::array();
+  for (const SweepDataSummary& s : result.data) {
+    data.push_back({{"group", groupInfo(s.group).shortName},
+                    {"features", featureKindName(s.features)},
+                    {"train_rows", s.trainRows},
+                    {"test_rows", s.testRows},
+                    {"train_classes", countsJson(s.trainCounts)},
+                    {"test_classes", countsJson(s.testCounts)},
+                    {"train_zero_rows", s.trainZeroRows},
+                    {"test_zero_rows", s.testZeroRows}});
+  }
+  out["data"] = std::move(data);
+  out["threads"] = result.threads;
+  out["wall_s"] = result.wallSeconds;
+  out["extract_s"] = result.extractSeconds;
+  out["cancelled"] = result.cancelled;
+  json cells = json::array();
+  for (const SweepCellResult& r : result.cells) {
+    json c;
+    c["group"] = groupInfo(r.cell.group).shortName;
+    c["method"] = classifierMethodName(r.cell.method);
+    c["order"] = r.cell.order;
+    c["covariance"] = covarianceFormName(r.cell.form);
+    c["floor"] = r.cell.floor;
+    c["features"] = featureKindName(r.cell.features);
+    c["seed"] = r.cell.seed;
+    c["ok"] = r.ok;
+    if (!r.ok) c["reason"] = r.reason;
+    c["classes"] = classList(r.classes);
+    c["unmodelled"] = classList(r.unmodelled);
+    c["train_rows"] = r.trainRows;
+    c["test_rows"] = r.testRows;
+    c["fit_s"] = r.fitSeconds;
+    c["predict_s"] = r.predictSeconds;
+    c["iterations"] = r.iterations;
+    c["max_iterations"] = r.maxIterations;
+    c["converged"] = r.converged;
+    c["accuracy"] = r.metrics.accuracy;
+    c["balanced_accuracy"] = r.metrics.balancedAccuracy;
+    c["macro_f1"] = r.metrics.macroF1;
+    c["mean_loglik"] = r.meanLogLikelihood ? json(*r.meanLogLikelihood) : json(nullptr);
+    json rates = json::object();
+    for (const ClassMetrics& m : r.metrics.perClass) {
+      if (m.recall) rates[std::string(contactClassName(m.label))] = *m.recall;
+    }
+    c["rates"] = std::move(rates);
+    c["confusion"] = confusionToJson(r.confusion);
+    cells.push_back(std::move(c));
+  }
+  out["cells"] = std::move(cells);
+  return out;
+}
+
+namespace {
+
+template <typename T, typename Parse>
+bool parseList(const json& v, const char* key, std::vector<T>& out, Parse parse) {
+  out.clear();
+  if (!v.contains(key) || !v[key].is_array()) return false;
+  for (const json& e : v[key]) {
+    if (!e.is_string()) return false;
+    auto p = parse(e.get<std::string>());
+    if (!p) return false;
+    out.push_back(*p);
+  }
+  return true;
+}
+
+}  // namespace
+
+std::string sweepFromJson(const json& value, SweepResult& out) {
+  out = SweepResult();
+  try {
+    if (!value.is_object() || value.value("format", "") != "tactile-sweep") {
+      return "not a sweep file (expected \"format\": \"tactile-sweep\")";
+    }
+    if (value.value("version", 0) != 1) return "unsupported sweep file version";
+    const json& grid = value.at("grid");
+    parseList(grid, "groups", out.grid.groups, parseSensorGroup);
+    parseList(grid, "methods", out.grid.methods, parseClassifierMethod);
+    parseList(grid, "covariances", out.grid.forms, parseCovarianceForm);
+    parseList(grid, "features", out.grid.features, parseFeatureKind);
+    out.grid.orders = grid.value("orders", std::vector<int>{});
+    out.grid.floors = grid.value("floors", std::vector<double>{});
+    out.threads = value.value("threads", 1);
+    out.wallSeconds = value.value("wall_s", 0.0);
+    out.cancelled = value.value("cancelled", false);
+    const json& cells = value.at("cells");
+    if (!cells.is_array()) return "'cells' is not an array";
+    for (std::size_t i = 0; i < cells.size(); ++i) {
+      const json& c = cells[i];
+      const std::string where = "cells[" + std::to_string(i) + "]: ";
+      SweepCellResult r;
+      const auto group = parseSensorGroup(c.at("group").get<std::string>());
+      const auto method = parseClassifierMethod(c.at("method").get<std::string>());
+      const auto form = parseCovarianceForm(c.at("covariance").get<std::string>());
+      const auto features = parseFeatureKind(c.at("features").get<std::string>());
+      if (!group || !method || !form || !features) return where + "unknown group/method/form";
+      r.cell = {*group,
+                *method,
+                c.at("order").get<int>(),
+                *form,
+                c.at("floor").get<double>(),
+                *features,
+                c.value("seed", std::uint64_t{1})};
+      r.ok = c.at("ok").get<bool>();
+      r.reason = c.value("reason", "");
+      for (const json& n : c.value("classes", json::array())) {
+        if (auto cls = parseContactClass(n.get<std::string>())) r.classes.push_back(*cls);
+      }
+      r.trainRows = c.value("train_rows", std::size_t{0});
+      r.testRows = c.value("test_rows", std::size_t{0});
+      r.fitSeconds = c.value("fit_s", 0.0);
+      r.predictSeconds = c.value("predict_s", 0.0);
+      r.iterations = c.value("iterations", 0);
+      r.maxIterations = c.value("max_iterations", 0);
+      r.converged = c.value("converged", false);
+      if (c.contains("mean_loglik") && c["mean_loglik"].is_number()) {
+        r.meanLogLikelihood = c["mean_loglik"].get<double>();
+      }
+      if (!confusionFromJson(c.at("confusion"), r.confusion)) return where + "bad confusion";
+      r.metrics = computeMetrics(r.confusion);
+      out.cells.push_back(std::move(r));
+    }
+  } catch (const json::exception& e) {
+    return std::string("malformed sweep file: ") + e.what();
+  }
+  return {};
+}
+
+}  // namespace tactile::analysis

@@ -1,0 +1,117 @@
+// Sweep engine (DESIGN.md sections 5 and 7): train and score one classifier per cell of a grid
+// group x method x order x covariance form x floor x features x seed, on all cores.
+//
+// Shared work is done once: each (group, features) data set is extracted from the runs once and
+// split into per-class training matrices once, then read by every cell of that group. Cells run
+// on a pool of std::threads (each fit single-threaded); every cell's result depends only on its
+// own settings and seed, so the result is identical whatever the thread count. Cancellable through
+// the progress callback.
+#pragma once
+
+#include <nlohmann/json.hpp>
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "analysis/classifier.h"
+#include "analysis/features.h"
+#include "analysis/gmm.h"
+#include "analysis/metrics.h"
+#include "sim/progress.h"
+
+namespace tactile::analysis {
+
+struct SweepGrid {
+  std::vector<SensorGroup> groups;  // empty = all eight
+  std::vector<ClassifierMethod> methods{ClassifierMethod::Gmm};
+  std::vector<int> orders{1, 2, 4, 8, 16, 32, 64};
+  std::vector<CovarianceForm> forms{CovarianceForm::NodalFull, CovarianceForm::NodalDiag,
+                                    CovarianceForm::GrandFull, CovarianceForm::GrandDiag};
+  std::vector<double> floors{0.01, 0.03, 0.1};
+  std::vector<FeatureKind> features{FeatureKind::Normal};
+  std::vector<std::uint64_t> seeds{1};
+  // Settings shared by every cell.
+  Regularization regularization = Regularization::Floor;
+  GmmInit init = GmmInit::KMeansPlusPlus;
+  int restarts = 1;
+  int maxIterations = 100;
+  double tolerance = 1e-3;
+  PriorMode priors = PriorMode::Equal;
+};
+
+// One cell's settings. The Gaussian method has no order or form: its cells carry order 1 and
+// nodal-full and appear once per (group, floor, features, seed).
+struct SweepCell {
+  SensorGroup group = SensorGroup::Front;
+  ClassifierMethod method = ClassifierMethod::Gmm;
+  int order = 1;
+  CovarianceForm form = CovarianceForm::NodalDiag;
+  double floor = 0.0;
+  FeatureKind features = FeatureKind::Normal;
+  std::uint64_t seed = 1;
+};
+
+// Cells of a grid in a fixed order (group, features, method, form, order, floor, seed).
+std::vector<SweepCell> expandGrid(const SweepGrid& grid);
+
+struct SweepCellResult {
+  SweepCell cell;
+  bool ok = false;
+  std::string reason;                    // why the cell has no model (ok == false)
+  std::vector<ContactClass> classes;     // modelled classes
+  std::vector<ContactClass> unmodelled;  // present in training data with too few samples
+  std::size_t trainRows = 0;
+  std::size_t testRows = 0;
+  double fitSeconds = 0.0;
+  double predictSeconds = 0.0;
+  int iterations = 0;      // sum over the classes' fits
+  int maxIterations = 0;   // largest single class fit
+  bool converged = false;  // every class fit converged
+  ConfusionMatrix confusion;
+  Metrics metrics;                          // on the test rows
+  std::optional<double> meanLogLikelihood;  // held-out, nats
+};
+
+// Per (group, features): how much data the cells saw.
+struct SweepDataSummary {
+  SensorGroup group = SensorGroup::Front;
+  FeatureKind features = FeatureKind::Normal;
+  std::size_t trainRows = 0;
+  std::size_t testRows = 0;
+  std::array<std::size_t, kContactClassCount> trainCounts{};
+  std::array<std::size_t, kContactClassCount> testCounts{};
+  std::size_t trainZeroRows = 0;
+  std::size_t testZeroRows = 0;
+};
+
+struct SweepResult {
+  std::vector<SweepCellResult> cells;  // in expandGrid order; only finished cells when cancelled
+  std::vector<SweepDataSummary> data;
+  bool cancelled = false;
+  int threads = 1;
+  double wallSeconds = 0.0;
+  double extractSeconds = 0.0;  // the shared data extraction
+  SweepGrid grid;
+};
+
+struct SweepOptions {
+  int threads = 0;  // 0 = all cores
+};
+
+// Runs every cell: trains on `train`, scores on `test`. Progress: (cells done, cells); returning
+// false cancels (running fits stop at their next iteration; the result then has cancelled = true
+// and only the cells that finished).
+SweepResult runSweep(const std::vector<LabelledRun>& train, const std::vector<LabelledRun>& test,
+                     const SweepGrid& grid, const SweepOptions& options = {},
+                     const ProgressFn& progress = {});
+
+// SWEEP.json: {"format":"tactile-sweep","version":1,"grid":{...},"data":[...],"threads",
+// "wall_s","cancelled","cells":[{...}]}.
+nlohmann::json sweepToJson(const SweepResult& result);
+// Reads what sweepToJson wrote (cells and data; grid settings as far as reports need them).
+// Returns an error message, empty on success.
+std::string sweepFromJson(const nlohmann::json& value, SweepResult& out);
+
+}  // namespace tactile::analysis

@@ -1,0 +1,241 @@
+#include "analysis/training.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+
+namespace tactile::analysis {
+
+using nlohmann::json;
+
+ClassSelection selectClasses(const GroupDataSet& data) {
+  ClassSelection out;
+  const auto counts = data.classCounts();
+  const std::size_t minimum = static_cast<std::size_t>(std::max(2, data.dimension()));
+  for (int c = 0; c < kContactClassCount; ++c) {
+    const std::size_t n = counts[static_cast<std::size_t>(c)];
+    if (n == 0) continue;  // absent classes are not modelled (DESIGN.md section 7)
+    (n >= minimum ? out.modelled : out.unmodelled).push_back(static_cast<ContactClass>(c));
+  }
+  return out;
+}
+
+GroupTrainResult trainGroupModel(const GroupDataSet& data, const TrainSettings& settings,
+                                 const ProgressFn& progress) {
+  GroupTrainResult result;
+  const std::string groupName(groupInfo(data.group).shortName);
+  result.classes = selectClasses(data);
+  if (data.size() == 0) {
+    result.reason = "group " + groupName + ": no labelled contact samples";
+    return result;
+  }
+  if (result.classes.modelled.empty()) {
+    result.reason = "group " + groupName + ": no class has at least " +
+                    std::to_string(std::max(2, data.dimension())) + " samples";
+    return result;
+  }
+  std::vector<Eigen::MatrixXd> perClass;
+  std::vector<std::string> names;
+  for (ContactClass c : result.classes.modelled) {
+    perClass.push_back(data.rowsOf(c));
+    names.emplace_back(contactClassName(c));
+  }
+  result.fit = trainClassifier(perClass, names, settings.classifier, progress);
+  if (!result.fit.ok) {
+    result.reason = "group " + groupName + ": " + result.fit.reason;
+    return result;
+  }
+  GroupModel& m = result.model;
+  m.group = data.group;
+  m.features = settings.features;
+  m.classes = result.classes.modelled;
+  m.classifier = std::move(result.fit.model);
+  m.covariance = settings.classifier.method == ClassifierMethod::Gaussian
+                     ? CovarianceForm::NodalFull
+                     : settings.classifier.gmm.form;
+  m.varianceFloor = settings.classifier.gmm.floor;
+  m.regularization = settings.classifier.gmm.reg;
+  result.ok = true;
+  return result;
+}
+
+GroupEvaluation evaluateClassifier(const ClassModelSet& classifier,
+                                   const std::vector<ContactClass>& classes,
+                                   const GroupDataSet& data) {
+  GroupEvaluation ev;
+  ev.zeroRows = data.zeroRows;
+  if (data.size() == 0 || classes.empty()) return ev;
+  const auto start = std::chrono::steady_clock::now();
+  Eigen::MatrixXd logLik;
+  classifier.logLikelihoods(data.x, logLik);
+  const std::vector<int> predicted = classifier.predictFromLogLikelihoods(logLik);
+  ev.predictSeconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  // Position of each contact class in the model, -1 when not modelled.
+  std::array<int, kContactClassCount> column{};
+  column.fill(-1);
+  for (std::size_t i = 0; i < classes.size(); ++i) {
+    column[static_cast<std::size_t>(classes[i])] = static_cast<int>(i);
+  }
+  double llSum = 0.0;
+  std::size_t llCount = 0;
+  for (std::size_t i = 0; i < data.size(); ++i) {
+    const ContactClass truth = data.y[i];
+    ev.confusion.add(truth, classes[static_cast<std::size_t>(predicted[i])]);
+    const int col = column[static_cast<std::size_t>(truth)];
+    if (col >= 0) {
+      const double ll = logLik(static_cast<Eigen::Index>(i), col);
+      // -inf would poison the mean; the engine keeps densities finite, but guard anyway.
+      if (std::isfinite(ll)) {
+        llSum += ll;
+        ++llCount;
+      }
+    }
+  }
+  ev.metrics = computeMetrics(ev.confusion);
+  if (llCount > 0) ev.meanLogLikelihood = llSum / static_cast<double>(llCount);
+  if (classifier.hasRestModels()) {
+    Eigen::VectorXd ratio;
+    for (std::size_t c = 0; c < classes.size(); ++c) {
+      classifier.oneVsRestLogRatio(data.x, static_cast<int>(c), ratio);
+      std::vector<std::uint8_t> says(data.size());
+      for (std::size_t i = 0; i < data.size(); ++i) {
+        says[i] = ratio[static_cast<Eigen::Index>(i)] > 0.0 ? 1 : 0;
+      }
+      ev.oneVsRest.push_back(binaryConfusionOf(classes[c], data.y, says));
+    }
+  }
+  return ev;
+}
+
+GroupEvaluation evaluateGroupModel(const GroupModel& model, const GroupDataSet& data,
+                                   const std::vector<LabelledRun>* runs) {
+  GroupEvaluation ev = evaluateClassifier(model.classifier, model.classes, data);
+  ev.patterns.group = data.group;
+  if (runs != nullptr && data.size() > 0) {
+    const std::vector<int> predicted = model.classifier.predict(data.x);
+    for (std::size_t i = 0; i < data.size(); ++i) {
+      const RunData& run = *(*runs)[data.runIndex[i]].run;
+      ev.patterns.add(contactPattern(run, data.step[i], data.group), data.y[i],
+                      model.classes[static_cast<std::size_t>(predicted[i])]);
+    }
+    ev.patterns.sortRows();
+  }
+  return ev;
+}
+
+json confusionToJson(const ConfusionMatrix& confusion) {
+  json out;
+  const std::vector<ContactClass> classes = confusion.activeClasses();
+  json names = json::array();
+  for (ContactClass c : classes)
+    names.push_back(contactClassName(c));
+  json counts = json::array();
+  for (ContactClass t : classes) {
+    json row = json::array();
+    for (ContactClass p : classes)
+      row.push_back(confusion.count(t, p));
+    counts.push_back(std::move(row));
+  }
+  out["classes"] = std::move(names);
+  out["counts"] = std::move(counts);
+  return out;
+}
+
+bool confusionFromJson(const json& value, ConfusionMatrix& out) {
+  out = ConfusionMatrix();
+  if (!value.is_object() || !value.contains("classes") || !value.contains("counts")) return false;
+  const json& names = value["classes"];
+  const json& counts = value["counts"];
+  if (!names.is_array() || !counts.is_array() || counts.size() != names.size()) return false;
+  std::vector<ContactClass> classes;
+  for (const json& n : names) {
+    if (!n.is_string()) return false;
+    const auto c = parseContactClass(n.get<std::string>());
+    if (!c) return false;
+    classes.push_back(*c);
+  }
+  for (std::size_t t = 0; t < classes.size(); ++t) {
+    if (!counts[t].is_array() || counts[t].size() != classes.size()) return false;
+    for (std::size_t p = 0; p < classes.size(); ++p) {
+      if (!counts[t][p].is_number_unsigned()) return false;
+      out.add(classes[t], classes[p], counts[t][p].get<std::size_t>());
+    }
+  }
+  return true;
+}
+
+json evaluationToJson(const GroupEvaluation& ev) {
+  json out;
+  out["samples"] = ev.metrics.total;
+  out["zero_rows"] = ev.zeroRows;
+  out["accuracy"] = ev.metrics.accuracy;
+  out["balanced_accuracy"] = ev.metrics.balancedAccuracy;
+  out["macro_f1"] = ev.metrics.macroF1;
+  out["mean_loglik"] = ev.meanLogLikelihood ? json(*ev.meanLogLikelihood) : json(nullptr);
+  out["predict_s"] = ev.predictSeconds;
+  json perClass = json::object();
+  for (const ClassMetrics& m : ev.metrics.perClass) {
+    json c;
+    c["support"] = m.support;
+    c["predicted"] = m.predicted;
+    c["recall"] = m.recall ? json(*m.recall) : json(nullptr);
+    c["precision"] = m.precision ? json(*m.precision) : json(nullptr);
+    c["f1"] = m.f1;
+    perClass[std::string(contactClassName(m.label))] = std::move(c);
+  }
+  out["per_class"] = std::move(perClass);
+  out["confusion"] = confusionToJson(ev.confusion);
+  if (!ev.patterns.rows.empty()) {
+    json rows = json::array();
+    for (const ContactPatternRow& r : ev.patterns.rows) {
+      json row;
+      row["pattern"] = r.pattern;
+      row["truth"] = contactClassName(r.truth);
+      json predicted = json::object();
+      for (int c = 0; c < kContactClassCount; ++c) {
+        if (r.predicted[static_cast<std::size_t>(c)] > 0) {
+          predicted[std::string(kContactClassNames[static_cast<std::size_t>(c)])] =
+              r.predicted[static_cast<std::size_t>(c)];
+        }
+      }
+      row["predicted"] = std::move(predicted);
+      rows.push_back(std::move(row));
+    }
+    out["contact_patterns"] = std::move(rows);
+  }
+  if (!ev.oneVsRest.empty()) {
+    json ovr = json::array();
+    for (const BinaryConfusion& b : ev.oneVsRest) {
+      ovr.push_back({{"class", contactClassName(b.positive)},
+                     {"tp", b.truePositive},
+                     {"fp", b.falsePositive},
+                     {"fn", b.falseNegative},
+                     {"tn", b.trueNegative}});
+    }
+    out["one_vs_rest"] = std::move(ovr);
+  }
+  return out;
+}
+
+void splitLabelledRuns(const std::vector<LabelledRun>& runs, double holdoutFraction,
+                       std::vector<LabelledRun>& train, std::vector<LabelledRun>& test) {
+  train.clear();
+  test.clear();
+  const double h = std::clamp(holdoutFraction, 0.0, 1.0);
+  for (const LabelledRun& lr : runs) {
+    const std::size_t steps = lr.run->stepCount();
+    const auto cut = static_cast<std::size_t>(std::llround((1.0 - h) * static_cast<double>(steps)));
+    LabelledRun a{lr.run, lr.labels};
+    LabelledRun b{lr.run, lr.labels};
+    for (std::size_t t = 0; t < steps; ++t) {
+      auto& masked = t < cut ? b.labels : a.labels;
+      for (int g = 0; g < kGroupCount; ++g)
+        masked[t * kGroupCount + static_cast<std::size_t>(g)].reset();
+    }
+    train.push_back(std::move(a));
+    test.push_back(std::move(b));
+  }
+}
+
+}  // namespace tactile::analysis

@@ -1,0 +1,82 @@
+// Training and evaluating one group's classifier on labelled run data: the glue between features,
+// the classifier engine (classifier.h), metrics and model files, shared by `tactile train`, the
+// sweep engine and the GUI.
+#pragma once
+
+#include <nlohmann/json.hpp>
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "analysis/classifier.h"
+#include "analysis/features.h"
+#include "analysis/metrics.h"
+#include "analysis/model_file.h"
+#include "sim/progress.h"
+
+namespace tactile::analysis {
+
+// Settings of one group's classifier.
+struct TrainSettings {
+  FeatureKind features = FeatureKind::Normal;
+  ClassifierOptions classifier;  // method, GMM options (order, form, floor, ...), priors
+};
+
+// Classes of a data set that get a model: present with at least max(2, D) samples (the engine
+// rejects fewer samples than dimensions). The others are listed in `unmodelled`; their test rows
+// count as errors.
+struct ClassSelection {
+  std::vector<ContactClass> modelled;
+  std::vector<ContactClass> unmodelled;  // present but too few samples
+};
+ClassSelection selectClasses(const GroupDataSet& data);
+
+struct GroupTrainResult {
+  bool ok = false;
+  std::string reason;
+  GroupModel model;
+  ClassifierFit fit;  // iterations, converged, fit time (model moved into `model`)
+  ClassSelection classes;
+};
+
+// Fits one model per modelled class of `data` (rows of that class).
+GroupTrainResult trainGroupModel(const GroupDataSet& data, const TrainSettings& settings,
+                                 const ProgressFn& progress = {});
+
+// A model scored on labelled contact rows (zero rows are NoContact by rule and not scored; their
+// count is kept).
+struct GroupEvaluation {
+  ConfusionMatrix confusion;
+  Metrics metrics;
+  // Mean over rows of a modelled class of log p(x | model of the row's class), nats; nullopt
+  // when no such row.
+  std::optional<double> meanLogLikelihood;
+  double predictSeconds = 0.0;
+  std::size_t zeroRows = 0;
+  // Thesis table 4.39 (filled when `runs` is given to evaluateGroupModel).
+  ContactPatternTable patterns;
+  // Thesis table 4.19 (Gaussian models with rest models only): one binary confusion per class.
+  std::vector<BinaryConfusion> oneVsRest;
+};
+
+// `runs` are the runs the data set was built from (for the contact patterns); may be null.
+GroupEvaluation evaluateGroupModel(const GroupModel& model, const GroupDataSet& data,
+                                   const std::vector<LabelledRun>* runs = nullptr);
+
+// Same, from the classifier alone (sweep cells): per-row log-likelihoods computed once.
+GroupEvaluation evaluateClassifier(const ClassModelSet& classifier,
+                                   const std::vector<ContactClass>& classes,
+                                   const GroupDataSet& data);
+
+nlohmann::json confusionToJson(const ConfusionMatrix& confusion);
+// Reads {"classes":[...],"counts":[[...]]}; false on a malformed value.
+bool confusionFromJson(const nlohmann::json& value, ConfusionMatrix& out);
+nlohmann::json evaluationToJson(const GroupEvaluation& evaluation);
+
+// Splits each run's labelled steps in time: the first (1 - holdout) of its steps for training,
+// the rest for testing (a random row split would leak neighbouring, nearly identical steps).
+void splitLabelledRuns(const std::vector<LabelledRun>& runs, double holdoutFraction,
+                       std::vector<LabelledRun>& train, std::vector<LabelledRun>& test);
+
+}  // namespace tactile::analysis

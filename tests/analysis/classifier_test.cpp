@@ -1,0 +1,167 @@
+// GCC 12 reports false -Wmaybe-uninitialized inside Eigen's AVX-512 kernels at -O3.
+#pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
+
+#include "analysis/classifier.h"
+
+#include <gtest/gtest.h>
+
+#include <Eigen/Dense>
+#include <cmath>
+
+#include "tests/analysis/gmm_test_util.h"
+
+namespace tactile {
+namespace {
+
+using testing::gaussianRows;
+using testing::stackRows;
+
+TEST(ClassifierNames, RoundTrip) {
+  EXPECT_EQ(parseClassifierMethod(classifierMethodName(ClassifierMethod::Gaussian)),
+            ClassifierMethod::Gaussian);
+  EXPECT_EQ(parseClassifierMethod("gmm"), ClassifierMethod::Gmm);
+  EXPECT_EQ(parsePriorMode("empirical"), PriorMode::Empirical);
+  EXPECT_FALSE(parseClassifierMethod("svm").has_value());
+}
+
+TEST(FitGaussian, UsesTheUnbiasedCovariance) {
+  Eigen::MatrixXd x(4, 2);
+  x << 1, 2, 3, 1, 0, 0, 4, 5;
+  const auto g = fitGaussian(x, 0.0);
+  ASSERT_TRUE(g.has_value());
+  const Eigen::RowVectorXd mean = x.colwise().mean();
+  const Eigen::MatrixXd c = x.rowwise() - mean;
+  const Eigen::MatrixXd unbiased = c.transpose() * c / 3.0;
+  EXPECT_LT((g->covariance(0) - unbiased).cwiseAbs().maxCoeff(), 1e-14);
+  EXPECT_LT((g->means().row(0) - mean).cwiseAbs().maxCoeff(), 1e-15);
+}
+
+TEST(FitGaussian, SingularCovarianceWithoutFloorIsAnError) {
+  Eigen::MatrixXd x(4, 2);
+  x << 1, 2, 2, 4, 3, 6, 4, 8;  // second feature = 2 x first
+  std::string error;
+  EXPECT_FALSE(fitGaussian(x, 0.0, &error).has_value());
+  EXPECT_NE(error.find("singular"), std::string::npos);
+  EXPECT_TRUE(fitGaussian(x, 1e-3, &error).has_value());
+}
+
+TEST(GaussianClassifier, OneVsRestRatioIsTheLogLikelihoodDifference) {
+  Eigen::Vector2d m0(0, 0), m1(3, 0), m2(0, 3), sd(1, 1);
+  const std::vector<Eigen::MatrixXd> data{
+      gaussianRows(200, m0, sd, 1), gaussianRows(200, m1, sd, 2), gaussianRows(200, m2, sd, 3)};
+  ClassifierOptions o;
+  o.method = ClassifierMethod::Gaussian;
+  const ClassifierFit fit = trainClassifier(data, {"Wall", "Corner", "LW"}, o);
+  ASSERT_TRUE(fit.ok) << fit.reason;
+  ASSERT_TRUE(fit.model.hasRestModels());
+  // The rest model of class 0 is the unbiased Gaussian of classes 1 and 2 together.
+  const auto rest = fitGaussian(stackRows({data[1], data[2]}), 0.0);
+  ASSERT_TRUE(rest.has_value());
+  EXPECT_LT((fit.model.restModel(0).covariance(0) - rest->covariance(0)).cwiseAbs().maxCoeff(),
+            1e-12);
+  Eigen::VectorXd l;
+  fit.model.oneVsRestLogRatio(data[0], 0, l);
+  int positive = 0;
+  for (int r = 0; r < l.size(); ++r) {
+    const double expected = fit.model.model(0).logDensity(data[0].row(r).transpose()) -
+                            rest->logDensity(data[0].row(r).transpose());
+    EXPECT_NEAR(l(r), expected, 1e-9);
+    positive += l(r) > 0;
+  }
+  EXPECT_GT(positive, 160);  // most of class 0 is called class 0
+}
+
+TEST(GmmClassifier, SeparatesSeparableClasses) {
+  Eigen::Vector2d m0(0, 0), m1(10, 0), sd(1, 1);
+  const std::vector<Eigen::MatrixXd> data{gaussianRows(300, m0, sd, 1),
+                                          gaussianRows(300, m1, sd, 2)};
+  ClassifierOptions o;
+  o.gmm.components = 2;
+  const ClassifierFit fit = trainClassifier(data, {"a", "b"}, o);
+  ASSERT_TRUE(fit.ok) << fit.reason;
+  EXPECT_EQ(fit.iterations.size(), 2u);
+  EXPECT_EQ(fit.converged.size(), 2u);
+  for (int c = 0; c < 2; ++c) {
+    const std::vector<int> p = fit.model.predict(data[static_cast<std::size_t>(c)]);
+    for (int v : p)
+      EXPECT_EQ(v, c);
+  }
+}
+
+TEST(GmmClassifier, EmpiricalPriorsShiftTheDecision) {
+  Eigen::VectorXd m0(1), m1(1), sd(1);
+  m0 << 0;
+  m1 << 1;
+  sd << 1;
+  const std::vector<Eigen::MatrixXd> data{gaussianRows(900, m0, sd, 1),
+                                          gaussianRows(100, m1, sd, 2)};
+  ClassifierOptions o;
+  o.gmm.components = 1;
+  const ClassifierFit equal = trainClassifier(data, {"a", "b"}, o);
+  o.priors = PriorMode::Empirical;
+  const ClassifierFit empirical = trainClassifier(data, {"a", "b"}, o);
+  ASSERT_TRUE(equal.ok && empirical.ok);
+  EXPECT_NEAR(std::exp(empirical.model.logPriors()(0)), 0.9, 1e-12);
+  Eigen::MatrixXd probe(1, 1);
+  probe << 0.8;  // closer to class b's mean, but class a is 9x more common
+  EXPECT_EQ(equal.model.predict(probe)[0], 1);
+  EXPECT_EQ(empirical.model.predict(probe)[0], 0);
+}
+
+TEST(ClassModelSet, TiesGoToTheLowestClass) {
+  auto g = GaussianMixture::create(Eigen::VectorXd::Ones(1), Eigen::MatrixXd::Zero(1, 1),
+                                   {Eigen::MatrixXd::Ones(1, 1)}, CovarianceForm::NodalFull);
+  ASSERT_TRUE(g.has_value());
+  auto set = ClassModelSet::create(ClassifierMethod::Gmm, {"x", "y"}, {*g, *g});
+  ASSERT_TRUE(set.has_value());
+  EXPECT_EQ(set->predict(Eigen::MatrixXd::Zero(3, 1)), (std::vector<int>{0, 0, 0}));
+}
+
+TEST(ClassModelSet, CreateRejectsMismatches) {
+  auto g1 = GaussianMixture::create(Eigen::VectorXd::Ones(1), Eigen::MatrixXd::Zero(1, 1),
+                                    {Eigen::MatrixXd::Ones(1, 1)}, CovarianceForm::NodalFull);
+  auto g2 = GaussianMixture::create(Eigen::VectorXd::Ones(1), Eigen::MatrixXd::Zero(1, 2),
+                                    {Eigen::MatrixXd::Identity(2, 2)}, CovarianceForm::NodalFull);
+  ASSERT_TRUE(g1 && g2);
+  std::string error;
+  EXPECT_FALSE(
+      ClassModelSet::create(ClassifierMethod::Gmm, {"x", "y"}, {*g1, *g2}, {}, {}, &error));
+  EXPECT_NE(error.find("dimension"), std::string::npos);
+  EXPECT_FALSE(ClassModelSet::create(ClassifierMethod::Gmm, {"x"}, {*g1, *g1}, {}, {}, &error));
+  EXPECT_FALSE(ClassModelSet::create(ClassifierMethod::Gmm, {"x", "y"}, {*g1, *g1},
+                                     Eigen::Vector2d(std::log(0.5), std::log(0.6)), {}, &error));
+  EXPECT_NE(error.find("priors"), std::string::npos);
+}
+
+TEST(GmmClassifier, ResultsDoNotDependOnTheThreadCount) {
+  Eigen::Vector2d m0(0, 0), m1(2, 1), sd(1, 1);
+  const std::vector<Eigen::MatrixXd> data{gaussianRows(5000, m0, sd, 1),
+                                          gaussianRows(3000, m1, sd, 2)};
+  ClassifierOptions o;
+  o.gmm.components = 4;
+  o.gmm.form = CovarianceForm::NodalFull;
+  o.threads = 1;
+  const ClassifierFit one = trainClassifier(data, {"a", "b"}, o);
+  o.threads = 2;
+  const ClassifierFit two = trainClassifier(data, {"a", "b"}, o);
+  ASSERT_TRUE(one.ok && two.ok);
+  for (int c = 0; c < 2; ++c) {
+    EXPECT_TRUE(one.model.model(c).means() == two.model.model(c).means());
+    EXPECT_TRUE(one.model.model(c).covariances() == two.model.model(c).covariances());
+  }
+}
+
+TEST(GmmClassifier, ProgressCanCancel) {
+  Eigen::Vector2d m0(0, 0), sd(1, 1);
+  const std::vector<Eigen::MatrixXd> data{
+      gaussianRows(100, m0, sd, 1), gaussianRows(100, m0, sd, 2), gaussianRows(100, m0, sd, 3)};
+  ClassifierOptions o;
+  o.threads = 1;
+  const ClassifierFit fit = trainClassifier(data, {"a", "b", "c"}, o,
+                                            [](std::size_t done, std::size_t) { return done < 1; });
+  EXPECT_FALSE(fit.ok);
+  EXPECT_EQ(fit.reason, "cancelled");
+}
+
+}  // namespace
+}  // namespace tactile

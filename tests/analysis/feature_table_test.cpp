@@ -1,0 +1,95 @@
+// GCC 12 reports false -Wmaybe-uninitialized inside Eigen's AVX-512 kernels at -O3.
+#pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
+
+#include "analysis/feature_table.h"
+
+#include <gtest/gtest.h>
+
+#include "analysis/gmm_synthetic.h"
+
+namespace tactile {
+namespace {
+
+TEST(FeatureTable, ParsesRowsLabelsAndClassOrder) {
+  const auto r =
+      parseFeatureTable("f0,f1,label\r\n1.5,-2,Wall\r\n\r\n3,4e-3,Corner\n0,0,Wall\n", "a.csv");
+  ASSERT_TRUE(r.ok) << r.error;
+  EXPECT_EQ(r.table.dimension(), 2);
+  EXPECT_EQ(r.table.rows(), 3);
+  EXPECT_EQ(r.table.classNames, (std::vector<std::string>{"Wall", "Corner"}));
+  EXPECT_EQ(r.table.labels, (std::vector<int>{0, 1, 0}));
+  EXPECT_EQ(r.table.features(1, 1), 4e-3);
+  EXPECT_EQ(r.table.lines, (std::vector<int>{2, 4, 5}));
+  const auto split = splitByClass(r.table);
+  ASSERT_EQ(split.size(), 2u);
+  EXPECT_EQ(split[0].rows(), 2);
+  EXPECT_EQ(split[0](1, 0), 0.0);
+}
+
+TEST(FeatureTable, BadNumberNamesFileLineAndColumn) {
+  const auto r = parseFeatureTable("f0,f1,label\n1,2,a\n1,x2,b\n", "data/b.csv");
+  ASSERT_FALSE(r.ok);
+  EXPECT_EQ(r.error, "data/b.csv:3: column 2 (f1): 'x2' is not a finite number");
+}
+
+TEST(FeatureTable, NonFiniteNumbersAreRejected) {
+  EXPECT_FALSE(parseFeatureTable("f0,label\ninf,a\n", "t.csv").ok);
+  EXPECT_FALSE(parseFeatureTable("f0,label\nnan,a\n", "t.csv").ok);
+  EXPECT_FALSE(parseFeatureTable("f0,label\n1e999,a\n", "t.csv").ok);
+}
+
+TEST(FeatureTable, WrongFieldCountsAreErrors) {
+  const auto few = parseFeatureTable("f0,f1,label\n1,a\n", "t.csv");
+  ASSERT_FALSE(few.ok);
+  EXPECT_NE(few.error.find("t.csv:2: expected 3 fields"), std::string::npos) << few.error;
+  const auto many = parseFeatureTable("f0,label\n1,a,b\n", "t.csv");
+  ASSERT_FALSE(many.ok);
+  EXPECT_NE(many.error.find("t.csv:2:"), std::string::npos);
+}
+
+TEST(FeatureTable, EmptyLabelIsAnError) {
+  const auto r = parseFeatureTable("f0,label\n1,\n", "t.csv");
+  ASSERT_FALSE(r.ok);
+  EXPECT_EQ(r.error, "t.csv:2: column 2 (label): empty label");
+}
+
+TEST(FeatureTable, HeaderMustNameTheColumns) {
+  EXPECT_FALSE(parseFeatureTable("a,b,label\n1,2,x\n", "t.csv").ok);
+  EXPECT_FALSE(parseFeatureTable("f0,f1\n1,2\n", "t.csv").ok);
+  const auto r = parseFeatureTable("f0,f2,label\n1,2,x\n", "t.csv");
+  ASSERT_FALSE(r.ok);
+  EXPECT_NE(r.error.find("t.csv:1: column 2"), std::string::npos) << r.error;
+}
+
+TEST(FeatureTable, EmptyFileAndHeaderOnlyAreErrors) {
+  EXPECT_FALSE(parseFeatureTable("", "t.csv").ok);
+  const auto r = parseFeatureTable("f0,label\n", "t.csv");
+  ASSERT_FALSE(r.ok);
+  EXPECT_NE(r.error.find("no rows"), std::string::npos);
+}
+
+TEST(FeatureTable, FormatThenParseIsExact) {
+  SyntheticTableSpec spec;
+  spec.rows = 200;
+  spec.dimension = 4;
+  const FeatureTable t = makeSyntheticTable(spec);
+  const auto r = parseFeatureTable(formatFeatureTable(t), "mem");
+  ASSERT_TRUE(r.ok) << r.error;
+  EXPECT_TRUE(r.table.features == t.features);
+  EXPECT_EQ(r.table.labels, t.labels);
+  EXPECT_EQ(r.table.classNames, t.classNames);
+}
+
+TEST(FeatureTable, RemapNamesTheUnknownLabelsLine) {
+  auto r = parseFeatureTable("f0,label\n1,b\n2,zz\n", "test.csv");
+  ASSERT_TRUE(r.ok);
+  std::string error;
+  EXPECT_FALSE(remapLabels(r.table, {"a", "b"}, "test.csv", error));
+  EXPECT_EQ(error, "test.csv:3: label 'zz' does not occur in the training table");
+  auto ok = parseFeatureTable("f0,label\n1,b\n2,a\n", "test.csv");
+  ASSERT_TRUE(remapLabels(ok.table, {"a", "b"}, "test.csv", error));
+  EXPECT_EQ(ok.table.labels, (std::vector<int>{1, 0}));
+}
+
+}  // namespace
+}  // namespace tactile

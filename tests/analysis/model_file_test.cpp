@@ -1,0 +1,282 @@
+// Model files (DESIGN.md section 4): round trip bit for bit (issue 3, stability test 9) and
+// validation of bad files, one test per defect.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstring>
+#include <filesystem>
+#include <limits>
+#include <random>
+
+#include <unistd.h>
+
+#include "analysis/model_file.h"
+#include "analysis/training.h"
+#include "tests/analysis/learn_test_data.h"
+
+namespace tactile::analysis {
+namespace {
+
+using nlohmann::json;
+
+// A trained model of the right side group for the given method and covariance form.
+GroupModel trainedModel(ClassifierMethod method, CovarianceForm form, int order = 3) {
+  static const RunData run = testdata::makeLabelledRun(1500, 11);
+  std::vector<LabelledRun> runs{{&run, labelsFromTruth(run)}};
+  const GroupDataSet data = buildGroupDataSet(runs, SensorGroup::Right, FeatureKind::Normal);
+  TrainSettings settings;
+  settings.classifier.method = method;
+  settings.classifier.gmm.components = order;
+  settings.classifier.gmm.form = form;
+  settings.classifier.gmm.floor = 0.01;
+  settings.classifier.gmm.seed = 5;
+  GroupTrainResult r = trainGroupModel(data, settings);
+  EXPECT_TRUE(r.ok) << r.reason;
+  r.model.trainedOn = {{"runs", {"synthetic"}}};
+  r.model.metrics = {{"accuracy", 0.5}};
+  return std::move(r.model);
+}
+
+Eigen::MatrixXd probeRows() {
+  std::mt19937_64 rng(3);
+  std::uniform_real_distribution<double> u(0.0, 5.0);
+  Eigen::MatrixXd x(200, 10);
+  for (Eigen::Index i = 0; i < x.rows(); ++i) {
+    for (Eigen::Index j = 0; j < x.cols(); ++j)
+      x(i, j) = u(rng);
+  }
+  return x;
+}
+
+bool bitIdentical(const Eigen::MatrixXd& a, const Eigen::MatrixXd& b) {
+  return a.rows() == b.rows() && a.cols() == b.cols() &&
+         std::memcmp(a.data(), b.data(), sizeof(double) * static_cast<std::size_t>(a.size())) == 0;
+}
+
+void expectSamePredictions(const GroupModel& original, const GroupModel& loaded) {
+  const Eigen::MatrixXd x = probeRows();
+  Eigen::MatrixXd a, b;
+  original.classifier.logLikelihoods(x, a);
+  loaded.classifier.logLikelihoods(x, b);
+  EXPECT_TRUE(bitIdentical(a, b));
+  EXPECT_EQ(original.classifier.predict(x), loaded.classifier.predict(x));
+  EXPECT_EQ(loaded.classes, original.classes);
+  EXPECT_EQ(loaded.group, original.group);
+  EXPECT_EQ(loaded.features, original.features);
+  EXPECT_EQ(loaded.covariance, original.covariance);
+  EXPECT_EQ(loaded.varianceFloor, original.varianceFloor);
+  EXPECT_EQ(loaded.trainedOn, original.trainedOn);
+  EXPECT_EQ(loaded.metrics, original.metrics);
+}
+
+// Issue 3, numerical stability test 9: model file round trip gives identical predictions, bit for
+// bit, for every covariance form.
+TEST(ModelFile, RoundTripIsBitIdenticalForEveryForm) {
+  for (CovarianceForm form : kAllCovarianceForms) {
+    SCOPED_TRACE(std::string(covarianceFormName(form)));
+    const GroupModel model = trainedModel(ClassifierMethod::Gmm, form);
+    const std::string text = modelToJson(model).dump(1);
+    const ModelReadResult read = parseModelJson(text, "m.json");
+    ASSERT_TRUE(read.ok()) << read.error;
+    ASSERT_EQ(read.bundle.models.size(), 1u);
+    expectSamePredictions(model, read.bundle.models[0]);
+  }
+}
+
+TEST(ModelFile, GaussianWithRestModelsRoundTrips) {
+  const GroupModel model = trainedModel(ClassifierMethod::Gaussian, CovarianceForm::NodalFull);
+  ASSERT_TRUE(model.classifier.hasRestModels());
+  const ModelReadResult read = parseModelJson(modelToJson(model).dump(), "m.json");
+  ASSERT_TRUE(read.ok()) << read.error;
+  const GroupModel& loaded = read.bundle.models[0];
+  ASSERT_TRUE(loaded.classifier.hasRestModels());
+  expectSamePredictions(model, loaded);
+  Eigen::VectorXd a, b;
+  model.classifier.oneVsRestLogRatio(probeRows(), 0, a);
+  loaded.classifier.oneVsRestLogRatio(probeRows(), 0, b);
+  EXPECT_TRUE(bitIdentical(a, b));
+}
+
+TEST(ModelFile, BundleFileRoundTripThroughDisk) {
+  ModelBundle bundle;
+  bundle.models.push_back(trainedModel(ClassifierMethod::Gmm, CovarianceForm::NodalDiag));
+  GroupModel second = trainedModel(ClassifierMethod::Gmm, CovarianceForm::GrandFull, 2);
+  second.group = SensorGroup::Left;  // same dimension (10), so it stays valid
+  bundle.models.push_back(std::move(second));
+  const auto path = std::filesystem::temp_directory_path() /
+                    ("tactile_model_test_" + std::to_string(::getpid()) + ".json");
+  ASSERT_EQ(writeModelBundleFile(path, bundle), "");
+  const ModelReadResult read = readModelFile(path);
+  std::filesystem::remove(path);
+  ASSERT_TRUE(read.ok()) << read.error;
+  ASSERT_EQ(read.bundle.models.size(), 2u);
+  ASSERT_NE(read.bundle.find(SensorGroup::Left), nullptr);
+  EXPECT_EQ(read.bundle.find(SensorGroup::Front), nullptr);
+  expectSamePredictions(bundle.models[0], *read.bundle.find(SensorGroup::Right));
+  expectSamePredictions(bundle.models[1], *read.bundle.find(SensorGroup::Left));
+}
+
+TEST(ModelFile, JsonDoublesReadBackBitForBit) {
+  std::mt19937_64 rng(42);
+  std::vector<double> values{
+      0.1, 1.0 / 3.0, 1e-300, 4.9e-324, 1.7976931348623157e308, -2.5e-17, 0.0, 123456789.123456789};
+  std::uniform_int_distribution<std::uint64_t> bits;
+  while (values.size() < 5000) {
+    const std::uint64_t b = bits(rng);
+    double d;
+    std::memcpy(&d, &b, sizeof d);
+    if (std::isfinite(d)) values.push_back(d);
+  }
+  const json back = json::parse(json(values).dump());
+  for (std::size_t i = 0; i < values.size(); ++i) {
+    const double d = back[i].get<double>();
+    ASSERT_EQ(std::memcmp(&d, &values[i], sizeof d), 0) << values[i];
+  }
+}
+
+// --- validation: each defect its own test ----------------------------------------------------
+
+json validModelJson() {
+  static const json j =
+      modelToJson(trainedModel(ClassifierMethod::Gmm, CovarianceForm::NodalFull, 2));
+  return j;
+}
+
+std::string errorOf(const json& j) {
+  const ModelReadResult r = parseModelJson(j.dump(), "bad.json");
+  EXPECT_FALSE(r.ok());
+  EXPECT_TRUE(r.bundle.models.empty());
+  return r.error;
+}
+
+std::string firstClass(const json& j) {
+  return j["classes"][0].get<std::string>();
+}
+
+TEST(ModelFileValidation, SyntaxErrorNamesLine) {
+  const ModelReadResult r =
+      parseModelJson("{\n\"format\": \"tactile-model\",\n  oops\n}", "bad.json");
+  ASSERT_FALSE(r.ok());
+  EXPECT_EQ(r.error.rfind("bad.json:3:", 0), 0u) << r.error;
+}
+
+TEST(ModelFileValidation, WrongFormat) {
+  json j = validModelJson();
+  j["format"] = "something-else";
+  EXPECT_NE(errorOf(j).find("format"), std::string::npos);
+}
+
+TEST(ModelFileValidation, WrongVersion) {
+  json j = validModelJson();
+  j["version"] = 2;
+  EXPECT_NE(errorOf(j).find("version"), std::string::npos);
+}
+
+TEST(ModelFileValidation, MissingField) {
+  json j = validModelJson();
+  j.erase("method");
+  EXPECT_NE(errorOf(j).find("missing field 'method'"), std::string::npos);
+}
+
+TEST(ModelFileValidation, UnknownClass) {
+  json j = validModelJson();
+  j["classes"][0] = "Wal";
+  EXPECT_NE(errorOf(j).find("unknown contact class 'Wal'"), std::string::npos);
+}
+
+TEST(ModelFileValidation, WeightsNotSummingToOne) {
+  json j = validModelJson();
+  j["components"][firstClass(j)]["weights"][0] = 5.0;
+  EXPECT_NE(errorOf(j).find("weights"), std::string::npos);
+}
+
+TEST(ModelFileValidation, NegativeWeight) {
+  json j = validModelJson();
+  auto& w = j["components"][firstClass(j)]["weights"];
+  const double a = w[0].get<double>(), b = w[1].get<double>();
+  w[0] = -0.5;
+  w[1] = a + b + 0.5;
+  EXPECT_NE(errorOf(j).find("negative"), std::string::npos);
+}
+
+TEST(ModelFileValidation, MeansWrongShape) {
+  json j = validModelJson();
+  j["components"][firstClass(j)]["means"][0].erase(0);
+  EXPECT_NE(errorOf(j).find("means[0]"), std::string::npos);
+}
+
+TEST(ModelFileValidation, CovarianceNotSymmetric) {
+  json j = validModelJson();
+  auto& cov = j["components"][firstClass(j)]["covariances"][0];
+  cov[0][1] = cov[0][1].get<double>() + 0.5;
+  const std::string e = errorOf(j);
+  EXPECT_NE(e.find("not symmetric"), std::string::npos) << e;
+  EXPECT_NE(e.find("covariances[0]"), std::string::npos) << e;
+}
+
+TEST(ModelFileValidation, CovarianceNotPositiveDefinite) {
+  json j = validModelJson();
+  auto& cov = j["components"][firstClass(j)]["covariances"][1];
+  // Off-diagonal (0,1) larger than both variances: symmetric, positive diagonal, indefinite.
+  const double big = 10.0 * (cov[0][0].get<double>() + cov[1][1].get<double>());
+  cov[0][1] = big;
+  cov[1][0] = big;
+  EXPECT_NE(errorOf(j).find("positive definite"), std::string::npos);
+}
+
+TEST(ModelFileValidation, NonPositiveVariance) {
+  json j = validModelJson();
+  j["components"][firstClass(j)]["covariances"][0][2][2] = 0.0;
+  EXPECT_NE(errorOf(j).find("not positive"), std::string::npos);
+}
+
+TEST(ModelFileValidation, WrongCovarianceCountForForm) {
+  json j = validModelJson();
+  j["covariance"] = "grand-full";  // grand forms store one covariance, the file has two
+  EXPECT_NE(errorOf(j).find("expected 1 covariance"), std::string::npos);
+}
+
+TEST(ModelFileValidation, DiagonalFormWithOffDiagonalEntries) {
+  json j = modelToJson(trainedModel(ClassifierMethod::Gmm, CovarianceForm::NodalDiag, 2));
+  const std::string c = firstClass(j);
+  json diag = j["components"][c]["covariances"][0];
+  json full = json::array();
+  for (std::size_t r = 0; r < diag.size(); ++r) {
+    json row = json::array();
+    for (std::size_t q = 0; q < diag.size(); ++q)
+      row.push_back(r == q ? diag[r] : json(0.0));
+    full.push_back(row);
+  }
+  full[0][1] = 0.01;
+  full[1][0] = 0.01;
+  j["components"][c]["covariances"][0] = full;
+  EXPECT_NE(errorOf(j).find("off-diagonal"), std::string::npos);
+}
+
+TEST(ModelFileValidation, MissingClassComponents) {
+  json j = validModelJson();
+  j["components"].erase(firstClass(j));
+  EXPECT_FALSE(errorOf(j).empty());
+}
+
+TEST(ModelFileValidation, DimensionMustMatchGroupFeatures) {
+  json j = validModelJson();
+  j["group"] = "F";  // 8 sensors, the model has 10 dimensions
+  EXPECT_NE(errorOf(j).find("means"), std::string::npos);
+}
+
+TEST(ModelFileValidation, DuplicateGroupInBundle) {
+  json bundle = {{"format", "tactile-model-bundle"},
+                 {"version", 1},
+                 {"models", {validModelJson(), validModelJson()}}};
+  EXPECT_NE(errorOf(bundle).find("second model"), std::string::npos);
+}
+
+TEST(ModelFileValidation, MissingFileIsError) {
+  const ModelReadResult r = readModelFile("/nonexistent/dir/model.json");
+  EXPECT_FALSE(r.ok());
+  EXPECT_NE(r.error.find("/nonexistent/dir/model.json"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace tactile::analysis
