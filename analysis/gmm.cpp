@@ -613,6 +613,14 @@ Attempt runEm(const Eigen::MatrixXd& x, const GmmOptions& o, std::uint64_t seed,
                   " (a sample lies where every component has zero density)";
       return at;
     }
+    // EM never lowers the likelihood with the floor clamp; with `add` regularization the M-step
+    // is not the likelihood maximiser, so near convergence it can drift down by ~1e-6 nats. Such
+    // a step is undone and the fit stops there, so the kept log-likelihoods never decrease.
+    if (it > 1 && current < previous) {
+      std::swap(at.state, next);
+      at.converged = true;
+      break;
+    }
     if (o.keepTrace) at.trace.push_back(current);
     if (!mStep(total, at.state, o, next, at.dropped, at.reason)) return at;
     std::swap(at.state, next);

@@ -11,6 +11,7 @@
 #include <string>
 #include <system_error>
 
+#include "sim/file_text.h"
 #include "sim/text_parse.h"
 
 namespace tactile {
@@ -551,12 +552,12 @@ RunCsvResult parseRunCsv(std::string_view text, std::string_view fileName,
 }
 
 RunCsvResult readRunCsv(const std::filesystem::path& path, const ProgressFn& progress) {
-  std::string text;
+  FileText text;
   std::string error;
-  if (!readFileText(path, text, error)) {
+  if (!text.load(path, error)) {
     return RunCsvError{path.string(), 0, {}, 0, error};
   }
-  return parseRunCsv(text, path.string(), progress);
+  return parseRunCsv(text.view(), path.string(), progress);
 }
 
 std::string formatRunCsv(const RunData& run) {

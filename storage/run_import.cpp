@@ -11,6 +11,7 @@
 #include <thread>
 
 #include "sim/builtin_scenes.h"
+#include "sim/file_text.h"
 #include "sim/run_csv.h"
 #include "storage/database_impl.h"
 #include "storage/run_codec.h"
@@ -205,11 +206,11 @@ PreparedRun prepareText(std::string_view text, const std::string& fileName, std:
 }
 
 PreparedRun prepareFile(const std::filesystem::path& path, const std::string& name) {
-  std::string text;
+  FileText text;
   std::string error;
   bool read = false;
   try {
-    read = readFileText(path, text, error);
+    read = text.load(path, error);
   } catch (const std::exception& e) {
     error = e.what();
   }
@@ -220,7 +221,7 @@ PreparedRun prepareFile(const std::filesystem::path& path, const std::string& na
     prepared.error = path.string() + ": " + error;
     return prepared;
   }
-  return prepareText(text, path.string(), name, {});
+  return prepareText(text.view(), path.string(), name, {});
 }
 
 ImportOutcome writePrepared(RunDatabase::Impl& impl, PreparedRun& prepared,

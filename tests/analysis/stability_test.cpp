@@ -202,19 +202,20 @@ TEST(Stability06, LogLikelihoodNeverDecreasesWithTheFloor) {
   }
 }
 
-// 6. With `add` (Sigma = S + eps I, scikit-learn's reg_covar) the M-step is NOT the maximiser of
-// the likelihood, so EM is not monotone in it: once the fit is near its fixed point the
-// log-likelihood may drift down by amounts of the order of eps's bias (docs/learning.md). This
-// test pins that behaviour down: the early phase is monotone, later drift stays tiny.
-TEST(Stability06, AddRegularizationIsMonotoneUntilItsBiasDominates) {
+// 6. With `add` (Sigma = S + eps I, scikit-learn's reg_covar) the M-step is not the maximiser of
+// the likelihood, so near its fixed point a plain EM step may lower it slightly. The fit undoes
+// such a step and stops (docs/learning.md), so the recorded log-likelihoods never decrease here
+// either, and the fit still improves on its start.
+TEST(Stability06, LogLikelihoodNeverDecreasesWithAddRegularization) {
   const Eigen::MatrixXd x = threeBlobs();
   for (CovarianceForm form : kAllCovarianceForms) {
     for (GmmInit init : {GmmInit::KMeansPlusPlus, GmmInit::RandomFromData}) {
       const GmmFit fit = tracedFit(x, form, Regularization::Add, init);
       ASSERT_TRUE(fit.ok) << fit.reason;
+      ASSERT_GE(fit.trace.size(), 3u);
       for (std::size_t t = 1; t < fit.trace.size(); ++t) {
-        const double change = fit.trace[t] - fit.trace[t - 1];
-        EXPECT_GE(change, -1e-4) << covarianceFormName(form) << " step " << t;
+        EXPECT_GE(fit.trace[t], fit.trace[t - 1] - 1e-12 * std::abs(fit.trace[t - 1]))
+            << covarianceFormName(form) << " step " << t;
       }
       EXPECT_GT(fit.trace.back(), fit.trace.front());
     }

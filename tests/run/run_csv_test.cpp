@@ -6,6 +6,7 @@
 #include <limits>
 #include <string>
 
+#include "sim/file_text.h"
 #include "sim/run_csv.h"
 #include "sim/synthetic_run.h"
 
@@ -377,6 +378,41 @@ TEST(RunCsv, AtomicWriteLeavesNoFileOnFailure) {
   const std::string error = writeRunCsv(makeRun(2, false), dir / "out.csv");
   EXPECT_FALSE(error.empty());
   EXPECT_FALSE(std::filesystem::exists(dir));
+}
+
+}  // namespace
+}  // namespace tactile
+
+namespace tactile {
+namespace {
+
+TEST(FileText, MapsRegularFilesAndReadsEmptyOnes) {
+  const auto dir = std::filesystem::temp_directory_path();
+  const auto full = dir / "tactile_file_text_full.txt";
+  const auto empty = dir / "tactile_file_text_empty.txt";
+  ASSERT_EQ(writeFileAtomically(full, "abc\ndef"), "");
+  ASSERT_EQ(writeFileAtomically(empty, ""), "");
+  FileText text;
+  std::string error;
+  ASSERT_TRUE(text.load(full, error)) << error;
+  EXPECT_EQ(text.view(), "abc\ndef");
+  FileText moved = std::move(text);
+  EXPECT_EQ(moved.view(), "abc\ndef");
+  ASSERT_TRUE(moved.load(empty, error)) << error;
+  EXPECT_EQ(moved.view(), "");
+  EXPECT_FALSE(moved.load(dir / "tactile_no_such_file.txt", error));
+  EXPECT_NE(error.find("cannot open"), std::string::npos);
+  std::filesystem::remove(full);
+  std::filesystem::remove(empty);
+}
+
+TEST(RunCsvErrors, EmptyFileOnDisk) {
+  const auto path = std::filesystem::temp_directory_path() / "tactile_empty_run.csv";
+  ASSERT_EQ(writeFileAtomically(path, ""), "");
+  RunCsvResult r = readRunCsv(path);
+  std::filesystem::remove(path);
+  ASSERT_FALSE(r.ok());
+  EXPECT_NE(r.error().message.find("empty file"), std::string::npos);
 }
 
 }  // namespace

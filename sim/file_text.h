@@ -1,0 +1,37 @@
+// The bytes of a file for parsing: memory-mapped when the file is a regular file (no copy, no
+// zero-filled buffer), read into memory otherwise (pipes, special files).
+#pragma once
+
+#include <cstddef>
+#include <filesystem>
+#include <string>
+#include <string_view>
+
+namespace tactile {
+
+class FileText {
+ public:
+  FileText() = default;
+  FileText(FileText&& other) noexcept;
+  FileText& operator=(FileText&& other) noexcept;
+  FileText(const FileText&) = delete;
+  FileText& operator=(const FileText&) = delete;
+  ~FileText();
+
+  // Loads `path`; returns false and sets `error` ("cannot open: ...") on failure.
+  bool load(const std::filesystem::path& path, std::string& error);
+
+  std::string_view view() const {
+    return mapped_ != nullptr ? std::string_view(static_cast<const char*>(mapped_), mappedSize_)
+                              : std::string_view(buffer_);
+  }
+
+ private:
+  void release();
+
+  void* mapped_ = nullptr;
+  std::size_t mappedSize_ = 0;
+  std::string buffer_;
+};
+
+}  // namespace tactile
