@@ -231,7 +231,9 @@ json classList(const std::vector<ContactClass>& classes) {
   return out;
 }
 
-json countsJson(const std::array<std::size_t, kContactClassCount>& counts) {
+}  // namespace
+
+json classCountsToJson(const std::array<std::size_t, kContactClassCount>& counts) {
   json out = json::object();
   for (int c = 0; c < kContactClassCount; ++c) {
     if (counts[static_cast<std::size_t>(c)] > 0) {
@@ -241,8 +243,6 @@ json countsJson(const std::array<std::size_t, kContactClassCount>& counts) {
   }
   return out;
 }
-
-}  // namespace
 
 json sweepToJson(const SweepResult& result) {
   json out;
@@ -282,8 +282,8 @@ json sweepToJson(const SweepResult& result) {
                     {"features", featureKindName(s.features)},
                     {"train_rows", s.trainRows},
                     {"test_rows", s.testRows},
-                    {"train_classes", countsJson(s.trainCounts)},
-                    {"test_classes", countsJson(s.testCounts)},
+                    {"train_classes", classCountsToJson(s.trainCounts)},
+                    {"test_classes", classCountsToJson(s.testCounts)},
                     {"train_zero_rows", s.trainZeroRows},
                     {"test_zero_rows", s.testZeroRows}});
   }

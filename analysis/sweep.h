@@ -110,6 +110,8 @@ SweepResult runSweep(const std::vector<LabelledRun>& train, const std::vector<La
 // SWEEP.json: {"format":"tactile-sweep","version":1,"grid":{...},"data":[...],"threads",
 // "wall_s","cancelled","cells":[{...}]}.
 nlohmann::json sweepToJson(const SweepResult& result);
+// {"Wall": 12, "Corner": 3, ...}: the classes with a non-zero count.
+nlohmann::json classCountsToJson(const std::array<std::size_t, kContactClassCount>& counts);
 // Reads what sweepToJson wrote (cells and data; grid settings as far as reports need them).
 // Returns an error message, empty on success.
 std::string sweepFromJson(const nlohmann::json& value, SweepResult& out);

@@ -129,17 +129,6 @@ void writeText(const std::string& path, const std::string& text) {
   if (!error.empty()) throw std::runtime_error(path + ": " + error);
 }
 
-json countsJson(const std::array<std::size_t, kContactClassCount>& counts) {
-  json out = json::object();
-  for (int c = 0; c < kContactClassCount; ++c) {
-    if (counts[static_cast<std::size_t>(c)] > 0) {
-      out[std::string(kContactClassNames[static_cast<std::size_t>(c)])] =
-          counts[static_cast<std::size_t>(c)];
-    }
-  }
-  return out;
-}
-
 // ---------------------------------------------------------------------------------------------
 // train
 
@@ -251,7 +240,7 @@ int runTrain(const TrainArgs& a) {
     trainedOn["runs"] = loaded.paths;
     trainedOn["labels"] = a.labels.empty() ? "truth columns" : a.labels;
     trainedOn["samples"] = data.size();
-    trainedOn["class_counts"] = countsJson(data.classCounts());
+    trainedOn["class_counts"] = analysis::classCountsToJson(data.classCounts());
     trainedOn["zero_rows"] = data.zeroRows;
     trainedOn["holdout"] = a.holdout;
     trainedOn["init"] = a.init;
