@@ -84,7 +84,6 @@ GroupSteps extractGroupSteps(const RunData& run, SensorGroup group, FeatureKind 
   return out;
 }
 
-
 std::vector<std::optional<ContactClass>> labelsFromTruth(const RunData& run) {
   std::vector<std::optional<ContactClass>> labels(run.stepCount() * kGroupCount);
   if (!run.hasTruth()) return labels;

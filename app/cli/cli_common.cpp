@@ -9,7 +9,9 @@ namespace {
 int gExitCode = kExitOk;
 }  // namespace
 
-int lastExitCode() { return gExitCode; }
+int lastExitCode() {
+  return gExitCode;
+}
 
 void printError(std::string_view message) {
   std::fprintf(stderr, "tactile: error: %.*s\n", static_cast<int>(message.size()), message.data());
