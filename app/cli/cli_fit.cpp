@@ -10,6 +10,7 @@
 #include "analysis/feature_table.h"
 #include "analysis/gmm.h"
 #include "analysis/gmm_synthetic.h"
+#include "app/cli/cli_classifier_options.h"
 #include "app/cli/cli_common.h"
 #include "sim/run_csv.h"
 
@@ -18,91 +19,6 @@ namespace {
 
 double secondsSince(std::chrono::steady_clock::time_point t0) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-}
-
-// Options shared by `fit` and `bench learn`, as typed.
-struct LearnArgs {
-  std::string method = "gmm";
-  int order = 16;
-  std::string cov = "nodal-diag";
-  double floor = 0.01;
-  std::string reg = "floor";
-  std::string init = "kmeans++";
-  std::uint64_t seed = 1;
-  int restarts = 1;
-  int threads = 0;
-  int maxIterations = 100;
-  double tolerance = 1e-3;
-  std::string tolRule = "relative";
-  int kmeansIterations = 10;
-  std::string priors = "equal";
-};
-
-void addLearnOptions(CLI::App* cmd, LearnArgs& a, bool withMethodAndForm) {
-  if (withMethodAndForm) {
-    cmd->add_option("--method", a.method, "gmm or gaussian")->capture_default_str();
-    cmd->add_option("--order", a.order, "GMM components per class")->capture_default_str();
-    cmd->add_option("--cov", a.cov, "nodal-full, nodal-diag, grand-full or grand-diag")
-        ->capture_default_str();
-  }
-  cmd->add_option("--floor", a.floor, "variance floor (or reg_covar with --reg add)")
-      ->capture_default_str();
-  cmd->add_option("--reg", a.reg, "floor (clamp) or add (constant on the diagonal)")
-      ->capture_default_str();
-  cmd->add_option("--init", a.init, "kmeans++ or random-from-data")->capture_default_str();
-  cmd->add_option("--seed", a.seed, "random seed")->capture_default_str();
-  cmd->add_option("--restarts", a.restarts, "EM initialisations, best kept")->capture_default_str();
-  cmd->add_option("--threads", a.threads, "worker threads (0 = all cores)")->capture_default_str();
-  cmd->add_option("--max-iter", a.maxIterations, "EM iteration limit")->capture_default_str();
-  cmd->add_option("--tol", a.tolerance, "convergence tolerance on the mean log-likelihood")
-      ->capture_default_str();
-  cmd->add_option("--tol-rule", a.tolRule,
-                  "relative: |dl| < tol*max(1,|l|); absolute: |dl| < tol (scikit-learn)")
-      ->capture_default_str();
-  cmd->add_option("--kmeans-iter", a.kmeansIterations, "Lloyd iterations after k-means++ seeding")
-      ->capture_default_str();
-  cmd->add_option("--priors", a.priors, "equal or empirical class priors")->capture_default_str();
-}
-
-ClassifierOptions toOptions(const LearnArgs& a) {
-  ClassifierOptions o;
-  const auto method = parseClassifierMethod(a.method);
-  if (!method) throw UsageError("--method must be gmm or gaussian, got '" + a.method + "'");
-  o.method = *method;
-  const auto form = parseCovarianceForm(a.cov);
-  if (!form)
-    throw UsageError("--cov must be nodal-full, nodal-diag, grand-full or grand-diag, got '" +
-                     a.cov + "'");
-  const auto reg = parseRegularization(a.reg);
-  if (!reg) throw UsageError("--reg must be floor or add, got '" + a.reg + "'");
-  const auto init = parseGmmInit(a.init);
-  if (!init) throw UsageError("--init must be kmeans++ or random-from-data, got '" + a.init + "'");
-  const auto rule = parseConvergenceRule(a.tolRule);
-  if (!rule) throw UsageError("--tol-rule must be relative or absolute, got '" + a.tolRule + "'");
-  const auto priors = parsePriorMode(a.priors);
-  if (!priors) throw UsageError("--priors must be equal or empirical, got '" + a.priors + "'");
-  if (a.order < 1 || a.order > 4096) throw UsageError("--order must be between 1 and 4096");
-  if (!(a.floor >= 0.0) || !std::isfinite(a.floor)) throw UsageError("--floor must be >= 0");
-  if (a.restarts < 1) throw UsageError("--restarts must be at least 1");
-  if (a.threads < 0) throw UsageError("--threads must be >= 0");
-  if (a.maxIterations < 1) throw UsageError("--max-iter must be at least 1");
-  if (!(a.tolerance >= 0.0)) throw UsageError("--tol must be >= 0");
-  if (a.kmeansIterations < 0) throw UsageError("--kmeans-iter must be >= 0");
-  o.gmm.components = a.order;
-  o.gmm.form = *form;
-  o.gmm.floor = a.floor;
-  o.gmm.reg = *reg;
-  o.gmm.init = *init;
-  o.gmm.seed = a.seed;
-  o.gmm.restarts = a.restarts;
-  o.gmm.maxIterations = a.maxIterations;
-  o.gmm.tolerance = a.tolerance;
-  o.gmm.rule = *rule;
-  o.gmm.kmeansIterations = a.kmeansIterations;
-  o.priors = *priors;
-  o.threads = a.threads;
-  o.gmm.threads = a.threads;
-  return o;
 }
 
 // Train on `train`, test on `test` (labels already mapped onto the training classes).
@@ -153,8 +69,8 @@ struct FitArgs {
   bool json = false;
 };
 
-int runFit(const FitArgs& f, const LearnArgs& a) {
-  const ClassifierOptions options = toOptions(a);
+int runFit(const FitArgs& f, const ClassifierArgs& a) {
+  const ClassifierOptions options = toClassifierOptions(a);
   FeatureTable train = loadTable(f.train);
   FeatureTable test = loadTable(f.test.empty() ? f.train : f.test);
   if (test.dimension() != train.dimension())
@@ -240,7 +156,7 @@ struct BenchArgs {
   bool json = false;
 };
 
-int runBenchLearn(const BenchArgs& b, const LearnArgs& a) {
+int runBenchLearn(const BenchArgs& b, const ClassifierArgs& a) {
   if (b.rows < 100 || b.testRows < 1 || b.dimension < 1 || b.classes < 1)
     throw UsageError("--rows must be >= 100 and --test-rows, --dim, --classes >= 1");
   SyntheticTableSpec spec;
@@ -277,7 +193,7 @@ int runBenchLearn(const BenchArgs& b, const LearnArgs& a) {
       forms.push_back(*f);
     }
   }
-  LearnArgs base = a;
+  ClassifierArgs base = a;
   nlohmann::json cells = nlohmann::json::array();
   if (!b.json) {
     std::printf("data: %d training rows, %d test rows, D = %d, %d classes (8 clusters each)\n",
@@ -293,7 +209,7 @@ int runBenchLearn(const BenchArgs& b, const LearnArgs& a) {
       base.method = "gmm";
       base.order = order;
       base.cov = std::string(covarianceFormName(form));
-      const Evaluation e = trainAndTest(train, test, toOptions(base));
+      const Evaluation e = trainAndTest(train, test, toClassifierOptions(base));
       int iterations = 0;
       for (int it : e.fit.iterations)
         iterations = std::max(iterations, it);
@@ -335,17 +251,17 @@ int runBenchLearn(const BenchArgs& b, const LearnArgs& a) {
 void registerFitVerbs(CLI::App& app, CLI::App& bench) {
   {
     auto fitArgs = std::make_shared<FitArgs>();
-    auto learnArgs = std::make_shared<LearnArgs>();
+    auto learnArgs = std::make_shared<ClassifierArgs>();
     CLI::App* cmd = app.add_subcommand("fit", "Train and test a classifier on feature-table CSVs");
     cmd->add_option("--train", fitArgs->train, "training table (f0,...,f{D-1},label)")->required();
     cmd->add_option("--test", fitArgs->test, "test table (default: the training table)");
-    addLearnOptions(cmd, *learnArgs, true);
+    addClassifierOptions(cmd, *learnArgs, true);
     cmd->add_flag("--json", fitArgs->json, "print one JSON object");
     setAction(cmd, [fitArgs, learnArgs] { return runFit(*fitArgs, *learnArgs); });
   }
   {
     auto benchArgs = std::make_shared<BenchArgs>();
-    auto learnArgs = std::make_shared<LearnArgs>();
+    auto learnArgs = std::make_shared<ClassifierArgs>();
     learnArgs->floor = 0.01;
     CLI::App* cmd =
         bench.add_subcommand("learn", "Fit time against error over model orders and forms");
@@ -361,7 +277,7 @@ void registerFitVerbs(CLI::App& app, CLI::App& bench) {
                     "write the generated training table to this file and exit");
     cmd->add_option("--write-test", benchArgs->writeTest,
                     "write the generated test table to this file and exit");
-    addLearnOptions(cmd, *learnArgs, false);
+    addClassifierOptions(cmd, *learnArgs, false);
     cmd->add_flag("--json", benchArgs->json, "print one JSON object");
     setAction(cmd, [benchArgs, learnArgs] { return runBenchLearn(*benchArgs, *learnArgs); });
   }

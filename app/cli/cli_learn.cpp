@@ -17,6 +17,7 @@
 #include "analysis/sweep.h"
 #include "analysis/temporal.h"
 #include "analysis/training.h"
+#include "app/cli/cli_classifier_options.h"
 #include "app/cli/cli_common.h"
 #include "sim/label_file.h"
 #include "sim/run_csv.h"
@@ -136,21 +137,14 @@ struct TrainArgs {
   std::vector<std::string> runs;
   std::vector<std::string> testRuns;
   std::string labels;
-  std::string method = "gmm";
-  int order = 16;
-  std::string cov = "nodal-diag";
-  double floor = 0.03;
-  std::string reg = "floor";
-  std::string init = "kmeans++";
-  std::uint64_t seed = 1;
-  int restarts = 1;
-  int maxIterations = 100;
-  double tolerance = 1e-3;
+  ClassifierArgs classifier = [] {
+    ClassifierArgs c;
+    c.floor = 0.03;
+    return c;
+  }();
   std::string features = "normal";
-  std::string priors = "equal";
   std::vector<std::string> groups;
   double holdout = 0.0;
-  int threads = 0;
   std::string out;
   bool json = false;
 };
@@ -158,36 +152,11 @@ struct TrainArgs {
 int runTrain(const TrainArgs& a) {
   analysis::TrainSettings settings;
   settings.features = parseFeatures(a.features);
-  ClassifierOptions& o = settings.classifier;
-  const auto method = parseClassifierMethod(a.method);
-  if (!method) throw UsageError("unknown --method '" + a.method + "' (gaussian, gmm)");
-  o.method = *method;
-  const auto form = parseCovarianceForm(a.cov);
-  if (!form) throw UsageError("unknown --cov '" + a.cov + "'");
-  const auto reg = parseRegularization(a.reg);
-  if (!reg) throw UsageError("unknown --reg '" + a.reg + "' (floor, add)");
-  const auto init = parseGmmInit(a.init);
-  if (!init) throw UsageError("unknown --init '" + a.init + "' (kmeans++, random-from-data)");
-  const auto priors = parsePriorMode(a.priors);
-  if (!priors) throw UsageError("unknown --priors '" + a.priors + "' (equal, empirical)");
-  if (a.order < 1) throw UsageError("--order must be >= 1");
-  if (a.floor < 0.0) throw UsageError("--floor must be >= 0");
+  settings.classifier = toClassifierOptions(a.classifier);
   if (a.holdout < 0.0 || a.holdout >= 1.0) throw UsageError("--holdout must be in [0, 1)");
   if (!a.testRuns.empty() && a.holdout > 0.0) {
     throw UsageError("give either --test-runs or --holdout, not both");
   }
-  o.priors = *priors;
-  o.threads = a.threads;
-  o.gmm.components = a.order;
-  o.gmm.form = *form;
-  o.gmm.floor = a.floor;
-  o.gmm.reg = *reg;
-  o.gmm.init = *init;
-  o.gmm.seed = a.seed;
-  o.gmm.restarts = a.restarts;
-  o.gmm.maxIterations = a.maxIterations;
-  o.gmm.tolerance = a.tolerance;
-  o.gmm.threads = a.threads;
   std::vector<SensorGroup> groups = parseGroups(a.groups);
   if (groups.empty()) {
     for (const GroupInfo& g : kSensorGroups)
@@ -243,12 +212,13 @@ int runTrain(const TrainArgs& a) {
     trainedOn["class_counts"] = analysis::classCountsToJson(data.classCounts());
     trainedOn["zero_rows"] = data.zeroRows;
     trainedOn["holdout"] = a.holdout;
-    trainedOn["init"] = a.init;
-    trainedOn["seed"] = a.seed;
-    trainedOn["restarts"] = a.restarts;
-    trainedOn["max_iterations"] = a.maxIterations;
-    trainedOn["tolerance"] = a.tolerance;
-    trainedOn["priors"] = a.priors;
+    trainedOn["init"] = a.classifier.init;
+    trainedOn["seed"] = a.classifier.seed;
+    trainedOn["restarts"] = a.classifier.restarts;
+    trainedOn["max_iterations"] = a.classifier.maxIterations;
+    trainedOn["tolerance"] = a.classifier.tolerance;
+    trainedOn["tolerance_rule"] = a.classifier.tolRule;
+    trainedOn["priors"] = a.classifier.priors;
     if (!tr.classes.unmodelled.empty()) {
       json un = json::array();
       for (ContactClass c : tr.classes.unmodelled)
@@ -627,27 +597,11 @@ void registerLearnVerbs(CLI::App& app, CLI::App& /*bench*/) {
                     "Score on the last fraction of each run's steps instead (0 = score on the "
                     "training data)")
         ->capture_default_str();
-    cmd->add_option("--method", args->method, "gaussian or gmm")->capture_default_str();
-    cmd->add_option("--order", args->order, "Components per class (gmm)")->capture_default_str();
-    cmd->add_option("--cov", args->cov, "nodal-full, nodal-diag, grand-full or grand-diag")
-        ->capture_default_str();
-    cmd->add_option("--floor", args->floor, "Variance floor (or reg_covar with --reg add)")
-        ->capture_default_str();
-    cmd->add_option("--reg", args->reg, "floor (clamp) or add")->capture_default_str();
-    cmd->add_option("--init", args->init, "kmeans++ or random-from-data")->capture_default_str();
-    cmd->add_option("--seed", args->seed, "Random seed")->capture_default_str();
-    cmd->add_option("--restarts", args->restarts, "EM restarts, best kept")->capture_default_str();
-    cmd->add_option("--max-iterations", args->maxIterations, "EM iteration limit")
-        ->capture_default_str();
-    cmd->add_option("--tol", args->tolerance, "Relative convergence tolerance per sample")
-        ->capture_default_str();
+    addClassifierOptions(cmd, args->classifier, true);
     cmd->add_option("--features", args->features, "normal, magnitude or normal+shear")
         ->capture_default_str();
-    cmd->add_option("--priors", args->priors, "equal or empirical")->capture_default_str();
     cmd->add_option("--groups", args->groups, "Groups to train (default all), e.g. R,L")
         ->delimiter(',');
-    cmd->add_option("--threads", args->threads, "Threads per fit (0 = all cores)")
-        ->capture_default_str();
     cmd->add_option("--out", args->out, "Model bundle JSON to write")->required();
     cmd->add_flag("--json", args->json, "Print a JSON summary");
     setAction(cmd, [args] { return runTrain(*args); });
@@ -685,8 +639,7 @@ void registerLearnVerbs(CLI::App& app, CLI::App& /*bench*/) {
     cmd->add_option("--reg", args->reg, "floor or add")->capture_default_str();
     cmd->add_option("--init", args->init, "kmeans++ or random-from-data")->capture_default_str();
     cmd->add_option("--restarts", args->restarts, "EM restarts per fit")->capture_default_str();
-    cmd->add_option("--max-iterations", args->maxIterations, "EM iteration limit")
-        ->capture_default_str();
+    cmd->add_option("--max-iter", args->maxIterations, "EM iteration limit")->capture_default_str();
     cmd->add_option("--tol", args->tolerance, "Relative convergence tolerance")
         ->capture_default_str();
     cmd->add_option("--threads", args->threads, "Worker threads (0 = all cores)")
