@@ -12,6 +12,7 @@
 
 #include "sim/run.h"
 #include "storage/run_database.h"
+#include "tests/run_compare.h"
 
 namespace tactile::storage::test {
 
@@ -44,23 +45,8 @@ inline RunData makeRun(std::size_t steps, bool withTruth, unsigned seed = 1,
   return run;
 }
 
-inline bool bitEqual(const std::vector<double>& a, const std::vector<double>& b) {
-  return a.size() == b.size() && std::memcmp(a.data(), b.data(), a.size() * sizeof(double)) == 0;
-}
-
-inline void expectSameRun(const RunData& a, const RunData& b) {
-  EXPECT_EQ(a.metadata, b.metadata);
-  EXPECT_TRUE(bitEqual(a.x, b.x));
-  EXPECT_TRUE(bitEqual(a.y, b.y));
-  EXPECT_TRUE(bitEqual(a.theta, b.theta));
-  EXPECT_TRUE(bitEqual(a.v, b.v));
-  EXPECT_TRUE(bitEqual(a.omega, b.omega));
-  EXPECT_TRUE(bitEqual(a.sensors, b.sensors));
-  EXPECT_EQ(a.blocked, b.blocked);
-  EXPECT_EQ(a.truth, b.truth);
-  EXPECT_EQ(a.extraColumns, b.extraColumns);
-  EXPECT_EQ(a.extraValues, b.extraValues);
-}
+using test_support::bitEqual;
+using test_support::expectSameRun;
 
 // A fresh temporary folder, removed with its contents at the end of the test.
 class TempDir {
