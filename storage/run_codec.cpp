@@ -88,26 +88,6 @@ std::string encodeExtra(const std::string* values, std::size_t count) {
   return out;
 }
 
-bool decodeExtra(const void* data, std::size_t bytes, std::size_t count,
-                 std::vector<std::string>& out) {
-  const auto* p = static_cast<const unsigned char*>(data);
-  std::size_t offset = 0;
-  for (std::size_t i = 0; i < count; ++i) {
-    if (bytes - offset < 4) return false;
-    const std::uint32_t length = p[offset] | (p[offset + 1] << 8) | (p[offset + 2] << 16) |
-                                 (static_cast<std::uint32_t>(p[offset + 3]) << 24);
-    offset += 4;
-    if (bytes - offset < length) return false;
-    out.emplace_back(reinterpret_cast<const char*>(p + offset), length);
-    offset += length;
-  }
-  return offset == bytes;
-}
-
-}  // namespace tactile::storage
-
-namespace tactile::storage {
-
 bool decodeStrings(const void* data, std::size_t bytes, std::vector<std::string>& out) {
   const auto* p = static_cast<const unsigned char*>(data);
   std::size_t offset = 0;
@@ -121,6 +101,12 @@ bool decodeStrings(const void* data, std::size_t bytes, std::vector<std::string>
     offset += length;
   }
   return true;
+}
+
+bool decodeExtra(const void* data, std::size_t bytes, std::size_t count,
+                 std::vector<std::string>& out) {
+  const std::size_t before = out.size();
+  return decodeStrings(data, bytes, out) && out.size() - before == count;
 }
 
 }  // namespace tactile::storage
