@@ -1,11 +1,13 @@
 // Label sets and segments. Every public call that changes something is one committed
 // transaction, so a killed process loses at most the edit in flight.
 #include <algorithm>
+#include <array>
 #include <map>
 
 #include "sim/label_file.h"
 #include "sim/run_csv.h"
 #include "storage/database_impl.h"
+#include "storage/run_codec.h"
 
 namespace tactile::storage {
 namespace {
@@ -372,17 +374,36 @@ Result<std::int64_t> RunDatabase::autolabel(std::int64_t runId, const std::strin
         .bind(1, setId)
         .bind(2, runId)
         .run();
+    std::vector<ContactClass> truth;
+    truth.reserve(static_cast<std::size_t>(impl_->runStepCount(runId)) * kGroupCount);
+    db::Statement& steps =
+        impl_->statement("SELECT step, truth FROM steps WHERE run_id = ? ORDER BY step");
+    steps.bind(1, runId);
+    std::array<ContactClass, kGroupCount> classes{};
+    std::int64_t expected = 0;
+    while (steps.step()) {
+      if (steps.columnInt(0) != expected || steps.columnIsNull(1) ||
+          !unpackTruth(steps.columnInt(1), classes.data())) {
+        throw db::DbError("run '" + runName + "' has missing or malformed truth at step " +
+                          std::to_string(expected));
+      }
+      truth.insert(truth.end(), classes.begin(), classes.end());
+      ++expected;
+    }
     const std::string now = utcNow();
-    impl_
-        ->statement(
-            "INSERT INTO label_segments(set_id, run_id, grp, first_step, last_step, class, "
-            "annotator, created_at) SELECT ?, run_id, grp, first_step, last_step, class, "
-            "'truth', ? FROM truth_segments WHERE run_id = ? ORDER BY grp, first_step")
-        .bind(1, setId)
-        .bind(2, now)
-        .bind(3, runId)
-        .run();
-    const std::int64_t written = impl_->connection.changes();
+    db::Statement& insert = impl_->statement(
+        "INSERT INTO label_segments(set_id, run_id, grp, first_step, last_step, class, annotator, "
+        "created_at) VALUES(?, ?, ?, ?, ?, ?, 'truth', ?)");
+    insert.bind(1, setId).bind(2, runId).bind(7, now);
+    std::int64_t written = 0;
+    for (const TruthSegment& segment : truthSegments(truth.data(), truth.size() / kGroupCount)) {
+      insert.bind(3, groupInfo(segment.group).shortName)
+          .bind(4, segment.firstStep)
+          .bind(5, segment.lastStep)
+          .bind(6, contactClassName(segment.cls))
+          .run();
+      ++written;
+    }
     transaction.commit();
     return written;
   });

@@ -1,4 +1,4 @@
-// Run import: parse (on worker threads), derive truth segments and block summaries, then write
+// Run import: parse (on worker threads), encode sensors and block summaries, then write
 // each file in its own transaction on the calling thread.
 #include <algorithm>
 #include <atomic>
@@ -81,8 +81,9 @@ struct PreparedRun {
   std::string sceneJson;  // empty when unresolved
   std::string sceneChecksum;
   std::vector<std::string> warnings;
-  std::vector<TruthSegment> truth;
-  SummaryBlocks blocks;
+  std::vector<std::int64_t> packedTruth;   // one per step when the run has truth
+  EncodedBlobs sensorBlobs;                // one per step
+  std::vector<EncodedBlobs> summaryBlobs;  // one list per summary level
   std::string metadataBlob;
   std::string extraColumnsBlob;
   std::vector<std::string> extraBlobs;  // one per step when there are x_ columns
@@ -166,8 +167,14 @@ void deriveColumns(PreparedRun& prepared, const std::filesystem::path& baseDir) 
       prepared.extraBlobs[i] = encodeExtra(run.extraValues.data() + i * columns, columns);
     }
   }
-  prepared.truth = truthSegments(run);
-  prepared.blocks = computeSummaryBlocks(run.sensors.data(), run.stepCount());
+  if (run.hasTruth()) {
+    prepared.packedTruth.resize(run.stepCount());
+    for (std::size_t i = 0; i < run.stepCount(); ++i)
+      prepared.packedTruth[i] = packTruth(run.truth.data() + i * kGroupCount);
+  }
+  prepared.sensorBlobs = encodeStepSensors(run.sensors.data(), run.stepCount());
+  prepared.summaryBlobs =
+      encodeSummaryBlocks(computeSummaryBlocks(run.sensors.data(), run.stepCount()));
   resolveScene(prepared, baseDir);
 }
 
@@ -183,11 +190,9 @@ PreparedRun prepareTextUnguarded(std::string_view text, const std::string& fileN
     prepared.error = parsed.error().toString();
     return prepared;
   }
+  // The reader already refuses everything validateRun checks (non-finite values, bad blocked
+  // and truth cells, ragged columns), each with its line and column.
   prepared.run = std::move(parsed.run());
-  if (std::string problem = validateRun(prepared.run); !problem.empty()) {
-    prepared.error = fileName + ": " + problem;
-    return prepared;
-  }
   deriveColumns(prepared, filePath.parent_path());
   return prepared;
 }
@@ -264,7 +269,7 @@ ImportOutcome writePrepared(RunDatabase::Impl& impl, PreparedRun& prepared,
       named.reset();
     }
 
-    // The steps, truth and block rows reference the run row written in this same transaction, so
+    // The steps and block rows reference the run row written in this same transaction, so
     // their per-row foreign-key lookups can be skipped; the pragma only works outside a
     // transaction and is restored on every path.
     struct ForeignKeysOff {
@@ -330,12 +335,14 @@ ImportOutcome writePrepared(RunDatabase::Impl& impl, PreparedRun& prepared,
     const std::int64_t runId = impl.connection.lastInsertRowId();
 
     db::Statement& step = impl.statement(
-        "INSERT INTO steps(run_id, step, x, y, theta, v, omega, blocked, sensors, extra) "
-        "VALUES(?, ?, ?, ?, ?, ?, ?, ?, ?, ?)");
+        "INSERT INTO steps(run_id, step, x, y, theta, v, omega, blocked, sensors, extra, truth) "
+        "VALUES(?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?)");
     step.bind(1, runId);
     const bool hasExtra = !prepared.extraBlobs.empty();
     if (!hasExtra) step.bindNull(10);
-    constexpr std::size_t kSensorBytes = kValuesPerStep * sizeof(double);
+    const bool hasTruth = !prepared.packedTruth.empty();
+    if (!hasTruth) step.bindNull(11);
+    const EncodedBlobs& sensors = prepared.sensorBlobs;
     for (std::size_t i = 0; i < run.stepCount(); ++i) {
       if (failAfterSteps >= 0 && static_cast<std::int64_t>(i) == failAfterSteps) {
         throw db::DbError("injected failure after " + std::to_string(i) + " steps");
@@ -347,35 +354,22 @@ ImportOutcome writePrepared(RunDatabase::Impl& impl, PreparedRun& prepared,
           .bind(6, run.v[i])
           .bind(7, run.omega[i])
           .bind(8, static_cast<std::int64_t>(run.blocked[i]))
-          .bindBlob(9, run.stepSensors(i), kSensorBytes);
+          .bindBlob(9, sensors.data(i), sensors.bytes(i));
       if (hasExtra) step.bindBlob(10, prepared.extraBlobs[i].data(), prepared.extraBlobs[i].size());
+      if (hasTruth) step.bind(11, prepared.packedTruth[i]);
       step.step();
     }
     step.reset();
 
-    db::Statement& truth = impl.statement(
-        "INSERT INTO truth_segments(run_id, grp, first_step, last_step, class) "
-        "VALUES(?, ?, ?, ?, ?)");
-    truth.bind(1, runId);
-    for (const TruthSegment& segment : prepared.truth) {
-      truth.bind(2, groupInfo(segment.group).shortName)
-          .bind(3, segment.firstStep)
-          .bind(4, segment.lastStep)
-          .bind(5, contactClassName(segment.cls))
-          .step();
-    }
-    truth.reset();
-
     db::Statement& block =
         impl.statement("INSERT INTO step_blocks(run_id, level, block, minmax) VALUES(?, ?, ?, ?)");
     block.bind(1, runId);
-    for (std::size_t level = 0; level < prepared.blocks.size(); ++level) {
-      const std::vector<double>& values = prepared.blocks[level];
-      const std::size_t count = values.size() / kSummaryValues;
+    for (std::size_t level = 0; level < prepared.summaryBlobs.size(); ++level) {
+      const EncodedBlobs& blobs = prepared.summaryBlobs[level];
       block.bind(2, static_cast<std::int64_t>(level));
-      for (std::size_t b = 0; b < count; ++b) {
+      for (std::size_t b = 0; b < blobs.size(); ++b) {
         block.bind(3, static_cast<std::int64_t>(b))
-            .bindBlob(4, values.data() + b * kSummaryValues, kSummaryValues * sizeof(double))
+            .bindBlob(4, blobs.data(b), blobs.bytes(b))
             .step();
       }
     }

@@ -9,8 +9,6 @@
 namespace tactile::storage {
 namespace {
 
-constexpr std::size_t kSensorBytes = kValuesPerStep * sizeof(double);
-
 struct RunHeader {
   std::int64_t stepCount = 0;
   bool hasTruth = false;
@@ -55,9 +53,10 @@ RunWindow readWindow(RunDatabase::Impl& impl, std::int64_t runId, std::int64_t f
   run.blocked.resize(n);
   run.sensors.resize(n * kValuesPerStep);
   if (!run.extraColumns.empty()) run.extraValues.reserve(n * run.extraColumns.size());
+  if (header.hasTruth) run.truth.resize(n * kGroupCount);
 
   db::Statement& s = impl.statement(
-      "SELECT step, x, y, theta, v, omega, blocked, sensors, extra FROM steps "
+      "SELECT step, x, y, theta, v, omega, blocked, sensors, extra, truth FROM steps "
       "WHERE run_id = ? AND step >= ? AND step < ? ORDER BY step");
   s.bind(1, runId).bind(2, firstStep).bind(3, end);
   std::size_t row = 0;
@@ -72,15 +71,19 @@ RunWindow readWindow(RunDatabase::Impl& impl, std::int64_t runId, std::int64_t f
     run.v[row] = s.columnDouble(4);
     run.omega[row] = s.columnDouble(5);
     run.blocked[row] = static_cast<std::uint8_t>(s.columnInt(6));
-    const void* blob = s.columnBlob(7);
-    if (s.columnBytes(7) != kSensorBytes) {
+    if (!decodeValues(s.columnBlob(7), static_cast<std::size_t>(s.columnBytes(7)), kValuesPerStep,
+                      run.sensors.data() + row * kValuesPerStep)) {
       throw db::DbError("step " + std::to_string(firstStep + static_cast<std::int64_t>(row)) +
                         " of run " + std::to_string(runId) + " has a malformed sensors blob");
     }
-    std::memcpy(run.sensors.data() + row * kValuesPerStep, blob, kSensorBytes);
     if (!run.extraColumns.empty() &&
         !decodeExtra(s.columnBlob(8), s.columnBytes(8), run.extraColumns.size(), run.extraValues)) {
       throw db::DbError("malformed x_ values at step " + std::to_string(firstStep + row));
+    }
+    if (header.hasTruth &&
+        (s.columnIsNull(9) || !unpackTruth(s.columnInt(9), run.truth.data() + row * kGroupCount))) {
+      throw db::DbError("step " + std::to_string(firstStep + static_cast<std::int64_t>(row)) +
+                        " of run " + std::to_string(runId) + " has missing or malformed truth");
     }
     ++row;
   }
@@ -89,31 +92,6 @@ RunWindow readWindow(RunDatabase::Impl& impl, std::int64_t runId, std::int64_t f
                       std::to_string(firstStep + static_cast<std::int64_t>(row)));
   }
 
-  if (header.hasTruth) {
-    run.truth.assign(n * kGroupCount, ContactClass::NoContact);
-    std::vector<bool> covered(n * kGroupCount, false);
-    db::Statement& t = impl.statement(
-        "SELECT grp, first_step, last_step, class FROM truth_segments "
-        "WHERE run_id = ? AND first_step < ? AND last_step >= ?");
-    t.bind(1, runId).bind(2, end).bind(3, firstStep);
-    while (t.step()) {
-      const auto group = parseSensorGroup(t.columnTextView(0));
-      const auto cls = parseContactClass(t.columnTextView(3));
-      if (!group || !cls)
-        throw db::DbError("malformed truth segment of run " + std::to_string(runId));
-      const std::int64_t lo = std::max(firstStep, t.columnInt(1));
-      const std::int64_t hi = std::min(end - 1, t.columnInt(2));
-      for (std::int64_t step = lo; step <= hi; ++step) {
-        const auto index = static_cast<std::size_t>(step - firstStep) * kGroupCount +
-                           static_cast<std::size_t>(groupIndex(*group));
-        run.truth[index] = *cls;
-        covered[index] = true;
-      }
-    }
-    if (std::find(covered.begin(), covered.end(), false) != covered.end()) {
-      throw db::DbError("truth of run " + std::to_string(runId) + " has gaps");
-    }
-  }
   return window;
 }
 
@@ -210,12 +188,12 @@ RunSummary readSummary(RunDatabase::Impl& impl, std::int64_t runId, std::int64_t
           "ORDER BY step");
       s.bind(1, runId).bind(2, pieces[i].first).bind(3, pieces[j].last);
       while (s.step() && k <= j) {
-        if (s.columnInt(0) != pieces[k].first || s.columnBytes(1) != kSensorBytes) {
+        double row[kValuesPerStep];
+        if (s.columnInt(0) != pieces[k].first ||
+            !decodeValues(s.columnBlob(1), static_cast<std::size_t>(s.columnBytes(1)),
+                          kValuesPerStep, row)) {
           throw db::DbError("steps of run " + std::to_string(runId) + " are inconsistent");
         }
-        const auto* values = static_cast<const double*>(s.columnBlob(1));
-        double row[kValuesPerStep];
-        std::memcpy(row, values, kSensorBytes);  // blobs need not be aligned
         merge(pieces[k], row, row);
         ++k;
       }
@@ -228,10 +206,10 @@ RunSummary readSummary(RunDatabase::Impl& impl, std::int64_t runId, std::int64_t
       double values[kSummaryValues];
       while (s.step() && k <= j) {
         if (s.columnInt(0) != pieces[k].index ||
-            s.columnBytes(1) != kSummaryValues * sizeof(double)) {
+            !decodeValues(s.columnBlob(1), static_cast<std::size_t>(s.columnBytes(1)),
+                          kSummaryValues, values)) {
           throw db::DbError("summary blocks of run " + std::to_string(runId) + " are inconsistent");
         }
-        std::memcpy(values, s.columnBlob(1), sizeof values);
         merge(pieces[k], values, values + kValuesPerStep);
         ++k;
       }

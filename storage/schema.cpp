@@ -11,7 +11,11 @@ namespace {
 //   the database reads well from the sqlite3 shell;
 // - float64 columns of steps have no declared type: with REAL affinity SQLite would store
 //   integral values as integers and lose the sign of -0.0, and we promise bit-exact round trips;
-// - the sensors BLOB holds 88 little-endian float64 values n0, s0, ..., n43, s43;
+// - steps.truth packs the eight groups' truth classes, 3 bits each, group g (F, FLC, L, RLC, B,
+//   RRC, R, FRC) at bit 3g, class codes 0 NoContact, 1 Wall, 2 Corner, 3 LeavingWall, 4 DeadPath;
+//   NULL when the run has no truth columns (since version 4; the step_truth view spells it out);
+// - steps.sensors (88 values n0, s0, ..., n43, s43) and step_blocks.minmax (88 minima, 88 maxima)
+//   are float64 lists, dense or sparse (storage/run_codec.h; sparse since version 4);
 // - runs.metadata (key, value, key, value, ...), runs.extra_columns (x_ names) and steps.extra
 //   (x_ values) are lists of strings, each a 4-byte little-endian length and the bytes, so that
 //   they round-trip byte for byte.
@@ -112,10 +116,56 @@ CREATE TABLE sweep_cells(
 CREATE INDEX sweep_cells_by_sweep ON sweep_cells(sweep_id);
 )sql";
 
-constexpr std::array<Migration, 3> kMigrations{{
+// Truth moves from run-length rows into the steps (simulated truth changes class every few steps,
+// so the segments were almost as many rows as the steps), and sensors and minmax blobs may be
+// sparse from now on (older programs would misread them; dense blobs stay valid). The view shows
+// the packed truth by name for the sqlite3 shell.
+constexpr std::string_view kVersion4 = R"sql(
+ALTER TABLE steps ADD COLUMN truth INTEGER;
+UPDATE steps SET truth =
+  ((SELECT CASE class WHEN 'Wall' THEN 1 WHEN 'Corner' THEN 2 WHEN 'LeavingWall' THEN 3 WHEN 'DeadPath' THEN 4 ELSE 0 END FROM truth_segments AS t
+     WHERE t.run_id = steps.run_id AND t.grp = 'F' AND t.first_step <= steps.step
+     ORDER BY t.first_step DESC LIMIT 1) << 0) |
+  ((SELECT CASE class WHEN 'Wall' THEN 1 WHEN 'Corner' THEN 2 WHEN 'LeavingWall' THEN 3 WHEN 'DeadPath' THEN 4 ELSE 0 END FROM truth_segments AS t
+     WHERE t.run_id = steps.run_id AND t.grp = 'FLC' AND t.first_step <= steps.step
+     ORDER BY t.first_step DESC LIMIT 1) << 3) |
+  ((SELECT CASE class WHEN 'Wall' THEN 1 WHEN 'Corner' THEN 2 WHEN 'LeavingWall' THEN 3 WHEN 'DeadPath' THEN 4 ELSE 0 END FROM truth_segments AS t
+     WHERE t.run_id = steps.run_id AND t.grp = 'L' AND t.first_step <= steps.step
+     ORDER BY t.first_step DESC LIMIT 1) << 6) |
+  ((SELECT CASE class WHEN 'Wall' THEN 1 WHEN 'Corner' THEN 2 WHEN 'LeavingWall' THEN 3 WHEN 'DeadPath' THEN 4 ELSE 0 END FROM truth_segments AS t
+     WHERE t.run_id = steps.run_id AND t.grp = 'RLC' AND t.first_step <= steps.step
+     ORDER BY t.first_step DESC LIMIT 1) << 9) |
+  ((SELECT CASE class WHEN 'Wall' THEN 1 WHEN 'Corner' THEN 2 WHEN 'LeavingWall' THEN 3 WHEN 'DeadPath' THEN 4 ELSE 0 END FROM truth_segments AS t
+     WHERE t.run_id = steps.run_id AND t.grp = 'B' AND t.first_step <= steps.step
+     ORDER BY t.first_step DESC LIMIT 1) << 12) |
+  ((SELECT CASE class WHEN 'Wall' THEN 1 WHEN 'Corner' THEN 2 WHEN 'LeavingWall' THEN 3 WHEN 'DeadPath' THEN 4 ELSE 0 END FROM truth_segments AS t
+     WHERE t.run_id = steps.run_id AND t.grp = 'RRC' AND t.first_step <= steps.step
+     ORDER BY t.first_step DESC LIMIT 1) << 15) |
+  ((SELECT CASE class WHEN 'Wall' THEN 1 WHEN 'Corner' THEN 2 WHEN 'LeavingWall' THEN 3 WHEN 'DeadPath' THEN 4 ELSE 0 END FROM truth_segments AS t
+     WHERE t.run_id = steps.run_id AND t.grp = 'R' AND t.first_step <= steps.step
+     ORDER BY t.first_step DESC LIMIT 1) << 18) |
+  ((SELECT CASE class WHEN 'Wall' THEN 1 WHEN 'Corner' THEN 2 WHEN 'LeavingWall' THEN 3 WHEN 'DeadPath' THEN 4 ELSE 0 END FROM truth_segments AS t
+     WHERE t.run_id = steps.run_id AND t.grp = 'FRC' AND t.first_step <= steps.step
+     ORDER BY t.first_step DESC LIMIT 1) << 21)
+WHERE run_id IN (SELECT id FROM runs WHERE has_truth = 1);
+DROP TABLE truth_segments;
+CREATE VIEW step_truth AS SELECT run_id, step,
+  CASE (truth >> 0) & 7 WHEN 0 THEN 'NoContact' WHEN 1 THEN 'Wall' WHEN 2 THEN 'Corner' WHEN 3 THEN 'LeavingWall' WHEN 4 THEN 'DeadPath' END AS F,
+  CASE (truth >> 3) & 7 WHEN 0 THEN 'NoContact' WHEN 1 THEN 'Wall' WHEN 2 THEN 'Corner' WHEN 3 THEN 'LeavingWall' WHEN 4 THEN 'DeadPath' END AS FLC,
+  CASE (truth >> 6) & 7 WHEN 0 THEN 'NoContact' WHEN 1 THEN 'Wall' WHEN 2 THEN 'Corner' WHEN 3 THEN 'LeavingWall' WHEN 4 THEN 'DeadPath' END AS L,
+  CASE (truth >> 9) & 7 WHEN 0 THEN 'NoContact' WHEN 1 THEN 'Wall' WHEN 2 THEN 'Corner' WHEN 3 THEN 'LeavingWall' WHEN 4 THEN 'DeadPath' END AS RLC,
+  CASE (truth >> 12) & 7 WHEN 0 THEN 'NoContact' WHEN 1 THEN 'Wall' WHEN 2 THEN 'Corner' WHEN 3 THEN 'LeavingWall' WHEN 4 THEN 'DeadPath' END AS B,
+  CASE (truth >> 15) & 7 WHEN 0 THEN 'NoContact' WHEN 1 THEN 'Wall' WHEN 2 THEN 'Corner' WHEN 3 THEN 'LeavingWall' WHEN 4 THEN 'DeadPath' END AS RRC,
+  CASE (truth >> 18) & 7 WHEN 0 THEN 'NoContact' WHEN 1 THEN 'Wall' WHEN 2 THEN 'Corner' WHEN 3 THEN 'LeavingWall' WHEN 4 THEN 'DeadPath' END AS R,
+  CASE (truth >> 21) & 7 WHEN 0 THEN 'NoContact' WHEN 1 THEN 'Wall' WHEN 2 THEN 'Corner' WHEN 3 THEN 'LeavingWall' WHEN 4 THEN 'DeadPath' END AS FRC
+FROM steps WHERE truth IS NOT NULL;
+)sql";
+
+constexpr std::array<Migration, 4> kMigrations{{
     {1, "runs, steps, truth, step summaries, scenes", kVersion1},
     {2, "label sets and segments", kVersion2},
     {3, "models, sweeps and sweep cells", kVersion3},
+    {4, "truth packed into the steps, sparse sensors and summary blobs", kVersion4},
 }};
 static_assert(kMigrations.back().version == kSchemaVersion);
 

@@ -197,7 +197,7 @@ TEST(Import, FailureMidRunRollsBackEverything) {
   const auto outcome = db->importText(text, "half.csv", failing);
   EXPECT_EQ(outcome.status, ImportStatus::Failed);
   EXPECT_NE(outcome.message.find("injected failure"), std::string::npos);
-  for (const char* table : {"runs", "steps", "truth_segments", "step_blocks", "scenes"}) {
+  for (const char* table : {"runs", "steps", "step_blocks", "scenes"}) {
     db::Connection c = db::Connection::open(dir / "runs.db", false, true);
     EXPECT_EQ(c.queryInt(std::string("SELECT count(*) FROM ") + table), 0) << table;
   }
@@ -284,7 +284,7 @@ TEST(Import, DeleteRunRemovesItsRows) {
   auto set = db->autolabel(outcome.runId, "auto");
   ASSERT_TRUE(set.ok());
   ASSERT_TRUE(db->deleteRun(outcome.runId).ok());
-  for (const char* table : {"runs", "steps", "truth_segments", "step_blocks", "label_segments"}) {
+  for (const char* table : {"runs", "steps", "step_blocks", "label_segments"}) {
     db::Connection c = db::Connection::open(dir / "runs.db", false, true);
     EXPECT_EQ(c.queryInt(std::string("SELECT count(*) FROM ") + table), 0) << table;
   }

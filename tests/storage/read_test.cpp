@@ -1,6 +1,10 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
+#include <bit>
+#include <cmath>
+#include <limits>
 #include <random>
 
 #include "sim/run_csv.h"
@@ -177,6 +181,103 @@ TEST(RunCodec, ExtraValuesRoundTripAndRejectTruncation) {
   EXPECT_EQ(out, values);
   out.clear();
   EXPECT_FALSE(decodeExtra(blob.data(), blob.size() - 1, values.size(), out));
+}
+
+TEST(RunCodec, PackedTruthRoundTripsAndRejectsBadCodes) {
+  std::array<ContactClass, kGroupCount> classes{};
+  std::array<ContactClass, kGroupCount> back{};
+  for (int trial = 0; trial < 500; ++trial) {
+    for (int g = 0; g < kGroupCount; ++g)
+      classes[g] = static_cast<ContactClass>((trial * 7 + g * 3 + trial / 5) % kContactClassCount);
+    const std::int64_t packed = packTruth(classes.data());
+    ASSERT_TRUE(unpackTruth(packed, back.data()));
+    EXPECT_EQ(back, classes);
+  }
+  classes.fill(ContactClass::DeadPath);
+  EXPECT_EQ(packTruth(classes.data()), 0b100100100100100100100100);
+  EXPECT_FALSE(unpackTruth(5, back.data()));                      // code 5 in group F
+  EXPECT_FALSE(unpackTruth(std::int64_t{7} << 21, back.data()));  // code 7 in group FRC
+  EXPECT_FALSE(unpackTruth(std::int64_t{1} << 24, back.data()));  // a ninth group
+  EXPECT_FALSE(unpackTruth(-1, back.data()));
+  EXPECT_TRUE(unpackTruth(0, back.data()));
+  EXPECT_EQ(back[3], ContactClass::NoContact);
+}
+
+// Encodes and decodes `values`; returns the blob size.
+std::size_t roundTrip(const std::vector<double>& values) {
+  std::vector<unsigned char> blob(maxEncodedValueBytes(values.size()));
+  const std::size_t bytes = encodeValues(values.data(), values.size(), blob.data());
+  EXPECT_LE(bytes, 8 * values.size());
+  std::vector<double> back(values.size(), 123.0);
+  EXPECT_TRUE(decodeValues(blob.data(), bytes, values.size(), back.data()));
+  for (std::size_t i = 0; i < values.size(); ++i) {
+    EXPECT_EQ(std::bit_cast<std::uint64_t>(back[i]), std::bit_cast<std::uint64_t>(values[i]))
+        << "value " << i;
+  }
+  return bytes;
+}
+
+TEST(RunCodec, AllZeroValuesTakeOnlyTheBitmap) {
+  EXPECT_EQ(roundTrip(std::vector<double>(kValuesPerStep, 0.0)), 11u);
+  EXPECT_EQ(roundTrip(std::vector<double>(kSummaryValues, 0.0)), 22u);
+}
+
+TEST(RunCodec, SparseValuesKeepNegativeZeroDenormalsAndExtremes) {
+  std::vector<double> values(kValuesPerStep, 0.0);
+  values[0] = -0.0;
+  values[7] = std::numeric_limits<double>::denorm_min();
+  values[8] = -std::numeric_limits<double>::max();
+  values[87] = 0.1;
+  EXPECT_EQ(roundTrip(values), 11u + 4 * 8);
+}
+
+TEST(RunCodec, FullRowsStayDense) {
+  std::vector<double> values(kValuesPerStep);
+  for (std::size_t i = 0; i < values.size(); ++i)
+    values[i] = 1.0 + static_cast<double>(i);
+  EXPECT_EQ(roundTrip(values), 8u * kValuesPerStep);
+  // 86 set values: the sparse layout (11 + 688 bytes) is shorter and used.
+  values[3] = 0.0;
+  values[40] = 0.0;
+  EXPECT_EQ(roundTrip(values), 11u + 86 * 8);
+  // 87 set values: sparse would need 707 bytes, more than dense.
+  values[40] = 2.5;
+  EXPECT_EQ(roundTrip(values), 8u * kValuesPerStep);
+}
+
+TEST(RunCodec, RandomRowsRoundTripBitExactly) {
+  std::mt19937_64 rng(11);
+  for (int trial = 0; trial < 2000; ++trial) {
+    const std::size_t count = 1 + rng() % 200;
+    std::vector<double> values(count);
+    const double density = static_cast<double>(rng() % 101) / 100.0;
+    for (double& v : values) {
+      const std::uint64_t bits = rng();
+      v = static_cast<double>(rng() % 1000) / 1000.0 < density ? std::bit_cast<double>(bits) : 0.0;
+      if (std::isnan(v)) v = -0.0;
+    }
+    roundTrip(values);
+  }
+}
+
+TEST(RunCodec, MalformedValueBlobsAreRejected) {
+  std::vector<double> out(kValuesPerStep);
+  std::vector<unsigned char> blob(11, 0);
+  blob[0] = 0b101;  // two values set, but no value bytes follow
+  EXPECT_FALSE(decodeValues(blob.data(), blob.size(), kValuesPerStep, out.data()));
+  blob.resize(11 + 16, 0);
+  EXPECT_TRUE(decodeValues(blob.data(), blob.size(), kValuesPerStep, out.data()));
+  EXPECT_FALSE(decodeValues(blob.data(), blob.size() - 1, kValuesPerStep, out.data()));
+  EXPECT_FALSE(decodeValues(blob.data(), 5, kValuesPerStep, out.data()));
+  EXPECT_FALSE(decodeValues(blob.data(), 0, kValuesPerStep, out.data()));
+  // A bit past the last value of a list whose length is not a multiple of 8.
+  std::vector<unsigned char> small{0b1000'0000};
+  std::vector<double> five(5);
+  EXPECT_FALSE(decodeValues(small.data(), small.size(), 5, five.data()));
+  // The dense length is always dense, whatever its first bytes say.
+  std::vector<unsigned char> dense(8 * kValuesPerStep, 0);
+  dense[8] = 0x3F;
+  EXPECT_TRUE(decodeValues(dense.data(), dense.size(), kValuesPerStep, out.data()));
 }
 
 }  // namespace
