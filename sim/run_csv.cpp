@@ -1,6 +1,7 @@
 #include "sim/run_csv.h"
 
 #include <unistd.h>
+#include <algorithm>
 #include <array>
 #include <atomic>
 #include <cerrno>
@@ -10,6 +11,7 @@
 #include <cstring>
 #include <string>
 #include <system_error>
+#include <thread>
 
 #include "sim/file_text.h"
 #include "sim/text_parse.h"
@@ -101,17 +103,21 @@ std::string_view trim(std::string_view s) {
 // Walks the text one physical line at a time; strips "\n" or "\r\n".
 class LineCursor {
  public:
-  explicit LineCursor(std::string_view text) : text_(text) {}
+  explicit LineCursor(std::string_view text) : text_(text), end_(text.size()) {}
+  // Lines of [begin, end) only, numbered from firstLine; `end` is a line start or the text end.
+  LineCursor(std::string_view text, std::size_t begin, std::size_t end, std::size_t firstLine)
+      : text_(text), pos_(begin), end_(end), line_(firstLine - 1) {}
 
-  bool atEnd() const { return pos_ >= text_.size(); }
+  bool atEnd() const { return pos_ >= end_; }
   std::size_t lineNumber() const { return line_; }
   std::size_t offset() const { return pos_; }
   bool lastHadNewline() const { return hadNewline_; }
+  std::size_t remaining() const { return end_ - pos_; }
   bool nextStartsWith(char c) const { return pos_ < text_.size() && text_[pos_] == c; }
 
   std::string_view next() {
     const char* begin = text_.data() + pos_;
-    const std::size_t remaining = text_.size() - pos_;
+    const std::size_t remaining = end_ - pos_;
     const void* nl = std::memchr(begin, '\n', remaining);
     std::size_t length = nl ? static_cast<const char*>(nl) - begin : remaining;
     pos_ += length + (nl ? 1 : 0);
@@ -121,7 +127,8 @@ class LineCursor {
     return {begin, length};
   }
 
-  // True when every remaining line is empty (trailing blank lines are tolerated).
+  // True when every remaining line of the whole text (not only of the range) is empty: trailing
+  // blank lines are tolerated.
   bool onlyBlankLinesLeft() const {
     for (std::size_t i = pos_; i < text_.size(); ++i) {
       if (text_[i] != '\n' && text_[i] != '\r') return false;
@@ -132,9 +139,12 @@ class LineCursor {
  private:
   std::string_view text_;
   std::size_t pos_ = 0;
+  std::size_t end_ = 0;
   std::size_t line_ = 0;
   bool hadNewline_ = false;
 };
+
+const ProgressFn kNoProgress{};
 
 class Parser {
  public:
@@ -142,13 +152,49 @@ class Parser {
       : text_(text), file_(fileName), progress_(progress), cursor_(text) {}
 
   RunCsvResult parse() {
+    if (!parseHead() || !parseRows()) return std::move(*error_);
+    return std::move(run_);
+  }
+
+  // The metadata lines and the header; false with error() set when they are invalid.
+  bool parseHead() {
     if (text_.starts_with("\xEF\xBB\xBF")) {
       text_.remove_prefix(3);
       cursor_ = LineCursor(text_);
     }
-    if (text_.empty()) return fail(0, "empty file: expected a header line");
-    if (!parseMetadata() || !parseHeader() || !parseRows()) return std::move(*error_);
+    if (text_.empty()) return setError(0, "empty file: expected a header line");
+    return parseMetadata() && parseHeader();
+  }
+
+  // After parseHead(): a parser for the rows of [begin, end) (offsets into text()), whose first
+  // line is `firstLine` and must carry step `firstStep`.
+  Parser rowParser(std::size_t begin, std::size_t end, std::size_t firstLine,
+                   std::size_t firstStep) const {
+    Parser rows(text_, file_, kNoProgress);
+    rows.cursor_ = LineCursor(text_, begin, end, firstLine);
+    rows.columns_ = columns_;
+    rows.headerLine_ = headerLine_;
+    rows.hasTruth_ = hasTruth_;
+    rows.firstStep_ = firstStep;
+    rows.run_.extraColumns = run_.extraColumns;
+    return rows;
+  }
+
+  // Parses this row parser's range: its rows (no metadata) or its first error.
+  RunCsvResult parseRowRange() {
+    if (!parseRowLines()) return std::move(*error_);
+    run_.extraColumns.clear();
     return std::move(run_);
+  }
+
+  std::string_view text() const { return text_; }
+  std::size_t offset() const { return cursor_.offset(); }
+  std::size_t headerLine() const { return headerLine_; }
+  bool hasTruth() const { return hasTruth_; }
+  const RunData& head() const { return run_; }
+  const RunCsvError& error() const { return *error_; }
+  RunCsvError noStepsError() const {
+    return makeError(headerLine_, "no steps: the file has a header but no rows");
   }
 
  private:
@@ -326,8 +372,18 @@ class Parser {
   }
 
   bool parseRows() {
+    if (!parseRowLines()) return false;
+    if (run_.stepCount() == 0) {
+      error_ = noStepsError();
+      return false;
+    }
+    if (progress_) progress_(text_.size(), text_.size());
+    return true;
+  }
+
+  bool parseRowLines() {
     // Reserve from the first row's length so long runs do not reallocate repeatedly.
-    const std::size_t remaining = text_.size() - cursor_.offset();
+    const std::size_t remaining = cursor_.remaining();
     std::size_t firstLength = remaining;
     if (const void* nl = std::memchr(text_.data() + cursor_.offset(), '\n', remaining)) {
       firstLength = static_cast<const char*>(nl) - (text_.data() + cursor_.offset()) + 1;
@@ -342,7 +398,7 @@ class Parser {
     std::array<double, kValuesPerStep> values{};
     std::array<ContactClass, kGroupCount> truth{};
     std::array<double, 5> pose{};
-    std::size_t step = 0;
+    std::size_t step = firstStep_;
     std::int64_t blocked = 0;
 
     while (!cursor_.atEnd()) {
@@ -402,10 +458,6 @@ class Parser {
         }
       }
     }
-    if (step == 0) {
-      return setError(headerLine_, "no steps: the file has a header but no rows");
-    }
-    if (progress_) progress_(text_.size(), text_.size());
     return true;
   }
 
@@ -518,9 +570,26 @@ class Parser {
   std::vector<std::size_t> metadataLines_;
   std::vector<Column> columns_;
   std::size_t headerLine_ = 0;
+  std::size_t firstStep_ = 0;
   bool hasTruth_ = false;
   std::optional<RunCsvError> error_;
 };
+
+// Appends rows (a chunk's RunData: no metadata) to `run`.
+void appendRows(RunData& run, const RunData& rows) {
+  const auto append = [](auto& to, const auto& from) {
+    to.insert(to.end(), from.begin(), from.end());
+  };
+  append(run.x, rows.x);
+  append(run.y, rows.y);
+  append(run.theta, rows.theta);
+  append(run.v, rows.v);
+  append(run.omega, rows.omega);
+  append(run.blocked, rows.blocked);
+  append(run.sensors, rows.sensors);
+  append(run.truth, rows.truth);
+  append(run.extraValues, rows.extraValues);
+}
 
 // Appends the shortest decimal text that reads back as exactly `value`.
 inline char* putDouble(char* out, double value) {
@@ -549,6 +618,136 @@ std::string RunCsvError::toString() const {
 RunCsvResult parseRunCsv(std::string_view text, std::string_view fileName,
                          const ProgressFn& progress) {
   return Parser(text, fileName, progress).parse();
+}
+
+struct RunCsvChunks::State {
+  struct Chunk {
+    std::size_t begin = 0;  // offsets into the text (after a byte-order mark)
+    std::size_t end = 0;
+    std::size_t firstLine = 0;
+    std::size_t firstStep = 0;
+  };
+  State(std::string_view text, std::string name)
+      : file(std::move(name)), head(text, file, kNoProgress) {}
+  std::string file;
+  Parser head;
+  bool ok = false;
+  std::vector<Chunk> chunks;
+};
+
+RunCsvChunks::RunCsvChunks(std::string_view text, std::string_view fileName, std::size_t chunkBytes)
+    : state_(std::make_unique<State>(text, std::string(fileName))) {
+  State& st = *state_;
+  st.ok = st.head.parseHead();
+  if (!st.ok) return;
+  const std::string_view body = st.head.text();
+  chunkBytes = std::max<std::size_t>(chunkBytes, 1);
+  std::size_t begin = st.head.offset();
+  std::size_t line = st.head.headerLine() + 1;
+  std::size_t step = 0;
+  // Every line before a chunk must be a row (a blank line among rows is an error its chunk
+  // reports), so a chunk's first step is the number of lines before it.
+  do {
+    std::size_t end = body.size();
+    if (body.size() - begin > chunkBytes) {
+      const std::size_t from = begin + chunkBytes - 1;
+      if (const void* nl = std::memchr(body.data() + from, '\n', body.size() - from)) {
+        end = static_cast<std::size_t>(static_cast<const char*>(nl) - body.data()) + 1;
+      }
+    }
+    st.chunks.push_back({begin, end, line, step});
+    std::size_t lines = 0;
+    const char* const stop = body.data() + end;
+    for (const char* p = body.data() + begin; p < stop; ++lines) {
+      const void* nl = std::memchr(p, '\n', static_cast<std::size_t>(stop - p));
+      if (nl == nullptr) break;
+      p = static_cast<const char*>(nl) + 1;
+    }
+    line += lines;
+    step += lines;
+    begin = end;
+  } while (begin < body.size());
+}
+
+RunCsvChunks::RunCsvChunks(RunCsvChunks&&) noexcept = default;
+RunCsvChunks& RunCsvChunks::operator=(RunCsvChunks&&) noexcept = default;
+RunCsvChunks::~RunCsvChunks() = default;
+
+const RunCsvError* RunCsvChunks::error() const {
+  return state_->ok ? nullptr : &state_->head.error();
+}
+
+const RunData& RunCsvChunks::header() const {
+  return state_->head.head();
+}
+
+bool RunCsvChunks::hasTruth() const {
+  return state_->head.hasTruth();
+}
+
+std::size_t RunCsvChunks::size() const {
+  return state_->chunks.size();
+}
+
+std::size_t RunCsvChunks::firstStep(std::size_t chunk) const {
+  return state_->chunks.at(chunk).firstStep;
+}
+
+std::size_t RunCsvChunks::bytes(std::size_t chunk) const {
+  const State::Chunk& c = state_->chunks.at(chunk);
+  return c.end - c.begin;
+}
+
+RunCsvResult RunCsvChunks::parse(std::size_t chunk) const {
+  const State::Chunk& c = state_->chunks.at(chunk);
+  return state_->head.rowParser(c.begin, c.end, c.firstLine, c.firstStep).parseRowRange();
+}
+
+std::optional<RunCsvError> RunCsvChunks::checkStepCount(std::size_t steps) const {
+  if (steps == 0) return state_->head.noStepsError();
+  return std::nullopt;
+}
+
+RunCsvResult RunCsvChunks::join(std::vector<RunCsvResult> parts) const {
+  if (const RunCsvError* e = error()) return *e;
+  std::size_t total = 0;
+  for (const RunCsvResult& part : parts) {
+    if (!part.ok()) return part.error();
+    total += part.run().stepCount();
+  }
+  if (auto e = checkStepCount(total)) return std::move(*e);
+  RunData run;
+  run.metadata = header().metadata;
+  run.extraColumns = header().extraColumns;
+  run.reserve(total, hasTruth());
+  run.extraValues.reserve(total * run.extraColumns.size());
+  for (const RunCsvResult& part : parts)
+    appendRows(run, part.run());
+  return run;
+}
+
+RunCsvResult parseRunCsvParallel(std::string_view text, std::string_view fileName, unsigned threads,
+                                 std::size_t chunkBytes) {
+  const RunCsvChunks chunks(text, fileName, chunkBytes);
+  if (const RunCsvError* e = chunks.error()) return *e;
+  std::vector<std::optional<RunCsvResult>> parsed(chunks.size());
+  std::atomic<std::size_t> next{0};
+  auto work = [&] {
+    for (std::size_t i = next++; i < chunks.size(); i = next++)
+      parsed[i].emplace(chunks.parse(i));
+  };
+  std::vector<std::thread> workers;
+  threads = std::clamp<unsigned>(threads, 1, static_cast<unsigned>(chunks.size()));
+  for (unsigned t = 1; t < threads; ++t)
+    workers.emplace_back(work);
+  work();
+  for (std::thread& worker : workers)
+    worker.join();
+  std::vector<RunCsvResult> parts;
+  parts.reserve(parsed.size());
+  for (auto& part : parsed)
+    parts.push_back(std::move(*part));
+  return chunks.join(std::move(parts));
 }
 
 RunCsvResult readRunCsv(const std::filesystem::path& path, const ProgressFn& progress) {

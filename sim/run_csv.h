@@ -4,6 +4,8 @@
 
 #include <cstddef>
 #include <filesystem>
+#include <memory>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <variant>
@@ -46,6 +48,43 @@ class RunCsvResult {
 // bytes parsed and total bytes; returning false cancels (the result is then an error).
 RunCsvResult parseRunCsv(std::string_view text, std::string_view fileName,
                          const ProgressFn& progress = {});
+
+// A run file prepared for parsing on several threads. The metadata and header are read at once;
+// the rows are split at line starts into chunks of about `chunkBytes`, which may be parsed
+// concurrently and in any order. Joining the parsed chunks gives exactly what parseRunCsv gives,
+// the same (first) error included. `text` must outlive the object.
+class RunCsvChunks {
+ public:
+  RunCsvChunks(std::string_view text, std::string_view fileName, std::size_t chunkBytes);
+  RunCsvChunks(RunCsvChunks&&) noexcept;
+  RunCsvChunks& operator=(RunCsvChunks&&) noexcept;
+  ~RunCsvChunks();
+
+  // The metadata or header error, or null; with an error there is nothing to parse.
+  const RunCsvError* error() const;
+  // Metadata and x_ column names, no steps.
+  const RunData& header() const;
+  bool hasTruth() const;
+  // At least one chunk (maybe empty) when the header is valid.
+  std::size_t size() const;
+  // The step the chunk's first row must carry (the number of lines before it).
+  std::size_t firstStep(std::size_t chunk) const;
+  std::size_t bytes(std::size_t chunk) const;
+  // The chunk's rows (no metadata), or its first error. Safe to call from several threads.
+  RunCsvResult parse(std::size_t chunk) const;
+  // The error for a file whose chunks held `steps` rows in all, if that is one (no rows).
+  std::optional<RunCsvError> checkStepCount(std::size_t steps) const;
+  // The parsed chunks in order, joined into the run (or the first error in file order).
+  RunCsvResult join(std::vector<RunCsvResult> parts) const;
+
+ private:
+  struct State;
+  std::unique_ptr<State> state_;
+};
+
+// parseRunCsv on up to `threads` threads, chunk by chunk; the same result.
+RunCsvResult parseRunCsvParallel(std::string_view text, std::string_view fileName, unsigned threads,
+                                 std::size_t chunkBytes = std::size_t{4} << 20);
 
 // Reads and parses a file.
 RunCsvResult readRunCsv(const std::filesystem::path& path, const ProgressFn& progress = {});

@@ -52,30 +52,32 @@ bool unpackTruth(std::int64_t packed, ContactClass* classes) {
 }
 
 SummaryBlocks computeSummaryBlocks(const double* sensors, std::size_t steps) {
-  SummaryBlocks levels(kSummaryBlockSteps.size());
-  if (steps == 0) return levels;
-  // Finest level from the steps.
-  {
-    const std::size_t size = static_cast<std::size_t>(kSummaryBlockSteps[0]);
-    const std::size_t blocks = (steps + size - 1) / size;
-    std::vector<double>& out = levels[0];
-    out.resize(blocks * kSummaryValues);
-    for (std::size_t b = 0; b < blocks; ++b) {
-      double* mins = out.data() + b * kSummaryValues;
-      double* maxs = mins + kValuesPerStep;
-      const double* first = sensors + b * size * kValuesPerStep;
-      std::copy(first, first + kValuesPerStep, mins);
-      std::copy(first, first + kValuesPerStep, maxs);
-      const std::size_t end = std::min(steps, (b + 1) * size);
-      for (std::size_t s = b * size + 1; s < end; ++s) {
-        const double* row = sensors + s * kValuesPerStep;
-        for (int k = 0; k < kValuesPerStep; ++k) {
-          mins[k] = std::min(mins[k], row[k]);
-          maxs[k] = std::max(maxs[k], row[k]);
-        }
-      }
+  SummaryBuilder builder;
+  builder.add(sensors, steps);
+  return std::move(builder).finish();
+}
+
+void SummaryBuilder::add(const double* sensors, std::size_t steps) {
+  const auto size = static_cast<std::size_t>(kSummaryBlockSteps[0]);
+  for (std::size_t s = 0; s < steps; ++s, ++steps_) {
+    const double* row = sensors + s * kValuesPerStep;
+    if (steps_ % size == 0) {
+      finest_.insert(finest_.end(), row, row + kValuesPerStep);  // minima
+      finest_.insert(finest_.end(), row, row + kValuesPerStep);  // maxima
+      continue;
+    }
+    double* mins = finest_.data() + finest_.size() - kSummaryValues;
+    double* maxs = mins + kValuesPerStep;
+    for (int k = 0; k < kValuesPerStep; ++k) {
+      mins[k] = std::min(mins[k], row[k]);
+      maxs[k] = std::max(maxs[k], row[k]);
     }
   }
+}
+
+SummaryBlocks SummaryBuilder::finish() && {
+  SummaryBlocks levels(kSummaryBlockSteps.size());
+  levels[0] = std::move(finest_);
   // Coarser levels from the level below.
   for (std::size_t level = 1; level < kSummaryBlockSteps.size(); ++level) {
     const std::size_t ratio =

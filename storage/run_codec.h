@@ -38,6 +38,17 @@ bool unpackTruth(std::int64_t packed, ContactClass* classes);
 using SummaryBlocks = std::vector<std::vector<double>>;
 SummaryBlocks computeSummaryBlocks(const double* sensors, std::size_t steps);
 
+// The same, fed step after step in pieces of any length.
+class SummaryBuilder {
+ public:
+  void add(const double* sensors, std::size_t steps);
+  SummaryBlocks finish() &&;
+
+ private:
+  std::vector<double> finest_;  // level-0 blocks so far, the last one maybe partial
+  std::size_t steps_ = 0;
+};
+
 // Float64 value lists stored as BLOBs (a step's 88 sensor values, a block's 176 minima and
 // maxima). Two layouts, told apart by length alone:
 // - dense: `count` little-endian float64, 8 * count bytes;

@@ -114,8 +114,11 @@ struct ImportOutcome {
 struct ImportOptions {
   // The run's name; only for a single file. Empty: the file's stem.
   std::string name;
-  // Parser threads for many files; 0 = one per hardware thread. Writing is always one thread.
+  // Parser threads; 0 = one per hardware thread. Writing is always one thread (the caller's).
   unsigned threads = 0;
+  // Files are parsed in chunks of about this many bytes, so that one big file is parsed on
+  // several threads while its first steps are written; 0 = the default (4 MiB).
+  std::size_t chunkBytes = 0;
   // Test hook: throw after writing this many steps of a run (checks that nothing is kept).
   std::int64_t failAfterSteps = -1;
 };

@@ -1,14 +1,17 @@
-// Run import: parse (on worker threads), encode sensors and block summaries, then write
-// each file in its own transaction on the calling thread.
+// Run import: worker threads read, hash, parse and encode files chunk by chunk; the calling
+// thread writes each file in its own transaction as its chunks arrive.
 #include <algorithm>
 #include <atomic>
 #include <bit>
 #include <condition_variable>
 #include <cstring>
 #include <deque>
+#include <functional>
 #include <mutex>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <thread>
+#include <unordered_set>
 
 #include "sim/builtin_scenes.h"
 #include "sim/file_text.h"
@@ -69,24 +72,35 @@ std::string checksumHex(std::string_view bytes) {
 
 namespace {
 
-// Everything a writer needs, computed off the writer thread.
-struct PreparedRun {
+constexpr std::size_t kDefaultChunkBytes = std::size_t{4} << 20;
+
+// What the writer needs of a file before its steps; made off the writer thread.
+struct FileHead {
   std::string file;  // as given, for messages
   std::string name;
   std::string checksum;
   std::string error;  // non-empty: the file is rejected
-  RunData run;
-  std::string sceneValue;  // the `scene` metadata value
+  std::vector<std::string> warnings;
+  RunData header;  // metadata and x_ column names, no steps
+  bool hasTruth = false;
+  std::size_t chunkCount = 0;
+  std::string noStepsError;  // the reader's error for a file without rows; empty: allowed
+  std::string sceneValue;    // the `scene` metadata value
   std::string sceneName;
   std::string sceneJson;  // empty when unresolved
   std::string sceneChecksum;
-  std::vector<std::string> warnings;
-  std::vector<std::int64_t> packedTruth;   // one per step when the run has truth
-  EncodedBlobs sensorBlobs;                // one per step
-  std::vector<EncodedBlobs> summaryBlobs;  // one list per summary level
   std::string metadataBlob;
   std::string extraColumnsBlob;
-  std::vector<std::string> extraBlobs;  // one per step when there are x_ columns
+};
+
+// Consecutive steps of a run, parsed and encoded off the writer thread.
+struct StepChunk {
+  std::string error;  // non-empty: the file is rejected (the reader's message)
+  RunData rows;       // no metadata
+  std::size_t firstStep = 0;
+  EncodedBlobs sensors;                   // one per step
+  std::vector<std::int64_t> packedTruth;  // one per step when the run has truth
+  std::vector<std::string> extraBlobs;    // one per step when there are x_ columns
 };
 
 // Rejects runs that cannot be stored faithfully (hand-built ones; the reader checks files).
@@ -117,8 +131,8 @@ std::string validateRun(const RunData& run) {
   return {};
 }
 
-void resolveScene(PreparedRun& prepared, const std::filesystem::path& baseDir) {
-  const std::string* scene = prepared.run.meta("scene");
+void resolveScene(FileHead& prepared, const std::filesystem::path& baseDir) {
+  const std::string* scene = prepared.header.meta("scene");
   if (scene == nullptr || scene->empty()) return;
   prepared.sceneValue = *scene;
   std::string json;
@@ -148,109 +162,99 @@ void resolveScene(PreparedRun& prepared, const std::filesystem::path& baseDir) {
   prepared.sceneJson = std::move(json);
 }
 
-// Derived data and JSON columns, shared by every import path.
-void deriveColumns(PreparedRun& prepared, const std::filesystem::path& baseDir) {
-  const RunData& run = prepared.run;
+// Metadata blobs and the scene, from the header (metadata and x_ names) of a run.
+void describeHead(FileHead& head, const std::filesystem::path& baseDir) {
   // Length-prefixed bytes rather than JSON: metadata is kept byte for byte, even text that is not
   // valid UTF-8 (which a JSON library would refuse or alter).
   std::vector<std::string> pairs;
-  for (const auto& [key, value] : run.metadata) {
+  for (const auto& [key, value] : head.header.metadata) {
     pairs.push_back(key);
     pairs.push_back(value);
   }
-  prepared.metadataBlob = encodeExtra(pairs.data(), pairs.size());
-  prepared.extraColumnsBlob = encodeExtra(run.extraColumns.data(), run.extraColumns.size());
-  if (!run.extraColumns.empty()) {
-    const std::size_t columns = run.extraColumns.size();
-    prepared.extraBlobs.resize(run.stepCount());
-    for (std::size_t i = 0; i < run.stepCount(); ++i) {
-      prepared.extraBlobs[i] = encodeExtra(run.extraValues.data() + i * columns, columns);
+  head.metadataBlob = encodeExtra(pairs.data(), pairs.size());
+  head.extraColumnsBlob =
+      encodeExtra(head.header.extraColumns.data(), head.header.extraColumns.size());
+  resolveScene(head, baseDir);
+}
+
+StepChunk encodeChunk(RunData rows, std::size_t firstStep, std::size_t extraColumns) {
+  StepChunk chunk;
+  chunk.firstStep = firstStep;
+  const std::size_t n = rows.stepCount();
+  chunk.sensors = encodeStepSensors(rows.sensors.data(), n);
+  if (rows.hasTruth()) {
+    chunk.packedTruth.resize(n);
+    for (std::size_t i = 0; i < n; ++i)
+      chunk.packedTruth[i] = packTruth(rows.truth.data() + i * kGroupCount);
+  }
+  if (extraColumns > 0) {
+    chunk.extraBlobs.resize(n);
+    for (std::size_t i = 0; i < n; ++i)
+      chunk.extraBlobs[i] = encodeExtra(rows.extraValues.data() + i * extraColumns, extraColumns);
+  }
+  chunk.rows = std::move(rows);
+  return chunk;
+}
+
+// Never throws: any failure (even out of memory on a worker thread) becomes the chunk's error.
+StepChunk parseChunk(const RunCsvChunks& chunks, std::size_t index, const std::string& file) {
+  try {
+    RunCsvResult parsed = chunks.parse(index);
+    if (!parsed.ok()) {
+      StepChunk failed;
+      failed.error = parsed.error().toString();
+      return failed;
     }
-  }
-  if (run.hasTruth()) {
-    prepared.packedTruth.resize(run.stepCount());
-    for (std::size_t i = 0; i < run.stepCount(); ++i)
-      prepared.packedTruth[i] = packTruth(run.truth.data() + i * kGroupCount);
-  }
-  prepared.sensorBlobs = encodeStepSensors(run.sensors.data(), run.stepCount());
-  prepared.summaryBlobs =
-      encodeSummaryBlocks(computeSummaryBlocks(run.sensors.data(), run.stepCount()));
-  resolveScene(prepared, baseDir);
-}
-
-PreparedRun prepareTextUnguarded(std::string_view text, const std::string& fileName,
-                                 std::string name, std::string checksum) {
-  PreparedRun prepared;
-  prepared.file = fileName;
-  const std::filesystem::path filePath(fileName);
-  prepared.name = name.empty() ? filePath.stem().string() : std::move(name);
-  prepared.checksum = checksum.empty() ? checksumHex(text) : std::move(checksum);
-  RunCsvResult parsed = parseRunCsv(text, fileName);
-  if (!parsed.ok()) {
-    prepared.error = parsed.error().toString();
-    return prepared;
-  }
-  // The reader already refuses everything validateRun checks (non-finite values, bad blocked
-  // and truth cells, ragged columns), each with its line and column.
-  prepared.run = std::move(parsed.run());
-  deriveColumns(prepared, filePath.parent_path());
-  return prepared;
-}
-
-// Never throws: any failure (even out of memory on a worker thread) becomes the file's error.
-PreparedRun prepareText(std::string_view text, const std::string& fileName, std::string name,
-                        std::string checksum) {
-  try {
-    return prepareTextUnguarded(text, fileName, std::move(name), std::move(checksum));
+    return encodeChunk(std::move(parsed.run()), chunks.firstStep(index),
+                       chunks.header().extraColumns.size());
   } catch (const std::exception& e) {
-    PreparedRun prepared;
-    prepared.file = fileName;
-    prepared.error = fileName + ": " + e.what();
-    return prepared;
+    StepChunk failed;
+    failed.error = file + ": " + e.what();
+    return failed;
   }
 }
 
-PreparedRun prepareFile(const std::filesystem::path& path, const std::string& name) {
-  FileText text;
-  std::string error;
-  bool read = false;
-  try {
-    read = text.load(path, error);
-  } catch (const std::exception& e) {
-    error = e.what();
+// The head of a file's text once split into chunks (the header read).
+void describeText(FileHead& head, const RunCsvChunks& chunks) {
+  if (const RunCsvError* error = chunks.error()) {
+    head.error = error->toString();
+    return;
   }
-  if (!read) {
-    PreparedRun prepared;
-    prepared.file = path.string();
-    prepared.name = name.empty() ? path.stem().string() : name;
-    prepared.error = path.string() + ": " + error;
-    return prepared;
-  }
-  return prepareText(text.view(), path.string(), name, {});
+  head.header.metadata = chunks.header().metadata;
+  head.header.extraColumns = chunks.header().extraColumns;
+  head.hasTruth = chunks.hasTruth();
+  head.chunkCount = chunks.size();
+  if (auto error = chunks.checkStepCount(0)) head.noStepsError = error->toString();
+  describeHead(head, std::filesystem::path(head.file).parent_path());
 }
 
-ImportOutcome writePrepared(RunDatabase::Impl& impl, PreparedRun& prepared,
-                            std::int64_t failAfterSteps) {
+// Writes one run in its own transaction: the run row, then the steps chunk by chunk as
+// `takeChunk(i)` hands them over, then the summary blocks. A chunk with an error, or any failure,
+// rolls everything back.
+ImportOutcome writeRun(RunDatabase::Impl& impl, FileHead& head,
+                       const std::function<StepChunk(std::size_t)>& takeChunk,
+                       std::int64_t failAfterSteps) {
   ImportOutcome outcome;
-  outcome.file = prepared.file;
-  outcome.runName = prepared.name;
-  outcome.warnings = std::move(prepared.warnings);
-  if (!prepared.error.empty()) {
-    outcome.message = std::move(prepared.error);
+  outcome.file = head.file;
+  outcome.runName = head.name;
+  outcome.warnings = std::move(head.warnings);
+  if (!head.error.empty()) {
+    outcome.message = std::move(head.error);
     return outcome;
   }
-  const RunData& run = prepared.run;
+  const RunData& header = head.header;
   try {
     {
-      db::Statement& dup = impl.statement("SELECT id, name FROM runs WHERE checksum = ?");
-      dup.bind(1, prepared.checksum);
+      db::Statement& dup =
+          impl.statement("SELECT id, name, step_count FROM runs WHERE checksum = ?");
+      dup.bind(1, head.checksum);
       if (dup.step()) {
         outcome.status = ImportStatus::Skipped;
         outcome.runId = dup.columnInt(0);
         outcome.runName = dup.columnText(1);
-        outcome.steps = static_cast<std::int64_t>(run.stepCount());
-        outcome.message = prepared.file + ": already imported as run '" + outcome.runName +
-                          "' (same checksum " + prepared.checksum + "); skipped";
+        outcome.steps = dup.columnInt(2);
+        outcome.message = head.file + ": already imported as run '" + outcome.runName +
+                          "' (same checksum " + head.checksum + "); skipped";
         dup.reset();
         return outcome;
       }
@@ -258,9 +262,9 @@ ImportOutcome writePrepared(RunDatabase::Impl& impl, PreparedRun& prepared,
     }
     {
       db::Statement& named = impl.statement("SELECT source_file FROM runs WHERE name = ?");
-      named.bind(1, prepared.name);
+      named.bind(1, head.name);
       if (named.step()) {
-        outcome.message = prepared.file + ": a run named '" + prepared.name +
+        outcome.message = head.file + ": a run named '" + head.name +
                           "' already exists (imported from " + named.columnText(0) +
                           "); choose another name";
         named.reset();
@@ -269,9 +273,9 @@ ImportOutcome writePrepared(RunDatabase::Impl& impl, PreparedRun& prepared,
       named.reset();
     }
 
-    // The steps and block rows reference the run row written in this same transaction, so
-    // their per-row foreign-key lookups can be skipped; the pragma only works outside a
-    // transaction and is restored on every path.
+    // The steps and block rows reference the run row written in this same transaction, so their
+    // per-row foreign-key lookups can be skipped; the pragma only works outside a transaction and
+    // is restored on every path.
     struct ForeignKeysOff {
       db::Connection& c;
       explicit ForeignKeysOff(db::Connection& connection) : c(connection) {
@@ -286,51 +290,51 @@ ImportOutcome writePrepared(RunDatabase::Impl& impl, PreparedRun& prepared,
     } foreignKeysOff(impl.connection);
     db::Transaction transaction(impl.connection);
     std::int64_t sceneId = 0;
-    if (!prepared.sceneJson.empty()) {
+    if (!head.sceneJson.empty()) {
       impl.statement("INSERT OR IGNORE INTO scenes(name, checksum, json) VALUES(?, ?, ?)")
-          .bind(1, prepared.sceneName)
-          .bind(2, prepared.sceneChecksum)
-          .bind(3, prepared.sceneJson)
+          .bind(1, head.sceneName)
+          .bind(2, head.sceneChecksum)
+          .bind(3, head.sceneJson)
           .run();
       db::Statement& id = impl.statement("SELECT id FROM scenes WHERE checksum = ?");
-      id.bind(1, prepared.sceneChecksum);
+      id.bind(1, head.sceneChecksum);
       id.step();
       sceneId = id.columnInt(0);
       id.reset();
     }
     const std::string now = utcNow();
+    // step_count is set once the steps are in.
     db::Statement& insertRun = impl.statement(
         "INSERT INTO runs(name, source_file, checksum, scene, scene_id, subject, outcome, dt, "
         "step_count, has_truth, metadata, extra_columns, imported_at) "
-        "VALUES(?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?)");
-    insertRun.bind(1, prepared.name).bind(2, prepared.file).bind(3, prepared.checksum);
-    if (prepared.sceneValue.empty()) {
+        "VALUES(?, ?, ?, ?, ?, ?, ?, ?, 0, ?, ?, ?, ?)");
+    insertRun.bind(1, head.name).bind(2, head.file).bind(3, head.checksum);
+    if (head.sceneValue.empty()) {
       insertRun.bindNull(4);
     } else {
-      insertRun.bind(4, prepared.sceneValue);
+      insertRun.bind(4, head.sceneValue);
     }
     if (sceneId != 0) {
       insertRun.bind(5, sceneId);
     } else {
       insertRun.bindNull(5);
     }
-    const std::string* subject = run.meta("subject");
+    const std::string* subject = header.meta("subject");
     if (subject != nullptr) {
       insertRun.bind(6, *subject);
     } else {
       insertRun.bindNull(6);
     }
-    insertRun.bind(7, runOutcomeName(run.outcome()));
-    if (auto dt = run.dtSeconds()) {
+    insertRun.bind(7, runOutcomeName(header.outcome()));
+    if (auto dt = header.dtSeconds()) {
       insertRun.bind(8, *dt);
     } else {
       insertRun.bindNull(8);
     }
-    insertRun.bind(9, static_cast<std::int64_t>(run.stepCount()))
-        .bind(10, run.hasTruth() ? 1 : 0)
-        .bindBlob(11, prepared.metadataBlob.data(), prepared.metadataBlob.size())
-        .bindBlob(12, prepared.extraColumnsBlob.data(), prepared.extraColumnsBlob.size())
-        .bind(13, now)
+    insertRun.bind(9, head.hasTruth ? 1 : 0)
+        .bindBlob(10, head.metadataBlob.data(), head.metadataBlob.size())
+        .bindBlob(11, head.extraColumnsBlob.data(), head.extraColumnsBlob.size())
+        .bind(12, now)
         .run();
     const std::int64_t runId = impl.connection.lastInsertRowId();
 
@@ -338,34 +342,52 @@ ImportOutcome writePrepared(RunDatabase::Impl& impl, PreparedRun& prepared,
         "INSERT INTO steps(run_id, step, x, y, theta, v, omega, blocked, sensors, extra, truth) "
         "VALUES(?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?)");
     step.bind(1, runId);
-    const bool hasExtra = !prepared.extraBlobs.empty();
+    const bool hasExtra = !header.extraColumns.empty();
     if (!hasExtra) step.bindNull(10);
-    const bool hasTruth = !prepared.packedTruth.empty();
-    if (!hasTruth) step.bindNull(11);
-    const EncodedBlobs& sensors = prepared.sensorBlobs;
-    for (std::size_t i = 0; i < run.stepCount(); ++i) {
-      if (failAfterSteps >= 0 && static_cast<std::int64_t>(i) == failAfterSteps) {
-        throw db::DbError("injected failure after " + std::to_string(i) + " steps");
+    if (!head.hasTruth) step.bindNull(11);
+    SummaryBuilder summary;
+    std::int64_t steps = 0;
+    for (std::size_t c = 0; c < head.chunkCount; ++c) {
+      StepChunk chunk = takeChunk(c);
+      if (!chunk.error.empty()) {
+        outcome.message = std::move(chunk.error);
+        return outcome;  // rolls back
       }
-      step.bind(2, static_cast<std::int64_t>(i))
-          .bind(3, run.x[i])
-          .bind(4, run.y[i])
-          .bind(5, run.theta[i])
-          .bind(6, run.v[i])
-          .bind(7, run.omega[i])
-          .bind(8, static_cast<std::int64_t>(run.blocked[i]))
-          .bindBlob(9, sensors.data(i), sensors.bytes(i));
-      if (hasExtra) step.bindBlob(10, prepared.extraBlobs[i].data(), prepared.extraBlobs[i].size());
-      if (hasTruth) step.bind(11, prepared.packedTruth[i]);
-      step.step();
+      const RunData& rows = chunk.rows;
+      const std::size_t n = rows.stepCount();
+      if (n > 0 && static_cast<std::int64_t>(chunk.firstStep) != steps) {
+        throw db::DbError("steps out of order at step " + std::to_string(chunk.firstStep));
+      }
+      for (std::size_t i = 0; i < n; ++i, ++steps) {
+        if (steps == failAfterSteps) {
+          throw db::DbError("injected failure after " + std::to_string(steps) + " steps");
+        }
+        step.bind(2, steps)
+            .bind(3, rows.x[i])
+            .bind(4, rows.y[i])
+            .bind(5, rows.theta[i])
+            .bind(6, rows.v[i])
+            .bind(7, rows.omega[i])
+            .bind(8, static_cast<std::int64_t>(rows.blocked[i]))
+            .bindBlob(9, chunk.sensors.data(i), chunk.sensors.bytes(i));
+        if (hasExtra) step.bindBlob(10, chunk.extraBlobs[i].data(), chunk.extraBlobs[i].size());
+        if (head.hasTruth) step.bind(11, chunk.packedTruth[i]);
+        step.step();
+      }
+      step.reset();
+      summary.add(rows.sensors.data(), n);
     }
-    step.reset();
+    if (steps == 0 && !head.noStepsError.empty()) {
+      outcome.message = std::move(head.noStepsError);
+      return outcome;  // rolls back
+    }
 
+    const std::vector<EncodedBlobs> levels = encodeSummaryBlocks(std::move(summary).finish());
     db::Statement& block =
         impl.statement("INSERT INTO step_blocks(run_id, level, block, minmax) VALUES(?, ?, ?, ?)");
     block.bind(1, runId);
-    for (std::size_t level = 0; level < prepared.summaryBlobs.size(); ++level) {
-      const EncodedBlobs& blobs = prepared.summaryBlobs[level];
+    for (std::size_t level = 0; level < levels.size(); ++level) {
+      const EncodedBlobs& blobs = levels[level];
       block.bind(2, static_cast<std::int64_t>(level));
       for (std::size_t b = 0; b < blobs.size(); ++b) {
         block.bind(3, static_cast<std::int64_t>(b))
@@ -374,15 +396,30 @@ ImportOutcome writePrepared(RunDatabase::Impl& impl, PreparedRun& prepared,
       }
     }
     block.reset();
+    impl.statement("UPDATE runs SET step_count = ? WHERE id = ?")
+        .bind(1, steps)
+        .bind(2, runId)
+        .run();
     transaction.commit();
     outcome.status = ImportStatus::Imported;
     outcome.runId = runId;
-    outcome.steps = static_cast<std::int64_t>(run.stepCount());
+    outcome.steps = steps;
   } catch (const std::exception& e) {
     outcome.status = ImportStatus::Failed;
     outcome.runId = 0;
-    outcome.message = prepared.file + ": not stored: " + e.what();
+    outcome.message = head.file + ": not stored: " + e.what();
   }
+  return outcome;
+}
+
+std::string runName(const std::string& given, const std::filesystem::path& file) {
+  return given.empty() ? file.stem().string() : given;
+}
+
+ImportOutcome cancelledOutcome(const std::filesystem::path& file) {
+  ImportOutcome outcome;
+  outcome.file = file.string();
+  outcome.message = file.string() + ": cancelled";
   return outcome;
 }
 
@@ -390,27 +427,48 @@ ImportOutcome writePrepared(RunDatabase::Impl& impl, PreparedRun& prepared,
 
 ImportOutcome RunDatabase::importText(std::string_view text, const std::string& fileName,
                                       const ImportOptions& options) {
-  PreparedRun prepared = prepareText(text, fileName, options.name, {});
-  return writePrepared(*impl_, prepared, options.failAfterSteps);
+  FileHead head;
+  head.file = fileName;
+  head.name = runName(options.name, fileName);
+  std::optional<RunCsvChunks> chunks;
+  try {
+    head.checksum = checksumHex(text);
+    chunks.emplace(text, fileName,
+                   options.chunkBytes != 0 ? options.chunkBytes : kDefaultChunkBytes);
+    describeText(head, *chunks);
+  } catch (const std::exception& e) {
+    head.error = fileName + ": " + e.what();
+  }
+  return writeRun(
+      *impl_, head, [&](std::size_t i) { return parseChunk(*chunks, i, fileName); },
+      options.failAfterSteps);
 }
 
 ImportOutcome RunDatabase::importRun(const RunData& run, const std::string& name,
                                      const std::string& sourceFile) {
-  PreparedRun prepared;
-  prepared.file = sourceFile.empty() ? name : sourceFile;
-  prepared.name = name;
+  FileHead head;
+  head.file = sourceFile.empty() ? name : sourceFile;
+  head.name = name;
+  std::optional<StepChunk> chunk;
   if (std::string problem = validateRun(run); !problem.empty()) {
-    prepared.error = prepared.file + ": " + problem;
-    return writePrepared(*impl_, prepared, -1);
+    head.error = head.file + ": " + problem;
+  } else {
+    try {
+      head.checksum = checksumHex(formatRunCsv(run));
+      head.header.metadata = run.metadata;
+      head.header.extraColumns = run.extraColumns;
+      head.hasTruth = run.hasTruth();
+      head.chunkCount = 1;
+      describeHead(head, std::filesystem::path(sourceFile).parent_path());
+      RunData rows = run.clone();
+      rows.metadata.clear();
+      chunk = encodeChunk(std::move(rows), 0, run.extraColumns.size());
+    } catch (const std::exception& e) {
+      head.error = head.file + ": " + e.what();
+    }
   }
-  try {
-    prepared.run = run.clone();
-    prepared.checksum = checksumHex(formatRunCsv(run));
-    deriveColumns(prepared, std::filesystem::path(sourceFile).parent_path());
-  } catch (const std::exception& e) {
-    prepared.error = prepared.file + ": " + e.what();
-  }
-  return writePrepared(*impl_, prepared, -1);
+  return writeRun(
+      *impl_, head, [&](std::size_t) { return std::move(*chunk); }, -1);
 }
 
 std::vector<ImportOutcome> RunDatabase::importFiles(const std::vector<std::filesystem::path>& files,
@@ -428,94 +486,205 @@ std::vector<ImportOutcome> RunDatabase::importFiles(const std::vector<std::files
     }
     return outcomes;
   }
-  unsigned threads = options.threads != 0 ? options.threads : std::thread::hardware_concurrency();
-  threads = std::clamp<unsigned>(threads, 1, static_cast<unsigned>(files.size()));
+  const unsigned threads =
+      std::max(1u, options.threads != 0 ? options.threads : std::thread::hardware_concurrency());
+  const std::size_t chunkBytes = options.chunkBytes != 0 ? options.chunkBytes : kDefaultChunkBytes;
 
-  if (threads == 1 || files.size() == 1) {
-    for (std::size_t i = 0; i < files.size(); ++i) {
-      PreparedRun prepared = prepareFile(files[i], options.name);
-      outcomes.push_back(writePrepared(*impl_, prepared, options.failAfterSteps));
-      if (progress && !progress(i + 1, files.size())) {
-        for (std::size_t j = i + 1; j < files.size(); ++j) {
-          ImportOutcome cancelled;
-          cancelled.file = files[j].string();
-          cancelled.message = files[j].string() + ": cancelled";
-          outcomes.push_back(std::move(cancelled));
-        }
-        break;
-      }
-    }
-    return outcomes;
+  // Checksums already stored: such a file is only read and hashed, not parsed (the writer then
+  // reports it as skipped). Read-only once the workers run.
+  std::unordered_set<std::string> known;
+  try {
+    db::Statement& stored = impl_->statement("SELECT checksum FROM runs");
+    while (stored.step())
+      known.insert(stored.columnText(0));
+    stored.reset();
+  } catch (const std::exception&) {
+    known.clear();  // only an optimisation; the writer checks each file anyway
   }
 
-  // Parsers claim files in order and park their results in slots; the writer (this thread)
-  // takes slot after slot. At most `window` parsed runs wait in memory.
-  const std::size_t window = threads + 1;
-  std::vector<std::optional<PreparedRun>> slots(files.size());
+  // Worker threads read, hash and split each file (its head task, which also parses the first
+  // chunk), then parse the remaining chunks; the writer (this thread) takes the files in order
+  // and each file's chunks in order. Parsed chunks of the file being written are bounded by
+  // `window`, and so are tasks claimed for the files after it.
+  struct Source {
+    FileText text;
+    std::optional<RunCsvChunks> chunks;
+  };
+  struct Job {
+    FileHead head;
+    std::shared_ptr<const Source> source;  // kept by whoever parses one of its chunks
+    bool headClaimed = false;
+    bool headReady = false;
+    bool abandoned = false;     // the writer is done with it; late results are dropped
+    std::size_t nextChunk = 0;  // next chunk to claim (the head task parses chunk 0)
+    std::size_t taken = 0;      // chunks the writer took
+    std::vector<std::optional<StepChunk>> parsed;
+  };
+  std::vector<Job> jobs(files.size());
+  const std::size_t window = 2 * static_cast<std::size_t>(threads) + 2;
   std::mutex mutex;
-  std::condition_variable readyCv;
-  std::condition_variable spaceCv;
-  std::size_t nextToClaim = 0;
-  std::size_t written = 0;
+  std::condition_variable changed;
+  std::size_t current = 0;   // the file being written
+  std::size_t inFlight = 0;  // claimed tasks whose results are not yet taken or dropped
   bool stop = false;
 
-  auto parser = [&] {
+  constexpr std::size_t kHead = static_cast<std::size_t>(-1);
+  // Under the lock: the next task, preferring the file being written, which is never held back
+  // by the later files (so the writer always gets what it waits for).
+  auto claim = [&](std::size_t& file, std::size_t& chunk) {
+    for (std::size_t j = current; j < jobs.size(); ++j) {
+      Job& job = jobs[j];
+      const bool allowed = j == current ? job.nextChunk < job.taken + window : inFlight < window;
+      if (!allowed) return false;
+      if (!job.headClaimed) {
+        job.headClaimed = true;
+        job.nextChunk = 1;
+        file = j;
+        chunk = kHead;
+        ++inFlight;
+        return true;
+      }
+      if (job.headReady && !job.abandoned && job.nextChunk < job.head.chunkCount) {
+        file = j;
+        chunk = job.nextChunk++;
+        ++inFlight;
+        return true;
+      }
+      if (j > current + window) return false;
+    }
+    return false;
+  };
+
+  auto runHead = [&](std::size_t j) {
+    FileHead head;
+    head.file = files[j].string();
+    head.name = runName(options.name, files[j]);
+    auto source = std::make_shared<Source>();
+    std::optional<StepChunk> first;
+    try {
+      std::string error;
+      if (!source->text.load(files[j], error)) {
+        head.error = head.file + ": " + error;
+      } else {
+        head.checksum = checksumHex(source->text.view());
+        if (!known.contains(head.checksum)) {
+          source->chunks.emplace(source->text.view(), head.file, chunkBytes);
+          describeText(head, *source->chunks);
+          if (head.error.empty()) first = parseChunk(*source->chunks, 0, head.file);
+        }
+      }
+    } catch (const std::exception& e) {
+      head.error = head.file + ": " + e.what();
+      first.reset();
+    }
+    if (!head.error.empty() || !first) head.chunkCount = 0;
+    std::lock_guard lock(mutex);
+    Job& job = jobs[j];
+    job.head = std::move(head);
+    job.source = std::move(source);
+    job.parsed.resize(job.head.chunkCount);
+    if (first) {
+      job.parsed[0] = std::move(*first);
+    } else {
+      --inFlight;
+    }
+    job.headReady = true;
+  };
+
+  auto worker = [&] {
+    std::unique_lock lock(mutex);
     while (true) {
-      std::size_t index = 0;
-      {
-        std::unique_lock lock(mutex);
-        spaceCv.wait(lock, [&] { return stop || nextToClaim < written + window; });
-        if (stop || nextToClaim >= files.size()) return;
-        index = nextToClaim++;
+      std::size_t j = 0;
+      std::size_t c = 0;
+      changed.wait(lock, [&] { return stop || claim(j, c); });
+      if (stop) return;
+      if (c == kHead) {
+        lock.unlock();
+        runHead(j);
+      } else {
+        std::shared_ptr<const Source> source = jobs[j].source;
+        const std::string file = jobs[j].head.file;
+        lock.unlock();
+        StepChunk chunk = parseChunk(*source->chunks, c, file);
+        source.reset();
+        lock.lock();
+        if (jobs[j].abandoned) {
+          --inFlight;
+        } else {
+          jobs[j].parsed[c] = std::move(chunk);
+        }
+        lock.unlock();
       }
-      PreparedRun prepared = prepareFile(files[index], options.name);
-      {
-        std::lock_guard lock(mutex);
-        slots[index] = std::move(prepared);
-      }
-      readyCv.notify_all();
+      changed.notify_all();
+      lock.lock();
     }
   };
+
+  auto stopWorkers = [&] {
+    {
+      std::lock_guard lock(mutex);
+      stop = true;
+    }
+    changed.notify_all();
+  };
   std::vector<std::thread> workers;
+  // Stops and joins the workers on every way out, exceptions included.
+  struct Joiner {
+    std::vector<std::thread>& threads;
+    const std::function<void()> stop;
+    ~Joiner() {
+      stop();
+      for (std::thread& t : threads)
+        t.join();
+    }
+  } joiner{workers, stopWorkers};
   for (unsigned t = 0; t < threads; ++t)
-    workers.emplace_back(parser);
+    workers.emplace_back(worker);
 
   bool cancelled = false;
   for (std::size_t i = 0; i < files.size(); ++i) {
     if (cancelled) {
-      ImportOutcome outcome;
-      outcome.file = files[i].string();
-      outcome.message = files[i].string() + ": cancelled";
-      outcomes.push_back(std::move(outcome));
+      outcomes.push_back(cancelledOutcome(files[i]));
       continue;
     }
-    PreparedRun prepared;
+    Job& job = jobs[i];
     {
       std::unique_lock lock(mutex);
-      readyCv.wait(lock, [&] { return slots[i].has_value(); });
-      prepared = std::move(*slots[i]);
-      slots[i].reset();
+      current = i;
+      changed.notify_all();
+      changed.wait(lock, [&] { return job.headReady; });
     }
-    outcomes.push_back(writePrepared(*impl_, prepared, options.failAfterSteps));
+    auto take = [&](std::size_t c) {
+      std::unique_lock lock(mutex);
+      changed.wait(lock, [&] { return job.parsed[c].has_value(); });
+      StepChunk chunk = std::move(*job.parsed[c]);
+      job.parsed[c].reset();
+      ++job.taken;
+      --inFlight;
+      lock.unlock();
+      changed.notify_all();
+      return chunk;
+    };
+    outcomes.push_back(writeRun(*impl_, job.head, take, options.failAfterSteps));
     {
       std::lock_guard lock(mutex);
-      written = i + 1;
+      job.abandoned = true;
+      for (auto& chunk : job.parsed) {
+        if (chunk) {
+          chunk.reset();
+          --inFlight;
+        }
+      }
+      job.source.reset();
+      job.head = FileHead{};
+      if (i + 1 < files.size()) current = i + 1;
     }
-    spaceCv.notify_all();
+    changed.notify_all();
     if (progress && !progress(i + 1, files.size())) {
       cancelled = true;
-      std::lock_guard lock(mutex);
-      stop = true;
-      spaceCv.notify_all();
+      stopWorkers();
     }
   }
-  {
-    std::lock_guard lock(mutex);
-    stop = true;
-  }
-  spaceCv.notify_all();
-  for (auto& worker : workers)
-    worker.join();
   return outcomes;
 }
 

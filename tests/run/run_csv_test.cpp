@@ -59,10 +59,33 @@ std::string replaceField(const std::string& text, std::size_t lineNo, std::size_
   return replaceLine(text, lineNo, line);
 }
 
+// Chunk sizes that cut small files at every line, at some lines, and not at all.
+constexpr std::size_t kChunkSizes[] = {1, 37, 300, std::size_t{1} << 20};
+
+// Parsing in chunks must give exactly the sequential result: the same run or the same error.
+void expectChunkedSame(const std::string& text, const RunCsvResult& sequential) {
+  for (std::size_t chunkBytes : kChunkSizes) {
+    SCOPED_TRACE("chunk bytes " + std::to_string(chunkBytes));
+    RunCsvResult chunked = parseRunCsvParallel(text, "bad.csv", 2, chunkBytes);
+    ASSERT_EQ(chunked.ok(), sequential.ok());
+    if (sequential.ok()) {
+      expectSameRun(chunked.run(), sequential.run());
+      EXPECT_EQ(chunked.run().metadata, sequential.run().metadata);
+      EXPECT_EQ(chunked.run().extraColumns, sequential.run().extraColumns);
+      EXPECT_EQ(chunked.run().extraValues, sequential.run().extraValues);
+    } else {
+      EXPECT_EQ(chunked.error().toString(), sequential.error().toString());
+      EXPECT_EQ(chunked.error().line, sequential.error().line);
+      EXPECT_EQ(chunked.error().columnPosition, sequential.error().columnPosition);
+    }
+  }
+}
+
 // `column` "*" skips the column check.
 RunCsvError expectError(const std::string& text, std::size_t line, const std::string& column,
                         const std::string& fragment) {
   RunCsvResult result = parseRunCsv(text, "bad.csv");
+  expectChunkedSame(text, result);
   EXPECT_FALSE(result.ok()) << "accepted a bad file";
   if (result.ok()) return {};
   const RunCsvError& e = result.error();
@@ -286,6 +309,74 @@ TEST(RunCsvErrors, TrailingBlankLinesAreAccepted) {
   RunCsvResult r = parseRunCsv(validText() + "\n\r\n", "t.csv");
   ASSERT_TRUE(r.ok()) << r.error().toString();
   EXPECT_EQ(r.run().stepCount(), 3u);
+  expectChunkedSame(validText() + "\n\r\n", r);
+}
+
+TEST(RunCsvChunked, ValidFilesParseAlikeWhateverTheChunks) {
+  RunData run = makeRun(500, true, 12);
+  run.extraColumns = {"x_note"};
+  for (std::size_t i = 0; i < run.stepCount(); ++i)
+    run.extraValues.push_back(i % 3 == 0 ? "" : "n" + std::to_string(i));
+  for (const std::string& text :
+       {formatRunCsv(run), formatRunCsv(makeRun(1, false)), formatRunCsv(makeRun(40, false, 5))}) {
+    RunCsvResult sequential = parseRunCsv(text, "bad.csv");
+    ASSERT_TRUE(sequential.ok()) << sequential.error().toString();
+    expectChunkedSame(text, sequential);
+    // Without the final newline, with CRLF and a byte-order mark.
+    expectChunkedSame(text.substr(0, text.size() - 1),
+                      parseRunCsv(text.substr(0, text.size() - 1), "bad.csv"));
+    std::string crlf = "\xEF\xBB\xBF";
+    for (char c : text) {
+      if (c == '\n') crlf += '\r';
+      crlf += c;
+    }
+    expectChunkedSame(crlf, parseRunCsv(crlf, "bad.csv"));
+  }
+}
+
+TEST(RunCsvChunked, ChunksStartAtLinesAndCarryTheirFirstStep) {
+  const std::string text = formatRunCsv(makeRun(100, true, 2));
+  const RunCsvChunks chunks(text, "c.csv", 1000);
+  ASSERT_EQ(chunks.error(), nullptr);
+  ASSERT_GT(chunks.size(), 5u);
+  std::size_t steps = 0;
+  std::size_t bytes = 0;
+  for (std::size_t i = 0; i < chunks.size(); ++i) {
+    EXPECT_EQ(chunks.firstStep(i), steps);
+    EXPECT_GE(chunks.bytes(i), i + 1 < chunks.size() ? 1000u : 1u);
+    RunCsvResult part = chunks.parse(i);
+    ASSERT_TRUE(part.ok()) << part.error().toString();
+    EXPECT_TRUE(part.run().metadata.empty());
+    steps += part.run().stepCount();
+    bytes += chunks.bytes(i);
+  }
+  EXPECT_EQ(steps, 100u);
+  EXPECT_EQ(bytes, text.size() - text.find("\nstep,") - 1 - lineAt(text, kHeader).size() - 1);
+  // Header only: one empty chunk, and the join reports that there are no rows.
+  const std::string headerOnly = text.substr(0, text.find('\n', text.find("\nstep,") + 1) + 1);
+  const RunCsvChunks empty(headerOnly, "h.csv", 1000);
+  ASSERT_EQ(empty.size(), 1u);
+  EXPECT_EQ(empty.bytes(0), 0u);
+  EXPECT_TRUE(empty.checkStepCount(0).has_value());
+  EXPECT_FALSE(empty.checkStepCount(1).has_value());
+}
+
+TEST(RunCsvChunked, FirstErrorInFileOrderWins) {
+  std::string text = formatRunCsv(makeRun(300, true, 4));
+  const std::size_t early = kRow0 + 20;
+  const std::size_t late = kRow0 + 250;
+  text = replaceField(text, late, 3, "late");
+  text = replaceField(text, early, 5, "early");
+  for (std::size_t chunkBytes : kChunkSizes) {
+    RunCsvResult r = parseRunCsvParallel(text, "e.csv", 2, chunkBytes);
+    ASSERT_FALSE(r.ok());
+    EXPECT_EQ(r.error().line, early);
+    EXPECT_EQ(r.error().column, "v");
+  }
+  // A wrong step number in the middle is found however the rows are cut.
+  std::string steps = formatRunCsv(makeRun(300, true, 4));
+  steps = replaceField(steps, kRow0 + 123, 1, "124");
+  expectError(steps, kRow0 + 123, "step", "expected step 123");
 }
 
 TEST(RunCsvErrors, MetadataLineAfterHeader) {

@@ -169,6 +169,70 @@ TEST(Import, ManyFilesInParallelKeepInputOrder) {
   test::expectSameRun(makeRun(105, false, 15), loaded.value());
 }
 
+// Files cut into many small chunks: a bad row late in a file (after chunks of it were written)
+// stores nothing of it and gives the reader's own message; every other file is stored whole; a
+// repeated file is skipped; the result does not depend on the thread count.
+TEST(Import, ChunkedFilesAreAllOrNothingWithTheReadersMessage) {
+  TempDir dir;
+  std::vector<std::filesystem::path> files;
+  std::vector<std::string> texts;
+  for (int i = 0; i < 6; ++i) {
+    RunData run = makeRun(i == 2 ? 3000 : 200 + 50 * i, i % 2 == 0, 30 + i);
+    if (i == 4) {
+      run.extraColumns = {"x_note"};
+      for (std::size_t k = 0; k < run.stepCount(); ++k)
+        run.extraValues.push_back("k" + std::to_string(k));
+    }
+    std::string text = formatRunCsv(run);
+    if (i == 1) {
+      // Break the second-to-last row.
+      const std::size_t last = text.rfind('\n', text.size() - 2);
+      const std::size_t before = text.rfind('\n', last - 1);
+      text.replace(before + 1, 3, "zz,");
+    }
+    files.push_back(dir / ("f" + std::to_string(i) + ".csv"));
+    writeText(files.back(), text);
+    texts.push_back(text);
+  }
+  files.push_back(files[0]);  // the same file again
+  const RunCsvResult expectedError = parseRunCsv(texts[1], files[1].string());
+  ASSERT_FALSE(expectedError.ok());
+  for (unsigned threads : {1u, 2u, 3u}) {
+    SCOPED_TRACE("threads " + std::to_string(threads));
+    auto db = test::openDb(dir / ("t" + std::to_string(threads) + ".db"));
+    ImportOptions options;
+    options.threads = threads;
+    options.chunkBytes = 1500;  // two or three rows a chunk
+    const auto outcomes = db->importFiles(files, options);
+    ASSERT_EQ(outcomes.size(), files.size());
+    EXPECT_EQ(outcomes[1].status, ImportStatus::Failed);
+    EXPECT_EQ(outcomes[1].message, expectedError.error().toString());
+    EXPECT_EQ(outcomes[6].status, ImportStatus::Skipped) << outcomes[6].message;
+    EXPECT_EQ(outcomes[6].runId, outcomes[0].runId);
+    EXPECT_FALSE(db->findRun("f1").ok());
+    for (int i : {0, 2, 3, 4, 5}) {
+      ASSERT_EQ(outcomes[i].status, ImportStatus::Imported) << outcomes[i].message;
+      RunCsvResult parsed = parseRunCsv(texts[i], "x.csv");
+      ASSERT_TRUE(parsed.ok());
+      EXPECT_EQ(outcomes[i].steps, static_cast<std::int64_t>(parsed.run().stepCount()));
+      auto loaded = db->loadRun(outcomes[i].runId);
+      ASSERT_TRUE(loaded.ok()) << loaded.error();
+      EXPECT_TRUE(loaded.value() == parsed.run()) << "file " << i;
+      auto info = db->runInfo(outcomes[i].runId);
+      ASSERT_TRUE(info.ok());
+      EXPECT_EQ(info->stepCount, outcomes[i].steps);
+    }
+    // Importing the same files again reads them but stores nothing new.
+    const auto again = db->importFiles(files, options);
+    for (int i : {0, 2, 3, 4, 5}) {
+      EXPECT_EQ(again[i].status, ImportStatus::Skipped);
+      EXPECT_EQ(again[i].steps, outcomes[i].steps);
+    }
+    EXPECT_EQ(again[1].message, expectedError.error().toString());
+    EXPECT_EQ(db->check().steps, 200 + 3000 + 350 + 400 + 450);
+  }
+}
+
 TEST(Import, CancelStopsAfterTheFileBeingWritten) {
   TempDir dir;
   std::vector<std::filesystem::path> files;
