@@ -9,6 +9,7 @@
 #include <array>
 #include <cstdint>
 #include <filesystem>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
@@ -111,6 +112,11 @@ struct ImportOutcome {
   std::vector<std::string> warnings;  // e.g. a scene that could not be resolved
 };
 
+// Scene JSON for a run's `scene` value that is not a built-in scene name, or nullopt to fall back
+// to reading it as a file path. Lets a caller that links the simulator store procedural scenes
+// (`random:N:SEED`) without storage depending on it. Called from worker threads.
+using SceneResolver = std::function<std::optional<std::string>(const std::string& scene)>;
+
 struct ImportOptions {
   // The run's name; only for a single file. Empty: the file's stem.
   std::string name;
@@ -119,6 +125,8 @@ struct ImportOptions {
   // Files are parsed in chunks of about this many bytes, so that one big file is parsed on
   // several threads while its first steps are written; 0 = the default (4 MiB).
   std::size_t chunkBytes = 0;
+  // Tried after the built-in scenes and before file paths; may be empty.
+  SceneResolver sceneResolver;
   // Test hook: throw after writing this many steps of a run (checks that nothing is kept).
   std::int64_t failAfterSteps = -1;
 };
@@ -190,7 +198,8 @@ class RunDatabase {
                            const ImportOptions& options = {});
   // Stores a run built in memory (e.g. just recorded). The checksum is that of its CSV text.
   ImportOutcome importRun(const RunData& run, const std::string& name,
-                          const std::string& sourceFile = {});
+                          const std::string& sourceFile = {},
+                          const SceneResolver& sceneResolver = {});
 
   Result<std::vector<RunInfo>> listRuns();
   Result<RunInfo> findRun(std::string_view name);

@@ -131,13 +131,16 @@ std::string validateRun(const RunData& run) {
   return {};
 }
 
-void resolveScene(FileHead& prepared, const std::filesystem::path& baseDir) {
+void resolveScene(FileHead& prepared, const std::filesystem::path& baseDir,
+                  const SceneResolver& resolver) {
   const std::string* scene = prepared.header.meta("scene");
   if (scene == nullptr || scene->empty()) return;
   prepared.sceneValue = *scene;
   std::string json;
   if (auto builtin = builtinSceneJson(*scene)) {
     json = std::string(*builtin);
+  } else if (std::optional<std::string> resolved = resolver ? resolver(*scene) : std::nullopt) {
+    json = std::move(*resolved);
   } else {
     std::filesystem::path scenePath(*scene);
     if (scenePath.is_relative()) scenePath = baseDir / scenePath;
@@ -163,7 +166,8 @@ void resolveScene(FileHead& prepared, const std::filesystem::path& baseDir) {
 }
 
 // Metadata blobs and the scene, from the header (metadata and x_ names) of a run.
-void describeHead(FileHead& head, const std::filesystem::path& baseDir) {
+void describeHead(FileHead& head, const std::filesystem::path& baseDir,
+                  const SceneResolver& resolver) {
   // Length-prefixed bytes rather than JSON: metadata is kept byte for byte, even text that is not
   // valid UTF-8 (which a JSON library would refuse or alter).
   std::vector<std::string> pairs;
@@ -174,7 +178,7 @@ void describeHead(FileHead& head, const std::filesystem::path& baseDir) {
   head.metadataBlob = encodeExtra(pairs.data(), pairs.size());
   head.extraColumnsBlob =
       encodeExtra(head.header.extraColumns.data(), head.header.extraColumns.size());
-  resolveScene(head, baseDir);
+  resolveScene(head, baseDir, resolver);
 }
 
 StepChunk encodeChunk(RunData rows, std::size_t firstStep, std::size_t extraColumns) {
@@ -215,7 +219,7 @@ StepChunk parseChunk(const RunCsvChunks& chunks, std::size_t index, const std::s
 }
 
 // The head of a file's text once split into chunks (the header read).
-void describeText(FileHead& head, const RunCsvChunks& chunks) {
+void describeText(FileHead& head, const RunCsvChunks& chunks, const SceneResolver& resolver) {
   if (const RunCsvError* error = chunks.error()) {
     head.error = error->toString();
     return;
@@ -225,7 +229,7 @@ void describeText(FileHead& head, const RunCsvChunks& chunks) {
   head.hasTruth = chunks.hasTruth();
   head.chunkCount = chunks.size();
   if (auto error = chunks.checkStepCount(0)) head.noStepsError = error->toString();
-  describeHead(head, std::filesystem::path(head.file).parent_path());
+  describeHead(head, std::filesystem::path(head.file).parent_path(), resolver);
 }
 
 // Writes one run in its own transaction: the run row, then the steps chunk by chunk as
@@ -435,7 +439,7 @@ ImportOutcome RunDatabase::importText(std::string_view text, const std::string& 
     head.checksum = checksumHex(text);
     chunks.emplace(text, fileName,
                    options.chunkBytes != 0 ? options.chunkBytes : kDefaultChunkBytes);
-    describeText(head, *chunks);
+    describeText(head, *chunks, options.sceneResolver);
   } catch (const std::exception& e) {
     head.error = fileName + ": " + e.what();
   }
@@ -445,7 +449,8 @@ ImportOutcome RunDatabase::importText(std::string_view text, const std::string& 
 }
 
 ImportOutcome RunDatabase::importRun(const RunData& run, const std::string& name,
-                                     const std::string& sourceFile) {
+                                     const std::string& sourceFile,
+                                     const SceneResolver& sceneResolver) {
   FileHead head;
   head.file = sourceFile.empty() ? name : sourceFile;
   head.name = name;
@@ -459,7 +464,7 @@ ImportOutcome RunDatabase::importRun(const RunData& run, const std::string& name
       head.header.extraColumns = run.extraColumns;
       head.hasTruth = run.hasTruth();
       head.chunkCount = 1;
-      describeHead(head, std::filesystem::path(sourceFile).parent_path());
+      describeHead(head, std::filesystem::path(sourceFile).parent_path(), sceneResolver);
       RunData rows = run.clone();
       rows.metadata.clear();
       chunk = encodeChunk(std::move(rows), 0, run.extraColumns.size());
@@ -569,7 +574,7 @@ std::vector<ImportOutcome> RunDatabase::importFiles(const std::vector<std::files
         head.checksum = checksumHex(source->text.view());
         if (!known.contains(head.checksum)) {
           source->chunks.emplace(source->text.view(), head.file, chunkBytes);
-          describeText(head, *source->chunks);
+          describeText(head, *source->chunks, options.sceneResolver);
           if (head.error.empty()) first = parseChunk(*source->chunks, 0, head.file);
         }
       }

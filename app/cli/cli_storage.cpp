@@ -16,6 +16,7 @@
 
 #include "app/cli/cli_common.h"
 #include "sim/run_csv.h"
+#include "sim/scene_source.h"
 #include "storage/run_database.h"
 #include "storage/synthetic_run.h"
 
@@ -73,6 +74,15 @@ struct ImportArgs {
   bool json = false;
 };
 
+// Stores procedural scenes (`random:N:SEED`) by generating them again; storage itself does not
+// link the simulator. Built-in names and file paths are left to storage.
+std::optional<std::string> proceduralSceneJson(const std::string& scene) {
+  if (!scene.starts_with("random:")) return std::nullopt;
+  SceneResult generated = loadScene(scene);
+  if (!generated.ok()) return std::nullopt;
+  return sceneToJson(*generated.scene);
+}
+
 int runImport(const ImportArgs& a) {
   std::vector<fs::path> files = expandInputs(a.files);
   if (!a.name.empty() && files.size() != 1) {
@@ -82,6 +92,7 @@ int runImport(const ImportArgs& a) {
   storage::ImportOptions options;
   options.name = a.name;
   options.threads = a.threads;
+  options.sceneResolver = proceduralSceneJson;
   const auto t0 = std::chrono::steady_clock::now();
   const auto outcomes = db->importFiles(files, options);
   const double seconds =

@@ -312,6 +312,40 @@ TEST(Import, UnresolvableSceneIsAWarningNotAFailure) {
   EXPECT_EQ(db->findRun("lost")->scene, "no-such-scene");
 }
 
+// The caller's resolver supplies scenes storage cannot (procedural ones); it is not asked for
+// built-in names, and declining falls back to the file path (here: a warning).
+TEST(Import, SceneResolverSuppliesScenesStorageCannotResolve) {
+  std::vector<std::string> asked;
+  ImportOptions options;
+  options.sceneResolver = [&](const std::string& scene) -> std::optional<std::string> {
+    asked.push_back(scene);
+    if (scene != "random:5:1") return std::nullopt;
+    return std::string(R"({"name": "generated", "obstacles": []})");
+  };
+  auto db = test::openDb(":memory:");
+  RunData run = makeRun(8, false, 1);
+  run.setMeta("scene", "random:5:1");
+  const auto generated = db->importText(formatRunCsv(run), "/tmp/x/gen.csv", options);
+  ASSERT_EQ(generated.status, ImportStatus::Imported) << generated.message;
+  EXPECT_TRUE(generated.warnings.empty());
+  auto json = db->sceneJson(generated.runId);
+  ASSERT_TRUE(json.ok() && json->has_value());
+  EXPECT_NE(json->value().find("generated"), std::string::npos);
+
+  run = makeRun(8, false, 2);
+  run.setMeta("scene", "random:6:1");
+  const auto declined = db->importText(formatRunCsv(run), "/tmp/x/declined.csv", options);
+  ASSERT_EQ(declined.status, ImportStatus::Imported) << declined.message;
+  EXPECT_EQ(declined.warnings.size(), 1u);
+  EXPECT_FALSE(db->sceneJson(declined.runId)->has_value());
+
+  run = makeRun(8, false, 3);  // scene "practice", a built-in
+  const auto builtin = db->importText(formatRunCsv(run), "/tmp/x/builtin.csv", options);
+  ASSERT_EQ(builtin.status, ImportStatus::Imported) << builtin.message;
+  EXPECT_TRUE(db->sceneJson(builtin.runId)->has_value());
+  EXPECT_EQ(asked, (std::vector<std::string>{"random:5:1", "random:6:1"}));
+}
+
 TEST(Import, RecordedRunThenItsExportedFileIsADuplicate) {
   TempDir dir;
   auto db = test::openDb(":memory:");
