@@ -212,10 +212,6 @@ class Parser {
     return e;
   }
 
-  RunCsvError fail(std::size_t line, std::string message, int column = -1) {
-    return makeError(line, std::move(message), column);
-  }
-
   bool setError(std::size_t line, std::string message, int column = -1) {
     error_ = makeError(line, std::move(message), column);
     return false;
