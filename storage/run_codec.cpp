@@ -57,22 +57,50 @@ SummaryBlocks computeSummaryBlocks(const double* sensors, std::size_t steps) {
   return std::move(builder).finish();
 }
 
-void SummaryBuilder::add(const double* sensors, std::size_t steps) {
+PartialSummary summarizeSteps(const double* sensors, std::size_t firstStep, std::size_t steps) {
   const auto size = static_cast<std::size_t>(kSummaryBlockSteps[0]);
-  for (std::size_t s = 0; s < steps; ++s, ++steps_) {
+  PartialSummary part;
+  part.firstStep = firstStep;
+  part.steps = steps;
+  if (steps == 0) return part;
+  part.blocks.reserve(((firstStep + steps - 1) / size - firstStep / size + 1) * kSummaryValues);
+  for (std::size_t s = 0; s < steps; ++s) {
     const double* row = sensors + s * kValuesPerStep;
-    if (steps_ % size == 0) {
-      finest_.insert(finest_.end(), row, row + kValuesPerStep);  // minima
-      finest_.insert(finest_.end(), row, row + kValuesPerStep);  // maxima
+    if (s == 0 || (firstStep + s) % size == 0) {
+      part.blocks.insert(part.blocks.end(), row, row + kValuesPerStep);  // minima
+      part.blocks.insert(part.blocks.end(), row, row + kValuesPerStep);  // maxima
       continue;
     }
-    double* mins = finest_.data() + finest_.size() - kSummaryValues;
+    double* mins = part.blocks.data() + part.blocks.size() - kSummaryValues;
     double* maxs = mins + kValuesPerStep;
     for (int k = 0; k < kValuesPerStep; ++k) {
       mins[k] = std::min(mins[k], row[k]);
       maxs[k] = std::max(maxs[k], row[k]);
     }
   }
+  return part;
+}
+
+void SummaryBuilder::add(const double* sensors, std::size_t steps) {
+  merge(summarizeSteps(sensors, steps_, steps));
+}
+
+void SummaryBuilder::merge(const PartialSummary& part) {
+  if (part.firstStep != steps_) throw std::logic_error("summary part does not follow on");
+  if (part.steps == 0) return;
+  const double* from = part.blocks.data();
+  // A part that starts inside a block finishes the last block so far.
+  if (steps_ % static_cast<std::size_t>(kSummaryBlockSteps[0]) != 0) {
+    double* mins = finest_.data() + finest_.size() - kSummaryValues;
+    double* maxs = mins + kValuesPerStep;
+    for (int k = 0; k < kValuesPerStep; ++k) {
+      mins[k] = std::min(mins[k], from[k]);
+      maxs[k] = std::max(maxs[k], from[kValuesPerStep + k]);
+    }
+    from += kSummaryValues;
+  }
+  finest_.insert(finest_.end(), from, part.blocks.data() + part.blocks.size());
+  steps_ += part.steps;
 }
 
 SummaryBlocks SummaryBuilder::finish() && {

@@ -38,10 +38,24 @@ bool unpackTruth(std::int64_t packed, ContactClass* classes);
 using SummaryBlocks = std::vector<std::vector<double>>;
 SummaryBlocks computeSummaryBlocks(const double* sensors, std::size_t steps);
 
-// The same, fed step after step in pieces of any length.
+// Finest-level minima and maxima of the steps [firstStep, firstStep + steps) of a run, one entry
+// of kSummaryValues per block they touch (the first and last maybe partial). Computed per chunk
+// on the import workers.
+struct PartialSummary {
+  std::size_t firstStep = 0;
+  std::size_t steps = 0;
+  std::vector<double> blocks;
+};
+PartialSummary summarizeSteps(const double* sensors, std::size_t firstStep, std::size_t steps);
+
+// The blocks of a run fed in consecutive pieces of any length.
 class SummaryBuilder {
  public:
+  // The next `steps` steps.
   void add(const double* sensors, std::size_t steps);
+  // The partial summary of the next steps; throws std::logic_error unless it starts where the
+  // steps so far end.
+  void merge(const PartialSummary& part);
   SummaryBlocks finish() &&;
 
  private:

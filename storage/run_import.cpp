@@ -101,6 +101,7 @@ struct StepChunk {
   EncodedBlobs sensors;                   // one per step
   std::vector<std::int64_t> packedTruth;  // one per step when the run has truth
   std::vector<std::string> extraBlobs;    // one per step when there are x_ columns
+  PartialSummary summary;                 // finest-level blocks of these steps
 };
 
 // Rejects runs that cannot be stored faithfully (hand-built ones; the reader checks files).
@@ -186,6 +187,7 @@ StepChunk encodeChunk(RunData rows, std::size_t firstStep, std::size_t extraColu
   chunk.firstStep = firstStep;
   const std::size_t n = rows.stepCount();
   chunk.sensors = encodeStepSensors(rows.sensors.data(), n);
+  chunk.summary = summarizeSteps(rows.sensors.data(), firstStep, n);
   if (rows.hasTruth()) {
     chunk.packedTruth.resize(n);
     for (std::size_t i = 0; i < n; ++i)
@@ -379,7 +381,7 @@ ImportOutcome writeRun(RunDatabase::Impl& impl, FileHead& head,
         step.step();
       }
       step.reset();
-      summary.add(rows.sensors.data(), n);
+      if (n > 0) summary.merge(chunk.summary);
     }
     if (steps == 0 && !head.noStepsError.empty()) {
       outcome.message = std::move(head.noStepsError);

@@ -1,5 +1,6 @@
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <fstream>
 
 #include "sim/run_csv.h"
@@ -221,6 +222,25 @@ TEST(Import, ChunkedFilesAreAllOrNothingWithTheReadersMessage) {
       auto info = db->runInfo(outcomes[i].runId);
       ASSERT_TRUE(info.ok());
       EXPECT_EQ(info->stepCount, outcomes[i].steps);
+      // Summary blocks assembled from the chunks are exact: with ~20-step buckets the summary
+      // comes from the 16-step blocks, each compared with the steps it covers.
+      const RunData& steps = parsed.run();
+      auto summary =
+          db->loadSummary(outcomes[i].runId, 0, -1, static_cast<int>(steps.stepCount() / 20));
+      ASSERT_TRUE(summary.ok()) << summary.error();
+      EXPECT_EQ(summary->blockSteps, 16);
+      for (const SummaryBucket& bucket : summary->buckets) {
+        for (int k = 0; k < kValuesPerStep; ++k) {
+          double lo = steps.sensors[bucket.firstStep * kValuesPerStep + k];
+          double hi = lo;
+          for (std::int64_t step = bucket.firstStep; step <= bucket.lastStep; ++step) {
+            lo = std::min(lo, steps.sensors[step * kValuesPerStep + k]);
+            hi = std::max(hi, steps.sensors[step * kValuesPerStep + k]);
+          }
+          ASSERT_EQ(bucket.min[k], lo) << "file " << i << " step " << bucket.firstStep;
+          ASSERT_EQ(bucket.max[k], hi) << "file " << i << " step " << bucket.firstStep;
+        }
+      }
     }
     // Importing the same files again reads them but stores nothing new.
     const auto again = db->importFiles(files, options);

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <limits>
 #include <random>
+#include <stdexcept>
 
 #include "sim/run_csv.h"
 #include "storage/run_codec.h"
@@ -181,6 +182,26 @@ TEST(RunCodec, ExtraValuesRoundTripAndRejectTruncation) {
   EXPECT_EQ(out, values);
   out.clear();
   EXPECT_FALSE(decodeExtra(blob.data(), blob.size() - 1, values.size(), out));
+}
+
+// Summaries built from parts of any length (as the import's chunks are) equal the whole-run ones.
+TEST(RunCodec, SummaryFromPartsEqualsTheWholeRun) {
+  const RunData run = makeRun(20000, false, 8);
+  const SummaryBlocks whole = computeSummaryBlocks(run.sensors.data(), run.stepCount());
+  std::mt19937 rng(5);
+  for (int trial = 0; trial < 20; ++trial) {
+    SummaryBuilder builder;
+    std::size_t at = 0;
+    while (at < run.stepCount()) {
+      const std::size_t n = std::min<std::size_t>(run.stepCount() - at, 1 + rng() % 3000);
+      builder.merge(summarizeSteps(run.stepSensors(at), at, n));
+      at += n;
+    }
+    EXPECT_EQ(std::move(builder).finish(), whole) << "trial " << trial;
+  }
+  SummaryBuilder gap;
+  gap.merge(summarizeSteps(run.stepSensors(0), 0, 10));
+  EXPECT_THROW(gap.merge(summarizeSteps(run.stepSensors(11), 11, 10)), std::logic_error);
 }
 
 TEST(RunCodec, PackedTruthRoundTripsAndRejectsBadCodes) {
