@@ -132,11 +132,11 @@ std::string validateRun(const RunData& run) {
   return {};
 }
 
-void resolveScene(FileHead& prepared, const std::filesystem::path& baseDir,
+void resolveScene(FileHead& head, const std::filesystem::path& baseDir,
                   const SceneResolver& resolver) {
-  const std::string* scene = prepared.header.meta("scene");
+  const std::string* scene = head.header.meta("scene");
   if (scene == nullptr || scene->empty()) return;
-  prepared.sceneValue = *scene;
+  head.sceneValue = *scene;
   std::string json;
   if (auto builtin = builtinSceneJson(*scene)) {
     json = std::string(*builtin);
@@ -147,23 +147,22 @@ void resolveScene(FileHead& prepared, const std::filesystem::path& baseDir,
     if (scenePath.is_relative()) scenePath = baseDir / scenePath;
     std::string error;
     if (!readFileText(scenePath, json, error)) {
-      prepared.warnings.push_back("scene '" + *scene +
-                                  "' is neither a built-in scene nor a readable file (" +
-                                  scenePath.string() + "); the run is stored without its scene");
+      head.warnings.push_back("scene '" + *scene +
+                              "' is neither a built-in scene nor a readable file (" +
+                              scenePath.string() + "); the run is stored without its scene");
       return;
     }
   }
   const nlohmann::json parsed = nlohmann::json::parse(json, nullptr, false);
   if (parsed.is_discarded() || !parsed.is_object()) {
-    prepared.warnings.push_back("scene '" + *scene +
-                                "' is not a JSON object; the run is stored without its scene");
+    head.warnings.push_back("scene '" + *scene +
+                            "' is not a JSON object; the run is stored without its scene");
     return;
   }
   const auto name = parsed.find("name");
-  prepared.sceneName =
-      name != parsed.end() && name->is_string() ? name->get<std::string>() : *scene;
-  prepared.sceneChecksum = checksumHex(json);
-  prepared.sceneJson = std::move(json);
+  head.sceneName = name != parsed.end() && name->is_string() ? name->get<std::string>() : *scene;
+  head.sceneChecksum = checksumHex(json);
+  head.sceneJson = std::move(json);
 }
 
 // Metadata blobs and the scene, from the header (metadata and x_ names) of a run.
