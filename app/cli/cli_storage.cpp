@@ -283,7 +283,7 @@ double timeSqliteShellImport(const std::vector<fs::path>& files, const fs::path&
   const fs::path script = dbPath.string() + ".sql";
   {
     std::ofstream out(script);
-    out << "PRAGMA page_size = 8192;\nPRAGMA journal_mode = WAL;\nPRAGMA synchronous = NORMAL;\n"
+    out << "PRAGMA page_size = 16384;\nPRAGMA journal_mode = WAL;\nPRAGMA synchronous = NORMAL;\n"
         << "PRAGMA cache_size = -262144;\n";
     for (const fs::path& file : files) {
       out << ".import --csv --skip " << metadataLines << " '" << file.string() << "' steps\n";

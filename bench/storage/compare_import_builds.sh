@@ -7,6 +7,7 @@
 #   big        one file of 1,000,000 steps of the same kind
 #   wallfollow 400 simulated wall-following runs in room3, up to 4,000 steps each (~976,000 steps)
 #   random     500 simulated random-walk runs in room1, up to 2,000 steps each (~997,000 steps)
+#   tiny       20,000 simulated random-walk runs in room1 of 50 steps each (1,000,000 steps)
 # Each round imports every data set into a new database with each build (order alternating) and
 # prints one line: build, data set, steps, wall seconds, user+sys CPU seconds.
 set -eu
@@ -15,6 +16,10 @@ NEW=$2
 ROUNDS=${3:-3}
 DIR=${4:-$(mktemp -d)}
 mkdir -p "$DIR"
+if [ ! -d "$DIR/tiny" ]; then
+  "$NEW" simulate --scene room1 --driver random --steps 50 --runs 20000 --seed 1 \
+    --out-dir "$DIR/tiny" --quiet > /dev/null
+fi
 if [ ! -f "$DIR/synthetic/bench-7.csv" ]; then
   "$NEW" bench storage --steps 1000000 --files 8 --big-steps 1000000 --repeats 1 --no-compare \
     --dir "$DIR/synthetic" --keep > /dev/null
@@ -36,7 +41,7 @@ measure() {  # build-label tactile data-set
 i=1
 while [ "$i" -le "$ROUNDS" ]; do
   echo "# round $i, $(uptime)" >&2
-  for set in synthetic big wallfollow random; do
+  for set in synthetic big wallfollow random tiny; do
     if [ $((i % 2)) -eq 1 ]; then
       measure base "$BASE" "$set"
       measure new "$NEW" "$set"
