@@ -154,8 +154,8 @@ void ClassModelSet::oneVsRestLogRatio(const Eigen::MatrixXd& samples, int c,
 
 // ---------------------------------------------------------------------------------------------
 
-std::optional<GaussianMixture> fitGaussian(const Eigen::MatrixXd& samples, double floor,
-                                           std::string* error) {
+std::optional<GaussianMixture> fitGaussian(const Eigen::MatrixXd& samples, double varianceFloor,
+                                           Regularization reg, std::string* error) {
   const auto fail = [&](const std::string& message) -> std::optional<GaussianMixture> {
     if (error) *error = message;
     return std::nullopt;
@@ -168,12 +168,18 @@ std::optional<GaussianMixture> fitGaussian(const Eigen::MatrixXd& samples, doubl
     return fail(std::to_string(n) + " samples are fewer than the " + std::to_string(d) +
                 " dimensions");
   if (!samples.allFinite()) return fail("the samples contain a non-finite value");
-  if (!(floor >= 0.0) || !std::isfinite(floor)) return fail("the variance floor must be >= 0");
+  if (!(varianceFloor >= 0.0) || !std::isfinite(varianceFloor))
+    return fail("the variance floor must be >= 0");
   const Eigen::RowVectorXd mean = samples.colwise().mean();
   const Eigen::MatrixXd centred = samples.rowwise() - mean;
   Eigen::MatrixXd cov = (centred.transpose() * centred) / static_cast<double>(n - 1);
   cov = 0.5 * (cov + cov.transpose());
-  if (floor > 0.0) cov = clampEigenvalues(cov, floor);
+  if (varianceFloor > 0.0) {
+    if (reg == Regularization::Add)
+      cov.diagonal().array() += varianceFloor;
+    else
+      cov = clampEigenvalues(cov, varianceFloor);
+  }
   std::string why;
   auto model = GaussianMixture::create(Eigen::VectorXd::Ones(1), mean, {cov},
                                        CovarianceForm::NodalFull, &why);
@@ -241,18 +247,29 @@ ClassifierFit trainClassifier(const std::vector<Eigen::MatrixXd>& samplesPerClas
   fit.iterations.assign(classes, 0);
   std::vector<char> converged(classes, 0);  // not vector<bool>: written from several threads
   fit.trainMeanLogLikelihood.assign(classes, 0.0);
+  fit.droppedComponents.assign(classes, 0);
+  fit.likelihoodDrop.assign(classes, 0.0);
   std::atomic<std::size_t> next{0};
   std::atomic<bool> cancelled{false};
   std::mutex progressMutex;
   std::size_t done = 0;
-  const ProgressFn inner = [&](std::size_t, std::size_t) { return !cancelled.load(); };
+  // Called by every running fit after each EM iteration: consults the caller's progress, so a
+  // cancel stops running fits within one iteration.
+  const ProgressFn inner = [&](std::size_t, std::size_t) {
+    if (cancelled.load()) return false;
+    if (!progress) return true;
+    std::lock_guard<std::mutex> lock(progressMutex);
+    if (cancelled.load()) return false;
+    if (!progress(done, taskCount)) cancelled = true;
+    return !cancelled.load();
+  };
 
   const auto runTask = [&](std::size_t t) {
     if (t < classes) {
       const Eigen::MatrixXd& x = samplesPerClass[t];
       if (options.method == ClassifierMethod::Gaussian) {
         std::string why;
-        results[t] = fitGaussian(x, options.gmm.floor, &why);
+        results[t] = fitGaussian(x, options.gmm.varianceFloor, options.gmm.reg, &why);
         reasons[t] = why;
         fit.iterations[t] = 1;
         converged[t] = results[t].has_value() ? 1 : 0;
@@ -266,6 +283,8 @@ ClassifierFit trainClassifier(const std::vector<Eigen::MatrixXd>& samplesPerClas
           fit.iterations[t] = g.iterations;
           converged[t] = g.converged ? 1 : 0;
           fit.trainMeanLogLikelihood[t] = g.meanLogLikelihood;
+          fit.droppedComponents[t] = g.droppedComponents;
+          fit.likelihoodDrop[t] = g.likelihoodDrop;
         } else {
           reasons[t] = g.reason;
         }
@@ -280,12 +299,12 @@ ClassifierFit trainClassifier(const std::vector<Eigen::MatrixXd>& samplesPerClas
         row += samplesPerClass[o].rows();
       }
       std::string why;
-      results[t] = fitGaussian(rest, options.gmm.floor, &why);
+      results[t] = fitGaussian(rest, options.gmm.varianceFloor, options.gmm.reg, &why);
       reasons[t] = why;
     }
     std::lock_guard<std::mutex> lock(progressMutex);
     ++done;
-    if (progress && !progress(done, taskCount)) cancelled = true;
+    if (!cancelled.load() && progress && !progress(done, taskCount)) cancelled = true;
   };
   const auto worker = [&] {
     while (!cancelled.load()) {
@@ -333,8 +352,36 @@ ClassifierFit trainClassifier(const std::vector<Eigen::MatrixXd>& samplesPerClas
                                    std::move(rest), &error);
   if (!set) return fail(error);
   fit.model = std::move(*set);
+  // The floor against each feature's variance over every class's rows together: the spread that
+  // could tell the classes apart.
+  Eigen::MatrixXd all(totalRows, d);
+  Eigen::Index row = 0;
+  for (const auto& x : samplesPerClass) {
+    all.middleRows(row, x.rows()) = x;
+    row += x.rows();
+  }
+  fit.warnings = varianceFloorWarnings(all, options.gmm.varianceFloor, options.featureNames);
   fit.ok = true;
   return fit;
+}
+
+HeldOutLogLikelihood heldOutLogLikelihood(const Eigen::MatrixXd& logLik,
+                                          const std::vector<int>& truth) {
+  HeldOutLogLikelihood out;
+  double sum = 0.0;
+  for (std::size_t r = 0; r < truth.size(); ++r) {
+    const int c = truth[r];
+    if (c < 0) continue;
+    const double v = logLik(static_cast<Eigen::Index>(r), c);
+    if (!std::isfinite(v)) {
+      ++out.negInfRows;
+      continue;
+    }
+    sum += v;
+    ++out.rows;
+  }
+  if (out.rows > 0) out.mean = sum / static_cast<double>(out.rows);
+  return out;
 }
 
 }  // namespace tactile

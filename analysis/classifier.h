@@ -28,14 +28,17 @@ std::optional<PriorMode> parsePriorMode(std::string_view name);
 
 struct ClassifierOptions {
   ClassifierMethod method = ClassifierMethod::Gmm;
-  // GMM settings (method Gmm). For method Gaussian only `floor` is used: 0 = plain unbiased
-  // covariance (singular is an error), > 0 = its eigenvalues clamped at `floor`.
+  // GMM settings (method Gmm). For method Gaussian only `varianceFloor` and `reg` are used: floor
+  // 0 = plain unbiased covariance (singular is an error); > 0 = its eigenvalues clamped at the
+  // floor (reg Floor) or the floor added to its diagonal (reg Add).
   GmmOptions gmm;
   PriorMode priors = PriorMode::Equal;
   // Gaussian method: also fit a "rest" Gaussian per class (all other classes' samples) for the
   // one-vs-rest log-likelihood ratio of thesis 4.3.
   bool oneVsRest = true;
   int threads = 1;  // 0 = all cores; results do not depend on it
+  // Names of the feature columns, used in warnings only (empty: "feature j").
+  std::vector<std::string> featureNames;
 };
 
 // A trained (or loaded) classifier: one GaussianMixture per class (a one-component NodalFull
@@ -95,22 +98,45 @@ struct ClassifierFit {
   std::vector<int> iterations;                 // per class (1 for the Gaussian method)
   std::vector<bool> converged;                 // per class
   std::vector<double> trainMeanLogLikelihood;  // per class, nats
-  double fitSeconds = 0.0;                     // wall time of the fits alone
+  // Per class: mixture components removed for lack of mass (the model has order minus these).
+  std::vector<int> droppedComponents;
+  // Per class: the fall of the log-likelihood (nats per sample) of an EM step that was undone,
+  // 0 when none (GmmFit::likelihoodDrop).
+  std::vector<double> likelihoodDrop;
+  // Warnings that did not stop the fit (varianceFloorWarnings over all classes' rows together).
+  std::vector<std::string> warnings;
+  double fitSeconds = 0.0;  // wall time of the fits alone
 };
+
+// Held-out log-likelihood of labelled rows: the one definition used by `tactile fit`, `train` and
+// `sweep`. For every row r with truth[r] >= 0, v = logLik(r, truth[r]) (log p(x | model of the
+// row's own class)); rows whose v is not finite (-inf: zero density under that model) are counted
+// in negInfRows and left out; mean is the mean of v over the other rows, nullopt when there is
+// none. Rows with truth[r] < 0 (a class without a model) are not scored.
+struct HeldOutLogLikelihood {
+  std::optional<double> mean;  // nats
+  std::size_t rows = 0;        // rows in the mean
+  std::size_t negInfRows = 0;  // rows left out because their log-likelihood is -inf
+};
+HeldOutLogLikelihood heldOutLogLikelihood(const Eigen::MatrixXd& logLik,
+                                          const std::vector<int>& truth);
 
 // Trains one model per class. samplesPerClass[c] holds class c's training rows (N_c x D).
 // Errors (ok == false, reason naming the class): no classes, a class with zero samples, a class
 // with fewer samples than dimensions, mismatched dimensions, non-finite values, a failed fit.
-// Progress: (classes done, classes); returning false cancels.
+// Progress: (classes done, classes), called after each class and also after every EM iteration of
+// each running fit (with unchanged counts; serialised, never from two threads at once); returning
+// false cancels, and running fits stop within one EM iteration.
 ClassifierFit trainClassifier(const std::vector<Eigen::MatrixXd>& samplesPerClass,
                               const std::vector<std::string>& classNames,
                               const ClassifierOptions& options, const ProgressFn& progress = {});
 
 // Unbiased (N-1) maximum-likelihood Gaussian of thesis 4.3 as a one-component NodalFull mixture:
-// mu = (1/N) sum x_n, Sigma = 1/(N-1) sum (x_n - mu)(x_n - mu)^T (two-pass, centred); if floor > 0
-// the eigenvalues of Sigma are clamped at floor. Fails (nullopt + *error) for N < 2, N < D, or a
-// singular Sigma with floor 0.
-std::optional<GaussianMixture> fitGaussian(const Eigen::MatrixXd& samples, double floor,
+// mu = (1/N) sum x_n, Sigma = 1/(N-1) sum (x_n - mu)(x_n - mu)^T (two-pass, centred). With a
+// variance floor > 0, reg Floor clamps the eigenvalues of Sigma at the floor, reg Add uses
+// Sigma + floor * I. Fails (nullopt + *error) for N < 2, N < D, or a singular Sigma with floor 0.
+std::optional<GaussianMixture> fitGaussian(const Eigen::MatrixXd& samples, double varianceFloor,
+                                           Regularization reg = Regularization::Floor,
                                            std::string* error = nullptr);
 
 }  // namespace tactile

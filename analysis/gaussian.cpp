@@ -66,15 +66,15 @@ double gaussianLogDensity(const Eigen::Ref<const Eigen::VectorXd>& x,
   return -0.5 * (static_cast<double>(d) * kLog2Pi + logDet + z.squaredNorm());
 }
 
-Eigen::MatrixXd clampEigenvalues(const Eigen::MatrixXd& sigma, double floor) {
+Eigen::MatrixXd clampEigenvalues(const Eigen::MatrixXd& sigma, double minimum) {
   const Eigen::MatrixXd sym = 0.5 * (sigma + sigma.transpose());
   Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> solver(sym);
   if (solver.info() != Eigen::Success) return sym;
   Eigen::VectorXd values = solver.eigenvalues();
   bool changed = false;
   for (Eigen::Index i = 0; i < values.size(); ++i) {
-    if (values(i) < floor) {
-      values(i) = floor;
+    if (values(i) < minimum) {
+      values(i) = minimum;
       changed = true;
     }
   }

@@ -29,10 +29,10 @@ double gaussianLogDensity(const Eigen::Ref<const Eigen::VectorXd>& x,
                           const Eigen::Ref<const Eigen::VectorXd>& mean,
                           const Eigen::MatrixXd& lower, double logDet);
 
-// Symmetric matrix with its eigenvalues clamped from below: U max(Lambda, floor) U^T (the
-// constrained maximum-likelihood covariance with smallest eigenvalue >= floor). Symmetrises the
+// Symmetric matrix with its eigenvalues clamped from below: U max(Lambda, minimum) U^T (the
+// constrained maximum-likelihood covariance with smallest eigenvalue >= minimum). Symmetrises the
 // input first.
-Eigen::MatrixXd clampEigenvalues(const Eigen::MatrixXd& sigma, double floor);
+Eigen::MatrixXd clampEigenvalues(const Eigen::MatrixXd& sigma, double minimum);
 
 // True when every entry is finite.
 bool allFinite(const Eigen::MatrixXd& m);

@@ -110,6 +110,29 @@ std::optional<ConvergenceRule> parseConvergenceRule(std::string_view name) {
   return parseName(kRuleNames, name);
 }
 
+std::vector<std::string> varianceFloorWarnings(const Eigen::MatrixXd& samples, double varianceFloor,
+                                               const std::vector<std::string>& featureNames) {
+  std::vector<std::string> out;
+  const Eigen::Index n = samples.rows();
+  if (n < 2 || !(varianceFloor > 0.0)) return out;
+  const Eigen::RowVectorXd mean = samples.colwise().mean();
+  for (Eigen::Index j = 0; j < samples.cols(); ++j) {
+    const double variance =
+        (samples.col(j).array() - mean(j)).square().sum() / static_cast<double>(n);
+    if (!(variance > 0.0) || !std::isfinite(variance) || varianceFloor < 100.0 * variance) continue;
+    const std::size_t js = static_cast<std::size_t>(j);
+    const std::string name = "feature " + std::to_string(j) +
+                             (js < featureNames.size() ? " (" + featureNames[js] + ")" : "");
+    out.push_back("variance floor " + formatDouble(varianceFloor) + " is " +
+                  formatDouble(varianceFloor / variance) + " times the variance of " + name +
+                  " over the training data (standard deviation " +
+                  formatDouble(std::sqrt(variance)) +
+                  "): the floor hides that feature's spread, so classes that differ only there "
+                  "are not told apart; rescale the features or lower the variance floor");
+  }
+  return out;
+}
+
 // ---------------------------------------------------------------------------------------------
 // GaussianMixture.
 
@@ -307,6 +330,9 @@ struct EmState {
   Eigen::MatrixXd means;              // K x D, in the centred frame
   std::vector<Eigen::MatrixXd> covs;  // K (nodal) or 1 (grand), D x D
   GmmDensityCache cache;
+  // `add` regularisation: how far, in total nats, the M-step that made this state may have
+  // lowered the log-likelihood (docs/learning.md, "Monotone EM"); 0 for the floor clamp.
+  double regularizationBound = 0.0;
 };
 
 struct Chunking {
@@ -403,25 +429,49 @@ Eigen::MatrixXd regularize(const Eigen::MatrixXd& cov, const GmmOptions& o) {
   if (diagonal) {
     Eigen::MatrixXd out = Eigen::MatrixXd::Zero(d, d);
     for (Eigen::Index j = 0; j < d; ++j)
-      out(j, j) =
-          o.reg == Regularization::Floor ? std::max(cov(j, j), o.floor) : cov(j, j) + o.floor;
+      out(j, j) = o.reg == Regularization::Floor ? std::max(cov(j, j), o.varianceFloor)
+                                                 : cov(j, j) + o.varianceFloor;
     return out;
   }
   if (o.reg == Regularization::Add) {
     Eigen::MatrixXd out = 0.5 * (cov + cov.transpose());
-    out.diagonal().array() += o.floor;
+    out.diagonal().array() += o.varianceFloor;
     return out;
   }
-  return clampEigenvalues(cov, o.floor);
+  return clampEigenvalues(cov, o.varianceFloor);
 }
 
 std::string singularReason(int component, int k, const GmmOptions& o) {
   std::string who = isNodal(o.form)
                         ? "component " + std::to_string(component + 1) + " of " + std::to_string(k)
                         : "the shared (grand) covariance";
-  return "covariance of " + who + " is singular with variance floor " + formatDouble(o.floor) +
-         " (" + std::string(regularizationName(o.reg)) +
-         "): duplicate or degenerate samples need a positive --floor";
+  return "covariance of " + who + " is singular with variance floor " +
+         formatDouble(o.varianceFloor) + " (" + std::string(regularizationName(o.reg)) +
+         "): duplicate or degenerate samples need a positive variance floor";
+}
+
+// What `add` may cost the log-likelihood of an EM step, in total nats, for a component of mass
+// `mass` whose maximum-likelihood covariance is `raw`. With Q the EM auxiliary function,
+// l(new) - l(old) >= Q(new) - Q(old) >= Q(new) - Q(ml) = -cost, and for Sigma = raw + eps I
+// cost = mass/2 sum_j [log(1 + eps/lambda_j) - eps/(lambda_j + eps)] over the eigenvalues
+// lambda_j of raw (its diagonal for diagonal forms). Infinite when raw is singular (no bound).
+double addRegularizationCost(const Eigen::MatrixXd& raw, double mass, double eps, bool diagonal) {
+  Eigen::VectorXd lambda;
+  if (diagonal) {
+    lambda = raw.diagonal();
+  } else {
+    const Eigen::MatrixXd sym = 0.5 * (raw + raw.transpose());
+    Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> solver(sym, Eigen::EigenvaluesOnly);
+    if (solver.info() != Eigen::Success) return std::numeric_limits<double>::infinity();
+    lambda = solver.eigenvalues();
+  }
+  double sum = 0.0;
+  for (Eigen::Index j = 0; j < lambda.size(); ++j) {
+    if (!(lambda(j) > 0.0)) return std::numeric_limits<double>::infinity();
+    const double u = eps / lambda(j);
+    sum += std::log1p(u) - u / (1.0 + u);
+  }
+  return 0.5 * mass * sum;
 }
 
 // M-step from statistics accumulated around state.means. Components with mass below
@@ -471,14 +521,23 @@ bool mStep(const Stats& st, const EmState& old, const GmmOptions& o, EmState& ne
     raw[static_cast<std::size_t>(a)] = std::move(cov);
   }
   next.covs.clear();
+  next.regularizationBound = 0.0;
+  const bool add = o.reg == Regularization::Add && o.varianceFloor > 0.0;
   if (nodal) {
-    for (int a = 0; a < kk; ++a)
-      next.covs.push_back(regularize(raw[static_cast<std::size_t>(a)], o));
+    for (int a = 0; a < kk; ++a) {
+      const Eigen::MatrixXd& r = raw[static_cast<std::size_t>(a)];
+      next.covs.push_back(regularize(r, o));
+      if (add)
+        next.regularizationBound += addRegularizationCost(
+            r, st.nk(kept[static_cast<std::size_t>(a)]), o.varianceFloor, diagonal);
+    }
   } else {
     Eigen::MatrixXd pooled = Eigen::MatrixXd::Zero(d, d);
     for (int a = 0; a < kk; ++a)
       pooled += next.weights(a) * raw[static_cast<std::size_t>(a)];
     next.covs.push_back(regularize(pooled, o));
+    if (add)
+      next.regularizationBound = addRegularizationCost(pooled, mass, o.varianceFloor, diagonal);
   }
   int bad = -1;
   if (!buildDensityCache(next.weights, next.means, next.covs, diagonal, nodal, next.cache, &bad)) {
@@ -516,12 +575,15 @@ Stats hardAssignmentStats(const Eigen::MatrixXd& x, const Eigen::MatrixXd& centr
 struct Attempt {
   bool ok = false;
   bool cancelled = false;
+  bool fatal = false;  // an EM step lowered the log-likelihood: the whole fit fails
   std::string reason;
   EmState state;
   int iterations = 0;
   bool converged = false;
   double logLik = -std::numeric_limits<double>::infinity();  // total, final model
   int dropped = 0;
+  int undoneIteration = 0;
+  double likelihoodDrop = 0.0;
   std::vector<double> trace;
 };
 
@@ -580,8 +642,9 @@ bool initialState(const Eigen::MatrixXd& x, const GmmOptions& o, Rng& rng, int t
   int bad = -1;
   if (!buildDensityCache(state.weights, state.means, state.covs, diagonal, isNodal(o.form),
                          state.cache, &bad)) {
-    reason = "the data covariance is singular with variance floor " + formatDouble(o.floor) +
-             ": duplicate or degenerate samples need a positive --floor";
+    reason = "the data covariance is singular with variance floor " +
+             formatDouble(o.varianceFloor) +
+             ": duplicate or degenerate samples need a positive variance floor";
     return false;
   }
   return true;
@@ -591,6 +654,31 @@ bool hasConverged(double previous, double current, const GmmOptions& o) {
   const double change = std::abs(current - previous);
   if (o.rule == ConvergenceRule::Absolute) return change < o.tolerance;
   return change < o.tolerance * std::max(1.0, std::abs(current));
+}
+
+// A fall of the mean log-likelihood up to this much relative to max(1, |l|) is rounding.
+constexpr double kRoundingFall = 1e-12;
+
+enum class StepCheck { Accept, Undo, Fail };
+
+// Judges an EM step by the mean log-likelihoods before (`before`) and after (`after`) it
+// (docs/learning.md, "Monotone EM"). removed: the step removed empty components (a change of the
+// model, not an EM step: exempt). addBound: for `add`, how far the step may lower it (per sample).
+StepCheck checkStep(double before, double after, bool removed, double addBound) {
+  if (!(after < before) || removed) return StepCheck::Accept;
+  const double fall = before - after;
+  const double rounding = kRoundingFall * std::max(1.0, std::abs(before));
+  if (fall <= rounding + addBound) return StepCheck::Undo;
+  return StepCheck::Fail;
+}
+
+std::string fallReason(int iteration, double before, double after, const GmmOptions& o) {
+  std::string limit = "rounding";
+  if (o.reg == Regularization::Add) limit += " and the bound of the add regularisation";
+  return "the log-likelihood fell by " + formatDouble(before - after) +
+         " nats per sample at EM iteration " + std::to_string(iteration) + " (from " +
+         formatDouble(before) + " to " + formatDouble(after) + "), more than " + limit +
+         ": EM must never lower it";
 }
 
 Attempt runEm(const Eigen::MatrixXd& x, const GmmOptions& o, std::uint64_t seed, int threads,
@@ -603,8 +691,32 @@ Attempt runEm(const Eigen::MatrixXd& x, const GmmOptions& o, std::uint64_t seed,
   const Chunking ch = makeChunking(n);
   std::vector<Stats> chunkStats;
   Stats total;
-  EmState next;
+  EmState next;  // after a step: the parameters before it, to undo it
+  // Mean and total log-likelihood of the parameters before the last M-step.
   double previous = -std::numeric_limits<double>::infinity();
+  double previousTotal = previous;
+  bool removed = false;  // the last M-step removed empty components
+  // Every E-step's log-likelihood is checked against the one before it: EM with the floor clamp
+  // never lowers it, so a fall beyond rounding is an error; with `add` a fall within the step's
+  // bound is the method's own (its M-step does not maximise the likelihood) and ends the fit.
+  // A fall that is not an error undoes the step: the model is the one before it.
+  const auto judge = [&](int it, double current) {
+    const StepCheck c = checkStep(previous, current, removed, at.state.regularizationBound / nd);
+    if (c == StepCheck::Fail) {
+      at.reason = fallReason(it, previous, current, o);
+      at.fatal = true;
+    } else if (c == StepCheck::Undo) {
+      const double fall = previous - current;
+      at.undoneIteration = it;
+      at.likelihoodDrop = fall;
+      at.converged = fall <= kRoundingFall * std::max(1.0, std::abs(previous)) ||
+                     hasConverged(previous, current, o);
+      std::swap(at.state, next);
+      at.logLik = previousTotal;
+    }
+    return c;
+  };
+  bool undone = false;
   for (int it = 1; it <= o.maxIterations; ++it) {
     emPass(x, at.state, true, threads, ch, chunkStats, total);
     const double current = total.logLik / nd;
@@ -613,16 +725,27 @@ Attempt runEm(const Eigen::MatrixXd& x, const GmmOptions& o, std::uint64_t seed,
                   " (a sample lies where every component has zero density)";
       return at;
     }
-    // EM never lowers the likelihood with the floor clamp; with `add` regularization the M-step
-    // is not the likelihood maximiser, so near convergence it can drift down by ~1e-6 nats. Such
-    // a step is undone and the fit stops there, so the kept log-likelihoods never decrease.
-    if (it > 1 && current < previous) {
-      std::swap(at.state, next);
-      at.converged = true;
-      break;
-    }
     if (o.keepTrace) at.trace.push_back(current);
+    if (it > 1) {
+      const StepCheck c = judge(it, current);
+      if (c == StepCheck::Fail) return at;
+      if (c == StepCheck::Undo) {
+        undone = true;
+        break;
+      }
+    }
+    const int droppedBefore = at.dropped;
     if (!mStep(total, at.state, o, next, at.dropped, at.reason)) return at;
+    removed = at.dropped != droppedBefore;
+    if (o.afterMStep) {
+      o.afterMStep(it, next.weights, next.means, next.covs);
+      int bad = -1;
+      if (!buildDensityCache(next.weights, next.means, next.covs, isDiagonal(o.form),
+                             isNodal(o.form), next.cache, &bad)) {
+        at.reason = "the parameters changed after M-step " + std::to_string(it) + " are invalid";
+        return at;
+      }
+    }
     std::swap(at.state, next);
     at.iterations = it;
     if (!progress.tick()) {
@@ -630,19 +753,33 @@ Attempt runEm(const Eigen::MatrixXd& x, const GmmOptions& o, std::uint64_t seed,
       at.reason = "cancelled";
       return at;
     }
-    if (it > 1 && hasConverged(previous, current, o)) {
+    const bool converged = it > 1 && hasConverged(previous, current, o);
+    previous = current;
+    previousTotal = total.logLik;
+    if (converged) {
       at.converged = true;
       break;
     }
-    previous = current;
   }
+  if (undone) {
+    if (o.keepTrace) at.trace.push_back(at.logLik / nd);
+    at.ok = true;
+    return at;
+  }
+  // The returned parameters come from the last M-step: its step is checked like every other.
   emPass(x, at.state, false, threads, ch, chunkStats, total);
   if (!std::isfinite(total.logLik)) {
     at.reason = "the final log-likelihood is not finite";
     return at;
   }
+  const double last = total.logLik / nd;
+  if (o.keepTrace) at.trace.push_back(last);
   at.logLik = total.logLik;
-  if (o.keepTrace) at.trace.push_back(total.logLik / nd);
+  if (at.iterations >= 1) {
+    const StepCheck c = judge(at.iterations + 1, last);
+    if (c == StepCheck::Fail) return at;
+    if (c == StepCheck::Undo && o.keepTrace) at.trace.push_back(at.logLik / nd);
+  }
   at.ok = true;
   return at;
 }
@@ -661,7 +798,7 @@ GmmFit fitGmm(const Eigen::MatrixXd& samples, const GmmOptions& o, const Progres
   if (n < 1) return fail("no samples to fit");
   if (d < 1) return fail("samples have no features (dimension 0)");
   if (o.components < 1) return fail("the model order must be at least 1");
-  if (!(o.floor >= 0.0) || !std::isfinite(o.floor))
+  if (!(o.varianceFloor >= 0.0) || !std::isfinite(o.varianceFloor))
     return fail("the variance floor must be finite and >= 0");
   if (o.maxIterations < 1) return fail("the iteration limit must be at least 1");
   if (!(o.tolerance >= 0.0)) return fail("the tolerance must be >= 0");
@@ -693,6 +830,7 @@ GmmFit fitGmm(const Eigen::MatrixXd& samples, const GmmOptions& o, const Progres
       Attempt at = runEm(x, o, seed, threads, counter);
       fit.totalIterations += at.iterations;
       if (at.cancelled) return fail("cancelled");
+      if (at.fatal) return fail(at.reason);
       if (!at.ok) {
         lastReason = at.reason;
         continue;
@@ -720,7 +858,10 @@ GmmFit fitGmm(const Eigen::MatrixXd& samples, const GmmOptions& o, const Progres
   fit.bic = -2.0 * best.logLik + p * std::log(static_cast<double>(n));
   fit.aic = -2.0 * best.logLik + 2.0 * p;
   fit.droppedComponents = best.dropped;
+  fit.undoneIteration = best.undoneIteration;
+  fit.likelihoodDrop = best.likelihoodDrop;
   fit.trace = std::move(best.trace);
+  fit.warnings = varianceFloorWarnings(samples, o.varianceFloor);
   return fit;
 }
 

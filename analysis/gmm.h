@@ -8,6 +8,7 @@
 #include <Eigen/Core>
 
 #include <cstdint>
+#include <functional>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -64,7 +65,7 @@ std::optional<ConvergenceRule> parseConvergenceRule(std::string_view name);
 struct GmmOptions {
   int components = 1;  // model order M
   CovarianceForm form = CovarianceForm::NodalDiag;
-  double floor = 1e-3;  // variance floor (Floor) or reg_covar (Add); >= 0
+  double varianceFloor = 1e-3;  // clamp (Floor) or reg_covar (Add); >= 0
   Regularization reg = Regularization::Floor;
   GmmInit init = GmmInit::KMeansPlusPlus;
   std::uint64_t seed = 1;
@@ -76,8 +77,22 @@ struct GmmOptions {
   int maxReinitialisations = 5;  // RandomFromData: extra attempts when EM does not converge
   int threads = 1;               // worker threads for E/M steps (0 = all cores); results do not
                                  // depend on this number
-  bool keepTrace = false;        // record the mean log-likelihood of every iteration
+  bool keepTrace = false;        // record the mean log-likelihood of every E-step (GmmFit::trace)
+  // Test hook, empty in normal use: called after every M-step with the iteration number and the
+  // new parameters (weights, means in the fit's centred frame, covariances), which it may change.
+  // Lets a test corrupt a step to check that EM detects a fall in the log-likelihood.
+  std::function<void(int iteration, Eigen::VectorXd& weights, Eigen::MatrixXd& means,
+                     std::vector<Eigen::MatrixXd>& covariances)>
+      afterMStep;
 };
+
+// Warnings for a variance floor that is at least 100 times the whole variance of a feature over
+// `samples` (the floor then hides that feature's spread: every model sees it as noise of the
+// floor's size, and classes that differ only there are not told apart). Features with zero
+// variance carry no information whatever the floor and are not reported. featureNames (optional,
+// one per column) name the features in the messages; otherwise "feature j" (0-based).
+std::vector<std::string> varianceFloorWarnings(const Eigen::MatrixXd& samples, double varianceFloor,
+                                               const std::vector<std::string>& featureNames = {});
 
 // A fitted or loaded mixture p(x) = sum_i w_i N(x | mu_i, Sigma_i). Immutable after creation;
 // caches the Cholesky factors and log-determinants used by every density evaluation, so a model
@@ -150,13 +165,24 @@ struct GmmFit {
   double bic = 0.0;                // -2 logL + p ln N
   double aic = 0.0;                // -2 logL + 2 p
   int droppedComponents = 0;       // components removed because they lost all their weight
-  std::vector<double> trace;       // options.keepTrace: mean log-likelihood before each M-step,
-                                   // then the final model's, for the kept run
+  // A step that lowered the log-likelihood and was undone (docs/learning.md, "Monotone EM"): the
+  // EM iteration whose E-step saw the fall (0 = none) and the fall in nats per sample. The model
+  // is the one before that step. With the floor clamp only a fall within rounding is undone (a
+  // larger one fails the fit); with `add` also a fall within the step's regularisation bound.
+  int undoneIteration = 0;
+  double likelihoodDrop = 0.0;
+  // options.keepTrace: for the kept run, the mean log-likelihood computed by every E-step, in
+  // order: that of the parameters before each M-step, including a step that was then undone,
+  // then that of the returned model.
+  std::vector<double> trace;
+  // Warnings that do not stop the fit (e.g. a variance floor that hides a feature's spread).
+  std::vector<std::string> warnings;
 };
 
 // Fits a mixture to samples (N x D, one row per sample) by EM. Never returns NaN parameters: a
-// fit that cannot succeed (too few samples, non-finite input, singular covariance with floor 0,
-// cancellation through progress) has ok == false and a reason. The progress callback is called
+// fit that cannot succeed (too few samples, non-finite input, singular covariance with variance
+// floor 0, an EM step that lowers the log-likelihood by more than rounding, cancellation through
+// progress) has ok == false and a reason. The progress callback is called
 // once per EM iteration with (iterations done, maximum iterations over all attempts); returning
 // false cancels the fit.
 GmmFit fitGmm(const Eigen::MatrixXd& samples, const GmmOptions& options,

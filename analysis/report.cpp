@@ -101,8 +101,8 @@ Table spreadTable(const SweepResult& sweep, bool sweptIsFloor) {
   }
   auto key = [sweptIsFloor](const SweepCellResult* r) {
     const SweepCell& c = r->cell;
-    const double fixedVar = sweptIsFloor ? c.order : c.floor;
-    const double swept = sweptIsFloor ? c.floor : c.order;
+    const double fixedVar = sweptIsFloor ? c.order : c.varianceFloor;
+    const double swept = sweptIsFloor ? c.varianceFloor : c.order;
     return std::make_tuple(groupIndex(c.group), static_cast<int>(c.features),
                            static_cast<int>(c.method), static_cast<int>(c.form), fixedVar, swept,
                            c.seed);
@@ -114,7 +114,7 @@ Table spreadTable(const SweepResult& sweep, bool sweptIsFloor) {
     const RateSpread s = spreadOf(r->metrics);
     std::vector<std::string> row = cellKey(r->cell);
     const std::string order = std::to_string(r->cell.order);
-    const std::string floor = floorText(r->cell.floor);
+    const std::string floor = floorText(r->cell.varianceFloor);
     row.push_back(sweptIsFloor ? order : floor);
     row.push_back(sweptIsFloor ? floor : order);
     row.push_back(std::to_string(r->cell.seed));
@@ -275,8 +275,8 @@ Table rateAgainstOrderTable(const SweepResult& sweep) {
 Table bestCellsTable(const SweepResult& sweep) {
   Table t;
   t.title = "Best cell per group (balanced accuracy on held-out rows)";
-  t.header = {"group", "features",   "method",     "covariance", "order",       "floor",
-              "seed",  "balanced_%", "accuracy_%", "macro_f1",   "mean_loglik", "fit_s"};
+  t.header = {"group",      "features",   "method",   "covariance",  "order", "floor",  "seed",
+              "balanced_%", "accuracy_%", "macro_f1", "mean_loglik", "fit_s", "dropped"};
   std::map<int, const SweepCellResult*> best;
   for (const SweepCellResult& r : sweep.cells) {
     if (!r.ok) continue;
@@ -294,13 +294,14 @@ Table bestCellsTable(const SweepResult& sweep) {
   for (const auto& [g, r] : best) {
     std::vector<std::string> row = cellKey(r->cell);
     row.push_back(std::to_string(r->cell.order));
-    row.push_back(floorText(r->cell.floor));
+    row.push_back(floorText(r->cell.varianceFloor));
     row.push_back(std::to_string(r->cell.seed));
     row.push_back(fixed(100.0 * r->metrics.balancedAccuracy, 1));
     row.push_back(fixed(100.0 * r->metrics.accuracy, 1));
     row.push_back(fixed(r->metrics.macroF1, 3));
     row.push_back(r->meanLogLikelihood ? fixed(*r->meanLogLikelihood, 4) : "");
     row.push_back(fixed(r->fitSeconds, 3));
+    row.push_back(std::to_string(r->droppedComponents));
     t.rows.push_back(std::move(row));
   }
   return t;
@@ -309,13 +310,14 @@ Table bestCellsTable(const SweepResult& sweep) {
 Table sweepCellsTable(const SweepResult& sweep) {
   Table t;
   t.title = "Sweep cells";
-  t.header = {"group",      "features",   "method",   "covariance",  "order",      "floor",
-              "seed",       "ok",         "fit_s",    "predict_s",   "iterations", "converged",
-              "accuracy_%", "balanced_%", "macro_f1", "mean_loglik", "reason"};
+  t.header = {"group",       "features",     "method",     "covariance", "order",
+              "floor",       "seed",         "ok",         "fit_s",      "predict_s",
+              "iterations",  "converged",    "accuracy_%", "balanced_%", "macro_f1",
+              "mean_loglik", "neg_inf_rows", "dropped",    "reason"};
   for (const SweepCellResult& r : sweep.cells) {
     std::vector<std::string> row = cellKey(r.cell);
     row.push_back(std::to_string(r.cell.order));
-    row.push_back(floorText(r.cell.floor));
+    row.push_back(floorText(r.cell.varianceFloor));
     row.push_back(std::to_string(r.cell.seed));
     row.push_back(r.ok ? "yes" : "no");
     row.push_back(fixed(r.fitSeconds, 4));
@@ -326,6 +328,8 @@ Table sweepCellsTable(const SweepResult& sweep) {
     row.push_back(r.ok ? fixed(100.0 * r.metrics.balancedAccuracy, 2) : "");
     row.push_back(r.ok ? fixed(r.metrics.macroF1, 4) : "");
     row.push_back(r.meanLogLikelihood ? fixed(*r.meanLogLikelihood, 4) : "");
+    row.push_back(r.ok ? std::to_string(r.negInfRows) : "");
+    row.push_back(r.ok ? std::to_string(r.droppedComponents) : "");
     row.push_back(r.reason);
     t.rows.push_back(std::move(row));
   }
@@ -386,7 +390,8 @@ std::string sweepReport(const SweepResult& sweep, TableStyle style) {
     const std::string name = "Group " + std::string(groupInfo(r->cell.group).shortName) + ", " +
                              std::string(classifierMethodName(r->cell.method)) + " " +
                              std::string(covarianceFormName(r->cell.form)) + " order " +
-                             std::to_string(r->cell.order) + " floor " + floorText(r->cell.floor);
+                             std::to_string(r->cell.order) + " variance floor " +
+                             floorText(r->cell.varianceFloor);
     out += confusionTable(r->confusion, false, name + ": confusion (counts)").render(style) + sep;
     out +=
         confusionTable(r->confusion, true, name + ": confusion (row percent)").render(style) + sep;
@@ -410,8 +415,9 @@ std::string modelReport(const json& value, TableStyle style) {
   std::string details;
   Table settings;
   settings.title = "Models";
-  settings.header = {"group",          "features", "method",  "covariance", "order",     "floor",
-                     "regularization", "classes",  "samples", "accuracy_%", "balanced_%"};
+  settings.header = {"group",   "features", "method",     "covariance",
+                     "order",   "floor",    "dropped",    "regularization",
+                     "classes", "samples",  "accuracy_%", "balanced_%"};
   for (const json& m : models) {
     const std::string groupName = m.value("group", "?");
     const auto group = parseSensorGroup(groupName);
@@ -429,9 +435,17 @@ std::string modelReport(const json& value, TableStyle style) {
     const bool haveConfusion =
         eval.contains("confusion") && confusionFromJson(eval["confusion"], confusion);
     const Metrics met = computeMetrics(confusion);
+    // Components removed for lack of mass, summed over the classes (train writes them per class).
+    std::string dropped;
+    if (metrics.contains("dropped_components") && metrics["dropped_components"].is_object()) {
+      long sum = 0;
+      for (const auto& [name, count] : metrics["dropped_components"].items())
+        if (count.is_number_integer()) sum += count.get<long>();
+      dropped = std::to_string(sum);
+    }
     settings.rows.push_back(
         {groupName, m.value("features", ""), m.value("method", ""), m.value("covariance", ""),
-         std::to_string(order), floorText(m.value("variance_floor", 0.0)),
+         std::to_string(order), floorText(m.value("variance_floor", 0.0)), dropped,
          m.value("regularization", ""), classes, haveConfusion ? std::to_string(met.total) : "",
          haveConfusion ? pct(met.accuracy) : "", haveConfusion ? pct(met.balancedAccuracy) : ""});
     if (!haveConfusion || !group) continue;

@@ -51,7 +51,7 @@ double cellCost(const SweepCell& cell, std::size_t rows, int dim) {
 }
 
 SweepCellResult runCell(const SweepCell& cell, const SweepGrid& grid, const SharedGroupData& data,
-                        const std::atomic<bool>& cancel) {
+                        const ProgressFn& keepGoing) {
   SweepCellResult r;
   r.cell = cell;
   r.trainRows = data.train.size();
@@ -73,7 +73,7 @@ SweepCellResult runCell(const SweepCell& cell, const SweepGrid& grid, const Shar
   options.threads = 1;
   options.gmm.components = cell.method == ClassifierMethod::Gaussian ? 1 : cell.order;
   options.gmm.form = cell.form;
-  options.gmm.floor = cell.floor;
+  options.gmm.varianceFloor = cell.varianceFloor;
   options.gmm.reg = grid.regularization;
   options.gmm.init = grid.init;
   options.gmm.seed = cell.seed;
@@ -81,10 +81,9 @@ SweepCellResult runCell(const SweepCell& cell, const SweepGrid& grid, const Shar
   options.gmm.maxIterations = grid.maxIterations;
   options.gmm.tolerance = grid.tolerance;
   options.gmm.threads = 1;
-  const ClassifierFit fit =
-      trainClassifier(data.perClass, data.names, options,
-                      [&cancel](std::size_t, std::size_t) { return !cancel.load(); });
+  const ClassifierFit fit = trainClassifier(data.perClass, data.names, options, keepGoing);
   r.fitSeconds = fit.fitSeconds;
+  r.warnings = fit.warnings;
   if (!fit.ok) {
     r.reason = fit.reason;
     return r;
@@ -94,12 +93,14 @@ SweepCellResult runCell(const SweepCell& cell, const SweepGrid& grid, const Shar
     r.iterations += fit.iterations[c];
     r.maxIterations = std::max(r.maxIterations, fit.iterations[c]);
     if (c < fit.converged.size() && !fit.converged[c]) r.converged = false;
+    if (c < fit.droppedComponents.size()) r.droppedComponents += fit.droppedComponents[c];
   }
   const GroupEvaluation ev = evaluateClassifier(fit.model, data.selection.modelled, data.test);
   r.predictSeconds = ev.predictSeconds;
   r.confusion = ev.confusion;
   r.metrics = ev.metrics;
   r.meanLogLikelihood = ev.meanLogLikelihood;
+  r.negInfRows = ev.negInfRows;
   r.ok = true;
   return r;
 }
@@ -112,7 +113,7 @@ std::vector<SweepCell> expandGrid(const SweepGrid& grid) {
     for (FeatureKind f : grid.features) {
       for (ClassifierMethod m : grid.methods) {
         if (m == ClassifierMethod::Gaussian) {
-          for (double floor : grid.floors) {
+          for (double floor : grid.varianceFloors) {
             for (std::uint64_t seed : grid.seeds) {
               cells.push_back({g, m, 1, CovarianceForm::NodalFull, floor, f, seed});
             }
@@ -121,7 +122,7 @@ std::vector<SweepCell> expandGrid(const SweepGrid& grid) {
         }
         for (CovarianceForm form : grid.forms) {
           for (int order : grid.orders) {
-            for (double floor : grid.floors) {
+            for (double floor : grid.varianceFloors) {
               for (std::uint64_t seed : grid.seeds) {
                 cells.push_back({g, m, order, form, floor, f, seed});
               }
@@ -191,6 +192,15 @@ SweepResult runSweep(const std::vector<LabelledRun>& train, const std::vector<La
   std::mutex progressMutex;
   std::size_t done = 0;
   if (progress && !progress(0, cells.size())) cancel = true;
+  // Consulted by every running fit after each EM iteration (through trainClassifier).
+  const ProgressFn keepGoing = [&](std::size_t, std::size_t) {
+    if (cancel.load()) return false;
+    if (!progress) return true;
+    std::lock_guard<std::mutex> lock(progressMutex);
+    if (cancel.load()) return false;
+    if (!progress(done, cells.size())) cancel = true;
+    return !cancel.load();
+  };
 
   auto worker = [&]() {
     while (!cancel.load()) {
@@ -198,13 +208,14 @@ SweepResult runSweep(const std::vector<LabelledRun>& train, const std::vector<La
       if (k >= order.size()) return;
       const std::size_t i = order[k];
       SweepCellResult r =
-          runCell(cells[i], grid, shared.at(dataKey(cells[i].group, cells[i].features)), cancel);
+          runCell(cells[i], grid, shared.at(dataKey(cells[i].group, cells[i].features)), keepGoing);
       // A fit stopped by cancellation is not a result.
       if (cancel.load() && !r.ok) return;
-      slots[i] = std::move(r);
       std::lock_guard<std::mutex> lock(progressMutex);
+      slots[i] = r;
       ++done;
-      if (progress && !progress(done, cells.size())) cancel = true;
+      if (options.onCell) options.onCell(r);
+      if (!cancel.load() && progress && !progress(done, cells.size())) cancel = true;
     }
   };
   std::vector<std::thread> pool;
@@ -263,7 +274,7 @@ json sweepToJson(const SweepResult& result) {
   for (CovarianceForm f : g.forms)
     forms.push_back(covarianceFormName(f));
   grid["covariances"] = std::move(forms);
-  grid["floors"] = g.floors;
+  grid["floors"] = g.varianceFloors;
   json features = json::array();
   for (FeatureKind f : g.features)
     features.push_back(featureKindName(f));
@@ -299,7 +310,7 @@ json sweepToJson(const SweepResult& result) {
     c["method"] = classifierMethodName(r.cell.method);
     c["order"] = r.cell.order;
     c["covariance"] = covarianceFormName(r.cell.form);
-    c["floor"] = r.cell.floor;
+    c["floor"] = r.cell.varianceFloor;
     c["features"] = featureKindName(r.cell.features);
     c["seed"] = r.cell.seed;
     c["ok"] = r.ok;
@@ -317,6 +328,9 @@ json sweepToJson(const SweepResult& result) {
     c["balanced_accuracy"] = r.metrics.balancedAccuracy;
     c["macro_f1"] = r.metrics.macroF1;
     c["mean_loglik"] = r.meanLogLikelihood ? json(*r.meanLogLikelihood) : json(nullptr);
+    c["neg_inf_rows"] = r.negInfRows;
+    c["dropped_components"] = r.droppedComponents;
+    c["warnings"] = r.warnings;
     json rates = json::object();
     for (const ClassMetrics& m : r.metrics.perClass) {
       if (m.recall) rates[std::string(contactClassName(m.label))] = *m.recall;
@@ -354,14 +368,53 @@ std::string sweepFromJson(const json& value, SweepResult& out) {
     }
     if (value.value("version", 0) != 1) return "unsupported sweep file version";
     const json& grid = value.at("grid");
-    parseList(grid, "groups", out.grid.groups, parseSensorGroup);
-    parseList(grid, "methods", out.grid.methods, parseClassifierMethod);
-    parseList(grid, "covariances", out.grid.forms, parseCovarianceForm);
-    parseList(grid, "features", out.grid.features, parseFeatureKind);
-    out.grid.orders = grid.value("orders", std::vector<int>{});
-    out.grid.floors = grid.value("floors", std::vector<double>{});
+    SweepGrid& g = out.grid;
+    if (!parseList(grid, "groups", g.groups, parseSensorGroup)) return "grid: bad 'groups'";
+    if (!parseList(grid, "methods", g.methods, parseClassifierMethod)) return "grid: bad 'methods'";
+    if (!parseList(grid, "covariances", g.forms, parseCovarianceForm))
+      return "grid: bad 'covariances'";
+    if (!parseList(grid, "features", g.features, parseFeatureKind)) return "grid: bad 'features'";
+    g.orders = grid.value("orders", std::vector<int>{});
+    g.varianceFloors = grid.value("floors", std::vector<double>{});
+    g.seeds = grid.value("seeds", std::vector<std::uint64_t>{});
+    const SweepGrid defaults;
+    const auto reg = parseRegularization(
+        grid.value("regularization", std::string(regularizationName(defaults.regularization))));
+    const auto init = parseGmmInit(grid.value("init", std::string(gmmInitName(defaults.init))));
+    const auto priors =
+        parsePriorMode(grid.value("priors", std::string(priorModeName(defaults.priors))));
+    if (!reg || !init || !priors) return "grid: unknown regularization, init or priors";
+    g.regularization = *reg;
+    g.init = *init;
+    g.priors = *priors;
+    g.restarts = grid.value("restarts", defaults.restarts);
+    g.maxIterations = grid.value("max_iterations", defaults.maxIterations);
+    g.tolerance = grid.value("tolerance", defaults.tolerance);
+    for (const json& d : value.value("data", json::array())) {
+      SweepDataSummary s;
+      const auto group = parseSensorGroup(d.at("group").get<std::string>());
+      const auto features = parseFeatureKind(d.at("features").get<std::string>());
+      if (!group || !features) return "data: unknown group or features";
+      s.group = *group;
+      s.features = *features;
+      s.trainRows = d.value("train_rows", std::size_t{0});
+      s.testRows = d.value("test_rows", std::size_t{0});
+      for (const auto& [key, counts] :
+           {std::pair{"train_classes", &s.trainCounts}, std::pair{"test_classes", &s.testCounts}}) {
+        const json classes = d.value(key, json::object());
+        for (const auto& [name, count] : classes.items()) {
+          const auto c = parseContactClass(name);
+          if (!c) return std::string("data: unknown class '") + name + "'";
+          (*counts)[static_cast<std::size_t>(*c)] = count.get<std::size_t>();
+        }
+      }
+      s.trainZeroRows = d.value("train_zero_rows", std::size_t{0});
+      s.testZeroRows = d.value("test_zero_rows", std::size_t{0});
+      out.data.push_back(s);
+    }
     out.threads = value.value("threads", 1);
     out.wallSeconds = value.value("wall_s", 0.0);
+    out.extractSeconds = value.value("extract_s", 0.0);
     out.cancelled = value.value("cancelled", false);
     const json& cells = value.at("cells");
     if (!cells.is_array()) return "'cells' is not an array";
@@ -383,8 +436,13 @@ std::string sweepFromJson(const json& value, SweepResult& out) {
                 c.value("seed", std::uint64_t{1})};
       r.ok = c.at("ok").get<bool>();
       r.reason = c.value("reason", "");
-      for (const json& n : c.value("classes", json::array())) {
-        if (auto cls = parseContactClass(n.get<std::string>())) r.classes.push_back(*cls);
+      for (const auto& [key, list] :
+           {std::pair{"classes", &r.classes}, std::pair{"unmodelled", &r.unmodelled}}) {
+        for (const json& n : c.value(key, json::array())) {
+          const auto cls = parseContactClass(n.get<std::string>());
+          if (!cls) return where + "unknown class '" + n.get<std::string>() + "'";
+          list->push_back(*cls);
+        }
       }
       r.trainRows = c.value("train_rows", std::size_t{0});
       r.testRows = c.value("test_rows", std::size_t{0});
@@ -396,6 +454,9 @@ std::string sweepFromJson(const json& value, SweepResult& out) {
       if (c.contains("mean_loglik") && c["mean_loglik"].is_number()) {
         r.meanLogLikelihood = c["mean_loglik"].get<double>();
       }
+      r.negInfRows = c.value("neg_inf_rows", std::size_t{0});
+      r.droppedComponents = c.value("dropped_components", 0);
+      r.warnings = c.value("warnings", std::vector<std::string>{});
       if (!confusionFromJson(c.at("confusion"), r.confusion)) return where + "bad confusion";
       r.metrics = computeMetrics(r.confusion);
       out.cells.push_back(std::move(r));

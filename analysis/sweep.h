@@ -1,5 +1,5 @@
 // Sweep engine (DESIGN.md sections 5 and 7): train and score one classifier per cell of a grid
-// group x method x order x covariance form x floor x features x seed, on all cores.
+// group x method x order x covariance form x variance floor x features x seed, on all cores.
 //
 // Shared work is done once: each (group, features) data set is extracted from the runs once and
 // split into per-class training matrices once, then read by every cell of that group. Cells run
@@ -11,6 +11,7 @@
 #include <nlohmann/json.hpp>
 
 #include <cstdint>
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -29,7 +30,7 @@ struct SweepGrid {
   std::vector<int> orders{1, 2, 4, 8, 16, 32, 64};
   std::vector<CovarianceForm> forms{CovarianceForm::NodalFull, CovarianceForm::NodalDiag,
                                     CovarianceForm::GrandFull, CovarianceForm::GrandDiag};
-  std::vector<double> floors{0.01, 0.03, 0.1};
+  std::vector<double> varianceFloors{0.01, 0.03, 0.1};
   std::vector<FeatureKind> features{FeatureKind::Normal};
   std::vector<std::uint64_t> seeds{1};
   // Settings shared by every cell.
@@ -42,18 +43,18 @@ struct SweepGrid {
 };
 
 // One cell's settings. The Gaussian method has no order or form: its cells carry order 1 and
-// nodal-full and appear once per (group, floor, features, seed).
+// nodal-full and appear once per (group, variance floor, features, seed).
 struct SweepCell {
   SensorGroup group = SensorGroup::Front;
   ClassifierMethod method = ClassifierMethod::Gmm;
   int order = 1;
   CovarianceForm form = CovarianceForm::NodalDiag;
-  double floor = 0.0;
+  double varianceFloor = 0.0;
   FeatureKind features = FeatureKind::Normal;
   std::uint64_t seed = 1;
 };
 
-// Cells of a grid in a fixed order (group, features, method, form, order, floor, seed).
+// Cells of a grid in a fixed order (group, features, method, form, order, variance floor, seed).
 std::vector<SweepCell> expandGrid(const SweepGrid& grid);
 
 struct SweepCellResult {
@@ -71,7 +72,10 @@ struct SweepCellResult {
   bool converged = false;  // every class fit converged
   ConfusionMatrix confusion;
   Metrics metrics;                          // on the test rows
-  std::optional<double> meanLogLikelihood;  // held-out, nats
+  std::optional<double> meanLogLikelihood;  // held-out, nats (heldOutLogLikelihood, classifier.h)
+  std::size_t negInfRows = 0;               // test rows left out of it: log-likelihood -inf
+  int droppedComponents = 0;                // sum over the classes' fits
+  std::vector<std::string> warnings;        // ClassifierFit::warnings
 };
 
 // Per (group, features): how much data the cells saw.
@@ -98,11 +102,15 @@ struct SweepResult {
 
 struct SweepOptions {
   int threads = 0;  // 0 = all cores
+  // Called as each cell finishes, in finish order (serialised), with its result; not called for
+  // a cell whose fit was stopped by cancellation.
+  std::function<void(const SweepCellResult&)> onCell;
 };
 
-// Runs every cell: trains on `train`, scores on `test`. Progress: (cells done, cells); returning
-// false cancels (running fits stop at their next iteration; the result then has cancelled = true
-// and only the cells that finished).
+// Runs every cell: trains on `train`, scores on `test`. Progress: (cells done, cells), called
+// after each finished cell and also after every EM iteration of every running fit (serialised);
+// returning false cancels: running fits stop within one EM iteration, and the result has
+// cancelled = true and only the cells that finished.
 SweepResult runSweep(const std::vector<LabelledRun>& train, const std::vector<LabelledRun>& test,
                      const SweepGrid& grid, const SweepOptions& options = {},
                      const ProgressFn& progress = {});
@@ -112,8 +120,8 @@ SweepResult runSweep(const std::vector<LabelledRun>& train, const std::vector<La
 nlohmann::json sweepToJson(const SweepResult& result);
 // {"Wall": 12, "Corner": 3, ...}: the classes with a non-zero count.
 nlohmann::json classCountsToJson(const std::array<std::size_t, kContactClassCount>& counts);
-// Reads what sweepToJson wrote (cells and data; grid settings as far as reports need them).
-// Returns an error message, empty on success.
+// Reads everything sweepToJson wrote (grid, data, run settings, cells; metrics are recomputed
+// from each cell's confusion matrix). Returns an error message, empty on success.
 std::string sweepFromJson(const nlohmann::json& value, SweepResult& out);
 
 }  // namespace tactile::analysis

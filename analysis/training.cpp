@@ -53,7 +53,7 @@ GroupTrainResult trainGroupModel(const GroupDataSet& data, const TrainSettings& 
   m.covariance = settings.classifier.method == ClassifierMethod::Gaussian
                      ? CovarianceForm::NodalFull
                      : settings.classifier.gmm.form;
-  m.varianceFloor = settings.classifier.gmm.floor;
+  m.varianceFloor = settings.classifier.gmm.varianceFloor;
   m.regularization = settings.classifier.gmm.reg;
   result.ok = true;
   return result;
@@ -77,23 +77,16 @@ GroupEvaluation evaluateClassifier(const ClassModelSet& classifier,
   for (std::size_t i = 0; i < classes.size(); ++i) {
     column[static_cast<std::size_t>(classes[i])] = static_cast<int>(i);
   }
-  double llSum = 0.0;
-  std::size_t llCount = 0;
+  std::vector<int> truthColumn(data.size());
   for (std::size_t i = 0; i < data.size(); ++i) {
     const ContactClass truth = data.y[i];
     ev.confusion.add(truth, classes[static_cast<std::size_t>(predicted[i])]);
-    const int col = column[static_cast<std::size_t>(truth)];
-    if (col >= 0) {
-      const double ll = logLik(static_cast<Eigen::Index>(i), col);
-      // -inf would poison the mean; the engine keeps densities finite, but guard anyway.
-      if (std::isfinite(ll)) {
-        llSum += ll;
-        ++llCount;
-      }
-    }
+    truthColumn[i] = column[static_cast<std::size_t>(truth)];
   }
   ev.metrics = computeMetrics(ev.confusion);
-  if (llCount > 0) ev.meanLogLikelihood = llSum / static_cast<double>(llCount);
+  const HeldOutLogLikelihood ll = heldOutLogLikelihood(logLik, truthColumn);
+  ev.meanLogLikelihood = ll.mean;
+  ev.negInfRows = ll.negInfRows;
   if (classifier.hasRestModels()) {
     Eigen::VectorXd ratio;
     for (std::size_t c = 0; c < classes.size(); ++c) {
@@ -173,6 +166,7 @@ json evaluationToJson(const GroupEvaluation& ev) {
   out["balanced_accuracy"] = ev.metrics.balancedAccuracy;
   out["macro_f1"] = ev.metrics.macroF1;
   out["mean_loglik"] = ev.meanLogLikelihood ? json(*ev.meanLogLikelihood) : json(nullptr);
+  out["neg_inf_rows"] = ev.negInfRows;
   out["predict_s"] = ev.predictSeconds;
   json perClass = json::object();
   for (const ClassMetrics& m : ev.metrics.perClass) {

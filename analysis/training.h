@@ -49,9 +49,11 @@ GroupTrainResult trainGroupModel(const GroupDataSet& data, const TrainSettings& 
 struct GroupEvaluation {
   ConfusionMatrix confusion;
   Metrics metrics;
-  // Mean over rows of a modelled class of log p(x | model of the row's class), nats; nullopt
-  // when no such row.
+  // heldOutLogLikelihood (classifier.h) over the rows of modelled classes: mean of log p(x | model
+  // of the row's class) over rows where it is finite, nats (nullopt when no such row), and the
+  // number of rows left out because it is -inf.
   std::optional<double> meanLogLikelihood;
+  std::size_t negInfRows = 0;
   double predictSeconds = 0.0;
   std::size_t zeroRows = 0;
   // Thesis table 4.39 (filled when `runs` is given to evaluateGroupModel).

@@ -56,7 +56,7 @@ ClassifierOptions toClassifierOptions(const ClassifierArgs& a) {
   if (a.kmeansIterations < 0) throw UsageError("--kmeans-iter must be >= 0");
   o.gmm.components = a.order;
   o.gmm.form = *form;
-  o.gmm.floor = a.floor;
+  o.gmm.varianceFloor = a.floor;
   o.gmm.reg = *reg;
   o.gmm.init = *init;
   o.gmm.seed = a.seed;

@@ -2,6 +2,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 #include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
@@ -25,7 +26,7 @@ double secondsSince(std::chrono::steady_clock::time_point t0) {
 struct Evaluation {
   ClassifierFit fit;
   double accuracy = 0.0;
-  double meanLogLik = 0.0;
+  HeldOutLogLikelihood logLik;  // the held-out mean log-likelihood and its -inf rows
   double predictSeconds = 0.0;
   std::vector<std::vector<long>> confusion;  // [true][predicted]
 };
@@ -44,17 +45,27 @@ Evaluation trainAndTest(const FeatureTable& train, const FeatureTable& test,
   const std::size_t classes = train.classNames.size();
   e.confusion.assign(classes, std::vector<long>(classes, 0));
   long correct = 0;
-  double sum = 0.0;
   for (std::size_t r = 0; r < predicted.size(); ++r) {
     const int truth = test.labels[r];
     ++e.confusion[static_cast<std::size_t>(truth)][static_cast<std::size_t>(predicted[r])];
     if (truth == predicted[r]) ++correct;
-    sum += logLik(static_cast<Eigen::Index>(r), truth);
   }
   const double n = static_cast<double>(predicted.size());
   e.accuracy = n > 0 ? static_cast<double>(correct) / n : 0.0;
-  e.meanLogLik = n > 0 ? sum / n : 0.0;
+  e.logLik = heldOutLogLikelihood(logLik, test.labels);
   return e;
+}
+
+nlohmann::json optionalNumber(const std::optional<double>& v) {
+  return v ? nlohmann::json(*v) : nlohmann::json(nullptr);
+}
+
+// Feature column names of a table as written by formatFeatureTable: f0, f1, ...
+std::vector<std::string> featureNames(int dimension) {
+  std::vector<std::string> names;
+  for (int j = 0; j < dimension; ++j)
+    names.push_back("f" + std::to_string(j));
+  return names;
 }
 
 FeatureTable loadTable(const std::string& path) {
@@ -70,8 +81,11 @@ struct FitArgs {
 };
 
 int runFit(const FitArgs& f, const ClassifierArgs& a) {
-  const ClassifierOptions options = toClassifierOptions(a);
+  ClassifierOptions options = toClassifierOptions(a);
+  // `fit` scores by the per-class likelihoods alone: no one-vs-rest "rest" models to fit.
+  options.oneVsRest = false;
   FeatureTable train = loadTable(f.train);
+  options.featureNames = featureNames(train.dimension());
   FeatureTable test = loadTable(f.test.empty() ? f.train : f.test);
   if (test.dimension() != train.dimension())
     throw std::runtime_error(f.test + ": " + std::to_string(test.dimension()) +
@@ -91,10 +105,20 @@ int runFit(const FitArgs& f, const ClassifierArgs& a) {
   bool converged = true;
   for (bool c : e.fit.converged)
     converged = converged && c;
+  int dropped = 0;
+  for (int k : e.fit.droppedComponents)
+    dropped += k;
+  std::vector<int> components;
+  for (const GaussianMixture& m : e.fit.model.models())
+    components.push_back(m.components());
+  for (const std::string& w : e.fit.warnings)
+    printWarning(w);
+  const bool gaussian = options.method == ClassifierMethod::Gaussian;
   if (f.json) {
     nlohmann::json j;
     j["accuracy"] = e.accuracy;
-    j["mean_loglik"] = e.meanLogLik;
+    j["mean_loglik"] = optionalNumber(e.logLik.mean);
+    j["neg_inf_rows"] = e.logLik.negInfRows;
     j["fit_s"] = e.fit.fitSeconds;
     j["predict_s"] = e.predictSeconds;
     j["iterations"] = iterations;
@@ -105,17 +129,24 @@ int runFit(const FitArgs& f, const ClassifierArgs& a) {
     j["train_rows"] = train.rows();
     j["test_rows"] = test.rows();
     j["method"] = a.method;
-    j["order"] = a.order;
-    j["covariance"] = a.cov;
+    if (!gaussian) {  // the Gaussian method has no order, covariance form or initialisation
+      j["order"] = a.order;
+      j["covariance"] = a.cov;
+      j["init"] = a.init;
+    }
     j["floor"] = a.floor;
     j["regularization"] = a.reg;
-    j["init"] = a.init;
     j["train_mean_loglik"] = e.fit.trainMeanLogLikelihood;
+    j["components_per_class"] = components;
+    j["dropped_components"] = dropped;
+    j["dropped_components_per_class"] = e.fit.droppedComponents;
+    j["models_fitted"] = e.fit.model.models().size() + e.fit.model.restModels().size();
+    j["warnings"] = e.fit.warnings;
     std::printf("%s\n", j.dump().c_str());
     return kExitOk;
   }
-  if (options.method == ClassifierMethod::Gaussian)
-    std::printf("method gaussian (unbiased covariance), floor %g\n", a.floor);
+  if (gaussian)
+    std::printf("method gaussian (unbiased covariance), floor %g (%s)\n", a.floor, a.reg.c_str());
   else
     std::printf("method gmm, order %d, %s, floor %g (%s), init %s, seed %llu\n", a.order,
                 a.cov.c_str(), a.floor, a.reg.c_str(), a.init.c_str(),
@@ -123,7 +154,22 @@ int runFit(const FitArgs& f, const ClassifierArgs& a) {
   std::printf("train %d rows, test %d rows, %zu classes, dimension %d\n", train.rows(), test.rows(),
               train.classNames.size(), train.dimension());
   std::printf("accuracy     %.4f\n", e.accuracy);
-  std::printf("mean loglik  %.6f nats\n", e.meanLogLik);
+  if (e.logLik.mean)
+    std::printf("mean loglik  %.6f nats", *e.logLik.mean);
+  else
+    std::printf("mean loglik  none");
+  if (e.logLik.negInfRows > 0)
+    std::printf(" (%zu test rows with log-likelihood -inf left out)", e.logLik.negInfRows);
+  std::printf("\n");
+  if (dropped > 0)
+    std::printf("components   %d dropped for lack of mass (kept per class:%s)\n", dropped,
+                [&] {
+                  std::string s;
+                  for (int k : components)
+                    s += " " + std::to_string(k);
+                  return s;
+                }()
+                    .c_str());
   std::printf("fit          %.3f s (%d iterations max, %s)\n", e.fit.fitSeconds, iterations,
               converged ? "converged" : "NOT converged");
   std::printf("predict      %.3f s\n", e.predictSeconds);
@@ -221,7 +267,8 @@ int runBenchLearn(const BenchArgs& b, const ClassifierArgs& a) {
         if (!e.fit.ok) c["reason"] = e.fit.reason;
         c["fit_s"] = e.fit.fitSeconds;
         c["iterations"] = iterations;
-        c["mean_loglik"] = e.meanLogLik;
+        c["mean_loglik"] = optionalNumber(e.logLik.mean);
+        c["neg_inf_rows"] = e.logLik.negInfRows;
         c["accuracy"] = e.accuracy;
         c["predict_s"] = e.predictSeconds;
         cells.push_back(c);
@@ -229,7 +276,9 @@ int runBenchLearn(const BenchArgs& b, const ClassifierArgs& a) {
         std::printf("%6d %-11s failed: %s\n", order, base.cov.c_str(), e.fit.reason.c_str());
       } else {
         std::printf("%6d %-11s %9.3f %6d %12.5f %9.4f %10.3f\n", order, base.cov.c_str(),
-                    e.fit.fitSeconds, iterations, e.meanLogLik, e.accuracy, e.predictSeconds);
+                    e.fit.fitSeconds, iterations,
+                    e.logLik.mean ? *e.logLik.mean : -std::numeric_limits<double>::infinity(),
+                    e.accuracy, e.predictSeconds);
       }
       std::fflush(stdout);
     }

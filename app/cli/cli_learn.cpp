@@ -1,6 +1,7 @@
 // Learning verbs on labelled runs: train, sweep, report, classify (DESIGN.md section 6).
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <cstdio>
 #include <deque>
 #include <filesystem>
@@ -202,6 +203,8 @@ int runTrain(const TrainArgs& a) {
       printWarning("group " + gName + ": class " + std::string(contactClassName(c)) +
                    " has too few samples to model");
     }
+    for (const std::string& w : tr.fit.warnings)
+      printWarning("group " + gName + ": " + w);
     const analysis::GroupDataSet evalData =
         testRuns == &train ? data : analysis::buildGroupDataSet(*testRuns, g, settings.features);
     const analysis::GroupEvaluation ev = analysis::evaluateGroupModel(tr.model, evalData, testRuns);
@@ -230,24 +233,37 @@ int runTrain(const TrainArgs& a) {
     metrics["evaluated_on"] = evaluatedOn;
     if (!a.testRuns.empty()) metrics["test_runs"] = loadedTest.paths;
     metrics["fit_s"] = tr.fit.fitSeconds;
-    json iters = json::object(), conv = json::object(), trainLl = json::object();
+    json iters = json::object(), conv = json::object(), trainLl = json::object(),
+         droppedPerClass = json::object();
+    int dropped = 0;
     for (std::size_t c = 0; c < tr.model.classes.size(); ++c) {
       const std::string cn(contactClassName(tr.model.classes[c]));
       if (c < tr.fit.iterations.size()) iters[cn] = tr.fit.iterations[c];
       if (c < tr.fit.converged.size()) conv[cn] = static_cast<bool>(tr.fit.converged[c]);
       if (c < tr.fit.trainMeanLogLikelihood.size()) trainLl[cn] = tr.fit.trainMeanLogLikelihood[c];
+      if (c < tr.fit.droppedComponents.size()) {
+        droppedPerClass[cn] = tr.fit.droppedComponents[c];
+        dropped += tr.fit.droppedComponents[c];
+      }
     }
     metrics["iterations"] = std::move(iters);
     metrics["converged"] = std::move(conv);
     metrics["train_mean_loglik"] = std::move(trainLl);
+    metrics["dropped_components"] = std::move(droppedPerClass);
+    metrics["warnings"] = tr.fit.warnings;
     metrics["evaluation"] = analysis::evaluationToJson(ev);
     tr.model.metrics = metrics;
-    summary.push_back({{"group", gName},
-                       {"samples", data.size()},
-                       {"classes", tr.model.classifier.classNames()},
-                       {"fit_s", tr.fit.fitSeconds},
-                       {"accuracy", ev.metrics.accuracy},
-                       {"balanced_accuracy", ev.metrics.balancedAccuracy}});
+    summary.push_back(
+        {{"group", gName},
+         {"samples", data.size()},
+         {"classes", tr.model.classifier.classNames()},
+         {"fit_s", tr.fit.fitSeconds},
+         {"accuracy", ev.metrics.accuracy},
+         {"balanced_accuracy", ev.metrics.balancedAccuracy},
+         {"mean_loglik", ev.meanLogLikelihood ? json(*ev.meanLogLikelihood) : json(nullptr)},
+         {"neg_inf_rows", ev.negInfRows},
+         {"dropped_components", dropped},
+         {"warnings", tr.fit.warnings}});
     bundle.models.push_back(std::move(tr.model));
   }
   if (failed) return kExitFailure;
@@ -303,12 +319,12 @@ int runSweepVerb(const SweepArgs& a) {
   grid.forms = parseNames<CovarianceForm>(a.covs, parseCovarianceForm, "covariance form");
   grid.features = parseNames<FeatureKind>(a.features, analysis::parseFeatureKind, "features");
   grid.orders = a.orders;
-  grid.floors = a.floors;
+  grid.varianceFloors = a.floors;
   grid.seeds = a.seeds;
   for (int k : grid.orders) {
     if (k < 1) throw UsageError("--orders must be >= 1");
   }
-  for (double f : grid.floors) {
+  for (double f : grid.varianceFloors) {
     if (f < 0.0) throw UsageError("--floors must be >= 0");
   }
   const auto reg = parseRegularization(a.reg);
@@ -338,13 +354,27 @@ int runSweepVerb(const SweepArgs& a) {
   options.threads = a.threads;
   ProgressFn progress;
   if (a.progress) {
-    progress = [](std::size_t done, std::size_t total) {
+    // Also called after every EM iteration of the running fits: print only when a cell finishes.
+    progress = [shown = std::size_t(-1)](std::size_t done, std::size_t total) mutable {
+      if (done == shown) return true;
+      shown = done;
       std::fprintf(stderr, "\rsweep: %zu / %zu cells", done, total);
       if (done == total) std::fputc('\n', stderr);
       return true;
     };
   }
   const analysis::SweepResult result = analysis::runSweep(train, test, grid, options, progress);
+  // Each distinct warning once (cells of one group and variance floor share them).
+  std::vector<std::string> warnings;
+  for (const auto& c : result.cells) {
+    for (const std::string& w : c.warnings) {
+      const std::string line = "group " + std::string(groupInfo(c.cell.group).shortName) + ": " + w;
+      if (std::find(warnings.begin(), warnings.end(), line) == warnings.end())
+        warnings.push_back(line);
+    }
+  }
+  for (const std::string& w : warnings)
+    printWarning(w);
   json doc = analysis::sweepToJson(result);
   doc["runs"] = loaded.paths;
   doc["test_runs"] = loadedTest.paths;
@@ -359,7 +389,8 @@ int runSweepVerb(const SweepArgs& a) {
                       {"cells", result.cells.size()},
                       {"fitted", ok},
                       {"threads", result.threads},
-                      {"wall_s", result.wallSeconds}}
+                      {"wall_s", result.wallSeconds},
+                      {"warnings", warnings}}
                      .dump()
               << "\n";
   } else {

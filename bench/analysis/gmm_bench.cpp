@@ -27,7 +27,7 @@ void EmIterations(benchmark::State& state) {
   o.components = static_cast<int>(state.range(1));
   o.threads = static_cast<int>(state.range(2));
   o.reg = Regularization::Add;
-  o.floor = 0.01;
+  o.varianceFloor = 0.01;
   o.tolerance = 0.0;
   o.maxIterations = 10;
   o.kmeansIterations = 0;

@@ -7,6 +7,7 @@
 
 #include <Eigen/Dense>
 #include <cmath>
+#include <limits>
 
 #include "tests/analysis/gmm_test_util.h"
 
@@ -40,9 +41,9 @@ TEST(FitGaussian, SingularCovarianceWithoutFloorIsAnError) {
   Eigen::MatrixXd x(4, 2);
   x << 1, 2, 2, 4, 3, 6, 4, 8;  // second feature = 2 x first
   std::string error;
-  EXPECT_FALSE(fitGaussian(x, 0.0, &error).has_value());
+  EXPECT_FALSE(fitGaussian(x, 0.0, Regularization::Floor, &error).has_value());
   EXPECT_NE(error.find("singular"), std::string::npos);
-  EXPECT_TRUE(fitGaussian(x, 1e-3, &error).has_value());
+  EXPECT_TRUE(fitGaussian(x, 1e-3, Regularization::Floor, &error).has_value());
 }
 
 TEST(GaussianClassifier, OneVsRestRatioIsTheLogLikelihoodDifference) {
@@ -161,6 +162,103 @@ TEST(GmmClassifier, ProgressCanCancel) {
                                             [](std::size_t done, std::size_t) { return done < 1; });
   EXPECT_FALSE(fit.ok);
   EXPECT_EQ(fit.reason, "cancelled");
+}
+
+// A cancel returned from inside a running fit (progress is consulted after every EM iteration)
+// stops that fit at once.
+TEST(GmmClassifier, ProgressIsConsultedEveryIteration) {
+  Eigen::Vector2d m0(0, 0), sd(1, 1);
+  const std::vector<Eigen::MatrixXd> data{gaussianRows(400, m0, sd, 1)};
+  ClassifierOptions o;
+  o.threads = 1;
+  o.gmm.components = 4;
+  o.gmm.tolerance = 0.0;
+  o.gmm.maxIterations = 500;
+  int calls = 0;
+  const ClassifierFit fit = trainClassifier(data, {"a"}, o, [&](std::size_t done, std::size_t) {
+    EXPECT_EQ(done, 0u);  // the only class never finishes
+    return ++calls < 3;
+  });
+  EXPECT_FALSE(fit.ok);
+  EXPECT_EQ(fit.reason, "cancelled");
+  EXPECT_EQ(calls, 3);
+}
+
+// --reg add reaches the Gaussian method: Sigma + floor * I instead of the eigenvalue clamp, for
+// the class models and the one-vs-rest models alike.
+TEST(GaussianClassifier, HonoursAddRegularization) {
+  Eigen::Vector2d m0(0, 0), m1(3, 0), sd(1, 0.5);
+  const std::vector<Eigen::MatrixXd> data{gaussianRows(200, m0, sd, 1),
+                                          gaussianRows(200, m1, sd, 2)};
+  const double floor = 0.5;
+  const auto unbiased = [](const Eigen::MatrixXd& x) {
+    const Eigen::MatrixXd c = x.rowwise() - x.colwise().mean();
+    return Eigen::MatrixXd(c.transpose() * c / static_cast<double>(x.rows() - 1));
+  };
+  const auto add = fitGaussian(data[0], floor, Regularization::Add);
+  ASSERT_TRUE(add.has_value());
+  const Eigen::MatrixXd want = unbiased(data[0]) + floor * Eigen::MatrixXd::Identity(2, 2);
+  EXPECT_LT((add->covariance(0) - want).cwiseAbs().maxCoeff(), 1e-14);
+  ClassifierOptions o;
+  o.method = ClassifierMethod::Gaussian;
+  o.gmm.varianceFloor = floor;
+  o.gmm.reg = Regularization::Add;
+  const ClassifierFit fit = trainClassifier(data, {"a", "b"}, o);
+  ASSERT_TRUE(fit.ok) << fit.reason;
+  for (int c = 0; c < 2; ++c) {
+    const Eigen::MatrixXd w =
+        unbiased(data[static_cast<std::size_t>(c)]) + floor * Eigen::MatrixXd::Identity(2, 2);
+    EXPECT_LT((fit.model.model(c).covariance(0) - w).cwiseAbs().maxCoeff(), 1e-14) << c;
+    const Eigen::MatrixXd r =
+        unbiased(data[static_cast<std::size_t>(1 - c)]) + floor * Eigen::MatrixXd::Identity(2, 2);
+    EXPECT_LT((fit.model.restModel(c).covariance(0) - r).cwiseAbs().maxCoeff(), 1e-14) << c;
+  }
+  // The clamp leaves eigenvalues above the floor alone: a different model.
+  o.gmm.reg = Regularization::Floor;
+  const ClassifierFit clamp = trainClassifier(data, {"a", "b"}, o);
+  ASSERT_TRUE(clamp.ok);
+  EXPECT_GT((clamp.model.model(0).covariance(0) - fit.model.model(0).covariance(0)).norm(), 0.1);
+}
+
+// One definition of the held-out mean log-likelihood: mean over finite rows, -inf rows counted,
+// rows without a model skipped.
+TEST(HeldOutLogLikelihood, MeanOverFiniteRowsAndNegInfRowsCounted) {
+  const double inf = std::numeric_limits<double>::infinity();
+  Eigen::MatrixXd ll(5, 2);
+  ll << -1.0, -7.0,  //
+      -inf, -2.0,    //
+      -3.0, -inf,    //
+      -5.0, -4.0,    //
+      -inf, -inf;
+  const HeldOutLogLikelihood h = heldOutLogLikelihood(ll, {0, 0, 1, 1, -1});
+  ASSERT_TRUE(h.mean.has_value());
+  EXPECT_DOUBLE_EQ(*h.mean, (-1.0 - 4.0) / 2.0);
+  EXPECT_EQ(h.rows, 2u);
+  EXPECT_EQ(h.negInfRows, 2u);
+  const HeldOutLogLikelihood none = heldOutLogLikelihood(ll, {-1, 0, 1, -1, 0});
+  EXPECT_FALSE(none.mean.has_value());
+  EXPECT_EQ(none.rows, 0u);
+  EXPECT_EQ(none.negInfRows, 3u);
+}
+
+// A test row far beyond double range of a model's Mahalanobis distance has log-likelihood -inf:
+// counted, not averaged.
+TEST(HeldOutLogLikelihood, RowWithZeroDensityIsCounted) {
+  Eigen::Vector2d m0(0, 0), sd(1, 1);
+  const std::vector<Eigen::MatrixXd> data{gaussianRows(200, m0, sd, 1)};
+  ClassifierOptions o;
+  o.gmm.components = 2;
+  const ClassifierFit fit = trainClassifier(data, {"a"}, o);
+  ASSERT_TRUE(fit.ok) << fit.reason;
+  Eigen::MatrixXd test(3, 2);
+  test << 0.1, 0.2, 1e200, 0.0, -0.3, 0.4;
+  Eigen::MatrixXd ll;
+  fit.model.logLikelihoods(test, ll);
+  EXPECT_EQ(ll(1, 0), -std::numeric_limits<double>::infinity());
+  const HeldOutLogLikelihood h = heldOutLogLikelihood(ll, {0, 0, 0});
+  EXPECT_EQ(h.negInfRows, 1u);
+  ASSERT_TRUE(h.mean.has_value());
+  EXPECT_DOUBLE_EQ(*h.mean, 0.5 * (ll(0, 0) + ll(2, 0)));
 }
 
 }  // namespace

@@ -103,7 +103,7 @@ TEST(FitGmm, RecoversTwoSeparatedComponents) {
     GmmOptions o;
     o.components = 2;
     o.form = form;
-    o.floor = 1e-6;
+    o.varianceFloor = 1e-6;
     const GmmFit fit = fitGmm(x, o);
     ASSERT_TRUE(fit.ok) << fit.reason;
     EXPECT_TRUE(fit.converged);
@@ -203,7 +203,7 @@ TEST(FitGmm, ComponentsWithoutSamplesAreDroppedAndWeightsRenormalised) {
   x << 0, 0, 0, 5, 5, 5;
   GmmOptions o;
   o.components = 4;
-  o.floor = 0.01;
+  o.varianceFloor = 0.01;
   const GmmFit fit = fitGmm(x, o);
   ASSERT_TRUE(fit.ok) << fit.reason;
   EXPECT_EQ(fit.model.components() + fit.droppedComponents, 4);

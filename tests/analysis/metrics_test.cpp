@@ -164,7 +164,7 @@ SweepCellResult cell(int order, double floor, std::vector<ContactClass> truth,
   SweepCellResult r;
   r.cell.group = SensorGroup::Right;
   r.cell.order = order;
-  r.cell.floor = floor;
+  r.cell.varianceFloor = floor;
   r.ok = true;
   r.confusion = confusionOf(truth, predicted);
   r.metrics = computeMetrics(r.confusion);

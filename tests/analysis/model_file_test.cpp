@@ -28,7 +28,7 @@ GroupModel trainedModel(ClassifierMethod method, CovarianceForm form, int order 
   settings.classifier.method = method;
   settings.classifier.gmm.components = order;
   settings.classifier.gmm.form = form;
-  settings.classifier.gmm.floor = 0.01;
+  settings.classifier.gmm.varianceFloor = 0.01;
   settings.classifier.gmm.seed = 5;
   GroupTrainResult r = trainGroupModel(data, settings);
   EXPECT_TRUE(r.ok) << r.reason;

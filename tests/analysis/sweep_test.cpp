@@ -1,5 +1,5 @@
 // Training glue and the sweep engine: deterministic for a seed whatever the thread count,
-// cancellable, shared data extraction, JSON round trip.
+// cancellable inside running fits, shared data extraction, JSON round trip of every field.
 #include <gtest/gtest.h>
 
 #include <atomic>
@@ -29,7 +29,7 @@ SweepGrid smallGrid() {
   g.groups = {SensorGroup::Right, SensorGroup::FrontLeftCorner};
   g.orders = {1, 2, 4};
   g.forms = {CovarianceForm::NodalDiag, CovarianceForm::GrandFull};
-  g.floors = {0.01, 0.1};
+  g.varianceFloors = {0.01, 0.1};
   g.maxIterations = 30;
   return g;
 }
@@ -55,7 +55,7 @@ TEST(Training, SeparableDataIsClassifiedWell) {
   const GroupDataSet testSet = buildGroupDataSet(test, SensorGroup::Right, FeatureKind::Normal);
   TrainSettings s;
   s.classifier.gmm.components = 2;
-  s.classifier.gmm.floor = 0.01;
+  s.classifier.gmm.varianceFloor = 0.01;
   const GroupTrainResult r = trainGroupModel(trainSet, s);
   ASSERT_TRUE(r.ok) << r.reason;
   const std::vector<ContactClass> expected{ContactClass::Wall, ContactClass::Corner,
@@ -112,7 +112,7 @@ TEST(Training, GaussianEvaluationFillsOneVsRestTable) {
   const GroupDataSet data = buildGroupDataSet(f.runs, SensorGroup::Left, FeatureKind::Normal);
   TrainSettings s;
   s.classifier.method = ClassifierMethod::Gaussian;
-  s.classifier.gmm.floor = 0.01;
+  s.classifier.gmm.varianceFloor = 0.01;
   const GroupTrainResult r = trainGroupModel(data, s);
   ASSERT_TRUE(r.ok) << r.reason;
   const GroupEvaluation ev = evaluateGroupModel(r.model, data);
@@ -149,7 +149,7 @@ TEST(Sweep, ResultsDoNotDependOnThreadCount) {
     const SweepCellResult& x = a.cells[i];
     const SweepCellResult& y = b.cells[i];
     EXPECT_EQ(x.cell.order, y.cell.order);
-    EXPECT_EQ(x.cell.floor, y.cell.floor);
+    EXPECT_EQ(x.cell.varianceFloor, y.cell.varianceFloor);
     EXPECT_EQ(x.ok, y.ok) << x.reason << " / " << y.reason;
     EXPECT_EQ(x.confusion, y.confusion);
     EXPECT_EQ(x.iterations, y.iterations);
@@ -219,26 +219,222 @@ TEST(Sweep, CancelBeforeStartRunsNothing) {
   EXPECT_TRUE(r.cells.empty());
 }
 
-TEST(Sweep, JsonRoundTripKeepsCellsForReports) {
+// A grid whose cells cover failed cells (no data in group B), the Gaussian method, warnings (a
+// variance floor far above the features' variance) and several seeds.
+SweepResult mixedSweep() {
   const Fixture& f = fixture();
   std::vector<LabelledRun> train, test;
   splitLabelledRuns(f.runs, 0.3, train, test);
-  SweepGrid g = smallGrid();
-  g.groups = {SensorGroup::Right};
-  const SweepResult r = runSweep(train, test, g);
+  for (LabelledRun& lr : train) {
+    for (std::size_t t = 0; t < lr.run->stepCount(); ++t)
+      lr.labels[t * kGroupCount + groupIndex(SensorGroup::Back)].reset();
+  }
+  SweepGrid g;
+  g.groups = {SensorGroup::Right, SensorGroup::Back};
+  g.methods = {ClassifierMethod::Gaussian, ClassifierMethod::Gmm};
+  g.orders = {1, 2};
+  g.forms = {CovarianceForm::NodalDiag, CovarianceForm::GrandFull};
+  g.varianceFloors = {0.01, 1000.0};
+  g.seeds = {1, 7};
+  g.regularization = Regularization::Add;
+  g.init = GmmInit::RandomFromData;
+  g.restarts = 2;
+  g.maxIterations = 25;
+  g.tolerance = 1e-4;
+  g.priors = PriorMode::Empirical;
+  SweepResult r = runSweep(train, test, g);
+  r.cancelled = true;  // so the flag is written as true too
+  return r;
+}
+
+// sweepFromJson reads back everything sweepToJson writes.
+TEST(Sweep, JsonRoundTripReadsBackEveryField) {
+  const SweepResult r = mixedSweep();
+  bool anyFailed = false, anyWarning = false;
+  for (const SweepCellResult& c : r.cells) {
+    anyFailed = anyFailed || !c.ok;
+    anyWarning = anyWarning || !c.warnings.empty();
+  }
+  ASSERT_TRUE(anyFailed);
+  ASSERT_TRUE(anyWarning);
   const nlohmann::json j = nlohmann::json::parse(sweepToJson(r).dump());
   SweepResult back;
   ASSERT_EQ(sweepFromJson(j, back), "");
+  // Grid.
+  const SweepGrid &g = r.grid, &h = back.grid;
+  EXPECT_EQ(h.groups, g.groups);
+  EXPECT_EQ(h.methods, g.methods);
+  EXPECT_EQ(h.orders, g.orders);
+  EXPECT_EQ(h.forms, g.forms);
+  EXPECT_EQ(h.varianceFloors, g.varianceFloors);
+  EXPECT_EQ(h.features, g.features);
+  EXPECT_EQ(h.seeds, g.seeds);
+  EXPECT_EQ(h.regularization, g.regularization);
+  EXPECT_EQ(h.init, g.init);
+  EXPECT_EQ(h.restarts, g.restarts);
+  EXPECT_EQ(h.maxIterations, g.maxIterations);
+  EXPECT_EQ(h.tolerance, g.tolerance);
+  EXPECT_EQ(h.priors, g.priors);
+  // Run.
+  EXPECT_EQ(back.threads, r.threads);
+  EXPECT_EQ(back.wallSeconds, r.wallSeconds);
+  EXPECT_EQ(back.extractSeconds, r.extractSeconds);
+  EXPECT_EQ(back.cancelled, r.cancelled);
+  // Data summaries.
+  ASSERT_EQ(back.data.size(), r.data.size());
+  for (std::size_t i = 0; i < r.data.size(); ++i) {
+    const SweepDataSummary &x = r.data[i], &y = back.data[i];
+    EXPECT_EQ(y.group, x.group);
+    EXPECT_EQ(y.features, x.features);
+    EXPECT_EQ(y.trainRows, x.trainRows);
+    EXPECT_EQ(y.testRows, x.testRows);
+    EXPECT_EQ(y.trainCounts, x.trainCounts);
+    EXPECT_EQ(y.testCounts, x.testCounts);
+    EXPECT_EQ(y.trainZeroRows, x.trainZeroRows);
+    EXPECT_EQ(y.testZeroRows, x.testZeroRows);
+  }
+  // Cells.
   ASSERT_EQ(back.cells.size(), r.cells.size());
   for (std::size_t i = 0; i < r.cells.size(); ++i) {
-    EXPECT_EQ(back.cells[i].confusion, r.cells[i].confusion);
-    EXPECT_EQ(back.cells[i].cell.form, r.cells[i].cell.form);
-    EXPECT_EQ(back.cells[i].meanLogLikelihood, r.cells[i].meanLogLikelihood);
-    EXPECT_EQ(back.cells[i].metrics.balancedAccuracy, r.cells[i].metrics.balancedAccuracy);
+    const SweepCellResult &x = r.cells[i], &y = back.cells[i];
+    EXPECT_EQ(y.cell.group, x.cell.group);
+    EXPECT_EQ(y.cell.method, x.cell.method);
+    EXPECT_EQ(y.cell.order, x.cell.order);
+    EXPECT_EQ(y.cell.form, x.cell.form);
+    EXPECT_EQ(y.cell.varianceFloor, x.cell.varianceFloor);
+    EXPECT_EQ(y.cell.features, x.cell.features);
+    EXPECT_EQ(y.cell.seed, x.cell.seed);
+    EXPECT_EQ(y.ok, x.ok);
+    EXPECT_EQ(y.reason, x.reason);
+    EXPECT_EQ(y.classes, x.classes);
+    EXPECT_EQ(y.unmodelled, x.unmodelled);
+    EXPECT_EQ(y.trainRows, x.trainRows);
+    EXPECT_EQ(y.testRows, x.testRows);
+    EXPECT_EQ(y.fitSeconds, x.fitSeconds);
+    EXPECT_EQ(y.predictSeconds, x.predictSeconds);
+    EXPECT_EQ(y.iterations, x.iterations);
+    EXPECT_EQ(y.maxIterations, x.maxIterations);
+    EXPECT_EQ(y.converged, x.converged);
+    EXPECT_EQ(y.confusion, x.confusion);
+    EXPECT_EQ(y.metrics.total, x.metrics.total);
+    EXPECT_EQ(y.metrics.accuracy, x.metrics.accuracy);
+    EXPECT_EQ(y.metrics.balancedAccuracy, x.metrics.balancedAccuracy);
+    EXPECT_EQ(y.metrics.macroF1, x.metrics.macroF1);
+    EXPECT_EQ(y.meanLogLikelihood, x.meanLogLikelihood);
+    EXPECT_EQ(y.negInfRows, x.negInfRows);
+    EXPECT_EQ(y.droppedComponents, x.droppedComponents);
+    EXPECT_EQ(y.warnings, x.warnings);
   }
+  // Written again, the re-read result gives the same file.
+  EXPECT_EQ(sweepToJson(back), sweepToJson(r));
   // The report tables render both the live and the re-read result the same way.
+  EXPECT_EQ(sweepReport(back, TableStyle::Csv), sweepReport(r, TableStyle::Csv));
   EXPECT_EQ(sweepReport(back, TableStyle::Csv).find("nan"), std::string::npos);
-  EXPECT_EQ(rateAgainstOrderTable(back).rows.size(), rateAgainstOrderTable(r).rows.size());
+}
+
+// Cancellation reaches the running fits: progress is consulted after every EM iteration, so a
+// cancel returned while the first cell is fitting stops it at once and nothing is kept.
+TEST(Sweep, CancelStopsARunningFitWithinOneIteration) {
+  const Fixture& f = fixture();
+  SweepGrid g = smallGrid();
+  g.groups = {SensorGroup::Right};
+  g.tolerance = 0.0;
+  g.maxIterations = 500;
+  SweepOptions o;
+  o.threads = 1;
+  int calls = 0;
+  std::size_t lastDone = 0;
+  const SweepResult r = runSweep(f.runs, f.runs, g, o, [&](std::size_t done, std::size_t) {
+    lastDone = done;
+    return ++calls < 10;  // call 1 is the start; calls 2..10 come from the first cell's fits
+  });
+  EXPECT_TRUE(r.cancelled);
+  EXPECT_EQ(calls, 10);  // nothing consulted after the cancel
+  EXPECT_EQ(lastDone, 0u);
+  EXPECT_TRUE(r.cells.empty());
+}
+
+// Cells finished before a cancel are kept (and were reported through onCell); the cell whose fit
+// was running is stopped within one iteration and is not a result.
+TEST(Sweep, CancelKeepsFinishedCells) {
+  const Fixture& f = fixture();
+  SweepGrid g = smallGrid();
+  g.groups = {SensorGroup::Right};
+  g.tolerance = 0.0;
+  g.maxIterations = 500;
+  SweepOptions o;
+  o.threads = 1;
+  std::vector<SweepCellResult> reported;
+  o.onCell = [&](const SweepCellResult& c) { reported.push_back(c); };
+  int callsAfterFirstCell = 0;
+  const SweepResult r = runSweep(f.runs, f.runs, g, o, [&](std::size_t done, std::size_t) {
+    if (done == 0) return true;
+    EXPECT_EQ(done, 1u);
+    return ++callsAfterFirstCell < 3;  // cancel inside the second cell's fits
+  });
+  EXPECT_TRUE(r.cancelled);
+  EXPECT_EQ(callsAfterFirstCell, 3);
+  ASSERT_EQ(r.cells.size(), 1u);
+  EXPECT_TRUE(r.cells[0].ok);
+  ASSERT_EQ(reported.size(), 1u);
+  EXPECT_EQ(reported[0].cell.order, r.cells[0].cell.order);
+  EXPECT_EQ(reported[0].cell.form, r.cells[0].cell.form);
+  EXPECT_EQ(reported[0].confusion, r.cells[0].confusion);
+}
+
+// onCell sees every cell once, as it finishes, with the result that ends up in the sweep.
+TEST(Sweep, OnCellReportsEveryCellAsItFinishes) {
+  const Fixture& f = fixture();
+  std::vector<LabelledRun> train, test;
+  splitLabelledRuns(f.runs, 0.3, train, test);
+  SweepOptions o;
+  o.threads = 2;
+  std::vector<SweepCellResult> reported;
+  std::size_t doneWhenReported = 0;
+  bool inOrder = true;
+  o.onCell = [&](const SweepCellResult& c) { reported.push_back(c); };
+  const SweepResult r = runSweep(train, test, smallGrid(), o, [&](std::size_t done, std::size_t) {
+    // Progress for a finished cell comes right after its onCell call.
+    if (done > doneWhenReported) {
+      inOrder = inOrder && done == reported.size();
+      doneWhenReported = done;
+    }
+    return true;
+  });
+  EXPECT_TRUE(inOrder);
+  ASSERT_EQ(reported.size(), r.cells.size());
+  std::size_t matched = 0;
+  for (const SweepCellResult& c : reported) {
+    for (const SweepCellResult& x : r.cells) {
+      if (x.cell.group == c.cell.group && x.cell.order == c.cell.order &&
+          x.cell.form == c.cell.form && x.cell.varianceFloor == c.cell.varianceFloor) {
+        EXPECT_EQ(x.confusion, c.confusion);
+        EXPECT_EQ(x.meanLogLikelihood, c.meanLogLikelihood);
+        ++matched;
+      }
+    }
+  }
+  EXPECT_EQ(matched, r.cells.size());
+}
+
+// A held-out row with zero density is counted in neg_inf_rows and left out of the mean, the same
+// way as `tactile fit` (one definition, heldOutLogLikelihood).
+TEST(Training, NegInfRowsAreCountedNotAveraged) {
+  const Fixture& f = fixture();
+  const GroupDataSet data = buildGroupDataSet(f.runs, SensorGroup::Right, FeatureKind::Normal);
+  TrainSettings s;
+  s.classifier.gmm.components = 2;
+  const GroupTrainResult r = trainGroupModel(data, s);
+  ASSERT_TRUE(r.ok) << r.reason;
+  GroupDataSet test = data;
+  const GroupEvaluation clean = evaluateGroupModel(r.model, test);
+  EXPECT_EQ(clean.negInfRows, 0u);
+  test.x(0, 0) = 1e200;
+  const GroupEvaluation ev = evaluateGroupModel(r.model, test);
+  EXPECT_EQ(ev.negInfRows, 1u);
+  ASSERT_TRUE(ev.meanLogLikelihood.has_value());
+  EXPECT_TRUE(std::isfinite(*ev.meanLogLikelihood));
+  EXPECT_EQ(evaluationToJson(ev)["neg_inf_rows"], 1);
 }
 
 TEST(Sweep, NotASweepFileIsAnError) {
