@@ -3,41 +3,33 @@
 
 #include "analysis/kmeans.h"
 
+#include "analysis/gmm_kernels.h"
+#include "analysis/parallel.h"
+
 #include <Eigen/Dense>
 
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <limits>
-#include <thread>
 
 namespace tactile {
 
 namespace {
 constexpr Eigen::Index kBlockRows = 512;
-// Rows are split into this many parts whatever the thread count; partial sums are added in part
-// order, so results do not depend on the number of threads.
-constexpr int kParts = 8;
+// Fewer rows than this run on the calling thread (waking workers would cost more).
+constexpr Eigen::Index kMinRowsForThreads = 4096;
 
+// Runs f(firstBlock, endBlock) over groups of blocks of `rows` rows on `threads` threads. Every
+// caller writes one result per block and reduces them in block order, so results do not depend on
+// the number of threads.
 template <class F>
-void forEachPart(Eigen::Index n, int threads, F&& f) {
-  const auto run = [&](int p) { f(n * p / kParts, n * (p + 1) / kParts, p); };
-  threads = std::clamp(threads, 1, kParts);
-  if (threads == 1 || n < 4096) {
-    for (int p = 0; p < kParts; ++p)
-      run(p);
-    return;
-  }
-  std::vector<std::thread> pool;
-  for (int t = 1; t < threads; ++t)
-    pool.emplace_back([&, t] {
-      for (int p = t; p < kParts; p += threads)
-        run(p);
-    });
-  for (int p = 0; p < kParts; p += threads)
-    run(p);
-  for (auto& th : pool)
-    th.join();
+void forEachBlockGroup(Eigen::Index rows, Eigen::Index blocks, int threads, F&& f) {
+  if (rows < kMinRowsForThreads) threads = 1;
+  constexpr Eigen::Index kBlocksPerPart = 4;
+  const int parts = static_cast<int>((blocks + kBlocksPerPart - 1) / kBlocksPerPart);
+  parallelFor(parts, threads,
+              [&](int p) { f(p * kBlocksPerPart, std::min(blocks, (p + 1) * kBlocksPerPart)); });
 }
 }  // namespace
 
@@ -49,43 +41,34 @@ Eigen::MatrixXd kmeansPlusPlus(const Eigen::MatrixXd& samples, int k, Rng& rng, 
   Eigen::Index first = static_cast<Eigen::Index>(rng.below(static_cast<std::uint64_t>(n)));
   centres.row(0) = samples.row(first);
   // D(x_n)^2 to the nearest chosen centre; each candidate costs one blocked pass over the data.
-  Eigen::ArrayXd dist2(n);
-  // out = min(current, |x - row|^2) (current == nullptr: just the distance); returns sum(out).
-  const auto distances = [&](const Eigen::RowVectorXd& c, const double* current, double* out) {
-    std::array<double, kParts> partial{};
-    forEachPart(n, threads, [&](Eigen::Index begin, Eigen::Index end, int part) {
-      double acc[kBlockRows];
-      double total = 0.0;
-      for (Eigen::Index start = begin; start < end; start += kBlockRows) {
-        const Eigen::Index b = std::min(kBlockRows, end - start);
-        for (Eigen::Index r = 0; r < b; ++r)
-          acc[r] = 0.0;
-        for (Eigen::Index j = 0; j < d; ++j) {
-          const double* xj = samples.data() + j * n + start;
-          const double cj = c(j);
-          for (Eigen::Index r = 0; r < b; ++r) {
-            const double t = xj[r] - cj;
-            acc[r] += t * t;
-          }
-        }
-        for (Eigen::Index r = 0; r < b; ++r) {
-          const double v = current ? std::min(current[start + r], acc[r]) : acc[r];
-          out[start + r] = v;
-          total += v;
-        }
+  // Every block of kBlockRows rows also keeps its own sum, so drawing a row by D^2 walks the block
+  // sums first and then one block, instead of every row.
+  const Eigen::Index blocks = (n + kBlockRows - 1) / kBlockRows;
+  Eigen::ArrayXd dist2(n), dist2Blocks(blocks);
+  // out = min(current, |x - row|^2) (current == nullptr: just the distance), outBlocks = the
+  // block sums; returns their sum, added in block order.
+  const auto distances = [&](const Eigen::RowVectorXd& c, const double* current, double* out,
+                             double* outBlocks) {
+    const Eigen::VectorXd centre = c.transpose();
+    forEachBlockGroup(n, blocks, threads, [&](Eigen::Index begin, Eigen::Index end) {
+      for (Eigen::Index blk = begin; blk < end; ++blk) {
+        const Eigen::Index start = blk * kBlockRows;
+        const Eigen::Index b = std::min(kBlockRows, n - start);
+        outBlocks[blk] =
+            blockSquaredDistances(samples.data() + start, n, b, static_cast<int>(d), centre.data(),
+                                  current ? current + start : nullptr, out + start);
       }
-      partial[static_cast<std::size_t>(part)] = total;
     });
     double total = 0.0;
-    for (double p : partial)
-      total += p;
+    for (Eigen::Index blk = 0; blk < blocks; ++blk)
+      total += outBlocks[blk];
     return total;
   };
-  double potential = distances(centres.row(0), nullptr, dist2.data());
+  double potential = distances(centres.row(0), nullptr, dist2.data(), dist2Blocks.data());
   // Greedy k-means++ (as scikit-learn): 2 + floor(ln k) candidates per step, keep the one that
   // lowers the potential sum D^2 most.
   const int trials = 2 + static_cast<int>(std::log(static_cast<double>(k)));
-  Eigen::ArrayXd candidate(n), bestCandidate(n);
+  Eigen::ArrayXd candidate(n), bestCandidate(n), candidateBlocks(blocks), bestBlocks(blocks);
   for (int c = 1; c < k; ++c) {
     double bestPotential = std::numeric_limits<double>::infinity();
     Eigen::Index bestPick = 0;
@@ -94,10 +77,15 @@ Eigen::MatrixXd kmeansPlusPlus(const Eigen::MatrixXd& samples, int k, Rng& rng, 
       if (!(potential > 0.0) || !std::isfinite(potential)) {
         pick = static_cast<Eigen::Index>(rng.below(static_cast<std::uint64_t>(n)));
       } else {
+        // The first row at which the running sum of D^2 (block sums, then rows) passes the target.
         const double target = rng.uniform() * potential;
         double run = 0.0;
         pick = n - 1;
-        for (Eigen::Index i = 0; i < n; ++i) {
+        Eigen::Index blk = 0;
+        while (blk < blocks && run + dist2Blocks(blk) <= target)
+          run += dist2Blocks(blk++);
+        const Eigen::Index end = blk < blocks ? std::min(n, (blk + 1) * kBlockRows) : n;
+        for (Eigen::Index i = blk * kBlockRows; i < end; ++i) {
           run += dist2(i);
           if (run > target && dist2(i) > 0.0) {
             pick = i;
@@ -107,15 +95,18 @@ Eigen::MatrixXd kmeansPlusPlus(const Eigen::MatrixXd& samples, int k, Rng& rng, 
         while (pick > 0 && !(dist2(pick) > 0.0))
           --pick;  // never pick an already-covered row
       }
-      const double p = distances(samples.row(pick), dist2.data(), candidate.data());
+      const double p =
+          distances(samples.row(pick), dist2.data(), candidate.data(), candidateBlocks.data());
       if (p < bestPotential) {
         bestPotential = p;
         bestPick = pick;
         bestCandidate.swap(candidate);
+        bestBlocks.swap(candidateBlocks);
       }
     }
     centres.row(c) = samples.row(bestPick);
     dist2.swap(bestCandidate);
+    dist2Blocks.swap(bestBlocks);
     potential = bestPotential;
   }
   return centres;
@@ -124,45 +115,22 @@ Eigen::MatrixXd kmeansPlusPlus(const Eigen::MatrixXd& samples, int k, Rng& rng, 
 double assignNearest(const Eigen::MatrixXd& samples, const Eigen::MatrixXd& centres,
                      std::vector<int>& assignment, int threads) {
   const Eigen::Index n = samples.rows();
-  const Eigen::Index k = centres.rows();
+  const int k = static_cast<int>(centres.rows());
   assignment.assign(static_cast<std::size_t>(n), 0);
-  const Eigen::VectorXd c2 = centres.rowwise().squaredNorm();
-  std::array<double, kParts> partial{};
-  forEachPart(n, threads, [&](Eigen::Index begin, Eigen::Index end, int part) {
-    Eigen::MatrixXd prod(kBlockRows, k);
-    double inertia = 0.0;
-    double best[kBlockRows];
-    int bestIndex[kBlockRows];
-    for (Eigen::Index start = begin; start < end; start += kBlockRows) {
-      const Eigen::Index b = std::min(kBlockRows, end - start);
-      auto block = samples.middleRows(start, b);
-      prod.topRows(b).noalias() = block * centres.transpose();
-      // argmin_i (|c_i|^2 - 2 x . c_i), vectorised over rows; ties keep the lowest index.
-      for (Eigen::Index r = 0; r < b; ++r) {
-        best[r] = c2(0) - 2.0 * prod(r, 0);
-        bestIndex[r] = 0;
-      }
-      for (Eigen::Index i = 1; i < k; ++i) {
-        const double* col = prod.data() + i * kBlockRows;
-        const double ci = c2(i);
-        const int ii = static_cast<int>(i);
-        for (Eigen::Index r = 0; r < b; ++r) {
-          const double v = ci - 2.0 * col[r];
-          const bool better = v < best[r];
-          best[r] = better ? v : best[r];
-          bestIndex[r] = better ? ii : bestIndex[r];
-        }
-      }
-      for (Eigen::Index r = 0; r < b; ++r) {
-        assignment[static_cast<std::size_t>(start + r)] = bestIndex[r];
-        inertia += std::max(0.0, best[r] + block.row(r).squaredNorm());
-      }
+  if (n == 0 || k == 0) return 0.0;
+  const Eigen::Index blocks = (n + kBlockRows - 1) / kBlockRows;
+  std::vector<double> blockInertia(static_cast<std::size_t>(blocks));
+  forEachBlockGroup(n, blocks, threads, [&](Eigen::Index begin, Eigen::Index end) {
+    for (Eigen::Index blk = begin; blk < end; ++blk) {
+      const Eigen::Index start = blk * kBlockRows;
+      blockInertia[static_cast<std::size_t>(blk)] = blockNearestCentres(
+          samples.data() + start, n, std::min(kBlockRows, n - start),
+          static_cast<int>(samples.cols()), centres.data(), k, assignment.data() + start);
     }
-    partial[static_cast<std::size_t>(part)] = inertia;
   });
   double inertia = 0.0;
-  for (double p : partial)
-    inertia += p;
+  for (double v : blockInertia)
+    inertia += v;
   return inertia;
 }
 
@@ -174,18 +142,34 @@ int lloydIterations(const Eigen::MatrixXd& samples, Eigen::MatrixXd& centres, in
   assignNearest(samples, centres, assignment, threads);
   int done = 0;
   std::vector<int> next;
+  // Sums per part of the rows (a fixed number of parts for a given n), added in part order.
+  const int parts = static_cast<int>(std::clamp<Eigen::Index>(n / 8192, 1, 16));
+  std::vector<Eigen::MatrixXd> partSums(static_cast<std::size_t>(parts));
+  std::vector<Eigen::VectorXd> partCounts(static_cast<std::size_t>(parts));
   Eigen::MatrixXd sums(k, d);
   Eigen::VectorXd counts(k);
+  const int partThreads = n < kMinRowsForThreads ? 1 : threads;
   while (done < iterations) {
+    parallelFor(parts, partThreads, [&](int p) {
+      Eigen::MatrixXd& ps = partSums[static_cast<std::size_t>(p)];
+      Eigen::VectorXd& pc = partCounts[static_cast<std::size_t>(p)];
+      ps.setZero(k, d);
+      pc.setZero(k);
+      const Eigen::Index begin = n * p / parts, end = n * (p + 1) / parts;
+      for (Eigen::Index r = begin; r < end; ++r)
+        pc(assignment[static_cast<std::size_t>(r)]) += 1.0;
+      for (Eigen::Index j = 0; j < d; ++j) {
+        const double* xj = samples.data() + j * n;
+        double* sj = ps.data() + j * k;
+        for (Eigen::Index r = begin; r < end; ++r)
+          sj[assignment[static_cast<std::size_t>(r)]] += xj[r];
+      }
+    });
     sums.setZero();
     counts.setZero();
-    for (Eigen::Index r = 0; r < n; ++r)
-      counts(assignment[static_cast<std::size_t>(r)]) += 1.0;
-    for (Eigen::Index j = 0; j < d; ++j) {
-      const double* xj = samples.data() + j * n;
-      double* sj = sums.data() + j * k;
-      for (Eigen::Index r = 0; r < n; ++r)
-        sj[assignment[static_cast<std::size_t>(r)]] += xj[r];
+    for (int p = 0; p < parts; ++p) {
+      sums += partSums[static_cast<std::size_t>(p)];
+      counts += partCounts[static_cast<std::size_t>(p)];
     }
     for (Eigen::Index i = 0; i < k; ++i)
       if (counts(i) > 0.0) centres.row(i) = sums.row(i) / counts(i);

@@ -18,8 +18,9 @@ namespace tactile {
 // `threads` workers share the distance passes; the result does not depend on their number.
 Eigen::MatrixXd kmeansPlusPlus(const Eigen::MatrixXd& samples, int k, Rng& rng, int threads = 1);
 
-// Index of the nearest centre of every row (ties go to the lowest index), computed in blocks as
-// argmin_i (|c_i|^2 - 2 x . c_i). Returns the sum of squared distances (inertia).
+// Index of the nearest centre of every row (ties go to the lowest index), from the squared
+// distances |x - c_i|^2 computed directly (vectorised over rows). Returns the sum of squared
+// distances (inertia).
 double assignNearest(const Eigen::MatrixXd& samples, const Eigen::MatrixXd& centres,
                      std::vector<int>& assignment, int threads = 1);
 

@@ -44,13 +44,15 @@ tactile_install_deps() {
   fi
 }
 
-# Configures (once) and builds the Release tree in build/.
+# Configures and builds the Release tree in build/ (reused when it exists). Further arguments
+# are CMake options, e.g. -DTACTILE_WERROR=ON (developers and CI).
 tactile_build() {
   local root=$1
+  shift
   local jobs
   jobs=$(nproc 2>/dev/null || echo 2)
-  if [ ! -f "$root/build/CMakeCache.txt" ]; then
-    cmake -S "$root" -B "$root/build" -DCMAKE_BUILD_TYPE=Release
+  if [ ! -f "$root/build/CMakeCache.txt" ] || [ $# -gt 0 ]; then
+    cmake -S "$root" -B "$root/build" -DCMAKE_BUILD_TYPE=Release "$@"
   fi
   cmake --build "$root/build" -j"$jobs"
 }

@@ -5,7 +5,8 @@ root=$(cd "$(dirname "$0")/.." && pwd)
 # shellcheck source=scripts/deps.sh
 source "$root/scripts/deps.sh"
 tactile_install_deps
-tactile_build "$root"
+# Warnings are errors here (developers and CI), never in scripts/run.sh.
+tactile_build "$root" -DTACTILE_WERROR=ON
 cd "$root/build"
 export QT_QPA_PLATFORM=offscreen
 ctest --output-on-failure -j"$(nproc 2>/dev/null || echo 2)" --timeout 600

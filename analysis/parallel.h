@@ -1,0 +1,15 @@
+// Internal: a small fork-join pool for the learning kernels (EM passes, k-means passes).
+#pragma once
+
+#include <functional>
+
+namespace tactile {
+
+// Runs f(part) for every part in [0, parts) on up to `threads` threads (the calling thread is
+// one of them) and returns when all are done. Parts are handed out dynamically, so callers must
+// make each part's result independent of which thread ran it (write per-part outputs, reduce them
+// in part order afterwards). The worker threads persist between calls. A call made while another
+// call is using the pool, or from inside a part, runs its parts on the calling thread.
+void parallelFor(int parts, int threads, const std::function<void(int)>& f);
+
+}  // namespace tactile
