@@ -1,4 +1,4 @@
-// Sweep engine (DESIGN.md sections 5 and 7): train and score one classifier per cell of a grid
+// Sweep engine: train and score one classifier per cell of a grid
 // group x method x order x covariance form x variance floor x features x seed, on all cores.
 //
 // Shared work is done once: each (group, features) data set is extracted from the runs once and

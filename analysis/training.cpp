@@ -14,7 +14,7 @@ ClassSelection selectClasses(const GroupDataSet& data) {
   const std::size_t minimum = static_cast<std::size_t>(std::max(2, data.dimension()));
   for (int c = 0; c < kContactClassCount; ++c) {
     const std::size_t n = counts[static_cast<std::size_t>(c)];
-    if (n == 0) continue;  // absent classes are not modelled (DESIGN.md section 7)
+    if (n == 0) continue;  // absent classes are not modelled
     (n >= minimum ? out.modelled : out.unmodelled).push_back(static_cast<ContactClass>(c));
   }
   return out;

@@ -1,4 +1,4 @@
-// Learning verbs on labelled runs: train, sweep, report, classify (DESIGN.md section 6).
+// Learning verbs on labelled runs: train, sweep, report, classify.
 #include <nlohmann/json.hpp>
 
 #include <algorithm>

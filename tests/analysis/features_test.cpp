@@ -1,4 +1,4 @@
-// Feature vectors, the NoContact rule, label files and labelled data sets (DESIGN.md section 5).
+// Feature vectors, the NoContact rule, label files and labelled data sets.
 #include <gtest/gtest.h>
 
 #include <cmath>

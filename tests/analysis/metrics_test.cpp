@@ -1,4 +1,4 @@
-// Metrics and report tables (DESIGN.md section 5; thesis tables 4.19 and 4.39, figures 4.13/14).
+// Metrics and report tables (thesis tables 4.19 and 4.39, figures 4.13/14).
 #include <gtest/gtest.h>
 
 #include <cmath>

@@ -1,5 +1,5 @@
-// Model files (DESIGN.md section 4): round trip bit for bit (issue 3, stability test 9) and
-// validation of bad files, one test per defect.
+// Model files: round trip bit for bit (docs/learning.md, "Stability cases") and validation of bad
+// files, one test per defect.
 #include <gtest/gtest.h>
 
 #include <cmath>

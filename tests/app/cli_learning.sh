@@ -1,0 +1,103 @@
+#!/bin/sh
+# The learning verbs report what the engine did: components dropped for lack of mass, held-out rows
+# whose log-likelihood is -inf (one definition of mean_loglik for fit, train and sweep), warnings
+# for a variance floor that hides a feature, and no settings the Gaussian method does not use.
+#   tests/app/cli_learning.sh TACTILE WORKDIR
+set -eu
+T=$1
+W=$2
+rm -rf "$W"
+mkdir -p "$W"
+cd "$W"
+fail() {
+  echo "FAIL: $*" >&2
+  exit 1
+}
+has() {  # has FILE TEXT: the file contains TEXT literally
+  grep -qF -- "$2" "$1" || fail "$1 lacks $2: $(cat "$1")"
+}
+lacks() {
+  if grep -qF -- "$2" "$1"; then fail "$1 has $2: $(cat "$1")"; fi
+}
+
+# Two classes; class a has exactly 4 distinct points.
+{
+  echo "f0,f1,label"
+  for i in 0 1 2 3 4 5 6 7 8 9; do
+    echo "0,0,a"
+    echo "1,0,a"
+    echo "0,1,a"
+    echo "1,1,a"
+    echo "5.$i,5.$i,b"
+    echo "6.$i,4.$i,b"
+  done
+} > train.csv
+
+# Order 64 on 4 distinct points keeps 4 components: 60 dropped, and said so.
+"$T" fit --train train.csv --order 64 --floor 0.01 --json > fit64.json || fail "fit exited $?"
+has fit64.json '"components_per_class":[4,'
+has fit64.json '"dropped_components_per_class":[60,'
+has fit64.json '"dropped_components":'
+for key in '"fit_s":' '"mean_loglik":' '"iterations":' '"accuracy":' '"neg_inf_rows":0'; do
+  has fit64.json "$key"
+done
+"$T" fit --train train.csv --order 64 --floor 0.01 > fit64.txt || fail "fit (text) exited $?"
+has fit64.txt "dropped for lack of mass"
+
+# A test row with zero density (-inf log-likelihood) is counted, not averaged.
+{
+  echo "f0,f1,label"
+  echo "0.5,0.5,a"
+  echo "1e200,0,a"
+  echo "5.5,5.5,b"
+} > test.csv
+"$T" fit --train train.csv --test test.csv --order 2 --json > neginf.json || fail "fit exited $?"
+has neginf.json '"neg_inf_rows":1'
+lacks neginf.json '"mean_loglik":null'
+"$T" fit --train train.csv --test test.csv --order 2 > neginf.txt || fail "fit (text) exited $?"
+has neginf.txt "1 test rows with log-likelihood -inf left out"
+
+# The Gaussian method: no order, covariance form or initialisation; no one-vs-rest models fitted;
+# --reg add accepted.
+"$T" fit --train train.csv --method gaussian --reg add --json > gauss.json || fail "fit exited $?"
+lacks gauss.json '"order":'
+lacks gauss.json '"covariance":'
+lacks gauss.json '"init":'
+has gauss.json '"regularization":"add"'
+has gauss.json '"models_fitted":2'
+
+# A feature on the 1e-6 scale with the default floor: a warning naming it, on stderr and in JSON.
+{
+  echo "f0,f1,label"
+  for i in 0 1 2 3 4 5 6 7 8 9; do
+    echo "$i,0.00000$i,a"
+    echo "$i,0.00001$i,b"
+  done
+} > tiny.csv
+"$T" fit --train tiny.csv --order 1 --json > tiny.json 2> tiny.err || fail "fit exited $?"
+has tiny.err "tactile: warning: variance floor 0.01 is"
+has tiny.err "feature 1 (f1)"
+has tiny.json '"warnings":["variance floor'
+"$T" fit --train train.csv --order 2 --json > clean.json 2> clean.err || fail "fit exited $?"
+has clean.json '"warnings":[]'
+lacks clean.err "warning"
+
+# train and sweep report the same quantities.
+"$T" simulate --scene room1 --driver wall-follow --steps 800 --runs 2 --out-dir runs --quiet \
+  > /dev/null
+"$T" train --runs runs/run_0000.csv runs/run_0001.csv --groups R --order 64 --out m.json \
+  --json > train.json 2> /dev/null || fail "train exited $?"
+for key in '"dropped_components":' '"neg_inf_rows":' '"mean_loglik":' '"warnings":'; do
+  has train.json "$key"
+done
+lacks train.json '"dropped_components":0'
+"$T" sweep --runs runs/run_0000.csv runs/run_0001.csv --groups R --orders 1,64 \
+  --covs nodal-diag --floors 0.03 --out s.json --json > sweep.json || fail "sweep exited $?"
+has sweep.json '"warnings":'
+[ "$(grep -o '"dropped_components":' s.json | wc -l)" -eq 2 ] || fail "sweep cells: $(cat s.json)"
+[ "$(grep -o '"neg_inf_rows":' s.json | wc -l)" -eq 2 ] || fail "sweep cells: $(cat s.json)"
+"$T" report s.json > report.txt || fail "report exited $?"
+has report.txt "dropped"
+"$T" report m.json > model.txt || fail "report exited $?"
+has model.txt "dropped"
+echo "ok"
