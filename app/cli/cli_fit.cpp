@@ -140,6 +140,9 @@ int runFit(const FitArgs& f, const ClassifierArgs& a) {
     j["components_per_class"] = components;
     j["dropped_components"] = dropped;
     j["dropped_components_per_class"] = e.fit.droppedComponents;
+    // A step that lowered the log-likelihood and was undone (within rounding, or for --reg add
+    // within its bound): the fall in nats per sample, 0 when none (docs/learning.md).
+    j["likelihood_drop_per_class"] = e.fit.likelihoodDrop;
     j["models_fitted"] = e.fit.model.models().size() + e.fit.model.restModels().size();
     j["warnings"] = e.fit.warnings;
     std::printf("%s\n", j.dump().c_str());
