@@ -25,6 +25,7 @@
 
 #include "analysis/gaussian.h"
 #include "analysis/kmeans.h"
+#include "analysis/parallel.h"
 
 namespace tactile {
 
@@ -353,23 +354,7 @@ Chunking makeChunking(Eigen::Index n) {
 // Runs f(chunk) for every chunk on `threads` threads (the calling thread is one of them).
 template <class F>
 void forEachChunk(int chunks, int threads, F&& f) {
-  threads = std::clamp(threads, 1, chunks);
-  if (threads == 1) {
-    for (int c = 0; c < chunks; ++c)
-      f(c);
-    return;
-  }
-  std::vector<std::thread> pool;
-  pool.reserve(static_cast<std::size_t>(threads - 1));
-  for (int t = 1; t < threads; ++t)
-    pool.emplace_back([&, t] {
-      for (int c = t; c < chunks; c += threads)
-        f(c);
-    });
-  for (int c = 0; c < chunks; c += threads)
-    f(c);
-  for (auto& th : pool)
-    th.join();
+  parallelFor(chunks, threads, [&](int c) { f(c); });
 }
 
 // One E-step pass over the centred data: log-likelihood, and if withMoments the M-step statistics
@@ -547,29 +532,38 @@ bool mStep(const Stats& st, const EmState& old, const GmmOptions& o, EmState& ne
   return true;
 }
 
-// Statistics of a hard assignment (one-hot responsibilities) around `centres`.
+// Statistics of a hard assignment (one-hot responsibilities) around `centres`, per chunk of rows
+// on `threads` threads, reduced in chunk order (the result does not depend on `threads`).
 Stats hardAssignmentStats(const Eigen::MatrixXd& x, const Eigen::MatrixXd& centres,
-                          const std::vector<int>& assignment, bool diagonal) {
+                          const std::vector<int>& assignment, bool diagonal, int threads) {
   const int k = static_cast<int>(centres.rows());
   const int d = static_cast<int>(x.cols());
-  Stats st;
-  st.reset(k, d, diagonal, true);
-  Eigen::VectorXd z(d);
-  for (Eigen::Index r = 0; r < x.rows(); ++r) {
-    const int a = assignment[static_cast<std::size_t>(r)];
-    z = x.row(r).transpose() - centres.row(a).transpose();
-    st.nk(a) += 1.0;
-    st.s1.row(a) += z.transpose();
-    if (diagonal) {
-      st.s2.row(a) += z.array().square().matrix().transpose();
-    } else {
-      auto block = st.s2.middleCols(static_cast<Eigen::Index>(a) * d, d);
-      for (int j = 0; j < d; ++j)
-        for (int l = 0; l <= j; ++l)
-          block(j, l) += z(j) * z(l);
+  const Chunking ch = makeChunking(x.rows());
+  std::vector<Stats> parts(static_cast<std::size_t>(ch.chunks));
+  forEachChunk(ch.chunks, threads, [&](int c) {
+    Stats& st = parts[static_cast<std::size_t>(c)];
+    st.reset(k, d, diagonal, true);
+    Eigen::VectorXd z(d);
+    for (Eigen::Index r = ch.begin(c); r < ch.end(c); ++r) {
+      const int a = assignment[static_cast<std::size_t>(r)];
+      z = x.row(r).transpose() - centres.row(a).transpose();
+      st.nk(a) += 1.0;
+      st.s1.row(a) += z.transpose();
+      if (diagonal) {
+        st.s2.row(a) += z.array().square().matrix().transpose();
+      } else {
+        auto block = st.s2.middleCols(static_cast<Eigen::Index>(a) * d, d);
+        for (int j = 0; j < d; ++j)
+          for (int l = 0; l <= j; ++l)
+            block(j, l) += z(j) * z(l);
+      }
     }
-  }
-  return st;
+  });
+  Stats total;
+  total.reset(k, d, diagonal, true);
+  for (const Stats& st : parts)
+    total.add(st, true);
+  return total;
 }
 
 struct Attempt {
@@ -610,7 +604,7 @@ bool initialState(const Eigen::MatrixXd& x, const GmmOptions& o, Rng& rng, int t
       lloydIterations(x, centres, o.kmeansIterations, assignment, threads);
     else
       assignNearest(x, centres, assignment, threads);
-    const Stats st = hardAssignmentStats(x, centres, assignment, diagonal);
+    const Stats st = hardAssignmentStats(x, centres, assignment, diagonal, threads);
     EmState seed;
     seed.weights = Eigen::VectorXd::Constant(k, 1.0 / k);
     seed.means = centres;

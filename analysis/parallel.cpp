@@ -13,6 +13,17 @@ namespace {
 
 thread_local bool tInsidePart = false;
 
+inline void cpuRelax() {
+#if defined(__x86_64__) || defined(__i386__)
+  __builtin_ia32_pause();
+#endif
+}
+
+// Spin this many rounds (tens of microseconds) waiting for work or for helpers before sleeping:
+// EM and k-means hand out a job every fraction of a millisecond, and waking a sleeping thread
+// costs about as much as a part.
+constexpr int kSpinRounds = 20000;
+
 class Pool {
  public:
   explicit Pool(int workers) {
@@ -22,21 +33,28 @@ class Pool {
   }
   int workers() const { return static_cast<int>(threads_.size()); }
 
-  // Caller holds busy_. Runs the job with `helpers` workers besides the calling thread.
+  // Caller holds `busy`. Runs the job with `helpers` workers besides the calling thread.
   void run(int parts, int helpers, const std::function<void(int)>& f) {
+    job_ = &f;
+    parts_ = parts;
+    helpers_ = helpers;
+    next_.store(0, std::memory_order_relaxed);
+    // Every worker acknowledges every job (those beyond `helpers` without working), so none can
+    // still be reading this job's fields when the next one is written.
+    pending_.store(workers(), std::memory_order_relaxed);
     {
+      // Under the mutex, so that a worker about to sleep cannot miss the new generation.
       std::lock_guard<std::mutex> lock(mutex_);
-      job_ = &f;
-      parts_ = parts;
-      next_.store(0, std::memory_order_relaxed);
-      helpers_ = helpers;
-      pending_ = helpers;
-      ++generation_;
+      generation_.fetch_add(1, std::memory_order_release);
     }
     wake_.notify_all();
     work();
-    std::unique_lock<std::mutex> lock(mutex_);
-    done_.wait(lock, [this] { return pending_ == 0; });
+    for (int i = 0; i < kSpinRounds && pending_.load(std::memory_order_acquire) != 0; ++i)
+      cpuRelax();
+    if (pending_.load(std::memory_order_acquire) != 0) {
+      std::unique_lock<std::mutex> lock(mutex_);
+      done_.wait(lock, [this] { return pending_.load(std::memory_order_acquire) == 0; });
+    }
     job_ = nullptr;
   }
 
@@ -55,30 +73,38 @@ class Pool {
   void loop(int index) {
     std::uint64_t seen = 0;
     for (;;) {
-      {
+      std::uint64_t g = generation_.load(std::memory_order_acquire);
+      for (int i = 0; i < kSpinRounds && g == seen; ++i) {
+        cpuRelax();
+        g = generation_.load(std::memory_order_acquire);
+      }
+      if (g == seen) {
         std::unique_lock<std::mutex> lock(mutex_);
-        wake_.wait(lock, [&] { return generation_ != seen; });
-        seen = generation_;
-        if (index >= helpers_) continue;
+        wake_.wait(lock, [&] {
+          g = generation_.load(std::memory_order_acquire);
+          return g != seen;
+        });
       }
-      work();
-      {
+      seen = g;
+      if (index < helpers_) work();
+      if (pending_.fetch_sub(1, std::memory_order_acq_rel) == 1) {
         std::lock_guard<std::mutex> lock(mutex_);
-        --pending_;
+        done_.notify_one();
       }
-      done_.notify_one();
     }
   }
 
   std::vector<std::thread> threads_;
   std::mutex mutex_;
   std::condition_variable wake_, done_;
+  // Written by the caller before the generation is published (release), read by the workers
+  // after they see it (acquire).
   const std::function<void(int)>* job_ = nullptr;
   int parts_ = 0;
-  std::atomic<int> next_{0};
   int helpers_ = 0;
-  int pending_ = 0;
-  std::uint64_t generation_ = 0;
+  std::atomic<int> next_{0};
+  std::atomic<int> pending_{0};
+  std::atomic<std::uint64_t> generation_{0};
 };
 
 // Created on first use and never destroyed (its threads wait for work until the process ends).
