@@ -67,6 +67,8 @@ std::optional<E> parseName(const std::array<std::pair<E, std::string_view>, N>& 
 }
 
 constexpr Eigen::Index kBlockRows = 256;
+// Samples as the kernels read them: column-major, any leading dimension (outer stride).
+using DataRef = Eigen::Ref<const Eigen::MatrixXd>;
 // Rows rounded up to the kernels' vector width (8).
 int paddedRows(Eigen::Index rows) {
   return static_cast<int>((rows + 7) / 8 * 8);
@@ -339,8 +341,9 @@ struct EmState {
 struct Chunking {
   Eigen::Index rows = 0;
   int chunks = 1;
-  Eigen::Index begin(int c) const { return rows * c / chunks; }
-  Eigen::Index end(int c) const { return rows * (c + 1) / chunks; }
+  // Chunks start on multiples of 8 rows (aligned vector loads); the last one ends at `rows`.
+  Eigen::Index begin(int c) const { return rows * c / chunks / 8 * 8; }
+  Eigen::Index end(int c) const { return c + 1 == chunks ? rows : begin(c + 1); }
 };
 
 Chunking makeChunking(Eigen::Index n) {
@@ -359,13 +362,12 @@ void forEachChunk(int chunks, int threads, F&& f) {
 
 // One E-step pass over the centred data: log-likelihood, and if withMoments the M-step statistics
 // around the current means. Per-chunk results are reduced in chunk order into `total`.
-void emPass(const Eigen::MatrixXd& x, const EmState& state, bool withMoments, int threads,
+void emPass(const DataRef& x, const EmState& state, bool withMoments, int threads,
             const Chunking& ch, std::vector<Stats>& chunkStats, Stats& total) {
   const GmmDensityCache& cache = state.cache;
   const int k = cache.components;
   const int d = cache.dimension;
   const bool diagonal = cache.diagonal;
-  const Eigen::Index n = x.rows();
   chunkStats.resize(static_cast<std::size_t>(ch.chunks));
   forEachChunk(ch.chunks, threads, [&](int c) {
     Stats& st = chunkStats[static_cast<std::size_t>(c)];
@@ -383,8 +385,10 @@ void emPass(const Eigen::MatrixXd& x, const EmState& state, bool withMoments, in
       const int b = static_cast<int>(std::min(kBlockRows, chunkEnd - start));
       const int bp = paddedRows(b);
       const double* xb = x.data() + start;
-      Eigen::Index ldx = n;
-      if (bp != b || start + bp > n) {
+      Eigen::Index ldx = x.outerStride();
+      // fitGmm pads the columns to a multiple of 8 rows, so a padded block is readable in place;
+      // other callers get a zero-padded copy.
+      if (start + bp > ldx) {
         tail = Eigen::MatrixXd::Zero(bp, d);
         tail.topRows(b) = x.middleRows(start, b);
         xb = tail.data();
@@ -534,7 +538,7 @@ bool mStep(const Stats& st, const EmState& old, const GmmOptions& o, EmState& ne
 
 // Statistics of a hard assignment (one-hot responsibilities) around `centres`, per chunk of rows
 // on `threads` threads, reduced in chunk order (the result does not depend on `threads`).
-Stats hardAssignmentStats(const Eigen::MatrixXd& x, const Eigen::MatrixXd& centres,
+Stats hardAssignmentStats(const DataRef& x, const Eigen::MatrixXd& centres,
                           const std::vector<int>& assignment, bool diagonal, int threads) {
   const int k = static_cast<int>(centres.rows());
   const int d = static_cast<int>(x.cols());
@@ -591,8 +595,8 @@ struct ProgressCounter {
   }
 };
 
-bool initialState(const Eigen::MatrixXd& x, const GmmOptions& o, Rng& rng, int threads,
-                  EmState& state, int& dropped, std::string& reason) {
+bool initialState(const DataRef& x, const GmmOptions& o, Rng& rng, int threads, EmState& state,
+                  int& dropped, std::string& reason) {
   const Eigen::Index n = x.rows();
   const int d = static_cast<int>(x.cols());
   const int k = o.components;
@@ -675,7 +679,7 @@ std::string fallReason(int iteration, double before, double after, const GmmOpti
          ": EM must never lower it";
 }
 
-Attempt runEm(const Eigen::MatrixXd& x, const GmmOptions& o, std::uint64_t seed, int threads,
+Attempt runEm(const DataRef& x, const GmmOptions& o, std::uint64_t seed, int threads,
               ProgressCounter& progress) {
   Attempt at;
   const Eigen::Index n = x.rows();
@@ -805,7 +809,14 @@ GmmFit fitGmm(const Eigen::MatrixXd& samples, const GmmOptions& o, const Progres
 
   // Centre once on the column means: keeps common offsets out of every sum.
   const Eigen::RowVectorXd offset = samples.colwise().mean();
-  const Eigen::MatrixXd x = samples.rowwise() - offset;
+  // The centred copy has its columns padded with zero rows to a multiple of 8, so that with Eigen's
+  // 64-byte aligned allocation every block of rows starts on a cache line (unaligned vector loads
+  // cost about 30% of the E-step on AVX-512) and the last block needs no copy.
+  const Eigen::Index paddedN = (n + 7) / 8 * 8;
+  Eigen::MatrixXd centred(paddedN, d);
+  centred.topRows(n) = samples.rowwise() - offset;
+  centred.bottomRows(paddedN - n).setZero();
+  const DataRef x = centred.topRows(n);
 
   const int reinitialisations =
       o.init == GmmInit::RandomFromData ? std::max(0, o.maxReinitialisations) : 0;

@@ -33,7 +33,8 @@ void forEachBlockGroup(Eigen::Index rows, Eigen::Index blocks, int threads, F&& 
 }
 }  // namespace
 
-Eigen::MatrixXd kmeansPlusPlus(const Eigen::MatrixXd& samples, int k, Rng& rng, int threads) {
+Eigen::MatrixXd kmeansPlusPlus(const Eigen::Ref<const Eigen::MatrixXd>& samples, int k, Rng& rng,
+                               int threads) {
   const Eigen::Index n = samples.rows();
   const Eigen::Index d = samples.cols();
   Eigen::MatrixXd centres(k, d);
@@ -54,9 +55,9 @@ Eigen::MatrixXd kmeansPlusPlus(const Eigen::MatrixXd& samples, int k, Rng& rng, 
       for (Eigen::Index blk = begin; blk < end; ++blk) {
         const Eigen::Index start = blk * kBlockRows;
         const Eigen::Index b = std::min(kBlockRows, n - start);
-        outBlocks[blk] =
-            blockSquaredDistances(samples.data() + start, n, b, static_cast<int>(d), centre.data(),
-                                  current ? current + start : nullptr, out + start);
+        outBlocks[blk] = blockSquaredDistances(samples.data() + start, samples.outerStride(), b,
+                                               static_cast<int>(d), centre.data(),
+                                               current ? current + start : nullptr, out + start);
       }
     });
     double total = 0.0;
@@ -112,8 +113,8 @@ Eigen::MatrixXd kmeansPlusPlus(const Eigen::MatrixXd& samples, int k, Rng& rng, 
   return centres;
 }
 
-double assignNearest(const Eigen::MatrixXd& samples, const Eigen::MatrixXd& centres,
-                     std::vector<int>& assignment, int threads) {
+double assignNearest(const Eigen::Ref<const Eigen::MatrixXd>& samples,
+                     const Eigen::MatrixXd& centres, std::vector<int>& assignment, int threads) {
   const Eigen::Index n = samples.rows();
   const int k = static_cast<int>(centres.rows());
   assignment.assign(static_cast<std::size_t>(n), 0);
@@ -124,7 +125,7 @@ double assignNearest(const Eigen::MatrixXd& samples, const Eigen::MatrixXd& cent
     for (Eigen::Index blk = begin; blk < end; ++blk) {
       const Eigen::Index start = blk * kBlockRows;
       blockInertia[static_cast<std::size_t>(blk)] = blockNearestCentres(
-          samples.data() + start, n, std::min(kBlockRows, n - start),
+          samples.data() + start, samples.outerStride(), std::min(kBlockRows, n - start),
           static_cast<int>(samples.cols()), centres.data(), k, assignment.data() + start);
     }
   });
@@ -134,8 +135,8 @@ double assignNearest(const Eigen::MatrixXd& samples, const Eigen::MatrixXd& cent
   return inertia;
 }
 
-int lloydIterations(const Eigen::MatrixXd& samples, Eigen::MatrixXd& centres, int iterations,
-                    std::vector<int>& assignment, int threads) {
+int lloydIterations(const Eigen::Ref<const Eigen::MatrixXd>& samples, Eigen::MatrixXd& centres,
+                    int iterations, std::vector<int>& assignment, int threads) {
   const Eigen::Index n = samples.rows();
   const Eigen::Index k = centres.rows();
   const Eigen::Index d = samples.cols();
@@ -159,7 +160,7 @@ int lloydIterations(const Eigen::MatrixXd& samples, Eigen::MatrixXd& centres, in
       for (Eigen::Index r = begin; r < end; ++r)
         pc(assignment[static_cast<std::size_t>(r)]) += 1.0;
       for (Eigen::Index j = 0; j < d; ++j) {
-        const double* xj = samples.data() + j * n;
+        const double* xj = samples.data() + j * samples.outerStride();
         double* sj = ps.data() + j * k;
         for (Eigen::Index r = begin; r < end; ++r)
           sj[assignment[static_cast<std::size_t>(r)]] += xj[r];

@@ -121,6 +121,7 @@ int runFit(const FitArgs& f, const ClassifierArgs& a) {
     j["neg_inf_rows"] = e.logLik.negInfRows;
     j["fit_s"] = e.fit.fitSeconds;
     j["predict_s"] = e.predictSeconds;
+    j["kernel_isa"] = kernelIsa();
     j["iterations"] = iterations;
     j["iterations_per_class"] = e.fit.iterations;
     j["converged"] = converged;
@@ -247,9 +248,9 @@ int runBenchLearn(const BenchArgs& b, const ClassifierArgs& a) {
   if (!b.json) {
     std::printf("data: %d training rows, %d test rows, D = %d, %d classes (8 clusters each)\n",
                 b.rows, b.testRows, b.dimension, b.classes);
-    std::printf("floor %g (%s), init %s, tol %g (%s), max-iter %d, threads %d\n", a.floor,
-                a.reg.c_str(), a.init.c_str(), a.tolerance, a.tolRule.c_str(), a.maxIterations,
-                a.threads);
+    std::printf("floor %g (%s), init %s, tol %g (%s), max-iter %d, threads %d, kernels %s\n",
+                a.floor, a.reg.c_str(), a.init.c_str(), a.tolerance, a.tolRule.c_str(),
+                a.maxIterations, a.threads, kernelIsa().c_str());
     std::printf("%6s %-11s %9s %6s %12s %9s %10s\n", "order", "covariance", "fit_s", "iters",
                 "mean_loglik", "accuracy", "predict_s");
   }
@@ -292,6 +293,7 @@ int runBenchLearn(const BenchArgs& b, const ClassifierArgs& a) {
     j["test_rows"] = b.testRows;
     j["dimension"] = b.dimension;
     j["classes"] = b.classes;
+    j["kernel_isa"] = kernelIsa();
     j["cells"] = cells;
     std::printf("%s\n", j.dump().c_str());
   }

@@ -311,3 +311,27 @@ TEST(KernelIsa, FitsAgreeOnEveryLevel) {
 
 }  // namespace
 }  // namespace tactile
+
+namespace tactile {
+namespace {
+
+// k-means reads samples through their outer stride: rows of a taller matrix (as EM's padded,
+// centred copy) give exactly what a plain copy of the same rows gives.
+TEST(KernelIsa, KMeansReadsSamplesThroughTheirOuterStride) {
+  const Eigen::MatrixXd tall =
+      testing::gaussianRows(9005, Eigen::Vector3d(1, 2, 3), Eigen::Vector3d(1, 1, 2), 3);
+  const Eigen::MatrixXd plain = tall.topRows(9001);
+  Rng a(5), b(5);
+  Eigen::MatrixXd ca = kmeansPlusPlus(plain, 6, a, 2);
+  Eigen::MatrixXd cb = kmeansPlusPlus(tall.topRows(9001), 6, b, 2);
+  EXPECT_TRUE(ca == cb);
+  std::vector<int> sa, sb;
+  lloydIterations(plain, ca, 5, sa, 2);
+  lloydIterations(tall.topRows(9001), cb, 5, sb, 2);
+  EXPECT_TRUE(ca == cb);
+  EXPECT_EQ(sa, sb);
+  EXPECT_EQ(sa.size(), 9001u);
+}
+
+}  // namespace
+}  // namespace tactile
