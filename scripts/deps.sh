@@ -5,7 +5,7 @@
 set -euo pipefail
 
 TACTILE_PACKAGES=(
-  cmake g++ make pkg-config clang-format
+  cmake g++ make pkg-config clang-format binutils
   qt6-base-dev qt6-tools-dev qt6-l10n-tools qt6-tools-dev-tools libgl-dev
   libqcustomplot-dev libqcustomplot2.1-qt6
   libeigen3-dev libsqlite3-dev sqlite3 nlohmann-json3-dev libcli11-dev
