@@ -97,13 +97,11 @@ std::vector<KernelTable> supportedTables() {
   std::vector<KernelTable> tables;
 #if defined(TACTILE_KERNELS_X86_64)
   __builtin_cpu_init();
-  const bool v2 = __builtin_cpu_supports("sse4.2") && __builtin_cpu_supports("popcnt") &&
-                  __builtin_cpu_supports("ssse3");
-  const bool v3 = v2 && __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma") &&
-                  __builtin_cpu_supports("bmi2") && __builtin_cpu_supports("avx");
-  const bool v4 = v3 && __builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512dq") &&
-                  __builtin_cpu_supports("avx512bw") && __builtin_cpu_supports("avx512vl") &&
-                  __builtin_cpu_supports("avx512cd");
+  // The level names test exactly the feature sets -march=x86-64-vN compiles for (GCC 12+), and
+  // include the operating system's support for the wider registers.
+  const bool v2 = __builtin_cpu_supports("x86-64-v2");
+  const bool v3 = v2 && __builtin_cpu_supports("x86-64-v3");
+  const bool v4 = v3 && __builtin_cpu_supports("x86-64-v4");
   tables.push_back(TACTILE_KERNEL_TABLE("generic", kernels_generic));
   if (v2) tables.push_back(TACTILE_KERNEL_TABLE("x86-64-v2", kernels_x86_64_v2));
   if (v3) tables.push_back(TACTILE_KERNEL_TABLE("x86-64-v3", kernels_x86_64_v3));
