@@ -12,7 +12,7 @@
 #include <vector>
 
 #include "analysis/gmm.h"
-#include "sim/progress.h"
+#include "base/progress.h"
 
 namespace tactile {
 

@@ -5,7 +5,8 @@
 #include <cstdio>
 #include <unordered_map>
 
-#include "sim/run_csv.h"
+#include "base/file_text.h"
+#include "run/run_csv.h"
 
 namespace tactile {
 

@@ -3,7 +3,7 @@
 #include <cmath>
 #include <map>
 
-#include "sim/text_parse.h"
+#include "base/text_parse.h"
 
 namespace tactile::analysis {
 

@@ -12,10 +12,10 @@
 #include <string_view>
 #include <vector>
 
-#include "sim/contact_class.h"
-#include "sim/label_file.h"
-#include "sim/run.h"
-#include "sim/sensor_layout.h"
+#include "run/contact_class.h"
+#include "run/label_file.h"
+#include "run/run.h"
+#include "run/sensor_layout.h"
 
 namespace tactile::analysis {
 

@@ -15,7 +15,7 @@
 #include <vector>
 
 #include "analysis/gmm_kernels.h"
-#include "sim/progress.h"
+#include "base/progress.h"
 
 namespace tactile {
 

@@ -7,9 +7,9 @@
 #include <cstddef>
 #include <vector>
 
-#include "sim/robot_geometry.h"
-#include "sim/run.h"
-#include "sim/sensor_layout.h"
+#include "run/robot_geometry.h"
+#include "run/run.h"
+#include "run/sensor_layout.h"
 
 namespace tactile::analysis {
 

@@ -10,9 +10,9 @@
 #include <string>
 #include <vector>
 
-#include "sim/contact_class.h"
-#include "sim/run.h"
-#include "sim/sensor_layout.h"
+#include "run/contact_class.h"
+#include "run/run.h"
+#include "run/sensor_layout.h"
 
 namespace tactile::analysis {
 

@@ -3,7 +3,8 @@
 #include <cmath>
 #include <set>
 
-#include "sim/run_csv.h"
+#include "base/file_text.h"
+#include "run/run_csv.h"
 
 namespace tactile::analysis {
 

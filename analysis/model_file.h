@@ -30,8 +30,8 @@
 #include "analysis/classifier.h"
 #include "analysis/features.h"
 #include "analysis/gmm.h"
-#include "sim/contact_class.h"
-#include "sim/sensor_layout.h"
+#include "run/contact_class.h"
+#include "run/sensor_layout.h"
 
 namespace tactile::analysis {
 

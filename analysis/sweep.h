@@ -20,7 +20,7 @@
 #include "analysis/features.h"
 #include "analysis/gmm.h"
 #include "analysis/metrics.h"
-#include "sim/progress.h"
+#include "base/progress.h"
 
 namespace tactile::analysis {
 

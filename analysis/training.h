@@ -13,7 +13,7 @@
 #include "analysis/features.h"
 #include "analysis/metrics.h"
 #include "analysis/model_file.h"
-#include "sim/progress.h"
+#include "base/progress.h"
 
 namespace tactile::analysis {
 

@@ -16,9 +16,9 @@
 #include <string_view>
 #include <vector>
 
+#include "run/run.h"
+#include "run/sensor_layout.h"
 #include "sim/geometry.h"
-#include "sim/run.h"
-#include "sim/sensor_layout.h"
 
 namespace tactile {
 

@@ -7,9 +7,9 @@
 #include <memory>
 #include <string>
 
+#include "base/progress.h"
+#include "run/run.h"
 #include "sim/driver.h"
-#include "sim/progress.h"
-#include "sim/run.h"
 #include "sim/simulator.h"
 
 namespace tactile {

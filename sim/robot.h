@@ -4,8 +4,8 @@
 #include <cmath>
 #include <numbers>
 
+#include "run/run.h"
 #include "sim/geometry.h"
-#include "sim/run.h"
 
 namespace tactile {
 

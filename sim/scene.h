@@ -7,8 +7,8 @@
 #include <string_view>
 #include <vector>
 
+#include "run/run.h"
 #include "sim/geometry.h"
-#include "sim/run.h"
 
 namespace tactile {
 

@@ -5,11 +5,12 @@
 #include <numbers>
 #include <random>
 
-#include "sim/builtin_scenes.h"
+#include "base/file_text.h"
+#include "base/text_parse.h"
+#include "run/builtin_scenes.h"
+#include "run/run_csv.h"
 #include "sim/recorder.h"
-#include "sim/run_csv.h"
 #include "sim/simulator.h"
-#include "sim/text_parse.h"
 
 namespace tactile {
 namespace {

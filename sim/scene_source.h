@@ -5,7 +5,7 @@
 #include <cstdint>
 #include <string_view>
 
-#include "sim/robot_geometry.h"
+#include "run/robot_geometry.h"
 #include "sim/scene.h"
 
 namespace tactile {

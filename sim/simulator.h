@@ -8,8 +8,8 @@
 #include <memory>
 #include <vector>
 
+#include "run/robot_geometry.h"
 #include "sim/robot.h"
-#include "sim/robot_geometry.h"
 #include "sim/truth.h"
 #include "sim/world.h"
 

@@ -26,8 +26,8 @@
 #include <array>
 #include <cstddef>
 
-#include "sim/contact_class.h"
-#include "sim/sensor_layout.h"
+#include "run/contact_class.h"
+#include "run/sensor_layout.h"
 
 namespace tactile {
 

@@ -4,8 +4,9 @@
 #include <array>
 #include <map>
 
-#include "sim/label_file.h"
-#include "sim/run_csv.h"
+#include "base/file_text.h"
+#include "run/label_file.h"
+#include "run/run_csv.h"
 #include "storage/database_impl.h"
 #include "storage/run_codec.h"
 
@@ -140,7 +141,7 @@ Result<std::vector<LabelSetInfo>> RunDatabase::listLabelSets() {
 
 Result<LabelSetInfo> RunDatabase::findLabelSet(std::string_view name) {
   Result<std::vector<LabelSetInfo>> sets = listLabelSets();
-  if (!sets) return Result<LabelSetInfo>::failure(sets.error());
+  if (!sets) return sets.error();
   for (LabelSetInfo& info : sets.value()) {
     if (info.name == name) return info;
   }
@@ -344,9 +345,9 @@ Result<std::int64_t> RunDatabase::importLabels(const std::string& setName,
 
 Status RunDatabase::exportLabels(const std::string& setName, const std::filesystem::path& file) {
   Result<LabelSetInfo> set = findLabelSet(setName);
-  if (!set) return Status::failure(set.error());
+  if (!set) return set.error();
   Result<std::vector<LabelSegment>> all = segments(set->id);
-  if (!all) return Status::failure(all.error());
+  if (!all) return all.error();
   std::vector<LabelRecord> records;
   records.reserve(all->size());
   for (const LabelSegment& s : all.value()) {

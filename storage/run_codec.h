@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "sim/run.h"
+#include "run/run.h"
 #include "storage/run_database.h"
 
 namespace tactile::storage {

@@ -18,44 +18,17 @@
 #include <variant>
 #include <vector>
 
-#include "sim/contact_class.h"
-#include "sim/progress.h"
-#include "sim/run.h"
-#include "sim/sensor_layout.h"
+#include "base/error.h"
+#include "base/progress.h"
+#include "run/contact_class.h"
+#include "run/run.h"
+#include "run/sensor_layout.h"
 
 namespace tactile::storage {
 
-// A value or an error message; never both.
-template <class T>
-class Result {
- public:
-  Result(T value) : value_(std::move(value)) {}
-  static Result failure(std::string message) { return Result(Error{std::move(message)}); }
-
-  bool ok() const { return value_.index() == 0; }
-  explicit operator bool() const { return ok(); }
-  T& value() { return std::get<0>(value_); }
-  const T& value() const { return std::get<0>(value_); }
-  T* operator->() { return &value(); }
-  const T* operator->() const { return &value(); }
-  const std::string& error() const { return std::get<1>(value_).message; }
-
- private:
-  struct Error {
-    std::string message;
-  };
-  explicit Result(Error error) : value_(std::move(error)) {}
-  std::variant<T, Error> value_;
-};
-
-// Success or a message.
-struct Status {
-  std::string error;  // empty on success
-  bool ok() const { return error.empty(); }
-  explicit operator bool() const { return ok(); }
-  static Status success() { return {}; }
-  static Status failure(std::string message) { return {std::move(message)}; }
-};
+using tactile::Error;
+using tactile::Result;
+using tactile::Status;
 
 // One stored run, without its steps.
 struct RunInfo {

@@ -13,9 +13,9 @@
 #include <thread>
 #include <unordered_set>
 
-#include "sim/builtin_scenes.h"
-#include "sim/file_text.h"
-#include "sim/run_csv.h"
+#include "base/file_text.h"
+#include "run/builtin_scenes.h"
+#include "run/run_csv.h"
 #include "storage/database_impl.h"
 #include "storage/run_codec.h"
 

@@ -2,7 +2,7 @@
 #include <algorithm>
 #include <cstring>
 
-#include "sim/run_csv.h"
+#include "run/run_csv.h"
 #include "storage/database_impl.h"
 #include "storage/run_codec.h"
 
@@ -266,7 +266,7 @@ Result<std::optional<std::string>> RunDatabase::sceneJson(std::int64_t runId) {
 
 Status RunDatabase::exportRun(std::int64_t runId, const std::filesystem::path& file) {
   Result<RunData> run = loadRun(runId);
-  if (!run) return Status::failure(run.error());
+  if (!run) return run.error();
   std::string error = writeRunCsv(run.value(), file);
   if (!error.empty()) return Status::failure(file.string() + ": " + error);
   return Status::success();

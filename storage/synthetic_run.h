@@ -5,7 +5,7 @@
 #include <cstddef>
 #include <cstdint>
 
-#include "sim/run.h"
+#include "run/run.h"
 
 namespace tactile::storage {
 

@@ -6,7 +6,7 @@
 #include <cstring>
 #include <vector>
 
-#include "sim/run.h"
+#include "run/run.h"
 
 namespace tactile::test_support {
 

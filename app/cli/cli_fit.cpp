@@ -13,7 +13,8 @@
 #include "analysis/gmm_synthetic.h"
 #include "app/cli/cli_classifier_options.h"
 #include "app/cli/cli_common.h"
-#include "sim/run_csv.h"
+#include "base/file_text.h"
+#include "run/run_csv.h"
 
 namespace tactile::cli {
 namespace {

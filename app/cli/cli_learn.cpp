@@ -20,8 +20,9 @@
 #include "analysis/training.h"
 #include "app/cli/cli_classifier_options.h"
 #include "app/cli/cli_common.h"
-#include "sim/label_file.h"
-#include "sim/run_csv.h"
+#include "base/file_text.h"
+#include "run/label_file.h"
+#include "run/run_csv.h"
 
 namespace tactile::cli {
 namespace {

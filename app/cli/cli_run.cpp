@@ -9,8 +9,8 @@
 #include <vector>
 
 #include "app/cli/cli_common.h"
-#include "sim/run_csv.h"
-#include "sim/synthetic_run.h"
+#include "run/run_csv.h"
+#include "run/synthetic_run.h"
 
 namespace tactile::cli {
 namespace {

@@ -15,9 +15,9 @@
 #include <vector>
 
 #include "app/cli/cli_common.h"
-#include "sim/builtin_scenes.h"
+#include "run/builtin_scenes.h"
+#include "run/run_csv.h"
 #include "sim/recorder.h"
-#include "sim/run_csv.h"
 #include "sim/scene_source.h"
 
 namespace tactile::cli {

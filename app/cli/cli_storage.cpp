@@ -15,7 +15,7 @@
 #include <vector>
 
 #include "app/cli/cli_common.h"
-#include "sim/run_csv.h"
+#include "run/run_csv.h"
 #include "sim/scene_source.h"
 #include "storage/run_database.h"
 #include "storage/synthetic_run.h"
@@ -29,7 +29,7 @@ using storage::RunDatabase;
 
 std::unique_ptr<RunDatabase> openDatabase(const std::string& path) {
   auto db = RunDatabase::open(path);
-  if (!db) throw std::runtime_error(db.error());
+  if (!db) throw std::runtime_error(db.errorText());
   if (!db.value()->migrationBackup().empty()) {
     printWarning("migrated '" + path + "' to the current schema; the old file was copied to " +
                  db.value()->migrationBackup().string());
@@ -148,9 +148,9 @@ int runImport(const ImportArgs& a) {
 int runExport(const std::string& dbPath, const std::string& runName, const std::string& out) {
   auto db = openDatabase(dbPath);
   auto run = db->findRun(runName);
-  if (!run) throw std::runtime_error(dbPath + ": " + run.error());
+  if (!run) throw std::runtime_error(dbPath + ": " + run.errorText());
   const auto status = db->exportRun(run->id, out);
-  if (!status) throw std::runtime_error(status.error);
+  if (!status) throw std::runtime_error(status.errorText());
   return kExitOk;
 }
 
@@ -160,7 +160,7 @@ int runLabelsImport(const std::string& dbPath, const std::string& set, const std
                     bool json) {
   auto db = openDatabase(dbPath);
   auto count = db->importLabels(set, file);
-  if (!count) throw std::runtime_error(count.error());
+  if (!count) throw std::runtime_error(count.errorText());
   if (json) {
     printJson({{"set", set}, {"segments", count.value()}});
   } else {
@@ -173,7 +173,7 @@ int runLabelsImport(const std::string& dbPath, const std::string& set, const std
 int runLabelsExport(const std::string& dbPath, const std::string& set, const std::string& file) {
   auto db = openDatabase(dbPath);
   const auto status = db->exportLabels(set, file);
-  if (!status) throw std::runtime_error(status.error);
+  if (!status) throw std::runtime_error(status.errorText());
   return kExitOk;
 }
 
@@ -186,11 +186,11 @@ int runAutolabel(const std::string& dbPath, const std::string& runName, bool all
   std::vector<storage::RunInfo> runs;
   if (all) {
     auto listed = db->listRuns();
-    if (!listed) throw std::runtime_error(listed.error());
+    if (!listed) throw std::runtime_error(listed.errorText());
     runs = std::move(listed.value());
   } else {
     auto run = db->findRun(runName);
-    if (!run) throw std::runtime_error(dbPath + ": " + run.error());
+    if (!run) throw std::runtime_error(dbPath + ": " + run.errorText());
     runs.push_back(std::move(run.value()));
   }
   nlohmann::json labelled = nlohmann::json::array();
@@ -202,7 +202,7 @@ int runAutolabel(const std::string& dbPath, const std::string& runName, bool all
     }
     auto count = db->autolabel(run.id, set);
     if (!count) {
-      printError(count.error());
+      printError(count.errorText());
       ++failures;
       continue;
     }
@@ -382,7 +382,7 @@ int runBenchStorage(const BenchArgs& a) {
     result["single_file_steps_per_second"] = static_cast<double>(a.bigSteps) / seconds;
   }
   const auto run = db->findRun("big");
-  if (!run) throw std::runtime_error(run.error());
+  if (!run) throw std::runtime_error(run.errorText());
   std::mt19937_64 rng(3);
   std::vector<double> windowMs;
   std::vector<double> summaryMs;
@@ -404,7 +404,7 @@ int runBenchStorage(const BenchArgs& a) {
     const auto t0 = std::chrono::steady_clock::now();
     auto whole = db->loadRun(run->id);
     result["load_whole_run_seconds"] = secondsSince(t0);
-    if (!whole) throw std::runtime_error(whole.error());
+    if (!whole) throw std::runtime_error(whole.errorText());
   }
   db.reset();
   if (!a.keep) {

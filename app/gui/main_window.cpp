@@ -9,8 +9,8 @@
 #include <QSettings>
 #include <QStatusBar>
 
-#include "sim/builtin_scenes.h"
-#include "sim/sensor_layout.h"
+#include "run/builtin_scenes.h"
+#include "run/sensor_layout.h"
 
 namespace tactile::gui {
 

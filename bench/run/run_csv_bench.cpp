@@ -3,8 +3,9 @@
 
 #include <filesystem>
 
-#include "sim/run_csv.h"
-#include "sim/synthetic_run.h"
+#include "base/file_text.h"
+#include "run/run_csv.h"
+#include "run/synthetic_run.h"
 
 namespace {
 

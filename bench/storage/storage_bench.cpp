@@ -8,7 +8,7 @@
 #include <memory>
 #include <random>
 
-#include "sim/run_csv.h"
+#include "run/run_csv.h"
 #include "storage/run_database.h"
 #include "storage/synthetic_run.h"
 

@@ -6,9 +6,9 @@
 #include <cstdint>
 #include <random>
 
-#include "sim/contact_class.h"
-#include "sim/run.h"
-#include "sim/sensor_layout.h"
+#include "run/contact_class.h"
+#include "run/run.h"
+#include "run/sensor_layout.h"
 
 namespace tactile::testdata {
 

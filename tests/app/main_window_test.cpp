@@ -7,7 +7,7 @@
 #include <QtTest>
 
 #include "app/gui/main_window.h"
-#include "sim/builtin_scenes.h"
+#include "run/builtin_scenes.h"
 
 class MainWindowTest : public QObject {
   Q_OBJECT

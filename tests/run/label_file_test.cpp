@@ -1,7 +1,7 @@
 // The one label-file reader (sim/label_file.h), used by storage and analysis alike.
 #include <gtest/gtest.h>
 
-#include "sim/label_file.h"
+#include "run/label_file.h"
 
 namespace tactile {
 namespace {

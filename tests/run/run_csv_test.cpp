@@ -6,9 +6,9 @@
 #include <limits>
 #include <string>
 
-#include "sim/file_text.h"
-#include "sim/run_csv.h"
-#include "sim/synthetic_run.h"
+#include "base/file_text.h"
+#include "run/run_csv.h"
+#include "run/synthetic_run.h"
 #include "tests/run_compare.h"
 
 namespace tactile {

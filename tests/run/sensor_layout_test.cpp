@@ -3,10 +3,10 @@
 #include <cmath>
 #include <set>
 
-#include "sim/builtin_scenes.h"
-#include "sim/contact_class.h"
-#include "sim/robot_geometry.h"
-#include "sim/sensor_layout.h"
+#include "run/builtin_scenes.h"
+#include "run/contact_class.h"
+#include "run/robot_geometry.h"
+#include "run/sensor_layout.h"
 
 namespace tactile {
 namespace {

@@ -4,8 +4,8 @@
 #include <functional>
 #include <mutex>
 
+#include "run/run_csv.h"
 #include "sim/recorder.h"
-#include "sim/run_csv.h"
 #include "sim/scene_source.h"
 #include "sim_test_util.h"
 

@@ -1,6 +1,6 @@
 #include <gtest/gtest.h>
 
-#include "sim/builtin_scenes.h"
+#include "run/builtin_scenes.h"
 #include "sim/scene.h"
 #include "sim/scene_source.h"
 

@@ -3,7 +3,8 @@
 #include <algorithm>
 #include <fstream>
 
-#include "sim/run_csv.h"
+#include "base/file_text.h"
+#include "run/run_csv.h"
 #include "storage/sqlite_db.h"
 #include "storage_test_util.h"
 
@@ -35,7 +36,7 @@ TEST(Import, FileRoundTripsBitForBitAndExportsIdenticalText) {
   EXPECT_EQ(outcomes[0].steps, 500);
 
   auto loaded = db->loadRun(outcomes[0].runId);
-  ASSERT_TRUE(loaded.ok()) << loaded.error();
+  ASSERT_TRUE(loaded.ok()) << loaded.errorText();
   test::expectSameRun(original, loaded.value());
   EXPECT_TRUE(std::signbit(loaded->y[0]));  // -0.0 keeps its sign
 
@@ -69,7 +70,7 @@ TEST(Import, ExtraColumnsAndNoTruthRoundTrip) {
   const auto outcome = db->importText(formatRunCsv(original), "extra.csv");
   ASSERT_EQ(outcome.status, ImportStatus::Imported) << outcome.message;
   auto loaded = db->loadRun(outcome.runId);
-  ASSERT_TRUE(loaded.ok()) << loaded.error();
+  ASSERT_TRUE(loaded.ok()) << loaded.errorText();
   test::expectSameRun(original, loaded.value());
   EXPECT_FALSE(loaded->hasTruth());
 }
@@ -217,7 +218,7 @@ TEST(Import, ChunkedFilesAreAllOrNothingWithTheReadersMessage) {
       ASSERT_TRUE(parsed.ok());
       EXPECT_EQ(outcomes[i].steps, static_cast<std::int64_t>(parsed.run().stepCount()));
       auto loaded = db->loadRun(outcomes[i].runId);
-      ASSERT_TRUE(loaded.ok()) << loaded.error();
+      ASSERT_TRUE(loaded.ok()) << loaded.errorText();
       EXPECT_TRUE(loaded.value() == parsed.run()) << "file " << i;
       auto info = db->runInfo(outcomes[i].runId);
       ASSERT_TRUE(info.ok());
@@ -227,7 +228,7 @@ TEST(Import, ChunkedFilesAreAllOrNothingWithTheReadersMessage) {
       const RunData& steps = parsed.run();
       auto summary =
           db->loadSummary(outcomes[i].runId, 0, -1, static_cast<int>(steps.stepCount() / 20));
-      ASSERT_TRUE(summary.ok()) << summary.error();
+      ASSERT_TRUE(summary.ok()) << summary.errorText();
       EXPECT_EQ(summary->blockSteps, 16);
       for (const SummaryBucket& bucket : summary->buckets) {
         for (int k = 0; k < kValuesPerStep; ++k) {

@@ -2,8 +2,8 @@
 
 #include <fstream>
 
-#include "sim/label_file.h"
-#include "sim/run_csv.h"
+#include "run/label_file.h"
+#include "run/run_csv.h"
 #include "storage_test_util.h"
 
 namespace tactile::storage {
@@ -30,7 +30,7 @@ class LabelsTest : public ::testing::Test {
     runA_ = a.runId;
     runB_ = b.runId;
     auto set = db_->createLabelSet("main", "alice");
-    ASSERT_TRUE(set.ok()) << set.error();
+    ASSERT_TRUE(set.ok()) << set.errorText();
     set_ = set.value();
   }
 
@@ -44,7 +44,7 @@ class LabelsTest : public ::testing::Test {
     s.lastStep = last;
     s.cls = cls;
     auto id = db_->addSegment(set == 0 ? set_ : set, s);
-    EXPECT_TRUE(id.ok()) << id.error();
+    EXPECT_TRUE(id.ok()) << id.errorText();
     return id.ok() ? id.value() : 0;
   }
 
@@ -152,7 +152,7 @@ TEST_F(LabelsTest, RenameCopyDelete) {
   ASSERT_TRUE(db_->renameLabelSet(set_, "renamed").ok());
   EXPECT_FALSE(db_->findLabelSet("main").ok());
   auto copy = db_->copyLabelSet(set_, "copy");
-  ASSERT_TRUE(copy.ok()) << copy.error();
+  ASSERT_TRUE(copy.ok()) << copy.errorText();
   EXPECT_EQ(ranges(SensorGroup::Front, copy.value()), ranges());
   add(5, 6, kCorner);  // editing the original leaves the copy alone
   EXPECT_EQ(ranges(SensorGroup::Front, copy.value()), (std::vector<Range>{{0, 10, kWall}}));
@@ -181,7 +181,7 @@ TEST_F(LabelsTest, CsvAndJsonFilesRoundTrip) {
     ASSERT_TRUE(db_->exportLabels("main", dir_ / name).ok());
     const std::string target = std::string("from-") + name;
     auto count = db_->importLabels(target, dir_ / name);
-    ASSERT_TRUE(count.ok()) << count.error();
+    ASSERT_TRUE(count.ok()) << count.errorText();
     EXPECT_EQ(count.value(), 3);
     const auto imported = db_->segments(db_->findLabelSet(target)->id).value();
     ASSERT_EQ(imported.size(), original.size());
@@ -201,7 +201,7 @@ TEST_F(LabelsTest, BadLabelFileChangesNothingAndNamesTheLine) {
                                      "runA,F,11,20,Wal\n";
   auto result = db_->importLabels("fresh", dir_ / "bad.csv");
   ASSERT_FALSE(result.ok());
-  EXPECT_NE(result.error().find("bad.csv:3"), std::string::npos) << result.error();
+  EXPECT_NE(result.errorText().find("bad.csv:3"), std::string::npos) << result.errorText();
   EXPECT_FALSE(db_->findLabelSet("fresh").ok());
 }
 
@@ -211,8 +211,8 @@ TEST_F(LabelsTest, LabelFileWithUnknownRunChangesNothing) {
                                          "ghost,F,0,10,Wall\n";
   auto result = db_->importLabels("main", dir_ / "unknown.csv");
   ASSERT_FALSE(result.ok());
-  EXPECT_NE(result.error().find("unknown.csv:3: no run named 'ghost'"), std::string::npos)
-      << result.error();
+  EXPECT_NE(result.errorText().find("unknown.csv:3: no run named 'ghost'"), std::string::npos)
+      << result.errorText();
   EXPECT_TRUE(db_->segments(set_)->empty());
 }
 
@@ -227,7 +227,7 @@ TEST_F(LabelsTest, LaterRowsOfALabelFileWin) {
 
 TEST_F(LabelsTest, AutolabelReproducesTheTruthExactly) {
   auto count = db_->autolabel(runA_, "truth");
-  ASSERT_TRUE(count.ok()) << count.error();
+  ASSERT_TRUE(count.ok()) << count.errorText();
   const RunData run = makeRun(200, true, 1);
   const auto segments = db_->segments(db_->findLabelSet("truth")->id, runA_).value();
   EXPECT_EQ(static_cast<std::int64_t>(segments.size()), count.value());
@@ -250,7 +250,7 @@ TEST_F(LabelsTest, AutolabelReproducesTheTruthExactly) {
 TEST_F(LabelsTest, AutolabelWithoutTruthFails) {
   auto count = db_->autolabel(runB_, "truth");
   ASSERT_FALSE(count.ok());
-  EXPECT_NE(count.error().find("no truth"), std::string::npos);
+  EXPECT_NE(count.errorText().find("no truth"), std::string::npos);
 }
 
 TEST(LabelFiles, BomAndCrlfAreAccepted) {

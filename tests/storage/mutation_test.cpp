@@ -4,7 +4,7 @@
 
 #include <random>
 
-#include "sim/run_csv.h"
+#include "run/run_csv.h"
 #include "storage_test_util.h"
 
 namespace tactile::storage {
@@ -90,7 +90,7 @@ TEST(Mutation, HundredThousandMutatedFilesStoreAllOrNothing) {
       RunCsvResult parsed = parseRunCsv(text, "m.csv");
       ASSERT_TRUE(parsed.ok()) << "stored a file the reader rejects: " << i;
       auto loaded = db->loadRun(outcome.runId);
-      ASSERT_TRUE(loaded.ok()) << loaded.error();
+      ASSERT_TRUE(loaded.ok()) << loaded.errorText();
       ASSERT_TRUE(loaded.value() == parsed.run()) << "file " << i;
       ASSERT_TRUE(db->deleteRun(outcome.runId).ok());
     } else {

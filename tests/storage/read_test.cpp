@@ -8,7 +8,7 @@
 #include <random>
 #include <stdexcept>
 
-#include "sim/run_csv.h"
+#include "run/run_csv.h"
 #include "storage/run_codec.h"
 #include "storage_test_util.h"
 
@@ -45,7 +45,7 @@ class ReadTest : public ::testing::Test {
 
   void expectSummary(std::int64_t first, std::int64_t last, int buckets) {
     auto summary = db_->loadSummary(runId_, first, last, buckets);
-    ASSERT_TRUE(summary.ok()) << summary.error();
+    ASSERT_TRUE(summary.ok()) << summary.errorText();
     const std::int64_t clippedLast = last < 0 ? 19999 : std::min<std::int64_t>(last, 19999);
     ASSERT_FALSE(summary->buckets.empty());
     ASSERT_LE(summary->buckets.size(), static_cast<std::size_t>(buckets));
@@ -72,7 +72,7 @@ class ReadTest : public ::testing::Test {
 
 TEST_F(ReadTest, WindowEqualsTheSliceOfTheRun) {
   auto window = db_->loadWindow(runId_, 1234, 500);
-  ASSERT_TRUE(window.ok()) << window.error();
+  ASSERT_TRUE(window.ok()) << window.errorText();
   EXPECT_EQ(window->firstStep, 1234);
   const RunData& w = window->data;
   ASSERT_EQ(w.stepCount(), 500u);

@@ -60,7 +60,7 @@ TEST(Schema, OlderDatabaseIsBackedUpAndMigrated) {
   EXPECT_EQ(db->migrationBackup().filename(), "old.db.v1.bak");
   // Data survived and the new tables work.
   auto run = db->findRun("old");
-  ASSERT_TRUE(run.ok()) << run.error();
+  ASSERT_TRUE(run.ok()) << run.errorText();
   EXPECT_TRUE(db->createLabelSet("after-migration").ok());
   // The backup still has the old version and the old data.
   db::Connection backup = db::Connection::open(db->migrationBackup(), false);
@@ -148,10 +148,10 @@ TEST(Schema, Version3RunReadsBackAfterMigration) {
   ASSERT_NE(db, nullptr);
   EXPECT_EQ(db->migrationBackup().filename(), "v3.db.v3.bak");
   auto loaded = db->loadRun(1);
-  ASSERT_TRUE(loaded.ok()) << loaded.error();
+  ASSERT_TRUE(loaded.ok()) << loaded.errorText();
   test::expectSameRun(loaded.value(), run);
   auto window = db->loadWindow(1, 1234, 500);
-  ASSERT_TRUE(window.ok()) << window.error();
+  ASSERT_TRUE(window.ok()) << window.errorText();
   for (std::size_t i = 0; i < 500 * kGroupCount; ++i) {
     ASSERT_EQ(window->data.truth[i], run.truth[1234 * kGroupCount + i]) << i;
   }
@@ -168,7 +168,7 @@ TEST(Schema, Version3RunReadsBackAfterMigration) {
   }
   // Autolabel gives the truth segments, and the step_truth view spells the classes out.
   auto written = db->autolabel(1, "truth");
-  ASSERT_TRUE(written.ok()) << written.error();
+  ASSERT_TRUE(written.ok()) << written.errorText();
   EXPECT_EQ(static_cast<std::size_t>(written.value()), truthSegments(run).size());
   db.reset();
   db::Connection c = db::Connection::open(path, false);
@@ -189,7 +189,7 @@ TEST(Schema, MostlyZeroSensorRowsAreStoredSparsely) {
     ASSERT_NE(db, nullptr);
     ASSERT_EQ(db->importRun(run, "sparse").status, ImportStatus::Imported);
     auto loaded = db->loadRun(1);
-    ASSERT_TRUE(loaded.ok()) << loaded.error();
+    ASSERT_TRUE(loaded.ok()) << loaded.errorText();
     test::expectSameRun(loaded.value(), run);
   }
   db::Connection c = db::Connection::open(path, false);
@@ -209,7 +209,8 @@ TEST(Schema, FailedMigrationLeavesVersionUnchanged) {
   }
   auto db = RunDatabase::open(path);
   ASSERT_FALSE(db.ok());
-  EXPECT_NE(db.error().find("migration to schema version 2"), std::string::npos) << db.error();
+  EXPECT_NE(db.errorText().find("migration to schema version 2"), std::string::npos)
+      << db.errorText();
   db::Connection c = db::Connection::open(path, false);
   EXPECT_EQ(db::schemaVersion(c), 1);
 }
@@ -224,8 +225,8 @@ TEST(Schema, NewerDatabaseIsAClearError) {
   }
   auto db = RunDatabase::open(path);
   ASSERT_FALSE(db.ok());
-  EXPECT_NE(db.error().find("newer"), std::string::npos) << db.error();
-  EXPECT_NE(db.error().find(std::to_string(db::kSchemaVersion + 5)), std::string::npos);
+  EXPECT_NE(db.errorText().find("newer"), std::string::npos) << db.errorText();
+  EXPECT_NE(db.errorText().find(std::to_string(db::kSchemaVersion + 5)), std::string::npos);
 }
 
 TEST(Schema, ForeignSqliteFileIsRefused) {
@@ -237,7 +238,7 @@ TEST(Schema, ForeignSqliteFileIsRefused) {
   }
   auto db = RunDatabase::open(path);
   ASSERT_FALSE(db.ok());
-  EXPECT_NE(db.error().find("not a tactile database"), std::string::npos) << db.error();
+  EXPECT_NE(db.errorText().find("not a tactile database"), std::string::npos) << db.errorText();
 }
 
 TEST(Schema, MissingFileWithoutCreateIsAnError) {

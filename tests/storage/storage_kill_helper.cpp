@@ -18,12 +18,12 @@ int main(int argc, char** argv) {
   }
   auto db = RunDatabase::open(argv[1]);
   if (!db) {
-    std::fprintf(stderr, "%s\n", db.error().c_str());
+    std::fprintf(stderr, "%s\n", db.errorText().c_str());
     return 1;
   }
   auto set = db.value()->findLabelSet("kill");
   if (!set) {
-    std::fprintf(stderr, "%s\n", set.error().c_str());
+    std::fprintf(stderr, "%s\n", set.errorText().c_str());
     return 1;
   }
   auto run = db.value()->findRun("victim");
@@ -39,7 +39,7 @@ int main(int argc, char** argv) {
     if (segment.lastStep >= run->stepCount) return 0;
     auto id = db.value()->addSegment(set->id, segment);
     if (!id) {
-      std::fprintf(stderr, "%s\n", id.error().c_str());
+      std::fprintf(stderr, "%s\n", id.errorText().c_str());
       return 1;
     }
     const std::string line = std::to_string(edit) + "\n";

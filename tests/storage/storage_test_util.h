@@ -10,7 +10,7 @@
 #include <random>
 #include <string>
 
-#include "sim/run.h"
+#include "run/run.h"
 #include "storage/run_database.h"
 #include "tests/run_compare.h"
 
@@ -70,7 +70,7 @@ class TempDir {
 
 inline std::unique_ptr<RunDatabase> openDb(const std::filesystem::path& path) {
   auto db = RunDatabase::open(path);
-  EXPECT_TRUE(db.ok()) << (db.ok() ? "" : db.error());
+  EXPECT_TRUE(db.ok()) << (db.ok() ? "" : db.errorText());
   return db.ok() ? std::move(db.value()) : nullptr;
 }
 

@@ -10,8 +10,8 @@
 #include <utility>
 #include <vector>
 
-#include "sim/contact_class.h"
-#include "sim/sensor_layout.h"
+#include "run/contact_class.h"
+#include "run/sensor_layout.h"
 
 namespace tactile {
 

@@ -8,8 +8,8 @@
 #include <string_view>
 #include <vector>
 
-#include "sim/contact_class.h"
-#include "sim/sensor_layout.h"
+#include "run/contact_class.h"
+#include "run/sensor_layout.h"
 
 namespace tactile {
 

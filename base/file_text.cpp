@@ -1,14 +1,14 @@
-#include "sim/file_text.h"
+#include "base/file_text.h"
 
 #include <fcntl.h>
 #include <sys/mman.h>
 #include <sys/stat.h>
 #include <unistd.h>
+#include <atomic>
 #include <cerrno>
+#include <cstdio>
 #include <cstring>
 #include <utility>
-
-#include "sim/run_csv.h"
 
 namespace tactile {
 
@@ -61,6 +61,54 @@ bool FileText::load(const std::filesystem::path& path, std::string& error) {
   ::close(fd);
   // Empty files, pipes, and anything mmap refuses are read the ordinary way.
   return readFileText(path, buffer_, error);
+}
+
+bool readFileText(const std::filesystem::path& path, std::string& text, std::string& error) {
+  std::FILE* f = std::fopen(path.c_str(), "rb");
+  if (f == nullptr) {
+    error = std::string("cannot open: ") + std::strerror(errno);
+    return false;
+  }
+  std::error_code ec;
+  const auto size = std::filesystem::file_size(path, ec);
+  text.clear();
+  if (!ec) text.resize(size);
+  std::size_t got = ec ? 0 : std::fread(text.data(), 1, text.size(), f);
+  // Files that grow while read, or report no size (pipes), are read to the end.
+  char buffer[65536];
+  text.resize(got);
+  while (std::size_t n = std::fread(buffer, 1, sizeof buffer, f))
+    text.append(buffer, n);
+  const bool failed = std::ferror(f) != 0;
+  std::fclose(f);
+  if (failed) {
+    error = "read error";
+    return false;
+  }
+  return true;
+}
+
+std::string writeFileAtomically(const std::filesystem::path& path, std::string_view text) {
+  std::filesystem::path temp = path;
+  static std::atomic<unsigned> counter{0};
+  temp += ".tmp-" + std::to_string(::getpid()) + "-" + std::to_string(counter++);
+  std::FILE* f = std::fopen(temp.c_str(), "wb");
+  if (f == nullptr) {
+    return path.string() + ": cannot write: " + std::strerror(errno);
+  }
+  const bool wrote = std::fwrite(text.data(), 1, text.size(), f) == text.size();
+  const bool closed = std::fclose(f) == 0;
+  std::error_code ec;
+  if (!wrote || !closed) {
+    std::filesystem::remove(temp, ec);
+    return path.string() + ": write failed (disk full?)";
+  }
+  std::filesystem::rename(temp, path, ec);
+  if (ec) {
+    std::filesystem::remove(temp, ec);
+    return path.string() + ": cannot replace the file: " + ec.message();
+  }
+  return {};
 }
 
 }  // namespace tactile

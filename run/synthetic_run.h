@@ -4,7 +4,7 @@
 #include <cstddef>
 #include <cstdint>
 
-#include "sim/run.h"
+#include "run/run.h"
 
 namespace tactile {
 

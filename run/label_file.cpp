@@ -1,11 +1,11 @@
-#include "sim/label_file.h"
+#include "run/label_file.h"
 
 #include <algorithm>
 #include <array>
 
 #include <nlohmann/json.hpp>
 
-#include "sim/text_parse.h"
+#include "base/text_parse.h"
 
 namespace tactile {
 namespace {

@@ -10,8 +10,8 @@
 #include <string_view>
 #include <variant>
 
-#include "sim/progress.h"
-#include "sim/run.h"
+#include "base/progress.h"
+#include "run/run.h"
 
 namespace tactile {
 
@@ -97,11 +97,5 @@ std::string formatRunCsv(const RunData& run);
 // Writes atomically: to a temporary file beside `path`, then renamed over it, so a failure never
 // leaves a partial file. Returns an empty string on success, otherwise the reason.
 std::string writeRunCsv(const RunData& run, const std::filesystem::path& path);
-
-// Reads a whole file into memory; returns false and sets `error` on failure.
-bool readFileText(const std::filesystem::path& path, std::string& text, std::string& error);
-
-// Writes text atomically (temporary file, then rename). Returns an empty string on success.
-std::string writeFileAtomically(const std::filesystem::path& path, std::string_view text);
 
 }  // namespace tactile

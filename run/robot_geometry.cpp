@@ -1,4 +1,4 @@
-#include "sim/robot_geometry.h"
+#include "run/robot_geometry.h"
 
 #include <cmath>
 #include <numbers>

@@ -1,4 +1,4 @@
-#include "sim/sensor_layout.h"
+#include "run/sensor_layout.h"
 
 namespace tactile {
 

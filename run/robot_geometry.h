@@ -8,7 +8,7 @@
 
 #include <array>
 
-#include "sim/sensor_layout.h"
+#include "run/sensor_layout.h"
 
 namespace tactile {
 

@@ -34,4 +34,10 @@ class FileText {
   std::string buffer_;
 };
 
+// Reads a whole file into memory; returns false and sets `error` on failure.
+bool readFileText(const std::filesystem::path& path, std::string& text, std::string& error);
+
+// Writes text atomically (temporary file, then rename). Returns an empty string on success.
+std::string writeFileAtomically(const std::filesystem::path& path, std::string_view text);
+
 }  // namespace tactile

@@ -1,8 +1,8 @@
-#include "sim/run.h"
+#include "run/run.h"
 
 #include <array>
 
-#include "sim/text_parse.h"
+#include "base/text_parse.h"
 
 namespace tactile {
 namespace {

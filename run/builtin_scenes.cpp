@@ -1,4 +1,4 @@
-#include "sim/builtin_scenes.h"
+#include "run/builtin_scenes.h"
 
 #include <algorithm>
 #include <utility>

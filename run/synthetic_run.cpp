@@ -1,4 +1,4 @@
-#include "sim/synthetic_run.h"
+#include "run/synthetic_run.h"
 
 #include <array>
 #include <random>
