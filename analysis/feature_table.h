@@ -1,4 +1,4 @@
-// The bring-your-own feature table (DESIGN.md section 4): CSV with header `f0,...,f{D-1},label`
+// The bring-your-own feature table (docs/file-formats.md#feature-table): CSV with header `f0,...,f{D-1},label`
 // and one sample per row; labels are free text naming the class.
 #pragma once
 

@@ -1,4 +1,4 @@
-// Feature vectors per sensor group and step (DESIGN.md section 5), and labelled data sets built
+// Feature vectors per sensor group and step (docs/analysis.md#features-featuresh), and labelled data sets built
 // from runs for training and testing the per-group classifiers.
 #pragma once
 

@@ -1,4 +1,4 @@
-// Contact classes of DESIGN.md section 3, with their exact file spellings.
+// Contact classes (docs/domain.md#contact-classes), with their exact file spellings.
 #pragma once
 
 #include <array>

@@ -1,4 +1,4 @@
-// The one reader and writer of label files (DESIGN.md section 4): CSV
+// The one reader and writer of label files (docs/file-formats.md#label-file): CSV
 // `run,group,first_step,last_step,class[,annotator]` with inclusive step ranges, or JSON with the
 // same fields. Pure text in, records out; the database resolves run names.
 #pragma once

@@ -1,4 +1,4 @@
-// Default robot body and dome placement (DESIGN.md section 3).
+// Default robot body and dome placement (docs/domain.md#robot).
 //
 // Body frame: origin at the midpoint of the rear axle, x forward, y to the left. The body is a
 // rounded rectangle; the rear axle sits kRearOverhang units in front of the back edge. Dome centres

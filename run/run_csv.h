@@ -1,4 +1,4 @@
-// The one reader and writer of run files (CSV, version 1; DESIGN.md section 4). Everything that
+// The one reader and writer of run files (CSV, version 1; docs/file-formats.md#run-file). Everything that
 // reads or writes runs goes through here.
 #pragma once
 

@@ -1,4 +1,4 @@
-// Scenes (DESIGN.md section 4): bounds, polygonal obstacles, a start pose and a goal, loaded from
+// Scenes (docs/file-formats.md#scene): bounds, polygonal obstacles, a start pose and a goal, loaded from
 // JSON and validated, with errors that name the obstacle and the vertex.
 #pragma once
 

@@ -1,4 +1,4 @@
-// Ground truth per sensor group per step, from the geometry (DESIGN.md section 3).
+// Ground truth per sensor group per step, from the geometry (rules in docs/sim.md#ground-truth).
 //
 // Inputs per step: for every dome, whether it touches an obstacle (raw, unfiltered) and the
 // feature it touches: the interior of an edge, or a vertex (convex = sticking out into free

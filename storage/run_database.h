@@ -1,5 +1,5 @@
 // The run database: one SQLite file holding recorded runs, their scenes, ground truth, label sets,
-// models and sweep results (DESIGN.md sections 2, 4 and 7; design notes in docs/storage.md).
+// models and sweep results (design notes in docs/storage.md).
 //
 // This is the API the CLI and the workbench use. Every call returns a result with a message
 // instead of throwing. One RunDatabase is one connection: use it from one thread at a time (open a
@@ -61,7 +61,7 @@ struct SummaryBucket {
   std::array<double, kValuesPerStep> max{};
 };
 
-// A decimated view of a step range for plotting (min/max per bucket; DESIGN.md section 7).
+// A decimated view of a step range for plotting (min/max per bucket; docs/storage.md#reading).
 struct RunSummary {
   std::int64_t firstStep = 0;
   std::int64_t lastStep = -1;
@@ -212,7 +212,7 @@ class RunDatabase {
   // Segments of a set (of one run when runId != 0), ordered by run, group, first step.
   Result<std::vector<LabelSegment>> segments(std::int64_t setId, std::int64_t runId = 0);
 
-  // Label files (DESIGN.md section 4): CSV `run,group,first_step,last_step,class[,annotator]` or
+  // Label files (docs/file-formats.md#label-file): CSV `run,group,first_step,last_step,class[,annotator]` or
   // JSON, chosen by the extension (.json, otherwise CSV). Import adds the file's segments in file
   // order (later rows win where they overlap) to the set, creating it when absent, in one
   // transaction: a file with any error changes nothing. Returns the number of segments read.

@@ -1,4 +1,4 @@
-// `tactile`: the headless twin of the workbench. Verbs follow DESIGN.md section 6.
+// `tactile`: the headless twin of the workbench. Its contract: docs/cli.md.
 #include <cstdio>
 #include <exception>
 

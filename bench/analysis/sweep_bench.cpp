@@ -1,5 +1,5 @@
 // Full default sweep (8 groups x 7 orders x 4 covariance forms x 3 floors = 672 cells) on 100k
-// labelled steps, on all cores. Target (issue 3): under 1 minute on 2 cores.
+// labelled steps, on all cores. Target: under 1 minute on 2 cores.
 //
 // Data: 10 synthetic runs of 10,000 steps (tests/analysis/learn_test_data.h), sensor noise 0.5,
 // each group in contact for the given percentage of steps (argument); the last 30% of each run is

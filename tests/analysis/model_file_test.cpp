@@ -69,7 +69,7 @@ void expectSamePredictions(const GroupModel& original, const GroupModel& loaded)
   EXPECT_EQ(loaded.metrics, original.metrics);
 }
 
-// Issue 3, numerical stability test 9: model file round trip gives identical predictions, bit for
+// Stability case 9: a model file round trip gives identical predictions, bit for
 // bit, for every covariance form.
 TEST(ModelFile, RoundTripIsBitIdenticalForEveryForm) {
   for (CovarianceForm form : kAllCovarianceForms) {
