@@ -1,5 +1,5 @@
-// The bring-your-own feature table (docs/file-formats.md#feature-table): CSV with header `f0,...,f{D-1},label`
-// and one sample per row; labels are free text naming the class.
+// The bring-your-own feature table (docs/file-formats.md#feature-table): CSV with header
+// `f0,...,f{D-1},label` and one sample per row; labels are free text naming the class.
 #pragma once
 
 #include <Eigen/Core>

@@ -1,5 +1,5 @@
-// Feature vectors per sensor group and step (docs/analysis.md#features-featuresh), and labelled data sets built
-// from runs for training and testing the per-group classifiers.
+// Feature vectors per sensor group and step (docs/analysis.md#features-featuresh), and labelled
+// data sets built from runs for training and testing the per-group classifiers.
 #pragma once
 
 #include <Eigen/Core>

@@ -1,6 +1,6 @@
-// Classification metrics (docs/analysis.md#metrics-metricsh): confusion matrix in counts and percent, per-class
-// recall and precision, accuracy, balanced accuracy, macro-F1; the one-vs-rest correct rates of
-// thesis table 4.19; and the contact-pattern error table of thesis table 4.39.
+// Classification metrics (docs/analysis.md#metrics-metricsh): confusion matrix in counts and
+// percent, per-class recall and precision, accuracy, balanced accuracy, macro-F1; the one-vs-rest
+// correct rates of thesis table 4.19; and the contact-pattern error table of thesis table 4.39.
 #pragma once
 
 #include <array>

@@ -1,4 +1,5 @@
-// Model files (docs/file-formats.md#model-file): the ONE reader and writer of trained per-group classifiers.
+// Model files (docs/file-formats.md#model-file): the ONE reader and writer of trained per-group
+// classifiers.
 //
 // A model file holds one group's classifier:
 //   {"format":"tactile-model","version":1,"group":"R","features":"normal",

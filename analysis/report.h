@@ -1,7 +1,7 @@
-// Reports (docs/analysis.md#reports-reporth) as text tables or CSV: confusion matrices in counts and percent,
-// per-class correct rates as in thesis table 4.19, rate against floor and against order (mean,
-// min, max over classes) as in figures 4.13 and 4.14, and the contact-pattern error table of
-// thesis table 4.39.
+// Reports (docs/analysis.md#reports-reporth) as text tables or CSV: confusion matrices in counts
+// and percent, per-class correct rates as in thesis table 4.19, rate against floor and against
+// order (mean, min, max over classes) as in figures 4.13 and 4.14, and the contact-pattern error
+// table of thesis table 4.39.
 #pragma once
 
 #include <nlohmann/json.hpp>

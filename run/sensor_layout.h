@@ -1,4 +1,5 @@
-// The 44-dome sensor layout of docs/domain.md#sensors: one table that every part of the product uses.
+// The 44-dome sensor layout of docs/domain.md#sensors: one table that every part of the product
+// uses.
 #pragma once
 
 #include <array>

@@ -1,5 +1,6 @@
 // Recorder and run loop: drive a Simulator with a Driver and record every step into a RunData
-// (docs/file-formats.md#run-file: metadata, pose, command, blocked, 88 dome values, 8 truth columns).
+// (docs/file-formats.md#run-file: metadata, pose, command, blocked, 88 dome values, 8 truth
+// columns).
 #pragma once
 
 #include <cstdint>

@@ -1,5 +1,5 @@
-// Scenes (docs/file-formats.md#scene): bounds, polygonal obstacles, a start pose and a goal, loaded from
-// JSON and validated, with errors that name the obstacle and the vertex.
+// Scenes (docs/file-formats.md#scene): bounds, polygonal obstacles, a start pose and a goal, loaded
+// from JSON and validated, with errors that name the obstacle and the vertex.
 #pragma once
 
 #include <optional>

@@ -116,8 +116,8 @@ PoseContact Simulator::evaluate(const Pose2d& pose) {
   return out;
 }
 
-// Dome model (docs/domain.md#dome-model, thesis 2.1): q = closest obstacle point to the dome centre c;
-// if d = |c - q| < r the dome is pushed back by D = (r - d) (c - q) / d. Its normal component is
+// Dome model (docs/domain.md#dome-model, thesis 2.1): q = closest obstacle point to the dome centre
+// c; if d = |c - q| < r the dome is pushed back by D = (r - d) (c - q) / d. Its normal component is
 // n = -D . normal (compression, >= 0) and its shear s = D . t with t = normal rotated +90 degrees
 // (counter-clockwise tangent). Ties between equally close edges go to the lowest edge id, so the
 // result does not depend on the order candidates arrive in (index and brute force agree exactly).

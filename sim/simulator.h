@@ -1,6 +1,6 @@
 // The simulator: robot body with 44 compliant domes in a World, stepping (v, omega) commands with
-// the dome contact model, the blocked rule and no tunnelling (docs/domain.md#dome-model, thesis 2.1,
-// 2.2, 2.4).
+// the dome contact model, the blocked rule and no tunnelling (docs/domain.md#dome-model,
+// thesis 2.1, 2.2, 2.4).
 #pragma once
 
 #include <array>

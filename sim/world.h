@@ -1,6 +1,7 @@
 // The immutable, shareable part of a simulation: the scene's obstacle edges (and the scene bounds
 // as walls), what each vertex looks like from free space, and a uniform-grid spatial index over
-// the edges (docs/sim.md#spatial-index) so that a step only looks at edges within reach of the robot.
+// the edges (docs/sim.md#spatial-index) so that a step only looks at edges within reach of the
+// robot.
 #pragma once
 
 #include <cstdint>
