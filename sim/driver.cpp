@@ -6,7 +6,7 @@
 
 #include "sim/robot.h"
 
-namespace tactile {
+namespace tactile::sim {
 namespace {
 
 // Uniform double in [0, 1) from 53 random bits (portable, unlike std::uniform_real_distribution).
@@ -170,4 +170,4 @@ std::unique_ptr<Driver> makeDriver(std::string_view name, std::uint64_t seed) {
   return nullptr;
 }
 
-}  // namespace tactile
+}  // namespace tactile::sim

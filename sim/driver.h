@@ -20,7 +20,7 @@
 #include "run/sensor_layout.h"
 #include "sim/geometry.h"
 
-namespace tactile {
+namespace tactile::sim {
 
 struct Command {
   double v = 0.0;      // forward speed, units/s
@@ -114,4 +114,4 @@ std::vector<std::string> autonomousDriverNames();  // "random", "wall-follow"
 // A driver by name, or nullptr for an unknown name.
 std::unique_ptr<Driver> makeDriver(std::string_view name, std::uint64_t seed);
 
-}  // namespace tactile
+}  // namespace tactile::sim

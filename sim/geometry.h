@@ -6,7 +6,7 @@
 #include <algorithm>
 #include <cmath>
 
-namespace tactile {
+namespace tactile::sim {
 
 using Vec2 = Eigen::Vector2d;
 
@@ -112,4 +112,4 @@ bool pointInPolygon(const Vec2& p, const Points& poly) {
   return inside;
 }
 
-}  // namespace tactile
+}  // namespace tactile::sim

@@ -7,7 +7,7 @@
 #include <thread>
 #include <vector>
 
-namespace tactile {
+namespace tactile::sim {
 
 std::string formatNumber(double value) {
   char buf[64];
@@ -148,4 +148,4 @@ std::string simulateBatch(std::shared_ptr<const World> world, std::string_view s
   return firstError;
 }
 
-}  // namespace tactile
+}  // namespace tactile::sim

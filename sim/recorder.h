@@ -13,7 +13,7 @@
 #include "sim/driver.h"
 #include "sim/simulator.h"
 
-namespace tactile {
+namespace tactile::sim {
 
 inline constexpr std::size_t kMaxStepsPerRun = 1'000'000;  // ~0.7 GB of values per run
 inline constexpr std::size_t kMaxRunsPerBatch = 100'000;
@@ -78,4 +78,4 @@ std::string simulateBatch(std::shared_ptr<const World> world, std::string_view s
                           const RunOptions& options, std::size_t runs, unsigned threads,
                           const RunSink& sink, const ProgressFn& progress = {});
 
-}  // namespace tactile
+}  // namespace tactile::sim

@@ -7,7 +7,7 @@
 #include "run/run.h"
 #include "sim/geometry.h"
 
-namespace tactile {
+namespace tactile::sim {
 
 // Wraps an angle to (-pi, pi].
 inline double wrapAngle(double a) {
@@ -47,4 +47,4 @@ inline Pose2d integratePose(const Pose2d& pose, double v, double omega, double s
                 pose.theta + omega * seconds};
 }
 
-}  // namespace tactile
+}  // namespace tactile::sim

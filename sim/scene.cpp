@@ -3,7 +3,7 @@
 #include <cmath>
 #include <nlohmann/json.hpp>
 
-namespace tactile {
+namespace tactile::sim {
 namespace {
 
 using nlohmann::json;
@@ -185,4 +185,4 @@ std::string sceneToJson(const Scene& scene) {
   return doc.dump(1) + "\n";
 }
 
-}  // namespace tactile
+}  // namespace tactile::sim

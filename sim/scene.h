@@ -10,7 +10,7 @@
 #include "run/run.h"
 #include "sim/geometry.h"
 
-namespace tactile {
+namespace tactile::sim {
 
 struct SceneBounds {
   double xmin = 0.0;
@@ -56,4 +56,4 @@ std::string validateSceneGeometry(const Scene& scene);
 // Scene as JSON text (the format parseSceneJson reads).
 std::string sceneToJson(const Scene& scene);
 
-}  // namespace tactile
+}  // namespace tactile::sim

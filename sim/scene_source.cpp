@@ -12,7 +12,7 @@
 #include "sim/recorder.h"
 #include "sim/simulator.h"
 
-namespace tactile {
+namespace tactile::sim {
 namespace {
 
 double unit(std::mt19937_64& rng) {
@@ -158,4 +158,4 @@ SceneResult loadScene(std::string_view spec, const RobotGeometry& geometry) {
   return result;
 }
 
-}  // namespace tactile
+}  // namespace tactile::sim

@@ -8,7 +8,7 @@
 #include "run/robot_geometry.h"
 #include "sim/scene.h"
 
-namespace tactile {
+namespace tactile::sim {
 
 inline constexpr std::size_t kMaxProceduralObstacles = 10'000;
 
@@ -27,4 +27,4 @@ std::string checkStartPose(const Scene& scene, const RobotGeometry& geometry = {
 // Unknown names and malformed random specs are usage errors; unreadable or invalid files are not.
 SceneResult loadScene(std::string_view spec, const RobotGeometry& geometry = {});
 
-}  // namespace tactile
+}  // namespace tactile::sim

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-namespace tactile {
+namespace tactile::sim {
 
 Simulator::Simulator(std::shared_ptr<const World> world, SimConfig config)
     : world_(std::move(world)), config_(config), domes_(domePlacements(config.geometry)) {
@@ -240,4 +240,4 @@ void Simulator::step(double v, double omega) {
   ++steps_;
 }
 
-}  // namespace tactile
+}  // namespace tactile::sim

@@ -13,7 +13,7 @@
 #include "sim/truth.h"
 #include "sim/world.h"
 
-namespace tactile {
+namespace tactile::sim {
 
 // Commands are clamped to these (a safety net: the sub-step count grows with speed).
 inline constexpr double kMaxSpeedUnits = 3000.0;  // units/s
@@ -106,4 +106,4 @@ class Simulator {
   std::vector<Vec2> bodyA_, bodyB_;
 };
 
-}  // namespace tactile
+}  // namespace tactile::sim

@@ -6,7 +6,7 @@
 #include "sim/simulator.h"
 #include "sim/world.h"
 
-namespace tactile {
+namespace tactile::sim {
 
 void TruthTracker::reset() {
   classes_.fill(ContactClass::NoContact);
@@ -100,4 +100,4 @@ void TruthTracker::update(const World& world, const PoseContact& contact, const 
   ++step_;
 }
 
-}  // namespace tactile
+}  // namespace tactile::sim

@@ -29,7 +29,7 @@
 #include "run/contact_class.h"
 #include "run/sensor_layout.h"
 
-namespace tactile {
+namespace tactile::sim {
 
 class World;
 struct PoseContact;
@@ -55,4 +55,4 @@ class TruthTracker {
   long long step_ = 0;
 };
 
-}  // namespace tactile
+}  // namespace tactile::sim

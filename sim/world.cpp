@@ -4,7 +4,7 @@
 #include <cmath>
 #include <numbers>
 
-namespace tactile {
+namespace tactile::sim {
 namespace {
 
 // Appends a closed loop of vertices as edges (in the given order) and classifies its vertices.
@@ -139,4 +139,4 @@ World::World(Scene scene, double cellSizeUnits) : scene_(std::move(scene)) {
   index_ = EdgeIndex(edges_, b, cellSizeUnits);
 }
 
-}  // namespace tactile
+}  // namespace tactile::sim

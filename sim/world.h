@@ -11,7 +11,7 @@
 #include "sim/geometry.h"
 #include "sim/scene.h"
 
-namespace tactile {
+namespace tactile::sim {
 
 // One obstacle edge, oriented so that free space lies on its right: obstacle polygons run
 // counter-clockwise, the bounds run clockwise.
@@ -80,4 +80,4 @@ class World {
   EdgeIndex index_;
 };
 
-}  // namespace tactile
+}  // namespace tactile::sim

@@ -23,6 +23,8 @@
 namespace tactile::cli {
 namespace {
 
+using namespace tactile::sim;
+
 struct SimulateArgs {
   std::string scene;
   std::string driver = "wall-follow";

@@ -78,9 +78,9 @@ struct ImportArgs {
 // link the simulator. Built-in names and file paths are left to storage.
 std::optional<std::string> proceduralSceneJson(const std::string& scene) {
   if (!scene.starts_with("random:")) return std::nullopt;
-  SceneResult generated = loadScene(scene);
+  sim::SceneResult generated = sim::loadScene(scene);
   if (!generated.ok()) return std::nullopt;
-  return sceneToJson(*generated.scene);
+  return sim::sceneToJson(*generated.scene);
 }
 
 int runImport(const ImportArgs& a) {

@@ -8,7 +8,7 @@
 #include "sim/recorder.h"
 #include "sim/scene_source.h"
 
-namespace tactile {
+namespace tactile::sim {
 namespace {
 
 std::shared_ptr<const World> worldFor(const std::string& spec) {
@@ -69,6 +69,6 @@ BENCHMARK(BM_ProceduralBruteForce)
     ->Unit(benchmark::kMillisecond);
 
 }  // namespace
-}  // namespace tactile
+}  // namespace tactile::sim
 
 BENCHMARK_MAIN();

@@ -7,7 +7,7 @@
 #include "sim/scene_source.h"
 #include "sim_test_util.h"
 
-namespace tactile {
+namespace tactile::sim {
 namespace {
 
 using test::box;
@@ -244,4 +244,4 @@ TEST(NoTunnelling, NoRecordedPoseEverOverlapsAnObstacle) {
 }
 
 }  // namespace
-}  // namespace tactile
+}  // namespace tactile::sim

@@ -5,7 +5,7 @@
 #include "sim/scene_source.h"
 #include "sim_test_util.h"
 
-namespace tactile {
+namespace tactile::sim {
 namespace {
 
 double uniform(std::mt19937_64& rng, double lo, double hi) {
@@ -114,4 +114,4 @@ TEST(EdgeIndex, SteppedRunsMatchBruteForce) {
 }
 
 }  // namespace
-}  // namespace tactile
+}  // namespace tactile::sim

@@ -5,7 +5,7 @@
 #include "sim/robot.h"
 #include "sim_test_util.h"
 
-namespace tactile {
+namespace tactile::sim {
 namespace {
 
 constexpr double kPi = std::numbers::pi;
@@ -89,4 +89,4 @@ TEST(Kinematics, NonFiniteCommandIsTreatedAsStop) {
 }
 
 }  // namespace
-}  // namespace tactile
+}  // namespace tactile::sim

@@ -9,7 +9,7 @@
 #include "sim/scene_source.h"
 #include "sim_test_util.h"
 
-namespace tactile {
+namespace tactile::sim {
 namespace {
 
 std::shared_ptr<const World> builtinWorld(const char* name) {
@@ -207,4 +207,4 @@ TEST(WallFollow, ReachesTheGoalInThePracticeScene) {
 }
 
 }  // namespace
-}  // namespace tactile
+}  // namespace tactile::sim

@@ -4,7 +4,7 @@
 #include "sim/scene.h"
 #include "sim/scene_source.h"
 
-namespace tactile {
+namespace tactile::sim {
 namespace {
 
 std::string sceneText(const std::string& obstacles, const std::string& start = "200, 500, 0",
@@ -201,4 +201,4 @@ TEST(Procedural, JsonRoundTripIsExact) {
 }
 
 }  // namespace
-}  // namespace tactile
+}  // namespace tactile::sim

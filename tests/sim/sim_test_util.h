@@ -8,7 +8,7 @@
 #include "sim/simulator.h"
 #include "sim/world.h"
 
-namespace tactile::test {
+namespace tactile::sim::test {
 
 inline Obstacle box(double x0, double y0, double x1, double y1) {
   return Obstacle{{Vec2(x0, y0), Vec2(x1, y0), Vec2(x1, y1), Vec2(x0, y1)}};
@@ -35,4 +35,4 @@ inline std::unique_ptr<Simulator> makeSim(Scene scene, SimConfig config = rawCon
   return std::make_unique<Simulator>(std::make_shared<const World>(std::move(scene)), config);
 }
 
-}  // namespace tactile::test
+}  // namespace tactile::sim::test

@@ -4,7 +4,7 @@
 
 #include "sim_test_util.h"
 
-namespace tactile {
+namespace tactile::sim {
 namespace {
 
 using test::box;
@@ -142,4 +142,4 @@ TEST(Truth, CorridorWithOpenFrontIsWallNotDeadPath) {
 }
 
 }  // namespace
-}  // namespace tactile
+}  // namespace tactile::sim
