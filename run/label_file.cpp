@@ -44,12 +44,63 @@ std::string fillRecord(LabelRecord& record, std::string_view group, std::string_
   return {};
 }
 
+bool isChecksum(std::string_view text) {
+  return text.size() == 16 && std::all_of(text.begin(), text.end(), [](char c) {
+           return (c >= '0' && c <= '9') || (c >= 'a' && c <= 'f');
+         });
+}
+
+// Checks one provenance entry and adds it; returns an error text or empty.
+std::string addProvenance(std::vector<LabelRunProvenance>& runs, LabelRunProvenance entry) {
+  if (entry.name.empty()) return "provenance without a run name";
+  if (entry.steps < 0) return "run '" + entry.name + "': step count must not be negative";
+  if (!isChecksum(entry.checksum)) {
+    return "run '" + entry.name + "': checksum '" + entry.checksum +
+           "' is not 16 lower-case hex digits";
+  }
+  for (const LabelRunProvenance& other : runs) {
+    if (other.name == entry.name) return "second provenance entry for run '" + entry.name + "'";
+  }
+  runs.push_back(std::move(entry));
+  return {};
+}
+
+// `# run NAME steps N checksum HEX` (NAME may hold spaces: the last four words are fixed).
+std::string parseProvenanceLine(std::string_view line, LabelRunProvenance& entry) {
+  constexpr std::string_view kExpected = "expected '# run NAME steps N checksum HEX'";
+  std::string_view rest = line.substr(std::string_view("# run ").size());
+  std::array<std::string_view, 4> tail{};  // steps N checksum HEX
+  for (int i = 3; i >= 0; --i) {
+    const std::size_t space = rest.rfind(' ');
+    if (space == std::string_view::npos) return std::string(kExpected);
+    tail[static_cast<std::size_t>(i)] = rest.substr(space + 1);
+    rest = rest.substr(0, space);
+  }
+  if (rest.empty() || tail[0] != "steps" || tail[2] != "checksum") {
+    return std::string(kExpected);
+  }
+  entry.name = std::string(rest);
+  if (!parseInteger(tail[1], entry.steps)) {
+    return "run '" + entry.name + "': step count '" + std::string(tail[1]) + "' is not a number";
+  }
+  entry.checksum = std::string(tail[3]);
+  return {};
+}
+
 }  // namespace
+
+const LabelRunProvenance* findProvenance(const LabelFileResult& file, std::string_view run) {
+  for (const LabelRunProvenance& p : file.runs) {
+    if (p.name == run) return &p;
+  }
+  return nullptr;
+}
 
 LabelFileResult parseLabelCsv(std::string_view text, std::string_view fileName) {
   LabelFileResult result;
   auto fail = [&](std::size_t line, const std::string& message) {
     result.records.clear();
+    result.runs.clear();
     result.error = std::string(fileName) + ":" + std::to_string(line) + ": " + message;
     return result;
   };
@@ -67,6 +118,16 @@ LabelFileResult parseLabelCsv(std::string_view text, std::string_view fileName) 
     text.remove_prefix(newline == std::string_view::npos ? text.size() : newline + 1);
     ++lineNo;
     if (line.ends_with('\r')) line.remove_suffix(1);
+    if (header && line.starts_with('#')) {
+      // Comments before the header; `# run ...` lines are provenance.
+      if (!line.starts_with("# run ")) continue;
+      LabelRunProvenance entry;
+      entry.line = lineNo;
+      std::string error = parseProvenanceLine(line, entry);
+      if (error.empty()) error = addProvenance(result.runs, std::move(entry));
+      if (!error.empty()) return fail(lineNo, error);
+      continue;
+    }
     if (header) {
       const auto names = splitComma(line);
       columnCount = names.size();
@@ -114,7 +175,8 @@ LabelFileResult parseLabelCsv(std::string_view text, std::string_view fileName) 
     if (position[5] >= 0) record.annotator = std::string(fields[position[5]]);
     result.records.push_back(std::move(record));
   }
-  if (header) return fail(1, "empty file (expected a header)");
+  if (header && lineNo == 0) return fail(1, "empty file (expected a header)");
+  if (header) return fail(lineNo, "no header after the comment lines");
   return result;
 }
 
@@ -141,6 +203,34 @@ LabelFileResult parseLabelJson(std::string_view text, std::string_view fileName)
       return result;
     }
     segments = &doc["segments"];
+    if (doc.contains("runs")) {
+      if (!doc["runs"].is_array()) {
+        result.error = name + ": \"runs\" is not an array";
+        return result;
+      }
+      std::size_t index = 0;
+      for (const nlohmann::json& item : doc["runs"]) {
+        ++index;
+        LabelRunProvenance entry;
+        entry.line = index;
+        std::string error;
+        if (!item.is_object() || !item.contains("name") || !item["name"].is_string() ||
+            !item.contains("steps") || !item["steps"].is_number_integer() ||
+            !item.contains("checksum") || !item["checksum"].is_string()) {
+          error = "expected {\"name\": text, \"steps\": integer, \"checksum\": text}";
+        } else {
+          entry.name = item["name"].get<std::string>();
+          entry.steps = item["steps"].get<std::int64_t>();
+          entry.checksum = item["checksum"].get<std::string>();
+          error = addProvenance(result.runs, std::move(entry));
+        }
+        if (!error.empty()) {
+          result.runs.clear();
+          result.error = name + ": runs entry " + std::to_string(index) + ": " + error;
+          return result;
+        }
+      }
+    }
   }
   if (!segments->is_array()) {
     result.error = name + ": \"segments\" is not an array";
@@ -151,6 +241,7 @@ LabelFileResult parseLabelJson(std::string_view text, std::string_view fileName)
     ++index;
     auto fail = [&](const std::string& message) {
       result.records.clear();
+      result.runs.clear();
       result.error = name + ": segment " + std::to_string(index) + ": " + message;
       return result;
     };
@@ -184,12 +275,18 @@ LabelFileResult parseLabelJson(std::string_view text, std::string_view fileName)
   return result;
 }
 
-std::string formatLabelCsv(const std::vector<LabelRecord>& records) {
+std::string formatLabelCsv(const std::vector<LabelRecord>& records,
+                           const std::vector<LabelRunProvenance>& runs) {
   bool withAnnotator = false;
   for (const LabelRecord& r : records)
     withAnnotator = withAnnotator || !r.annotator.empty();
-  std::string out = withAnnotator ? "run,group,first_step,last_step,class,annotator\n"
-                                  : "run,group,first_step,last_step,class\n";
+  std::string out;
+  for (const LabelRunProvenance& p : runs) {
+    out +=
+        "# run " + p.name + " steps " + std::to_string(p.steps) + " checksum " + p.checksum + '\n';
+  }
+  out += withAnnotator ? "run,group,first_step,last_step,class,annotator\n"
+                       : "run,group,first_step,last_step,class\n";
   for (const LabelRecord& r : records) {
     out += r.run;
     out += ',';
@@ -203,7 +300,8 @@ std::string formatLabelCsv(const std::vector<LabelRecord>& records) {
 }
 
 std::string formatLabelJson(const std::vector<LabelRecord>& records, std::string_view setName,
-                            std::string_view setAnnotator) {
+                            std::string_view setAnnotator,
+                            const std::vector<LabelRunProvenance>& runs) {
   nlohmann::json segments = nlohmann::json::array();
   for (const LabelRecord& r : records) {
     nlohmann::json item = {{"run", r.run},
@@ -214,11 +312,16 @@ std::string formatLabelJson(const std::vector<LabelRecord>& records, std::string
     if (!r.annotator.empty()) item["annotator"] = r.annotator;
     segments.push_back(std::move(item));
   }
-  nlohmann::json doc = {{"format", "tactile-labels"},
-                        {"version", 1},
-                        {"set", setName},
-                        {"annotator", setAnnotator},
-                        {"segments", std::move(segments)}};
+  nlohmann::json doc = {
+      {"format", "tactile-labels"}, {"version", 1}, {"set", setName}, {"annotator", setAnnotator}};
+  if (!runs.empty()) {
+    nlohmann::json list = nlohmann::json::array();
+    for (const LabelRunProvenance& p : runs) {
+      list.push_back({{"name", p.name}, {"steps", p.steps}, {"checksum", p.checksum}});
+    }
+    doc["runs"] = std::move(list);
+  }
+  doc["segments"] = std::move(segments);
   return doc.dump(1) + "\n";
 }
 

@@ -312,6 +312,23 @@ Result<std::int64_t> RunDatabase::importLabels(const std::string& setName,
         isJsonPath(file) ? parseLabelJson(text, file.string()) : parseLabelCsv(text, file.string());
     if (!parsed.error.empty()) throw db::DbError(parsed.error);
     db::Transaction transaction(impl_->connection);
+    // Provenance: the file was made for runs of this step count and checksum; a stored run of
+    // the same name with other content is not the run the labels are about.
+    for (const LabelRunProvenance& p : parsed.runs) {
+      db::Statement& s = impl_->statement("SELECT step_count, checksum FROM runs WHERE name = ?");
+      s.bind(1, p.name);
+      if (!s.step()) continue;  // a row naming this run fails below as an unknown run
+      const std::int64_t steps = s.columnInt(0);
+      const std::string checksum = s.columnText(1);
+      s.reset();
+      if (steps != p.steps || checksum != p.checksum) {
+        throw db::DbError(file.string() + ":" + std::to_string(p.line) + ": run '" + p.name +
+                          "': the label file was made for " + std::to_string(p.steps) +
+                          " steps, checksum " + p.checksum + ", but the database's run '" + p.name +
+                          "' has " + std::to_string(steps) + " steps, checksum " + checksum +
+                          " (a different run of the same name)");
+      }
+    }
     const std::int64_t setId = impl_->ensureLabelSet(setName);
     std::map<std::string, std::int64_t> runIds;
     for (const LabelRecord& record : parsed.records) {
@@ -350,11 +367,18 @@ Status RunDatabase::exportLabels(const std::string& setName, const std::filesyst
   if (!all) return all.error();
   std::vector<LabelRecord> records;
   records.reserve(all->size());
+  std::vector<LabelRunProvenance> runs;  // every run of the set, in the segments' (name) order
   for (const LabelSegment& s : all.value()) {
     records.push_back({s.run, s.group, s.firstStep, s.lastStep, s.cls, s.annotator, 0});
+    if (runs.empty() || runs.back().name != s.run) {
+      Result<RunInfo> info = runInfo(s.runId);
+      if (!info) return info.error();
+      runs.push_back({info->name, info->stepCount, info->checksum, 0});
+    }
   }
-  const std::string text = isJsonPath(file) ? formatLabelJson(records, set->name, set->annotator)
-                                            : formatLabelCsv(records);
+  const std::string text = isJsonPath(file)
+                               ? formatLabelJson(records, set->name, set->annotator, runs)
+                               : formatLabelCsv(records, runs);
   std::string error = writeFileAtomically(file, text);
   if (!error.empty()) return Status::failure(file.string() + ": " + error);
   return Status::success();

@@ -98,6 +98,10 @@ struct ImportOptions {
   // Files are parsed in chunks of about this many bytes, so that one big file is parsed on
   // several threads while its first steps are written; 0 = the default (4 MiB).
   std::size_t chunkBytes = 0;
+  // Put before every run name taken from a file's stem, joined by '_': runs `P_<stem>`
+  // (docs/storage.md#import); not applied to `name`. Lets several batches with the same file names
+  // (run_0000.csv, ...) be stored side by side.
+  std::string namePrefix;
   // Tried after the built-in scenes and before file paths; may be empty.
   SceneResolver sceneResolver;
   // Test hook: throw after writing this many steps of a run (checks that nothing is kept).
@@ -124,6 +128,20 @@ struct LabelSegment {
   std::int64_t lastStep = 0;
   ContactClass cls = ContactClass::NoContact;
   std::string annotator;
+};
+
+// ---- catalog (storage/catalog.cpp, docs/storage.md#catalog) -------------------------------
+
+// A stored run and the label sets that have segments on it (by name, sorted).
+struct RunCatalogEntry {
+  RunInfo run;
+  std::vector<std::string> labelSets;
+};
+
+// A label set and the runs it has segments on (by name, sorted).
+struct LabelSetCatalogEntry {
+  LabelSetInfo set;
+  std::vector<std::string> runs;
 };
 
 struct IntegrityReport {
@@ -193,6 +211,21 @@ class RunDatabase {
   // Writes the run as a run CSV file (atomically).
   Status exportRun(std::int64_t runId, const std::filesystem::path& file);
 
+  // ---- catalog: runs and label sets by name (docs/storage.md#catalog); every change is one
+  // transaction, and an unknown name is an error naming it that changes nothing ----
+  // Every run (sorted by name) with the label sets that have segments on it.
+  Result<std::vector<RunCatalogEntry>> runCatalog();
+  // Renames a run; the new name must be free, non-empty and hold no comma or line break.
+  Status renameRun(std::string_view name, const std::string& newName);
+  // Deletes the named runs with their steps, truth, block summaries and label segments (and
+  // scenes no other run uses), all in one transaction: all or nothing.
+  Status deleteRuns(const std::vector<std::string>& names);
+  // Every label set (sorted by name) with the runs it has segments on.
+  Result<std::vector<LabelSetCatalogEntry>> labelSetCatalog();
+  Status renameLabelSetNamed(std::string_view name, const std::string& newName);
+  // Deletes the named sets with their segments in one transaction: all or nothing.
+  Status deleteLabelSets(const std::vector<std::string>& names);
+
   // ---- label sets: every call below that changes something is one committed transaction ----
   Result<std::vector<LabelSetInfo>> listLabelSets();
   Result<LabelSetInfo> findLabelSet(std::string_view name);
@@ -212,10 +245,13 @@ class RunDatabase {
   // Segments of a set (of one run when runId != 0), ordered by run, group, first step.
   Result<std::vector<LabelSegment>> segments(std::int64_t setId, std::int64_t runId = 0);
 
-  // Label files (docs/file-formats.md#label-file): CSV `run,group,first_step,last_step,class[,annotator]` or
-  // JSON, chosen by the extension (.json, otherwise CSV). Import adds the file's segments in file
-  // order (later rows win where they overlap) to the set, creating it when absent, in one
-  // transaction: a file with any error changes nothing. Returns the number of segments read.
+  // Label files (docs/file-formats.md#label-file): CSV
+  // `run,group,first_step,last_step,class[,annotator]` or JSON, chosen by the extension (.json,
+  // otherwise CSV). Import adds the file's segments in file order (later rows win where they
+  // overlap) to the set, creating it when absent, in one transaction: a file with any error changes
+  // nothing. A provenance entry for a stored run whose step count or checksum differs from the
+  // stored one is an error naming the file, the run and both values. Export writes a provenance
+  // entry for every run of the set. Returns the number of segments read.
   Result<std::int64_t> importLabels(const std::string& setName, const std::filesystem::path& file);
   Status exportLabels(const std::string& setName, const std::filesystem::path& file);
 

@@ -271,7 +271,9 @@ ImportOutcome writeRun(RunDatabase::Impl& impl, FileHead& head,
       if (named.step()) {
         outcome.message = head.file + ": a run named '" + head.name +
                           "' already exists (imported from " + named.columnText(0) +
-                          "); choose another name";
+                          ", other content); not imported: give this batch a name prefix "
+                          "(tactile import --prefix P names runs P_<stem>) or the file "
+                          "another name (--name)";
         named.reset();
         return outcome;
       }
@@ -417,8 +419,11 @@ ImportOutcome writeRun(RunDatabase::Impl& impl, FileHead& head,
   return outcome;
 }
 
-std::string runName(const std::string& given, const std::filesystem::path& file) {
-  return given.empty() ? file.stem().string() : given;
+// The given name, else `PREFIX_<stem>` (or the stem without a prefix); docs/storage.md#import.
+std::string runName(const ImportOptions& options, const std::filesystem::path& file) {
+  if (!options.name.empty()) return options.name;
+  if (options.namePrefix.empty()) return file.stem().string();
+  return options.namePrefix + "_" + file.stem().string();
 }
 
 ImportOutcome cancelledOutcome(const std::filesystem::path& file) {
@@ -434,7 +439,7 @@ ImportOutcome RunDatabase::importText(std::string_view text, const std::string& 
                                       const ImportOptions& options) {
   FileHead head;
   head.file = fileName;
-  head.name = runName(options.name, fileName);
+  head.name = runName(options, fileName);
   std::optional<RunCsvChunks> chunks;
   try {
     head.checksum = checksumHex(text);
@@ -564,7 +569,7 @@ std::vector<ImportOutcome> RunDatabase::importFiles(const std::vector<std::files
   auto runHead = [&](std::size_t j) {
     FileHead head;
     head.file = files[j].string();
-    head.name = runName(options.name, files[j]);
+    head.name = runName(options, files[j]);
     auto source = std::make_shared<Source>();
     std::optional<StepChunk> first;
     try {

@@ -32,6 +32,7 @@ struct SimulateArgs {
   std::uint64_t seed = 1;
   std::string out;
   std::string outDir;
+  std::string prefix = "run";  // batch files are PREFIX_0000.csv, ...
   std::int64_t runs = 1;
   unsigned threads = 0;
   double dt = 0.1;
@@ -75,6 +76,12 @@ int runSimulate(const SimulateArgs& a) {
   const bool batch = !a.outDir.empty();
   if (batch == !a.out.empty()) throw UsageError("give exactly one of --out FILE or --out-dir DIR");
   if (!batch && a.runs != 1) throw UsageError("--runs needs --out-dir");
+  if (!batch && a.prefix != "run") throw UsageError("--prefix needs --out-dir");
+  if (a.prefix.empty() || a.prefix.find_first_of("/\\,\r\n") != std::string::npos ||
+      a.prefix == "." || a.prefix == "..") {
+    throw UsageError("--prefix must be a non-empty file-name part without '/', '\\' or ',', got '" +
+                     a.prefix + "'");
+  }
 
   std::shared_ptr<const World> world = loadWorld(a.scene);
   const std::string label = sceneLabel(a.scene, *world);
@@ -116,9 +123,9 @@ int runSimulate(const SimulateArgs& a) {
     std::vector<std::string> outcomeOf(runs);
     std::vector<std::size_t> stepsOf(runs, 0);
     const RunSink sink = [&](std::size_t i, RunResult& r) -> std::string {
-      char name[64];
-      std::snprintf(name, sizeof name, "run_%0*zu.csv", width, i);
-      const std::filesystem::path path = std::filesystem::path(a.outDir) / name;
+      char number[32];
+      std::snprintf(number, sizeof number, "_%0*zu.csv", width, i);
+      const std::filesystem::path path = std::filesystem::path(a.outDir) / (a.prefix + number);
       std::string error = writeRunCsv(r.run, path);
       if (!error.empty()) return error;
       std::lock_guard lock(mutex);
@@ -299,6 +306,9 @@ void registerSimVerbs(CLI::App& app, CLI::App& bench) {
   sim->add_option("--seed", args->seed, "Seed; run i of a batch uses SEED+i");
   sim->add_option("--out", args->out, "Output run file (single run)");
   sim->add_option("--out-dir", args->outDir, "Output directory (batch: run_0000.csv, ...)");
+  sim->add_option("--prefix", args->prefix,
+                  "Batch file names P_0000.csv, ... (default run); imported, the runs are named "
+                  "by these stems, so batches with different prefixes never clash");
   sim->add_option("--runs", args->runs, "Number of runs in a batch (needs --out-dir)");
   sim->add_option("--threads", args->threads, "Worker threads for a batch (0 = all cores)");
   sim->add_option("--dt", args->dt, "Step length in seconds");

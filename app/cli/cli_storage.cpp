@@ -1,4 +1,5 @@
-// Database verbs: import, export-run, labels import|export, autolabel, db check, bench storage.
+// Database verbs: import, export-run, autolabel, db check, bench storage (the `runs` and `labels`
+// verbs are in cli_catalog.cpp).
 #include <sys/resource.h>
 #include <unistd.h>
 
@@ -70,6 +71,7 @@ struct ImportArgs {
   std::string db;
   std::vector<std::string> files;
   std::string name;
+  std::string prefix;
   unsigned threads = 0;
   bool json = false;
 };
@@ -88,9 +90,14 @@ int runImport(const ImportArgs& a) {
   if (!a.name.empty() && files.size() != 1) {
     throw UsageError("--name needs exactly one file, got " + std::to_string(files.size()));
   }
+  if (!a.name.empty() && !a.prefix.empty()) throw UsageError("give --name or --prefix, not both");
+  if (a.prefix.find_first_of(",\r\n") != std::string::npos) {
+    throw UsageError("--prefix must not hold a comma or line break");
+  }
   auto db = openDatabase(a.db);
   storage::ImportOptions options;
   options.name = a.name;
+  options.namePrefix = a.prefix;
   options.threads = a.threads;
   options.sceneResolver = proceduralSceneJson;
   const auto t0 = std::chrono::steady_clock::now();
@@ -150,29 +157,6 @@ int runExport(const std::string& dbPath, const std::string& runName, const std::
   auto run = db->findRun(runName);
   if (!run) throw std::runtime_error(dbPath + ": " + run.errorText());
   const auto status = db->exportRun(run->id, out);
-  if (!status) throw std::runtime_error(status.errorText());
-  return kExitOk;
-}
-
-// ---- labels ----------------------------------------------------------------------------------
-
-int runLabelsImport(const std::string& dbPath, const std::string& set, const std::string& file,
-                    bool json) {
-  auto db = openDatabase(dbPath);
-  auto count = db->importLabels(set, file);
-  if (!count) throw std::runtime_error(count.errorText());
-  if (json) {
-    printJson({{"set", set}, {"segments", count.value()}});
-  } else {
-    std::printf("imported %lld segments from %s into label set '%s'\n",
-                static_cast<long long>(count.value()), file.c_str(), set.c_str());
-  }
-  return kExitOk;
-}
-
-int runLabelsExport(const std::string& dbPath, const std::string& set, const std::string& file) {
-  auto db = openDatabase(dbPath);
-  const auto status = db->exportLabels(set, file);
   if (!status) throw std::runtime_error(status.errorText());
   return kExitOk;
 }
@@ -455,8 +439,15 @@ void registerStorageVerbs(CLI::App& app, CLI::App& bench) {
     auto args = std::make_shared<ImportArgs>();
     CLI::App* cmd = app.add_subcommand("import", "Import run CSV files into a database");
     cmd->add_option("--db", args->db, "Database file (created when absent)")->required();
-    cmd->add_option("files", args->files, "Run files, or folders of *.csv run files")->required();
+    cmd->add_option("files", args->files,
+                    "Run files, or folders of *.csv run files (A B or A,B). A name already "
+                    "stored with other content fails that file only")
+        ->required()
+        ->delimiter(',');
     cmd->add_option("--name", args->name, "Run name (one file only; default: the file's stem)");
+    cmd->add_option("--prefix", args->prefix,
+                    "Name runs P_<stem> (e.g. --prefix room1: room1_run_0000), so batches with "
+                    "the same file names import side by side");
     cmd->add_option("--threads", args->threads, "Parser threads (default: one per core)");
     cmd->add_flag("--json", args->json, R"(Print {"runs":[{"name","id","steps"}],...})");
     setAction(cmd, [args] { return runImport(*args); });
@@ -470,32 +461,6 @@ void registerStorageVerbs(CLI::App& app, CLI::App& bench) {
     cmd->add_option("--run", *run, "Run name")->required();
     cmd->add_option("--out", *out, "Output run file (written atomically)")->required();
     setAction(cmd, [db, run, out] { return runExport(*db, *run, *out); });
-  }
-  {
-    CLI::App* labels = app.add_subcommand("labels", "Import or export label sets (CSV or JSON)");
-    labels->require_subcommand(1, 1);
-    struct LabelArgs {
-      std::string db, set, file;
-      bool json = false;
-    };
-    auto importArgs = std::make_shared<LabelArgs>();
-    CLI::App* imp = labels->add_subcommand(
-        "import", "Add a label file's segments to a set (created when absent); newest wins");
-    imp->add_option("--db", importArgs->db, "Database file")->required();
-    imp->add_option("--set", importArgs->set, "Label set name")->required();
-    imp->add_option("file", importArgs->file, "Label file: .json, otherwise CSV")->required();
-    imp->add_flag("--json", importArgs->json, "Print a JSON summary");
-    setAction(imp, [importArgs] {
-      return runLabelsImport(importArgs->db, importArgs->set, importArgs->file, importArgs->json);
-    });
-    auto exportArgs = std::make_shared<LabelArgs>();
-    CLI::App* exp = labels->add_subcommand("export", "Write a label set to a file");
-    exp->add_option("--db", exportArgs->db, "Database file")->required();
-    exp->add_option("--set", exportArgs->set, "Label set name")->required();
-    exp->add_option("file", exportArgs->file, "Label file: .json, otherwise CSV")->required();
-    setAction(exp, [exportArgs] {
-      return runLabelsExport(exportArgs->db, exportArgs->set, exportArgs->file);
-    });
   }
   {
     struct AutoArgs {

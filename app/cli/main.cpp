@@ -4,6 +4,10 @@
 
 #include "app/cli/cli_common.h"
 
+namespace tactile::cli {
+void registerCatalogVerbs(CLI::App& app);  // cli_catalog.cpp
+}
+
 int main(int argc, char** argv) {
   using namespace tactile::cli;
   CLI::App app{
@@ -21,6 +25,7 @@ int main(int argc, char** argv) {
   registerLearnVerbs(app, *bench);
   registerFitVerbs(app, *bench);
   registerStorageVerbs(app, *bench);
+  registerCatalogVerbs(app);
 
   try {
     app.parse(argc, argv);
