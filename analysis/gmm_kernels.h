@@ -16,6 +16,13 @@
 
 namespace tactile {
 
+// Rows per block of the blocked density evaluation.
+inline constexpr Eigen::Index kDensityBlockRows = 256;
+// Rows rounded up to the kernels' vector width (8).
+inline int paddedRows(Eigen::Index rows) {
+  return static_cast<int>((rows + 7) / 8 * 8);
+}
+
 // Everything needed to evaluate log w_i + log N(x | mu_i, Sigma_i) for all components, in some
 // coordinate frame (the caller subtracts the same centre from x that was subtracted from the
 // means).
