@@ -11,7 +11,9 @@ namespace tactile {
 
 // What went wrong and where. `file` names the file the error is about (a run file, a label file,
 // a database), empty when none; `line` and `column` are 1-based, 0 when not known. `message` says
-// what was expected and what was found, without the location.
+// what was expected and what was found, without the file and line; where a column matters it names
+// it in words too ("column 'n3' (position 10): ..."), so `column` is there for programs (a view
+// that highlights the field), not for the text.
 struct Error {
   std::string file;
   std::size_t line = 0;
@@ -25,11 +27,10 @@ struct Error {
   Error(std::string file_, std::size_t line_, std::size_t column_, std::string message_)
       : file(std::move(file_)), line(line_), column(column_), message(std::move(message_)) {}
 
-  // "FILE:LINE:COLUMN: message", leaving out the parts that are not known.
+  // "FILE:LINE: message", "FILE: message" or "message", as much as is known.
   std::string text() const {
     std::string out = file;
     if (!file.empty() && line > 0) out += ':' + std::to_string(line);
-    if (!file.empty() && line > 0 && column > 0) out += ':' + std::to_string(column);
     if (!out.empty()) out += ": ";
     return out + message;
   }
@@ -50,7 +51,7 @@ class [[nodiscard]] Result {
   T* operator->() { return &value(); }
   const T* operator->() const { return &value(); }
   const Error& error() const { return std::get<1>(value_); }
-  // The error as one line of text ("FILE:LINE:COLUMN: message").
+  // The error as one line of text ("FILE:LINE: message").
   std::string errorText() const { return error().text(); }
 
  private:
