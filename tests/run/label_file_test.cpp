@@ -95,5 +95,80 @@ TEST(LabelFile, CsvAndJsonRoundTrip) {
   }
 }
 
+TEST(LabelFile, ProvenanceRoundTripsInCsvAndJson) {
+  const std::vector<LabelRecord> records{
+      {"room1 run_0000", SensorGroup::Left, 0, 9, ContactClass::Wall, ""}};
+  const std::vector<LabelRunProvenance> runs{{"room1 run_0000", 1234, "0123456789abcdef", 0},
+                                             {"other", 0, "fedcba9876543210", 0}};
+  const std::string csv = formatLabelCsv(records, runs);
+  EXPECT_EQ(csv.rfind("# run room1 run_0000 steps 1234 checksum 0123456789abcdef\n"
+                      "# run other steps 0 checksum fedcba9876543210\n"
+                      "run,group,",
+                      0),
+            0u)
+      << csv;
+  for (const bool json : {false, true}) {
+    SCOPED_TRACE(json ? "json" : "csv");
+    const std::string text = json ? formatLabelJson(records, "set", "", runs) : csv;
+    const LabelFileResult back =
+        json ? parseLabelJson(text, "l.json") : parseLabelCsv(text, "l.csv");
+    ASSERT_TRUE(back.error.empty()) << back.error;
+    EXPECT_EQ(back.runs, runs);
+    ASSERT_EQ(back.records.size(), 1u);
+    EXPECT_EQ(back.records[0].run, "room1 run_0000");
+    ASSERT_NE(findProvenance(back, "other"), nullptr);
+    EXPECT_EQ(findProvenance(back, "other")->steps, 0);
+    EXPECT_EQ(findProvenance(back, "ghost"), nullptr);
+  }
+  EXPECT_EQ(parseLabelCsv(csv, "l.csv").runs[1].line, 2u);
+}
+
+TEST(LabelFile, FilesWithoutProvenanceAndOtherCommentsAreRead) {
+  const LabelFileResult plain =
+      parseLabelCsv("run,group,first_step,last_step,class\nr,R,0,1,Wall\n", "l.csv");
+  ASSERT_TRUE(plain.error.empty()) << plain.error;
+  EXPECT_TRUE(plain.runs.empty());
+  const LabelFileResult commented = parseLabelCsv(
+      "# made by hand\n#run-less note\nrun,group,first_step,last_step,class\nr,R,0,1,Wall\n",
+      "l.csv");
+  ASSERT_TRUE(commented.error.empty()) << commented.error;
+  EXPECT_TRUE(commented.runs.empty());
+  EXPECT_EQ(commented.records.size(), 1u);
+  EXPECT_EQ(commented.records[0].line, 4u);
+}
+
+TEST(LabelFile, MalformedProvenanceIsAnErrorWithItsLine) {
+  const std::string header = "run,group,first_step,last_step,class\nr,R,0,1,Wall\n";
+  for (const char* bad :
+       {"# run r steps 10 checksum 0123\n", "# run r steps ten checksum 0123456789abcdef\n",
+        "# run r steps -1 checksum 0123456789abcdef\n", "# run r steps 10 sum 0123456789abcdef\n",
+        "# run steps 10 checksum 0123456789abcdef\n",
+        "# run r steps 10 checksum 0123456789ABCDEF\n"}) {
+    SCOPED_TRACE(bad);
+    const LabelFileResult r = parseLabelCsv("# ok\n" + std::string(bad) + header, "l.csv");
+    EXPECT_EQ(r.error.rfind("l.csv:2: ", 0), 0u) << r.error;
+    EXPECT_TRUE(r.records.empty());
+    EXPECT_TRUE(r.runs.empty());
+  }
+  const LabelFileResult twice = parseLabelCsv(
+      "# run r steps 1 checksum 0123456789abcdef\n"
+      "# run r steps 1 checksum 0123456789abcdef\n" +
+          header,
+      "l.csv");
+  EXPECT_EQ(twice.error.rfind("l.csv:2: second provenance entry for run 'r'", 0), 0u)
+      << twice.error;
+  EXPECT_FALSE(parseLabelCsv("# run r steps 1 checksum 0123456789abcdef\n", "l.csv").error.empty());
+}
+
+TEST(LabelFile, MalformedJsonProvenanceIsAnError) {
+  const LabelFileResult r = parseLabelJson(
+      R"({"runs":[{"name":"r","steps":1,"checksum":"0123456789abcdef"},{"name":"s","steps":"1","checksum":"0123456789abcdef"}],"segments":[]})",
+      "l.json");
+  EXPECT_EQ(r.error,
+            "l.json: runs entry 2: expected {\"name\": text, \"steps\": integer, "
+            "\"checksum\": text}");
+  EXPECT_TRUE(r.runs.empty());
+}
+
 }  // namespace
 }  // namespace tactile

@@ -225,6 +225,89 @@ TEST_F(LabelsTest, LaterRowsOfALabelFileWin) {
   EXPECT_EQ(db_->segments(set_)->at(1).annotator, "carol");
 }
 
+std::string readText(const std::filesystem::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  return std::string(std::istreambuf_iterator<char>(in), {});
+}
+
+TEST_F(LabelsTest, ExportCarriesEachRunsStepsAndChecksum) {
+  add(0, 10, kWall);
+  add(3, 4, kWall, SensorGroup::Back, runB_);
+  const std::string a = db_->findRun("runA")->checksum;
+  const std::string b = db_->findRun("runB")->checksum;
+  ASSERT_TRUE(db_->exportLabels("main", dir_ / "p.csv").ok());
+  const std::string csv = readText(dir_ / "p.csv");
+  EXPECT_EQ(csv.rfind("# run runA steps 200 checksum " + a + "\n# run runB steps 100 checksum " +
+                          b + "\nrun,group,",
+                      0),
+            0u)
+      << csv;
+  ASSERT_TRUE(db_->exportLabels("main", dir_ / "p.json").ok());
+  const LabelFileResult json = parseLabelJson(readText(dir_ / "p.json"), "p.json");
+  ASSERT_TRUE(json.error.empty()) << json.error;
+  EXPECT_EQ(json.runs, (std::vector<LabelRunProvenance>{{"runA", 200, a, 0}, {"runB", 100, b, 0}}));
+}
+
+TEST_F(LabelsTest, LabelsForAnotherRunOfTheSameNameAreRefused) {
+  add(0, 10, kWall);
+  // The same set exported from a database whose runA is a different recording.
+  TempDir other;
+  auto elsewhere = test::openDb(other / "other.db");
+  ASSERT_EQ(elsewhere->importRun(makeRun(200, true, 99), "runA").status, ImportStatus::Imported);
+  const std::string theirs = elsewhere->findRun("runA")->checksum;
+  const std::string ours = db_->findRun("runA")->checksum;
+  ASSERT_NE(theirs, ours);
+  auto set = elsewhere->createLabelSet("theirs");
+  LabelSegment s;
+  s.run = "runA";
+  s.firstStep = 0;
+  s.lastStep = 50;
+  ASSERT_TRUE(elsewhere->addSegment(set.value(), s).ok());
+  for (const char* name : {"theirs.csv", "theirs.json"}) {
+    SCOPED_TRACE(name);
+    ASSERT_TRUE(elsewhere->exportLabels("theirs", other / name).ok());
+    const auto result = db_->importLabels("main", other / name);
+    ASSERT_FALSE(result.ok());
+    const std::string text = result.errorText();
+    EXPECT_NE(text.find((other / name).string()), std::string::npos) << text;
+    EXPECT_NE(text.find("run 'runA'"), std::string::npos) << text;
+    EXPECT_NE(text.find(theirs), std::string::npos) << text;
+    EXPECT_NE(text.find(ours), std::string::npos) << text;
+    EXPECT_EQ(ranges(), (std::vector<Range>{{0, 10, kWall}}));  // nothing changed
+  }
+}
+
+TEST_F(LabelsTest, ProvenanceWithAnotherStepCountIsRefused) {
+  const std::string checksum = db_->findRun("runA")->checksum;
+  std::ofstream(dir_ / "steps.csv") << "# run runA steps 199 checksum " << checksum
+                                    << "\nrun,group,first_step,last_step,class\nrunA,F,0,10,Wall\n";
+  const auto result = db_->importLabels("fresh", dir_ / "steps.csv");
+  ASSERT_FALSE(result.ok());
+  EXPECT_NE(result.errorText().find("steps.csv:1: run 'runA': the label file was made for 199 "
+                                    "steps"),
+            std::string::npos)
+      << result.errorText();
+  EXPECT_NE(result.errorText().find("has 200 steps"), std::string::npos) << result.errorText();
+  EXPECT_FALSE(db_->findLabelSet("fresh").ok());
+  // The matching provenance line is accepted.
+  std::ofstream(dir_ / "good.csv") << "# run runA steps 200 checksum " << checksum
+                                   << "\nrun,group,first_step,last_step,class\nrunA,F,0,10,Wall\n";
+  EXPECT_TRUE(db_->importLabels("fresh", dir_ / "good.csv").ok());
+}
+
+TEST_F(LabelsTest, LabelFileSegmentPastTheLastStepIsRefused) {
+  std::ofstream(dir_ / "past.csv") << "run,group,first_step,last_step,class\n"
+                                      "runB,F,0,10,Wall\n"
+                                      "runB,F,90,100,Wall\n";
+  const auto result = db_->importLabels("fresh", dir_ / "past.csv");
+  ASSERT_FALSE(result.ok());
+  EXPECT_NE(result.errorText().find("past.csv:3: segment 90..100 is not within the run's steps "
+                                    "0..99"),
+            std::string::npos)
+      << result.errorText();
+  EXPECT_FALSE(db_->findLabelSet("fresh").ok());
+}
+
 TEST_F(LabelsTest, AutolabelReproducesTheTruthExactly) {
   auto count = db_->autolabel(runA_, "truth");
   ASSERT_TRUE(count.ok()) << count.errorText();
