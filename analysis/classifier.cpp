@@ -17,7 +17,7 @@
 
 #include "analysis/gaussian.h"
 
-namespace tactile {
+namespace tactile::analysis {
 
 namespace {
 constexpr std::array<std::pair<ClassifierMethod, std::string_view>, 2> kMethodNames{{
@@ -384,4 +384,4 @@ HeldOutLogLikelihood heldOutLogLikelihood(const Eigen::MatrixXd& logLik,
   return out;
 }
 
-}  // namespace tactile
+}  // namespace tactile::analysis

@@ -14,7 +14,7 @@
 #include "analysis/gmm.h"
 #include "base/progress.h"
 
-namespace tactile {
+namespace tactile::analysis {
 
 enum class ClassifierMethod { Gaussian, Gmm };
 // "gaussian", "gmm".
@@ -139,4 +139,4 @@ std::optional<GaussianMixture> fitGaussian(const Eigen::MatrixXd& samples, doubl
                                            Regularization reg = Regularization::Floor,
                                            std::string* error = nullptr);
 
-}  // namespace tactile
+}  // namespace tactile::analysis

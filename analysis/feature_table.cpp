@@ -8,7 +8,7 @@
 #include "base/file_text.h"
 #include "run/run_csv.h"
 
-namespace tactile {
+namespace tactile::analysis {
 
 namespace {
 
@@ -198,4 +198,4 @@ bool remapLabels(FeatureTable& table, const std::vector<std::string>& classNames
   return true;
 }
 
-}  // namespace tactile
+}  // namespace tactile::analysis

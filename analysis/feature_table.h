@@ -9,7 +9,7 @@
 #include <string_view>
 #include <vector>
 
-namespace tactile {
+namespace tactile::analysis {
 
 struct FeatureTable {
   std::vector<std::string> classNames;  // in order of first appearance
@@ -43,4 +43,4 @@ std::vector<Eigen::MatrixXd> splitByClass(const FeatureTable& table);
 bool remapLabels(FeatureTable& table, const std::vector<std::string>& classNames,
                  std::string_view fileName, std::string& error);
 
-}  // namespace tactile
+}  // namespace tactile::analysis

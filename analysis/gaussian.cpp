@@ -8,7 +8,7 @@
 #include <algorithm>
 #include <cmath>
 
-namespace tactile {
+namespace tactile::analysis {
 
 double logSumExp(const double* values, int count) {
   double m = -std::numeric_limits<double>::infinity();
@@ -123,4 +123,4 @@ std::uint64_t Rng::below(std::uint64_t n) {
   return v % n;
 }
 
-}  // namespace tactile
+}  // namespace tactile::analysis

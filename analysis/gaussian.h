@@ -8,7 +8,7 @@
 #include <limits>
 #include <string>
 
-namespace tactile {
+namespace tactile::analysis {
 
 inline constexpr double kLog2Pi = 1.83787706640934548356065947281123527;
 
@@ -55,4 +55,4 @@ class Rng {
   std::uint64_t s_[4];
 };
 
-}  // namespace tactile
+}  // namespace tactile::analysis

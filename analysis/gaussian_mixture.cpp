@@ -14,7 +14,7 @@
 #include <limits>
 #include <sstream>
 
-namespace tactile {
+namespace tactile::analysis {
 
 namespace {
 
@@ -205,4 +205,4 @@ int GaussianMixture::parameterCount() const {
   return (k - 1) + k * d + cov;
 }
 
-}  // namespace tactile
+}  // namespace tactile::analysis

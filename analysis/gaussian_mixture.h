@@ -13,7 +13,7 @@
 
 #include "analysis/gmm_kernels.h"
 
-namespace tactile {
+namespace tactile::analysis {
 
 // Covariance form of a mixture: nodal = one covariance per component, grand = one covariance
 // shared (tied) by all components; full or diagonal.
@@ -90,4 +90,4 @@ class GaussianMixture {
   GmmDensityCache cache_;
 };
 
-}  // namespace tactile
+}  // namespace tactile::analysis

@@ -27,7 +27,7 @@
 #include "analysis/kmeans.h"
 #include "analysis/parallel.h"
 
-namespace tactile {
+namespace tactile::analysis {
 
 // ---------------------------------------------------------------------------------------------
 // Name tables.
@@ -695,4 +695,4 @@ GmmFit fitGmm(const Eigen::MatrixXd& samples, const GmmOptions& o, const Progres
   return fit;
 }
 
-}  // namespace tactile
+}  // namespace tactile::analysis

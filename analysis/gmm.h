@@ -18,7 +18,7 @@
 #include "analysis/gaussian_mixture.h"
 #include "base/progress.h"
 
-namespace tactile {
+namespace tactile::analysis {
 
 // How the variance floor is applied after each M-step.
 //  Floor: clamp, sigma^2 = max(sigma^2, floor) on the diagonal entries of diagonal forms and on
@@ -114,4 +114,4 @@ struct GmmFit {
 GmmFit fitGmm(const Eigen::MatrixXd& samples, const GmmOptions& options,
               const ProgressFn& progress = {});
 
-}  // namespace tactile
+}  // namespace tactile::analysis

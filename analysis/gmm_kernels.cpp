@@ -14,7 +14,7 @@
 
 #include "analysis/gaussian.h"
 
-namespace tactile {
+namespace tactile::analysis {
 
 bool buildDensityCache(const Eigen::VectorXd& weights, const Eigen::MatrixXd& means,
                        const std::vector<Eigen::MatrixXd>& covariances, bool diagonal, bool nodal,
@@ -197,4 +197,4 @@ double blockNearestCentres(const double* x, Eigen::Index ldx, Eigen::Index rows,
   return kernels().nearestCentres(x, ldx, rows, d, centres, k, bestIndex);
 }
 
-}  // namespace tactile
+}  // namespace tactile::analysis

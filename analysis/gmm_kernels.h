@@ -14,7 +14,7 @@
 
 #include "analysis/gmm_kernels_isa.h"
 
-namespace tactile {
+namespace tactile::analysis {
 
 // Rows per block of the blocked density evaluation.
 inline constexpr Eigen::Index kDensityBlockRows = 256;
@@ -92,4 +92,4 @@ std::vector<std::string> supportedKernelIsas();
 // Returns false, changing nothing, for an unknown or unsupported level.
 bool setKernelIsa(const std::string& isa);
 
-}  // namespace tactile
+}  // namespace tactile::analysis

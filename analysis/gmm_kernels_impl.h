@@ -18,7 +18,7 @@
 
 #include "analysis/gmm_kernels_isa.h"
 
-namespace tactile::TACTILE_KERNEL_NS {
+namespace tactile::analysis::TACTILE_KERNEL_NS {
 namespace {
 
 // Eight rows per vector on every level, held as one AVX-512 register, two AVX2 registers or four
@@ -500,4 +500,4 @@ double nearestCentres(const double* x, std::ptrdiff_t ldx, std::ptrdiff_t rows, 
   return hsum(inertia) + tail;
 }
 
-}  // namespace tactile::TACTILE_KERNEL_NS
+}  // namespace tactile::analysis::TACTILE_KERNEL_NS

@@ -4,7 +4,7 @@
 
 #include <cstddef>
 
-namespace tactile {
+namespace tactile::analysis {
 
 // Raw views handed to the per-level kernels (plain pointers only; see gmm_kernels_impl.h).
 struct KernelDensityView {
@@ -42,4 +42,4 @@ TACTILE_DECLARE_KERNELS(kernels_x86_64_v3)
 TACTILE_DECLARE_KERNELS(kernels_x86_64_v4)
 #undef TACTILE_DECLARE_KERNELS
 
-}  // namespace tactile
+}  // namespace tactile::analysis

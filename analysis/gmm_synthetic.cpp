@@ -10,7 +10,7 @@
 
 #include "analysis/gaussian.h"
 
-namespace tactile {
+namespace tactile::analysis {
 
 namespace {
 // Standard normal by Box-Muller (one value per call; deterministic).
@@ -63,4 +63,4 @@ FeatureTable makeSyntheticTable(const SyntheticTableSpec& spec) {
   return t;
 }
 
-}  // namespace tactile
+}  // namespace tactile::analysis

@@ -6,7 +6,7 @@
 
 #include "analysis/feature_table.h"
 
-namespace tactile {
+namespace tactile::analysis {
 
 struct SyntheticTableSpec {
   int rows = 100000;
@@ -23,4 +23,4 @@ struct SyntheticTableSpec {
 // clusters uniformly. Same spec, same table, on every platform.
 FeatureTable makeSyntheticTable(const SyntheticTableSpec& spec);
 
-}  // namespace tactile
+}  // namespace tactile::analysis

@@ -13,7 +13,7 @@
 #include <cmath>
 #include <limits>
 
-namespace tactile {
+namespace tactile::analysis {
 
 namespace {
 constexpr Eigen::Index kBlockRows = 512;
@@ -182,4 +182,4 @@ int lloydIterations(const Eigen::Ref<const Eigen::MatrixXd>& samples, Eigen::Mat
   return done;
 }
 
-}  // namespace tactile
+}  // namespace tactile::analysis

@@ -7,7 +7,7 @@
 
 #include "analysis/gaussian.h"
 
-namespace tactile {
+namespace tactile::analysis {
 
 // Greedy k-means++ seeding (Arthur & Vassilvitskii 2007; the greedy variant of scikit-learn): the
 // first centre is a uniformly random row; for each next centre, 2 + floor(ln k) candidates are
@@ -31,4 +31,4 @@ double assignNearest(const Eigen::Ref<const Eigen::MatrixXd>& samples,
 int lloydIterations(const Eigen::Ref<const Eigen::MatrixXd>& samples, Eigen::MatrixXd& centres,
                     int iterations, std::vector<int>& assignment, int threads = 1);
 
-}  // namespace tactile
+}  // namespace tactile::analysis

@@ -8,7 +8,7 @@
 #include <thread>
 #include <vector>
 
-namespace tactile {
+namespace tactile::analysis {
 namespace {
 
 thread_local bool tInsidePart = false;
@@ -130,4 +130,4 @@ void parallelFor(int parts, int threads, const std::function<void(int)>& f) {
     f(part);
 }
 
-}  // namespace tactile
+}  // namespace tactile::analysis

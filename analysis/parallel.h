@@ -3,7 +3,7 @@
 
 #include <functional>
 
-namespace tactile {
+namespace tactile::analysis {
 
 // Runs f(part) for every part in [0, parts) on up to `threads` threads (the calling thread is
 // one of them) and returns when all are done. Parts are handed out dynamically, so callers must
@@ -12,4 +12,4 @@ namespace tactile {
 // call is using the pool, or from inside a part, runs its parts on the calling thread.
 void parallelFor(int parts, int threads, const std::function<void(int)>& f);
 
-}  // namespace tactile
+}  // namespace tactile::analysis

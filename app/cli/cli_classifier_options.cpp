@@ -4,6 +4,8 @@
 
 namespace tactile::cli {
 
+using namespace tactile::analysis;
+
 void addClassifierOptions(CLI::App* cmd, ClassifierArgs& a, bool withMethodAndForm) {
   if (withMethodAndForm) {
     cmd->add_option("--method", a.method, "gmm or gaussian")->capture_default_str();

@@ -32,6 +32,6 @@ struct ClassifierArgs {
 void addClassifierOptions(CLI::App* cmd, ClassifierArgs& a, bool withMethodAndForm);
 
 // Checks the typed options; throws UsageError naming the option at fault.
-ClassifierOptions toClassifierOptions(const ClassifierArgs& a);
+analysis::ClassifierOptions toClassifierOptions(const ClassifierArgs& a);
 
 }  // namespace tactile::cli

@@ -19,6 +19,8 @@
 namespace tactile::cli {
 namespace {
 
+using namespace tactile::analysis;
+
 double secondsSince(std::chrono::steady_clock::time_point t0) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }

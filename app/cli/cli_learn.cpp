@@ -28,8 +28,14 @@
 namespace tactile::cli {
 namespace {
 
+using analysis::ClassifierMethod;
+using analysis::CovarianceForm;
 using analysis::FeatureKind;
 using analysis::LabelledRun;
+using analysis::parseClassifierMethod;
+using analysis::parseCovarianceForm;
+using analysis::parseGmmInit;
+using analysis::parseRegularization;
 using nlohmann::json;
 
 // Runs read from files, kept at stable addresses for LabelledRun pointers.

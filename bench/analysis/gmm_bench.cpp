@@ -7,7 +7,7 @@
 #include "analysis/gmm_synthetic.h"
 #include "analysis/kmeans.h"
 
-namespace tactile {
+namespace tactile::analysis {
 namespace {
 
 const Eigen::MatrixXd& data() {
@@ -101,6 +101,6 @@ void EStepPass(benchmark::State& state) {
 BENCHMARK(EStepPass)->ArgsProduct({{1, 0}, {16, 64}})->Unit(benchmark::kMillisecond);
 
 }  // namespace
-}  // namespace tactile
+}  // namespace tactile::analysis
 
 BENCHMARK_MAIN();

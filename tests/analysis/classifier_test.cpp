@@ -11,7 +11,7 @@
 
 #include "tests/analysis/gmm_test_util.h"
 
-namespace tactile {
+namespace tactile::analysis {
 namespace {
 
 using testing::gaussianRows;
@@ -262,4 +262,4 @@ TEST(HeldOutLogLikelihood, RowWithZeroDensityIsCounted) {
 }
 
 }  // namespace
-}  // namespace tactile
+}  // namespace tactile::analysis

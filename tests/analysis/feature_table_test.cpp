@@ -7,7 +7,7 @@
 
 #include "analysis/gmm_synthetic.h"
 
-namespace tactile {
+namespace tactile::analysis {
 namespace {
 
 TEST(FeatureTable, ParsesRowsLabelsAndClassOrder) {
@@ -92,4 +92,4 @@ TEST(FeatureTable, RemapNamesTheUnknownLabelsLine) {
 }
 
 }  // namespace
-}  // namespace tactile
+}  // namespace tactile::analysis

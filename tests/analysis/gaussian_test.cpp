@@ -10,7 +10,7 @@
 #include <limits>
 #include <vector>
 
-namespace tactile {
+namespace tactile::analysis {
 namespace {
 
 TEST(LogSumExp, MatchesDirectSumForModerateValues) {
@@ -91,4 +91,4 @@ TEST(Rng, IsDeterministicPerSeedAndUniformInRange) {
 }
 
 }  // namespace
-}  // namespace tactile
+}  // namespace tactile::analysis

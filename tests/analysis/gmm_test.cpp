@@ -10,7 +10,7 @@
 
 #include "tests/analysis/gmm_test_util.h"
 
-namespace tactile {
+namespace tactile::analysis {
 namespace {
 
 using testing::gaussianRows;
@@ -225,4 +225,4 @@ TEST(FitGmm, RandomFromDataReinitialisesWhenNotConverged) {
 }
 
 }  // namespace
-}  // namespace tactile
+}  // namespace tactile::analysis

@@ -8,7 +8,7 @@
 
 #include "analysis/gaussian.h"
 
-namespace tactile::testing {
+namespace tactile::analysis::testing {
 
 inline double standardNormal(Rng& rng) {
   double u = rng.uniform();
@@ -50,4 +50,4 @@ inline bool allFiniteMixture(const Eigen::VectorXd& w, const Eigen::MatrixXd& m,
   return ok;
 }
 
-}  // namespace tactile::testing
+}  // namespace tactile::analysis::testing

@@ -13,7 +13,7 @@
 #include "analysis/kmeans.h"
 #include "tests/analysis/gmm_test_util.h"
 
-namespace tactile {
+namespace tactile::analysis {
 namespace {
 
 using testing::gaussianRows;
@@ -310,9 +310,9 @@ TEST(KernelIsa, FitsAgreeOnEveryLevel) {
 }
 
 }  // namespace
-}  // namespace tactile
+}  // namespace tactile::analysis
 
-namespace tactile {
+namespace tactile::analysis {
 namespace {
 
 // k-means reads samples through their outer stride: rows of a taller matrix (as EM's padded,
@@ -334,4 +334,4 @@ TEST(KernelIsa, KMeansReadsSamplesThroughTheirOuterStride) {
 }
 
 }  // namespace
-}  // namespace tactile
+}  // namespace tactile::analysis

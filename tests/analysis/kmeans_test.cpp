@@ -8,7 +8,7 @@
 #include <algorithm>
 #include <set>
 
-namespace tactile {
+namespace tactile::analysis {
 namespace {
 
 // Three tight clusters far apart, 30 rows each, in 2-D.
@@ -95,4 +95,4 @@ TEST(KMeansPlusPlus, ResultDoesNotDependOnTheThreadCount) {
 }
 
 }  // namespace
-}  // namespace tactile
+}  // namespace tactile::analysis

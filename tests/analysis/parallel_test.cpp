@@ -7,7 +7,7 @@
 
 #include "analysis/parallel.h"
 
-namespace tactile {
+namespace tactile::analysis {
 namespace {
 
 TEST(ParallelFor, RunsEveryPartExactlyOnceForAnyThreadCount) {
@@ -49,4 +49,4 @@ TEST(ParallelFor, CallersOnSeveralThreadsAtOnceAllFinish) {
 }
 
 }  // namespace
-}  // namespace tactile
+}  // namespace tactile::analysis

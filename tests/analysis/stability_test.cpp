@@ -13,7 +13,7 @@
 #include "analysis/gmm.h"
 #include "tests/analysis/gmm_test_util.h"
 
-namespace tactile {
+namespace tactile::analysis {
 namespace {
 
 using testing::gaussianRows;
@@ -556,4 +556,4 @@ TEST(GmmStability, VarianceFloorFarAboveAFeatureVarianceWarns) {
 }
 
 }  // namespace
-}  // namespace tactile
+}  // namespace tactile::analysis
