@@ -12,8 +12,8 @@ namespace tactile::analysis {
 
 namespace {
 
-std::string located(std::string_view file, std::size_t line, std::string_view message) {
-  return std::string(file) + ":" + std::to_string(line) + ": " + std::string(message);
+Error located(std::string_view file, std::size_t line, std::string message) {
+  return Error(std::string(file), line, 0, std::move(message));
 }
 
 // Next line of text (without its '\n' and a trailing '\r'); advances pos.
@@ -28,8 +28,7 @@ std::string_view nextLine(std::string_view text, std::size_t& pos) {
 
 }  // namespace
 
-FeatureTableResult parseFeatureTable(std::string_view text, std::string_view fileName) {
-  FeatureTableResult result;
+Result<FeatureTable> parseFeatureTable(std::string_view text, std::string_view fileName) {
   std::size_t pos = 0;
   std::size_t lineNo = 0;
   std::string_view header;
@@ -39,8 +38,7 @@ FeatureTableResult parseFeatureTable(std::string_view text, std::string_view fil
     if (!header.empty()) break;
   }
   if (header.empty()) {
-    result.error = located(fileName, 1, "empty file: expected the header f0,...,f{D-1},label");
-    return result;
+    return located(fileName, 1, "empty file: expected the header f0,...,f{D-1},label");
   }
   // Header: f0,f1,...,f{D-1},label
   std::vector<std::string_view> names;
@@ -52,25 +50,22 @@ FeatureTableResult parseFeatureTable(std::string_view text, std::string_view fil
     start = comma + 1;
   }
   if (names.size() < 2 || names.back() != "label") {
-    result.error = located(fileName, lineNo,
-                           "header must be f0,...,f{D-1},label (the last column must be 'label')");
-    return result;
+    return located(fileName, lineNo,
+                   "header must be f0,...,f{D-1},label (the last column must be 'label')");
   }
   const std::size_t d = names.size() - 1;
   for (std::size_t j = 0; j < d; ++j) {
     if (names[j] != "f" + std::to_string(j)) {
-      result.error =
-          located(fileName, lineNo,
-                  "column " + std::to_string(j + 1) + ": header '" + std::string(names[j]) +
-                      "', expected 'f" + std::to_string(j) + "'");
-      return result;
+      return located(fileName, lineNo,
+                     "column " + std::to_string(j + 1) + ": header '" + std::string(names[j]) +
+                         "', expected 'f" + std::to_string(j) + "'");
     }
   }
   std::vector<double> values;
   values.reserve(text.size() / 8);
   std::vector<int> labels;
   std::unordered_map<std::string, int> classIndex;
-  FeatureTable& table = result.table;
+  FeatureTable table;
   while (pos <= text.size()) {
     const std::string_view line = nextLine(text, pos);
     ++lineNo;
@@ -82,31 +77,26 @@ FeatureTableResult parseFeatureTable(std::string_view text, std::string_view fil
       while (fieldEnd < end && *fieldEnd != ',')
         ++fieldEnd;
       if (fieldEnd == end) {
-        result.error =
-            located(fileName, lineNo,
-                    "expected " + std::to_string(d + 1) + " fields, got " + std::to_string(j + 1));
-        return result;
+        return located(
+            fileName, lineNo,
+            "expected " + std::to_string(d + 1) + " fields, got " + std::to_string(j + 1));
       }
       double v = 0.0;
       const auto [ptr, ec] = std::from_chars(p, fieldEnd, v, std::chars_format::general);
       if (ec != std::errc() || ptr != fieldEnd || !std::isfinite(v)) {
-        result.error = located(fileName, lineNo,
-                               "column " + std::to_string(j + 1) + " (f" + std::to_string(j) +
-                                   "): '" + std::string(p, fieldEnd) + "' is not a finite number");
-        return result;
+        return located(fileName, lineNo,
+                       "column " + std::to_string(j + 1) + " (f" + std::to_string(j) + "): '" +
+                           std::string(p, fieldEnd) + "' is not a finite number");
       }
       values.push_back(v);
       p = fieldEnd + 1;
     }
     const std::string_view label(p, static_cast<std::size_t>(end - p));
     if (label.find(',') != std::string_view::npos) {
-      result.error = located(fileName, lineNo, "more than " + std::to_string(d + 1) + " fields");
-      return result;
+      return located(fileName, lineNo, "more than " + std::to_string(d + 1) + " fields");
     }
     if (label.empty()) {
-      result.error =
-          located(fileName, lineNo, "column " + std::to_string(d + 1) + " (label): empty label");
-      return result;
+      return located(fileName, lineNo, "column " + std::to_string(d + 1) + " (label): empty label");
     }
     auto [it, inserted] =
         classIndex.try_emplace(std::string(label), static_cast<int>(table.classNames.size()));
@@ -116,27 +106,20 @@ FeatureTableResult parseFeatureTable(std::string_view text, std::string_view fil
   }
   const Eigen::Index n = static_cast<Eigen::Index>(labels.size());
   if (n == 0) {
-    result.error = located(fileName, lineNo, "the table has a header but no rows");
-    return result;
+    return located(fileName, lineNo, "the table has a header but no rows");
   }
   table.features =
       Eigen::Map<const Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>>(
           values.data(), n, static_cast<Eigen::Index>(d));
   table.labels = std::move(labels);
-  result.ok = true;
-  return result;
+  return table;
 }
 
-FeatureTableResult readFeatureTable(const std::filesystem::path& path) {
+Result<FeatureTable> readFeatureTable(const std::filesystem::path& path) {
   std::string text;
   std::string error;
   if (!readFileText(path, text, error)) {
-    FeatureTableResult r;
-    const std::string name = path.string();
-    r.error = error.find(name) == std::string::npos
-                  ? name + ": " + (error.empty() ? "cannot read the file" : error)
-                  : error;
-    return r;
+    return Error(path.string(), error.empty() ? "cannot read the file" : error);
   }
   return parseFeatureTable(text, path.string());
 }
@@ -176,8 +159,8 @@ std::vector<Eigen::MatrixXd> splitByClass(const FeatureTable& table) {
   return out;
 }
 
-bool remapLabels(FeatureTable& table, const std::vector<std::string>& classNames,
-                 std::string_view fileName, std::string& error) {
+Status remapLabels(FeatureTable& table, const std::vector<std::string>& classNames,
+                   std::string_view fileName) {
   std::vector<int> map(table.classNames.size(), -1);
   for (std::size_t c = 0; c < table.classNames.size(); ++c)
     for (std::size_t t = 0; t < classNames.size(); ++t)
@@ -187,15 +170,14 @@ bool remapLabels(FeatureTable& table, const std::vector<std::string>& classNames
     if (m < 0) {
       const std::size_t line =
           r < table.lines.size() ? static_cast<std::size_t>(table.lines[r]) : r + 2;
-      error = located(fileName, line,
-                      "label '" + table.classNames[static_cast<std::size_t>(table.labels[r])] +
-                          "' does not occur in the training table");
-      return false;
+      return located(fileName, line,
+                     "label '" + table.classNames[static_cast<std::size_t>(table.labels[r])] +
+                         "' does not occur in the training table");
     }
     table.labels[r] = m;
   }
   table.classNames = classNames;
-  return true;
+  return Status::success();
 }
 
 }  // namespace tactile::analysis

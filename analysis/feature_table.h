@@ -9,6 +9,8 @@
 #include <string_view>
 #include <vector>
 
+#include "base/error.h"
+
 namespace tactile::analysis {
 
 struct FeatureTable {
@@ -20,17 +22,12 @@ struct FeatureTable {
   int rows() const { return static_cast<int>(features.rows()); }
 };
 
-struct FeatureTableResult {
-  bool ok = false;
-  std::string error;  // "FILE:LINE: column C (fJ): ..." on failure
-  FeatureTable table;
-};
-
 // Parses the text of a feature table; `fileName` only names the source in error messages. Numbers
 // are strict std::from_chars literals and must be finite; labels must be non-empty; blank lines
-// (and a trailing '\r' on every line) are ignored.
-FeatureTableResult parseFeatureTable(std::string_view text, std::string_view fileName);
-FeatureTableResult readFeatureTable(const std::filesystem::path& path);
+// (and a trailing '\r' on every line) are ignored. An error names the file and line, and in its
+// message the column ("column 2 (f1): 'x2' is not a finite number").
+Result<FeatureTable> parseFeatureTable(std::string_view text, std::string_view fileName);
+Result<FeatureTable> readFeatureTable(const std::filesystem::path& path);
 
 // Writes a table in the same format (numbers with 17 significant digits, round-trip exact).
 std::string formatFeatureTable(const FeatureTable& table);
@@ -39,8 +36,8 @@ std::string formatFeatureTable(const FeatureTable& table);
 std::vector<Eigen::MatrixXd> splitByClass(const FeatureTable& table);
 
 // Maps the labels of `table` onto `classNames` (e.g. a test table onto the training classes).
-// Returns false with a message naming the first unknown label and its line (header = line 1).
-bool remapLabels(FeatureTable& table, const std::vector<std::string>& classNames,
-                 std::string_view fileName, std::string& error);
+// Fails naming the first unknown label and its line (header = line 1).
+Status remapLabels(FeatureTable& table, const std::vector<std::string>& classNames,
+                   std::string_view fileName);
 
 }  // namespace tactile::analysis

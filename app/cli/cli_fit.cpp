@@ -72,9 +72,9 @@ std::vector<std::string> featureNames(int dimension) {
 }
 
 FeatureTable loadTable(const std::string& path) {
-  FeatureTableResult r = readFeatureTable(path);
-  if (!r.ok) throw std::runtime_error(r.error);
-  return std::move(r.table);
+  Result<FeatureTable> r = readFeatureTable(path);
+  if (!r) throw std::runtime_error(r.errorText());
+  return std::move(r.value());
 }
 
 struct FitArgs {
@@ -94,9 +94,8 @@ int runFit(const FitArgs& f, const ClassifierArgs& a) {
     throw std::runtime_error(f.test + ": " + std::to_string(test.dimension()) +
                              " feature columns, but the training table has " +
                              std::to_string(train.dimension()));
-  std::string error;
-  if (!remapLabels(test, train.classNames, f.test.empty() ? f.train : f.test, error))
-    throw std::runtime_error(error);
+  const Status remapped = remapLabels(test, train.classNames, f.test.empty() ? f.train : f.test);
+  if (!remapped) throw std::runtime_error(remapped.errorText());
   const Evaluation e = trainAndTest(train, test, options);
   if (!e.fit.ok) {
     printError(f.train + ": " + e.fit.reason);

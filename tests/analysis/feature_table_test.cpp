@@ -13,14 +13,14 @@ namespace {
 TEST(FeatureTable, ParsesRowsLabelsAndClassOrder) {
   const auto r =
       parseFeatureTable("f0,f1,label\r\n1.5,-2,Wall\r\n\r\n3,4e-3,Corner\n0,0,Wall\n", "a.csv");
-  ASSERT_TRUE(r.ok) << r.error;
-  EXPECT_EQ(r.table.dimension(), 2);
-  EXPECT_EQ(r.table.rows(), 3);
-  EXPECT_EQ(r.table.classNames, (std::vector<std::string>{"Wall", "Corner"}));
-  EXPECT_EQ(r.table.labels, (std::vector<int>{0, 1, 0}));
-  EXPECT_EQ(r.table.features(1, 1), 4e-3);
-  EXPECT_EQ(r.table.lines, (std::vector<int>{2, 4, 5}));
-  const auto split = splitByClass(r.table);
+  ASSERT_TRUE(r.ok()) << r.errorText();
+  EXPECT_EQ(r->dimension(), 2);
+  EXPECT_EQ(r->rows(), 3);
+  EXPECT_EQ(r->classNames, (std::vector<std::string>{"Wall", "Corner"}));
+  EXPECT_EQ(r->labels, (std::vector<int>{0, 1, 0}));
+  EXPECT_EQ(r->features(1, 1), 4e-3);
+  EXPECT_EQ(r->lines, (std::vector<int>{2, 4, 5}));
+  const auto split = splitByClass(r.value());
   ASSERT_EQ(split.size(), 2u);
   EXPECT_EQ(split[0].rows(), 2);
   EXPECT_EQ(split[0](1, 0), 0.0);
@@ -28,44 +28,45 @@ TEST(FeatureTable, ParsesRowsLabelsAndClassOrder) {
 
 TEST(FeatureTable, BadNumberNamesFileLineAndColumn) {
   const auto r = parseFeatureTable("f0,f1,label\n1,2,a\n1,x2,b\n", "data/b.csv");
-  ASSERT_FALSE(r.ok);
-  EXPECT_EQ(r.error, "data/b.csv:3: column 2 (f1): 'x2' is not a finite number");
+  ASSERT_FALSE(r.ok());
+  EXPECT_EQ(r.errorText(), "data/b.csv:3: column 2 (f1): 'x2' is not a finite number");
 }
 
 TEST(FeatureTable, NonFiniteNumbersAreRejected) {
-  EXPECT_FALSE(parseFeatureTable("f0,label\ninf,a\n", "t.csv").ok);
-  EXPECT_FALSE(parseFeatureTable("f0,label\nnan,a\n", "t.csv").ok);
-  EXPECT_FALSE(parseFeatureTable("f0,label\n1e999,a\n", "t.csv").ok);
+  EXPECT_FALSE(parseFeatureTable("f0,label\ninf,a\n", "t.csv").ok());
+  EXPECT_FALSE(parseFeatureTable("f0,label\nnan,a\n", "t.csv").ok());
+  EXPECT_FALSE(parseFeatureTable("f0,label\n1e999,a\n", "t.csv").ok());
 }
 
 TEST(FeatureTable, WrongFieldCountsAreErrors) {
   const auto few = parseFeatureTable("f0,f1,label\n1,a\n", "t.csv");
-  ASSERT_FALSE(few.ok);
-  EXPECT_NE(few.error.find("t.csv:2: expected 3 fields"), std::string::npos) << few.error;
+  ASSERT_FALSE(few.ok());
+  EXPECT_NE(few.errorText().find("t.csv:2: expected 3 fields"), std::string::npos)
+      << few.errorText();
   const auto many = parseFeatureTable("f0,label\n1,a,b\n", "t.csv");
-  ASSERT_FALSE(many.ok);
-  EXPECT_NE(many.error.find("t.csv:2:"), std::string::npos);
+  ASSERT_FALSE(many.ok());
+  EXPECT_NE(many.errorText().find("t.csv:2:"), std::string::npos);
 }
 
 TEST(FeatureTable, EmptyLabelIsAnError) {
   const auto r = parseFeatureTable("f0,label\n1,\n", "t.csv");
-  ASSERT_FALSE(r.ok);
-  EXPECT_EQ(r.error, "t.csv:2: column 2 (label): empty label");
+  ASSERT_FALSE(r.ok());
+  EXPECT_EQ(r.errorText(), "t.csv:2: column 2 (label): empty label");
 }
 
 TEST(FeatureTable, HeaderMustNameTheColumns) {
-  EXPECT_FALSE(parseFeatureTable("a,b,label\n1,2,x\n", "t.csv").ok);
-  EXPECT_FALSE(parseFeatureTable("f0,f1\n1,2\n", "t.csv").ok);
+  EXPECT_FALSE(parseFeatureTable("a,b,label\n1,2,x\n", "t.csv").ok());
+  EXPECT_FALSE(parseFeatureTable("f0,f1\n1,2\n", "t.csv").ok());
   const auto r = parseFeatureTable("f0,f2,label\n1,2,x\n", "t.csv");
-  ASSERT_FALSE(r.ok);
-  EXPECT_NE(r.error.find("t.csv:1: column 2"), std::string::npos) << r.error;
+  ASSERT_FALSE(r.ok());
+  EXPECT_NE(r.errorText().find("t.csv:1: column 2"), std::string::npos) << r.errorText();
 }
 
 TEST(FeatureTable, EmptyFileAndHeaderOnlyAreErrors) {
-  EXPECT_FALSE(parseFeatureTable("", "t.csv").ok);
+  EXPECT_FALSE(parseFeatureTable("", "t.csv").ok());
   const auto r = parseFeatureTable("f0,label\n", "t.csv");
-  ASSERT_FALSE(r.ok);
-  EXPECT_NE(r.error.find("no rows"), std::string::npos);
+  ASSERT_FALSE(r.ok());
+  EXPECT_NE(r.errorText().find("no rows"), std::string::npos);
 }
 
 TEST(FeatureTable, FormatThenParseIsExact) {
@@ -74,21 +75,22 @@ TEST(FeatureTable, FormatThenParseIsExact) {
   spec.dimension = 4;
   const FeatureTable t = makeSyntheticTable(spec);
   const auto r = parseFeatureTable(formatFeatureTable(t), "mem");
-  ASSERT_TRUE(r.ok) << r.error;
-  EXPECT_TRUE(r.table.features == t.features);
-  EXPECT_EQ(r.table.labels, t.labels);
-  EXPECT_EQ(r.table.classNames, t.classNames);
+  ASSERT_TRUE(r.ok()) << r.errorText();
+  EXPECT_TRUE(r->features == t.features);
+  EXPECT_EQ(r->labels, t.labels);
+  EXPECT_EQ(r->classNames, t.classNames);
 }
 
 TEST(FeatureTable, RemapNamesTheUnknownLabelsLine) {
   auto r = parseFeatureTable("f0,label\n1,b\n2,zz\n", "test.csv");
-  ASSERT_TRUE(r.ok);
-  std::string error;
-  EXPECT_FALSE(remapLabels(r.table, {"a", "b"}, "test.csv", error));
-  EXPECT_EQ(error, "test.csv:3: label 'zz' does not occur in the training table");
+  ASSERT_TRUE(r.ok());
+  const Status unknown = remapLabels(r.value(), {"a", "b"}, "test.csv");
+  ASSERT_FALSE(unknown.ok());
+  EXPECT_EQ(unknown.errorText(), "test.csv:3: label 'zz' does not occur in the training table");
+  EXPECT_EQ(unknown.error().line, 3u);
   auto ok = parseFeatureTable("f0,label\n1,b\n2,a\n", "test.csv");
-  ASSERT_TRUE(remapLabels(ok.table, {"a", "b"}, "test.csv", error));
-  EXPECT_EQ(ok.table.labels, (std::vector<int>{1, 0}));
+  ASSERT_TRUE(remapLabels(ok.value(), {"a", "b"}, "test.csv").ok());
+  EXPECT_EQ(ok->labels, (std::vector<int>{1, 0}));
 }
 
 }  // namespace
