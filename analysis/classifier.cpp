@@ -53,16 +53,12 @@ std::optional<PriorMode> parsePriorMode(std::string_view name) {
 
 // ---------------------------------------------------------------------------------------------
 
-std::optional<ClassModelSet> ClassModelSet::create(ClassifierMethod method,
-                                                   std::vector<std::string> classNames,
-                                                   std::vector<GaussianMixture> models,
-                                                   Eigen::VectorXd logPriors,
-                                                   std::vector<GaussianMixture> restModels,
-                                                   std::string* error) {
-  const auto fail = [&](const std::string& message) -> std::optional<ClassModelSet> {
-    if (error) *error = message;
-    return std::nullopt;
-  };
+Result<ClassModelSet> ClassModelSet::create(ClassifierMethod method,
+                                            std::vector<std::string> classNames,
+                                            std::vector<GaussianMixture> models,
+                                            Eigen::VectorXd logPriors,
+                                            std::vector<GaussianMixture> restModels) {
+  const auto fail = [](std::string message) { return Error(std::move(message)); };
   if (models.empty()) return fail("a classifier needs at least one class model");
   if (classNames.size() != models.size())
     return fail(std::to_string(classNames.size()) + " class names for " +
@@ -154,12 +150,9 @@ void ClassModelSet::oneVsRestLogRatio(const Eigen::MatrixXd& samples, int c,
 
 // ---------------------------------------------------------------------------------------------
 
-std::optional<GaussianMixture> fitGaussian(const Eigen::MatrixXd& samples, double varianceFloor,
-                                           Regularization reg, std::string* error) {
-  const auto fail = [&](const std::string& message) -> std::optional<GaussianMixture> {
-    if (error) *error = message;
-    return std::nullopt;
-  };
+Result<GaussianMixture> fitGaussian(const Eigen::MatrixXd& samples, double varianceFloor,
+                                    Regularization reg) {
+  const auto fail = [](std::string message) { return Error(std::move(message)); };
   const Eigen::Index n = samples.rows();
   const Eigen::Index d = samples.cols();
   if (d < 1) return fail("samples have no features");
@@ -180,9 +173,8 @@ std::optional<GaussianMixture> fitGaussian(const Eigen::MatrixXd& samples, doubl
     else
       cov = clampEigenvalues(cov, varianceFloor);
   }
-  std::string why;
-  auto model = GaussianMixture::create(Eigen::VectorXd::Ones(1), mean, {cov},
-                                       CovarianceForm::NodalFull, &why);
+  auto model =
+      GaussianMixture::create(Eigen::VectorXd::Ones(1), mean, {cov}, CovarianceForm::NodalFull);
   if (!model)
     return fail(
         "the covariance is singular (constant or linearly dependent features); use a "
@@ -268,9 +260,12 @@ ClassifierFit trainClassifier(const std::vector<Eigen::MatrixXd>& samplesPerClas
     if (t < classes) {
       const Eigen::MatrixXd& x = samplesPerClass[t];
       if (options.method == ClassifierMethod::Gaussian) {
-        std::string why;
-        results[t] = fitGaussian(x, options.gmm.varianceFloor, options.gmm.reg, &why);
-        reasons[t] = why;
+        Result<GaussianMixture> g = fitGaussian(x, options.gmm.varianceFloor, options.gmm.reg);
+        if (g) {
+          results[t] = std::move(g.value());
+        } else {
+          reasons[t] = g.error().message;
+        }
         fit.iterations[t] = 1;
         converged[t] = results[t].has_value() ? 1 : 0;
         if (results[t]) fit.trainMeanLogLikelihood[t] = results[t]->meanLogLikelihood(x);
@@ -298,9 +293,12 @@ ClassifierFit trainClassifier(const std::vector<Eigen::MatrixXd>& samplesPerClas
         rest.middleRows(row, samplesPerClass[o].rows()) = samplesPerClass[o];
         row += samplesPerClass[o].rows();
       }
-      std::string why;
-      results[t] = fitGaussian(rest, options.gmm.varianceFloor, options.gmm.reg, &why);
-      reasons[t] = why;
+      Result<GaussianMixture> g = fitGaussian(rest, options.gmm.varianceFloor, options.gmm.reg);
+      if (g) {
+        results[t] = std::move(g.value());
+      } else {
+        reasons[t] = g.error().message;
+      }
     }
     std::lock_guard<std::mutex> lock(progressMutex);
     ++done;
@@ -347,11 +345,10 @@ ClassifierFit trainClassifier(const std::vector<Eigen::MatrixXd>& samplesPerClas
             ? -std::log(static_cast<double>(classes))
             : std::log(static_cast<double>(samplesPerClass[c].rows()) /
                        static_cast<double>(totalRows));
-  std::string error;
   auto set = ClassModelSet::create(options.method, classNames, std::move(models), logPriors,
-                                   std::move(rest), &error);
-  if (!set) return fail(error);
-  fit.model = std::move(*set);
+                                   std::move(rest));
+  if (!set) return fail(set.error().message);
+  fit.model = std::move(set.value());
   // The floor against each feature's variance over every class's rows together: the spread that
   // could tell the classes apart.
   Eigen::MatrixXd all(totalRows, d);

@@ -50,14 +50,11 @@ class ClassModelSet {
 
   // Validates and builds a model set: names and models non-empty, same size, all models of the
   // same dimension; logPriors empty (= equal) or one finite value per class with
-  // logsumexp(logPriors) = 0 within 1e-9; restModels empty or one per class. nullopt + *error on
-  // failure.
-  static std::optional<ClassModelSet> create(ClassifierMethod method,
-                                             std::vector<std::string> classNames,
-                                             std::vector<GaussianMixture> models,
-                                             Eigen::VectorXd logPriors = {},
-                                             std::vector<GaussianMixture> restModels = {},
-                                             std::string* error = nullptr);
+  // logsumexp(logPriors) = 0 within 1e-9; restModels empty or one per class.
+  static Result<ClassModelSet> create(ClassifierMethod method, std::vector<std::string> classNames,
+                                      std::vector<GaussianMixture> models,
+                                      Eigen::VectorXd logPriors = {},
+                                      std::vector<GaussianMixture> restModels = {});
 
   ClassifierMethod method() const { return method_; }
   int classCount() const { return static_cast<int>(models_.size()); }
@@ -134,9 +131,8 @@ ClassifierFit trainClassifier(const std::vector<Eigen::MatrixXd>& samplesPerClas
 // Unbiased (N-1) maximum-likelihood Gaussian of thesis 4.3 as a one-component NodalFull mixture:
 // mu = (1/N) sum x_n, Sigma = 1/(N-1) sum (x_n - mu)(x_n - mu)^T (two-pass, centred). With a
 // variance floor > 0, reg Floor clamps the eigenvalues of Sigma at the floor, reg Add uses
-// Sigma + floor * I. Fails (nullopt + *error) for N < 2, N < D, or a singular Sigma with floor 0.
-std::optional<GaussianMixture> fitGaussian(const Eigen::MatrixXd& samples, double varianceFloor,
-                                           Regularization reg = Regularization::Floor,
-                                           std::string* error = nullptr);
+// Sigma + floor * I. Fails for N < 2, N < D, or a singular Sigma with floor 0.
+Result<GaussianMixture> fitGaussian(const Eigen::MatrixXd& samples, double varianceFloor,
+                                    Regularization reg = Regularization::Floor);
 
 }  // namespace tactile::analysis

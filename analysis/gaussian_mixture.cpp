@@ -45,13 +45,11 @@ std::optional<CovarianceForm> parseCovarianceForm(std::string_view name) {
   return std::nullopt;
 }
 
-std::optional<GaussianMixture> GaussianMixture::create(
-    const Eigen::VectorXd& weights, const Eigen::MatrixXd& means,
-    const std::vector<Eigen::MatrixXd>& covariances, CovarianceForm form, std::string* error) {
-  const auto fail = [&](const std::string& message) -> std::optional<GaussianMixture> {
-    if (error) *error = message;
-    return std::nullopt;
-  };
+Result<GaussianMixture> GaussianMixture::create(const Eigen::VectorXd& weights,
+                                                const Eigen::MatrixXd& means,
+                                                const std::vector<Eigen::MatrixXd>& covariances,
+                                                CovarianceForm form) {
+  const auto fail = [](std::string message) { return Error(std::move(message)); };
   const Eigen::Index k = weights.size();
   if (k < 1) return fail("a mixture needs at least one component");
   if (means.rows() != k)
@@ -92,7 +90,8 @@ std::optional<GaussianMixture> GaussianMixture::create(
   m.weights_ = weights;
   m.means_ = means;
   m.covariances_ = covariances;
-  if (!m.buildCache(error)) return std::nullopt;
+  std::string error;
+  if (!m.buildCache(&error)) return fail(error);
   return m;
 }
 

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "analysis/gmm_kernels.h"
+#include "base/error.h"
 
 namespace tactile::analysis {
 
@@ -42,12 +43,11 @@ class GaussianMixture {
   // Validates and builds a mixture. weights: K; means: K x D; covariances: K matrices (nodal
   // forms) or 1 matrix (grand forms), each D x D, symmetric (relative 1e-12), positive definite,
   // with zero off-diagonal entries for diagonal forms; weights non-negative, summing to 1 within
-  // 1e-9 (they are then renormalised). On failure returns nullopt and sets *error (if given) to a
-  // message naming the offending component.
-  static std::optional<GaussianMixture> create(const Eigen::VectorXd& weights,
-                                               const Eigen::MatrixXd& means,
-                                               const std::vector<Eigen::MatrixXd>& covariances,
-                                               CovarianceForm form, std::string* error = nullptr);
+  // 1e-9 (they are then renormalised). An error names the offending component.
+  static Result<GaussianMixture> create(const Eigen::VectorXd& weights,
+                                        const Eigen::MatrixXd& means,
+                                        const std::vector<Eigen::MatrixXd>& covariances,
+                                        CovarianceForm form);
 
   int components() const { return static_cast<int>(weights_.size()); }
   int dimension() const { return static_cast<int>(means_.cols()); }

@@ -675,10 +675,9 @@ GmmFit fitGmm(const Eigen::MatrixXd& samples, const GmmOptions& o, const Progres
   if (!best.ok) return fail(lastReason.empty() ? "the fit failed" : lastReason);
 
   Eigen::MatrixXd means = best.state.means.rowwise() + offset;
-  std::string error;
-  auto model = GaussianMixture::create(best.state.weights, means, best.state.covs, o.form, &error);
-  if (!model) return fail("the fitted model is invalid: " + error);
-  fit.model = std::move(*model);
+  auto model = GaussianMixture::create(best.state.weights, means, best.state.covs, o.form);
+  if (!model) return fail("the fitted model is invalid: " + model.error().message);
+  fit.model = std::move(model.value());
   fit.ok = true;
   fit.iterations = best.iterations;
   fit.converged = best.converged;

@@ -146,11 +146,9 @@ GaussianMixture mixtureOf(const json& v, const std::string& path, CovarianceForm
     }
     matrices.push_back(std::move(m));
   }
-  std::string error;
-  std::optional<GaussianMixture> g =
-      GaussianMixture::create(weights, means, matrices, form, &error);
-  if (!g) fail(path, error.empty() ? "invalid mixture (not positive definite?)" : error);
-  return std::move(*g);
+  Result<GaussianMixture> g = GaussianMixture::create(weights, means, matrices, form);
+  if (!g) fail(path, g.error().message);
+  return std::move(g.value());
 }
 
 GroupModel modelOf(const json& v, const std::string& path) {
@@ -238,11 +236,10 @@ GroupModel modelOf(const json& v, const std::string& path) {
       fail(path + ".priors", "expected one log prior per class");
     }
   }
-  std::string error;
-  std::optional<ClassModelSet> set = ClassModelSet::create(*method, names, std::move(mixtures),
-                                                           logPriors, std::move(rest), &error);
-  if (!set) fail(path, error);
-  model.classifier = std::move(*set);
+  Result<ClassModelSet> set =
+      ClassModelSet::create(*method, names, std::move(mixtures), logPriors, std::move(rest));
+  if (!set) fail(path, set.error().message);
+  model.classifier = std::move(set.value());
   if (auto it = v.find("trained_on"); it != v.end()) {
     if (!it->is_object()) fail(path + ".trained_on", "expected an object");
     model.trainedOn = *it;

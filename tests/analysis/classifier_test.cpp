@@ -29,7 +29,7 @@ TEST(FitGaussian, UsesTheUnbiasedCovariance) {
   Eigen::MatrixXd x(4, 2);
   x << 1, 2, 3, 1, 0, 0, 4, 5;
   const auto g = fitGaussian(x, 0.0);
-  ASSERT_TRUE(g.has_value());
+  ASSERT_TRUE(g.ok());
   const Eigen::RowVectorXd mean = x.colwise().mean();
   const Eigen::MatrixXd c = x.rowwise() - mean;
   const Eigen::MatrixXd unbiased = c.transpose() * c / 3.0;
@@ -40,10 +40,10 @@ TEST(FitGaussian, UsesTheUnbiasedCovariance) {
 TEST(FitGaussian, SingularCovarianceWithoutFloorIsAnError) {
   Eigen::MatrixXd x(4, 2);
   x << 1, 2, 2, 4, 3, 6, 4, 8;  // second feature = 2 x first
-  std::string error;
-  EXPECT_FALSE(fitGaussian(x, 0.0, Regularization::Floor, &error).has_value());
-  EXPECT_NE(error.find("singular"), std::string::npos);
-  EXPECT_TRUE(fitGaussian(x, 1e-3, Regularization::Floor, &error).has_value());
+  const auto singular = fitGaussian(x, 0.0, Regularization::Floor);
+  ASSERT_FALSE(singular.ok());
+  EXPECT_NE(singular.error().message.find("singular"), std::string::npos);
+  EXPECT_TRUE(fitGaussian(x, 1e-3, Regularization::Floor).ok());
 }
 
 TEST(GaussianClassifier, OneVsRestRatioIsTheLogLikelihoodDifference) {
@@ -57,7 +57,7 @@ TEST(GaussianClassifier, OneVsRestRatioIsTheLogLikelihoodDifference) {
   ASSERT_TRUE(fit.model.hasRestModels());
   // The rest model of class 0 is the unbiased Gaussian of classes 1 and 2 together.
   const auto rest = fitGaussian(stackRows({data[1], data[2]}), 0.0);
-  ASSERT_TRUE(rest.has_value());
+  ASSERT_TRUE(rest.ok());
   EXPECT_LT((fit.model.restModel(0).covariance(0) - rest->covariance(0)).cwiseAbs().maxCoeff(),
             1e-12);
   Eigen::VectorXd l;
@@ -112,9 +112,9 @@ TEST(GmmClassifier, EmpiricalPriorsShiftTheDecision) {
 TEST(ClassModelSet, TiesGoToTheLowestClass) {
   auto g = GaussianMixture::create(Eigen::VectorXd::Ones(1), Eigen::MatrixXd::Zero(1, 1),
                                    {Eigen::MatrixXd::Ones(1, 1)}, CovarianceForm::NodalFull);
-  ASSERT_TRUE(g.has_value());
-  auto set = ClassModelSet::create(ClassifierMethod::Gmm, {"x", "y"}, {*g, *g});
-  ASSERT_TRUE(set.has_value());
+  ASSERT_TRUE(g.ok());
+  auto set = ClassModelSet::create(ClassifierMethod::Gmm, {"x", "y"}, {g.value(), g.value()});
+  ASSERT_TRUE(set.ok());
   EXPECT_EQ(set->predict(Eigen::MatrixXd::Zero(3, 1)), (std::vector<int>{0, 0, 0}));
 }
 
@@ -124,14 +124,16 @@ TEST(ClassModelSet, CreateRejectsMismatches) {
   auto g2 = GaussianMixture::create(Eigen::VectorXd::Ones(1), Eigen::MatrixXd::Zero(1, 2),
                                     {Eigen::MatrixXd::Identity(2, 2)}, CovarianceForm::NodalFull);
   ASSERT_TRUE(g1 && g2);
-  std::string error;
-  EXPECT_FALSE(
-      ClassModelSet::create(ClassifierMethod::Gmm, {"x", "y"}, {*g1, *g2}, {}, {}, &error));
-  EXPECT_NE(error.find("dimension"), std::string::npos);
-  EXPECT_FALSE(ClassModelSet::create(ClassifierMethod::Gmm, {"x"}, {*g1, *g1}, {}, {}, &error));
-  EXPECT_FALSE(ClassModelSet::create(ClassifierMethod::Gmm, {"x", "y"}, {*g1, *g1},
-                                     Eigen::Vector2d(std::log(0.5), std::log(0.6)), {}, &error));
-  EXPECT_NE(error.find("priors"), std::string::npos);
+  const auto dims =
+      ClassModelSet::create(ClassifierMethod::Gmm, {"x", "y"}, {g1.value(), g2.value()});
+  ASSERT_FALSE(dims.ok());
+  EXPECT_NE(dims.error().message.find("dimension"), std::string::npos);
+  EXPECT_FALSE(ClassModelSet::create(ClassifierMethod::Gmm, {"x"}, {g1.value(), g1.value()}).ok());
+  const auto priors =
+      ClassModelSet::create(ClassifierMethod::Gmm, {"x", "y"}, {g1.value(), g1.value()},
+                            Eigen::Vector2d(std::log(0.5), std::log(0.6)));
+  ASSERT_FALSE(priors.ok());
+  EXPECT_NE(priors.error().message.find("priors"), std::string::npos);
 }
 
 TEST(GmmClassifier, ResultsDoNotDependOnTheThreadCount) {
@@ -196,7 +198,7 @@ TEST(GaussianClassifier, HonoursAddRegularization) {
     return Eigen::MatrixXd(c.transpose() * c / static_cast<double>(x.rows() - 1));
   };
   const auto add = fitGaussian(data[0], floor, Regularization::Add);
-  ASSERT_TRUE(add.has_value());
+  ASSERT_TRUE(add.ok());
   const Eigen::MatrixXd want = unbiased(data[0]) + floor * Eigen::MatrixXd::Identity(2, 2);
   EXPECT_LT((add->covariance(0) - want).cwiseAbs().maxCoeff(), 1e-14);
   ClassifierOptions o;

@@ -37,39 +37,44 @@ TEST(GmmNames, EveryNameRoundTrips) {
 }
 
 TEST(GaussianMixtureCreate, RejectsWeightsNotSummingToOne) {
-  std::string error;
   auto m = GaussianMixture::create(Eigen::Vector2d(0.5, 0.6), Eigen::MatrixXd::Zero(2, 1),
                                    {Eigen::MatrixXd::Ones(1, 1), Eigen::MatrixXd::Ones(1, 1)},
-                                   CovarianceForm::NodalDiag, &error);
-  EXPECT_FALSE(m.has_value());
-  EXPECT_NE(error.find("sum"), std::string::npos);
+                                   CovarianceForm::NodalDiag);
+  ASSERT_FALSE(m.ok());
+  EXPECT_NE(m.error().message.find("sum"), std::string::npos);
 }
 
 TEST(GaussianMixtureCreate, RejectsAsymmetricAndIndefiniteCovariances) {
-  std::string error;
   Eigen::MatrixXd asym(2, 2);
   asym << 1, 0.5, 0.4, 1;
-  EXPECT_FALSE(GaussianMixture::create(Eigen::VectorXd::Ones(1), Eigen::MatrixXd::Zero(1, 2),
-                                       {asym}, CovarianceForm::NodalFull, &error));
-  EXPECT_NE(error.find("symmetric"), std::string::npos);
+  EXPECT_NE(GaussianMixture::create(Eigen::VectorXd::Ones(1), Eigen::MatrixXd::Zero(1, 2), {asym},
+                                    CovarianceForm::NodalFull)
+                .errorText()
+                .find("symmetric"),
+            std::string::npos);
   Eigen::MatrixXd indef(2, 2);
   indef << 1, 2, 2, 1;
-  EXPECT_FALSE(GaussianMixture::create(Eigen::VectorXd::Ones(1), Eigen::MatrixXd::Zero(1, 2),
-                                       {indef}, CovarianceForm::NodalFull, &error));
-  EXPECT_NE(error.find("positive definite"), std::string::npos);
+  EXPECT_NE(GaussianMixture::create(Eigen::VectorXd::Ones(1), Eigen::MatrixXd::Zero(1, 2), {indef},
+                                    CovarianceForm::NodalFull)
+                .errorText()
+                .find("positive definite"),
+            std::string::npos);
 }
 
 TEST(GaussianMixtureCreate, RejectsWrongShapesAndOffDiagonalsInDiagonalForms) {
-  std::string error;
   Eigen::MatrixXd full(2, 2);
   full << 1, 0.1, 0.1, 1;
-  EXPECT_FALSE(GaussianMixture::create(Eigen::VectorXd::Ones(1), Eigen::MatrixXd::Zero(1, 2),
-                                       {full}, CovarianceForm::NodalDiag, &error));
-  EXPECT_FALSE(GaussianMixture::create(Eigen::VectorXd::Ones(1), Eigen::MatrixXd::Zero(1, 3),
-                                       {full}, CovarianceForm::NodalFull, &error));
-  EXPECT_NE(error.find("expected 3x3"), std::string::npos);
+  const auto offDiagonal = GaussianMixture::create(
+      Eigen::VectorXd::Ones(1), Eigen::MatrixXd::Zero(1, 2), {full}, CovarianceForm::NodalDiag);
+  ASSERT_FALSE(offDiagonal.ok());
+  EXPECT_NE(offDiagonal.error().message.find("off-diagonal"), std::string::npos);
+  const auto shape = GaussianMixture::create(Eigen::VectorXd::Ones(1), Eigen::MatrixXd::Zero(1, 3),
+                                             {full}, CovarianceForm::NodalFull);
+  ASSERT_FALSE(shape.ok());
+  EXPECT_NE(shape.error().message.find("expected 3x3"), std::string::npos);
   EXPECT_FALSE(GaussianMixture::create(Eigen::Vector2d(0.5, 0.5), Eigen::MatrixXd::Zero(2, 2),
-                                       {full}, CovarianceForm::NodalFull, &error));
+                                       {full}, CovarianceForm::NodalFull)
+                   .ok());
 }
 
 TEST(GaussianMixture, BatchedDensitiesMatchSingleRowDensities) {
