@@ -31,7 +31,11 @@ grep -q '"runs":\[\]' again.json || fail "re-import stored runs: $(cat again.jso
 "$T" autolabel --db c.db --all --set truth > autolabel.out || fail "autolabel exited $?"
 [ "$(grep -c "labelled run" autolabel.out)" -eq 4 ] || fail "autolabel: $(cat autolabel.out)"
 "$T" labels export --db c.db --set truth labels.csv || fail "labels export exited $?"
-head -1 labels.csv | grep -q '^run,group,first_step,last_step,class' || fail "label header"
+# Provenance lines (one per run), then the header.
+[ "$(grep -c '^# run [a-z_0-9]* steps [0-9]* checksum [0-9a-f]*$' labels.csv)" -eq 4 ] ||
+  fail "label provenance: $(head -5 labels.csv)"
+grep -v '^#' labels.csv | head -1 | grep -q '^run,group,first_step,last_step,class' ||
+  fail "label header"
 # Every run has segments for all eight groups, and each group's segments start at step 0.
 for run in proc run_0000 run_0001 run_0002; do
   groups=$(grep "^$run,[A-Z]*,0," labels.csv | cut -d, -f2 | sort -u | wc -l)
