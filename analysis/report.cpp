@@ -130,8 +130,85 @@ Table spreadTable(const SweepResult& sweep, bool sweptIsFloor) {
 
 }  // namespace
 
+std::optional<TableStyle> parseTableStyle(std::string_view name) {
+  if (name == "text") return TableStyle::Text;
+  if (name == "csv") return TableStyle::Csv;
+  if (name == "md" || name == "markdown") return TableStyle::Markdown;
+  if (name == "html") return TableStyle::Html;
+  return std::nullopt;
+}
+
+namespace {
+
+std::string htmlEscape(const std::string& s) {
+  std::string out;
+  for (const char c : s) {
+    switch (c) {
+      case '&':
+        out += "&amp;";
+        break;
+      case '<':
+        out += "&lt;";
+        break;
+      case '>':
+        out += "&gt;";
+        break;
+      case '"':
+        out += "&quot;";
+        break;
+      default:
+        out += c;
+    }
+  }
+  return out;
+}
+
+std::string markdownEscape(const std::string& s) {
+  std::string out;
+  for (const char c : s) {
+    if (c == '|' || c == '\\') out += '\\';
+    out += c;
+  }
+  return out;
+}
+
+}  // namespace
+
 std::string Table::render(TableStyle style) const {
   std::ostringstream out;
+  if (style == TableStyle::Markdown) {
+    if (!title.empty()) out << "### " << markdownEscape(title) << "\n\n";
+    auto line = [&out](const std::vector<std::string>& cells, std::size_t n) {
+      out << "|";
+      for (std::size_t i = 0; i < n; ++i)
+        out << " " << (i < cells.size() ? markdownEscape(cells[i]) : std::string()) << " |";
+      out << "\n";
+    };
+    line(header, header.size());
+    out << "|";
+    for (std::size_t i = 0; i < header.size(); ++i)
+      out << (i == 0 ? "---|" : "---:|");
+    out << "\n";
+    for (const auto& r : rows)
+      line(r, header.size());
+    out << "\n";
+    return out.str();
+  }
+  if (style == TableStyle::Html) {
+    if (!title.empty()) out << "<h3>" << htmlEscape(title) << "</h3>\n";
+    out << "<table>\n<tr>";
+    for (const std::string& h : header)
+      out << "<th>" << htmlEscape(h) << "</th>";
+    out << "</tr>\n";
+    for (const auto& r : rows) {
+      out << "<tr>";
+      for (std::size_t i = 0; i < header.size(); ++i)
+        out << "<td>" << (i < r.size() ? htmlEscape(r[i]) : std::string()) << "</td>";
+      out << "</tr>\n";
+    }
+    out << "</table>\n";
+    return out.str();
+  }
   if (style == TableStyle::Csv) {
     if (!title.empty()) out << "# " << title << "\n";
     auto line = [&out](const std::vector<std::string>& cells) {
@@ -371,10 +448,18 @@ std::string sweepReport(const SweepResult& sweep, TableStyle style) {
   std::size_t ok = 0;
   for (const SweepCellResult& r : sweep.cells)
     ok += r.ok ? 1 : 0;
-  if (style == TableStyle::Text) {
-    out += "Sweep: " + std::to_string(sweep.cells.size()) + " cells (" + std::to_string(ok) +
-           " fitted), " + std::to_string(sweep.threads) + " threads, " +
-           fixed(sweep.wallSeconds, 2) + " s" + (sweep.cancelled ? ", CANCELLED" : "") + "\n\n";
+  const std::string headline = "Sweep: " + std::to_string(sweep.cells.size()) + " cells (" +
+                               std::to_string(ok) + " fitted), " + std::to_string(sweep.threads) +
+                               " threads, " + fixed(sweep.wallSeconds, 2) + " s" +
+                               (sweep.cancelled ? ", CANCELLED" : "");
+  if (style == TableStyle::Text) out += headline + "\n\n";
+  if (style == TableStyle::Markdown) out += "# " + headline + "\n\n";
+  if (style == TableStyle::Html) {
+    out +=
+        "<!DOCTYPE html>\n<html><head><meta charset=\"utf-8\"><title>Sweep report</title>"
+        "<style>table{border-collapse:collapse;margin-bottom:1em}td,th{border:1px solid "
+        "#bbb;padding:2px 6px;text-align:right}th{background:#eee}</style></head><body>\n<h1>" +
+        htmlEscape(headline) + "</h1>\n";
   }
   out += bestCellsTable(sweep).render(style) + sep;
   out += rateAgainstFloorTable(sweep).render(style) + sep;
@@ -397,6 +482,7 @@ std::string sweepReport(const SweepResult& sweep, TableStyle style) {
         confusionTable(r->confusion, true, name + ": confusion (row percent)").render(style) + sep;
   }
   out += sweepCellsTable(sweep).render(style);
+  if (style == TableStyle::Html) out += "</body></html>\n";
   return out;
 }
 

@@ -8,6 +8,7 @@
 
 #include <optional>
 #include <string>
+#include <string_view>
 #include <utility>
 #include <vector>
 
@@ -16,10 +17,12 @@
 
 namespace tactile::analysis {
 
-enum class TableStyle { Text, Csv };
+enum class TableStyle { Text, Csv, Markdown, Html };
+// "text", "csv", "md", "html".
+std::optional<TableStyle> parseTableStyle(std::string_view name);
 
-// A small table: header and rows of cells, rendered as aligned text (numbers right-aligned) or
-// as CSV.
+// A small table: header and rows of cells, rendered as aligned text (numbers right-aligned), CSV,
+// a Markdown pipe table or an HTML table (cells escaped).
 struct Table {
   std::string title;  // printed above a text table; CSV: a "# title" line
   std::vector<std::string> header;

@@ -144,6 +144,32 @@ struct LabelSetCatalogEntry {
   std::vector<std::string> runs;
 };
 
+// ---- models and sweeps (storage/models.cpp) ----------------------------------------------------
+
+// A stored model bundle without its parameters.
+struct ModelInfo {
+  std::int64_t id = 0;
+  std::string name;
+  std::string createdAt;      // UTC, ISO 8601
+  std::string trainedOnJson;  // provenance: label set, runs, settings, program version
+  std::string metricsJson;
+};
+
+// A stored sweep without its cells.
+struct SweepInfo {
+  std::int64_t id = 0;
+  std::string name;
+  std::string createdAt;
+  std::string configurationJson;  // grid, runs, label set, state ("running", "finished", ...)
+  std::int64_t cellCount = 0;
+};
+
+struct SweepCellRecord {
+  std::int64_t id = 0;
+  std::string configurationJson;
+  std::string metricsJson;
+};
+
 struct IntegrityReport {
   bool ok = false;
   int schemaVersion = 0;
@@ -242,6 +268,16 @@ class RunDatabase {
   // covers, as if newly added).
   Status changeSegment(std::int64_t segmentId, const LabelSegment& segment);
   Status removeSegment(std::int64_t segmentId);
+  // One segment of a set; the segments of one run and group overlapping [firstStep, lastStep]
+  // (by first step); and a replacement of those with `with` in one transaction (the segments given
+  // must not overlap each other). The undo of label edits is built on these.
+  Result<LabelSegment> segment(std::int64_t setId, std::int64_t segmentId);
+  Result<std::vector<LabelSegment>> segmentsInRange(std::int64_t setId, std::int64_t runId,
+                                                    SensorGroup group, std::int64_t firstStep,
+                                                    std::int64_t lastStep);
+  Status replaceSegmentsInRange(std::int64_t setId, std::int64_t runId, SensorGroup group,
+                                std::int64_t firstStep, std::int64_t lastStep,
+                                const std::vector<LabelSegment>& with);
   // Segments of a set (of one run when runId != 0), ordered by run, group, first step.
   Result<std::vector<LabelSegment>> segments(std::int64_t setId, std::int64_t runId = 0);
 
@@ -269,6 +305,26 @@ class RunDatabase {
                                  const std::vector<std::pair<std::string, std::string>>& cells);
 
   // PRAGMA integrity_check and foreign_key_check, schema version and counts.
+  // Models by name (sorted), one model's JSON with its record, deletes (all named or none, in one
+  // transaction; an unknown name is an error naming it).
+  Result<std::vector<ModelInfo>> listModels();
+  Result<ModelInfo> modelInfo(std::string_view name);
+  Status deleteModels(const std::vector<std::string>& names);
+  // Stores a new model; a name already in use is an error (saveModel replaces instead).
+  Result<std::int64_t> addModel(const std::string& name, const std::string& json,
+                                const std::string& trainedOnJson, const std::string& metricsJson);
+
+  // A sweep stored cell by cell as it runs: create it, add each cell in its own transaction (a
+  // stopped sweep keeps the cells it finished), then record its final configuration and state.
+  Result<std::int64_t> createSweep(const std::string& name, const std::string& configurationJson);
+  Result<std::int64_t> addSweepCell(std::int64_t sweepId, const std::string& configurationJson,
+                                    const std::string& metricsJson);
+  Status updateSweep(std::int64_t sweepId, const std::string& configurationJson);
+  Result<std::vector<SweepInfo>> listSweeps();
+  Result<SweepInfo> sweepInfo(std::int64_t sweepId);
+  Result<std::vector<SweepCellRecord>> sweepCells(std::int64_t sweepId);
+  Status deleteSweeps(const std::vector<std::int64_t>& sweepIds);
+
   IntegrityReport check();
 
   struct Impl;

@@ -1,0 +1,97 @@
+#include "analysis/classify_run.h"
+
+#include <limits>
+
+#include "analysis/features.h"
+
+namespace tactile::analysis {
+
+namespace {
+constexpr std::array<std::pair<TemporalRule, std::string_view>, 4> kRuleNames{{
+    {TemporalRule::None, "none"},
+    {TemporalRule::Count, "count"},
+    {TemporalRule::Sum, "sum"},
+    {TemporalRule::Hmm, "hmm"},
+}};
+}  // namespace
+
+std::optional<TemporalRule> parseTemporalRule(std::string_view name) {
+  for (const auto& [rule, text] : kRuleNames)
+    if (text == name) return rule;
+  return std::nullopt;
+}
+
+std::string_view temporalRuleName(TemporalRule rule) {
+  for (const auto& [value, text] : kRuleNames)
+    if (value == rule) return text;
+  return "?";
+}
+
+std::string GroupClassification::className(std::size_t step) const {
+  if (noContactRule[step]) return "NoContact";
+  if (!predicted[step]) return "";
+  return model->classifier.classNames()[static_cast<std::size_t>(*predicted[step])];
+}
+
+std::string GroupClassification::decidedName(std::size_t step) const {
+  if (noContactRule[step]) return "NoContact";
+  if (decided.empty() || !decided[step]) return "";
+  return model->classifier.classNames()[static_cast<std::size_t>(*decided[step])];
+}
+
+RunClassification classifyRun(const RunData& run, const ModelBundle& bundle,
+                              const ClassifyOptions& options) {
+  RunClassification out;
+  const std::size_t steps = run.stepCount();
+  out.steps = steps;
+  for (const GroupInfo& info : kSensorGroups) {
+    GroupClassification& go = out.groups[static_cast<std::size_t>(groupIndex(info.group))];
+    go.model = bundle.find(info.group);
+    const FeatureKind kind = go.model ? go.model->features : FeatureKind::Normal;
+    GroupSteps gs = extractGroupSteps(run, info.group, kind);
+    go.noContactRule = gs.isZero;
+    go.predicted.assign(steps, std::nullopt);
+    if (go.model == nullptr) continue;
+    std::vector<Eigen::Index> contactRows;
+    for (std::size_t t = 0; t < steps; ++t) {
+      if (!gs.isZero[t]) contactRows.push_back(static_cast<Eigen::Index>(t));
+    }
+    const int classes = go.model->classifier.classCount();
+    go.logLikelihoods = Eigen::MatrixXd::Constant(static_cast<Eigen::Index>(steps), classes,
+                                                  -std::numeric_limits<double>::infinity());
+    if (!contactRows.empty()) {
+      Eigen::MatrixXd x(static_cast<Eigen::Index>(contactRows.size()), gs.features.cols());
+      for (std::size_t i = 0; i < contactRows.size(); ++i)
+        x.row(static_cast<Eigen::Index>(i)) = gs.features.row(contactRows[i]);
+      Eigen::MatrixXd ll;
+      go.model->classifier.logLikelihoods(x, ll);
+      const std::vector<int> pred = go.model->classifier.predictFromLogLikelihoods(ll);
+      for (std::size_t i = 0; i < contactRows.size(); ++i) {
+        go.logLikelihoods.row(contactRows[i]) = ll.row(static_cast<Eigen::Index>(i));
+        go.predicted[static_cast<std::size_t>(contactRows[i])] = pred[i];
+      }
+    }
+    if (options.temporal != TemporalRule::None) {
+      StepLikelihoods sl{go.logLikelihoods, {}, go.model->classifier.logPriors()};
+      sl.observed.resize(steps);
+      for (std::size_t t = 0; t < steps; ++t)
+        sl.observed[t] = gs.isZero[t] ? 0 : 1;
+      switch (options.temporal) {
+        case TemporalRule::Count:
+          go.decided = consecutiveCountDecisions(sl, options.count);
+          break;
+        case TemporalRule::Sum:
+          go.decided = summedLogProbabilityDecisions(sl, options.threshold, options.window);
+          break;
+        case TemporalRule::Hmm:
+          go.decided = hmmForwardFilter(sl, options.stay).decisions;
+          break;
+        case TemporalRule::None:
+          break;
+      }
+    }
+  }
+  return out;
+}
+
+}  // namespace tactile::analysis

@@ -1,0 +1,58 @@
+// Classifying a whole run with a model bundle: per group and step the predicted class, the
+// per-class log-likelihoods and, optionally, a temporal decision (docs/analysis.md). Shared by
+// `tactile classify` (run files and stored runs) and the workbench's prediction strip.
+#pragma once
+
+#include <Eigen/Core>
+
+#include <array>
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "analysis/model_file.h"
+#include "analysis/temporal.h"
+#include "run/run.h"
+#include "run/sensor_layout.h"
+
+namespace tactile::analysis {
+
+enum class TemporalRule { None, Count, Sum, Hmm };
+// "none", "count", "sum", "hmm".
+std::optional<TemporalRule> parseTemporalRule(std::string_view name);
+std::string_view temporalRuleName(TemporalRule rule);
+
+struct ClassifyOptions {
+  TemporalRule temporal = TemporalRule::None;
+  int count = 3;           // Count: consecutive steps required
+  double threshold = 5.0;  // Sum: log-probability margin, nats
+  int window = 0;          // Sum: sliding window in steps (0 = the whole contact)
+  double stay = 0.9;       // Hmm: self-transition probability
+};
+
+// One group's classification of every step of a run.
+struct GroupClassification {
+  const GroupModel* model = nullptr;          // null: the bundle has no model for the group
+  std::vector<std::uint8_t> noContactRule;    // 1 where every value is zero (NoContact by rule)
+  std::vector<std::optional<int>> predicted;  // class index into model->classes; contact steps
+  Eigen::MatrixXd logLikelihoods;             // steps x classes; -inf on rule steps
+  Decisions decided;                          // temporal decision (empty when None)
+
+  // The class name at a step: "NoContact" by rule, the predicted (or decided) class, or "" where
+  // no model could say.
+  std::string className(std::size_t step) const;
+  std::string decidedName(std::size_t step) const;
+};
+
+struct RunClassification {
+  std::size_t steps = 0;
+  std::array<GroupClassification, kGroupCount> groups;  // in sensor-group order
+};
+
+// Evaluates the bundle's model of every group on the run's contact steps only (no-contact groups
+// skip the model). The result points into `bundle`, which must outlive it.
+RunClassification classifyRun(const RunData& run, const ModelBundle& bundle,
+                              const ClassifyOptions& options = {});
+
+}  // namespace tactile::analysis

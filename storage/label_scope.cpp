@@ -1,0 +1,98 @@
+// Label segments of one (set, run, group) within a step range: read one segment, read a range,
+// replace a range. The workspace builds undo and redo of label edits on these
+// (docs/workflow.md#label-edits-and-undo).
+#include <string>
+#include <vector>
+
+#include "storage/database_impl.h"
+
+namespace tactile::storage {
+
+namespace {
+
+LabelSegment segmentFromRow(db::Statement& s) {
+  LabelSegment segment;
+  segment.id = s.columnInt(0);
+  segment.run = s.columnText(1);
+  segment.runId = s.columnInt(2);
+  const auto group = parseSensorGroup(s.columnTextView(3));
+  const auto cls = parseContactClass(s.columnTextView(6));
+  if (!group || !cls) throw db::DbError("malformed label segment " + std::to_string(segment.id));
+  segment.group = *group;
+  segment.firstStep = s.columnInt(4);
+  segment.lastStep = s.columnInt(5);
+  segment.cls = *cls;
+  segment.annotator = s.columnText(7);
+  return segment;
+}
+
+}  // namespace
+
+Result<LabelSegment> RunDatabase::segment(std::int64_t setId, std::int64_t segmentId) {
+  return guarded<LabelSegment>([&] {
+    db::Statement& s = impl_->statement(
+        "SELECT label_segments.id, runs.name, run_id, grp, first_step, last_step, class, "
+        "annotator FROM label_segments JOIN runs ON runs.id = run_id "
+        "WHERE label_segments.id = ? AND set_id = ?");
+    s.bind(1, segmentId).bind(2, setId);
+    if (!s.step()) {
+      throw db::DbError("no label segment with id " + std::to_string(segmentId) + " in label set " +
+                        std::to_string(setId));
+    }
+    LabelSegment out = segmentFromRow(s);
+    s.reset();
+    return out;
+  });
+}
+
+Result<std::vector<LabelSegment>> RunDatabase::segmentsInRange(std::int64_t setId,
+                                                               std::int64_t runId,
+                                                               SensorGroup group,
+                                                               std::int64_t firstStep,
+                                                               std::int64_t lastStep) {
+  return guarded<std::vector<LabelSegment>>([&] {
+    db::Statement& s = impl_->statement(
+        "SELECT label_segments.id, runs.name, run_id, grp, first_step, last_step, class, "
+        "annotator FROM label_segments JOIN runs ON runs.id = run_id "
+        "WHERE set_id = ? AND run_id = ? AND grp = ? AND first_step <= ? AND last_step >= ? "
+        "ORDER BY first_step");
+    s.bind(1, setId)
+        .bind(2, runId)
+        .bind(3, groupInfo(group).shortName)
+        .bind(4, lastStep)
+        .bind(5, firstStep);
+    std::vector<LabelSegment> out;
+    while (s.step())
+      out.push_back(segmentFromRow(s));
+    s.reset();
+    return out;
+  });
+}
+
+Status RunDatabase::replaceSegmentsInRange(std::int64_t setId, std::int64_t runId,
+                                           SensorGroup group, std::int64_t firstStep,
+                                           std::int64_t lastStep,
+                                           const std::vector<LabelSegment>& with) {
+  return guardedStatus([&] {
+    db::Transaction transaction(impl_->connection);
+    const std::string_view groupName = groupInfo(group).shortName;
+    impl_
+        ->statement(
+            "DELETE FROM label_segments WHERE set_id = ? AND run_id = ? AND grp = ? AND "
+            "first_step <= ? AND last_step >= ?")
+        .bind(1, setId)
+        .bind(2, runId)
+        .bind(3, groupName)
+        .bind(4, lastStep)
+        .bind(5, firstStep)
+        .run();
+    for (LabelSegment segment : with) {
+      segment.runId = runId;
+      segment.group = group;
+      impl_->insertSegmentNewestWins(setId, segment, 0);
+    }
+    transaction.commit();
+  });
+}
+
+}  // namespace tactile::storage

@@ -1,0 +1,200 @@
+// Models and sweeps: listing, storing cell by cell, deleting (docs/storage.md#models-and-sweeps).
+#include <string>
+#include <vector>
+
+#include "storage/database_impl.h"
+
+namespace tactile::storage {
+
+namespace {
+
+ModelInfo modelFromRow(db::Statement& s) {
+  ModelInfo m;
+  m.id = s.columnInt(0);
+  m.name = s.columnText(1);
+  m.createdAt = s.columnText(2);
+  m.trainedOnJson = s.columnText(3);
+  m.metricsJson = s.columnText(4);
+  return m;
+}
+
+SweepInfo sweepFromRow(db::Statement& s) {
+  SweepInfo w;
+  w.id = s.columnInt(0);
+  w.name = s.columnText(1);
+  w.createdAt = s.columnText(2);
+  w.configurationJson = s.columnText(3);
+  w.cellCount = s.columnInt(4);
+  return w;
+}
+
+constexpr const char* kSweepColumns =
+    "SELECT id, name, created_at, configuration, "
+    "(SELECT count(*) FROM sweep_cells c WHERE c.sweep_id = sweeps.id) FROM sweeps";
+
+}  // namespace
+
+Result<std::vector<ModelInfo>> RunDatabase::listModels() {
+  return guarded<std::vector<ModelInfo>>([&] {
+    std::vector<ModelInfo> out;
+    db::Statement& s = impl_->statement(
+        "SELECT id, name, created_at, trained_on, metrics FROM models ORDER BY name");
+    while (s.step())
+      out.push_back(modelFromRow(s));
+    s.reset();
+    return out;
+  });
+}
+
+Result<ModelInfo> RunDatabase::modelInfo(std::string_view name) {
+  return guarded<ModelInfo>([&] {
+    db::Statement& s = impl_->statement(
+        "SELECT id, name, created_at, trained_on, metrics FROM models WHERE name = ?");
+    s.bind(1, name);
+    if (!s.step()) throw db::DbError("no model named '" + std::string(name) + "'");
+    ModelInfo m = modelFromRow(s);
+    s.reset();
+    return m;
+  });
+}
+
+Status RunDatabase::deleteModels(const std::vector<std::string>& names) {
+  return guardedStatus([&] {
+    db::Transaction transaction(impl_->connection);
+    db::Statement& s = impl_->statement("DELETE FROM models WHERE name = ?");
+    for (const std::string& name : names) {
+      s.bind(1, name).run();
+      if (impl_->connection.changes() == 0) {
+        throw db::DbError("no model named '" + name + "'; nothing deleted");
+      }
+    }
+    transaction.commit();
+  });
+}
+
+Result<std::int64_t> RunDatabase::addModel(const std::string& name, const std::string& json,
+                                           const std::string& trainedOnJson,
+                                           const std::string& metricsJson) {
+  return guarded<std::int64_t>([&] {
+    db::Transaction transaction(impl_->connection);
+    db::Statement& exists = impl_->statement("SELECT 1 FROM models WHERE name = ?");
+    exists.bind(1, name);
+    const bool taken = exists.step();
+    exists.reset();
+    if (taken) {
+      throw db::DbError("a model named '" + name +
+                        "' is already stored; choose another name or delete it first");
+    }
+    impl_
+        ->statement(
+            "INSERT INTO models(name, json, trained_on, metrics, created_at) "
+            "VALUES(?, ?, ?, ?, ?)")
+        .bind(1, name)
+        .bind(2, json)
+        .bind(3, trainedOnJson)
+        .bind(4, metricsJson)
+        .bind(5, utcNow())
+        .run();
+    const std::int64_t id = impl_->connection.lastInsertRowId();
+    transaction.commit();
+    return id;
+  });
+}
+
+Result<std::int64_t> RunDatabase::createSweep(const std::string& name,
+                                              const std::string& configurationJson) {
+  return guarded<std::int64_t>([&] {
+    db::Transaction transaction(impl_->connection);
+    impl_->statement("INSERT INTO sweeps(name, configuration, created_at) VALUES(?, ?, ?)")
+        .bind(1, name)
+        .bind(2, configurationJson)
+        .bind(3, utcNow())
+        .run();
+    const std::int64_t id = impl_->connection.lastInsertRowId();
+    transaction.commit();
+    return id;
+  });
+}
+
+Result<std::int64_t> RunDatabase::addSweepCell(std::int64_t sweepId,
+                                               const std::string& configurationJson,
+                                               const std::string& metricsJson) {
+  return guarded<std::int64_t>([&] {
+    db::Transaction transaction(impl_->connection);
+    impl_->statement("INSERT INTO sweep_cells(sweep_id, configuration, metrics) VALUES(?, ?, ?)")
+        .bind(1, sweepId)
+        .bind(2, configurationJson)
+        .bind(3, metricsJson)
+        .run();
+    const std::int64_t id = impl_->connection.lastInsertRowId();
+    transaction.commit();
+    return id;
+  });
+}
+
+Status RunDatabase::updateSweep(std::int64_t sweepId, const std::string& configurationJson) {
+  return guardedStatus([&] {
+    db::Transaction transaction(impl_->connection);
+    impl_->statement("UPDATE sweeps SET configuration = ? WHERE id = ?")
+        .bind(1, configurationJson)
+        .bind(2, sweepId)
+        .run();
+    if (impl_->connection.changes() == 0) {
+      throw db::DbError("no sweep with id " + std::to_string(sweepId));
+    }
+    transaction.commit();
+  });
+}
+
+Result<std::vector<SweepInfo>> RunDatabase::listSweeps() {
+  return guarded<std::vector<SweepInfo>>([&] {
+    static const std::string sql = std::string(kSweepColumns) + " ORDER BY id";
+    std::vector<SweepInfo> out;
+    db::Statement& s = impl_->statement(sql.c_str());
+    while (s.step())
+      out.push_back(sweepFromRow(s));
+    s.reset();
+    return out;
+  });
+}
+
+Result<SweepInfo> RunDatabase::sweepInfo(std::int64_t sweepId) {
+  return guarded<SweepInfo>([&] {
+    static const std::string sql = std::string(kSweepColumns) + " WHERE id = ?";
+    db::Statement& s = impl_->statement(sql.c_str());
+    s.bind(1, sweepId);
+    if (!s.step()) throw db::DbError("no sweep with id " + std::to_string(sweepId));
+    SweepInfo w = sweepFromRow(s);
+    s.reset();
+    return w;
+  });
+}
+
+Result<std::vector<SweepCellRecord>> RunDatabase::sweepCells(std::int64_t sweepId) {
+  return guarded<std::vector<SweepCellRecord>>([&] {
+    std::vector<SweepCellRecord> out;
+    db::Statement& s = impl_->statement(
+        "SELECT id, configuration, metrics FROM sweep_cells WHERE sweep_id = ? ORDER BY id");
+    s.bind(1, sweepId);
+    while (s.step())
+      out.push_back({s.columnInt(0), s.columnText(1), s.columnText(2)});
+    s.reset();
+    return out;
+  });
+}
+
+Status RunDatabase::deleteSweeps(const std::vector<std::int64_t>& sweepIds) {
+  return guardedStatus([&] {
+    db::Transaction transaction(impl_->connection);
+    db::Statement& s = impl_->statement("DELETE FROM sweeps WHERE id = ?");
+    for (const std::int64_t id : sweepIds) {
+      s.bind(1, id).run();
+      if (impl_->connection.changes() == 0) {
+        throw db::DbError("no sweep with id " + std::to_string(id) + "; nothing deleted");
+      }
+    }
+    transaction.commit();
+  });
+}
+
+}  // namespace tactile::storage

@@ -1,0 +1,550 @@
+#include "workspace/workspace.h"
+
+#include <algorithm>
+#include <limits>
+#include <set>
+#include <utility>
+
+#include "analysis/metrics.h"
+
+#ifndef TACTILE_VERSION
+#define TACTILE_VERSION "unknown"
+#endif
+
+namespace tactile::workspace {
+
+using nlohmann::json;
+
+namespace {
+
+Error failure(std::string message) {
+  return Error(std::move(message));
+}
+
+json runsJson(const std::vector<storage::RunInfo>& infos) {
+  json out = json::array();
+  for (const storage::RunInfo& r : infos)
+    out.push_back({{"name", r.name}, {"steps", r.stepCount}, {"checksum", r.checksum}});
+  return out;
+}
+
+json settingsJson(const analysis::TrainSettings& s) {
+  const analysis::ClassifierOptions& c = s.classifier;
+  json out;
+  out["features"] = analysis::featureKindName(s.features);
+  out["method"] = analysis::classifierMethodName(c.method);
+  if (c.method == analysis::ClassifierMethod::Gmm) {
+    out["order"] = c.gmm.components;
+    out["covariance"] = analysis::covarianceFormName(c.gmm.form);
+    out["init"] = analysis::gmmInitName(c.gmm.init);
+    out["restarts"] = c.gmm.restarts;
+    out["max_iterations"] = c.gmm.maxIterations;
+    out["tolerance"] = c.gmm.tolerance;
+    out["tolerance_rule"] = analysis::convergenceRuleName(c.gmm.rule);
+  }
+  out["variance_floor"] = c.gmm.varianceFloor;
+  out["regularization"] = analysis::regularizationName(c.gmm.reg);
+  out["seed"] = c.gmm.seed;
+  out["priors"] = analysis::priorModeName(c.priors);
+  return out;
+}
+
+// Rows of `data` that came from run `runIndex` (or all the others).
+analysis::GroupDataSet rowsOfRun(const analysis::GroupDataSet& data, std::uint32_t runIndex,
+                                 bool keep) {
+  analysis::GroupDataSet out;
+  out.group = data.group;
+  out.kind = data.kind;
+  std::vector<Eigen::Index> rows;
+  for (std::size_t i = 0; i < data.size(); ++i) {
+    if ((data.runIndex[i] == runIndex) == keep) rows.push_back(static_cast<Eigen::Index>(i));
+  }
+  out.x.resize(static_cast<Eigen::Index>(rows.size()), data.x.cols());
+  for (std::size_t i = 0; i < rows.size(); ++i) {
+    const auto r = static_cast<std::size_t>(rows[i]);
+    out.x.row(static_cast<Eigen::Index>(i)) = data.x.row(rows[i]);
+    out.y.push_back(data.y[r]);
+    out.runIndex.push_back(data.runIndex[r]);
+    out.step.push_back(data.step[r]);
+  }
+  return out;
+}
+
+// Why a group's training data cannot give a model, or empty.
+std::string tooLittleData(const analysis::GroupDataSet& data, std::size_t minRows) {
+  if (data.size() < minRows) {
+    return std::to_string(data.size()) + " labelled contact rows for training (at least " +
+           std::to_string(minRows) + " needed)";
+  }
+  const analysis::ClassSelection classes = analysis::selectClasses(data);
+  if (classes.modelled.size() < 2) {
+    return "fewer than two classes with enough rows to model (" +
+           std::to_string(classes.modelled.size()) + ")";
+  }
+  return {};
+}
+
+std::vector<std::string> sorted(std::vector<std::string> v) {
+  std::sort(v.begin(), v.end());
+  v.erase(std::unique(v.begin(), v.end()), v.end());
+  return v;
+}
+
+}  // namespace
+
+std::optional<SplitMode> parseSplitMode(std::string_view name) {
+  if (name == "by-run") return SplitMode::ByRun;
+  if (name == "leave-one-run-out") return SplitMode::LeaveOneRunOut;
+  return std::nullopt;
+}
+
+std::string_view splitModeName(SplitMode mode) {
+  return mode == SplitMode::ByRun ? "by-run" : "leave-one-run-out";
+}
+
+std::string_view programVersion() {
+  return TACTILE_VERSION;
+}
+
+Result<std::unique_ptr<Workspace>> Workspace::open(const std::filesystem::path& path,
+                                                   const storage::OpenOptions& options) {
+  auto db = storage::RunDatabase::open(path, options);
+  if (!db) return db.error();
+  return std::make_unique<Workspace>(std::move(db.value()));
+}
+
+Workspace::Workspace(std::unique_ptr<storage::RunDatabase> database) : db_(std::move(database)) {}
+
+Result<RunData> Workspace::loadRun(std::string_view name) {
+  auto info = db_->findRun(name);
+  if (!info) return info.error();
+  return db_->loadRun(info->id);
+}
+
+Result<storage::RunWindow> Workspace::loadWindow(std::string_view name, std::int64_t firstStep,
+                                                 std::int64_t count) {
+  auto info = db_->findRun(name);
+  if (!info) return info.error();
+  return db_->loadWindow(info->id, firstStep, count);
+}
+
+// ---- label edits -------------------------------------------------------------------------------
+
+namespace {
+
+// The range an edit can touch: the edit's own range widened to every segment overlapping it (an
+// edit trims or splits only those; they do not overlap one another).
+std::pair<std::int64_t, std::int64_t> widened(const std::vector<storage::LabelSegment>& overlapping,
+                                              std::int64_t first, std::int64_t last) {
+  for (const storage::LabelSegment& s : overlapping) {
+    first = std::min(first, s.firstStep);
+    last = std::max(last, s.lastStep);
+  }
+  return {first, last};
+}
+
+}  // namespace
+
+Result<LabelEdit> Workspace::addSegment(std::int64_t setId, const storage::LabelSegment& segment) {
+  std::int64_t runId = segment.runId;
+  if (runId == 0) {
+    auto info = db_->findRun(segment.run);
+    if (!info) return info.error();
+    runId = info->id;
+  }
+  LabelEdit edit{setId, runId, segment.group, {}, {}, 0};
+  auto before =
+      db_->segmentsInRange(setId, runId, segment.group, segment.firstStep, segment.lastStep);
+  if (!before) return before.error();
+  edit.before = std::move(before.value());
+  storage::LabelSegment toAdd = segment;
+  toAdd.runId = runId;
+  auto id = db_->addSegment(setId, toAdd);
+  if (!id) return id.error();
+  edit.segmentId = id.value();
+  const auto [first, last] = widened(edit.before, segment.firstStep, segment.lastStep);
+  auto after = db_->segmentsInRange(setId, runId, segment.group, first, last);
+  if (!after) return after.error();
+  edit.after = std::move(after.value());
+  return edit;
+}
+
+Result<LabelEdit> Workspace::changeSegment(std::int64_t setId, std::int64_t segmentId,
+                                           const storage::LabelSegment& segment) {
+  auto old = db_->segment(setId, segmentId);
+  if (!old) return old.error();
+  if (segment.group != old->group || (segment.runId != 0 && segment.runId != old->runId)) {
+    return failure("a segment keeps its run and group when changed; add a new one instead");
+  }
+  const std::int64_t runId = old->runId;
+  const std::int64_t first = std::min(old->firstStep, segment.firstStep);
+  const std::int64_t last = std::max(old->lastStep, segment.lastStep);
+  LabelEdit edit{setId, runId, old->group, {}, {}, segmentId};
+  auto before = db_->segmentsInRange(setId, runId, old->group, first, last);
+  if (!before) return before.error();
+  edit.before = std::move(before.value());
+  storage::LabelSegment changed = segment;
+  changed.runId = runId;
+  if (Status s = db_->changeSegment(segmentId, changed); !s) return s.error();
+  const auto [wideFirst, wideLast] = widened(edit.before, first, last);
+  auto after = db_->segmentsInRange(setId, runId, old->group, wideFirst, wideLast);
+  if (!after) return after.error();
+  edit.after = std::move(after.value());
+  return edit;
+}
+
+Result<LabelEdit> Workspace::removeSegment(std::int64_t setId, std::int64_t segmentId) {
+  auto old = db_->segment(setId, segmentId);
+  if (!old) return old.error();
+  LabelEdit edit{setId, old->runId, old->group, {old.value()}, {}, 0};
+  if (Status s = db_->removeSegment(segmentId); !s) return s.error();
+  return edit;
+}
+
+namespace {
+
+std::pair<std::int64_t, std::int64_t> extent(const LabelEdit& edit) {
+  std::int64_t first = std::numeric_limits<std::int64_t>::max();
+  std::int64_t last = std::numeric_limits<std::int64_t>::min();
+  for (const auto* list : {&edit.before, &edit.after}) {
+    for (const storage::LabelSegment& s : *list) {
+      first = std::min(first, s.firstStep);
+      last = std::max(last, s.lastStep);
+    }
+  }
+  return {first, last};
+}
+
+}  // namespace
+
+Status Workspace::undo(const LabelEdit& edit) {
+  const auto [first, last] = extent(edit);
+  if (first > last) return Status::success();
+  return db_->replaceSegmentsInRange(edit.setId, edit.runId, edit.group, first, last, edit.before);
+}
+
+Status Workspace::redo(const LabelEdit& edit) {
+  const auto [first, last] = extent(edit);
+  if (first > last) return Status::success();
+  return db_->replaceSegmentsInRange(edit.setId, edit.runId, edit.group, first, last, edit.after);
+}
+
+// ---- learning ----------------------------------------------------------------------------------
+
+Result<Workspace::Labelled> Workspace::loadLabelled(std::int64_t setId,
+                                                    const std::vector<std::string>& names) {
+  Labelled out;
+  for (const std::string& name : names) {
+    auto info = db_->findRun(name);
+    if (!info) return info.error();
+    auto run = db_->loadRun(info->id);
+    if (!run) return run.error();
+    auto segments = db_->segments(setId, info->id);
+    if (!segments) return segments.error();
+    std::vector<LabelRecord> records;
+    records.reserve(segments->size());
+    for (const storage::LabelSegment& s : segments.value())
+      records.push_back({name, s.group, s.firstStep, s.lastStep, s.cls, s.annotator, 0});
+    out.runs.push_back(std::make_unique<RunData>(std::move(run.value())));
+    std::string error;
+    analysis::LabelledRun lr{out.runs.back().get(), {}};
+    lr.labels = analysis::labelsFromSegments(*lr.run, name, records, error);
+    if (!error.empty()) return failure("run '" + name + "': " + error);
+    out.labelled.push_back(std::move(lr));
+    out.infos.push_back(info.value());
+  }
+  return out;
+}
+
+Result<TrainOutcome> Workspace::train(const TrainRequest& request, const ProgressFn& progress) {
+  auto set = db_->findLabelSet(request.labelSet);
+  if (!set) return set.error();
+  TrainOutcome outcome;
+
+  // Runs.
+  std::vector<std::string> labelled;
+  {
+    auto catalog = db_->labelSetCatalog();
+    if (!catalog) return catalog.error();
+    for (const storage::LabelSetCatalogEntry& e : catalog.value())
+      if (e.set.id == set->id) labelled = e.runs;
+  }
+  std::vector<std::string> trainRuns = sorted(request.trainRuns);
+  std::vector<std::string> testRuns = sorted(request.testRuns);
+  for (const std::string& t : testRuns) {
+    if (std::find(trainRuns.begin(), trainRuns.end(), t) != trainRuns.end()) {
+      return failure("run '" + t + "' is given both for training and for testing");
+    }
+  }
+  const bool automaticTrain = trainRuns.empty();
+  if (automaticTrain) {
+    for (const std::string& r : sorted(labelled))
+      if (std::find(testRuns.begin(), testRuns.end(), r) == testRuns.end()) trainRuns.push_back(r);
+  }
+  if (request.split == SplitMode::LeaveOneRunOut) {
+    if (!testRuns.empty()) {
+      return failure("leave-one-run-out scores every run in turn; give no test runs");
+    }
+    if (trainRuns.size() < 2) {
+      return failure("leave-one-run-out needs at least two runs, label set '" + request.labelSet +
+                     "' labels " + std::to_string(trainRuns.size()));
+    }
+    outcome.evaluatedOn = "leave-one-run-out";
+  } else if (testRuns.empty() && automaticTrain && trainRuns.size() >= 2) {
+    // Every fourth run by name is held out, and at least one.
+    std::vector<std::string> keep;
+    for (std::size_t i = 0; i < trainRuns.size(); ++i)
+      (i % 4 == 3 ? testRuns : keep).push_back(trainRuns[i]);
+    if (testRuns.empty()) {
+      testRuns.push_back(keep.back());
+      keep.pop_back();
+    }
+    trainRuns = std::move(keep);
+    outcome.evaluatedOn = "test runs";
+  } else {
+    outcome.evaluatedOn = testRuns.empty() ? "training runs" : "test runs";
+  }
+  if (trainRuns.empty()) {
+    return failure("label set '" + request.labelSet + "' labels no run to train on");
+  }
+
+  auto train = loadLabelled(set->id, trainRuns);
+  if (!train) return train.error();
+  Labelled test;
+  if (!testRuns.empty()) {
+    auto loaded = loadLabelled(set->id, testRuns);
+    if (!loaded) return loaded.error();
+    test = std::move(loaded.value());
+  }
+  outcome.trainRuns = trainRuns;
+  outcome.testRuns = testRuns;
+
+  std::vector<SensorGroup> groups = request.groups;
+  if (groups.empty()) {
+    for (const GroupInfo& g : kSensorGroups)
+      groups.push_back(g.group);
+  }
+  json metrics = json::object();
+  std::size_t done = 0;
+  for (SensorGroup g : groups) {
+    if (progress && !progress(done, groups.size())) return failure("cancelled");
+    ++done;
+    GroupTrainReport report;
+    report.group = g;
+    const std::string gName(groupInfo(g).shortName);
+    const analysis::GroupDataSet data =
+        analysis::buildGroupDataSet(train->labelled, g, request.settings.features);
+    report.samplesTrain = data.size();
+    if (std::string why = tooLittleData(data, request.minRowsPerGroup); !why.empty()) {
+      report.skippedBecause = why;
+      outcome.groups.push_back(std::move(report));
+      continue;
+    }
+    analysis::GroupTrainResult tr = analysis::trainGroupModel(data, request.settings);
+    if (!tr.ok) {
+      report.skippedBecause = tr.reason;
+      outcome.groups.push_back(std::move(report));
+      continue;
+    }
+    for (ContactClass c : tr.classes.unmodelled) {
+      report.warnings.push_back("class " + std::string(contactClassName(c)) +
+                                " has too few samples to model");
+    }
+    for (const std::string& w : tr.fit.warnings)
+      report.warnings.push_back(w);
+    report.fitSeconds = tr.fit.fitSeconds;
+
+    analysis::ConfusionMatrix confusion;
+    if (request.split == SplitMode::LeaveOneRunOut) {
+      for (std::uint32_t r = 0; r < train->labelled.size(); ++r) {
+        const analysis::GroupDataSet fold = rowsOfRun(data, r, false);
+        const analysis::GroupDataSet held = rowsOfRun(data, r, true);
+        if (held.size() == 0 || !tooLittleData(fold, request.minRowsPerGroup).empty()) continue;
+        const analysis::GroupTrainResult foldModel =
+            analysis::trainGroupModel(fold, request.settings);
+        if (!foldModel.ok) continue;
+        confusion.merge(analysis::evaluateGroupModel(foldModel.model, held).confusion);
+      }
+      report.samplesTest = confusion.total();
+    } else {
+      const analysis::GroupDataSet evalData =
+          testRuns.empty()
+              ? data
+              : analysis::buildGroupDataSet(test.labelled, g, request.settings.features);
+      const analysis::GroupEvaluation ev = analysis::evaluateGroupModel(tr.model, evalData);
+      confusion = ev.confusion;
+      report.samplesTest = evalData.size();
+    }
+    const analysis::Metrics m = analysis::computeMetrics(confusion);
+    report.accuracy = m.accuracy;
+    report.balancedAccuracy = m.balancedAccuracy;
+    report.trained = true;
+
+    json groupMetrics;
+    groupMetrics["evaluated_on"] = outcome.evaluatedOn;
+    groupMetrics["samples_train"] = report.samplesTrain;
+    groupMetrics["samples_test"] = report.samplesTest;
+    groupMetrics["accuracy"] = report.accuracy;
+    groupMetrics["balanced_accuracy"] = report.balancedAccuracy;
+    groupMetrics["confusion"] = analysis::confusionToJson(confusion);
+    groupMetrics["fit_s"] = report.fitSeconds;
+    groupMetrics["warnings"] = report.warnings;
+    tr.model.metrics = groupMetrics;
+    metrics[gName] = groupMetrics;
+    outcome.bundle.models.push_back(std::move(tr.model));
+    outcome.groups.push_back(std::move(report));
+  }
+  if (outcome.bundle.models.empty()) {
+    std::string why = "no group could be trained:";
+    for (const GroupTrainReport& r : outcome.groups)
+      why += " " + std::string(groupInfo(r.group).shortName) + ": " + r.skippedBecause + ";";
+    why.pop_back();
+    return failure(why);
+  }
+
+  json provenance;
+  provenance["label_set"] = request.labelSet;
+  provenance["train_runs"] = runsJson(train->infos);
+  provenance["test_runs"] = runsJson(test.infos);
+  provenance["split"] = splitModeName(request.split);
+  provenance["evaluated_on"] = outcome.evaluatedOn;
+  provenance["settings"] = settingsJson(request.settings);
+  provenance["program_version"] = programVersion();
+  for (analysis::GroupModel& model : outcome.bundle.models)
+    model.trainedOn = provenance;
+  outcome.provenance = provenance;
+
+  std::string name = request.modelName;
+  if (name.empty()) {
+    auto models = db_->listModels();
+    if (!models) return models.error();
+    std::set<std::string> taken;
+    for (const storage::ModelInfo& m : models.value())
+      taken.insert(m.name);
+    for (int n = 1;; ++n) {
+      name = request.labelSet + "-" + std::to_string(n);
+      if (!taken.count(name)) break;
+    }
+  }
+  auto id = db_->addModel(name, analysis::bundleToJson(outcome.bundle).dump(), provenance.dump(),
+                          metrics.dump());
+  if (!id) return id.error();
+  outcome.modelName = name;
+  outcome.modelId = id.value();
+  return outcome;
+}
+
+Result<SweepOutcome> Workspace::sweep(
+    const SweepRequest& request,
+    const std::function<void(const analysis::SweepCellResult&)>& onCell,
+    const ProgressFn& progress) {
+  auto set = db_->findLabelSet(request.labelSet);
+  if (!set) return set.error();
+  if (request.trainRuns.empty() || request.testRuns.empty()) {
+    return failure("a sweep needs training runs and test runs");
+  }
+  auto train = loadLabelled(set->id, request.trainRuns);
+  if (!train) return train.error();
+  auto test = loadLabelled(set->id, request.testRuns);
+  if (!test) return test.error();
+
+  analysis::SweepResult empty;
+  empty.grid = request.grid;
+  json configuration = analysis::sweepToJson(empty);
+  configuration.erase("cells");
+  configuration["label_set"] = request.labelSet;
+  configuration["train_runs"] = runsJson(train->infos);
+  configuration["test_runs"] = runsJson(test->infos);
+  configuration["state"] = "running";
+  configuration["program_version"] = programVersion();
+  const std::string name = request.name.empty() ? request.labelSet + " sweep" : request.name;
+  auto sweepId = db_->createSweep(name, configuration.dump());
+  if (!sweepId) return sweepId.error();
+
+  Error storeError;
+  bool storeFailed = false;
+  analysis::SweepOptions options;
+  options.threads = request.threads;
+  options.onCell = [&](const analysis::SweepCellResult& cell) {
+    analysis::SweepResult one;
+    one.grid = request.grid;
+    one.cells.push_back(cell);
+    const json cellJson = analysis::sweepToJson(one)["cells"][0];
+    json settings = {{"group", cellJson["group"]}, {"method", cellJson["method"]},
+                     {"order", cellJson["order"]}, {"covariance", cellJson["covariance"]},
+                     {"floor", cellJson["floor"]}, {"features", cellJson["features"]},
+                     {"seed", cellJson["seed"]}};
+    auto stored = db_->addSweepCell(sweepId.value(), settings.dump(), cellJson.dump());
+    if (!stored && !storeFailed) {
+      storeFailed = true;
+      storeError = stored.error();
+    }
+    if (onCell) onCell(cell);
+  };
+  const ProgressFn guard = [&](std::size_t done, std::size_t total) {
+    if (storeFailed) return false;
+    return !progress || progress(done, total);
+  };
+  SweepOutcome outcome;
+  outcome.sweepId = sweepId.value();
+  outcome.result =
+      analysis::runSweep(train->labelled, test->labelled, request.grid, options, guard);
+
+  json final = analysis::sweepToJson(outcome.result);
+  final.erase("cells");
+  final["label_set"] = request.labelSet;
+  final["train_runs"] = configuration["train_runs"];
+  final["test_runs"] = configuration["test_runs"];
+  final["state"] = storeFailed ? "failed" : outcome.result.cancelled ? "cancelled" : "finished";
+  final["program_version"] = programVersion();
+  if (Status s = db_->updateSweep(sweepId.value(), final.dump()); !s) return s.error();
+  if (storeFailed) return storeError;
+  return outcome;
+}
+
+Result<analysis::SweepResult> Workspace::loadSweep(std::int64_t sweepId) {
+  auto info = db_->sweepInfo(sweepId);
+  if (!info) return info.error();
+  auto cells = db_->sweepCells(sweepId);
+  if (!cells) return cells.error();
+  json doc;
+  try {
+    doc = json::parse(info->configurationJson);
+    json list = json::array();
+    for (const storage::SweepCellRecord& c : cells.value())
+      list.push_back(json::parse(c.metricsJson));
+    doc["cells"] = std::move(list);
+  } catch (const json::exception& e) {
+    return failure("sweep " + std::to_string(sweepId) + ": stored JSON is malformed: " + e.what());
+  }
+  analysis::SweepResult result;
+  if (std::string error = analysis::sweepFromJson(doc, result); !error.empty()) {
+    return failure("sweep " + std::to_string(sweepId) + ": " + error);
+  }
+  return result;
+}
+
+Result<analysis::ModelBundle> Workspace::loadModel(std::string_view name) {
+  auto text = db_->loadModel(std::string(name));
+  if (!text) return text.error();
+  analysis::ModelReadResult read =
+      analysis::parseModelJson(text.value(), "model '" + std::string(name) + "'");
+  if (!read.ok()) return failure(read.error);
+  return std::move(read.bundle);
+}
+
+Result<Workspace::Classified> Workspace::classify(std::string_view modelName,
+                                                  std::string_view runName,
+                                                  const analysis::ClassifyOptions& options) {
+  auto bundle = loadModel(modelName);
+  if (!bundle) return bundle.error();
+  auto run = loadRun(runName);
+  if (!run) return run.error();
+  Classified out;
+  out.bundle = std::make_unique<analysis::ModelBundle>(std::move(bundle.value()));
+  out.run = std::move(run.value());
+  out.result = analysis::classifyRun(out.run, *out.bundle, options);
+  return out;
+}
+
+}  // namespace tactile::workspace

@@ -1,0 +1,173 @@
+// The workspace: one run database seen as the workbench and the CLI work with it. It lists runs,
+// label sets, models and sweeps; loads runs and windows; edits labels so that every edit can be
+// undone; trains, sweeps and classifies from stored runs and label sets, and keeps the models and
+// sweep cells it makes (docs/workflow.md). No Qt: the GUI and the `tactile` verbs call the same
+// functions, so they share one code path.
+//
+// One Workspace is one database connection: use it from one thread at a time.
+#pragma once
+
+#include <nlohmann/json.hpp>
+
+#include <cstdint>
+#include <filesystem>
+#include <functional>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "analysis/classify_run.h"
+#include "analysis/model_file.h"
+#include "analysis/sweep.h"
+#include "analysis/training.h"
+#include "base/error.h"
+#include "base/progress.h"
+#include "run/run.h"
+#include "storage/run_database.h"
+
+namespace tactile::workspace {
+
+// How runs are split into training and test runs. Whole runs are held out, never steps of one
+// run: neighbouring steps are nearly identical, so a step split would score on copies of the
+// training data.
+enum class SplitMode {
+  ByRun,           // the given test runs; without any, every fourth run (by name) is held out
+  LeaveOneRunOut,  // each run is scored by a model trained on all the others
+};
+// "by-run", "leave-one-run-out".
+std::optional<SplitMode> parseSplitMode(std::string_view name);
+std::string_view splitModeName(SplitMode mode);
+
+struct TrainRequest {
+  std::string labelSet;
+  std::vector<std::string> trainRuns;  // empty: every run the set labels, minus the test runs
+  std::vector<std::string> testRuns;
+  SplitMode split = SplitMode::ByRun;
+  std::vector<SensorGroup> groups;  // empty: all eight
+  analysis::TrainSettings settings;
+  std::string modelName;  // empty: "<label set>-<n>", the first free n
+  // A group with fewer labelled contact rows than this for training, or with fewer than two
+  // classes that can be modelled, is skipped with a warning; the other groups train.
+  std::size_t minRowsPerGroup = 20;
+};
+
+// One group's outcome.
+struct GroupTrainReport {
+  SensorGroup group = SensorGroup::Front;
+  bool trained = false;
+  std::string skippedBecause;  // when not trained
+  std::size_t samplesTrain = 0;
+  std::size_t samplesTest = 0;
+  double accuracy = 0.0;
+  double balancedAccuracy = 0.0;
+  double fitSeconds = 0.0;
+  std::vector<std::string> warnings;
+};
+
+struct TrainOutcome {
+  std::string modelName;
+  std::int64_t modelId = 0;
+  analysis::ModelBundle bundle;
+  std::vector<GroupTrainReport> groups;  // in the requested group order
+  std::vector<std::string> trainRuns;
+  std::vector<std::string> testRuns;  // empty for leave-one-run-out
+  std::string evaluatedOn;            // "test runs", "leave-one-run-out", "training runs"
+  nlohmann::json provenance;          // as stored with the model
+};
+
+struct SweepRequest {
+  std::string labelSet;
+  std::vector<std::string> trainRuns;
+  std::vector<std::string> testRuns;
+  analysis::SweepGrid grid;
+  std::string name;  // empty: "<label set> sweep"
+  int threads = 0;
+};
+
+struct SweepOutcome {
+  std::int64_t sweepId = 0;
+  analysis::SweepResult result;
+};
+
+// An applied label edit: the segments of the touched (set, run, group) before and after it. Undo
+// puts `before` back exactly (ranges, classes and annotators; segment ids may change).
+struct LabelEdit {
+  std::int64_t setId = 0;
+  std::int64_t runId = 0;
+  SensorGroup group = SensorGroup::Front;
+  std::vector<storage::LabelSegment> before;
+  std::vector<storage::LabelSegment> after;
+  std::int64_t segmentId = 0;  // the added or changed segment (0 for a removal)
+};
+
+class Workspace {
+ public:
+  // Opens a database (OpenOptions choose create / existing / read-only).
+  static Result<std::unique_ptr<Workspace>> open(const std::filesystem::path& path,
+                                                 const storage::OpenOptions& options = {});
+  explicit Workspace(std::unique_ptr<storage::RunDatabase> database);
+
+  storage::RunDatabase& database() { return *db_; }
+
+  // ---- listing ----
+  Result<std::vector<storage::RunCatalogEntry>> runs() { return db_->runCatalog(); }
+  Result<std::vector<storage::LabelSetCatalogEntry>> labelSets() { return db_->labelSetCatalog(); }
+  Result<std::vector<storage::ModelInfo>> models() { return db_->listModels(); }
+  Result<std::vector<storage::SweepInfo>> sweeps() { return db_->listSweeps(); }
+
+  // ---- runs ----
+  Result<RunData> loadRun(std::string_view name);
+  Result<storage::RunWindow> loadWindow(std::string_view name, std::int64_t firstStep,
+                                        std::int64_t count);
+
+  // ---- label edits, each one transaction, each returning what it replaced ----
+  Result<LabelEdit> addSegment(std::int64_t setId, const storage::LabelSegment& segment);
+  Result<LabelEdit> changeSegment(std::int64_t setId, std::int64_t segmentId,
+                                  const storage::LabelSegment& segment);
+  Result<LabelEdit> removeSegment(std::int64_t setId, std::int64_t segmentId);
+  // Puts the touched range of the edit back as it was before the edit (undo), or as it was after
+  // it (redo).
+  Status undo(const LabelEdit& edit);
+  Status redo(const LabelEdit& edit);
+
+  // ---- learning ----
+  // Trains one model per group on the label set's segments of the stored runs, scores it as the
+  // split says, stores the bundle with its provenance under a free name and returns it.
+  Result<TrainOutcome> train(const TrainRequest& request, const ProgressFn& progress = {});
+  // Runs a sweep over stored runs; every cell is stored as it finishes (a cancelled sweep keeps
+  // its finished cells). onCell sees each stored cell.
+  Result<SweepOutcome> sweep(
+      const SweepRequest& request,
+      const std::function<void(const analysis::SweepCellResult&)>& onCell = {},
+      const ProgressFn& progress = {});
+  // A stored sweep read back into a SweepResult (for reports).
+  Result<analysis::SweepResult> loadSweep(std::int64_t sweepId);
+  // A stored model bundle.
+  Result<analysis::ModelBundle> loadModel(std::string_view name);
+  // Classifies a stored run with a stored model; the bundle is returned beside the result, which
+  // points into it.
+  struct Classified {
+    std::unique_ptr<analysis::ModelBundle> bundle;
+    RunData run;
+    analysis::RunClassification result;
+  };
+  Result<Classified> classify(std::string_view modelName, std::string_view runName,
+                              const analysis::ClassifyOptions& options = {});
+
+ private:
+  // Loads the named runs and the set's labels for them; every name must be a stored run.
+  struct Labelled {
+    std::vector<std::unique_ptr<RunData>> runs;
+    std::vector<analysis::LabelledRun> labelled;
+    std::vector<storage::RunInfo> infos;
+  };
+  Result<Labelled> loadLabelled(std::int64_t setId, const std::vector<std::string>& names);
+
+  std::unique_ptr<storage::RunDatabase> db_;
+};
+
+// The program's version, stored with every model.
+std::string_view programVersion();
+
+}  // namespace tactile::workspace
