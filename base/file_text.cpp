@@ -111,4 +111,23 @@ std::string writeFileAtomically(const std::filesystem::path& path, std::string_v
   return {};
 }
 
+Status checkWritable(const std::filesystem::path& path) {
+  std::error_code ec;
+  if (path.empty()) return Error("an output path is empty");
+  if (std::filesystem::is_directory(path, ec)) return Error(path.string(), "is a folder");
+  std::filesystem::path folder = path.parent_path();
+  if (folder.empty()) folder = ".";
+  if (!std::filesystem::is_directory(folder, ec)) {
+    return Error(path.string(), "cannot write: no folder " + folder.string());
+  }
+  std::filesystem::path probe = folder;
+  probe /= ".tactile-write-check-" + std::to_string(::getpid());
+  std::FILE* f = std::fopen(probe.c_str(), "wb");
+  if (f == nullptr)
+    return Error(path.string(), std::string("cannot write: ") + std::strerror(errno));
+  std::fclose(f);
+  std::filesystem::remove(probe, ec);
+  return Status::success();
+}
+
 }  // namespace tactile

@@ -7,6 +7,8 @@
 #include <string>
 #include <string_view>
 
+#include "base/error.h"
+
 namespace tactile {
 
 class FileText {
@@ -36,6 +38,10 @@ class FileText {
 
 // Reads a whole file into memory; returns false and sets `error` on failure.
 bool readFileText(const std::filesystem::path& path, std::string& text, std::string& error);
+
+// Checks, before any long work, that `path` could be written: its folder exists and a file can be
+// created in it, and the path is not a folder. Creates nothing that stays.
+Status checkWritable(const std::filesystem::path& path);
 
 // Writes text atomically (temporary file, then rename). Returns an empty string on success.
 std::string writeFileAtomically(const std::filesystem::path& path, std::string_view text);

@@ -259,6 +259,13 @@ Result<Workspace::Labelled> Workspace::loadLabelled(std::int64_t setId,
 Result<TrainOutcome> Workspace::train(const TrainRequest& request, const ProgressFn& progress) {
   auto set = db_->findLabelSet(request.labelSet);
   if (!set) return set.error();
+  if (!request.modelName.empty()) {
+    // A taken name is found before the work, not after it.
+    if (auto taken = db_->modelInfo(request.modelName); taken) {
+      return failure("a model named '" + request.modelName +
+                     "' is already stored; choose another name or delete it first");
+    }
+  }
   TrainOutcome outcome;
 
   // Runs.

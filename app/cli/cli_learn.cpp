@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "analysis/classify_run.h"
 #include "analysis/features.h"
 #include "analysis/model_file.h"
 #include "analysis/report.h"
@@ -24,6 +25,7 @@
 #include "run/label_file.h"
 #include "run/run_csv.h"
 #include "storage/run_database.h"  // storage::checksumHex, the run-file checksum of label files
+#include "workspace/workspace.h"
 
 namespace tactile::cli {
 namespace {
@@ -216,6 +218,12 @@ void writeText(const std::string& path, const std::string& text) {
 // train
 
 struct TrainArgs {
+  std::string db;  // database form: --db DB --set SET
+  std::string set;
+  std::vector<std::string> trainRuns;
+  std::string split = "by-run";
+  std::string name;
+  std::size_t minRows = 20;
   std::vector<std::string> runs;
   std::vector<std::string> testRuns;
   std::string labels;
@@ -231,10 +239,123 @@ struct TrainArgs {
   bool json = false;
 };
 
+// Fails unless a database file exists at `path` (verbs that must not create one).
+void requireDatabase(const std::string& path) {
+  std::error_code ec;
+  if (!std::filesystem::exists(path, ec)) throw std::runtime_error(path + ": no such database");
+}
+
+std::unique_ptr<workspace::Workspace> openWorkspace(const std::string& path, bool create) {
+  if (!create) requireDatabase(path);
+  storage::OpenOptions options;
+  options.create = create;
+  auto ws = workspace::Workspace::open(path, options);
+  if (!ws) throw std::runtime_error(ws.errorText());
+  return std::move(ws.value());
+}
+
+void checkOutput(const std::string& path) {
+  if (path.empty() || path == "-") return;
+  const Status writable = checkWritable(path);
+  if (!writable) throw std::runtime_error(writable.errorText());
+}
+
+int runTrainDb(const TrainArgs& a, const analysis::TrainSettings& settings,
+               const std::vector<SensorGroup>& groups) {
+  if (a.set.empty()) throw UsageError("--db needs --set SET (the label set to train on)");
+  if (!a.runs.empty() || !a.labels.empty() || a.holdout > 0.0) {
+    throw UsageError(
+        "--runs, --labels and --holdout are for run files; with --db use "
+        "--train-runs, --test-runs and --split");
+  }
+  const auto split = workspace::parseSplitMode(a.split);
+  if (!split) throw UsageError("unknown --split '" + a.split + "' (by-run, leave-one-run-out)");
+  checkOutput(a.out);
+  auto ws = openWorkspace(a.db, true);
+  workspace::TrainRequest request;
+  request.labelSet = a.set;
+  request.trainRuns = a.trainRuns;
+  request.testRuns = a.testRuns;
+  request.split = *split;
+  request.groups = groups;
+  request.settings = settings;
+  request.modelName = a.name;
+  request.minRowsPerGroup = a.minRows;
+  auto outcome = ws->train(request);
+  if (!outcome) throw std::runtime_error(a.db + ": " + outcome.errorText());
+  const workspace::TrainOutcome& o = outcome.value();
+  std::vector<std::string> trained;
+  json groupsJson = json::array();
+  for (const workspace::GroupTrainReport& r : o.groups) {
+    const std::string g(groupInfo(r.group).shortName);
+    if (!r.trained) {
+      std::string keep;
+      for (const workspace::GroupTrainReport& q : o.groups)
+        if (q.trained)
+          keep += (keep.empty() ? "" : ",") + std::string(groupInfo(q.group).shortName);
+      printWarning("group " + g + " skipped: " + r.skippedBecause +
+                   "; leave it out with --groups " + keep);
+    }
+    for (const std::string& w : r.warnings)
+      printWarning("group " + g + ": " + w);
+    json gj{{"group", g},
+            {"trained", r.trained},
+            {"samples_train", r.samplesTrain},
+            {"samples_test", r.samplesTest}};
+    if (r.trained) {
+      // No test rows: nothing was scored, which is not an accuracy of 0.
+      gj["accuracy"] = r.samplesTest > 0 ? json(r.accuracy) : json(nullptr);
+      gj["balanced_accuracy"] = r.samplesTest > 0 ? json(r.balancedAccuracy) : json(nullptr);
+      gj["fit_s"] = r.fitSeconds;
+    } else {
+      gj["skipped"] = r.skippedBecause;
+    }
+    groupsJson.push_back(std::move(gj));
+  }
+  if (!a.out.empty()) {
+    const std::string error = analysis::writeModelBundleFile(a.out, o.bundle);
+    if (!error.empty()) throw std::runtime_error(a.out + ": " + error);
+  }
+  if (a.json) {
+    json doc{{"model", o.modelName},          {"id", o.modelId},         {"label_set", a.set},
+             {"train_runs", o.trainRuns},     {"test_runs", o.testRuns}, {"split", a.split},
+             {"evaluated_on", o.evaluatedOn}, {"groups", groupsJson}};
+    if (!a.out.empty()) doc["out"] = a.out;
+    std::cout << doc.dump() << "\n";
+  } else {
+    std::printf("stored model '%s' (%zu group model(s)) in %s; scored on %s\n", o.modelName.c_str(),
+                o.bundle.models.size(), a.db.c_str(), o.evaluatedOn.c_str());
+    for (const json& g : groupsJson) {
+      if (!g["trained"].get<bool>()) continue;
+      if (g["accuracy"].is_null()) {
+        std::printf("  %-4s %7zu train        0 test  (not scored)\n",
+                    g["group"].get<std::string>().c_str(), g["samples_train"].get<std::size_t>());
+        continue;
+      }
+      std::printf("  %-4s %7zu train  %7zu test  accuracy %5.1f%%  balanced %5.1f%%\n",
+                  g["group"].get<std::string>().c_str(), g["samples_train"].get<std::size_t>(),
+                  g["samples_test"].get<std::size_t>(), 100.0 * g["accuracy"].get<double>(),
+                  100.0 * g["balanced_accuracy"].get<double>());
+    }
+    if (!a.out.empty()) std::printf("wrote %s\n", a.out.c_str());
+  }
+  return kExitOk;
+}
+
 int runTrain(const TrainArgs& a) {
   analysis::TrainSettings settings;
   settings.features = parseFeatures(a.features);
   settings.classifier = toClassifierOptions(a.classifier);
+  if (!a.db.empty()) {
+    std::vector<SensorGroup> groups = parseGroups(a.groups);
+    return runTrainDb(a, settings, groups);
+  }
+  if (a.runs.empty()) throw UsageError("give --runs FILES (run files) or --db DB --set SET");
+  if (a.out.empty()) throw UsageError("--runs needs --out MODEL.json");
+  if (!a.set.empty() || !a.trainRuns.empty()) {
+    throw UsageError("--set and --train-runs need --db");
+  }
+  checkOutput(a.out);
   if (a.holdout < 0.0 || a.holdout >= 1.0) throw UsageError("--holdout must be in [0, 1)");
   if (!a.testRuns.empty() && a.holdout > 0.0) {
     throw UsageError("give either --test-runs or --holdout, not both");
@@ -266,7 +387,6 @@ int runTrain(const TrainArgs& a) {
 
   analysis::ModelBundle bundle;
   json summary = json::array();
-  bool failed = false;
   for (SensorGroup g : groups) {
     const std::string gName(groupInfo(g).shortName);
     const analysis::GroupDataSet data = analysis::buildGroupDataSet(train, g, settings.features);
@@ -276,8 +396,12 @@ int runTrain(const TrainArgs& a) {
     }
     analysis::GroupTrainResult tr = analysis::trainGroupModel(data, settings);
     if (!tr.ok) {
-      printError(tr.reason);
-      failed = true;
+      // One group without enough data must not cost the others their models.
+      std::string keep;
+      for (SensorGroup other : groups)
+        if (other != g) keep += (keep.empty() ? "" : ",") + std::string(groupInfo(other).shortName);
+      printWarning("group " + gName + " skipped: " + tr.reason + "; leave it out with --groups " +
+                   keep);
       continue;
     }
     for (ContactClass c : tr.classes.unmodelled) {
@@ -347,7 +471,6 @@ int runTrain(const TrainArgs& a) {
          {"warnings", tr.fit.warnings}});
     bundle.models.push_back(std::move(tr.model));
   }
-  if (failed) return kExitFailure;
   if (bundle.models.empty()) throw std::runtime_error("no group has labelled contact samples");
   const std::string error = analysis::writeModelBundleFile(a.out, bundle);
   if (!error.empty()) throw std::runtime_error(a.out + ": " + error);
@@ -371,6 +494,10 @@ int runTrain(const TrainArgs& a) {
 // sweep
 
 struct SweepArgs {
+  std::string db;  // database form
+  std::string set;
+  std::vector<std::string> trainRuns;
+  std::string name;
   std::vector<std::string> runs;
   std::vector<std::string> testRuns;
   std::string labels;
@@ -392,6 +519,61 @@ struct SweepArgs {
   std::string out;
   bool json = false;
 };
+
+ProgressFn sweepProgress(bool show) {
+  if (!show) return {};
+  // Also called after every EM iteration of the running fits: print only when a cell finishes.
+  return [shown = std::size_t(-1)](std::size_t done, std::size_t total) mutable {
+    if (done == shown) return true;
+    shown = done;
+    std::fprintf(stderr, "\rsweep: %zu / %zu cells", done, total);
+    if (done == total) std::fputc('\n', stderr);
+    return true;
+  };
+}
+
+int runSweepDb(const SweepArgs& a, const analysis::SweepGrid& grid) {
+  if (a.set.empty()) throw UsageError("--db needs --set SET (the label set to sweep on)");
+  if (!a.runs.empty() || !a.labels.empty()) {
+    throw UsageError(
+        "--runs and --labels are for run files; with --db use --train-runs and "
+        "--test-runs");
+  }
+  if (a.trainRuns.empty() || a.testRuns.empty()) {
+    throw UsageError("--db needs --train-runs and --test-runs (stored run names)");
+  }
+  checkOutput(a.out);
+  auto ws = openWorkspace(a.db, true);
+  workspace::SweepRequest request;
+  request.labelSet = a.set;
+  request.trainRuns = a.trainRuns;
+  request.testRuns = a.testRuns;
+  request.grid = grid;
+  request.name = a.name;
+  request.threads = a.threads;
+  auto outcome = ws->sweep(request, {}, sweepProgress(a.progress));
+  if (!outcome) throw std::runtime_error(a.db + ": " + outcome.errorText());
+  const analysis::SweepResult& result = outcome->result;
+  json doc = analysis::sweepToJson(result);
+  if (!a.out.empty()) writeText(a.out, doc.dump(1) + "\n");
+  std::size_t ok = 0;
+  for (const auto& c : result.cells)
+    ok += c.ok ? 1 : 0;
+  if (a.json) {
+    std::cout << json{{"sweep", outcome->sweepId},
+                      {"cells", doc["cells"]},
+                      {"fitted", ok},
+                      {"threads", result.threads},
+                      {"wall_s", result.wallSeconds}}
+                     .dump()
+              << "\n";
+  } else {
+    std::printf("sweep %lld: %zu cells (%zu fitted) in %.2f s on %d threads, stored in %s\n",
+                static_cast<long long>(outcome->sweepId), result.cells.size(), ok,
+                result.wallSeconds, result.threads, a.db.c_str());
+  }
+  return kExitOk;
+}
 
 int runSweepVerb(const SweepArgs& a) {
   analysis::SweepGrid grid;
@@ -417,7 +599,11 @@ int runSweepVerb(const SweepArgs& a) {
   grid.restarts = a.restarts;
   grid.maxIterations = a.maxIterations;
   grid.tolerance = a.tolerance;
+  if (!a.db.empty()) return runSweepDb(a, grid);
+  if (a.runs.empty()) throw UsageError("give --runs FILES (run files) or --db DB --set SET");
+  if (a.out.empty()) throw UsageError("--runs needs --out SWEEP.json");
   if (a.holdout <= 0.0 || a.holdout >= 1.0) throw UsageError("--holdout must be in (0, 1)");
+  checkOutput(a.out);
 
   LoadedRuns loaded, loadedTest;
   readRuns(a.runs, loaded);
@@ -433,17 +619,7 @@ int runSweepVerb(const SweepArgs& a) {
   }
   analysis::SweepOptions options;
   options.threads = a.threads;
-  ProgressFn progress;
-  if (a.progress) {
-    // Also called after every EM iteration of the running fits: print only when a cell finishes.
-    progress = [shown = std::size_t(-1)](std::size_t done, std::size_t total) mutable {
-      if (done == shown) return true;
-      shown = done;
-      std::fprintf(stderr, "\rsweep: %zu / %zu cells", done, total);
-      if (done == total) std::fputc('\n', stderr);
-      return true;
-    };
-  }
+  const ProgressFn progress = sweepProgress(a.progress);
   const analysis::SweepResult result = analysis::runSweep(train, test, grid, options, progress);
   // Each distinct warning once (cells of one group and variance floor share them).
   std::vector<std::string> warnings;
@@ -484,7 +660,34 @@ int runSweepVerb(const SweepArgs& a) {
 // ---------------------------------------------------------------------------------------------
 // report
 
-int runReport(const std::string& path, bool csv) {
+struct ReportArgs {
+  std::string path;
+  bool csv = false;
+  std::string db;
+  std::int64_t sweep = 0;
+  std::string format;
+  std::string out;
+};
+
+int runReportDb(const ReportArgs& a) {
+  if (a.sweep <= 0) throw UsageError("--db needs --sweep ID (see tactile sweeps list)");
+  const std::string format = a.format.empty() ? "text" : a.format;
+  const auto style = analysis::parseTableStyle(format);
+  if (!style) throw UsageError("unknown --format '" + format + "' (md, csv, html, text)");
+  checkOutput(a.out);
+  auto ws = openWorkspace(a.db, false);
+  auto sweep = ws->loadSweep(a.sweep);
+  if (!sweep) throw std::runtime_error(a.db + ": " + sweep.errorText());
+  writeText(a.out, analysis::sweepReport(sweep.value(), *style));
+  return kExitOk;
+}
+
+int runReport(const ReportArgs& r) {
+  if (!r.db.empty()) return runReportDb(r);
+  if (r.path.empty())
+    throw UsageError("give FILE (SWEEP.json or MODEL.json) or --db DB --sweep ID");
+  const std::string& path = r.path;
+  const bool csv = r.csv || r.format == "csv";
   std::string text, error;
   if (!readFileText(path, text, error)) throw std::runtime_error(path + ": " + error);
   json value;
@@ -496,20 +699,26 @@ int runReport(const std::string& path, bool csv) {
       line += text[i] == '\n';
     throw std::runtime_error(path + ":" + std::to_string(line) + ": invalid JSON: " + e.what());
   }
-  const analysis::TableStyle style = csv ? analysis::TableStyle::Csv : analysis::TableStyle::Text;
+  analysis::TableStyle style = csv ? analysis::TableStyle::Csv : analysis::TableStyle::Text;
+  if (!r.format.empty()) {
+    const auto parsed = analysis::parseTableStyle(r.format);
+    if (!parsed) throw UsageError("unknown --format '" + r.format + "' (md, csv, html, text)");
+    style = *parsed;
+  }
+  checkOutput(r.out);
   const std::string format = value.is_object() ? value.value("format", "") : "";
   if (format == "tactile-sweep") {
     analysis::SweepResult sweep;
     const std::string err = analysis::sweepFromJson(value, sweep);
     if (!err.empty()) throw std::runtime_error(path + ": " + err);
-    writeText("", analysis::sweepReport(sweep, style));
+    writeText(r.out, analysis::sweepReport(sweep, style));
     return kExitOk;
   }
   if (format == analysis::kModelFormat || format == analysis::kModelBundleFormat) {
     // Validate through the one model reader before reporting.
     const analysis::ModelReadResult models = analysis::modelsFromJson(value, path);
     if (!models.ok()) throw std::runtime_error(models.error);
-    writeText("", analysis::modelReport(value, style));
+    writeText(r.out, analysis::modelReport(value, style));
     return kExitOk;
   }
   throw std::runtime_error(path + ": not a sweep or model file (format '" + format + "')");
@@ -519,6 +728,7 @@ int runReport(const std::string& path, bool csv) {
 // classify
 
 struct ClassifyArgs {
+  std::string db;
   std::string model;
   std::string run;
   std::string out;
@@ -530,87 +740,16 @@ struct ClassifyArgs {
   double stay = 0.9;
 };
 
-int runClassify(const ClassifyArgs& a) {
-  if (a.temporal != "none" && a.temporal != "count" && a.temporal != "sum" && a.temporal != "hmm") {
-    throw UsageError("unknown --temporal '" + a.temporal + "' (none, count, sum, hmm)");
-  }
-  if (a.count < 1) throw UsageError("--count must be >= 1");
-  if (a.stay < 0.0 || a.stay > 1.0) throw UsageError("--stay must be in [0, 1]");
-  const analysis::ModelReadResult models = analysis::readModelFile(a.model);
-  if (!models.ok()) throw std::runtime_error(models.error);
-  RunCsvResult read = readRunCsv(a.run);
-  if (!read.ok()) throw std::runtime_error(read.error().toString());
-  const RunData& run = read.run();
-  const std::size_t steps = run.stepCount();
-
-  struct GroupOutput {
-    const analysis::GroupModel* model = nullptr;
-    std::vector<std::uint8_t> rule;             // NoContact by rule
-    std::vector<std::optional<int>> predicted;  // class index in the model
-    Eigen::MatrixXd logLik;                     // steps x C (rows of rule steps unused)
-    analysis::Decisions decided;
-  };
-  std::vector<GroupOutput> groups(kGroupCount);
+// Prints (or writes) a run's classification: JSON, or CSV with one line per step and group.
+int printClassification(const ClassifyArgs& a, const analysis::RunClassification& result) {
+  const std::size_t steps = result.steps;
+  const bool withDecided = a.temporal != "none";
   for (const GroupInfo& info : kSensorGroups) {
-    GroupOutput& go = groups[static_cast<std::size_t>(groupIndex(info.group))];
-    go.model = models.bundle.find(info.group);
-    const FeatureKind kind = go.model ? go.model->features : FeatureKind::Normal;
-    analysis::GroupSteps gs = analysis::extractGroupSteps(run, info.group, kind);
-    go.rule = gs.isZero;
-    go.predicted.assign(steps, std::nullopt);
-    if (go.model == nullptr) continue;
-    // Only contact rows are evaluated (no-contact groups skip the model).
-    std::vector<Eigen::Index> contactRows;
-    for (std::size_t t = 0; t < steps; ++t) {
-      if (!gs.isZero[t]) contactRows.push_back(static_cast<Eigen::Index>(t));
-    }
-    const int classes = go.model->classifier.classCount();
-    go.logLik = Eigen::MatrixXd::Constant(static_cast<Eigen::Index>(steps), classes,
-                                          -std::numeric_limits<double>::infinity());
-    if (!contactRows.empty()) {
-      Eigen::MatrixXd x(static_cast<Eigen::Index>(contactRows.size()), gs.features.cols());
-      for (std::size_t i = 0; i < contactRows.size(); ++i) {
-        x.row(static_cast<Eigen::Index>(i)) = gs.features.row(contactRows[i]);
-      }
-      Eigen::MatrixXd ll;
-      go.model->classifier.logLikelihoods(x, ll);
-      const std::vector<int> pred = go.model->classifier.predictFromLogLikelihoods(ll);
-      for (std::size_t i = 0; i < contactRows.size(); ++i) {
-        go.logLik.row(contactRows[i]) = ll.row(static_cast<Eigen::Index>(i));
-        go.predicted[static_cast<std::size_t>(contactRows[i])] = pred[i];
-      }
-    }
-    if (a.temporal != "none") {
-      analysis::StepLikelihoods sl{go.logLik, {}, go.model->classifier.logPriors()};
-      sl.observed.resize(steps);
-      for (std::size_t t = 0; t < steps; ++t)
-        sl.observed[t] = gs.isZero[t] ? 0 : 1;
-      if (a.temporal == "count") go.decided = analysis::consecutiveCountDecisions(sl, a.count);
-      if (a.temporal == "sum") {
-        go.decided = analysis::summedLogProbabilityDecisions(sl, a.threshold, a.window);
-      }
-      if (a.temporal == "hmm") go.decided = analysis::hmmForwardFilter(sl, a.stay).decisions;
-    }
-  }
-  for (const GroupInfo& info : kSensorGroups) {
-    if (models.bundle.find(info.group) == nullptr) {
+    if (result.groups[static_cast<std::size_t>(groupIndex(info.group))].model == nullptr) {
       printWarning(a.model + ": no model for group " + std::string(info.shortName) +
                    "; its contact steps are left unclassified");
     }
   }
-
-  auto className = [&](const GroupOutput& go, std::size_t t) -> std::string {
-    if (go.rule[t]) return "NoContact";
-    if (!go.predicted[t]) return "";
-    return go.model->classifier.classNames()[static_cast<std::size_t>(*go.predicted[t])];
-  };
-  auto decidedName = [&](const GroupOutput& go, std::size_t t) -> std::string {
-    if (go.rule[t]) return "NoContact";
-    if (go.decided.empty() || !go.decided[t]) return "";
-    return go.model->classifier.classNames()[static_cast<std::size_t>(*go.decided[t])];
-  };
-  const bool withDecided = a.temporal != "none";
-
   if (a.json) {
     json doc;
     doc["run"] = a.run;
@@ -619,16 +758,17 @@ int runClassify(const ClassifyArgs& a) {
     if (withDecided) doc["temporal"] = a.temporal;
     json gj = json::object();
     for (const GroupInfo& info : kSensorGroups) {
-      const GroupOutput& go = groups[static_cast<std::size_t>(groupIndex(info.group))];
+      const analysis::GroupClassification& go =
+          result.groups[static_cast<std::size_t>(groupIndex(info.group))];
       json g;
       g["model"] = go.model != nullptr;
       json cls = json::array(), rule = json::array(), dec = json::array();
       for (std::size_t t = 0; t < steps; ++t) {
-        const std::string c = className(go, t);
+        const std::string c = go.className(t);
         cls.push_back(c.empty() ? json(nullptr) : json(c));
-        rule.push_back(go.rule[t] != 0);
+        rule.push_back(go.noContactRule[t] != 0);
         if (withDecided) {
-          const std::string d = decidedName(go, t);
+          const std::string d = go.decidedName(t);
           dec.push_back(d.empty() ? json(nullptr) : json(d));
         }
       }
@@ -640,8 +780,9 @@ int runClassify(const ClassifyArgs& a) {
         for (int c = 0; c < go.model->classifier.classCount(); ++c) {
           json col = json::array();
           for (std::size_t t = 0; t < steps; ++t) {
-            col.push_back(go.rule[t] ? json(nullptr)
-                                     : json(go.logLik(static_cast<Eigen::Index>(t), c)));
+            col.push_back(go.noContactRule[t]
+                              ? json(nullptr)
+                              : json(go.logLikelihoods(static_cast<Eigen::Index>(t), c)));
           }
           ll[go.model->classifier.classNames()[static_cast<std::size_t>(c)]] = std::move(col);
         }
@@ -668,25 +809,53 @@ int runClassify(const ClassifyArgs& a) {
   csv += "\n";
   for (std::size_t t = 0; t < steps; ++t) {
     for (const GroupInfo& info : kSensorGroups) {
-      const GroupOutput& go = groups[static_cast<std::size_t>(groupIndex(info.group))];
-      csv += std::to_string(t) + "," + std::string(info.shortName) + "," + className(go, t) + "," +
-             (go.rule[t] ? "1" : "0");
+      const analysis::GroupClassification& go =
+          result.groups[static_cast<std::size_t>(groupIndex(info.group))];
+      csv += std::to_string(t) + "," + std::string(info.shortName) + "," + go.className(t) + "," +
+             (go.noContactRule[t] ? "1" : "0");
       for (int c = 0; c < kContactClassCount; ++c) {
         csv += ",";
-        if (go.model == nullptr || go.rule[t]) continue;
+        if (go.model == nullptr || go.noContactRule[t]) continue;
         for (std::size_t k = 0; k < go.model->classes.size(); ++k) {
           if (static_cast<int>(go.model->classes[k]) == c) {
             csv +=
-                json(go.logLik(static_cast<Eigen::Index>(t), static_cast<Eigen::Index>(k))).dump();
+                json(go.logLikelihoods(static_cast<Eigen::Index>(t), static_cast<Eigen::Index>(k)))
+                    .dump();
           }
         }
       }
-      if (withDecided) csv += "," + decidedName(go, t);
+      if (withDecided) csv += "," + go.decidedName(t);
       csv += "\n";
     }
   }
   writeText(a.out, csv);
   return kExitOk;
+}
+
+int runClassify(const ClassifyArgs& a) {
+  const auto rule = analysis::parseTemporalRule(a.temporal);
+  if (!rule) throw UsageError("unknown --temporal '" + a.temporal + "' (none, count, sum, hmm)");
+  if (a.count < 1) throw UsageError("--count must be >= 1");
+  if (a.stay < 0.0 || a.stay > 1.0) throw UsageError("--stay must be in [0, 1]");
+  analysis::ClassifyOptions options;
+  options.temporal = *rule;
+  options.count = a.count;
+  options.threshold = a.threshold;
+  options.window = a.window;
+  options.stay = a.stay;
+  checkOutput(a.out);
+  if (!a.db.empty()) {
+    // --model and --run name a stored model and a stored run.
+    auto ws = openWorkspace(a.db, false);
+    auto classified = ws->classify(a.model, a.run, options);
+    if (!classified) throw std::runtime_error(a.db + ": " + classified.errorText());
+    return printClassification(a, classified->result);
+  }
+  const analysis::ModelReadResult models = analysis::readModelFile(a.model);
+  if (!models.ok()) throw std::runtime_error(models.error);
+  RunCsvResult read = readRunCsv(a.run);
+  if (!read.ok()) throw std::runtime_error(read.error().toString());
+  return printClassification(a, analysis::classifyRun(read.run(), models.bundle, options));
 }
 
 }  // namespace
@@ -697,24 +866,42 @@ void registerLearnVerbs(CLI::App& app, CLI::App& /*bench*/) {
     auto args = std::make_shared<TrainArgs>();
     CLI::App* cmd = app.add_subcommand(
         "train",
-        "Train one classifier per sensor group on labelled runs and write a model bundle.\n"
-        "Labels come from --labels, else from the runs' truth columns.");
-    cmd->add_option("--runs", args->runs, "Run CSV files to train on")->required()->expected(1, -1);
+        "Train one classifier per sensor group on labelled runs.\n"
+        "From a database: --db DB --set SET stores the model bundle in the database (and writes "
+        "--out when given).\nFrom run files: --runs FILES --out MODEL.json; labels come from "
+        "--labels, else from the runs' truth columns.");
+    cmd->add_option("--db", args->db, "Database holding the runs and label sets");
+    cmd->add_option("--set", args->set, "Label set to train on (with --db)");
+    cmd->add_option("--train-runs", args->trainRuns,
+                    "Stored runs to train on (with --db; default: every run the set labels, "
+                    "minus the test runs)")
+        ->delimiter(',');
+    cmd->add_option("--split", args->split,
+                    "by-run (whole runs held out: --test-runs, else every 4th run by name) or "
+                    "leave-one-run-out (with --db)")
+        ->capture_default_str();
+    cmd->add_option("--name", args->name,
+                    "Name of the stored model (with --db; default SET-N, the first free N)");
+    cmd->add_option("--min-rows", args->minRows,
+                    "Groups with fewer labelled contact rows are skipped (with --db)")
+        ->capture_default_str();
+    cmd->add_option("--runs", args->runs, "Run CSV files to train on")->delimiter(',');
     cmd->add_option("--labels", args->labels,
                     "Label CSV (run,group,first_step,last_step,class[,annotator]); its run column "
                     "matches a run's path, file name or stem");
-    cmd->add_option("--test-runs", args->testRuns, "Run CSV files to score the models on")
-        ->expected(1, -1);
+    cmd->add_option("--test-runs", args->testRuns,
+                    "Runs to score the models on (stored run names with --db, else run files)")
+        ->delimiter(',');
     cmd->add_option("--holdout", args->holdout,
-                    "Score on the last fraction of each run's steps instead (0 = score on the "
-                    "training data)")
+                    "Run files: score on the last fraction of each run's steps instead (0 = score "
+                    "on the training data)")
         ->capture_default_str();
     addClassifierOptions(cmd, args->classifier, true);
     cmd->add_option("--features", args->features, "normal, magnitude or normal+shear")
         ->capture_default_str();
     cmd->add_option("--groups", args->groups, "Groups to train (default all), e.g. R,L")
         ->delimiter(',');
-    cmd->add_option("--out", args->out, "Model bundle JSON to write")->required();
+    cmd->add_option("--out", args->out, "Model bundle JSON to write (checked before training)");
     cmd->add_flag("--json", args->json, "Print a JSON summary");
     setAction(cmd, [args] { return runTrain(*args); });
   }
@@ -724,11 +911,20 @@ void registerLearnVerbs(CLI::App& app, CLI::App& /*bench*/) {
     CLI::App* cmd = app.add_subcommand(
         "sweep",
         "Train and score a grid of classifiers (group x method x order x covariance x floor x "
-        "features x seed) on all cores and write SWEEP.json");
-    cmd->add_option("--runs", args->runs, "Run CSV files")->required()->expected(1, -1);
+        "features x seed) on all cores.\nFrom a database: --db DB --set SET --train-runs ... "
+        "--test-runs ... stores every cell as it finishes.\nFrom run files: --runs FILES --out "
+        "SWEEP.json.");
+    cmd->add_option("--db", args->db, "Database holding the runs and label sets");
+    cmd->add_option("--set", args->set, "Label set (with --db)");
+    cmd->add_option("--train-runs", args->trainRuns, "Stored runs to train on (with --db)")
+        ->delimiter(',');
+    cmd->add_option("--name", args->name, "Name of the stored sweep (with --db)");
+    cmd->add_option("--runs", args->runs, "Run CSV files")->delimiter(',');
     cmd->add_option("--labels", args->labels, "Label CSV (default: the runs' truth columns)");
-    cmd->add_option("--test-runs", args->testRuns, "Score on these runs instead of a holdout")
-        ->expected(1, -1);
+    cmd->add_option("--test-runs", args->testRuns,
+                    "Score on these runs (stored run names with --db; run files otherwise, "
+                    "instead of a holdout)")
+        ->delimiter(',');
     cmd->add_option("--holdout", args->holdout, "Last fraction of each run's steps held out")
         ->capture_default_str();
     cmd->add_option("--groups", args->groups, "Groups (default all)")->delimiter(',');
@@ -757,22 +953,25 @@ void registerLearnVerbs(CLI::App& app, CLI::App& /*bench*/) {
     cmd->add_option("--threads", args->threads, "Worker threads (0 = all cores)")
         ->capture_default_str();
     cmd->add_flag("--progress", args->progress, "Print progress on stderr");
-    cmd->add_option("--out", args->out, "SWEEP.json to write")->required();
+    cmd->add_option("--out", args->out, "SWEEP.json to write (optional with --db)");
     cmd->add_flag("--json", args->json, "Print a JSON summary");
     setAction(cmd, [args] { return runSweepVerb(*args); });
   }
   // report
   {
-    auto path = std::make_shared<std::string>();
-    auto csv = std::make_shared<bool>(false);
+    auto args = std::make_shared<ReportArgs>();
     CLI::App* cmd = app.add_subcommand(
         "report",
         "Print the tables of a sweep (best cells, rate against floor and order, confusion "
         "matrices) or of a model file (confusion, per-class rates, one-vs-rest rates, contact "
         "patterns)");
-    cmd->add_option("FILE", *path, "SWEEP.json or MODEL.json")->required();
-    cmd->add_flag("--csv", *csv, "CSV tables instead of aligned text");
-    setAction(cmd, [path, csv] { return runReport(*path, *csv); });
+    cmd->add_option("FILE", args->path, "SWEEP.json or MODEL.json");
+    cmd->add_option("--db", args->db, "Database holding the sweep");
+    cmd->add_option("--sweep", args->sweep, "Stored sweep id (with --db; see tactile sweeps list)");
+    cmd->add_option("--format", args->format, "md, csv, html or text (default text)");
+    cmd->add_option("--out", args->out, "Write here instead of stdout");
+    cmd->add_flag("--csv", args->csv, "CSV tables instead of aligned text (= --format csv)");
+    setAction(cmd, [args] { return runReport(*args); });
   }
   // classify
   {
@@ -780,9 +979,12 @@ void registerLearnVerbs(CLI::App& app, CLI::App& /*bench*/) {
     CLI::App* cmd = app.add_subcommand(
         "classify",
         "Classify every step and group of a run with a model (bundle): class and per-class "
-        "log-likelihoods, as CSV (one line per step and group) or JSON");
-    cmd->add_option("--model", args->model, "Model or model bundle JSON")->required();
-    cmd->add_option("--run", args->run, "Run CSV")->required();
+        "log-likelihoods, as CSV (one line per step and group) or JSON.\nWith --db, --model and "
+        "--run name a stored model and a stored run.");
+    cmd->add_option("--db", args->db, "Database holding the model and the run");
+    cmd->add_option("--model", args->model, "Model or model bundle JSON, or a stored model's name")
+        ->required();
+    cmd->add_option("--run", args->run, "Run CSV, or a stored run's name")->required();
     cmd->add_option("--out", args->out, "Write here instead of stdout");
     cmd->add_flag("--json", args->json, "JSON instead of CSV");
     cmd->add_option("--temporal", args->temporal,

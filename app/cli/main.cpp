@@ -5,8 +5,9 @@
 #include "app/cli/cli_common.h"
 
 namespace tactile::cli {
-void registerCatalogVerbs(CLI::App& app);  // cli_catalog.cpp
-}
+void registerCatalogVerbs(CLI::App& app);    // cli_catalog.cpp
+void registerWorkspaceVerbs(CLI::App& app);  // cli_workspace.cpp
+}  // namespace tactile::cli
 
 int main(int argc, char** argv) {
   using namespace tactile::cli;
@@ -26,6 +27,7 @@ int main(int argc, char** argv) {
   registerFitVerbs(app, *bench);
   registerStorageVerbs(app, *bench);
   registerCatalogVerbs(app);
+  registerWorkspaceVerbs(app);
 
   try {
     app.parse(argc, argv);

@@ -1,0 +1,251 @@
+// Verbs on what a database keeps besides runs and labels: models (list, export, import, delete)
+// and sweeps (list, delete). Training, sweeping, reporting and classifying from a database are
+// the --db forms of train, sweep, report and classify (cli_learn.cpp).
+#include <nlohmann/json.hpp>
+
+#include <cstdio>
+#include <filesystem>
+#include <iostream>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "analysis/model_file.h"
+#include "app/cli/cli_common.h"
+#include "base/file_text.h"
+#include "storage/run_database.h"
+
+namespace tactile::cli {
+namespace {
+
+using nlohmann::json;
+using storage::RunDatabase;
+
+std::unique_ptr<RunDatabase> openDb(const std::string& path, bool create) {
+  std::error_code ec;
+  if (!create && !std::filesystem::exists(path, ec)) {
+    throw std::runtime_error(path + ": no such database");
+  }
+  storage::OpenOptions options;
+  options.create = create;
+  auto db = RunDatabase::open(path, options);
+  if (!db) throw std::runtime_error(db.errorText());
+  return std::move(db.value());
+}
+
+json parsedOrNull(const std::string& text) {
+  json v = json::parse(text, nullptr, false);
+  return v.is_discarded() ? json(nullptr) : v;
+}
+
+struct Common {
+  std::string db;
+  bool json = false;
+};
+
+int modelsList(const Common& c) {
+  auto db = openDb(c.db, false);
+  auto models = db->listModels();
+  if (!models) throw std::runtime_error(models.errorText());
+  json list = json::array();
+  for (const storage::ModelInfo& m : models.value()) {
+    const json trainedOn = parsedOrNull(m.trainedOnJson);
+    const json metrics = parsedOrNull(m.metricsJson);
+    json groups = json::array();
+    if (metrics.is_object()) {
+      for (auto it = metrics.begin(); it != metrics.end(); ++it)
+        groups.push_back(it.key());
+    }
+    json entry{{"name", m.name}, {"id", m.id}, {"created", m.createdAt}, {"groups", groups}};
+    if (trainedOn.is_object()) {
+      entry["label_set"] = trainedOn.value("label_set", "");
+      json runs = json::array();
+      for (const json& r : trainedOn.value("train_runs", json::array()))
+        runs.push_back(r.value("name", ""));
+      entry["train_runs"] = runs;
+      if (trainedOn.contains("imported_from")) entry["imported_from"] = trainedOn["imported_from"];
+    }
+    list.push_back(std::move(entry));
+  }
+  if (c.json) {
+    std::cout << json{{"models", list}}.dump() << "\n";
+    return kExitOk;
+  }
+  std::printf("%-24s %5s  %-20s  %-16s %s\n", "name", "id", "created", "label set", "groups");
+  for (const json& m : list) {
+    std::string groups;
+    for (const json& g : m["groups"])
+      groups += (groups.empty() ? "" : ",") + g.get<std::string>();
+    std::printf("%-24s %5lld  %-20s  %-16s %s\n", m["name"].get<std::string>().c_str(),
+                static_cast<long long>(m["id"].get<std::int64_t>()),
+                m["created"].get<std::string>().c_str(),
+                m.value("label_set", std::string()).c_str(), groups.c_str());
+  }
+  return kExitOk;
+}
+
+int modelsExport(const Common& c, const std::string& name, const std::string& out) {
+  const Status writable = checkWritable(out);
+  if (!writable) throw std::runtime_error(writable.errorText());
+  auto db = openDb(c.db, false);
+  auto text = db->loadModel(name);
+  if (!text) throw std::runtime_error(c.db + ": " + text.errorText());
+  // Through the one model reader and writer, so the file is exactly what training would write.
+  const analysis::ModelReadResult read =
+      analysis::parseModelJson(text.value(), "model '" + name + "'");
+  if (!read.ok()) throw std::runtime_error(c.db + ": " + read.error);
+  const std::string error = analysis::writeModelBundleFile(out, read.bundle);
+  if (!error.empty()) throw std::runtime_error(out + ": " + error);
+  if (c.json) {
+    std::cout << json{{"model", name}, {"out", out}, {"groups", read.bundle.models.size()}}.dump()
+              << "\n";
+  } else {
+    std::printf("wrote model '%s' (%zu group model(s)) to %s\n", name.c_str(),
+                read.bundle.models.size(), out.c_str());
+  }
+  return kExitOk;
+}
+
+int modelsImport(const Common& c, const std::string& file, std::string name) {
+  const analysis::ModelReadResult read = analysis::readModelFile(file);
+  if (!read.ok()) throw std::runtime_error(read.error);
+  if (name.empty()) name = std::filesystem::path(file).stem().string();
+  auto db = openDb(c.db, true);
+  json metrics = json::object();
+  for (const analysis::GroupModel& m : read.bundle.models)
+    metrics[std::string(groupInfo(m.group).shortName)] = m.metrics;
+  json trainedOn =
+      read.bundle.models.empty() ? json::object() : read.bundle.models.front().trainedOn;
+  if (!trainedOn.is_object()) trainedOn = json::object();
+  trainedOn["imported_from"] = file;
+  auto id = db->addModel(name, analysis::bundleToJson(read.bundle).dump(), trainedOn.dump(),
+                         metrics.dump());
+  if (!id) throw std::runtime_error(c.db + ": " + id.errorText());
+  if (c.json) {
+    std::cout
+        << json{{"model", name}, {"id", id.value()}, {"groups", read.bundle.models.size()}}.dump()
+        << "\n";
+  } else {
+    std::printf("stored model '%s' from %s\n", name.c_str(), file.c_str());
+  }
+  return kExitOk;
+}
+
+int modelsDelete(const Common& c, const std::vector<std::string>& names) {
+  auto db = openDb(c.db, false);
+  const Status deleted = db->deleteModels(names);
+  if (!deleted) throw std::runtime_error(c.db + ": " + deleted.errorText());
+  if (c.json) {
+    std::cout << json{{"deleted", names}}.dump() << "\n";
+  } else {
+    std::printf("deleted %zu model(s)\n", names.size());
+  }
+  return kExitOk;
+}
+
+int sweepsList(const Common& c) {
+  auto db = openDb(c.db, false);
+  auto sweeps = db->listSweeps();
+  if (!sweeps) throw std::runtime_error(sweeps.errorText());
+  json list = json::array();
+  for (const storage::SweepInfo& w : sweeps.value()) {
+    const json configuration = parsedOrNull(w.configurationJson);
+    json entry{{"id", w.id}, {"name", w.name}, {"created", w.createdAt}, {"cells", w.cellCount}};
+    if (configuration.is_object()) {
+      entry["state"] = configuration.value("state", "");
+      entry["label_set"] = configuration.value("label_set", "");
+    }
+    list.push_back(std::move(entry));
+  }
+  if (c.json) {
+    std::cout << json{{"sweeps", list}}.dump() << "\n";
+    return kExitOk;
+  }
+  std::printf("%5s  %-24s %-20s %6s  %-10s %s\n", "id", "name", "created", "cells", "state",
+              "label set");
+  for (const json& w : list) {
+    std::printf(
+        "%5lld  %-24s %-20s %6lld  %-10s %s\n", static_cast<long long>(w["id"].get<std::int64_t>()),
+        w["name"].get<std::string>().c_str(), w["created"].get<std::string>().c_str(),
+        static_cast<long long>(w["cells"].get<std::int64_t>()),
+        w.value("state", std::string()).c_str(), w.value("label_set", std::string()).c_str());
+  }
+  return kExitOk;
+}
+
+int sweepsDelete(const Common& c, const std::vector<std::int64_t>& ids) {
+  auto db = openDb(c.db, false);
+  const Status deleted = db->deleteSweeps(ids);
+  if (!deleted) throw std::runtime_error(c.db + ": " + deleted.errorText());
+  if (c.json) {
+    std::cout << json{{"deleted", ids}}.dump() << "\n";
+  } else {
+    std::printf("deleted %zu sweep(s) with their cells\n", ids.size());
+  }
+  return kExitOk;
+}
+
+CLI::App* withCommon(CLI::App* cmd, Common& c) {
+  cmd->add_option("--db", c.db, "Database file")->required();
+  cmd->add_flag("--json", c.json, "Print one JSON object");
+  return cmd;
+}
+
+}  // namespace
+
+void registerWorkspaceVerbs(CLI::App& app) {
+  CLI::App* models = app.add_subcommand("models", "List, export, import and delete stored models");
+  models->require_subcommand(1);
+  {
+    auto c = std::make_shared<Common>();
+    CLI::App* cmd = withCommon(models->add_subcommand("list", "List the stored models"), *c);
+    setAction(cmd, [c] { return modelsList(*c); });
+  }
+  {
+    auto c = std::make_shared<Common>();
+    auto name = std::make_shared<std::string>();
+    auto out = std::make_shared<std::string>();
+    CLI::App* cmd =
+        withCommon(models->add_subcommand("export", "Write a stored model to a model file"), *c);
+    cmd->add_option("NAME", *name, "Stored model")->required();
+    cmd->add_option("--out", *out, "Model bundle JSON to write (atomically)")->required();
+    setAction(cmd, [c, name, out] { return modelsExport(*c, *name, *out); });
+  }
+  {
+    auto c = std::make_shared<Common>();
+    auto file = std::make_shared<std::string>();
+    auto name = std::make_shared<std::string>();
+    CLI::App* cmd = withCommon(
+        models->add_subcommand("import", "Store a model file (checked by the model reader)"), *c);
+    cmd->add_option("FILE", *file, "Model or model bundle JSON")->required();
+    cmd->add_option("--name", *name, "Name to store it under (default: the file's stem)");
+    setAction(cmd, [c, file, name] { return modelsImport(*c, *file, *name); });
+  }
+  {
+    auto c = std::make_shared<Common>();
+    auto names = std::make_shared<std::vector<std::string>>();
+    CLI::App* cmd = withCommon(
+        models->add_subcommand("delete", "Delete stored models (all named or none)"), *c);
+    cmd->add_option("NAMES", *names, "Stored models")->required()->delimiter(',');
+    setAction(cmd, [c, names] { return modelsDelete(*c, *names); });
+  }
+
+  CLI::App* sweeps = app.add_subcommand("sweeps", "List and delete stored sweeps");
+  sweeps->require_subcommand(1);
+  {
+    auto c = std::make_shared<Common>();
+    CLI::App* cmd = withCommon(sweeps->add_subcommand("list", "List the stored sweeps"), *c);
+    setAction(cmd, [c] { return sweepsList(*c); });
+  }
+  {
+    auto c = std::make_shared<Common>();
+    auto ids = std::make_shared<std::vector<std::int64_t>>();
+    CLI::App* cmd = withCommon(
+        sweeps->add_subcommand("delete", "Delete stored sweeps with their cells (all or none)"),
+        *c);
+    cmd->add_option("IDS", *ids, "Sweep ids")->required()->delimiter(',');
+    setAction(cmd, [c, ids] { return sweepsDelete(*c, *ids); });
+  }
+}
+
+}  // namespace tactile::cli
