@@ -316,13 +316,13 @@ json bundleToJson(const ModelBundle& bundle) {
   return out;
 }
 
-ModelReadResult modelsFromJson(const json& value, std::string_view fileName) {
-  ModelReadResult result;
+Result<ModelBundle> modelsFromJson(const json& value, std::string_view fileName) {
+  ModelBundle bundle;
   try {
     if (!value.is_object()) fail("(top level)", "expected a JSON object");
     const std::string format = stringField(value, "(top level)", "format");
     if (format == kModelFormat) {
-      result.bundle.models.push_back(modelOf(value, "(model)"));
+      bundle.models.push_back(modelOf(value, "(model)"));
     } else if (format == kModelBundleFormat) {
       const json& version = field(value, "(bundle)", "version");
       if (!version.is_number_integer() || version.get<int>() != kModelVersion) {
@@ -332,56 +332,51 @@ ModelReadResult modelsFromJson(const json& value, std::string_view fileName) {
       if (!models.is_array() || models.empty()) fail("models", "expected a non-empty array");
       for (std::size_t i = 0; i < models.size(); ++i) {
         GroupModel m = modelOf(models[i], "models[" + std::to_string(i) + "]");
-        if (result.bundle.find(m.group) != nullptr) {
+        if (bundle.find(m.group) != nullptr) {
           fail("models[" + std::to_string(i) + "].group",
                "second model for group " + std::string(groupInfo(m.group).shortName));
         }
-        result.bundle.models.push_back(std::move(m));
+        bundle.models.push_back(std::move(m));
       }
     } else {
       fail("format",
            "expected \"tactile-model\" or \"tactile-model-bundle\", found \"" + format + "\"");
     }
   } catch (const ModelError& e) {
-    result.bundle.models.clear();
-    result.error = std::string(fileName) + ": " + e.path + ": " + e.message;
+    return Error(std::string(fileName), e.path + ": " + e.message);
   } catch (const json::exception& e) {
-    result.bundle.models.clear();
-    result.error = std::string(fileName) + ": " + e.what();
+    return Error(std::string(fileName), e.what());
   }
-  return result;
+  return bundle;
 }
 
-ModelReadResult parseModelJson(std::string_view text, std::string_view fileName) {
+Result<ModelBundle> parseModelJson(std::string_view text, std::string_view fileName) {
   json value;
   try {
     value = json::parse(text.begin(), text.end());
   } catch (const json::parse_error& e) {
-    ModelReadResult result;
-    result.error = std::string(fileName) + ":" +
-                   std::to_string(lineOfOffset(text, e.byte == 0 ? 0 : e.byte - 1)) +
-                   ": invalid JSON: " + e.what();
-    return result;
+    return Error(std::string(fileName), lineOfOffset(text, e.byte == 0 ? 0 : e.byte - 1), 0,
+                 std::string("invalid JSON: ") + e.what());
   }
   return modelsFromJson(value, fileName);
 }
 
-ModelReadResult readModelFile(const std::filesystem::path& path) {
+Result<ModelBundle> readModelFile(const std::filesystem::path& path) {
   std::string text, error;
-  if (!readFileText(path, text, error)) {
-    ModelReadResult result;
-    result.error = path.string() + ": " + error;
-    return result;
-  }
+  if (!readFileText(path, text, error)) return Error(path.string(), error);
   return parseModelJson(text, path.string());
 }
 
-std::string writeModelFile(const std::filesystem::path& path, const GroupModel& model) {
-  return writeFileAtomically(path, modelToJson(model).dump(1) + "\n");
+Status writeModelFile(const std::filesystem::path& path, const GroupModel& model) {
+  const std::string error = writeFileAtomically(path, modelToJson(model).dump(1) + "\n");
+  if (!error.empty()) return Error(error);
+  return Status::success();
 }
 
-std::string writeModelBundleFile(const std::filesystem::path& path, const ModelBundle& bundle) {
-  return writeFileAtomically(path, bundleToJson(bundle).dump(1) + "\n");
+Status writeModelBundleFile(const std::filesystem::path& path, const ModelBundle& bundle) {
+  const std::string error = writeFileAtomically(path, bundleToJson(bundle).dump(1) + "\n");
+  if (!error.empty()) return Error(error);
+  return Status::success();
 }
 
 bool contactClassesOf(const ClassModelSet& classifier, std::vector<ContactClass>& out,

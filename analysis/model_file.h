@@ -31,6 +31,7 @@
 #include "analysis/classifier.h"
 #include "analysis/features.h"
 #include "analysis/gmm.h"
+#include "base/error.h"
 #include "run/contact_class.h"
 #include "run/sensor_layout.h"
 
@@ -58,27 +59,19 @@ struct ModelBundle {
   const GroupModel* find(SensorGroup group) const;
 };
 
-// Either a bundle or an error ("FILE: path.to.field: what is wrong", or "FILE:LINE: ..." for a
-// JSON syntax error).
-struct ModelReadResult {
-  ModelBundle bundle;
-  std::string error;
-  bool ok() const { return error.empty(); }
-};
-
 nlohmann::json modelToJson(const GroupModel& model);
 nlohmann::json bundleToJson(const ModelBundle& bundle);
 
-// Parses model or bundle text. fileName is for messages only.
-ModelReadResult parseModelJson(std::string_view text, std::string_view fileName);
+// Parses model or bundle text. fileName names the source in errors: "FILE: path.to.field: what is
+// wrong", or "FILE:LINE: invalid JSON: ..." for a syntax error.
+Result<ModelBundle> parseModelJson(std::string_view text, std::string_view fileName);
 // Parses an already-parsed JSON value (a model or a bundle object).
-ModelReadResult modelsFromJson(const nlohmann::json& value, std::string_view fileName);
-ModelReadResult readModelFile(const std::filesystem::path& path);
+Result<ModelBundle> modelsFromJson(const nlohmann::json& value, std::string_view fileName);
+Result<ModelBundle> readModelFile(const std::filesystem::path& path);
 
-// Writes atomically; a bundle of exactly one model is still written as a bundle. Returns an empty
-// string on success, otherwise the reason.
-std::string writeModelFile(const std::filesystem::path& path, const GroupModel& model);
-std::string writeModelBundleFile(const std::filesystem::path& path, const ModelBundle& bundle);
+// Writes atomically; a bundle of exactly one model is still written as a bundle.
+Status writeModelFile(const std::filesystem::path& path, const GroupModel& model);
+Status writeModelBundleFile(const std::filesystem::path& path, const ModelBundle& bundle);
 
 // Builds a GroupModel's class list from a classifier whose class names are contact class names.
 // Returns false (and sets error) when a name is not a contact class.

@@ -534,10 +534,7 @@ Result<analysis::SweepResult> Workspace::loadSweep(std::int64_t sweepId) {
 Result<analysis::ModelBundle> Workspace::loadModel(std::string_view name) {
   auto text = db_->loadModel(std::string(name));
   if (!text) return text.error();
-  analysis::ModelReadResult read =
-      analysis::parseModelJson(text.value(), "model '" + std::string(name) + "'");
-  if (!read.ok()) return failure(read.error);
-  return std::move(read.bundle);
+  return analysis::parseModelJson(text.value(), "model '" + std::string(name) + "'");
 }
 
 Result<Workspace::Classified> Workspace::classify(std::string_view modelName,

@@ -313,8 +313,8 @@ int runTrainDb(const TrainArgs& a, const analysis::TrainSettings& settings,
     groupsJson.push_back(std::move(gj));
   }
   if (!a.out.empty()) {
-    const std::string error = analysis::writeModelBundleFile(a.out, o.bundle);
-    if (!error.empty()) throw std::runtime_error(a.out + ": " + error);
+    const Status written = analysis::writeModelBundleFile(a.out, o.bundle);
+    if (!written) throw std::runtime_error(written.errorText());
   }
   if (a.json) {
     json doc{{"model", o.modelName},          {"id", o.modelId},         {"label_set", a.set},
@@ -472,8 +472,8 @@ int runTrain(const TrainArgs& a) {
     bundle.models.push_back(std::move(tr.model));
   }
   if (bundle.models.empty()) throw std::runtime_error("no group has labelled contact samples");
-  const std::string error = analysis::writeModelBundleFile(a.out, bundle);
-  if (!error.empty()) throw std::runtime_error(a.out + ": " + error);
+  const Status written = analysis::writeModelBundleFile(a.out, bundle);
+  if (!written) throw std::runtime_error(written.errorText());
   if (a.json) {
     std::cout << json{{"out", a.out}, {"evaluated_on", evaluatedOn}, {"groups", summary}}.dump()
               << "\n";
@@ -716,8 +716,8 @@ int runReport(const ReportArgs& r) {
   }
   if (format == analysis::kModelFormat || format == analysis::kModelBundleFormat) {
     // Validate through the one model reader before reporting.
-    const analysis::ModelReadResult models = analysis::modelsFromJson(value, path);
-    if (!models.ok()) throw std::runtime_error(models.error);
+    const Result<analysis::ModelBundle> models = analysis::modelsFromJson(value, path);
+    if (!models) throw std::runtime_error(models.errorText());
     writeText(r.out, analysis::modelReport(value, style));
     return kExitOk;
   }
@@ -851,11 +851,11 @@ int runClassify(const ClassifyArgs& a) {
     if (!classified) throw std::runtime_error(a.db + ": " + classified.errorText());
     return printClassification(a, classified->result);
   }
-  const analysis::ModelReadResult models = analysis::readModelFile(a.model);
-  if (!models.ok()) throw std::runtime_error(models.error);
+  const Result<analysis::ModelBundle> models = analysis::readModelFile(a.model);
+  if (!models) throw std::runtime_error(models.errorText());
   RunCsvResult read = readRunCsv(a.run);
   if (!read.ok()) throw std::runtime_error(read.error().toString());
-  return printClassification(a, analysis::classifyRun(read.run(), models.bundle, options));
+  return printClassification(a, analysis::classifyRun(read.run(), models.value(), options));
 }
 
 }  // namespace

@@ -91,40 +91,38 @@ int modelsExport(const Common& c, const std::string& name, const std::string& ou
   auto text = db->loadModel(name);
   if (!text) throw std::runtime_error(c.db + ": " + text.errorText());
   // Through the one model reader and writer, so the file is exactly what training would write.
-  const analysis::ModelReadResult read =
+  const Result<analysis::ModelBundle> read =
       analysis::parseModelJson(text.value(), "model '" + name + "'");
-  if (!read.ok()) throw std::runtime_error(c.db + ": " + read.error);
-  const std::string error = analysis::writeModelBundleFile(out, read.bundle);
-  if (!error.empty()) throw std::runtime_error(out + ": " + error);
+  if (!read) throw std::runtime_error(c.db + ": " + read.errorText());
+  const Status written = analysis::writeModelBundleFile(out, read.value());
+  if (!written) throw std::runtime_error(written.errorText());
   if (c.json) {
-    std::cout << json{{"model", name}, {"out", out}, {"groups", read.bundle.models.size()}}.dump()
+    std::cout << json{{"model", name}, {"out", out}, {"groups", read->models.size()}}.dump()
               << "\n";
   } else {
-    std::printf("wrote model '%s' (%zu group model(s)) to %s\n", name.c_str(),
-                read.bundle.models.size(), out.c_str());
+    std::printf("wrote model '%s' (%zu group model(s)) to %s\n", name.c_str(), read->models.size(),
+                out.c_str());
   }
   return kExitOk;
 }
 
 int modelsImport(const Common& c, const std::string& file, std::string name) {
-  const analysis::ModelReadResult read = analysis::readModelFile(file);
-  if (!read.ok()) throw std::runtime_error(read.error);
+  const Result<analysis::ModelBundle> read = analysis::readModelFile(file);
+  if (!read) throw std::runtime_error(read.errorText());
   if (name.empty()) name = std::filesystem::path(file).stem().string();
   auto db = openDb(c.db, true);
   json metrics = json::object();
-  for (const analysis::GroupModel& m : read.bundle.models)
+  for (const analysis::GroupModel& m : read->models)
     metrics[std::string(groupInfo(m.group).shortName)] = m.metrics;
-  json trainedOn =
-      read.bundle.models.empty() ? json::object() : read.bundle.models.front().trainedOn;
+  json trainedOn = read->models.empty() ? json::object() : read->models.front().trainedOn;
   if (!trainedOn.is_object()) trainedOn = json::object();
   trainedOn["imported_from"] = file;
-  auto id = db->addModel(name, analysis::bundleToJson(read.bundle).dump(), trainedOn.dump(),
+  auto id = db->addModel(name, analysis::bundleToJson(read.value()).dump(), trainedOn.dump(),
                          metrics.dump());
   if (!id) throw std::runtime_error(c.db + ": " + id.errorText());
   if (c.json) {
-    std::cout
-        << json{{"model", name}, {"id", id.value()}, {"groups", read.bundle.models.size()}}.dump()
-        << "\n";
+    std::cout << json{{"model", name}, {"id", id.value()}, {"groups", read->models.size()}}.dump()
+              << "\n";
   } else {
     std::printf("stored model '%s' from %s\n", name.c_str(), file.c_str());
   }

@@ -76,19 +76,19 @@ TEST(ModelFile, RoundTripIsBitIdenticalForEveryForm) {
     SCOPED_TRACE(std::string(covarianceFormName(form)));
     const GroupModel model = trainedModel(ClassifierMethod::Gmm, form);
     const std::string text = modelToJson(model).dump(1);
-    const ModelReadResult read = parseModelJson(text, "m.json");
-    ASSERT_TRUE(read.ok()) << read.error;
-    ASSERT_EQ(read.bundle.models.size(), 1u);
-    expectSamePredictions(model, read.bundle.models[0]);
+    const Result<ModelBundle> read = parseModelJson(text, "m.json");
+    ASSERT_TRUE(read.ok()) << read.errorText();
+    ASSERT_EQ(read->models.size(), 1u);
+    expectSamePredictions(model, read->models[0]);
   }
 }
 
 TEST(ModelFile, GaussianWithRestModelsRoundTrips) {
   const GroupModel model = trainedModel(ClassifierMethod::Gaussian, CovarianceForm::NodalFull);
   ASSERT_TRUE(model.classifier.hasRestModels());
-  const ModelReadResult read = parseModelJson(modelToJson(model).dump(), "m.json");
-  ASSERT_TRUE(read.ok()) << read.error;
-  const GroupModel& loaded = read.bundle.models[0];
+  const Result<ModelBundle> read = parseModelJson(modelToJson(model).dump(), "m.json");
+  ASSERT_TRUE(read.ok()) << read.errorText();
+  const GroupModel& loaded = read->models[0];
   ASSERT_TRUE(loaded.classifier.hasRestModels());
   expectSamePredictions(model, loaded);
   Eigen::VectorXd a, b;
@@ -105,15 +105,15 @@ TEST(ModelFile, BundleFileRoundTripThroughDisk) {
   bundle.models.push_back(std::move(second));
   const auto path = std::filesystem::temp_directory_path() /
                     ("tactile_model_test_" + std::to_string(::getpid()) + ".json");
-  ASSERT_EQ(writeModelBundleFile(path, bundle), "");
-  const ModelReadResult read = readModelFile(path);
+  ASSERT_TRUE(writeModelBundleFile(path, bundle).ok());
+  const Result<ModelBundle> read = readModelFile(path);
   std::filesystem::remove(path);
-  ASSERT_TRUE(read.ok()) << read.error;
-  ASSERT_EQ(read.bundle.models.size(), 2u);
-  ASSERT_NE(read.bundle.find(SensorGroup::Left), nullptr);
-  EXPECT_EQ(read.bundle.find(SensorGroup::Front), nullptr);
-  expectSamePredictions(bundle.models[0], *read.bundle.find(SensorGroup::Right));
-  expectSamePredictions(bundle.models[1], *read.bundle.find(SensorGroup::Left));
+  ASSERT_TRUE(read.ok()) << read.errorText();
+  ASSERT_EQ(read->models.size(), 2u);
+  ASSERT_NE(read->find(SensorGroup::Left), nullptr);
+  EXPECT_EQ(read->find(SensorGroup::Front), nullptr);
+  expectSamePredictions(bundle.models[0], *read->find(SensorGroup::Right));
+  expectSamePredictions(bundle.models[1], *read->find(SensorGroup::Left));
 }
 
 TEST(ModelFile, JsonDoublesReadBackBitForBit) {
@@ -143,10 +143,9 @@ json validModelJson() {
 }
 
 std::string errorOf(const json& j) {
-  const ModelReadResult r = parseModelJson(j.dump(), "bad.json");
+  const Result<ModelBundle> r = parseModelJson(j.dump(), "bad.json");
   EXPECT_FALSE(r.ok());
-  EXPECT_TRUE(r.bundle.models.empty());
-  return r.error;
+  return r.ok() ? std::string() : r.errorText();
 }
 
 std::string firstClass(const json& j) {
@@ -154,10 +153,10 @@ std::string firstClass(const json& j) {
 }
 
 TEST(ModelFileValidation, SyntaxErrorNamesLine) {
-  const ModelReadResult r =
+  const Result<ModelBundle> r =
       parseModelJson("{\n\"format\": \"tactile-model\",\n  oops\n}", "bad.json");
   ASSERT_FALSE(r.ok());
-  EXPECT_EQ(r.error.rfind("bad.json:3:", 0), 0u) << r.error;
+  EXPECT_EQ(r.errorText().rfind("bad.json:3:", 0), 0u) << r.errorText();
 }
 
 TEST(ModelFileValidation, WrongFormat) {
@@ -273,9 +272,9 @@ TEST(ModelFileValidation, DuplicateGroupInBundle) {
 }
 
 TEST(ModelFileValidation, MissingFileIsError) {
-  const ModelReadResult r = readModelFile("/nonexistent/dir/model.json");
+  const Result<ModelBundle> r = readModelFile("/nonexistent/dir/model.json");
   EXPECT_FALSE(r.ok());
-  EXPECT_NE(r.error.find("/nonexistent/dir/model.json"), std::string::npos);
+  EXPECT_NE(r.errorText().find("/nonexistent/dir/model.json"), std::string::npos);
 }
 
 }  // namespace
