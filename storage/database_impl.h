@@ -13,6 +13,7 @@ namespace tactile::storage {
 struct RunDatabase::Impl {
   std::filesystem::path path;
   std::filesystem::path backup;
+  bool readOnly = false;
   db::Connection connection;
   // Prepared statements reused across calls, keyed by the address of their SQL literal.
   std::unordered_map<const char*, db::Statement> statements;
@@ -37,11 +38,14 @@ struct RunDatabase::Impl {
 // Current UTC time as "YYYY-MM-DDTHH:MM:SSZ".
 std::string utcNow();
 
-// Runs `fn` and turns any exception into a failed Result / Status.
+// Runs `fn` and turns any exception into a failed Result / Status. A DbError from SQLite names its
+// database in Error::file (docs/storage.md#errors).
 template <class T, class Fn>
 Result<T> guarded(Fn&& fn) {
   try {
     return Result<T>(fn());
+  } catch (const db::DbError& e) {
+    return Result<T>(Error(e.file, e.what()));
   } catch (const std::exception& e) {
     return Result<T>::failure(e.what());
   }
@@ -52,6 +56,8 @@ Status guardedStatus(Fn&& fn) {
   try {
     fn();
     return Status::success();
+  } catch (const db::DbError& e) {
+    return Status(Error(e.file, e.what()));
   } catch (const std::exception& e) {
     return Status::failure(e.what());
   }

@@ -4,6 +4,8 @@
 
 #include <sqlite3.h>
 
+#include <cstdio>
+#include <cstring>
 #include <ctime>
 
 #include "storage/database_impl.h"
@@ -33,19 +35,190 @@ const std::filesystem::path& RunDatabase::migrationBackup() const {
   return impl_->backup;
 }
 
+namespace {
+
+// What the file's first bytes say, read without SQLite so that nothing is created or written
+// (docs/storage.md#opening; the header layout is SQLite's file format, section 1.3).
+enum class FileKind { Absent, Empty, NotSqlite, Foreign, NoSchema, Tactile, Unknown };
+
+struct Probe {
+  FileKind kind = FileKind::Unknown;
+  std::uint32_t applicationId = 0;
+};
+
+std::uint32_t bigEndian32(const unsigned char* p) {
+  return (std::uint32_t{p[0]} << 24) | (std::uint32_t{p[1]} << 16) | (std::uint32_t{p[2]} << 8) |
+         std::uint32_t{p[3]};
+}
+
+Probe probeFile(const std::filesystem::path& path) {
+  Probe probe;
+  std::error_code ec;
+  if (!std::filesystem::exists(path, ec)) {
+    probe.kind = FileKind::Absent;
+    return probe;
+  }
+  if (std::filesystem::is_directory(path, ec)) {
+    probe.kind = FileKind::NotSqlite;
+    return probe;
+  }
+  std::FILE* file = std::fopen(path.c_str(), "rb");
+  if (file == nullptr) return probe;  // unreadable: SQLite reports why
+  unsigned char header[100] = {};
+  const std::size_t got = std::fread(header, 1, sizeof header, file);
+  std::fclose(file);
+  if (got == 0) {
+    probe.kind = FileKind::Empty;
+    return probe;
+  }
+  static constexpr char kMagic[] = "SQLite format 3";  // 16 bytes with its NUL
+  if (got < sizeof header || std::memcmp(header, kMagic, sizeof kMagic) != 0) {
+    probe.kind = FileKind::NotSqlite;
+    return probe;
+  }
+  // A write-ahead log with content may hold a newer page 1; then only SQLite can tell.
+  const auto walBytes = std::filesystem::file_size(path.string() + "-wal", ec);
+  if (!ec && walBytes > 0) return probe;
+  probe.applicationId = bigEndian32(header + 68);
+  const std::uint32_t userVersion = bigEndian32(header + 60);
+  const std::uint32_t schemaCookie = bigEndian32(header + 40);
+  if (probe.applicationId == static_cast<std::uint32_t>(db::kApplicationId)) {
+    probe.kind = FileKind::Tactile;
+  } else if (probe.applicationId != 0) {
+    probe.kind = FileKind::Foreign;
+  } else if (userVersion == 0) {
+    probe.kind = schemaCookie == 0 ? FileKind::NoSchema : FileKind::Foreign;
+  }
+  return probe;
+}
+
+std::string hex32(std::uint32_t value) {
+  char text[16];
+  std::snprintf(text, sizeof text, "0x%08x", value);
+  return text;
+}
+
+// The same identity checks through SQLite, before anything is written (for files whose -wal holds
+// content the header above could not judge). Throws DbError naming the file.
+void checkIdentity(db::Connection& c, const std::string& name, bool mayInitialise) {
+  const auto applicationId = c.queryInt("PRAGMA application_id");
+  const auto version = c.queryInt("PRAGMA user_version");
+  const auto objects = c.queryInt("SELECT count(*) FROM sqlite_schema");
+  if (applicationId != 0 && applicationId != db::kApplicationId) {
+    throw db::DbError(name, "an SQLite database of another application (application_id " +
+                                hex32(static_cast<std::uint32_t>(applicationId)) +
+                                "), not a Tactile database; left unchanged");
+  }
+  if (version == 0 && objects != 0) {
+    throw db::DbError(name,
+                      "holds tables but no Tactile schema version; not a Tactile database; left "
+                      "unchanged");
+  }
+  if (version == 0 && objects == 0 && !mayInitialise) {
+    throw db::DbError(name,
+                      "an SQLite database without the Tactile schema; not a Tactile "
+                      "database (only a creating verb such as `tactile db create` makes one)");
+  }
+}
+
+}  // namespace
+
+Result<std::unique_ptr<RunDatabase>> RunDatabase::open(const std::filesystem::path& path,
+                                                       OpenMode mode) {
+  OpenOptions options;
+  options.mode = mode;
+  return open(path, options);
+}
+
 Result<std::unique_ptr<RunDatabase>> RunDatabase::open(const std::filesystem::path& path,
                                                        const OpenOptions& options) {
   using R = Result<std::unique_ptr<RunDatabase>>;
+  const std::string name = path.string();
+  OpenMode mode = options.mode;
+  if (mode == OpenMode::Create && !options.create) mode = OpenMode::ReadWrite;
   try {
     const bool inMemory = path.empty() || path == ":memory:";
-    std::error_code ec;
-    if (!inMemory && !options.create && !std::filesystem::exists(path, ec)) {
-      return R::failure("no database file '" + path.string() + "'");
-    }
     auto impl = std::make_unique<Impl>();
     impl->path = inMemory ? std::filesystem::path(":memory:") : path;
-    impl->connection = db::Connection::open(impl->path, options.create);
+    impl->readOnly = mode == OpenMode::ReadOnly && !inMemory;
+    if (!inMemory) {
+      const Probe probe = probeFile(path);
+      switch (probe.kind) {
+        case FileKind::Absent:
+          if (mode != OpenMode::Create) return R(Error(name, "no such database"));
+          break;
+        case FileKind::Empty:
+          if (mode != OpenMode::Create) {
+            return R(Error(name,
+                           "empty file, not a Tactile database (only a creating verb such "
+                           "as `tactile db create` makes one)"));
+          }
+          break;
+        case FileKind::NotSqlite:
+          return R(Error(name, "not a Tactile database (not an SQLite file); left unchanged"));
+        case FileKind::Foreign:
+          return R(Error(name, probe.applicationId != 0
+                                   ? "an SQLite database of another application (application_id " +
+                                         hex32(probe.applicationId) +
+                                         "), not a Tactile database; left unchanged"
+                                   : "holds tables but no Tactile schema version; not a Tactile "
+                                     "database; left unchanged"));
+        case FileKind::NoSchema:
+          if (mode != OpenMode::Create) {
+            return R(Error(name,
+                           "an SQLite database without the Tactile schema; not a Tactile "
+                           "database (only a creating verb such as `tactile db create` "
+                           "makes one)"));
+          }
+          break;
+        case FileKind::Tactile:
+        case FileKind::Unknown:
+          break;
+      }
+    }
+    if (impl->readOnly) {
+      impl->connection = db::Connection::open(impl->path, false, db::Access::ReadOnly);
+      try {
+        checkIdentity(impl->connection, name, false);
+      } catch (const db::DbError& e) {
+        // SQLITE_READONLY_CANTINIT and friends: WAL needs a -shm file this process cannot make
+        // (read-only folder). Without a -wal holding changes, `immutable` reads the file as it is.
+        const int code = sqlite3_extended_errcode(impl->connection.handle());
+        if ((code & 0xff) != SQLITE_READONLY && (code & 0xff) != SQLITE_CANTOPEN) throw;
+        std::error_code ec;
+        const auto walBytes = std::filesystem::file_size(name + "-wal", ec);
+        if (!ec && walBytes > 0) {
+          return R(Error(name,
+                         "cannot be read without write access to its folder: its "
+                         "write-ahead log " +
+                             name + "-wal holds changes (" + e.what() + ")"));
+        }
+        impl->connection = db::Connection::open(impl->path, false, db::Access::Immutable);
+        checkIdentity(impl->connection, name, false);
+      }
+      db::Connection& c = impl->connection;
+      c.exec("PRAGMA foreign_keys = ON");
+      c.exec("PRAGMA temp_store = MEMORY");
+      c.exec("PRAGMA cache_size = -" + std::to_string(options.cacheKiB));
+      c.exec("PRAGMA mmap_size = 1073741824");
+      const int version = db::schemaVersion(c);
+      if (version > db::kSchemaVersion) {
+        return R(Error(name, "schema version " + std::to_string(version) + ", newer than version " +
+                                 std::to_string(db::kSchemaVersion) +
+                                 " that this program understands; use a newer tactile"));
+      }
+      if (version < db::kSchemaVersion) {
+        return R(Error(name, "schema version " + std::to_string(version) +
+                                 ", older than this program's " +
+                                 std::to_string(db::kSchemaVersion) +
+                                 "; it is not migrated when opened read-only (`tactile db create "
+                                 "--db` on it migrates it, keeping a backup)"));
+      }
+      return R(std::unique_ptr<RunDatabase>(new RunDatabase(std::move(impl))));
+    }
+    impl->connection = db::Connection::open(impl->path, mode == OpenMode::Create);
     db::Connection& c = impl->connection;
+    if (!inMemory) checkIdentity(c, name, mode == OpenMode::Create);
     const bool fresh = c.queryInt("PRAGMA user_version") == 0 &&
                        c.queryInt("SELECT count(*) FROM sqlite_schema") == 0;
     if (fresh) {
@@ -59,12 +232,11 @@ Result<std::unique_ptr<RunDatabase>> RunDatabase::open(const std::filesystem::pa
     }
     if (!inMemory) {
       {
-        db::Statement mode(c, "PRAGMA journal_mode = WAL");
-        mode.step();
-        const std::string journal = mode.columnText(0);
+        db::Statement journalMode(c, "PRAGMA journal_mode = WAL");
+        journalMode.step();
+        const std::string journal = journalMode.columnText(0);
         if (journal != "wal") {
-          return R::failure("cannot switch '" + path.string() + "' to WAL (journal mode " +
-                            journal + ")");
+          return R(Error(name, "cannot switch to WAL (journal mode " + journal + ")"));
         }
       }
     }
@@ -76,9 +248,15 @@ Result<std::unique_ptr<RunDatabase>> RunDatabase::open(const std::filesystem::pa
     const db::MigrationReport report = db::migrate(c, impl->path);
     impl->backup = report.backupPath;
     return R(std::unique_ptr<RunDatabase>(new RunDatabase(std::move(impl))));
+  } catch (const db::DbError& e) {
+    return R(Error(e.file.empty() ? name : e.file, e.what()));
   } catch (const std::exception& e) {
-    return R::failure(e.what());
+    return R(Error(name, e.what()));
   }
+}
+
+bool RunDatabase::readOnly() const {
+  return impl_->readOnly;
 }
 
 // ---- runs ----------------------------------------------------------------------------------

@@ -179,8 +179,21 @@ struct IntegrityReport {
   std::int64_t labelSets = 0;
 };
 
+// How RunDatabase::open treats the file (docs/storage.md#opening).
+enum class OpenMode {
+  // Makes the file (and its schema) when absent or empty; migrates an older one.
+  Create,
+  // An existing Tactile database only (an absent or empty file is an error); migrates an older one.
+  ReadWrite,
+  // An existing, current Tactile database, never written: works on a read-only file in a
+  // read-only folder (then opened `immutable`, see docs/storage.md#read-only-opening).
+  ReadOnly,
+};
+
 struct OpenOptions {
-  bool create = true;  // create the file when absent
+  OpenMode mode = OpenMode::Create;
+  // Older spelling of the mode: false turns OpenMode::Create into OpenMode::ReadWrite.
+  bool create = true;
   // Page cache per connection in KiB (PRAGMA cache_size = -cacheKiB).
   int cacheKiB = 256 * 1024;
 };
@@ -190,13 +203,20 @@ class RunDatabase {
   // Opens or creates a database file (":memory:" for a private in-memory one): WAL journal,
   // synchronous=NORMAL, foreign keys on, schema migrated to the newest version (an older file is
   // first copied to "<file>.v<N>.bak"); a file from a newer program is an error.
+  // Before anything is written, a file that is not a Tactile database (not SQLite, another
+  // application's SQLite file, SQLite without the Tactile schema, or empty unless mode is Create)
+  // is refused and left byte for byte as it was. Every error names the file in Error::file.
   static Result<std::unique_ptr<RunDatabase>> open(const std::filesystem::path& path,
                                                    const OpenOptions& options = {});
+  static Result<std::unique_ptr<RunDatabase>> open(const std::filesystem::path& path,
+                                                   OpenMode mode);
   ~RunDatabase();
   RunDatabase(const RunDatabase&) = delete;
   RunDatabase& operator=(const RunDatabase&) = delete;
 
   const std::filesystem::path& path() const;
+  // True when opened with OpenMode::ReadOnly.
+  bool readOnly() const;
   // The backup written when opening migrated an older file (empty otherwise).
   const std::filesystem::path& migrationBackup() const;
 

@@ -249,6 +249,26 @@ ImportOutcome writeRun(RunDatabase::Impl& impl, FileHead& head,
   }
   const RunData& header = head.header;
   try {
+    // The steps and block rows reference the run row written in this same transaction, so their
+    // per-row foreign-key lookups can be skipped; the pragma only works outside a transaction and
+    // is restored on every path.
+    struct ForeignKeysOff {
+      db::Connection& c;
+      explicit ForeignKeysOff(db::Connection& connection) : c(connection) {
+        c.exec("PRAGMA foreign_keys = OFF");
+      }
+      ~ForeignKeysOff() {
+        try {
+          c.exec("PRAGMA foreign_keys = ON");
+        } catch (const std::exception&) {
+        }
+      }
+    } foreignKeysOff(impl.connection);
+    // The checksum and name are checked inside the write transaction: another process importing
+    // into the same file at the same time may have stored this file or name since this one
+    // looked (docs/storage.md#concurrency), and then it is skipped or refused, never a raw
+    // UNIQUE-constraint error.
+    db::Transaction transaction(impl.connection);
     {
       db::Statement& dup =
           impl.statement("SELECT id, name, step_count FROM runs WHERE checksum = ?");
@@ -280,22 +300,6 @@ ImportOutcome writeRun(RunDatabase::Impl& impl, FileHead& head,
       named.reset();
     }
 
-    // The steps and block rows reference the run row written in this same transaction, so their
-    // per-row foreign-key lookups can be skipped; the pragma only works outside a transaction and
-    // is restored on every path.
-    struct ForeignKeysOff {
-      db::Connection& c;
-      explicit ForeignKeysOff(db::Connection& connection) : c(connection) {
-        c.exec("PRAGMA foreign_keys = OFF");
-      }
-      ~ForeignKeysOff() {
-        try {
-          c.exec("PRAGMA foreign_keys = ON");
-        } catch (const std::exception&) {
-        }
-      }
-    } foreignKeysOff(impl.connection);
-    db::Transaction transaction(impl.connection);
     std::int64_t sceneId = 0;
     if (!head.sceneJson.empty()) {
       impl.statement("INSERT OR IGNORE INTO scenes(name, checksum, json) VALUES(?, ?, ?)")

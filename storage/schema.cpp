@@ -189,26 +189,33 @@ std::filesystem::path backupPath(const std::filesystem::path& dbPath, int versio
   return candidate;
 }
 
+namespace {
+
+// The identity and version checks, on what the connection sees now. Throws DbError.
+void checkMigratable(Connection& connection, int version, const std::string& name) {
+  if (version > kSchemaVersion) {
+    throw DbError(name, "schema version " + std::to_string(version) + ", newer than version " +
+                            std::to_string(kSchemaVersion) +
+                            " that this program understands; use a newer tactile");
+  }
+  const auto applicationId = connection.queryInt("PRAGMA application_id");
+  if (applicationId != 0 && applicationId != kApplicationId) {
+    throw DbError(name, "an SQLite database of another application, not a Tactile database");
+  }
+  if (version == 0 && connection.queryInt("SELECT count(*) FROM sqlite_schema") != 0) {
+    throw DbError(name, "holds tables but no Tactile schema version; not a Tactile database");
+  }
+}
+
+}  // namespace
+
 MigrationReport migrate(Connection& connection, const std::filesystem::path& dbPath,
                         int targetVersion) {
   MigrationReport report;
   report.fromVersion = schemaVersion(connection);
   report.toVersion = report.fromVersion;
   const std::string name = dbPath.string();
-  if (report.fromVersion > kSchemaVersion) {
-    throw DbError("database '" + name + "' has schema version " +
-                  std::to_string(report.fromVersion) + ", newer than version " +
-                  std::to_string(kSchemaVersion) +
-                  " that this program understands; use a newer tactile");
-  }
-  const auto applicationId = connection.queryInt("PRAGMA application_id");
-  if (applicationId != 0 && applicationId != kApplicationId) {
-    throw DbError("'" + name + "' is an SQLite database of another application, not a tactile one");
-  }
-  if (report.fromVersion == 0 && connection.queryInt("SELECT count(*) FROM sqlite_schema") != 0) {
-    throw DbError("'" + name +
-                  "' holds tables but no tactile schema version; not a tactile database");
-  }
+  checkMigratable(connection, report.fromVersion, name);
   if (report.fromVersion >= targetVersion) return report;
 
   const bool inMemory = name.empty() || name == ":memory:";
@@ -216,14 +223,31 @@ MigrationReport migrate(Connection& connection, const std::filesystem::path& dbP
     report.backupPath = backupPath(dbPath, report.fromVersion);
     backupTo(connection, report.backupPath);
   }
+  // Several processes may open a new or old file at once: the write lock is taken first
+  // (BEGIN IMMEDIATE waits through the busy timeout) and the version read again inside it, so only
+  // the first one migrates and the others find the work done.
   Transaction transaction(connection);
+  const int current = schemaVersion(connection);
+  checkMigratable(connection, current, name);
+  if (current >= targetVersion) {
+    transaction.rollback();
+    if (!report.backupPath.empty()) {
+      std::error_code ec;
+      std::filesystem::remove(report.backupPath, ec);  // another process migrated and kept one
+      report.backupPath.clear();
+    }
+    report.fromVersion = current;
+    report.toVersion = current;
+    return report;
+  }
+  report.fromVersion = current;
   for (const Migration& migration : kMigrations) {
     if (migration.version <= report.fromVersion || migration.version > targetVersion) continue;
     try {
       connection.exec(migration.sql);
     } catch (const DbError& e) {
-      throw DbError("migration to schema version " + std::to_string(migration.version) + " (" +
-                    std::string(migration.description) + ") failed: " + e.what());
+      throw DbError(name, "migration to schema version " + std::to_string(migration.version) +
+                              " (" + std::string(migration.description) + ") failed: " + e.what());
     }
   }
   connection.exec("PRAGMA application_id = " + std::to_string(kApplicationId));

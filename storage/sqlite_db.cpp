@@ -2,15 +2,49 @@
 
 #include <sqlite3.h>
 
+#include <mutex>
+#include <unordered_map>
 #include <utility>
 
 namespace tactile::db {
 namespace {
 
+// The file each open handle was opened with, so that a failing statement (which knows only its
+// handle) can name its database. Touched on open, close and errors only.
+std::mutex gFilesMutex;
+std::unordered_map<sqlite3*, std::string>& openFiles() {
+  static std::unordered_map<sqlite3*, std::string> files;
+  return files;
+}
+
+std::string fileOf(sqlite3* db) {
+  if (db == nullptr) return {};
+  std::lock_guard lock(gFilesMutex);
+  const auto it = openFiles().find(db);
+  return it == openFiles().end() ? std::string() : it->second;
+}
+
 [[noreturn]] void fail(sqlite3* db, const std::string& what, std::string_view sql = {}) {
   std::string message = what + ": " + (db != nullptr ? sqlite3_errmsg(db) : "out of memory");
   if (!sql.empty()) message += " (in: " + std::string(sql.substr(0, 200)) + ")";
-  throw DbError(message);
+  throw DbError(fileOf(db), message);
+}
+
+// "file:" URI of a path (RFC 3986 escapes for the characters SQLite's URI parser treats
+// specially), with `query`.
+std::string fileUri(const std::filesystem::path& path, const char* query) {
+  std::string uri = "file:";
+  for (const char ch : path.string()) {
+    if (ch == '%' || ch == '?' || ch == '#') {
+      static const char* const kHex = "0123456789ABCDEF";
+      uri += '%';
+      uri += kHex[(static_cast<unsigned char>(ch) >> 4) & 15];
+      uri += kHex[static_cast<unsigned char>(ch) & 15];
+    } else {
+      uri += ch;
+    }
+  }
+  return uri + "?" + query;
 }
 
 }  // namespace
@@ -19,6 +53,10 @@ namespace {
 // Connection
 
 Connection Connection::open(const std::filesystem::path& path, bool create, bool readOnly) {
+  return open(path, create, readOnly ? Access::ReadOnly : Access::ReadWrite);
+}
+
+Connection Connection::open(const std::filesystem::path& path, bool create, Access access) {
   // Once per process, before SQLite initialises: no allocation statistics (they take a global
   // mutex on every malloc, ~6% of bulk insert time), and connections that are each used by one
   // thread at a time. Fails harmlessly if someone else initialised SQLite first.
@@ -28,35 +66,63 @@ Connection Connection::open(const std::filesystem::path& path, bool create, bool
     return true;
   }();
   (void)configured;
+  const bool readOnly = access != Access::ReadWrite;
   int flags = readOnly ? SQLITE_OPEN_READONLY : SQLITE_OPEN_READWRITE;
   if (create && !readOnly) flags |= SQLITE_OPEN_CREATE;
   // Each connection is used from one thread at a time; no SQLite-level mutexes needed.
   flags |= SQLITE_OPEN_NOMUTEX;
+  std::string name = path.string();
+  if (access == Access::Immutable) {
+    flags |= SQLITE_OPEN_URI;
+    name = fileUri(path, "mode=ro&immutable=1");
+  }
   sqlite3* db = nullptr;
-  const int rc = sqlite3_open_v2(path.c_str(), &db, flags, nullptr);
+  const int rc = sqlite3_open_v2(name.c_str(), &db, flags, nullptr);
   if (rc != SQLITE_OK) {
-    std::string message = "cannot open database '" + path.string() +
-                          "': " + (db != nullptr ? sqlite3_errmsg(db) : sqlite3_errstr(rc));
+    std::string message = std::string("cannot open database: ") +
+                          (db != nullptr ? sqlite3_errmsg(db) : sqlite3_errstr(rc));
     sqlite3_close_v2(db);
-    throw DbError(message);
+    throw DbError(path.string(), message);
   }
   sqlite3_extended_result_codes(db, 1);
-  sqlite3_busy_timeout(db, 5000);
-  return Connection(db);
+  // Writers queue for the write lock (BEGIN IMMEDIATE, checkpoints, journal mode changes) instead
+  // of failing at once while another process imports.
+  sqlite3_busy_timeout(db, 60000);
+  {
+    std::lock_guard lock(gFilesMutex);
+    openFiles()[db] = path.string();
+  }
+  return Connection(db, path.string());
 }
 
-Connection::Connection(Connection&& other) noexcept : db_(std::exchange(other.db_, nullptr)) {}
+Connection::Connection(Connection&& other) noexcept
+    : db_(std::exchange(other.db_, nullptr)), file_(std::move(other.file_)) {}
 
 Connection& Connection::operator=(Connection&& other) noexcept {
   if (this != &other) {
-    if (db_ != nullptr) sqlite3_close_v2(db_);
+    close();
     db_ = std::exchange(other.db_, nullptr);
+    file_ = std::move(other.file_);
   }
   return *this;
 }
 
 Connection::~Connection() {
-  if (db_ != nullptr) sqlite3_close_v2(db_);
+  close();
+}
+
+void Connection::close() noexcept {
+  if (db_ == nullptr) return;
+  {
+    std::lock_guard lock(gFilesMutex);
+    openFiles().erase(db_);
+  }
+  sqlite3_close_v2(db_);
+  db_ = nullptr;
+}
+
+const std::string& Connection::file() const {
+  return file_;
 }
 
 void Connection::exec(std::string_view sql) {
@@ -65,13 +131,13 @@ void Connection::exec(std::string_view sql) {
   if (sqlite3_exec(db_, text.c_str(), nullptr, nullptr, &error) != SQLITE_OK) {
     std::string message = error != nullptr ? error : sqlite3_errmsg(db_);
     sqlite3_free(error);
-    throw DbError(message + " (in: " + text.substr(0, 200) + ")");
+    throw DbError(file_, message + " (in: " + text.substr(0, 200) + ")");
   }
 }
 
 std::int64_t Connection::queryInt(std::string_view sql) {
   Statement statement(*this, sql);
-  if (!statement.step()) throw DbError("no result (in: " + std::string(sql) + ")");
+  if (!statement.step()) throw DbError(file_, "no result (in: " + std::string(sql) + ")");
   return statement.columnInt(0);
 }
 
@@ -168,7 +234,7 @@ bool Statement::step() {
   const std::string message = std::string("statement failed: ") + sqlite3_errmsg(db_) +
                               " (in: " + std::string(sqlite3_sql(stmt_)).substr(0, 200) + ")";
   sqlite3_reset(stmt_);
-  throw DbError(message);
+  throw DbError(fileOf(db_), message);
 }
 
 void Statement::run() {
@@ -248,7 +314,8 @@ void backupTo(Connection& source, const std::filesystem::path& target) {
   const int rc = sqlite3_backup_step(backup, -1);
   sqlite3_backup_finish(backup);
   if (rc != SQLITE_DONE) {
-    throw DbError("backup to '" + target.string() + "' failed: " + sqlite3_errstr(rc));
+    throw DbError(source.file(),
+                  "backup to '" + target.string() + "' failed: " + sqlite3_errstr(rc));
   }
 }
 

@@ -11,15 +11,30 @@
 #include <stdexcept>
 #include <string>
 #include <string_view>
+#include <utility>
 
 struct sqlite3;
 struct sqlite3_stmt;
 
 namespace tactile::db {
 
-// A failed SQLite call: the message names the operation, SQLite's own text and the SQL when known.
+// A failed SQLite call: the message names the operation, SQLite's own text and the SQL when known;
+// `file` is the database file as it was given to Connection::open (empty when not known), so that
+// every error can name the database it is about.
 struct DbError : std::runtime_error {
   using std::runtime_error::runtime_error;
+  DbError(std::string file_, const std::string& message)
+      : std::runtime_error(message), file(std::move(file_)) {}
+  std::string file;
+};
+
+// How a connection opens its file.
+enum class Access {
+  ReadWrite,  // read and write (with `create`, the file is made when absent)
+  ReadOnly,   // SQLITE_OPEN_READONLY: never writes the database; WAL needs a -shm file
+  // Read-only and `immutable=1`: no locks and no -shm/-wal files at all, for a database in a
+  // folder this process cannot write (docs/storage.md#opening). A -wal file's content is not seen.
+  Immutable,
 };
 
 // One open database handle. Move-only; closes on destruction.
@@ -27,8 +42,9 @@ class Connection {
  public:
   Connection() = default;
   // Opens (and with `create`, creates) a database file; ":memory:" opens a private in-memory one.
-  // `readOnly` opens without write access. Throws DbError.
+  // `readOnly` opens without write access. Throws DbError (naming `path`).
   static Connection open(const std::filesystem::path& path, bool create, bool readOnly = false);
+  static Connection open(const std::filesystem::path& path, bool create, Access access);
 
   Connection(Connection&& other) noexcept;
   Connection& operator=(Connection&& other) noexcept;
@@ -46,10 +62,14 @@ class Connection {
   std::int64_t lastInsertRowId() const;
   int changes() const;
   std::string errorMessage() const;
+  // The database file as given to open() (":memory:" for a private in-memory one).
+  const std::string& file() const;
 
  private:
-  explicit Connection(sqlite3* db) : db_(db) {}
+  Connection(sqlite3* db, std::string file) : db_(db), file_(std::move(file)) {}
+  void close() noexcept;
   sqlite3* db_ = nullptr;
+  std::string file_;
 };
 
 // A prepared statement. Bind indices are 1-based, column indices 0-based (as in SQLite). step()

@@ -4,8 +4,13 @@
 #include <CLI/CLI.hpp>
 
 #include <functional>
+#include <memory>
 #include <string>
 #include <string_view>
+
+namespace tactile::storage {
+class RunDatabase;
+}  // namespace tactile::storage
 
 namespace tactile::cli {
 
@@ -32,6 +37,18 @@ void setAction(CLI::App* command, std::function<int()> fn);
 
 // Registers a verb that exists in the contract but is not built yet: it says so and exits 2.
 CLI::App* addPlannedVerb(CLI::App& parent, const std::string& name, const std::string& description);
+
+// Opening the database of a verb's --db (defined in cli_storage.cpp; docs/storage.md#opening).
+// Each throws std::runtime_error with the text the CLI prints ("DB: no such database" for a
+// missing file, "DB: ..." for anything else) and creates no file unless it says so.
+//  - openDatabaseForRead: read-only verbs (list, export, report, classify, db check); works on a
+//    read-only file in a read-only folder.
+//  - openDatabaseForWrite: verbs that change an existing database (rename, delete, ...).
+//  - openDatabaseOrCreate: only import, autolabel, labels import, models import, train, sweep and
+//    db create; makes the file when absent. Migrations print a warning naming the backup.
+std::unique_ptr<storage::RunDatabase> openDatabaseForRead(const std::string& path);
+std::unique_ptr<storage::RunDatabase> openDatabaseForWrite(const std::string& path);
+std::unique_ptr<storage::RunDatabase> openDatabaseOrCreate(const std::string& path);
 
 // Verb registration, one function per part (each in its own cli_*.cpp file). `bench` is the
 // `tactile bench` command; each part adds its own benchmark under it.

@@ -26,17 +26,36 @@ namespace {
 
 namespace fs = std::filesystem;
 using storage::ImportStatus;
+using storage::OpenMode;
 using storage::RunDatabase;
 
-std::unique_ptr<RunDatabase> openDatabase(const std::string& path) {
-  auto db = RunDatabase::open(path);
-  if (!db) throw std::runtime_error(db.errorText());
+std::unique_ptr<RunDatabase> openDatabase(const std::string& path, OpenMode mode) {
+  auto db = RunDatabase::open(path, mode);
+  if (!db) {
+    // Every open error names the file (Error::file); the CLI prints "DB: message".
+    const Error& error = db.error();
+    throw std::runtime_error(error.file.empty() ? path + ": " + error.message : error.text());
+  }
   if (!db.value()->migrationBackup().empty()) {
     printWarning("migrated '" + path + "' to the current schema; the old file was copied to " +
                  db.value()->migrationBackup().string());
   }
   return std::move(db.value());
 }
+
+}  // namespace
+
+std::unique_ptr<RunDatabase> openDatabaseForRead(const std::string& path) {
+  return openDatabase(path, OpenMode::ReadOnly);
+}
+std::unique_ptr<RunDatabase> openDatabaseForWrite(const std::string& path) {
+  return openDatabase(path, OpenMode::ReadWrite);
+}
+std::unique_ptr<RunDatabase> openDatabaseOrCreate(const std::string& path) {
+  return openDatabase(path, OpenMode::Create);
+}
+
+namespace {
 
 void printJson(const nlohmann::json& doc) {
   std::printf("%s\n", doc.dump().c_str());
@@ -94,7 +113,7 @@ int runImport(const ImportArgs& a) {
   if (a.prefix.find_first_of(",\r\n") != std::string::npos) {
     throw UsageError("--prefix must not hold a comma or line break");
   }
-  auto db = openDatabase(a.db);
+  auto db = openDatabaseOrCreate(a.db);
   storage::ImportOptions options;
   options.name = a.name;
   options.namePrefix = a.prefix;
@@ -153,7 +172,7 @@ int runImport(const ImportArgs& a) {
 // ---- export-run ------------------------------------------------------------------------------
 
 int runExport(const std::string& dbPath, const std::string& runName, const std::string& out) {
-  auto db = openDatabase(dbPath);
+  auto db = openDatabaseForRead(dbPath);
   auto run = db->findRun(runName);
   if (!run) throw std::runtime_error(dbPath + ": " + run.errorText());
   const auto status = db->exportRun(run->id, out);
@@ -166,7 +185,7 @@ int runExport(const std::string& dbPath, const std::string& runName, const std::
 int runAutolabel(const std::string& dbPath, const std::string& runName, bool all,
                  const std::string& set, bool json) {
   if (all == !runName.empty()) throw UsageError("give exactly one of --run NAME or --all");
-  auto db = openDatabase(dbPath);
+  auto db = openDatabaseOrCreate(dbPath);
   std::vector<storage::RunInfo> runs;
   if (all) {
     auto listed = db->listRuns();
@@ -208,7 +227,7 @@ int runAutolabel(const std::string& dbPath, const std::string& runName, bool all
 // ---- db check --------------------------------------------------------------------------------
 
 int runCheck(const std::string& dbPath, bool json) {
-  auto db = openDatabase(dbPath);
+  auto db = openDatabaseForRead(dbPath);
   const storage::IntegrityReport report = db->check();
   if (json) {
     printJson({{"ok", report.ok},
@@ -314,7 +333,7 @@ int runBenchStorage(const BenchArgs& a) {
   double importSeconds = 0.0;
   double importCpu = 0.0;
   {
-    auto db = openDatabase(dbPath.string());
+    auto db = openDatabaseOrCreate(dbPath.string());
     const auto t0 = std::chrono::steady_clock::now();
     const double cpu0 = cpuSeconds(RUSAGE_SELF);
     const auto outcomes = db->importFiles(files);
@@ -354,7 +373,7 @@ int runBenchStorage(const BenchArgs& a) {
         writeRunCsv(storage::makeSyntheticRun(static_cast<std::size_t>(a.bigSteps), 7), big);
     if (!error.empty()) throw std::runtime_error(big.string() + ": " + error);
   }
-  auto db = openDatabase(dbPath.string());
+  auto db = openDatabaseOrCreate(dbPath.string());
   {
     const auto t0 = std::chrono::steady_clock::now();
     const double cpu0 = cpuSeconds(RUSAGE_SELF);
