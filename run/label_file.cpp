@@ -89,20 +89,17 @@ std::string parseProvenanceLine(std::string_view line, LabelRunProvenance& entry
 
 }  // namespace
 
-const LabelRunProvenance* findProvenance(const LabelFileResult& file, std::string_view run) {
+const LabelRunProvenance* findProvenance(const LabelFile& file, std::string_view run) {
   for (const LabelRunProvenance& p : file.runs) {
     if (p.name == run) return &p;
   }
   return nullptr;
 }
 
-LabelFileResult parseLabelCsv(std::string_view text, std::string_view fileName) {
-  LabelFileResult result;
+Result<LabelFile> parseLabelCsv(std::string_view text, std::string_view fileName) {
+  LabelFile result;
   auto fail = [&](std::size_t line, const std::string& message) {
-    result.records.clear();
-    result.runs.clear();
-    result.error = std::string(fileName) + ":" + std::to_string(line) + ": " + message;
-    return result;
+    return Error(std::string(fileName), line, 0, message);
   };
   if (text.starts_with("\xEF\xBB\xBF")) text.remove_prefix(3);
   // Column positions by name: run, group, first_step, last_step, class, annotator (optional).
@@ -180,33 +177,28 @@ LabelFileResult parseLabelCsv(std::string_view text, std::string_view fileName) 
   return result;
 }
 
-LabelFileResult parseLabelJson(std::string_view text, std::string_view fileName) {
-  LabelFileResult result;
+Result<LabelFile> parseLabelJson(std::string_view text, std::string_view fileName) {
+  LabelFile result;
   const std::string name(fileName);
   nlohmann::json doc = nlohmann::json::parse(text, nullptr, false);
   if (doc.is_discarded()) {
-    result.error = name + ": not valid JSON";
-    return result;
+    return Error(name, "not valid JSON");
   }
   const nlohmann::json* segments = &doc;
   if (doc.is_object()) {
     if (doc.contains("format") && doc["format"] != "tactile-labels") {
-      result.error = name + ": format is not \"tactile-labels\"";
-      return result;
+      return Error(name, "format is not \"tactile-labels\"");
     }
     if (doc.contains("version") && doc["version"] != 1) {
-      result.error = name + ": unsupported label file version " + doc["version"].dump();
-      return result;
+      return Error(name, "unsupported label file version " + doc["version"].dump());
     }
     if (!doc.contains("segments")) {
-      result.error = name + ": missing \"segments\"";
-      return result;
+      return Error(name, "missing \"segments\"");
     }
     segments = &doc["segments"];
     if (doc.contains("runs")) {
       if (!doc["runs"].is_array()) {
-        result.error = name + ": \"runs\" is not an array";
-        return result;
+        return Error(name, "\"runs\" is not an array");
       }
       std::size_t index = 0;
       for (const nlohmann::json& item : doc["runs"]) {
@@ -225,16 +217,13 @@ LabelFileResult parseLabelJson(std::string_view text, std::string_view fileName)
           error = addProvenance(result.runs, std::move(entry));
         }
         if (!error.empty()) {
-          result.runs.clear();
-          result.error = name + ": runs entry " + std::to_string(index) + ": " + error;
-          return result;
+          return Error(name, "runs entry " + std::to_string(index) + ": " + error);
         }
       }
     }
   }
   if (!segments->is_array()) {
-    result.error = name + ": \"segments\" is not an array";
-    return result;
+    return Error(name, "\"segments\" is not an array");
   }
   std::size_t index = 0;
   for (const nlohmann::json& item : *segments) {
@@ -242,8 +231,7 @@ LabelFileResult parseLabelJson(std::string_view text, std::string_view fileName)
     auto fail = [&](const std::string& message) {
       result.records.clear();
       result.runs.clear();
-      result.error = name + ": segment " + std::to_string(index) + ": " + message;
-      return result;
+      return Error(name, "segment " + std::to_string(index) + ": " + message);
     };
     if (!item.is_object()) return fail("not an object");
     for (const char* key : {"run", "group", "class"}) {

@@ -10,6 +10,7 @@
 #include <string_view>
 #include <vector>
 
+#include "base/error.h"
 #include "run/contact_class.h"
 #include "run/sensor_layout.h"
 
@@ -38,10 +39,10 @@ struct LabelRunProvenance {
   }
 };
 
-struct LabelFileResult {
+// A parsed label file.
+struct LabelFile {
   std::vector<LabelRecord> records;
   std::vector<LabelRunProvenance> runs;  // in file order; at most one per run name
-  std::string error;                     // "FILE:LINE: ..." when the file was rejected
 };
 
 // CSV: optional comment lines (`#`) before the header, of which `# run NAME steps N checksum HEX`
@@ -49,12 +50,12 @@ struct LabelFileResult {
 // order (annotator optional), one row per segment.
 // Groups by short or long name, classes by exact spelling, 0 <= first_step <= last_step. A UTF-8
 // BOM, CRLF line ends, a missing final newline and trailing blank lines are accepted; a blank line
-// between rows is not. Errors read "FILE:LINE: ...".
-LabelFileResult parseLabelCsv(std::string_view text, std::string_view fileName);
+// between rows is not. Errors name the file and line.
+Result<LabelFile> parseLabelCsv(std::string_view text, std::string_view fileName);
 // JSON: {"format":"tactile-labels","version":1,"set":...,["runs":[{"name","steps","checksum"}],]
 // "segments":[{"run","group","first_step","last_step","class"[,"annotator"]}]} or a bare array of
 // such segment objects.
-LabelFileResult parseLabelJson(std::string_view text, std::string_view fileName);
+Result<LabelFile> parseLabelJson(std::string_view text, std::string_view fileName);
 
 // The annotator column is written only when some record has one; provenance lines (CSV) or the
 // `runs` array (JSON) only when `runs` is not empty.
@@ -65,6 +66,6 @@ std::string formatLabelJson(const std::vector<LabelRecord>& records, std::string
                             const std::vector<LabelRunProvenance>& runs = {});
 
 // The provenance entry for `run`, or nullptr.
-const LabelRunProvenance* findProvenance(const LabelFileResult& file, std::string_view run);
+const LabelRunProvenance* findProvenance(const LabelFile& file, std::string_view run);
 
 }  // namespace tactile

@@ -308,9 +308,10 @@ Result<std::int64_t> RunDatabase::importLabels(const std::string& setName,
     std::string text;
     std::string error;
     if (!readFileText(file, text, error)) throw db::DbError(file.string() + ": " + error);
-    LabelFileResult parsed =
+    Result<LabelFile> read =
         isJsonPath(file) ? parseLabelJson(text, file.string()) : parseLabelCsv(text, file.string());
-    if (!parsed.error.empty()) throw db::DbError(parsed.error);
+    if (!read) throw db::DbError(read.errorText());
+    const LabelFile& parsed = read.value();
     db::Transaction transaction(impl_->connection);
     // Provenance: the file was made for runs of this step count and checksum; a stored run of
     // the same name with other content is not the run the labels are about.

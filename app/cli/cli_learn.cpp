@@ -59,13 +59,13 @@ void readRuns(const std::vector<std::string>& paths, LoadedRuns& out) {
 
 // A label file, CSV or JSON by its extension, through the one label-file reader: its segments
 // and the provenance of its runs.
-LabelFileResult readLabels(const std::string& path) {
+LabelFile readLabels(const std::string& path) {
   std::string text, error;
   if (!readFileText(path, text, error)) throw std::runtime_error(path + ": " + error);
   const bool json = std::filesystem::path(path).extension() == ".json";
-  LabelFileResult parsed = json ? parseLabelJson(text, path) : parseLabelCsv(text, path);
-  if (!parsed.error.empty()) throw std::runtime_error(parsed.error);
-  return parsed;
+  Result<LabelFile> parsed = json ? parseLabelJson(text, path) : parseLabelCsv(text, path);
+  if (!parsed) throw std::runtime_error(parsed.errorText());
+  return std::move(parsed.value());
 }
 
 // The label run each loaded run file gets ("" for none; docs/analysis.md#label-files). A label run
@@ -74,7 +74,7 @@ LabelFileResult readLabels(const std::string& path) {
 // their bytes match, and a file that matches by name but not by content is an error naming both
 // values. Two files matching one label run, or one file matching two, is an error naming them.
 std::vector<std::string> matchLabelRuns(const LoadedRuns& loaded, const std::string& labelsPath,
-                                        const LabelFileResult& file) {
+                                        const LabelFile& file) {
   std::vector<std::string> names;  // label runs in file order, each once
   auto note = [&](const std::string& name) {
     if (std::find(names.begin(), names.end(), name) == names.end()) names.push_back(name);
@@ -147,7 +147,7 @@ std::vector<std::string> matchLabelRuns(const LoadedRuns& loaded, const std::str
 // Labels of each loaded run: from the label file when given (matched by matchLabelRuns), else
 // from the run's truth columns.
 void attachLabels(LoadedRuns& loaded, const std::string& labelsPath) {
-  LabelFileResult file;
+  LabelFile file;
   std::vector<std::string> nameOf(loaded.runs.size());
   if (!labelsPath.empty()) {
     file = readLabels(labelsPath);

@@ -11,66 +11,62 @@ TEST(LabelFile, ParsesSegmentsWithBomCrlfAndAnnotator) {
       "\xEF\xBB\xBFrun,group,first_step,last_step,class,annotator\r\n"
       "r1,R,0,4,Wall,ann\r\n"
       "r1,front-left corner,5,5,Corner,\r\n";
-  const LabelFileResult r = parseLabelCsv(text, "l.csv");
-  ASSERT_TRUE(r.error.empty()) << r.error;
-  ASSERT_EQ(r.records.size(), 2u);
-  EXPECT_EQ(r.records[0].group, SensorGroup::Right);
-  EXPECT_EQ(r.records[0].lastStep, 4);
-  EXPECT_EQ(r.records[0].annotator, "ann");
-  EXPECT_EQ(r.records[1].group, SensorGroup::FrontLeftCorner);
-  EXPECT_EQ(r.records[1].cls, ContactClass::Corner);
+  const auto r = parseLabelCsv(text, "l.csv");
+  ASSERT_TRUE(r.ok()) << r.errorText();
+  ASSERT_EQ(r->records.size(), 2u);
+  EXPECT_EQ(r->records[0].group, SensorGroup::Right);
+  EXPECT_EQ(r->records[0].lastStep, 4);
+  EXPECT_EQ(r->records[0].annotator, "ann");
+  EXPECT_EQ(r->records[1].group, SensorGroup::FrontLeftCorner);
+  EXPECT_EQ(r->records[1].cls, ContactClass::Corner);
 }
 
 TEST(LabelFile, ColumnsFoundByName) {
-  const LabelFileResult r =
-      parseLabelCsv("class,last_step,first_step,group,run\nWall,3,1,L,x\n", "l.csv");
-  ASSERT_TRUE(r.error.empty()) << r.error;
-  EXPECT_EQ(r.records[0].firstStep, 1);
-  EXPECT_EQ(r.records[0].lastStep, 3);
-  EXPECT_EQ(r.records[0].run, "x");
+  const auto r = parseLabelCsv("class,last_step,first_step,group,run\nWall,3,1,L,x\n", "l.csv");
+  ASSERT_TRUE(r.ok()) << r.errorText();
+  EXPECT_EQ(r->records[0].firstStep, 1);
+  EXPECT_EQ(r->records[0].lastStep, 3);
+  EXPECT_EQ(r->records[0].run, "x");
 }
 
 TEST(LabelFile, UnknownClassIsErrorWithLine) {
-  const LabelFileResult r =
+  const auto r =
       parseLabelCsv("run,group,first_step,last_step,class\nr,R,0,1,Wall\nr,R,2,3,wall\n", "l.csv");
-  EXPECT_FALSE(r.error.empty());
-  EXPECT_NE(r.error.find("l.csv:3:"), std::string::npos) << r.error;
-  EXPECT_NE(r.error.find("class"), std::string::npos);
+  EXPECT_FALSE(r.ok());
+  EXPECT_NE(r.errorText().find("l.csv:3:"), std::string::npos) << r.errorText();
+  EXPECT_NE(r.errorText().find("class"), std::string::npos);
 }
 
 TEST(LabelFile, LastBeforeFirstIsError) {
-  const LabelFileResult r =
-      parseLabelCsv("run,group,first_step,last_step,class\nr,R,5,4,Wall\n", "l.csv");
-  EXPECT_FALSE(r.error.empty());
-  EXPECT_NE(r.error.find("l.csv:2:"), std::string::npos) << r.error;
+  const auto r = parseLabelCsv("run,group,first_step,last_step,class\nr,R,5,4,Wall\n", "l.csv");
+  EXPECT_FALSE(r.ok());
+  EXPECT_NE(r.errorText().find("l.csv:2:"), std::string::npos) << r.errorText();
 }
 
 TEST(LabelFile, UnknownGroupIsError) {
-  const LabelFileResult r =
-      parseLabelCsv("run,group,first_step,last_step,class\nr,X,0,1,Wall\n", "l.csv");
-  EXPECT_FALSE(r.error.empty());
-  EXPECT_NE(r.error.find("group"), std::string::npos);
+  const auto r = parseLabelCsv("run,group,first_step,last_step,class\nr,X,0,1,Wall\n", "l.csv");
+  EXPECT_FALSE(r.ok());
+  EXPECT_NE(r.errorText().find("group"), std::string::npos);
 }
 
 TEST(LabelFile, MissingColumnIsError) {
-  const LabelFileResult r = parseLabelCsv("run,group,first_step,class\n", "l.csv");
-  EXPECT_FALSE(r.error.empty());
-  EXPECT_NE(r.error.find("last_step"), std::string::npos);
+  const auto r = parseLabelCsv("run,group,first_step,class\n", "l.csv");
+  EXPECT_FALSE(r.ok());
+  EXPECT_NE(r.errorText().find("last_step"), std::string::npos);
 }
 
 TEST(LabelFile, WrongFieldCountIsError) {
-  const LabelFileResult r =
-      parseLabelCsv("run,group,first_step,last_step,class\nr,R,0,1\n", "l.csv");
-  EXPECT_FALSE(r.error.empty());
-  EXPECT_NE(r.error.find("l.csv:2:"), std::string::npos);
+  const auto r = parseLabelCsv("run,group,first_step,last_step,class\nr,R,0,1\n", "l.csv");
+  EXPECT_FALSE(r.ok());
+  EXPECT_NE(r.errorText().find("l.csv:2:"), std::string::npos);
 }
 
 TEST(LabelFile, TrailingBlankLinesAreAcceptedButNotBetweenRows) {
-  EXPECT_TRUE(parseLabelCsv("run,group,first_step,last_step,class\nr,R,0,1,Wall\n\n", "l.csv")
-                  .error.empty());
-  const LabelFileResult r = parseLabelCsv(
+  EXPECT_TRUE(
+      parseLabelCsv("run,group,first_step,last_step,class\nr,R,0,1,Wall\n\n", "l.csv").ok());
+  const auto r = parseLabelCsv(
       "run,group,first_step,last_step,class\nr,R,0,1,Wall\n\nr,R,2,3,Wall\n", "l.csv");
-  EXPECT_NE(r.error.find("l.csv:3:"), std::string::npos) << r.error;
+  EXPECT_NE(r.errorText().find("l.csv:3:"), std::string::npos) << r.errorText();
 }
 
 TEST(LabelFile, CsvAndJsonRoundTrip) {
@@ -80,17 +76,16 @@ TEST(LabelFile, CsvAndJsonRoundTrip) {
   for (const bool json : {false, true}) {
     const std::string text =
         json ? formatLabelJson(records, "set", "ann") : formatLabelCsv(records);
-    const LabelFileResult back =
-        json ? parseLabelJson(text, "l.json") : parseLabelCsv(text, "l.csv");
-    ASSERT_TRUE(back.error.empty()) << back.error;
-    ASSERT_EQ(back.records.size(), records.size());
+    const auto back = json ? parseLabelJson(text, "l.json") : parseLabelCsv(text, "l.csv");
+    ASSERT_TRUE(back.ok()) << back.errorText();
+    ASSERT_EQ(back->records.size(), records.size());
     for (std::size_t i = 0; i < records.size(); ++i) {
-      EXPECT_EQ(back.records[i].run, records[i].run);
-      EXPECT_EQ(back.records[i].group, records[i].group);
-      EXPECT_EQ(back.records[i].firstStep, records[i].firstStep);
-      EXPECT_EQ(back.records[i].lastStep, records[i].lastStep);
-      EXPECT_EQ(back.records[i].cls, records[i].cls);
-      EXPECT_EQ(back.records[i].annotator, records[i].annotator);
+      EXPECT_EQ(back->records[i].run, records[i].run);
+      EXPECT_EQ(back->records[i].group, records[i].group);
+      EXPECT_EQ(back->records[i].firstStep, records[i].firstStep);
+      EXPECT_EQ(back->records[i].lastStep, records[i].lastStep);
+      EXPECT_EQ(back->records[i].cls, records[i].cls);
+      EXPECT_EQ(back->records[i].annotator, records[i].annotator);
     }
   }
 }
@@ -110,31 +105,29 @@ TEST(LabelFile, ProvenanceRoundTripsInCsvAndJson) {
   for (const bool json : {false, true}) {
     SCOPED_TRACE(json ? "json" : "csv");
     const std::string text = json ? formatLabelJson(records, "set", "", runs) : csv;
-    const LabelFileResult back =
-        json ? parseLabelJson(text, "l.json") : parseLabelCsv(text, "l.csv");
-    ASSERT_TRUE(back.error.empty()) << back.error;
-    EXPECT_EQ(back.runs, runs);
-    ASSERT_EQ(back.records.size(), 1u);
-    EXPECT_EQ(back.records[0].run, "room1 run_0000");
-    ASSERT_NE(findProvenance(back, "other"), nullptr);
-    EXPECT_EQ(findProvenance(back, "other")->steps, 0);
-    EXPECT_EQ(findProvenance(back, "ghost"), nullptr);
+    const auto back = json ? parseLabelJson(text, "l.json") : parseLabelCsv(text, "l.csv");
+    ASSERT_TRUE(back.ok()) << back.errorText();
+    EXPECT_EQ(back->runs, runs);
+    ASSERT_EQ(back->records.size(), 1u);
+    EXPECT_EQ(back->records[0].run, "room1 run_0000");
+    ASSERT_NE(findProvenance(back.value(), "other"), nullptr);
+    EXPECT_EQ(findProvenance(back.value(), "other")->steps, 0);
+    EXPECT_EQ(findProvenance(back.value(), "ghost"), nullptr);
   }
-  EXPECT_EQ(parseLabelCsv(csv, "l.csv").runs[1].line, 2u);
+  EXPECT_EQ(parseLabelCsv(csv, "l.csv")->runs[1].line, 2u);
 }
 
 TEST(LabelFile, FilesWithoutProvenanceAndOtherCommentsAreRead) {
-  const LabelFileResult plain =
-      parseLabelCsv("run,group,first_step,last_step,class\nr,R,0,1,Wall\n", "l.csv");
-  ASSERT_TRUE(plain.error.empty()) << plain.error;
-  EXPECT_TRUE(plain.runs.empty());
-  const LabelFileResult commented = parseLabelCsv(
+  const auto plain = parseLabelCsv("run,group,first_step,last_step,class\nr,R,0,1,Wall\n", "l.csv");
+  ASSERT_TRUE(plain.ok()) << plain.errorText();
+  EXPECT_TRUE(plain->runs.empty());
+  const auto commented = parseLabelCsv(
       "# made by hand\n#run-less note\nrun,group,first_step,last_step,class\nr,R,0,1,Wall\n",
       "l.csv");
-  ASSERT_TRUE(commented.error.empty()) << commented.error;
-  EXPECT_TRUE(commented.runs.empty());
-  EXPECT_EQ(commented.records.size(), 1u);
-  EXPECT_EQ(commented.records[0].line, 4u);
+  ASSERT_TRUE(commented.ok()) << commented.errorText();
+  EXPECT_TRUE(commented->runs.empty());
+  EXPECT_EQ(commented->records.size(), 1u);
+  EXPECT_EQ(commented->records[0].line, 4u);
 }
 
 TEST(LabelFile, MalformedProvenanceIsAnErrorWithItsLine) {
@@ -145,29 +138,27 @@ TEST(LabelFile, MalformedProvenanceIsAnErrorWithItsLine) {
         "# run steps 10 checksum 0123456789abcdef\n",
         "# run r steps 10 checksum 0123456789ABCDEF\n"}) {
     SCOPED_TRACE(bad);
-    const LabelFileResult r = parseLabelCsv("# ok\n" + std::string(bad) + header, "l.csv");
-    EXPECT_EQ(r.error.rfind("l.csv:2: ", 0), 0u) << r.error;
-    EXPECT_TRUE(r.records.empty());
-    EXPECT_TRUE(r.runs.empty());
+    const auto r = parseLabelCsv("# ok\n" + std::string(bad) + header, "l.csv");
+    EXPECT_EQ(r.errorText().rfind("l.csv:2: ", 0), 0u) << r.errorText();
   }
-  const LabelFileResult twice = parseLabelCsv(
+  const auto twice = parseLabelCsv(
       "# run r steps 1 checksum 0123456789abcdef\n"
       "# run r steps 1 checksum 0123456789abcdef\n" +
           header,
       "l.csv");
-  EXPECT_EQ(twice.error.rfind("l.csv:2: second provenance entry for run 'r'", 0), 0u)
-      << twice.error;
-  EXPECT_FALSE(parseLabelCsv("# run r steps 1 checksum 0123456789abcdef\n", "l.csv").error.empty());
+  EXPECT_EQ(twice.errorText().rfind("l.csv:2: second provenance entry for run 'r'", 0), 0u)
+      << twice.errorText();
+  EXPECT_FALSE(parseLabelCsv("# run r steps 1 checksum 0123456789abcdef\n", "l.csv").ok());
 }
 
 TEST(LabelFile, MalformedJsonProvenanceIsAnError) {
-  const LabelFileResult r = parseLabelJson(
+  const auto r = parseLabelJson(
       R"({"runs":[{"name":"r","steps":1,"checksum":"0123456789abcdef"},{"name":"s","steps":"1","checksum":"0123456789abcdef"}],"segments":[]})",
       "l.json");
-  EXPECT_EQ(r.error,
+  EXPECT_EQ(r.errorText(),
             "l.json: runs entry 2: expected {\"name\": text, \"steps\": integer, "
             "\"checksum\": text}");
-  EXPECT_TRUE(r.runs.empty());
+  EXPECT_EQ(r.error().file, "l.json");
 }
 
 }  // namespace

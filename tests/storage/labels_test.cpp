@@ -243,9 +243,10 @@ TEST_F(LabelsTest, ExportCarriesEachRunsStepsAndChecksum) {
             0u)
       << csv;
   ASSERT_TRUE(db_->exportLabels("main", dir_ / "p.json").ok());
-  const LabelFileResult json = parseLabelJson(readText(dir_ / "p.json"), "p.json");
-  ASSERT_TRUE(json.error.empty()) << json.error;
-  EXPECT_EQ(json.runs, (std::vector<LabelRunProvenance>{{"runA", 200, a, 0}, {"runB", 100, b, 0}}));
+  const auto json = parseLabelJson(readText(dir_ / "p.json"), "p.json");
+  ASSERT_TRUE(json.ok()) << json.errorText();
+  EXPECT_EQ(json->runs,
+            (std::vector<LabelRunProvenance>{{"runA", 200, a, 0}, {"runB", 100, b, 0}}));
 }
 
 TEST_F(LabelsTest, LabelsForAnotherRunOfTheSameNameAreRefused) {
@@ -339,32 +340,32 @@ TEST_F(LabelsTest, AutolabelWithoutTruthFails) {
 TEST(LabelFiles, BomAndCrlfAreAccepted) {
   auto parsed = parseLabelCsv(
       "\xEF\xBB\xBFrun,group,first_step,last_step,class\r\nr,FLC,1,2,DeadPath\r\n", "l.csv");
-  ASSERT_TRUE(parsed.error.empty()) << parsed.error;
-  ASSERT_EQ(parsed.records.size(), 1u);
-  EXPECT_EQ(parsed.records[0].group, SensorGroup::FrontLeftCorner);
-  EXPECT_EQ(parsed.records[0].cls, ContactClass::DeadPath);
+  ASSERT_TRUE(parsed.ok()) << parsed.errorText();
+  ASSERT_EQ(parsed->records.size(), 1u);
+  EXPECT_EQ(parsed->records[0].group, SensorGroup::FrontLeftCorner);
+  EXPECT_EQ(parsed->records[0].cls, ContactClass::DeadPath);
 }
 
 TEST(LabelFiles, EmptyLineIsAnError) {
   auto parsed = parseLabelCsv("run,group,first_step,last_step,class\n\nr,F,1,2,Wall\n", "l.csv");
-  EXPECT_EQ(parsed.error.rfind("l.csv:2:", 0), 0u) << parsed.error;
+  EXPECT_EQ(parsed.errorText().rfind("l.csv:2:", 0), 0u) << parsed.errorText();
 }
 
 TEST(LabelFiles, WrongHeaderIsAnError) {
   auto parsed = parseLabelCsv("run,grp,first_step,last_step,class\n", "l.csv");
-  EXPECT_EQ(parsed.error.rfind("l.csv:1:", 0), 0u) << parsed.error;
+  EXPECT_EQ(parsed.errorText().rfind("l.csv:1:", 0), 0u) << parsed.errorText();
 }
 
 TEST(LabelFiles, EmptyFileIsAnError) {
-  EXPECT_FALSE(parseLabelCsv("", "e.csv").error.empty());
+  EXPECT_FALSE(parseLabelCsv("", "e.csv").ok());
 }
 
 TEST(LabelFiles, JsonWithBadFieldNamesTheSegment) {
   auto parsed = parseLabelJson(
       R"({"format":"tactile-labels","version":1,"segments":[{"run":"r","group":"F","first_step":0,"last_step":1,"class":"Wall"},{"run":"r","group":"F","first_step":"x","last_step":1,"class":"Wall"}]})",
       "l.json");
-  EXPECT_NE(parsed.error.find("segment 2"), std::string::npos) << parsed.error;
-  EXPECT_TRUE(parsed.records.empty());
+  EXPECT_NE(parsed.errorText().find("segment 2"), std::string::npos) << parsed.errorText();
+  EXPECT_FALSE(parsed.ok());
 }
 
 }  // namespace
