@@ -239,19 +239,11 @@ struct TrainArgs {
   bool json = false;
 };
 
-// Fails unless a database file exists at `path` (verbs that must not create one).
-void requireDatabase(const std::string& path) {
-  std::error_code ec;
-  if (!std::filesystem::exists(path, ec)) throw std::runtime_error(path + ": no such database");
-}
-
+// The workspace of a verb's --db: training and sweeping may create the database, reading verbs
+// (report, classify) open it read-only.
 std::unique_ptr<workspace::Workspace> openWorkspace(const std::string& path, bool create) {
-  if (!create) requireDatabase(path);
-  storage::OpenOptions options;
-  options.create = create;
-  auto ws = workspace::Workspace::open(path, options);
-  if (!ws) throw std::runtime_error(ws.errorText());
-  return std::move(ws.value());
+  return std::make_unique<workspace::Workspace>(create ? openDatabaseOrCreate(path)
+                                                       : openDatabaseForRead(path));
 }
 
 void checkOutput(const std::string& path) {

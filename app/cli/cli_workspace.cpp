@@ -19,19 +19,6 @@ namespace tactile::cli {
 namespace {
 
 using nlohmann::json;
-using storage::RunDatabase;
-
-std::unique_ptr<RunDatabase> openDb(const std::string& path, bool create) {
-  std::error_code ec;
-  if (!create && !std::filesystem::exists(path, ec)) {
-    throw std::runtime_error(path + ": no such database");
-  }
-  storage::OpenOptions options;
-  options.create = create;
-  auto db = RunDatabase::open(path, options);
-  if (!db) throw std::runtime_error(db.errorText());
-  return std::move(db.value());
-}
 
 json parsedOrNull(const std::string& text) {
   json v = json::parse(text, nullptr, false);
@@ -44,7 +31,7 @@ struct Common {
 };
 
 int modelsList(const Common& c) {
-  auto db = openDb(c.db, false);
+  auto db = openDatabaseForRead(c.db);
   auto models = db->listModels();
   if (!models) throw std::runtime_error(models.errorText());
   json list = json::array();
@@ -87,7 +74,7 @@ int modelsList(const Common& c) {
 int modelsExport(const Common& c, const std::string& name, const std::string& out) {
   const Status writable = checkWritable(out);
   if (!writable) throw std::runtime_error(writable.errorText());
-  auto db = openDb(c.db, false);
+  auto db = openDatabaseForRead(c.db);
   auto text = db->loadModel(name);
   if (!text) throw std::runtime_error(c.db + ": " + text.errorText());
   // Through the one model reader and writer, so the file is exactly what training would write.
@@ -110,7 +97,7 @@ int modelsImport(const Common& c, const std::string& file, std::string name) {
   const Result<analysis::ModelBundle> read = analysis::readModelFile(file);
   if (!read) throw std::runtime_error(read.errorText());
   if (name.empty()) name = std::filesystem::path(file).stem().string();
-  auto db = openDb(c.db, true);
+  auto db = openDatabaseOrCreate(c.db);
   json metrics = json::object();
   for (const analysis::GroupModel& m : read->models)
     metrics[std::string(groupInfo(m.group).shortName)] = m.metrics;
@@ -130,7 +117,7 @@ int modelsImport(const Common& c, const std::string& file, std::string name) {
 }
 
 int modelsDelete(const Common& c, const std::vector<std::string>& names) {
-  auto db = openDb(c.db, false);
+  auto db = openDatabaseForWrite(c.db);
   const Status deleted = db->deleteModels(names);
   if (!deleted) throw std::runtime_error(c.db + ": " + deleted.errorText());
   if (c.json) {
@@ -142,7 +129,7 @@ int modelsDelete(const Common& c, const std::vector<std::string>& names) {
 }
 
 int sweepsList(const Common& c) {
-  auto db = openDb(c.db, false);
+  auto db = openDatabaseForRead(c.db);
   auto sweeps = db->listSweeps();
   if (!sweeps) throw std::runtime_error(sweeps.errorText());
   json list = json::array();
@@ -172,7 +159,7 @@ int sweepsList(const Common& c) {
 }
 
 int sweepsDelete(const Common& c, const std::vector<std::int64_t>& ids) {
-  auto db = openDb(c.db, false);
+  auto db = openDatabaseForWrite(c.db);
   const Status deleted = db->deleteSweeps(ids);
   if (!deleted) throw std::runtime_error(c.db + ": " + deleted.errorText());
   if (c.json) {
