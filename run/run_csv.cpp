@@ -7,6 +7,7 @@
 #include <cerrno>
 #include <charconv>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <cstring>
 #include <string>
@@ -81,6 +82,63 @@ bool classifyColumn(std::string_view name, Column& out) {
     return true;
   }
   return false;
+}
+
+// Offset of the first byte of `text` that does not belong to well-formed UTF-8 (RFC 3629: no
+// overlong forms, no surrogates, nothing above U+10FFFF), or npos when it is all valid. Only text
+// fields go through here (metadata, the header, x_ values); numbers are parsed strictly instead.
+std::size_t invalidUtf8At(std::string_view text) {
+  const auto* s = reinterpret_cast<const unsigned char*>(text.data());
+  const std::size_t n = text.size();
+  std::size_t i = 0;
+  while (i < n) {
+    // ASCII runs, eight bytes at a time.
+    while (i + 8 <= n) {
+      std::uint64_t word;
+      std::memcpy(&word, s + i, 8);
+      if ((word & 0x8080808080808080ULL) != 0) break;
+      i += 8;
+    }
+    if (i >= n) break;
+    const unsigned char c = s[i];
+    if (c < 0x80) {
+      ++i;
+      continue;
+    }
+    std::size_t length = 0;
+    unsigned char low = 0x80;
+    unsigned char high = 0xBF;
+    if (c >= 0xC2 && c <= 0xDF) {
+      length = 2;
+    } else if (c >= 0xE0 && c <= 0xEF) {
+      length = 3;
+      if (c == 0xE0) low = 0xA0;   // overlong
+      if (c == 0xED) high = 0x9F;  // surrogates
+    } else if (c >= 0xF0 && c <= 0xF4) {
+      length = 4;
+      if (c == 0xF0) low = 0x90;   // overlong
+      if (c == 0xF4) high = 0x8F;  // above U+10FFFF
+    } else {
+      return i;
+    }
+    if (i + length > n) return i;
+    if (s[i + 1] < low || s[i + 1] > high) return i;
+    for (std::size_t k = 2; k < length; ++k) {
+      if (s[i + k] < 0x80 || s[i + k] > 0xBF) return i;
+    }
+    i += length;
+  }
+  return std::string_view::npos;
+}
+
+// "expected UTF-8 text in WHAT, found an invalid byte 0xHH at byte K OF".
+std::string utf8Message(std::string_view what, std::string_view text, std::size_t at,
+                        std::string_view of = "of the field") {
+  char hex[8];
+  std::snprintf(hex, sizeof hex, "0x%02X",
+                static_cast<unsigned>(static_cast<unsigned char>(text[at])));
+  return "expected UTF-8 text in " + std::string(what) + ", found an invalid byte " + hex +
+         " at byte " + std::to_string(at + 1) + " " + std::string(of);
 }
 
 std::string shown(std::string_view text) {
@@ -222,6 +280,14 @@ class Parser {
     while (cursor_.nextStartsWith('#')) {
       const std::string_view line = cursor_.next();
       const std::size_t lineNo = cursor_.lineNumber();
+      if (const std::size_t bad = invalidUtf8At(line); bad != std::string_view::npos) {
+        const std::size_t colon = line.find(':');
+        std::string what = "the metadata line";
+        if (colon != std::string_view::npos && colon < bad) {
+          what = "the value of metadata key '" + std::string(trim(line.substr(1, colon - 1))) + "'";
+        }
+        return setError(lineNo, utf8Message(what, line, bad, "of the line"));
+      }
       const std::string_view body = line.substr(1);
       const std::size_t colon = body.find(':');
       const std::string_view key =
@@ -284,6 +350,10 @@ class Parser {
           start, comma == std::string_view::npos ? std::string_view::npos : comma - start);
       const int position = static_cast<int>(columns_.size());
       Column column{ColumnKind::Extra, 0, std::string(name)};
+      if (const std::size_t bad = invalidUtf8At(name); bad != std::string_view::npos) {
+        columns_.push_back(Column{ColumnKind::Extra, 0, std::string()});
+        return setError(headerLine_, utf8Message("the column name", name, bad), position);
+      }
       if (name.empty()) {
         columns_.push_back(column);
         return setError(headerLine_, "expected a column name, found an empty field", position);
@@ -552,6 +622,9 @@ class Parser {
         return true;
       }
       case ColumnKind::Extra:
+        if (const std::size_t bad = invalidUtf8At(field); bad != std::string_view::npos) {
+          return setError(lineNo, utf8Message("a text field", field, bad), c);
+        }
         run_.extraValues.emplace_back(field);
         return true;
     }

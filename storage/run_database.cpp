@@ -4,9 +4,11 @@
 
 #include <sqlite3.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <cstring>
 #include <ctime>
+#include <iterator>
 
 #include "storage/database_impl.h"
 #include "storage/schema.h"
@@ -353,6 +355,26 @@ std::int64_t RunDatabase::Impl::runStepCount(std::int64_t runId) {
 
 // ---- check ---------------------------------------------------------------------------------
 
+namespace {
+
+// Counts a problem under its kind and keeps its text while the kind has fewer than
+// kIntegrityCasesKept.
+void addProblem(IntegrityReport& report, const std::string& kind, const std::string& text) {
+  auto it = std::find_if(report.kinds.begin(), report.kinds.end(),
+                         [&](const IntegrityProblemKind& k) { return k.kind == kind; });
+  if (it == report.kinds.end()) {
+    report.kinds.push_back({kind, 0, {}});
+    it = std::prev(report.kinds.end());
+  }
+  ++it->count;
+  if (it->cases.size() < kIntegrityCasesKept) {
+    it->cases.push_back(text);
+    report.problems.push_back(kind + ": " + text);
+  }
+}
+
+}  // namespace
+
 IntegrityReport RunDatabase::check() {
   IntegrityReport report;
   try {
@@ -362,15 +384,18 @@ IntegrityReport RunDatabase::check() {
       db::Statement s(c, "PRAGMA integrity_check");
       while (s.step()) {
         std::string line = s.columnText(0);
-        if (line != "ok") report.problems.push_back("integrity: " + line);
+        if (line != "ok") addProblem(report, "integrity", line);
       }
     }
     {
       db::Statement s(c, "PRAGMA foreign_key_check");
       while (s.step()) {
-        report.problems.push_back("foreign key: table " + s.columnText(0) + " row " +
-                                  std::to_string(s.columnInt(1)) + " refers to a missing " +
-                                  s.columnText(2) + " row");
+        const std::string table = s.columnText(0);
+        const std::string parent = s.columnText(2);
+        const std::string row =
+            s.columnIsNull(1) ? "a row" : "row " + std::to_string(s.columnInt(1));
+        addProblem(report, "foreign key " + table + " -> " + parent,
+                   "table " + table + " " + row + " refers to a missing " + parent + " row");
       }
     }
     report.runs = c.queryInt("SELECT count(*) FROM runs");
@@ -378,13 +403,17 @@ IntegrityReport RunDatabase::check() {
     report.labelSets = c.queryInt("SELECT count(*) FROM label_sets");
     const std::int64_t storedSteps = c.queryInt("SELECT count(*) FROM steps");
     if (storedSteps != report.steps) {
-      report.problems.push_back("runs declare " + std::to_string(report.steps) +
-                                " steps but the steps table holds " + std::to_string(storedSteps));
+      addProblem(report, "step count",
+                 "runs declare " + std::to_string(report.steps) +
+                     " steps but the steps table holds " + std::to_string(storedSteps));
     }
-    report.ok = report.problems.empty() && report.schemaVersion == db::kSchemaVersion;
+    report.ok = report.kinds.empty() && report.schemaVersion == db::kSchemaVersion;
+  } catch (const db::DbError& e) {
+    report.ok = false;
+    addProblem(report, "error", e.what());
   } catch (const std::exception& e) {
     report.ok = false;
-    report.problems.push_back(e.what());
+    addProblem(report, "error", e.what());
   }
   return report;
 }

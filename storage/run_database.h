@@ -170,10 +170,21 @@ struct SweepCellRecord {
   std::string metricsJson;
 };
 
+// Problems of one kind found by RunDatabase::check: how many, and the first few in full.
+struct IntegrityProblemKind {
+  std::string kind;  // e.g. "integrity", "foreign key steps -> runs", "step count"
+  std::int64_t count = 0;
+  std::vector<std::string> cases;  // the first kIntegrityCasesKept, in the order found
+};
+inline constexpr std::size_t kIntegrityCasesKept = 10;
+
 struct IntegrityReport {
   bool ok = false;
   int schemaVersion = 0;
-  std::vector<std::string> problems;  // integrity_check and foreign_key_check findings
+  // integrity_check and foreign_key_check findings: the first kIntegrityCasesKept of each kind
+  // (`kinds` has every count).
+  std::vector<std::string> problems;
+  std::vector<IntegrityProblemKind> kinds;
   std::int64_t runs = 0;
   std::int64_t steps = 0;
   std::int64_t labelSets = 0;

@@ -1,5 +1,5 @@
-// Database verbs: import, export-run, autolabel, db check, bench storage (the `runs` and `labels`
-// verbs are in cli_catalog.cpp).
+// Database verbs: import, export-run, autolabel, db check, db create, bench storage (the `runs` and
+// `labels` verbs are in cli_catalog.cpp).
 #include <sys/resource.h>
 #include <unistd.h>
 
@@ -230,21 +230,61 @@ int runCheck(const std::string& dbPath, bool json) {
   auto db = openDatabaseForRead(dbPath);
   const storage::IntegrityReport report = db->check();
   if (json) {
+    // Every count; the first cases of each kind (storage::kIntegrityCasesKept).
+    nlohmann::json kinds = nlohmann::json::array();
+    for (const storage::IntegrityProblemKind& kind : report.kinds) {
+      kinds.push_back({{"kind", kind.kind},
+                       {"count", kind.count},
+                       {"cases", kind.cases},
+                       {"more", kind.count - static_cast<std::int64_t>(kind.cases.size())}});
+    }
     printJson({{"ok", report.ok},
                {"schema_version", report.schemaVersion},
                {"runs", report.runs},
                {"steps", report.steps},
                {"label_sets", report.labelSets},
+               {"problem_kinds", kinds},
                {"problems", report.problems}});
   } else {
-    for (const std::string& problem : report.problems)
-      printError(dbPath + ": " + problem);
+    // A summary per kind: the count, the first cases, then "and N more" (a damaged table can
+    // have thousands of rows of one kind).
+    for (const storage::IntegrityProblemKind& kind : report.kinds) {
+      printError(dbPath + ": " + std::to_string(kind.count) + " problem" +
+                 (kind.count == 1 ? "" : "s") + " of kind '" + kind.kind + "'");
+      for (const std::string& text : kind.cases)
+        printError(dbPath + ":   " + text);
+      const std::int64_t more = kind.count - static_cast<std::int64_t>(kind.cases.size());
+      if (more > 0) printError(dbPath + ":   and " + std::to_string(more) + " more");
+    }
     std::printf("%s: %s, schema version %d, %lld runs, %lld steps, %lld label sets\n",
                 dbPath.c_str(), report.ok ? "ok" : "DAMAGED", report.schemaVersion,
                 static_cast<long long>(report.runs), static_cast<long long>(report.steps),
                 static_cast<long long>(report.labelSets));
   }
   return report.ok ? kExitOk : kExitFailure;
+}
+
+// ---- db create -------------------------------------------------------------------------------
+
+// Makes a new, empty database (or an empty file into one); an existing Tactile database is left
+// as it is (migrated when older). Anything else is refused unchanged.
+int runCreate(const std::string& dbPath, bool json) {
+  std::error_code ec;
+  const bool existed = fs::exists(dbPath, ec) && fs::file_size(dbPath, ec) > 0;
+  auto db = openDatabaseOrCreate(dbPath);
+  const storage::IntegrityReport report = db->check();
+  if (json) {
+    printJson({{"db", dbPath},
+               {"created", !existed},
+               {"schema_version", report.schemaVersion},
+               {"runs", report.runs}});
+  } else if (existed) {
+    std::printf("%s: already a Tactile database (schema version %d, %lld runs); left as it is\n",
+                dbPath.c_str(), report.schemaVersion, static_cast<long long>(report.runs));
+  } else {
+    std::printf("created %s (schema version %d)\n", dbPath.c_str(), report.schemaVersion);
+  }
+  return kExitOk;
 }
 
 // ---- bench storage ---------------------------------------------------------------------------
@@ -504,11 +544,18 @@ void registerStorageVerbs(CLI::App& app, CLI::App& bench) {
     dbCmd->require_subcommand(1, 1);
     auto path = std::make_shared<std::string>();
     auto json = std::make_shared<bool>(false);
-    CLI::App* check =
-        dbCmd->add_subcommand("check", "Check a database's integrity and schema version");
+    CLI::App* check = dbCmd->add_subcommand(
+        "check", "Check a database's integrity and schema version (opened read-only)");
     check->add_option("--db", *path, "Database file")->required();
     check->add_flag("--json", *json, "Print a JSON report");
     setAction(check, [path, json] { return runCheck(*path, *json); });
+    auto createPath = std::make_shared<std::string>();
+    auto createJson = std::make_shared<bool>(false);
+    CLI::App* create = dbCmd->add_subcommand(
+        "create", "Create an empty database (the verbs that read a database never create one)");
+    create->add_option("--db", *createPath, "Database file to create")->required();
+    create->add_flag("--json", *createJson, "Print a JSON summary");
+    setAction(create, [createPath, createJson] { return runCreate(*createPath, *createJson); });
   }
   {
     auto args = std::make_shared<BenchArgs>();
