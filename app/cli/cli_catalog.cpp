@@ -1,7 +1,6 @@
 // Catalog verbs: runs list|rename|delete and labels list|rename|delete|import|export, so runs and
 // label sets are managed without the sqlite3 shell (docs/storage.md#catalog).
 #include <cstdio>
-#include <filesystem>
 #include <memory>
 #include <nlohmann/json.hpp>
 #include <string>
@@ -15,37 +14,6 @@ namespace tactile::cli {
 void registerCatalogVerbs(CLI::App& app);
 
 namespace {
-
-using storage::RunDatabase;
-
-// Read-only verbs never create a database: a missing file is an error naming it.
-std::unique_ptr<RunDatabase> openForRead(const std::string& path) {
-  std::error_code ec;
-  if (!std::filesystem::exists(path, ec)) throw std::runtime_error(path + ": no such database");
-  storage::OpenOptions options;
-  options.create = false;
-  auto db = RunDatabase::open(path, options);
-  if (!db) throw std::runtime_error(db.errorText());
-  return std::move(db.value());
-}
-
-// Verbs that change a database; the file is created when absent (as `import` does).
-std::unique_ptr<RunDatabase> openForWrite(const std::string& path) {
-  auto db = RunDatabase::open(path);
-  if (!db) throw std::runtime_error(db.errorText());
-  if (!db.value()->migrationBackup().empty()) {
-    printWarning("migrated '" + path + "' to the current schema; the old file was copied to " +
-                 db.value()->migrationBackup().string());
-  }
-  return std::move(db.value());
-}
-
-// Verbs that rename or delete need an existing database: a new empty one has nothing to change.
-std::unique_ptr<RunDatabase> openExisting(const std::string& path) {
-  std::error_code ec;
-  if (!std::filesystem::exists(path, ec)) throw std::runtime_error(path + ": no such database");
-  return openForWrite(path);
-}
 
 void printJson(const nlohmann::json& doc) {
   std::printf("%s\n", doc.dump().c_str());
@@ -61,7 +29,7 @@ std::string joined(const std::vector<std::string>& names) {
 // ---- runs ------------------------------------------------------------------------------------
 
 int runRunsList(const std::string& dbPath, bool json) {
-  auto db = openForRead(dbPath);
+  auto db = openDatabaseForRead(dbPath);
   auto runs = db->runCatalog();
   if (!runs) throw std::runtime_error(runs.errorText());
   if (json) {
@@ -87,7 +55,7 @@ int runRunsList(const std::string& dbPath, bool json) {
 
 int runRunsRename(const std::string& dbPath, const std::string& from, const std::string& to,
                   bool json) {
-  auto db = openExisting(dbPath);
+  auto db = openDatabaseForWrite(dbPath);
   const auto status = db->renameRun(from, to);
   if (!status) throw std::runtime_error(status.errorText());
   if (json) {
@@ -99,7 +67,7 @@ int runRunsRename(const std::string& dbPath, const std::string& from, const std:
 }
 
 int runRunsDelete(const std::string& dbPath, const std::vector<std::string>& names, bool json) {
-  auto db = openExisting(dbPath);
+  auto db = openDatabaseForWrite(dbPath);
   const auto status = db->deleteRuns(names);
   if (!status) throw std::runtime_error(status.errorText());
   if (json) {
@@ -113,7 +81,7 @@ int runRunsDelete(const std::string& dbPath, const std::vector<std::string>& nam
 // ---- labels ----------------------------------------------------------------------------------
 
 int runLabelsList(const std::string& dbPath, bool json) {
-  auto db = openForRead(dbPath);
+  auto db = openDatabaseForRead(dbPath);
   auto sets = db->labelSetCatalog();
   if (!sets) throw std::runtime_error(sets.errorText());
   if (json) {
@@ -140,7 +108,7 @@ int runLabelsList(const std::string& dbPath, bool json) {
 
 int runLabelsRename(const std::string& dbPath, const std::string& from, const std::string& to,
                     bool json) {
-  auto db = openExisting(dbPath);
+  auto db = openDatabaseForWrite(dbPath);
   const auto status = db->renameLabelSetNamed(from, to);
   if (!status) throw std::runtime_error(status.errorText());
   if (json) {
@@ -152,7 +120,7 @@ int runLabelsRename(const std::string& dbPath, const std::string& from, const st
 }
 
 int runLabelsDelete(const std::string& dbPath, const std::vector<std::string>& names, bool json) {
-  auto db = openExisting(dbPath);
+  auto db = openDatabaseForWrite(dbPath);
   const auto status = db->deleteLabelSets(names);
   if (!status) throw std::runtime_error(status.errorText());
   if (json) {
@@ -165,7 +133,7 @@ int runLabelsDelete(const std::string& dbPath, const std::vector<std::string>& n
 
 int runLabelsImport(const std::string& dbPath, const std::string& set, const std::string& file,
                     bool json) {
-  auto db = openForWrite(dbPath);
+  auto db = openDatabaseOrCreate(dbPath);
   auto count = db->importLabels(set, file);
   if (!count) throw std::runtime_error(count.errorText());
   if (json) {
@@ -179,7 +147,7 @@ int runLabelsImport(const std::string& dbPath, const std::string& set, const std
 
 int runLabelsExport(const std::string& dbPath, const std::string& set, const std::string& file,
                     bool json) {
-  auto db = openForRead(dbPath);
+  auto db = openDatabaseForRead(dbPath);
   const auto status = db->exportLabels(set, file);
   if (!status) throw std::runtime_error(status.errorText());
   if (json) {
