@@ -392,10 +392,12 @@ IntegrityReport RunDatabase::check() {
       while (s.step()) {
         const std::string table = s.columnText(0);
         const std::string parent = s.columnText(2);
+        // WITHOUT ROWID tables (steps, step_blocks) report no rowid.
         const std::string row =
-            s.columnIsNull(1) ? "a row" : "row " + std::to_string(s.columnInt(1));
+            s.columnIsNull(1) ? "a row of table " + table
+                              : "row " + std::to_string(s.columnInt(1)) + " of table " + table;
         addProblem(report, "foreign key " + table + " -> " + parent,
-                   "table " + table + " " + row + " refers to a missing " + parent + " row");
+                   row + " refers to a missing " + parent + " row");
       }
     }
     report.runs = c.queryInt("SELECT count(*) FROM runs");

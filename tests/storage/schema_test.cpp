@@ -238,7 +238,7 @@ TEST(Schema, ForeignSqliteFileIsRefused) {
   }
   auto db = RunDatabase::open(path);
   ASSERT_FALSE(db.ok());
-  EXPECT_NE(db.errorText().find("not a tactile database"), std::string::npos) << db.errorText();
+  EXPECT_NE(db.errorText().find("not a Tactile database"), std::string::npos) << db.errorText();
 }
 
 TEST(Schema, MissingFileWithoutCreateIsAnError) {
