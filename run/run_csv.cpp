@@ -131,6 +131,22 @@ std::size_t invalidUtf8At(std::string_view text) {
   return std::string_view::npos;
 }
 
+// `text` with every byte that is not part of well-formed UTF-8 written as "\xHH", for messages.
+std::string escapedUtf8(std::string_view text) {
+  std::string out;
+  while (!text.empty()) {
+    const std::size_t bad = invalidUtf8At(text);
+    out.append(text.substr(0, bad));
+    if (bad == std::string_view::npos) break;
+    char hex[8];
+    std::snprintf(hex, sizeof hex, "\\x%02X",
+                  static_cast<unsigned>(static_cast<unsigned char>(text[bad])));
+    out += hex;
+    text.remove_prefix(bad + 1);
+  }
+  return out;
+}
+
 // "expected UTF-8 text in WHAT, found an invalid byte 0xHH at byte K OF".
 std::string utf8Message(std::string_view what, std::string_view text, std::size_t at,
                         std::string_view of = "of the field") {
@@ -351,7 +367,7 @@ class Parser {
       const int position = static_cast<int>(columns_.size());
       Column column{ColumnKind::Extra, 0, std::string(name)};
       if (const std::size_t bad = invalidUtf8At(name); bad != std::string_view::npos) {
-        columns_.push_back(Column{ColumnKind::Extra, 0, std::string()});
+        columns_.push_back(Column{ColumnKind::Extra, 0, escapedUtf8(name)});
         return setError(headerLine_, utf8Message("the column name", name, bad), position);
       }
       if (name.empty()) {

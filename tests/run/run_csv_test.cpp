@@ -492,5 +492,67 @@ TEST(RunCsvErrors, EmptyFileOnDisk) {
   EXPECT_NE(r.error().message.find("empty file"), std::string::npos);
 }
 
+// ---- text fields must be UTF-8 (docs/storage.md#text-fields) ----------------------------------
+
+namespace utf8 {
+
+// A small run with two text columns, as text.
+std::string textWithExtras(const std::string& noteValue, const std::string& noteName = "x_note") {
+  RunData run = makeRun(4, true);
+  run.extraColumns = {noteName, "x_who"};
+  for (std::size_t i = 0; i < 4; ++i) {
+    run.extraValues.push_back(i == 2 ? noteValue : "n" + std::to_string(i));
+    run.extraValues.push_back("ann");
+  }
+  return formatRunCsv(run);
+}
+
+// Line of the row of step `step` in textWithExtras (its metadata has metadataLineCount() lines).
+std::size_t rowLine(std::size_t step) {
+  return metadataLineCount() + 2 + step;
+}
+
+}  // namespace utf8
+
+TEST(RunCsvUtf8, ValidMultiByteTextIsAccepted) {
+  const std::string text = "# note: caf\xC3\xA9 \xE6\x97\xA5\xE6\x9C\xAC \xF0\x9F\xA4\x96\n" +
+                           utf8::textWithExtras("\xC3\xA9t\xC3\xA9 \xF0\x9F\x99\x82", "x_\xC3\xA9");
+  RunCsvResult r = parseRunCsv(text, "ok.csv");
+  ASSERT_TRUE(r.ok()) << r.error().toString();
+  EXPECT_EQ(r.run().extraColumns[0], "x_\xC3\xA9");
+  EXPECT_EQ(r.run().extraValues[4], "\xC3\xA9t\xC3\xA9 \xF0\x9F\x99\x82");
+  expectChunkedSame(text, r);
+}
+
+TEST(RunCsvUtf8, InvalidMetadataValueNamesLineAndKey) {
+  const std::string text = "# note: caf\xC3(\n" + validText();
+  const RunCsvError e = expectError(text, 1, "", "UTF-8");
+  EXPECT_NE(e.message.find("'note'"), std::string::npos) << e.toString();
+  EXPECT_NE(e.message.find("0xC3"), std::string::npos) << e.toString();
+}
+
+TEST(RunCsvUtf8, InvalidColumnNameNamesItsPosition) {
+  const std::string text = utf8::textWithExtras("fine", "x_n\xFFte");
+  const RunCsvError e = expectError(text, metadataLineCount() + 1, "x_n\\xFFte", "UTF-8");
+  EXPECT_GT(e.columnPosition, 0u) << e.toString();
+  EXPECT_NE(e.toString().find("(position " + std::to_string(e.columnPosition) + ")"),
+            std::string::npos)
+      << e.toString();
+}
+
+TEST(RunCsvUtf8, InvalidTextFieldNamesLineAndColumnAlsoInChunks) {
+  // Each is rejected: lone continuation, overlong forms, a surrogate, above U+10FFFF, a cut
+  // sequence, bytes never used in UTF-8.
+  for (const std::string bad :
+       {"\x80", "\xC0\x80", "\xC1\xBF", "\xE0\x80\x80", "\xED\xA0\x80", "\xF0\x80\x80\x80",
+        "\xF4\x90\x80\x80", "\xE2\x82", "ab\xF0\x9F\x99", "\xF5\x80\x80\x80", "\xFF", "\xFE"}) {
+    SCOPED_TRACE("bytes of length " + std::to_string(bad.size()));
+    // expectError also parses in chunks of 1, 37, 300 bytes and 1 MiB (RunCsvChunks).
+    const RunCsvError e =
+        expectError(utf8::textWithExtras("ok " + bad + " ok"), utf8::rowLine(2), "x_note", "UTF-8");
+    EXPECT_GT(e.columnPosition, 0u);
+  }
+}
+
 }  // namespace
 }  // namespace tactile
