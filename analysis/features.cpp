@@ -92,19 +92,16 @@ std::vector<std::optional<ContactClass>> labelsFromTruth(const RunData& run) {
   return labels;
 }
 
-std::vector<std::optional<ContactClass>> labelsFromSegments(
-    const RunData& run, std::string_view runName, const std::vector<LabelRecord>& segments,
-    std::string& error) {
-  error.clear();
+Result<std::vector<std::optional<ContactClass>>> labelsFromSegments(
+    const RunData& run, std::string_view runName, const std::vector<LabelRecord>& segments) {
   std::vector<std::optional<ContactClass>> labels(run.stepCount() * kGroupCount);
   for (const LabelRecord& seg : segments) {
     if (seg.run != runName) continue;
     if (static_cast<std::size_t>(seg.lastStep) >= run.stepCount()) {
-      error = "label segment " + std::string(groupInfo(seg.group).shortName) + " steps " +
-              std::to_string(seg.firstStep) + "-" + std::to_string(seg.lastStep) + " of run '" +
-              std::string(runName) + "' reaches past its last step " +
-              std::to_string(run.stepCount() == 0 ? 0 : run.stepCount() - 1);
-      return {};
+      return Error("label segment " + std::string(groupInfo(seg.group).shortName) + " steps " +
+                   std::to_string(seg.firstStep) + "-" + std::to_string(seg.lastStep) +
+                   " of run '" + std::string(runName) + "' reaches past its last step " +
+                   std::to_string(run.stepCount() == 0 ? 0 : run.stepCount() - 1));
     }
     for (auto t = static_cast<std::size_t>(seg.firstStep);
          t <= static_cast<std::size_t>(seg.lastStep); ++t) {

@@ -12,6 +12,7 @@
 #include <string_view>
 #include <vector>
 
+#include "base/error.h"
 #include "run/contact_class.h"
 #include "run/label_file.h"
 #include "run/run.h"
@@ -53,10 +54,9 @@ GroupSteps extractGroupSteps(const RunData& run, SensorGroup group, FeatureKind 
 // nullopt where no label covers the step. From the run's truth columns...
 std::vector<std::optional<ContactClass>> labelsFromTruth(const RunData& run);
 // ...or from label segments whose `run` equals `runName` (later segments override earlier ones).
-// Segments reaching past the run's last step are an error (returned in `error`).
-std::vector<std::optional<ContactClass>> labelsFromSegments(
-    const RunData& run, std::string_view runName, const std::vector<LabelRecord>& segments,
-    std::string& error);
+// Segments reaching past the run's last step are an error.
+Result<std::vector<std::optional<ContactClass>>> labelsFromSegments(
+    const RunData& run, std::string_view runName, const std::vector<LabelRecord>& segments);
 
 // A run together with its per-step, per-group labels (as produced by the two functions above).
 struct LabelledRun {

@@ -360,7 +360,10 @@ bool parseList(const json& v, const char* key, std::vector<T>& out, Parse parse)
 
 }  // namespace
 
-std::string sweepFromJson(const json& value, SweepResult& out) {
+namespace {
+
+// Fills `out`; returns what is wrong, empty when nothing is.
+std::string readSweep(const json& value, SweepResult& out) {
   out = SweepResult();
   try {
     if (!value.is_object() || value.value("format", "") != "tactile-sweep") {
@@ -465,6 +468,14 @@ std::string sweepFromJson(const json& value, SweepResult& out) {
     return std::string("malformed sweep file: ") + e.what();
   }
   return {};
+}
+
+}  // namespace
+
+Result<SweepResult> sweepFromJson(const json& value) {
+  SweepResult out;
+  if (std::string error = readSweep(value, out); !error.empty()) return Error(std::move(error));
+  return out;
 }
 
 }  // namespace tactile::analysis

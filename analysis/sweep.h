@@ -20,6 +20,7 @@
 #include "analysis/features.h"
 #include "analysis/gmm.h"
 #include "analysis/metrics.h"
+#include "base/error.h"
 #include "base/progress.h"
 
 namespace tactile::analysis {
@@ -121,7 +122,7 @@ nlohmann::json sweepToJson(const SweepResult& result);
 // {"Wall": 12, "Corner": 3, ...}: the classes with a non-zero count.
 nlohmann::json classCountsToJson(const std::array<std::size_t, kContactClassCount>& counts);
 // Reads everything sweepToJson wrote (grid, data, run settings, cells; metrics are recomputed
-// from each cell's confusion matrix). Returns an error message, empty on success.
-std::string sweepFromJson(const nlohmann::json& value, SweepResult& out);
+// from each cell's confusion matrix).
+Result<SweepResult> sweepFromJson(const nlohmann::json& value);
 
 }  // namespace tactile::analysis

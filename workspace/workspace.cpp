@@ -246,10 +246,10 @@ Result<Workspace::Labelled> Workspace::loadLabelled(std::int64_t setId,
     for (const storage::LabelSegment& s : segments.value())
       records.push_back({name, s.group, s.firstStep, s.lastStep, s.cls, s.annotator, 0});
     out.runs.push_back(std::make_unique<RunData>(std::move(run.value())));
-    std::string error;
     analysis::LabelledRun lr{out.runs.back().get(), {}};
-    lr.labels = analysis::labelsFromSegments(*lr.run, name, records, error);
-    if (!error.empty()) return failure("run '" + name + "': " + error);
+    auto labels = analysis::labelsFromSegments(*lr.run, name, records);
+    if (!labels) return failure("run '" + name + "': " + labels.errorText());
+    lr.labels = std::move(labels.value());
     out.labelled.push_back(std::move(lr));
     out.infos.push_back(info.value());
   }
@@ -524,10 +524,8 @@ Result<analysis::SweepResult> Workspace::loadSweep(std::int64_t sweepId) {
   } catch (const json::exception& e) {
     return failure("sweep " + std::to_string(sweepId) + ": stored JSON is malformed: " + e.what());
   }
-  analysis::SweepResult result;
-  if (std::string error = analysis::sweepFromJson(doc, result); !error.empty()) {
-    return failure("sweep " + std::to_string(sweepId) + ": " + error);
-  }
+  auto result = analysis::sweepFromJson(doc);
+  if (!result) return failure("sweep " + std::to_string(sweepId) + ": " + result.errorText());
   return result;
 }
 

@@ -170,9 +170,9 @@ void attachLabels(LoadedRuns& loaded, const std::string& labelsPath) {
         printWarning(labelsPath + ": no label segments for run '" + p.stem().string() + "' (" +
                      path + ")");
       }
-      std::string error;
-      lr.labels = analysis::labelsFromSegments(run, name, segments, error);
-      if (!error.empty()) throw std::runtime_error(labelsPath + ": " + error);
+      auto labels = analysis::labelsFromSegments(run, name, segments);
+      if (!labels) throw std::runtime_error(labelsPath + ": " + labels.errorText());
+      lr.labels = std::move(labels.value());
     }
     loaded.labelled.push_back(std::move(lr));
   }
@@ -700,10 +700,9 @@ int runReport(const ReportArgs& r) {
   checkOutput(r.out);
   const std::string format = value.is_object() ? value.value("format", "") : "";
   if (format == "tactile-sweep") {
-    analysis::SweepResult sweep;
-    const std::string err = analysis::sweepFromJson(value, sweep);
-    if (!err.empty()) throw std::runtime_error(path + ": " + err);
-    writeText(r.out, analysis::sweepReport(sweep, style));
+    const Result<analysis::SweepResult> sweep = analysis::sweepFromJson(value);
+    if (!sweep) throw std::runtime_error(path + ": " + sweep.errorText());
+    writeText(r.out, analysis::sweepReport(sweep.value(), style));
     return kExitOk;
   }
   if (format == analysis::kModelFormat || format == analysis::kModelBundleFormat) {

@@ -147,9 +147,9 @@ TEST(Labels, SegmentsApplyToMatchingRunAndLaterOverride) {
   std::vector<LabelRecord> segs{{"a", SensorGroup::Right, 0, 9, ContactClass::Wall, ""},
                                 {"b", SensorGroup::Right, 0, 9, ContactClass::Corner, ""},
                                 {"a", SensorGroup::Right, 3, 4, ContactClass::LeavingWall, ""}};
-  std::string error;
-  const auto labels = labelsFromSegments(run, "a", segs, error);
-  ASSERT_TRUE(error.empty()) << error;
+  const auto read = labelsFromSegments(run, "a", segs);
+  ASSERT_TRUE(read.ok()) << read.errorText();
+  const auto& labels = read.value();
   const std::size_t g = groupIndex(SensorGroup::Right);
   EXPECT_EQ(labels[0 * kGroupCount + g], ContactClass::Wall);
   EXPECT_EQ(labels[3 * kGroupCount + g], ContactClass::LeavingWall);
@@ -160,10 +160,10 @@ TEST(Labels, SegmentsApplyToMatchingRunAndLaterOverride) {
 TEST(Labels, SegmentPastLastStepIsError) {
   const RunData run = testdata::makeLabelledRun(10, 1);
   std::vector<LabelRecord> segs{{"a", SensorGroup::Right, 5, 10, ContactClass::Wall, ""}};
-  std::string error;
-  const auto labels = labelsFromSegments(run, "a", segs, error);
-  EXPECT_FALSE(error.empty());
-  EXPECT_TRUE(labels.empty());
+  const auto labels = labelsFromSegments(run, "a", segs);
+  ASSERT_FALSE(labels.ok());
+  EXPECT_NE(labels.errorText().find("reaches past its last step 9"), std::string::npos)
+      << labels.errorText();
 }
 
 }  // namespace

@@ -258,8 +258,9 @@ TEST(Sweep, JsonRoundTripReadsBackEveryField) {
   ASSERT_TRUE(anyFailed);
   ASSERT_TRUE(anyWarning);
   const nlohmann::json j = nlohmann::json::parse(sweepToJson(r).dump());
-  SweepResult back;
-  ASSERT_EQ(sweepFromJson(j, back), "");
+  const Result<SweepResult> read = sweepFromJson(j);
+  ASSERT_TRUE(read.ok()) << read.errorText();
+  const SweepResult& back = read.value();
   // Grid.
   const SweepGrid &g = r.grid, &h = back.grid;
   EXPECT_EQ(h.groups, g.groups);
@@ -438,10 +439,10 @@ TEST(Training, NegInfRowsAreCountedNotAveraged) {
 }
 
 TEST(Sweep, NotASweepFileIsAnError) {
-  SweepResult out;
-  EXPECT_FALSE(sweepFromJson(nlohmann::json{{"format", "tactile-model"}}, out).empty());
-  EXPECT_FALSE(
-      sweepFromJson(nlohmann::json{{"format", "tactile-sweep"}, {"version", 1}}, out).empty());
+  const auto model = sweepFromJson(nlohmann::json{{"format", "tactile-model"}});
+  ASSERT_FALSE(model.ok());
+  EXPECT_NE(model.errorText().find("not a sweep file"), std::string::npos);
+  EXPECT_FALSE(sweepFromJson(nlohmann::json{{"format", "tactile-sweep"}, {"version", 1}}).ok());
 }
 
 }  // namespace
