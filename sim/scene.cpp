@@ -105,15 +105,13 @@ std::string validateSceneGeometry(const Scene& scene) {
   return {};
 }
 
-SceneResult parseSceneJson(std::string_view text, std::string_view sourceName) {
-  SceneResult result;
-  const std::string prefix = std::string(sourceName) + ": ";
+Result<Scene> parseSceneJson(std::string_view text, std::string_view sourceName) {
+  const std::string source(sourceName);
   json doc;
   try {
     doc = json::parse(text.begin(), text.end());
   } catch (const json::parse_error& e) {
-    result.error = prefix + "not valid JSON (" + e.what() + ")";
-    return result;
+    return Error(source, std::string("not valid JSON (") + e.what() + ")");
   }
   Scene scene;
   try {
@@ -156,16 +154,11 @@ SceneResult parseSceneJson(std::string_view text, std::string_view sourceName) {
     scene.goal = Vec2(number(member(goal, "x", "goal: "), "goal.x"),
                       number(member(goal, "y", "goal: "), "goal.y"));
   } catch (const SchemaError& e) {
-    result.error = prefix + e.message;
-    return result;
+    return Error(source, e.message);
   }
   std::string error = validateSceneGeometry(scene);
-  if (!error.empty()) {
-    result.error = prefix + error;
-    return result;
-  }
-  result.scene = std::move(scene);
-  return result;
+  if (!error.empty()) return Error(source, error);
+  return scene;
 }
 
 std::string sceneToJson(const Scene& scene) {

@@ -7,6 +7,7 @@
 #include <string_view>
 #include <vector>
 
+#include "base/error.h"
 #include "run/run.h"
 #include "sim/geometry.h"
 
@@ -31,20 +32,10 @@ struct Scene {
   Vec2 goal = Vec2::Zero();
 };
 
-// A scene or the reason there is none. `usageError` marks problems with what the user typed
-// (an unknown scene name, a malformed `random:N:SEED`), as opposed to a bad file (exit 2 vs 1).
-struct SceneResult {
-  std::optional<Scene> scene;
-  std::string error;
-  bool usageError = false;
-
-  bool ok() const { return scene.has_value(); }
-};
-
 // Parses scene JSON. `sourceName` (file or scene name) prefixes every error message. Checks the
 // schema and the polygons (validateSceneGeometry) but not the start pose (that needs the robot:
 // see checkStartPose in sim/world.h).
-SceneResult parseSceneJson(std::string_view text, std::string_view sourceName);
+Result<Scene> parseSceneJson(std::string_view text, std::string_view sourceName);
 
 // Polygon and pose checks that need no robot: bounds non-empty; every obstacle has at least three
 // finite vertices inside the bounds, no two consecutive vertices equal, non-zero area, and no two

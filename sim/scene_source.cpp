@@ -107,8 +107,7 @@ std::string checkStartPose(const Scene& scene, const RobotGeometry& geometry) {
   return {};
 }
 
-SceneResult loadScene(std::string_view spec, const RobotGeometry& geometry) {
-  SceneResult result;
+std::optional<std::string> sceneSpecError(std::string_view spec) {
   if (spec.starts_with("random:")) {
     std::string_view rest = spec.substr(7);
     const std::size_t colon = rest.find(':');
@@ -116,19 +115,43 @@ SceneResult loadScene(std::string_view spec, const RobotGeometry& geometry) {
     std::int64_t seed = 0;
     if (colon == std::string_view::npos || !parseInteger(rest.substr(0, colon), n) ||
         !parseInteger(rest.substr(colon + 1), seed) || seed < 0) {
-      result.error = "scene '" + std::string(spec) +
-                     "': expected random:N:SEED with integers N >= 0 and SEED >= 0";
-      result.usageError = true;
-      return result;
+      return "scene '" + std::string(spec) +
+             "': expected random:N:SEED with integers N >= 0 and SEED >= 0";
     }
     if (n < 0 || static_cast<std::size_t>(n) > kMaxProceduralObstacles) {
-      result.error = "scene '" + std::string(spec) + "': N must be between 0 and " +
-                     std::to_string(kMaxProceduralObstacles);
-      result.usageError = true;
-      return result;
+      return "scene '" + std::string(spec) + "': N must be between 0 and " +
+             std::to_string(kMaxProceduralObstacles);
     }
-    result.scene =
-        generateProceduralScene(static_cast<std::size_t>(n), static_cast<std::uint64_t>(seed));
+    return std::nullopt;
+  }
+  if (builtinSceneJson(spec) || spec.find('/') != std::string_view::npos ||
+      spec.ends_with(".json") ||
+      std::filesystem::exists(std::filesystem::path(std::string(spec)))) {
+    return std::nullopt;
+  }
+  std::string names;
+  for (const std::string& n : builtinSceneNames())
+    names += (names.empty() ? "" : ", ") + n;
+  return "unknown scene '" + std::string(spec) + "' (built-in scenes: " + names +
+         "; or a .json file, or random:N:SEED)";
+}
+
+Result<Scene> loadScene(std::string_view spec, const RobotGeometry& geometry) {
+  if (auto problem = sceneSpecError(spec)) return Error(std::move(*problem));
+  Result<Scene> result = Error("");
+  if (spec.starts_with("random:")) {
+    std::string_view rest = spec.substr(7);
+    const std::size_t colon = rest.find(':');
+    std::int64_t n = 0;
+    std::int64_t seed = 0;
+    if (colon == std::string_view::npos || !parseInteger(rest.substr(0, colon), n) ||
+        !parseInteger(rest.substr(colon + 1), seed) || seed < 0) {
+      return Error("scene '" + std::string(spec) + "': expected random:N:SEED");
+    }
+    if (n < 0 || static_cast<std::size_t>(n) > kMaxProceduralObstacles) {
+      return Error("scene '" + std::string(spec) + "': N out of range");
+    }
+    result = generateProceduralScene(static_cast<std::size_t>(n), static_cast<std::uint64_t>(seed));
   } else if (auto json = builtinSceneJson(spec)) {
     result = parseSceneJson(*json, spec);
   } else if (spec.find('/') != std::string_view::npos || spec.ends_with(".json") ||
@@ -136,25 +159,13 @@ SceneResult loadScene(std::string_view spec, const RobotGeometry& geometry) {
     std::string text;
     std::string error;
     if (!readFileText(std::filesystem::path(std::string(spec)), text, error)) {
-      result.error = std::string(spec) + ": " + error;
-      return result;
+      return Error(std::string(spec), error);
     }
     result = parseSceneJson(text, spec);
-  } else {
-    std::string names;
-    for (const std::string& n : builtinSceneNames())
-      names += (names.empty() ? "" : ", ") + n;
-    result.error = "unknown scene '" + std::string(spec) + "' (built-in scenes: " + names +
-                   "; or a .json file, or random:N:SEED)";
-    result.usageError = true;
-    return result;
   }
   if (!result.ok()) return result;
-  std::string error = checkStartPose(*result.scene, geometry);
-  if (!error.empty()) {
-    result.error = std::string(spec) + ": " + error;
-    result.scene.reset();
-  }
+  std::string error = checkStartPose(result.value(), geometry);
+  if (!error.empty()) return Error(std::string(spec), error);
   return result;
 }
 

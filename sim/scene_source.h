@@ -22,9 +22,13 @@ Scene generateProceduralScene(std::size_t obstacles, std::uint64_t seed);
 // compressed past 5 overlapping an obstacle or the bounds).
 std::string checkStartPose(const Scene& scene, const RobotGeometry& geometry = {});
 
+// Why what the user typed cannot name a scene at all (an unknown name, a malformed
+// `random:N:SEED`), or nullopt. A front end reports these as usage errors; loadScene fails on them
+// too.
+std::optional<std::string> sceneSpecError(std::string_view spec);
+
 // Resolves what the user typed: "random:N:SEED", a built-in scene name, or a path to a JSON file
 // (anything containing '/' or ending in ".json"). Validates everything, the start pose included.
-// Unknown names and malformed random specs are usage errors; unreadable or invalid files are not.
-SceneResult loadScene(std::string_view spec, const RobotGeometry& geometry = {});
+Result<Scene> loadScene(std::string_view spec, const RobotGeometry& geometry = {});
 
 }  // namespace tactile::sim

@@ -46,12 +46,10 @@ double secondsSince(std::chrono::steady_clock::time_point t0) {
 
 // Loads the scene or throws (UsageError for what the user typed wrong).
 std::shared_ptr<const World> loadWorld(const std::string& spec) {
-  SceneResult loaded = loadScene(spec);
-  if (!loaded.ok()) {
-    if (loaded.usageError) throw UsageError(loaded.error);
-    throw std::runtime_error(loaded.error);
-  }
-  return std::make_shared<const World>(std::move(*loaded.scene));
+  if (auto problem = sceneSpecError(spec)) throw UsageError(*problem);
+  Result<Scene> loaded = loadScene(spec);
+  if (!loaded) throw std::runtime_error(loaded.errorText());
+  return std::make_shared<const World>(std::move(loaded.value()));
 }
 
 std::string sceneLabel(const std::string& spec, const World& world) {

@@ -99,9 +99,9 @@ struct ImportArgs {
 // link the simulator. Built-in names and file paths are left to storage.
 std::optional<std::string> proceduralSceneJson(const std::string& scene) {
   if (!scene.starts_with("random:")) return std::nullopt;
-  sim::SceneResult generated = sim::loadScene(scene);
+  Result<sim::Scene> generated = sim::loadScene(scene);
   if (!generated.ok()) return std::nullopt;
-  return sim::sceneToJson(*generated.scene);
+  return sim::sceneToJson(generated.value());
 }
 
 int runImport(const ImportArgs& a) {

@@ -12,9 +12,9 @@ namespace tactile::sim {
 namespace {
 
 std::shared_ptr<const World> worldFor(const std::string& spec) {
-  SceneResult r = loadScene(spec);
-  if (!r.ok()) throw std::runtime_error(r.error);
-  return std::make_shared<const World>(std::move(*r.scene));
+  Result<Scene> r = loadScene(spec);
+  if (!r) throw std::runtime_error(r.errorText());
+  return std::make_shared<const World>(std::move(r.value()));
 }
 
 // Runs `steps` steps of a driver per iteration; reports steps per second.

@@ -86,9 +86,9 @@ TEST(EdgeIndex, MatchesBruteForceOnProceduralScene) {
 
 TEST(EdgeIndex, MatchesBruteForceInBuiltinRooms) {
   for (const char* name : {"room1", "room2", "room3", "chapter5"}) {
-    SceneResult r = loadScene(name);
-    ASSERT_TRUE(r.ok()) << r.error;
-    compareOnRandomPoses(*r.scene, 2000, 7);
+    Result<Scene> r = loadScene(name);
+    ASSERT_TRUE(r.ok()) << r.errorText();
+    compareOnRandomPoses(r.value(), 2000, 7);
   }
 }
 

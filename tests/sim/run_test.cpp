@@ -13,9 +13,9 @@ namespace tactile::sim {
 namespace {
 
 std::shared_ptr<const World> builtinWorld(const char* name) {
-  SceneResult r = loadScene(name);
-  EXPECT_TRUE(r.ok()) << r.error;
-  return std::make_shared<const World>(std::move(*r.scene));
+  Result<Scene> r = loadScene(name);
+  EXPECT_TRUE(r.ok()) << r.errorText();
+  return std::make_shared<const World>(std::move(r.value()));
 }
 
 // FNV-1a, enough to compare run files by hash.

@@ -22,93 +22,97 @@ std::string sceneText(const std::string& obstacles, const std::string& start = "
 }
 
 TEST(SceneJson, ParsesAValidScene) {
-  SceneResult r = parseSceneJson(sceneText("{\"polygon\": [[500,500],[600,500],[600,600]]}"), "f");
-  ASSERT_TRUE(r.ok()) << r.error;
-  EXPECT_EQ(r.scene->name, "t");
-  ASSERT_EQ(r.scene->obstacles.size(), 1u);
-  EXPECT_EQ(r.scene->obstacles[0].polygon[1], Vec2(600, 500));
-  EXPECT_DOUBLE_EQ(r.scene->goal.x(), 900.0);
-  EXPECT_DOUBLE_EQ(r.scene->start.y, 500.0);
+  Result<Scene> r =
+      parseSceneJson(sceneText("{\"polygon\": [[500,500],[600,500],[600,600]]}"), "f");
+  ASSERT_TRUE(r.ok()) << r.errorText();
+  EXPECT_EQ(r->name, "t");
+  ASSERT_EQ(r->obstacles.size(), 1u);
+  EXPECT_EQ(r->obstacles[0].polygon[1], Vec2(600, 500));
+  EXPECT_DOUBLE_EQ(r->goal.x(), 900.0);
+  EXPECT_DOUBLE_EQ(r->start.y, 500.0);
 }
 
 TEST(SceneJson, InvalidJsonNamesTheSource) {
-  SceneResult r = parseSceneJson("{\"name\": ", "bad.json");
+  Result<Scene> r = parseSceneJson("{\"name\": ", "bad.json");
   ASSERT_FALSE(r.ok());
-  EXPECT_NE(r.error.find("bad.json"), std::string::npos);
-  EXPECT_NE(r.error.find("not valid JSON"), std::string::npos);
+  EXPECT_NE(r.errorText().find("bad.json"), std::string::npos);
+  EXPECT_NE(r.errorText().find("not valid JSON"), std::string::npos);
 }
 
 TEST(SceneJson, MissingKeyIsNamed) {
-  SceneResult r =
+  Result<Scene> r =
       parseSceneJson("{\"name\": \"x\", \"bounds\": [0,0,1,1], \"obstacles\": []}", "f");
   ASSERT_FALSE(r.ok());
-  EXPECT_NE(r.error.find("missing \"start\""), std::string::npos) << r.error;
+  EXPECT_NE(r.errorText().find("missing \"start\""), std::string::npos) << r.errorText();
 }
 
 TEST(SceneJson, NonNumericVertexNamesObstacleAndVertex) {
-  SceneResult r = parseSceneJson(
+  Result<Scene> r = parseSceneJson(
       sceneText("{\"polygon\": [[1,1],[5,1],[5,5]]}, {\"polygon\": [[1,1],[\"a\",1],[5,5]]}"), "f");
   ASSERT_FALSE(r.ok());
-  EXPECT_NE(r.error.find("obstacle 1 vertex 1"), std::string::npos) << r.error;
+  EXPECT_NE(r.errorText().find("obstacle 1 vertex 1"), std::string::npos) << r.errorText();
 }
 
 TEST(SceneJson, VertexOutsideBoundsNamesObstacleAndVertex) {
-  SceneResult r = parseSceneJson(sceneText("{\"polygon\": [[500,500],[600,500],[1600,600]]}"), "f");
+  Result<Scene> r =
+      parseSceneJson(sceneText("{\"polygon\": [[500,500],[600,500],[1600,600]]}"), "f");
   ASSERT_FALSE(r.ok());
-  EXPECT_NE(r.error.find("obstacle 0 vertex 2"), std::string::npos) << r.error;
-  EXPECT_NE(r.error.find("outside the bounds"), std::string::npos) << r.error;
+  EXPECT_NE(r.errorText().find("obstacle 0 vertex 2"), std::string::npos) << r.errorText();
+  EXPECT_NE(r.errorText().find("outside the bounds"), std::string::npos) << r.errorText();
 }
 
 TEST(SceneJson, SelfIntersectingPolygonNamesTheEdges) {
   // A bow tie: edge 0-1 crosses edge 2-3.
-  SceneResult r =
+  Result<Scene> r =
       parseSceneJson(sceneText("{\"polygon\": [[500,500],[600,600],[600,500],[500,600]]}"), "f");
   ASSERT_FALSE(r.ok());
-  EXPECT_NE(r.error.find("obstacle 0: edge from vertex 0 to vertex 1 crosses edge from vertex 2 "
+  EXPECT_NE(
+      r.errorText().find("obstacle 0: edge from vertex 0 to vertex 1 crosses edge from vertex 2 "
                          "to vertex 3"),
-            std::string::npos)
-      << r.error;
+      std::string::npos)
+      << r.errorText();
 }
 
 TEST(SceneJson, RepeatedVertexIsNamed) {
-  SceneResult r =
+  Result<Scene> r =
       parseSceneJson(sceneText("{\"polygon\": [[500,500],[600,500],[600,500],[600,600]]}"), "f");
   ASSERT_FALSE(r.ok());
-  EXPECT_NE(r.error.find("obstacle 0 vertex 1: repeats"), std::string::npos) << r.error;
+  EXPECT_NE(r.errorText().find("obstacle 0 vertex 1: repeats"), std::string::npos) << r.errorText();
 }
 
 TEST(SceneJson, TwoVerticesAreNotAPolygon) {
-  SceneResult r = parseSceneJson(sceneText("{\"polygon\": [[500,500],[600,500]]}"), "f");
+  Result<Scene> r = parseSceneJson(sceneText("{\"polygon\": [[500,500],[600,500]]}"), "f");
   ASSERT_FALSE(r.ok());
-  EXPECT_NE(r.error.find("at least 3 vertices"), std::string::npos) << r.error;
+  EXPECT_NE(r.errorText().find("at least 3 vertices"), std::string::npos) << r.errorText();
 }
 
 TEST(SceneJson, ZeroAreaPolygonIsRejected) {
-  SceneResult r = parseSceneJson(sceneText("{\"polygon\": [[500,500],[600,500],[700,500]]}"), "f");
+  Result<Scene> r =
+      parseSceneJson(sceneText("{\"polygon\": [[500,500],[600,500],[700,500]]}"), "f");
   ASSERT_FALSE(r.ok());
-  EXPECT_NE(r.error.find("obstacle 0"), std::string::npos) << r.error;
+  EXPECT_NE(r.errorText().find("obstacle 0"), std::string::npos) << r.errorText();
 }
 
 TEST(SceneJson, GoalOutsideBoundsIsRejected) {
-  SceneResult r = parseSceneJson(sceneText("", "200, 500, 0", "1200, 500"), "f");
+  Result<Scene> r = parseSceneJson(sceneText("", "200, 500, 0", "1200, 500"), "f");
   ASSERT_FALSE(r.ok());
-  EXPECT_NE(r.error.find("goal"), std::string::npos) << r.error;
+  EXPECT_NE(r.errorText().find("goal"), std::string::npos) << r.errorText();
 }
 
 TEST(SceneJson, GoalInsideObstacleIsRejected) {
-  SceneResult r = parseSceneJson(
+  Result<Scene> r = parseSceneJson(
       sceneText("{\"polygon\": [[800,400],[950,400],[950,600],[800,600]]}", "200, 500, 0"), "f");
   ASSERT_FALSE(r.ok());
-  EXPECT_NE(r.error.find("goal: lies inside obstacle 0"), std::string::npos) << r.error;
+  EXPECT_NE(r.errorText().find("goal: lies inside obstacle 0"), std::string::npos) << r.errorText();
 }
 
 TEST(SceneJson, BoundsMustBeOrdered) {
-  SceneResult r = parseSceneJson(
+  Result<Scene> r = parseSceneJson(
       "{\"name\":\"x\",\"bounds\":[10,0,0,10],\"obstacles\":[],\"start\":{\"x\":1,\"y\":1,"
       "\"theta\":0},\"goal\":{\"x\":2,\"y\":2}}",
       "f");
   ASSERT_FALSE(r.ok());
-  EXPECT_NE(r.error.find("bounds"), std::string::npos) << r.error;
+  EXPECT_NE(r.errorText().find("bounds"), std::string::npos) << r.errorText();
 }
 
 TEST(SceneSource, StartPoseInObstacleIsAFileError) {
@@ -134,25 +138,27 @@ TEST(SceneSource, StartTooCloseToTheBoundsIsRejected) {
 }
 
 TEST(SceneSource, UnknownNameIsAUsageError) {
-  SceneResult r = loadScene("no-such-scene");
+  Result<Scene> r = loadScene("no-such-scene");
   ASSERT_FALSE(r.ok());
-  EXPECT_TRUE(r.usageError);
-  EXPECT_NE(r.error.find("practice"), std::string::npos) << r.error;
+  ASSERT_TRUE(sceneSpecError("no-such-scene").has_value());
+  EXPECT_NE(sceneSpecError("no-such-scene")->find("practice"), std::string::npos);
+  EXPECT_NE(r.errorText().find("practice"), std::string::npos) << r.errorText();
 }
 
 TEST(SceneSource, MissingFileIsNotAUsageError) {
-  SceneResult r = loadScene("/nonexistent/dir/scene.json");
+  Result<Scene> r = loadScene("/nonexistent/dir/scene.json");
   ASSERT_FALSE(r.ok());
-  EXPECT_FALSE(r.usageError);
-  EXPECT_NE(r.error.find("/nonexistent/dir/scene.json"), std::string::npos);
+  EXPECT_FALSE(sceneSpecError("/nonexistent/dir/scene.json").has_value());
+  EXPECT_EQ(r.error().file, "/nonexistent/dir/scene.json");
+  EXPECT_NE(r.errorText().find("/nonexistent/dir/scene.json"), std::string::npos);
 }
 
 TEST(SceneSource, MalformedRandomSpecIsAUsageError) {
   for (const char* spec : {"random:", "random:10", "random:x:1", "random:-5:1", "random:10:-1",
                            "random:10001:1", "random:10:1:2"}) {
-    SceneResult r = loadScene(spec);
+    Result<Scene> r = loadScene(spec);
     EXPECT_FALSE(r.ok()) << spec;
-    EXPECT_TRUE(r.usageError) << spec;
+    EXPECT_TRUE(sceneSpecError(spec).has_value()) << spec;
   }
 }
 
@@ -162,8 +168,8 @@ TEST(SceneSource, EveryBuiltinSceneLoads) {
     EXPECT_NE(std::find(names.begin(), names.end(), required), names.end()) << required;
   }
   for (const std::string& name : names) {
-    SceneResult r = loadScene(name);
-    EXPECT_TRUE(r.ok()) << name << ": " << r.error;
+    Result<Scene> r = loadScene(name);
+    EXPECT_TRUE(r.ok()) << name << ": " << r.errorText();
   }
 }
 
@@ -195,9 +201,9 @@ TEST(Procedural, SameSeedSameSceneOtherSeedOtherScene) {
 
 TEST(Procedural, JsonRoundTripIsExact) {
   const Scene s = generateProceduralScene(30, 4);
-  SceneResult r = parseSceneJson(sceneToJson(s), "roundtrip");
-  ASSERT_TRUE(r.ok()) << r.error;
-  EXPECT_EQ(sceneToJson(*r.scene), sceneToJson(s));
+  Result<Scene> r = parseSceneJson(sceneToJson(s), "roundtrip");
+  ASSERT_TRUE(r.ok()) << r.errorText();
+  EXPECT_EQ(sceneToJson(r.value()), sceneToJson(s));
 }
 
 }  // namespace
