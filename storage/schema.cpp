@@ -3,7 +3,7 @@
 #include <array>
 #include <system_error>
 
-namespace tactile::db {
+namespace tactile::storage::db {
 namespace {
 
 // Column notes that apply throughout:
@@ -257,4 +257,4 @@ MigrationReport migrate(Connection& connection, const std::filesystem::path& dbP
   return report;
 }
 
-}  // namespace tactile::db
+}  // namespace tactile::storage::db

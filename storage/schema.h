@@ -10,7 +10,7 @@
 
 #include "storage/sqlite_db.h"
 
-namespace tactile::db {
+namespace tactile::storage::db {
 
 // The schema version this program writes. A database with a higher user_version was written by
 // a newer program and is refused rather than misread.
@@ -49,4 +49,4 @@ MigrationReport migrate(Connection& connection, const std::filesystem::path& dbP
 // "<db>.v<version>.bak", or with a numeric suffix when that file already exists.
 std::filesystem::path backupPath(const std::filesystem::path& dbPath, int version);
 
-}  // namespace tactile::db
+}  // namespace tactile::storage::db

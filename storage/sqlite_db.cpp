@@ -6,7 +6,7 @@
 #include <unordered_map>
 #include <utility>
 
-namespace tactile::db {
+namespace tactile::storage::db {
 namespace {
 
 // The file each open handle was opened with, so that a failing statement (which knows only its
@@ -319,4 +319,4 @@ void backupTo(Connection& source, const std::filesystem::path& target) {
   }
 }
 
-}  // namespace tactile::db
+}  // namespace tactile::storage::db

@@ -16,7 +16,7 @@
 struct sqlite3;
 struct sqlite3_stmt;
 
-namespace tactile::db {
+namespace tactile::storage::db {
 
 // A failed SQLite call: the message names the operation, SQLite's own text and the SQL when known;
 // `file` is the database file as it was given to Connection::open (empty when not known), so that
@@ -142,4 +142,4 @@ class Transaction {
 // Throws DbError.
 void backupTo(Connection& source, const std::filesystem::path& target);
 
-}  // namespace tactile::db
+}  // namespace tactile::storage::db

@@ -2,7 +2,7 @@
 
 #include "storage/sqlite_db.h"
 
-namespace tactile::db {
+namespace tactile::storage::db {
 namespace {
 
 Connection memoryDb() {
@@ -73,4 +73,4 @@ TEST(SqliteDb, OpenWithoutCreateFailsForMissingFile) {
 }
 
 }  // namespace
-}  // namespace tactile::db
+}  // namespace tactile::storage::db
