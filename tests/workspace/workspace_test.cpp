@@ -1,0 +1,750 @@
+// The workspace over one database: label edits undone and redone exactly, training from a stored
+// label set (group skipping, the run splits, provenance, taken names), sweeps stored cell by cell
+// (also when cancelled), classification of stored runs, and labels bound to runs by id.
+#include <gtest/gtest.h>
+
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <set>
+#include <string>
+#include <tuple>
+#include <vector>
+
+#include "analysis/features.h"
+#include "run/run_csv.h"
+#include "tests/analysis/learn_test_data.h"
+#include "tests/storage/storage_test_util.h"
+#include "workspace/workspace.h"
+
+namespace tactile::workspace {
+namespace {
+
+using nlohmann::json;
+using storage::LabelSegment;
+using storage::test::TempDir;
+
+constexpr std::size_t kSteps = 400;
+
+RunData labelledRun(std::uint64_t seed, std::size_t steps = kSteps) {
+  RunData run = testdata::makeLabelledRun(steps, seed);
+  run.metadata = {{"format", "tactile-run 1"}, {"subject", "sim"}, {"dt", "0.1"}};
+  return run;
+}
+
+std::unique_ptr<Workspace> openWorkspace(const TempDir& dir) {
+  auto ws = Workspace::open(dir / "w.db");
+  EXPECT_TRUE(ws.ok()) << (ws.ok() ? "" : ws.errorText());
+  return ws.ok() ? std::move(ws.value()) : nullptr;
+}
+
+// Stores a run and labels it from its truth columns into `set`; returns the run id.
+std::int64_t addRun(Workspace& ws, const std::string& name, std::uint64_t seed,
+                    const std::string& set = "truth") {
+  const RunData run = labelledRun(seed);
+  const storage::ImportOutcome out = ws.database().importRun(run, name);
+  EXPECT_EQ(out.status, storage::ImportStatus::Imported) << out.message;
+  if (!set.empty()) {
+    auto n = ws.database().autolabel(out.runId, set);
+    EXPECT_TRUE(n.ok()) << (n.ok() ? "" : n.errorText());
+  }
+  return out.runId;
+}
+
+analysis::TrainSettings quickSettings() {
+  analysis::TrainSettings s;
+  s.classifier.gmm.components = 1;
+  s.classifier.gmm.varianceFloor = 0.01;
+  s.classifier.gmm.maxIterations = 20;
+  return s;
+}
+
+// A segment as undo must give it back: range, class and annotator (ids may change).
+using SegmentKey = std::tuple<std::int64_t, std::int64_t, ContactClass, std::string>;
+std::vector<SegmentKey> keys(const std::vector<LabelSegment>& segments, SensorGroup group) {
+  std::vector<SegmentKey> out;
+  for (const LabelSegment& s : segments)
+    if (s.group == group) out.emplace_back(s.firstStep, s.lastStep, s.cls, s.annotator);
+  std::sort(out.begin(), out.end());
+  return out;
+}
+
+std::vector<SegmentKey> groupSegments(Workspace& ws, std::int64_t setId, std::int64_t runId,
+                                      SensorGroup group) {
+  auto segments = ws.database().segments(setId, runId);
+  EXPECT_TRUE(segments.ok()) << (segments.ok() ? "" : segments.errorText());
+  return segments.ok() ? keys(segments.value(), group) : std::vector<SegmentKey>{};
+}
+
+// Applies an edit, then checks that undo gives exactly the group's segments before it and redo
+// those after it (the whole group of the run, not only the edit's range).
+template <typename Edit>
+LabelEdit checkUndoRedo(Workspace& ws, std::int64_t setId, std::int64_t runId, SensorGroup group,
+                        Edit&& edit) {
+  const std::vector<SegmentKey> before = groupSegments(ws, setId, runId, group);
+  Result<LabelEdit> applied = edit();
+  EXPECT_TRUE(applied.ok()) << (applied.ok() ? "" : applied.errorText());
+  if (!applied) return {};
+  const std::vector<SegmentKey> after = groupSegments(ws, setId, runId, group);
+  EXPECT_NE(before, after) << "the edit changed nothing";
+  EXPECT_EQ(applied->runId, runId);
+  EXPECT_EQ(applied->group, group);
+  if (Status s = ws.undo(applied.value()); !s) ADD_FAILURE() << s.errorText();
+  EXPECT_EQ(groupSegments(ws, setId, runId, group), before) << "undo";
+  if (Status s = ws.redo(applied.value()); !s) ADD_FAILURE() << s.errorText();
+  EXPECT_EQ(groupSegments(ws, setId, runId, group), after) << "redo";
+  // And undo again after the redo.
+  if (Status s = ws.undo(applied.value()); !s) ADD_FAILURE() << s.errorText();
+  EXPECT_EQ(groupSegments(ws, setId, runId, group), before) << "undo after redo";
+  if (Status s = ws.redo(applied.value()); !s) ADD_FAILURE() << s.errorText();
+  return applied.value();
+}
+
+// ---- label edits --------------------------------------------------------------------------------
+
+TEST(WorkspaceLabels, EditsAreUndoneAndRedoneExactly) {
+  TempDir dir;
+  auto ws = openWorkspace(dir);
+  ASSERT_TRUE(ws);
+  const std::int64_t runId = addRun(*ws, "edit_run", 5, "edits");
+  const std::int64_t other = addRun(*ws, "other_run", 6, "edits");
+  auto set = ws->database().findLabelSet("edits");
+  ASSERT_TRUE(set.ok());
+  const std::int64_t setId = set->id;
+  const SensorGroup g = SensorGroup::Left;
+  const std::vector<SegmentKey> otherBefore = groupSegments(*ws, setId, other, g);
+  const std::vector<SegmentKey> otherGroupBefore =
+      groupSegments(*ws, setId, runId, SensorGroup::Right);
+
+  auto all = ws->database().segments(setId, runId);
+  ASSERT_TRUE(all.ok());
+  std::vector<LabelSegment> segs;
+  for (const LabelSegment& s : all.value())
+    if (s.group == g) segs.push_back(s);
+  ASSERT_GE(segs.size(), 4u);
+  // A segment long enough to split.
+  auto longOne = std::find_if(segs.begin(), segs.end(),
+                              [](const LabelSegment& s) { return s.lastStep - s.firstStep >= 6; });
+  ASSERT_NE(longOne, segs.end());
+  const LabelSegment target = *longOne;
+
+  // 1. A segment inside another splits it into three.
+  LabelSegment inner;
+  inner.run = "edit_run";
+  inner.group = g;
+  inner.firstStep = target.firstStep + 2;
+  inner.lastStep = target.firstStep + 4;
+  inner.cls = target.cls == ContactClass::DeadPath ? ContactClass::Wall : ContactClass::DeadPath;
+  inner.annotator = "alice";
+  const LabelEdit added =
+      checkUndoRedo(*ws, setId, runId, g, [&] { return ws->addSegment(setId, inner); });
+  ASSERT_EQ(added.before.size(), 1u);
+  EXPECT_EQ(added.before[0].firstStep, target.firstStep);
+  EXPECT_EQ(added.before[0].lastStep, target.lastStep);
+  EXPECT_EQ(added.after.size(), 3u);
+  ASSERT_NE(added.segmentId, 0);
+
+  // 2. Changing it: class and range (now reaching into the rest of the split segment).
+  auto current = ws->database().segment(setId, added.segmentId);
+  ASSERT_TRUE(current.ok());
+  LabelSegment changed = current.value();
+  changed.lastStep = target.lastStep - 1;
+  changed.cls = ContactClass::Corner;
+  changed.annotator = "bob";
+  checkUndoRedo(*ws, setId, runId, g,
+                [&] { return ws->changeSegment(setId, added.segmentId, changed); });
+
+  // 3. Removing one.
+  auto now = ws->database().segments(setId, runId);
+  ASSERT_TRUE(now.ok());
+  std::int64_t removeId = 0;
+  for (const LabelSegment& s : now.value())
+    if (s.group == g && s.firstStep == segs.back().firstStep) removeId = s.id;
+  ASSERT_NE(removeId, 0);
+  const LabelEdit removed =
+      checkUndoRedo(*ws, setId, runId, g, [&] { return ws->removeSegment(setId, removeId); });
+  EXPECT_EQ(removed.before.size(), 1u);
+  EXPECT_TRUE(removed.after.empty());
+
+  // 4. A range over the boundary of two neighbouring segments trims both.
+  now = ws->database().segments(setId, runId);
+  ASSERT_TRUE(now.ok());
+  std::vector<LabelSegment> current2;
+  for (const LabelSegment& s : now.value())
+    if (s.group == g) current2.push_back(s);
+  std::sort(current2.begin(), current2.end(),
+            [](const LabelSegment& a, const LabelSegment& b) { return a.firstStep < b.firstStep; });
+  std::size_t k = 0;
+  while (k + 1 < current2.size() && !(current2[k].lastStep + 1 == current2[k + 1].firstStep &&
+                                      current2[k].lastStep > current2[k].firstStep &&
+                                      current2[k + 1].lastStep > current2[k + 1].firstStep)) {
+    ++k;
+  }
+  ASSERT_LT(k + 1, current2.size()) << "no two neighbouring segments of two steps or more";
+  LabelSegment across;
+  across.runId = runId;
+  across.group = g;
+  across.firstStep = current2[k].lastStep;
+  across.lastStep = current2[k + 1].firstStep;
+  across.cls = ContactClass::LeavingWall;
+  across.annotator = "carol";
+  const LabelEdit spanning =
+      checkUndoRedo(*ws, setId, runId, g, [&] { return ws->addSegment(setId, across); });
+  EXPECT_EQ(spanning.before.size(), 2u);
+  EXPECT_EQ(spanning.after.size(), 3u);
+
+  // Nothing else moved: the other run and the other groups.
+  EXPECT_EQ(groupSegments(*ws, setId, other, g), otherBefore);
+  EXPECT_EQ(groupSegments(*ws, setId, runId, SensorGroup::Right), otherGroupBefore);
+}
+
+// ---- training -----------------------------------------------------------------------------------
+
+// Five runs whose names sort differently from the order they are stored in.
+struct TrainFixture {
+  TempDir dir;
+  std::unique_ptr<Workspace> ws;
+  std::vector<std::string> names{"run_e", "run_a", "run_d", "run_b", "run_c"};
+  TrainFixture() {
+    ws = openWorkspace(dir);
+    std::uint64_t seed = 40;
+    for (const std::string& n : names)
+      addRun(*ws, n, ++seed);
+  }
+};
+
+std::vector<std::string> sortedNames(std::vector<std::string> v) {
+  std::sort(v.begin(), v.end());
+  return v;
+}
+
+TEST(WorkspaceTrain, GroupWithTooFewRowsIsSkippedOthersTrain) {
+  TrainFixture f;
+  ASSERT_TRUE(f.ws);
+  storage::RunDatabase& db = f.ws->database();
+  auto truth = db.findLabelSet("truth");
+  ASSERT_TRUE(truth.ok());
+  auto sparse = db.copyLabelSet(truth->id, "sparse");
+  ASSERT_TRUE(sparse.ok());
+  // Group Left keeps only five labelled Wall steps of one run.
+  const SensorGroup thin = SensorGroup::Left;
+  for (const std::string& n : f.names) {
+    auto info = db.findRun(n);
+    ASSERT_TRUE(info.ok());
+    std::vector<LabelSegment> keep;
+    if (n == "run_a") {
+      auto run = f.ws->loadRun(n);
+      ASSERT_TRUE(run.ok());
+      std::size_t t = 0;
+      while (t < run->stepCount() && run->truthAt(t, thin) != ContactClass::Wall)
+        ++t;
+      ASSERT_LT(t + 5, run->stepCount());
+      LabelSegment s;
+      s.group = thin;
+      s.firstStep = static_cast<std::int64_t>(t);
+      s.lastStep = static_cast<std::int64_t>(t + 4);
+      s.cls = ContactClass::Wall;
+      keep.push_back(s);
+    }
+    ASSERT_TRUE(
+        db.replaceSegmentsInRange(sparse.value(), info->id, thin, 0, info->stepCount - 1, keep)
+            .ok());
+  }
+  TrainRequest request;
+  request.labelSet = "sparse";
+  request.groups = {SensorGroup::Front, thin, SensorGroup::Right};
+  request.settings = quickSettings();
+  auto outcome = f.ws->train(request);
+  ASSERT_TRUE(outcome.ok()) << outcome.errorText();
+  ASSERT_EQ(outcome->groups.size(), 3u);
+  const GroupTrainReport& skipped = outcome->groups[1];
+  EXPECT_EQ(skipped.group, thin);
+  EXPECT_FALSE(skipped.trained);
+  // Five steps of run_a, unless run_a was held out for testing (it is not: run_d is).
+  EXPECT_EQ(skipped.samplesTrain, 5u);
+  EXPECT_NE(skipped.skippedBecause.find("5 labelled contact rows"), std::string::npos)
+      << skipped.skippedBecause;
+  EXPECT_NE(skipped.skippedBecause.find("20"), std::string::npos) << skipped.skippedBecause;
+  for (std::size_t i : {0u, 2u}) {
+    EXPECT_TRUE(outcome->groups[i].trained) << outcome->groups[i].skippedBecause;
+    EXPECT_GT(outcome->groups[i].samplesTest, 0u);
+    EXPECT_GT(outcome->groups[i].accuracy, 0.8);
+  }
+  EXPECT_EQ(outcome->bundle.models.size(), 2u);
+  for (const analysis::GroupModel& m : outcome->bundle.models)
+    EXPECT_NE(m.group, thin);
+
+  // With a lower minimum the same group trains (the skip was about the count).
+  request.minRowsPerGroup = 4;
+  request.groups = {thin};
+  request.modelName = "thin";
+  auto low = f.ws->train(request);
+  // Five rows of one class: fewer than two classes to model, so still skipped, and then no group
+  // trains at all, which is an error naming the group.
+  ASSERT_FALSE(low.ok());
+  EXPECT_NE(low.errorText().find("L"), std::string::npos) << low.errorText();
+  EXPECT_NE(low.errorText().find("fewer than two classes"), std::string::npos) << low.errorText();
+  auto models = f.ws->models();
+  ASSERT_TRUE(models.ok());
+  EXPECT_EQ(models->size(), 1u);
+}
+
+TEST(WorkspaceTrain, RequestedTestRunsAreNotTrainedOn) {
+  TrainFixture f;
+  ASSERT_TRUE(f.ws);
+  TrainRequest request;
+  request.labelSet = "truth";
+  request.testRuns = {"run_b", "run_e"};
+  request.groups = {SensorGroup::Front};
+  request.settings = quickSettings();
+  auto outcome = f.ws->train(request);
+  ASSERT_TRUE(outcome.ok()) << outcome.errorText();
+  EXPECT_EQ(outcome->trainRuns, (std::vector<std::string>{"run_a", "run_c", "run_d"}));
+  EXPECT_EQ(outcome->testRuns, (std::vector<std::string>{"run_b", "run_e"}));
+  EXPECT_EQ(outcome->evaluatedOn, "test runs");
+  std::set<std::string> trained;
+  for (const json& r : outcome->provenance["train_runs"])
+    trained.insert(r["name"].get<std::string>());
+  EXPECT_EQ(trained.count("run_b"), 0u);
+  EXPECT_EQ(trained.count("run_e"), 0u);
+  EXPECT_EQ(trained.size(), 3u);
+
+  // Test rows are exactly the contact rows of the test runs.
+  std::size_t testRows = 0, trainRows = 0;
+  for (const std::string& n : f.names) {
+    auto run = f.ws->loadRun(n);
+    ASSERT_TRUE(run.ok());
+    for (std::size_t t = 0; t < run->stepCount(); ++t) {
+      if (analysis::groupIsZero(run.value(), t, SensorGroup::Front)) continue;
+      (n == "run_b" || n == "run_e" ? testRows : trainRows) += 1;
+    }
+  }
+  EXPECT_EQ(outcome->groups[0].samplesTest, testRows);
+  EXPECT_EQ(outcome->groups[0].samplesTrain, trainRows);
+
+  // A run given both ways is refused.
+  request.trainRuns = {"run_a", "run_b"};
+  request.testRuns = {"run_b"};
+  EXPECT_FALSE(f.ws->train(request).ok());
+}
+
+TEST(WorkspaceTrain, AutomaticSplitHoldsOutEveryFourthRunByName) {
+  TrainFixture f;
+  ASSERT_TRUE(f.ws);
+  TrainRequest request;
+  request.labelSet = "truth";
+  request.groups = {SensorGroup::Right};
+  request.settings = quickSettings();
+  auto outcome = f.ws->train(request);
+  ASSERT_TRUE(outcome.ok()) << outcome.errorText();
+  // Sorted by name: run_a run_b run_c run_d run_e; the fourth is held out.
+  EXPECT_EQ(outcome->testRuns, (std::vector<std::string>{"run_d"}));
+  EXPECT_EQ(outcome->trainRuns, (std::vector<std::string>{"run_a", "run_b", "run_c", "run_e"}));
+  EXPECT_EQ(outcome->evaluatedOn, "test runs");
+
+  // Eight runs: the fourth and the eighth.
+  std::uint64_t seed = 60;
+  for (const char* n : {"run_f", "run_g", "run_h"})
+    addRun(*f.ws, n, ++seed);
+  auto eight = f.ws->train(request);
+  ASSERT_TRUE(eight.ok()) << eight.errorText();
+  EXPECT_EQ(eight->testRuns, (std::vector<std::string>{"run_d", "run_h"}));
+  EXPECT_EQ(eight->trainRuns.size(), 6u);
+
+  // Two runs: at least one is held out (the last by name).
+  for (const char* n : {"run_e", "run_a"}) {
+    auto info = f.ws->database().findRun(n);
+    ASSERT_TRUE(info.ok());
+    ASSERT_TRUE(f.ws->database().autolabel(info->id, "pair").ok());
+  }
+  request.labelSet = "pair";
+  auto two = f.ws->train(request);
+  ASSERT_TRUE(two.ok()) << two.errorText();
+  EXPECT_EQ(two->trainRuns, (std::vector<std::string>{"run_a"}));
+  EXPECT_EQ(two->testRuns, (std::vector<std::string>{"run_e"}));
+}
+
+TEST(WorkspaceTrain, LeaveOneRunOutScoresEveryLabelledContactRow) {
+  TrainFixture f;
+  ASSERT_TRUE(f.ws);
+  TrainRequest request;
+  request.labelSet = "truth";
+  request.split = SplitMode::LeaveOneRunOut;
+  request.groups = {SensorGroup::Front, SensorGroup::RearRightCorner};
+  request.settings = quickSettings();
+  auto outcome = f.ws->train(request);
+  ASSERT_TRUE(outcome.ok()) << outcome.errorText();
+  EXPECT_EQ(outcome->evaluatedOn, "leave-one-run-out");
+  EXPECT_TRUE(outcome->testRuns.empty());
+  EXPECT_EQ(outcome->trainRuns, sortedNames(f.names));
+  ASSERT_EQ(outcome->groups.size(), 2u);
+  for (const GroupTrainReport& r : outcome->groups) {
+    std::size_t contactRows = 0;
+    for (const std::string& n : f.names) {
+      auto run = f.ws->loadRun(n);
+      ASSERT_TRUE(run.ok());
+      for (std::size_t t = 0; t < run->stepCount(); ++t)
+        contactRows += analysis::groupIsZero(run.value(), t, r.group) ? 0 : 1;
+    }
+    ASSERT_TRUE(r.trained) << r.skippedBecause;
+    EXPECT_GT(contactRows, 0u);
+    EXPECT_EQ(r.samplesTest, contactRows) << groupInfo(r.group).shortName;
+    EXPECT_EQ(r.samplesTrain, contactRows);
+    EXPECT_GT(r.accuracy, 0.8);
+  }
+  // Test runs with leave-one-run-out are refused.
+  request.testRuns = {"run_a"};
+  EXPECT_FALSE(f.ws->train(request).ok());
+}
+
+TEST(WorkspaceTrain, StoredModelNamesItsProvenance) {
+  TrainFixture f;
+  ASSERT_TRUE(f.ws);
+  TrainRequest request;
+  request.labelSet = "truth";
+  request.groups = {SensorGroup::Back};
+  request.settings = quickSettings();
+  request.settings.classifier.gmm.seed = 77;
+  auto outcome = f.ws->train(request);
+  ASSERT_TRUE(outcome.ok()) << outcome.errorText();
+  EXPECT_EQ(outcome->modelName, "truth-1");
+  auto models = f.ws->models();
+  ASSERT_TRUE(models.ok());
+  ASSERT_EQ(models->size(), 1u);
+  const storage::ModelInfo& m = models->front();
+  EXPECT_EQ(m.name, "truth-1");
+  EXPECT_EQ(m.id, outcome->modelId);
+  const json p = json::parse(m.trainedOnJson);
+  EXPECT_EQ(p["label_set"], "truth");
+  EXPECT_EQ(p["split"], "by-run");
+  EXPECT_EQ(p["program_version"], std::string(programVersion()));
+  EXPECT_FALSE(std::string(programVersion()).empty());
+  EXPECT_EQ(p["settings"]["seed"], 77);
+  EXPECT_EQ(p["settings"]["method"], "gmm");
+  EXPECT_EQ(p["settings"]["order"], 1);
+  EXPECT_EQ(p["settings"]["features"], "normal");
+  std::set<std::string> named;
+  for (const char* key : {"train_runs", "test_runs"}) {
+    ASSERT_TRUE(p[key].is_array()) << key;
+    for (const json& r : p[key]) {
+      const std::string name = r["name"].get<std::string>();
+      named.insert(name);
+      auto info = f.ws->database().findRun(name);
+      ASSERT_TRUE(info.ok()) << name;
+      EXPECT_EQ(r["steps"], info->stepCount);
+      EXPECT_EQ(r["steps"], static_cast<std::int64_t>(kSteps));
+      EXPECT_EQ(r["checksum"], info->checksum);
+      EXPECT_EQ(r["checksum"].get<std::string>().size(), 16u);
+    }
+  }
+  EXPECT_EQ(named, std::set<std::string>(f.names.begin(), f.names.end()));
+  EXPECT_EQ(p["test_runs"].size(), 1u);
+  // The metrics are stored too, and the bundle's models carry the same provenance.
+  const json metrics = json::parse(m.metricsJson);
+  EXPECT_TRUE(metrics.contains("B")) << m.metricsJson;
+  auto bundle = f.ws->loadModel("truth-1");
+  ASSERT_TRUE(bundle.ok()) << bundle.errorText();
+  ASSERT_EQ(bundle->models.size(), 1u);
+  EXPECT_EQ(bundle->models[0].trainedOn, p);
+  // The next automatic name is the next free number.
+  auto second = f.ws->train(request);
+  ASSERT_TRUE(second.ok());
+  EXPECT_EQ(second->modelName, "truth-2");
+}
+
+TEST(WorkspaceTrain, TakenModelNameFailsBeforeTraining) {
+  TrainFixture f;
+  ASSERT_TRUE(f.ws);
+  TrainRequest request;
+  request.labelSet = "truth";
+  request.groups = {SensorGroup::Front};
+  request.settings = quickSettings();
+  request.modelName = "mine";
+  ASSERT_TRUE(f.ws->train(request).ok());
+  auto before = f.ws->models();
+  ASSERT_TRUE(before.ok());
+  ASSERT_EQ(before->size(), 1u);
+
+  std::size_t progressCalls = 0;
+  auto again = f.ws->train(request, [&](std::size_t, std::size_t) {
+    ++progressCalls;
+    return true;
+  });
+  ASSERT_FALSE(again.ok());
+  EXPECT_NE(again.errorText().find("'mine'"), std::string::npos) << again.errorText();
+  EXPECT_NE(again.errorText().find("already"), std::string::npos) << again.errorText();
+  EXPECT_EQ(progressCalls, 0u) << "training started before the name was checked";
+  auto after = f.ws->models();
+  ASSERT_TRUE(after.ok());
+  ASSERT_EQ(after->size(), 1u);
+  EXPECT_EQ(after->front().id, before->front().id);
+  EXPECT_EQ(after->front().createdAt, before->front().createdAt);
+  EXPECT_EQ(after->front().trainedOnJson, before->front().trainedOnJson);
+}
+
+// ---- sweeps -------------------------------------------------------------------------------------
+
+SweepRequest smallSweep() {
+  SweepRequest r;
+  r.labelSet = "truth";
+  r.trainRuns = {"run_a", "run_b", "run_c"};
+  r.testRuns = {"run_d", "run_e"};
+  r.grid.groups = {SensorGroup::Front, SensorGroup::Right};
+  r.grid.orders = {1, 2};
+  r.grid.forms = {analysis::CovarianceForm::NodalDiag};
+  r.grid.varianceFloors = {0.01, 0.1};
+  r.grid.maxIterations = 20;
+  r.threads = 1;
+  return r;
+}
+
+using CellKey = std::tuple<int, int, int, double>;
+CellKey cellKey(const analysis::SweepCell& c) {
+  return {static_cast<int>(c.group), c.order, static_cast<int>(c.form), c.varianceFloor};
+}
+
+TEST(WorkspaceSweep, CellsAreStoredAndReadBack) {
+  TrainFixture f;
+  ASSERT_TRUE(f.ws);
+  std::size_t seen = 0;
+  std::size_t storedWhenSeen = 0;
+  SweepRequest request = smallSweep();
+  request.name = "small";
+  // Each cell is stored before onCell sees it, i.e. as it finishes (read on a second connection).
+  auto reader = storage::RunDatabase::open(f.dir / "w.db", storage::OpenMode::ReadWrite);
+  ASSERT_TRUE(reader.ok());
+  std::int64_t sweepId = 0;
+  auto outcome = f.ws->sweep(request, [&](const analysis::SweepCellResult&) {
+    ++seen;
+    if (sweepId == 0) {
+      auto list = reader.value()->listSweeps();
+      if (list.ok() && !list->empty()) sweepId = list->back().id;
+    }
+    auto cells = reader.value()->sweepCells(sweepId);
+    if (cells.ok() && cells->size() == seen) ++storedWhenSeen;
+  });
+  ASSERT_TRUE(outcome.ok()) << outcome.errorText();
+  const analysis::SweepResult& result = outcome->result;
+  EXPECT_EQ(result.cells.size(), 8u);
+  EXPECT_FALSE(result.cancelled);
+  EXPECT_EQ(seen, 8u);
+  EXPECT_EQ(storedWhenSeen, 8u);
+  EXPECT_EQ(sweepId, outcome->sweepId);
+
+  auto cells = f.ws->database().sweepCells(outcome->sweepId);
+  ASSERT_TRUE(cells.ok());
+  EXPECT_EQ(cells->size(), result.cells.size());
+  auto sweeps = f.ws->sweeps();
+  ASSERT_TRUE(sweeps.ok());
+  ASSERT_EQ(sweeps->size(), 1u);
+  EXPECT_EQ(sweeps->front().name, "small");
+  EXPECT_EQ(sweeps->front().cellCount, 8);
+  const json config = json::parse(sweeps->front().configurationJson);
+  EXPECT_EQ(config["state"], "finished");
+  EXPECT_EQ(config["label_set"], "truth");
+  EXPECT_EQ(config["train_runs"].size(), 3u);
+  EXPECT_EQ(config["test_runs"].size(), 2u);
+
+  auto loaded = f.ws->loadSweep(outcome->sweepId);
+  ASSERT_TRUE(loaded.ok()) << loaded.errorText();
+  ASSERT_EQ(loaded->cells.size(), result.cells.size());
+  std::map<CellKey, const analysis::SweepCellResult*> byKey;
+  for (const analysis::SweepCellResult& c : result.cells)
+    byKey[cellKey(c.cell)] = &c;
+  EXPECT_EQ(byKey.size(), result.cells.size());
+  std::size_t fitted = 0;
+  for (const analysis::SweepCellResult& c : loaded->cells) {
+    auto it = byKey.find(cellKey(c.cell));
+    ASSERT_NE(it, byKey.end());
+    const analysis::SweepCellResult& r = *it->second;
+    EXPECT_EQ(c.ok, r.ok);
+    fitted += c.ok ? 1 : 0;
+    EXPECT_EQ(c.trainRows, r.trainRows);
+    EXPECT_EQ(c.testRows, r.testRows);
+    EXPECT_DOUBLE_EQ(c.metrics.accuracy, r.metrics.accuracy);
+    EXPECT_DOUBLE_EQ(c.metrics.balancedAccuracy, r.metrics.balancedAccuracy);
+    EXPECT_EQ(c.metrics.total, r.metrics.total);
+    EXPECT_EQ(c.confusion.total(), r.confusion.total());
+    byKey.erase(it);
+  }
+  EXPECT_EQ(fitted, 8u);
+  EXPECT_EQ(loaded->grid.orders, request.grid.orders);
+  EXPECT_EQ(loaded->data.size(), result.data.size());
+}
+
+TEST(WorkspaceSweep, CancelledSweepKeepsItsFinishedCells) {
+  TrainFixture f;
+  ASSERT_TRUE(f.ws);
+  SweepRequest request = smallSweep();
+  std::size_t finished = 0;
+  auto outcome = f.ws->sweep(
+      request, [&](const analysis::SweepCellResult&) { ++finished; },
+      [&](std::size_t, std::size_t) { return finished < 3; });
+  ASSERT_TRUE(outcome.ok()) << outcome.errorText();
+  const analysis::SweepResult& result = outcome->result;
+  EXPECT_TRUE(result.cancelled);
+  EXPECT_EQ(result.cells.size(), 3u);
+  EXPECT_EQ(finished, 3u);
+  auto cells = f.ws->database().sweepCells(outcome->sweepId);
+  ASSERT_TRUE(cells.ok());
+  EXPECT_EQ(cells->size(), 3u);
+  auto info = f.ws->database().sweepInfo(outcome->sweepId);
+  ASSERT_TRUE(info.ok());
+  EXPECT_EQ(info->cellCount, 3);
+  EXPECT_EQ(json::parse(info->configurationJson)["state"], "cancelled");
+  auto loaded = f.ws->loadSweep(outcome->sweepId);
+  ASSERT_TRUE(loaded.ok()) << loaded.errorText();
+  EXPECT_EQ(loaded->cells.size(), 3u);
+  EXPECT_TRUE(loaded->cancelled);
+}
+
+TEST(WorkspaceSweep, UnknownRunIsAnErrorAndStoresNothing) {
+  TrainFixture f;
+  ASSERT_TRUE(f.ws);
+  SweepRequest request = smallSweep();
+  request.testRuns = {"no_such_run"};
+  auto outcome = f.ws->sweep(request);
+  ASSERT_FALSE(outcome.ok());
+  EXPECT_NE(outcome.errorText().find("no_such_run"), std::string::npos) << outcome.errorText();
+  auto sweeps = f.ws->sweeps();
+  ASSERT_TRUE(sweeps.ok());
+  EXPECT_TRUE(sweeps->empty());
+}
+
+// ---- classification -----------------------------------------------------------------------------
+
+TEST(WorkspaceClassify, StoredModelOnStoredRun) {
+  TrainFixture f;
+  ASSERT_TRUE(f.ws);
+  TrainRequest request;
+  request.labelSet = "truth";
+  request.groups = {SensorGroup::Front, SensorGroup::FrontLeftCorner};
+  request.settings = quickSettings();
+  request.modelName = "clf";
+  auto trained = f.ws->train(request);
+  ASSERT_TRUE(trained.ok()) << trained.errorText();
+
+  auto classified = f.ws->classify("clf", "run_d");
+  ASSERT_TRUE(classified.ok()) << classified.errorText();
+  const analysis::RunClassification& result = classified->result;
+  auto run = f.ws->loadRun("run_d");
+  ASSERT_TRUE(run.ok());
+  EXPECT_EQ(result.steps, run->stepCount());
+  std::size_t zeroSteps = 0, contactSteps = 0, correct = 0;
+  for (const GroupInfo& info : kSensorGroups) {
+    const analysis::GroupClassification& gc =
+        result.groups[static_cast<std::size_t>(groupIndex(info.group))];
+    const bool modelled =
+        info.group == SensorGroup::Front || info.group == SensorGroup::FrontLeftCorner;
+    EXPECT_EQ(gc.model != nullptr, modelled) << info.shortName;
+    if (!modelled) continue;
+    std::set<std::string> classes;
+    for (ContactClass c : gc.model->classes)
+      classes.insert(std::string(contactClassName(c)));
+    for (std::size_t t = 0; t < result.steps; ++t) {
+      const std::string name = gc.className(t);
+      if (analysis::groupIsZero(run.value(), t, info.group)) {
+        ++zeroSteps;
+        EXPECT_EQ(name, "NoContact") << info.shortName << " step " << t;
+      } else {
+        ++contactSteps;
+        EXPECT_EQ(classes.count(name), 1u) << info.shortName << " step " << t << ": " << name;
+        correct += name == contactClassName(run->truthAt(t, info.group)) ? 1 : 0;
+      }
+    }
+  }
+  EXPECT_GT(zeroSteps, 0u);
+  EXPECT_GT(contactSteps, 0u);
+  EXPECT_GT(correct, contactSteps * 8 / 10);
+
+  // The same as classifying the run loaded from the database with the loaded bundle.
+  auto bundle = f.ws->loadModel("clf");
+  ASSERT_TRUE(bundle.ok());
+  const analysis::RunClassification direct = analysis::classifyRun(run.value(), bundle.value());
+  ASSERT_EQ(direct.steps, result.steps);
+  for (std::size_t g = 0; g < kGroupCount; ++g) {
+    EXPECT_EQ(direct.groups[g].predicted, result.groups[g].predicted) << g;
+    EXPECT_EQ(direct.groups[g].noContactRule, result.groups[g].noContactRule) << g;
+    for (std::size_t t = 0; t < result.steps; ++t)
+      ASSERT_EQ(direct.groups[g].className(t), result.groups[g].className(t)) << g << " " << t;
+  }
+
+  EXPECT_FALSE(f.ws->classify("no-model", "run_d").ok());
+  EXPECT_FALSE(f.ws->classify("clf", "no_run").ok());
+}
+
+// ---- labels belong to runs by id ----------------------------------------------------------------
+
+TEST(WorkspaceRuns, SameStemUnderTwoPrefixesKeepsItsOwnLabels) {
+  TempDir dir;
+  std::filesystem::create_directories(dir / "a");
+  std::filesystem::create_directories(dir / "b");
+  ASSERT_EQ(writeRunCsv(labelledRun(1), dir / "a" / "run_0000.csv"), "");
+  ASSERT_EQ(writeRunCsv(labelledRun(2), dir / "b" / "run_0000.csv"), "");
+  auto ws = openWorkspace(dir);
+  ASSERT_TRUE(ws);
+  storage::RunDatabase& db = ws->database();
+  for (const char* prefix : {"a", "b"}) {
+    storage::ImportOptions options;
+    options.namePrefix = prefix;
+    const auto out = db.importFiles({dir / prefix / "run_0000.csv"}, options);
+    ASSERT_EQ(out.size(), 1u);
+    ASSERT_EQ(out[0].status, storage::ImportStatus::Imported) << out[0].message;
+    EXPECT_EQ(out[0].runName, std::string(prefix) + "_run_0000");
+  }
+  auto a = db.findRun("a_run_0000");
+  auto b = db.findRun("b_run_0000");
+  ASSERT_TRUE(a.ok() && b.ok());
+  ASSERT_NE(a->id, b->id);
+
+  // A set on one run does not apply to the other.
+  ASSERT_TRUE(db.autolabel(a->id, "only-a").ok());
+  auto onlyA = db.findLabelSet("only-a");
+  ASSERT_TRUE(onlyA.ok());
+  auto onB = db.segments(onlyA->id, b->id);
+  ASSERT_TRUE(onB.ok());
+  EXPECT_TRUE(onB->empty());
+  auto catalog = ws->labelSets();
+  ASSERT_TRUE(catalog.ok());
+  ASSERT_EQ(catalog->size(), 1u);
+  EXPECT_EQ(catalog->front().runs, (std::vector<std::string>{"a_run_0000"}));
+  auto runs = ws->runs();
+  ASSERT_TRUE(runs.ok());
+  for (const storage::RunCatalogEntry& e : runs.value()) {
+    EXPECT_EQ(e.labelSets.empty(), e.run.name == "b_run_0000") << e.run.name;
+  }
+
+  // Both labelled into one set: an edit on a's segments leaves b's as they were.
+  ASSERT_TRUE(db.autolabel(b->id, "only-a").ok());
+  const std::vector<SegmentKey> bBefore = groupSegments(*ws, onlyA->id, b->id, SensorGroup::Back);
+  const std::vector<SegmentKey> aBefore = groupSegments(*ws, onlyA->id, a->id, SensorGroup::Back);
+  LabelSegment s;
+  s.run = "a_run_0000";
+  s.group = SensorGroup::Back;
+  s.firstStep = 10;
+  s.lastStep = 200;
+  s.cls = ContactClass::DeadPath;
+  auto edit = ws->addSegment(onlyA->id, s);
+  ASSERT_TRUE(edit.ok()) << edit.errorText();
+  EXPECT_EQ(edit->runId, a->id);
+  EXPECT_NE(groupSegments(*ws, onlyA->id, a->id, SensorGroup::Back), aBefore);
+  EXPECT_EQ(groupSegments(*ws, onlyA->id, b->id, SensorGroup::Back), bBefore);
+
+  // Training on the set loads each run's own labels: b's labels match b's truth.
+  TrainRequest request;
+  request.labelSet = "only-a";
+  request.trainRuns = {"b_run_0000"};
+  request.groups = {SensorGroup::Back};
+  request.settings = quickSettings();
+  auto trained = ws->train(request);
+  ASSERT_TRUE(trained.ok()) << trained.errorText();
+  EXPECT_EQ(trained->evaluatedOn, "training runs");
+  EXPECT_EQ(trained->trainRuns, (std::vector<std::string>{"b_run_0000"}));
+  EXPECT_EQ(trained->bundle.models[0].classes.size(), 3u) << "DeadPath of run a leaked into b";
+}
+
+}  // namespace
+}  // namespace tactile::workspace
