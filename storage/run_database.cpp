@@ -5,10 +5,12 @@
 #include <sqlite3.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cstdio>
 #include <cstring>
 #include <ctime>
 #include <iterator>
+#include <thread>
 
 #include "storage/database_impl.h"
 #include "storage/schema.h"
@@ -64,6 +66,14 @@ Probe probeFile(const std::filesystem::path& path) {
     probe.kind = FileKind::NotSqlite;
     return probe;
   }
+  // A write-ahead log with content may hold a newer page 1 (header); then only SQLite can tell.
+  // Looked at before and after reading the header, as another process may be checkpointing.
+  const auto walHasContent = [&] {
+    std::error_code walError;
+    const auto walBytes = std::filesystem::file_size(path.string() + "-wal", walError);
+    return !walError && walBytes > 0;
+  };
+  const bool walBefore = walHasContent();
   std::FILE* file = std::fopen(path.c_str(), "rb");
   if (file == nullptr) return probe;  // unreadable: SQLite reports why
   unsigned char header[100] = {};
@@ -78,9 +88,7 @@ Probe probeFile(const std::filesystem::path& path) {
     probe.kind = FileKind::NotSqlite;
     return probe;
   }
-  // A write-ahead log with content may hold a newer page 1; then only SQLite can tell.
-  const auto walBytes = std::filesystem::file_size(path.string() + "-wal", ec);
-  if (!ec && walBytes > 0) return probe;
+  if (walBefore || walHasContent()) return probe;
   probe.applicationId = bigEndian32(header + 68);
   const std::uint32_t userVersion = bigEndian32(header + 60);
   const std::uint32_t schemaCookie = bigEndian32(header + 40);
@@ -103,9 +111,10 @@ std::string hex32(std::uint32_t value) {
 // The same identity checks through SQLite, before anything is written (for files whose -wal holds
 // content the header above could not judge). Throws DbError naming the file.
 void checkIdentity(db::Connection& c, const std::string& name, bool mayInitialise) {
-  const auto applicationId = c.queryInt("PRAGMA application_id");
-  const auto version = c.queryInt("PRAGMA user_version");
-  const auto objects = c.queryInt("SELECT count(*) FROM sqlite_schema");
+  const db::Identity identity = db::readIdentity(c);
+  const auto applicationId = identity.applicationId;
+  const auto version = identity.version;
+  const auto objects = identity.objects;
   if (applicationId != 0 && applicationId != db::kApplicationId) {
     throw db::DbError(name, "an SQLite database of another application (application_id " +
                                 hex32(static_cast<std::uint32_t>(applicationId)) +
@@ -120,6 +129,35 @@ void checkIdentity(db::Connection& c, const std::string& name, bool mayInitialis
     throw db::DbError(name,
                       "an SQLite database without the Tactile schema; not a Tactile "
                       "database (only a creating verb such as `tactile db create` makes one)");
+  }
+}
+
+// PRAGMA journal_mode = WAL, retried while another process holds the lock: the switch of a new
+// file needs an exclusive lock, and SQLite returns SQLITE_BUSY at once instead of calling the busy
+// handler when several processes create one file together (docs/storage.md#concurrency).
+std::string switchToWal(db::Connection& c, const std::string& name) {
+  using namespace std::chrono_literals;
+  const auto deadline = std::chrono::steady_clock::now() + 60s;
+  while (true) {
+    sqlite3_stmt* statement = nullptr;
+    int rc = sqlite3_prepare_v2(c.handle(), "PRAGMA journal_mode = WAL", -1, &statement, nullptr);
+    std::string journal;
+    if (rc == SQLITE_OK) {
+      rc = sqlite3_step(statement);
+      if (rc == SQLITE_ROW) {
+        const auto* text = reinterpret_cast<const char*>(sqlite3_column_text(statement, 0));
+        journal = text != nullptr ? text : "";
+        rc = SQLITE_OK;
+      }
+    }
+    sqlite3_finalize(statement);
+    if (rc == SQLITE_OK) return journal;
+    const int primary = rc & 0xff;
+    if ((primary != SQLITE_BUSY && primary != SQLITE_LOCKED) ||
+        std::chrono::steady_clock::now() > deadline) {
+      throw db::DbError(name, std::string("cannot switch to WAL: ") + sqlite3_errstr(rc));
+    }
+    std::this_thread::sleep_for(5ms);
   }
 }
 
@@ -165,14 +203,7 @@ Result<std::unique_ptr<RunDatabase>> RunDatabase::open(const std::filesystem::pa
                                          "), not a Tactile database; left unchanged"
                                    : "holds tables but no Tactile schema version; not a Tactile "
                                      "database; left unchanged"));
-        case FileKind::NoSchema:
-          if (mode != OpenMode::Create) {
-            return R(Error(name,
-                           "an SQLite database without the Tactile schema; not a Tactile "
-                           "database (only a creating verb such as `tactile db create` "
-                           "makes one)"));
-          }
-          break;
+        case FileKind::NoSchema:  // maybe being created this moment: SQLite's snapshot decides
         case FileKind::Tactile:
         case FileKind::Unknown:
           break;
@@ -233,13 +264,9 @@ Result<std::unique_ptr<RunDatabase>> RunDatabase::open(const std::filesystem::pa
       c.exec("PRAGMA page_size = 16384");
     }
     if (!inMemory) {
-      {
-        db::Statement journalMode(c, "PRAGMA journal_mode = WAL");
-        journalMode.step();
-        const std::string journal = journalMode.columnText(0);
-        if (journal != "wal") {
-          return R(Error(name, "cannot switch to WAL (journal mode " + journal + ")"));
-        }
+      const std::string journal = switchToWal(c, name);
+      if (journal != "wal") {
+        return R(Error(name, "cannot switch to WAL (journal mode " + journal + ")"));
       }
     }
     c.exec("PRAGMA synchronous = NORMAL");

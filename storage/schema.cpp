@@ -189,20 +189,33 @@ std::filesystem::path backupPath(const std::filesystem::path& dbPath, int versio
   return candidate;
 }
 
+Identity readIdentity(Connection& connection) {
+  Statement s(connection,
+              "SELECT (SELECT application_id FROM pragma_application_id), "
+              "(SELECT user_version FROM pragma_user_version), "
+              "(SELECT count(*) FROM sqlite_schema)");
+  if (!s.step()) throw DbError(connection.file(), "cannot read the schema identity");
+  Identity identity;
+  identity.applicationId = s.columnInt(0);
+  identity.version = static_cast<int>(s.columnInt(1));
+  identity.objects = s.columnInt(2);
+  return identity;
+}
+
 namespace {
 
-// The identity and version checks, on what the connection sees now. Throws DbError.
-void checkMigratable(Connection& connection, int version, const std::string& name) {
+// The identity and version checks, on one snapshot. Throws DbError.
+void checkMigratable(const Identity& identity, const std::string& name) {
+  const int version = identity.version;
   if (version > kSchemaVersion) {
     throw DbError(name, "schema version " + std::to_string(version) + ", newer than version " +
                             std::to_string(kSchemaVersion) +
                             " that this program understands; use a newer tactile");
   }
-  const auto applicationId = connection.queryInt("PRAGMA application_id");
-  if (applicationId != 0 && applicationId != kApplicationId) {
+  if (identity.applicationId != 0 && identity.applicationId != kApplicationId) {
     throw DbError(name, "an SQLite database of another application, not a Tactile database");
   }
-  if (version == 0 && connection.queryInt("SELECT count(*) FROM sqlite_schema") != 0) {
+  if (version == 0 && identity.objects != 0) {
     throw DbError(name, "holds tables but no Tactile schema version; not a Tactile database");
   }
 }
@@ -212,10 +225,11 @@ void checkMigratable(Connection& connection, int version, const std::string& nam
 MigrationReport migrate(Connection& connection, const std::filesystem::path& dbPath,
                         int targetVersion) {
   MigrationReport report;
-  report.fromVersion = schemaVersion(connection);
+  const Identity before = readIdentity(connection);
+  report.fromVersion = before.version;
   report.toVersion = report.fromVersion;
   const std::string name = dbPath.string();
-  checkMigratable(connection, report.fromVersion, name);
+  checkMigratable(before, name);
   if (report.fromVersion >= targetVersion) return report;
 
   const bool inMemory = name.empty() || name == ":memory:";
@@ -227,8 +241,9 @@ MigrationReport migrate(Connection& connection, const std::filesystem::path& dbP
   // (BEGIN IMMEDIATE waits through the busy timeout) and the version read again inside it, so only
   // the first one migrates and the others find the work done.
   Transaction transaction(connection);
-  const int current = schemaVersion(connection);
-  checkMigratable(connection, current, name);
+  const Identity now = readIdentity(connection);
+  const int current = now.version;
+  checkMigratable(now, name);
   if (current >= targetVersion) {
     transaction.rollback();
     if (!report.backupPath.empty()) {

@@ -3,6 +3,7 @@
 // N; opening runs the missing ones in one transaction after a backup copy of the file.
 #pragma once
 
+#include <cstdint>
 #include <filesystem>
 #include <span>
 #include <string>
@@ -37,6 +38,15 @@ struct MigrationReport {
 
 // The database's user_version.
 int schemaVersion(Connection& connection);
+
+// What identifies a Tactile database, read in one statement (one snapshot: another process may
+// be creating the schema at the same moment, and separate reads could mix before and after).
+struct Identity {
+  std::int64_t applicationId = 0;
+  int version = 0;           // PRAGMA user_version
+  std::int64_t objects = 0;  // rows of sqlite_schema
+};
+Identity readIdentity(Connection& connection);
 
 // Brings the database to `targetVersion` (the newest by default; lower targets exist for tests
 // that need an old database). A database newer than kSchemaVersion, or one that belongs to
