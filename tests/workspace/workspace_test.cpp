@@ -601,6 +601,38 @@ TEST(WorkspaceSweep, CancelledSweepKeepsItsFinishedCells) {
   EXPECT_TRUE(loaded->cancelled);
 }
 
+TEST(WorkspaceSweep, CancelledOnTwoThreadsStoresExactlyTheResultCells) {
+  TrainFixture f;
+  ASSERT_TRUE(f.ws);
+  SweepRequest request = smallSweep();
+  request.threads = 2;
+  request.grid.orders = {1, 2, 4};
+  std::size_t finished = 0;
+  auto outcome = f.ws->sweep(
+      request, [&](const analysis::SweepCellResult&) { ++finished; },
+      [&](std::size_t, std::size_t) { return finished < 2; });
+  ASSERT_TRUE(outcome.ok()) << outcome.errorText();
+  EXPECT_TRUE(outcome->result.cancelled);
+  EXPECT_GE(outcome->result.cells.size(), 2u);
+  EXPECT_LT(outcome->result.cells.size(), 12u);
+  auto cells = f.ws->database().sweepCells(outcome->sweepId);
+  ASSERT_TRUE(cells.ok());
+  EXPECT_EQ(cells->size(), outcome->result.cells.size());
+  EXPECT_EQ(cells->size(), finished);
+
+  // Cancelled before the first cell: the sweep is kept, empty and marked cancelled.
+  auto none = f.ws->sweep(request, {}, [](std::size_t, std::size_t) { return false; });
+  ASSERT_TRUE(none.ok()) << none.errorText();
+  EXPECT_TRUE(none->result.cells.empty());
+  auto info = f.ws->database().sweepInfo(none->sweepId);
+  ASSERT_TRUE(info.ok());
+  EXPECT_EQ(info->cellCount, 0);
+  EXPECT_EQ(json::parse(info->configurationJson)["state"], "cancelled");
+  auto loaded = f.ws->loadSweep(none->sweepId);
+  ASSERT_TRUE(loaded.ok()) << loaded.errorText();
+  EXPECT_TRUE(loaded->cells.empty());
+}
+
 TEST(WorkspaceSweep, UnknownRunIsAnErrorAndStoresNothing) {
   TrainFixture f;
   ASSERT_TRUE(f.ws);
