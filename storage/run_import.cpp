@@ -418,7 +418,8 @@ ImportOutcome writeRun(RunDatabase::Impl& impl, FileHead& head,
   } catch (const std::exception& e) {
     outcome.status = ImportStatus::Failed;
     outcome.runId = 0;
-    outcome.message = head.file + ": not stored: " + e.what();
+    // An SQLite failure names the database too (docs/storage.md#errors).
+    outcome.message = head.file + ": not stored in " + impl.path.string() + ": " + e.what();
   }
   return outcome;
 }

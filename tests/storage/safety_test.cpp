@@ -85,7 +85,7 @@ TEST(OpenMode, ReadOnlyNeverWrites) {
   EXPECT_EQ(db.value()->importRun(makeRun(5, true, 9), "two").status, ImportStatus::Failed);
   EXPECT_TRUE(db.value()->check().ok);
   db.value().reset();
-  EXPECT_EQ(readBytes(path), before);
+  EXPECT_TRUE(readBytes(path) == before) << path << " changed";
 }
 
 TEST(OpenMode, ReadOnlyRefusesAnOlderSchemaInsteadOfMigrating) {
@@ -101,7 +101,7 @@ TEST(OpenMode, ReadOnlyRefusesAnOlderSchemaInsteadOfMigrating) {
   ASSERT_FALSE(db.ok());
   EXPECT_EQ(db.error().file, path.string());
   EXPECT_NE(db.error().message.find("older"), std::string::npos) << db.errorText();
-  EXPECT_EQ(readBytes(path), before);
+  EXPECT_TRUE(readBytes(path) == before) << path << " changed";
 }
 
 // Every mode refuses these files before writing anything.
@@ -112,7 +112,7 @@ void expectRefusedUnchanged(const fs::path& path, const std::string& expected) {
     ASSERT_FALSE(db.ok()) << path << " opened in mode " << static_cast<int>(mode);
     EXPECT_EQ(db.error().file, path.string());
     EXPECT_NE(db.error().message.find(expected), std::string::npos) << db.errorText();
-    EXPECT_EQ(readBytes(path), before)
+    EXPECT_TRUE(readBytes(path) == before)
         << path << " changed (mode " << static_cast<int>(mode) << ")";
     expectNoCompanions(path);
   }
