@@ -43,6 +43,13 @@ std::unique_ptr<RunDatabase> openDatabase(const std::string& path, OpenMode mode
   return std::move(db.value());
 }
 
+// "DB: message" for an error of the database at `dbPath`: SQLite errors already name it
+// (Error::file), others (e.g. "no run named ...") get it here; errors about another file (an
+// output file) keep theirs.
+std::string databaseError(const std::string& dbPath, const Error& error) {
+  return error.file.empty() ? dbPath + ": " + error.message : error.text();
+}
+
 }  // namespace
 
 std::unique_ptr<RunDatabase> openDatabaseForRead(const std::string& path) {
@@ -174,8 +181,9 @@ int runImport(const ImportArgs& a) {
 int runExport(const std::string& dbPath, const std::string& runName, const std::string& out) {
   auto db = openDatabaseForRead(dbPath);
   auto run = db->findRun(runName);
-  if (!run) throw std::runtime_error(dbPath + ": " + run.errorText());
+  if (!run) throw std::runtime_error(databaseError(dbPath, run.error()));
   const auto status = db->exportRun(run->id, out);
+  // SQLite errors name the database (Error::file), write errors the output file.
   if (!status) throw std::runtime_error(status.errorText());
   return kExitOk;
 }
@@ -189,11 +197,11 @@ int runAutolabel(const std::string& dbPath, const std::string& runName, bool all
   std::vector<storage::RunInfo> runs;
   if (all) {
     auto listed = db->listRuns();
-    if (!listed) throw std::runtime_error(listed.errorText());
+    if (!listed) throw std::runtime_error(databaseError(dbPath, listed.error()));
     runs = std::move(listed.value());
   } else {
     auto run = db->findRun(runName);
-    if (!run) throw std::runtime_error(dbPath + ": " + run.errorText());
+    if (!run) throw std::runtime_error(databaseError(dbPath, run.error()));
     runs.push_back(std::move(run.value()));
   }
   nlohmann::json labelled = nlohmann::json::array();
@@ -205,7 +213,7 @@ int runAutolabel(const std::string& dbPath, const std::string& runName, bool all
     }
     auto count = db->autolabel(run.id, set);
     if (!count) {
-      printError(count.errorText());
+      printError(databaseError(dbPath, count.error()));
       ++failures;
       continue;
     }

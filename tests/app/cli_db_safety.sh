@@ -109,6 +109,12 @@ set -e
 [ "$rc" -eq 1 ] || fail "export-run from a database without steps exited $rc"
 grep -q "^tactile: error: broken.db: .*no such table: steps" broken.err ||
   fail "SQLite error without the database: $(cat broken.err)"
+! grep -q "broken.db: broken.db" broken.err || fail "database named twice: $(cat broken.err)"
+set +e
+"$T" export-run --db c.db --run no_such_run --out broken.csv 2> broken.err
+set -e
+[ "$(cat broken.err)" = "tactile: error: c.db: no run named 'no_such_run'" ] ||
+  fail "unknown run: $(cat broken.err)"
 
 # ---- 6. db check summarises --------------------------------------------------------------------
 cp c.db orphan.db
