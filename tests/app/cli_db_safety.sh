@@ -170,6 +170,9 @@ if [ "$DROP" = none ]; then
 else
   mkdir ro out
   cp c.db ro/r.db
+  "$T" autolabel --db ro/r.db --all --set truth > /dev/null || fail "autolabel exited $?"
+  cp ro/r.db r-before.db
+  no_companions ro/r.db
   chmod 444 ro/r.db
   chmod 555 ro
   chmod 777 out
@@ -185,8 +188,11 @@ else
   cmp -s out/run_0003.csv runs/run_0003.csv || fail "read-only export differs from the file"
   nobody "$T" runs list --db ro/r.db > ro-list.out 2> ro.err || fail "read-only runs list: $(cat ro.err)"
   grep -q run_0005 ro-list.out || fail "read-only runs list: $(cat ro-list.out)"
-  nobody "$T" labels export --db ro/r.db --set none out/none.csv > /dev/null 2> ro.err || true
-  cmp -s ro/r.db c.db || fail "read-only verbs changed the database"
+  nobody "$T" labels export --db ro/r.db --set truth out/truth.csv > /dev/null 2> ro.err ||
+    fail "read-only labels export: $(cat ro.err)"
+  [ "$(grep -c '^# run ' out/truth.csv)" -eq 6 ] || fail "read-only labels export: $(head -3 out/truth.csv)"
+  nobody "$T" labels list --db ro/r.db > /dev/null 2> ro.err || fail "read-only labels list: $(cat ro.err)"
+  cmp -s ro/r.db r-before.db || fail "read-only verbs changed the database"
   no_companions ro/r.db
   # A writing verb is refused (the file and folder are read-only), naming the database.
   set +e
