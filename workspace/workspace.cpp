@@ -526,6 +526,23 @@ Result<analysis::SweepResult> Workspace::loadSweep(std::int64_t sweepId) {
   }
   auto result = analysis::sweepFromJson(doc);
   if (!result) return failure("sweep " + std::to_string(sweepId) + ": " + result.errorText());
+  // Cells are stored as they finish (on several threads not in grid order); a SweepResult lists
+  // them in grid order, as the sweep itself returned them.
+  const std::vector<analysis::SweepCell> grid = analysis::expandGrid(result->grid);
+  auto position = [&grid](const analysis::SweepCell& c) {
+    for (std::size_t i = 0; i < grid.size(); ++i) {
+      const analysis::SweepCell& g = grid[i];
+      if (g.group == c.group && g.method == c.method && g.order == c.order && g.form == c.form &&
+          g.varianceFloor == c.varianceFloor && g.features == c.features && g.seed == c.seed) {
+        return i;
+      }
+    }
+    return grid.size();
+  };
+  std::stable_sort(result->cells.begin(), result->cells.end(),
+                   [&](const analysis::SweepCellResult& a, const analysis::SweepCellResult& b) {
+                     return position(a.cell) < position(b.cell);
+                   });
   return result;
 }
 

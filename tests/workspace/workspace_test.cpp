@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "analysis/features.h"
+#include "analysis/report.h"
 #include "run/run_csv.h"
 #include "tests/analysis/learn_test_data.h"
 #include "tests/storage/storage_test_util.h"
@@ -277,13 +278,12 @@ TEST(WorkspaceTrain, GroupWithTooFewRowsIsSkippedOthersTrain) {
   for (const analysis::GroupModel& m : outcome->bundle.models)
     EXPECT_NE(m.group, thin);
 
-  // With a lower minimum the same group trains (the skip was about the count).
+  // Below a lower minimum the count is no longer the reason, but five rows of one class still
+  // give fewer than two classes to model; with no group left, training is an error naming why.
   request.minRowsPerGroup = 4;
   request.groups = {thin};
   request.modelName = "thin";
   auto low = f.ws->train(request);
-  // Five rows of one class: fewer than two classes to model, so still skipped, and then no group
-  // trains at all, which is an error naming the group.
   ASSERT_FALSE(low.ok());
   EXPECT_NE(low.errorText().find("L"), std::string::npos) << low.errorText();
   EXPECT_NE(low.errorText().find("fewer than two classes"), std::string::npos) << low.errorText();
@@ -575,6 +575,34 @@ TEST(WorkspaceSweep, CellsAreStoredAndReadBack) {
   EXPECT_EQ(loaded->data.size(), result.data.size());
 }
 
+// Cells are stored as they finish, which on several threads is not the grid order; a loaded sweep
+// lists them in grid order like the SweepResult, cell for cell the same JSON as the sweep file.
+TEST(WorkspaceSweep, LoadedSweepListsCellsInGridOrder) {
+  TrainFixture f;
+  ASSERT_TRUE(f.ws);
+  SweepRequest request = smallSweep();
+  request.threads = 2;
+  // Big orders first in the grid, so that small later cells finish before them.
+  request.grid.orders = {8, 4, 1, 2};
+  request.grid.forms = {analysis::CovarianceForm::NodalFull, analysis::CovarianceForm::GrandDiag};
+  request.grid.groups = {SensorGroup::Front, SensorGroup::Right, SensorGroup::Left};
+  auto outcome = f.ws->sweep(request);
+  ASSERT_TRUE(outcome.ok()) << outcome.errorText();
+  const std::vector<analysis::SweepCell> grid = analysis::expandGrid(request.grid);
+  ASSERT_EQ(outcome->result.cells.size(), grid.size());
+  auto loaded = f.ws->loadSweep(outcome->sweepId);
+  ASSERT_TRUE(loaded.ok()) << loaded.errorText();
+  ASSERT_EQ(loaded->cells.size(), grid.size());
+  for (std::size_t i = 0; i < grid.size(); ++i) {
+    EXPECT_EQ(cellKey(outcome->result.cells[i].cell), cellKey(grid[i])) << i;
+    EXPECT_EQ(cellKey(loaded->cells[i].cell), cellKey(grid[i])) << i;
+  }
+  EXPECT_EQ(analysis::sweepToJson(loaded.value())["cells"],
+            analysis::sweepToJson(outcome->result)["cells"]);
+  EXPECT_EQ(analysis::sweepReport(loaded.value(), analysis::TableStyle::Csv),
+            analysis::sweepReport(outcome->result, analysis::TableStyle::Csv));
+}
+
 TEST(WorkspaceSweep, CancelledSweepKeepsItsFinishedCells) {
   TrainFixture f;
   ASSERT_TRUE(f.ws);
@@ -748,6 +776,17 @@ TEST(WorkspaceRuns, SameStemUnderTwoPrefixesKeepsItsOwnLabels) {
   for (const storage::RunCatalogEntry& e : runs.value()) {
     EXPECT_EQ(e.labelSets.empty(), e.run.name == "b_run_0000") << e.run.name;
   }
+
+  // Training on b with a's set finds no labels on b: every group is skipped for want of rows.
+  TrainRequest bOnly;
+  bOnly.labelSet = "only-a";
+  bOnly.trainRuns = {"b_run_0000"};
+  bOnly.groups = {SensorGroup::Back, SensorGroup::Front};
+  bOnly.settings = quickSettings();
+  auto unlabelled = ws->train(bOnly);
+  ASSERT_FALSE(unlabelled.ok()) << "run a's labels were applied to run b";
+  EXPECT_NE(unlabelled.errorText().find("0 labelled contact rows"), std::string::npos)
+      << unlabelled.errorText();
 
   // Both labelled into one set: an edit on a's segments leaves b's as they were.
   ASSERT_TRUE(db.autolabel(b->id, "only-a").ok());
