@@ -5,6 +5,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <cstdio>
 #include <fstream>
 #include <iterator>
 #include <set>
@@ -86,6 +87,47 @@ TEST(OpenMode, ReadOnlyNeverWrites) {
   EXPECT_TRUE(db.value()->check().ok);
   db.value().reset();
   EXPECT_TRUE(readBytes(path) == before) << path << " changed";
+}
+
+// A read-only file in a read-only folder (no -shm can be made there): opened `immutable`. As root
+// (CI) file modes do not stop writes, so the reading child drops to user nobody (65534).
+TEST(OpenMode, ReadOnlyWorksInAReadOnlyFolder) {
+  TempDir dir;
+  const fs::path folder = dir / "ro";
+  fs::create_directories(folder);
+  const fs::path path = folder / "r.db";
+  {
+    auto db = RunDatabase::open(path, OpenMode::Create);
+    ASSERT_TRUE(db.ok());
+    ASSERT_EQ(db.value()->importRun(makeRun(25, true), "one").status, ImportStatus::Imported);
+  }
+  expectNoCompanions(path);
+  const std::string before = readBytes(path);
+  fs::permissions(path, fs::perms::owner_read | fs::perms::group_read | fs::perms::others_read);
+  fs::permissions(folder, fs::perms::owner_read | fs::perms::owner_exec | fs::perms::group_read |
+                              fs::perms::group_exec | fs::perms::others_read |
+                              fs::perms::others_exec);
+  const pid_t pid = ::fork();
+  ASSERT_GE(pid, 0);
+  if (pid == 0) {
+    if (::getuid() == 0 && (::setgid(65534) != 0 || ::setuid(65534) != 0)) ::_exit(3);
+    auto db = RunDatabase::open(path, OpenMode::ReadOnly);
+    if (!db) {
+      std::fprintf(stderr, "%s\n", db.errorText().c_str());
+      ::_exit(1);
+    }
+    auto run = db.value()->findRun("one");
+    auto data = run ? db.value()->loadRun(run->id) : Result<RunData>(Error("no run"));
+    ::_exit(data.ok() && data->stepCount() == 25 && db.value()->check().ok ? 0 : 2);
+  }
+  int status = 0;
+  ::waitpid(pid, &status, 0);
+  fs::permissions(folder, fs::perms::owner_all);
+  fs::permissions(path, fs::perms::owner_read | fs::perms::owner_write);
+  ASSERT_TRUE(WIFEXITED(status));
+  EXPECT_EQ(WEXITSTATUS(status), 0) << "1: open failed, 2: reading failed, 3: cannot drop root";
+  EXPECT_TRUE(readBytes(path) == before) << "the read-only database changed";
+  expectNoCompanions(path);
 }
 
 TEST(OpenMode, ReadOnlyRefusesAnOlderSchemaInsteadOfMigrating) {
