@@ -202,6 +202,58 @@ TEST(WorkspaceLabels, EditsAreUndoneAndRedoneExactly) {
   EXPECT_EQ(groupSegments(*ws, setId, runId, SensorGroup::Right), otherGroupBefore);
 }
 
+// An undo stack: overlapping edits undone newest first give back the start, redone oldest first
+// the end; a change that moves a segment elsewhere is undone too.
+TEST(WorkspaceLabels, OverlappingEditsUndoneAsAStack) {
+  TempDir dir;
+  auto ws = openWorkspace(dir);
+  ASSERT_TRUE(ws);
+  const std::int64_t runId = addRun(*ws, "stack_run", 8, "stack");
+  auto set = ws->database().findLabelSet("stack");
+  ASSERT_TRUE(set.ok());
+  const std::int64_t setId = set->id;
+  const SensorGroup g = SensorGroup::Front;
+  const std::vector<SegmentKey> start = groupSegments(*ws, setId, runId, g);
+
+  std::vector<LabelEdit> stack;
+  std::vector<std::vector<SegmentKey>> states{start};
+  auto push = [&](Result<LabelEdit> edit) {
+    ASSERT_TRUE(edit.ok()) << edit.errorText();
+    stack.push_back(edit.value());
+    states.push_back(groupSegments(*ws, setId, runId, g));
+  };
+  LabelSegment s;
+  s.runId = runId;
+  s.group = g;
+  s.annotator = "ann";
+  s.firstStep = 30;
+  s.lastStep = 90;
+  s.cls = ContactClass::DeadPath;
+  push(ws->addSegment(setId, s));
+  s.firstStep = 80;
+  s.lastStep = 150;
+  s.cls = ContactClass::Corner;
+  push(ws->addSegment(setId, s));
+  const std::int64_t moved = stack.back().segmentId;
+  // Moved far away: the old place is left unlabelled, the new one taken over.
+  s.firstStep = 300;
+  s.lastStep = 320;
+  push(ws->changeSegment(setId, moved, s));
+  push(ws->removeSegment(setId, stack.front().segmentId));
+  for (std::size_t i = 1; i < states.size(); ++i)
+    EXPECT_NE(states[i], states[i - 1]) << "edit " << i << " changed nothing";
+
+  for (std::size_t i = stack.size(); i-- > 0;) {
+    ASSERT_TRUE(ws->undo(stack[i]).ok());
+    EXPECT_EQ(groupSegments(*ws, setId, runId, g), states[i]) << "undo of edit " << i;
+  }
+  EXPECT_EQ(groupSegments(*ws, setId, runId, g), start);
+  for (std::size_t i = 0; i < stack.size(); ++i) {
+    ASSERT_TRUE(ws->redo(stack[i]).ok());
+    EXPECT_EQ(groupSegments(*ws, setId, runId, g), states[i + 1]) << "redo of edit " << i;
+  }
+}
+
 // ---- training -----------------------------------------------------------------------------------
 
 // Five runs whose names sort differently from the order they are stored in.
