@@ -450,6 +450,12 @@ Result<SweepOutcome> Workspace::sweep(
   if (request.trainRuns.empty() || request.testRuns.empty()) {
     return failure("a sweep needs training runs and test runs");
   }
+  for (const std::string& t : request.testRuns) {
+    if (std::find(request.trainRuns.begin(), request.trainRuns.end(), t) !=
+        request.trainRuns.end()) {
+      return failure("run '" + t + "' is given both for training and for testing");
+    }
+  }
   auto train = loadLabelled(set->id, request.trainRuns);
   if (!train) return train.error();
   auto test = loadLabelled(set->id, request.testRuns);

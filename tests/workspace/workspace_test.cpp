@@ -713,6 +713,21 @@ TEST(WorkspaceSweep, CancelledOnTwoThreadsStoresExactlyTheResultCells) {
   EXPECT_TRUE(loaded->cells.empty());
 }
 
+// Whole runs are held out: a run both trained and scored on would score the cells on their own
+// training rows, so it is refused like in train (and nothing is stored).
+TEST(WorkspaceSweep, RunGivenForTrainingAndTestingIsRefused) {
+  TrainFixture f;
+  ASSERT_TRUE(f.ws);
+  SweepRequest request = smallSweep();
+  request.testRuns = {"run_d", "run_a"};
+  auto outcome = f.ws->sweep(request);
+  ASSERT_FALSE(outcome.ok());
+  EXPECT_NE(outcome.errorText().find("'run_a'"), std::string::npos) << outcome.errorText();
+  auto sweeps = f.ws->sweeps();
+  ASSERT_TRUE(sweeps.ok());
+  EXPECT_TRUE(sweeps->empty());
+}
+
 TEST(WorkspaceSweep, UnknownRunIsAnErrorAndStoresNothing) {
   TrainFixture f;
   ASSERT_TRUE(f.ws);
