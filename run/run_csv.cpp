@@ -266,23 +266,22 @@ class Parser {
   std::size_t headerLine() const { return headerLine_; }
   bool hasTruth() const { return hasTruth_; }
   const RunData& head() const { return run_; }
-  const RunCsvError& error() const { return *error_; }
-  RunCsvError noStepsError() const {
+  const Error& error() const { return *error_; }
+  Error noStepsError() const {
     return makeError(headerLine_, "no steps: the file has a header but no rows");
   }
 
  private:
-  RunCsvError makeError(std::size_t line, std::string message, int column = -1) const {
-    RunCsvError e;
-    e.file = std::string(file_);
-    e.line = line;
-    if (column >= 0 && column < static_cast<int>(columns_.size())) {
-      e.column = columns_[column].name;
-      e.columnPosition = static_cast<std::size_t>(column) + 1;
-    } else if (column >= 0) {
-      e.columnPosition = static_cast<std::size_t>(column) + 1;
+  Error makeError(std::size_t line, std::string message, int column = -1) const {
+    Error e(std::string(file_), line, 0, std::move(message));
+    if (column >= 0) {
+      e.column = static_cast<std::size_t>(column) + 1;
+      e.message = (column < static_cast<int>(columns_.size())
+                       ? "column '" + columns_[column].name + "' (position " +
+                             std::to_string(e.column) + "): "
+                       : "field " + std::to_string(e.column) + ": ") +
+                  e.message;
     }
-    e.message = std::move(message);
     return e;
   }
 
@@ -657,7 +656,7 @@ class Parser {
   std::size_t headerLine_ = 0;
   std::size_t firstStep_ = 0;
   bool hasTruth_ = false;
-  std::optional<RunCsvError> error_;
+  std::optional<Error> error_;
 };
 
 // Appends rows (a chunk's RunData: no metadata) to `run`.
@@ -686,19 +685,6 @@ inline char* putDouble(char* out, double value) {
 }
 
 }  // namespace
-
-std::string RunCsvError::toString() const {
-  std::string out = file;
-  if (line > 0) out += ":" + std::to_string(line);
-  out += ": ";
-  if (!column.empty()) {
-    out += "column '" + column + "' (position " + std::to_string(columnPosition) + "): ";
-  } else if (columnPosition > 0) {
-    out += "field " + std::to_string(columnPosition) + ": ";
-  }
-  out += message;
-  return out;
-}
 
 RunCsvResult parseRunCsv(std::string_view text, std::string_view fileName,
                          const ProgressFn& progress) {
@@ -758,7 +744,7 @@ RunCsvChunks::RunCsvChunks(RunCsvChunks&&) noexcept = default;
 RunCsvChunks& RunCsvChunks::operator=(RunCsvChunks&&) noexcept = default;
 RunCsvChunks::~RunCsvChunks() = default;
 
-const RunCsvError* RunCsvChunks::error() const {
+const Error* RunCsvChunks::error() const {
   return state_->ok ? nullptr : &state_->head.error();
 }
 
@@ -788,17 +774,17 @@ RunCsvResult RunCsvChunks::parse(std::size_t chunk) const {
   return state_->head.rowParser(c.begin, c.end, c.firstLine, c.firstStep).parseRowRange();
 }
 
-std::optional<RunCsvError> RunCsvChunks::checkStepCount(std::size_t steps) const {
+std::optional<Error> RunCsvChunks::checkStepCount(std::size_t steps) const {
   if (steps == 0) return state_->head.noStepsError();
   return std::nullopt;
 }
 
 RunCsvResult RunCsvChunks::join(std::vector<RunCsvResult> parts) const {
-  if (const RunCsvError* e = error()) return *e;
+  if (const Error* e = error()) return *e;
   std::size_t total = 0;
   for (const RunCsvResult& part : parts) {
     if (!part.ok()) return part.error();
-    total += part.run().stepCount();
+    total += part.value().stepCount();
   }
   if (auto e = checkStepCount(total)) return std::move(*e);
   RunData run;
@@ -807,14 +793,14 @@ RunCsvResult RunCsvChunks::join(std::vector<RunCsvResult> parts) const {
   run.reserve(total, hasTruth());
   run.extraValues.reserve(total * run.extraColumns.size());
   for (const RunCsvResult& part : parts)
-    appendRows(run, part.run());
+    appendRows(run, part.value());
   return run;
 }
 
 RunCsvResult parseRunCsvParallel(std::string_view text, std::string_view fileName, unsigned threads,
                                  std::size_t chunkBytes) {
   const RunCsvChunks chunks(text, fileName, chunkBytes);
-  if (const RunCsvError* e = chunks.error()) return *e;
+  if (const Error* e = chunks.error()) return *e;
   std::vector<std::optional<RunCsvResult>> parsed(chunks.size());
   std::atomic<std::size_t> next{0};
   auto work = [&] {
@@ -839,7 +825,7 @@ RunCsvResult readRunCsv(const std::filesystem::path& path, const ProgressFn& pro
   FileText text;
   std::string error;
   if (!text.load(path, error)) {
-    return RunCsvError{path.string(), 0, {}, 0, error};
+    return Error(path.string(), error);
   }
   return parseRunCsv(text.view(), path.string(), progress);
 }

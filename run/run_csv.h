@@ -1,5 +1,5 @@
-// The one reader and writer of run files (CSV, version 1; docs/file-formats.md#run-file). Everything that
-// reads or writes runs goes through here.
+// The one reader and writer of run files (CSV, version 1; docs/file-formats.md#run-file).
+// Everything that reads or writes runs goes through here.
 #pragma once
 
 #include <cstddef>
@@ -10,39 +10,16 @@
 #include <string_view>
 #include <variant>
 
+#include "base/error.h"
 #include "base/progress.h"
 #include "run/run.h"
 
 namespace tactile {
 
-// Where and why a run file was rejected. `line` is the 1-based physical line; `column` the header
-// name and `columnPosition` its 1-based position when the error belongs to a column (0 otherwise).
-struct RunCsvError {
-  std::string file;
-  std::size_t line = 0;
-  std::string column;
-  std::size_t columnPosition = 0;
-  std::string message;  // what was expected and what was found
-
-  // "FILE:LINE: column 'n3' (position 10): expected ..."
-  std::string toString() const;
-};
-
-// Either a complete run or an error; never a half-read run.
-class RunCsvResult {
- public:
-  RunCsvResult(RunData run) : value_(std::move(run)) {}
-  RunCsvResult(RunCsvError error) : value_(std::move(error)) {}
-
-  bool ok() const { return std::holds_alternative<RunData>(value_); }
-  explicit operator bool() const { return ok(); }
-  RunData& run() { return std::get<RunData>(value_); }
-  const RunData& run() const { return std::get<RunData>(value_); }
-  const RunCsvError& error() const { return std::get<RunCsvError>(value_); }
-
- private:
-  std::variant<RunData, RunCsvError> value_;
-};
+// Either a complete run or an error, never a half-read run. An error names the file and the
+// 1-based physical line; when it belongs to a column, `Error::column` is the column's 1-based
+// position and the message starts with its name: "column 'n3' (position 10): expected ...".
+using RunCsvResult = Result<RunData>;
 
 // Parses run-file text. `fileName` is used in error messages only. `progress` is called with
 // bytes parsed and total bytes; returning false cancels (the result is then an error).
@@ -61,7 +38,7 @@ class RunCsvChunks {
   ~RunCsvChunks();
 
   // The metadata or header error, or null; with an error there is nothing to parse.
-  const RunCsvError* error() const;
+  const Error* error() const;
   // Metadata and x_ column names, no steps.
   const RunData& header() const;
   bool hasTruth() const;
@@ -73,7 +50,7 @@ class RunCsvChunks {
   // The chunk's rows (no metadata), or its first error. Safe to call from several threads.
   RunCsvResult parse(std::size_t chunk) const;
   // The error for a file whose chunks held `steps` rows in all, if that is one (no rows).
-  std::optional<RunCsvError> checkStepCount(std::size_t steps) const;
+  std::optional<Error> checkStepCount(std::size_t steps) const;
   // The parsed chunks in order, joined into the run (or the first error in file order).
   RunCsvResult join(std::vector<RunCsvResult> parts) const;
 

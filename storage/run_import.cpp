@@ -207,10 +207,10 @@ StepChunk parseChunk(const RunCsvChunks& chunks, std::size_t index, const std::s
     RunCsvResult parsed = chunks.parse(index);
     if (!parsed.ok()) {
       StepChunk failed;
-      failed.error = parsed.error().toString();
+      failed.error = parsed.errorText();
       return failed;
     }
-    return encodeChunk(std::move(parsed.run()), chunks.firstStep(index),
+    return encodeChunk(std::move(parsed.value()), chunks.firstStep(index),
                        chunks.header().extraColumns.size());
   } catch (const std::exception& e) {
     StepChunk failed;
@@ -221,15 +221,15 @@ StepChunk parseChunk(const RunCsvChunks& chunks, std::size_t index, const std::s
 
 // The head of a file's text once split into chunks (the header read).
 void describeText(FileHead& head, const RunCsvChunks& chunks, const SceneResolver& resolver) {
-  if (const RunCsvError* error = chunks.error()) {
-    head.error = error->toString();
+  if (const Error* error = chunks.error()) {
+    head.error = error->text();
     return;
   }
   head.header.metadata = chunks.header().metadata;
   head.header.extraColumns = chunks.header().extraColumns;
   head.hasTruth = chunks.hasTruth();
   head.chunkCount = chunks.size();
-  if (auto error = chunks.checkStepCount(0)) head.noStepsError = error->toString();
+  if (auto error = chunks.checkStepCount(0)) head.noStepsError = error->text();
   describeHead(head, std::filesystem::path(head.file).parent_path(), resolver);
 }
 

@@ -51,8 +51,8 @@ struct LoadedRuns {
 void readRuns(const std::vector<std::string>& paths, LoadedRuns& out) {
   for (const std::string& path : paths) {
     RunCsvResult r = readRunCsv(path);
-    if (!r.ok()) throw std::runtime_error(r.error().toString());
-    out.runs.push_back(std::move(r.run()));
+    if (!r.ok()) throw std::runtime_error(r.errorText());
+    out.runs.push_back(std::move(r.value()));
     out.paths.push_back(path);
   }
 }
@@ -845,8 +845,8 @@ int runClassify(const ClassifyArgs& a) {
   const Result<analysis::ModelBundle> models = analysis::readModelFile(a.model);
   if (!models) throw std::runtime_error(models.errorText());
   RunCsvResult read = readRunCsv(a.run);
-  if (!read.ok()) throw std::runtime_error(read.error().toString());
-  return printClassification(a, analysis::classifyRun(read.run(), models.value(), options));
+  if (!read.ok()) throw std::runtime_error(read.errorText());
+  return printClassification(a, analysis::classifyRun(read.value(), models.value(), options));
 }
 
 }  // namespace

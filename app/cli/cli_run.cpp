@@ -47,7 +47,7 @@ int benchIo(std::size_t steps, int repeats, bool json) {
   for (int r = 0; r < repeats; ++r) {
     Timing t = timeOnce([&] {
       RunCsvResult result = parseRunCsv(text, "bench.csv");
-      if (!result.ok()) throw std::runtime_error(result.error().toString());
+      if (!result.ok()) throw std::runtime_error(result.errorText());
     });
     parseWall.push_back(t.wallSeconds);
     parseCpu.push_back(t.cpuSeconds);
@@ -64,7 +64,7 @@ int benchIo(std::size_t steps, int repeats, bool json) {
     writeWall.push_back(t.wallSeconds);
     t = timeOnce([&] {
       RunCsvResult result = readRunCsv(path);
-      if (!result.ok()) throw std::runtime_error(result.error().toString());
+      if (!result.ok()) throw std::runtime_error(result.errorText());
     });
     readWall.push_back(t.wallSeconds);
   }

@@ -25,7 +25,7 @@ void BM_ParseRunCsv(benchmark::State& state) {
   const std::string& text = sampleText();
   for (auto _ : state) {
     tactile::RunCsvResult result = tactile::parseRunCsv(text, "bench.csv");
-    if (!result.ok()) state.SkipWithError(result.error().toString().c_str());
+    if (!result.ok()) state.SkipWithError(result.errorText().c_str());
     benchmark::DoNotOptimize(result);
   }
   state.SetBytesProcessed(static_cast<std::int64_t>(state.iterations() * text.size()));
@@ -37,7 +37,7 @@ void BM_ReadRunCsvFile(benchmark::State& state) {
   tactile::writeFileAtomically(path, sampleText());
   for (auto _ : state) {
     tactile::RunCsvResult result = tactile::readRunCsv(path);
-    if (!result.ok()) state.SkipWithError(result.error().toString().c_str());
+    if (!result.ok()) state.SkipWithError(result.errorText().c_str());
     benchmark::DoNotOptimize(result);
   }
   std::filesystem::remove(path);

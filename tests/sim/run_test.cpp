@@ -105,8 +105,8 @@ TEST(Recorder, WrittenFileReadsBackEqual) {
   ASSERT_EQ(writeRunCsv(r.run, path), "");
   RunCsvResult back = readRunCsv(path);
   std::filesystem::remove(path);
-  ASSERT_TRUE(back.ok()) << back.error().toString();
-  EXPECT_TRUE(back.run() == r.run);
+  ASSERT_TRUE(back.ok()) << back.errorText();
+  EXPECT_TRUE(back.value() == r.run);
 }
 
 TEST(Determinism, SameSeedGivesByteIdenticalFiles) {

@@ -208,7 +208,7 @@ TEST(Import, ChunkedFilesAreAllOrNothingWithTheReadersMessage) {
     const auto outcomes = db->importFiles(files, options);
     ASSERT_EQ(outcomes.size(), files.size());
     EXPECT_EQ(outcomes[1].status, ImportStatus::Failed);
-    EXPECT_EQ(outcomes[1].message, expectedError.error().toString());
+    EXPECT_EQ(outcomes[1].message, expectedError.errorText());
     EXPECT_EQ(outcomes[6].status, ImportStatus::Skipped) << outcomes[6].message;
     EXPECT_EQ(outcomes[6].runId, outcomes[0].runId);
     EXPECT_FALSE(db->findRun("f1").ok());
@@ -216,16 +216,16 @@ TEST(Import, ChunkedFilesAreAllOrNothingWithTheReadersMessage) {
       ASSERT_EQ(outcomes[i].status, ImportStatus::Imported) << outcomes[i].message;
       RunCsvResult parsed = parseRunCsv(texts[i], "x.csv");
       ASSERT_TRUE(parsed.ok());
-      EXPECT_EQ(outcomes[i].steps, static_cast<std::int64_t>(parsed.run().stepCount()));
+      EXPECT_EQ(outcomes[i].steps, static_cast<std::int64_t>(parsed.value().stepCount()));
       auto loaded = db->loadRun(outcomes[i].runId);
       ASSERT_TRUE(loaded.ok()) << loaded.errorText();
-      EXPECT_TRUE(loaded.value() == parsed.run()) << "file " << i;
+      EXPECT_TRUE(loaded.value() == parsed.value()) << "file " << i;
       auto info = db->runInfo(outcomes[i].runId);
       ASSERT_TRUE(info.ok());
       EXPECT_EQ(info->stepCount, outcomes[i].steps);
       // Summary blocks assembled from the chunks are exact: with ~20-step buckets the summary
       // comes from the 16-step blocks, each compared with the steps it covers.
-      const RunData& steps = parsed.run();
+      const RunData& steps = parsed.value();
       auto summary =
           db->loadSummary(outcomes[i].runId, 0, -1, static_cast<int>(steps.stepCount() / 20));
       ASSERT_TRUE(summary.ok()) << summary.errorText();
@@ -249,7 +249,7 @@ TEST(Import, ChunkedFilesAreAllOrNothingWithTheReadersMessage) {
       EXPECT_EQ(again[i].status, ImportStatus::Skipped);
       EXPECT_EQ(again[i].steps, outcomes[i].steps);
     }
-    EXPECT_EQ(again[1].message, expectedError.error().toString());
+    EXPECT_EQ(again[1].message, expectedError.errorText());
     EXPECT_EQ(db->check().steps, 200 + 3000 + 350 + 400 + 450);
   }
 }

@@ -91,7 +91,7 @@ TEST(Mutation, HundredThousandMutatedFilesStoreAllOrNothing) {
       ASSERT_TRUE(parsed.ok()) << "stored a file the reader rejects: " << i;
       auto loaded = db->loadRun(outcome.runId);
       ASSERT_TRUE(loaded.ok()) << loaded.errorText();
-      ASSERT_TRUE(loaded.value() == parsed.run()) << "file " << i;
+      ASSERT_TRUE(loaded.value() == parsed.value()) << "file " << i;
       ASSERT_TRUE(db->deleteRun(outcome.runId).ok());
     } else {
       ++failed;
