@@ -106,6 +106,15 @@ head -1 report.md | grep -q '^# ' || fail "report md: $(head -1 report.md)"
 grep -q '^group,features,method' report.csv || fail "report csv: $(head -3 report.csv)"
 head -1 report.html | grep -qi '<!DOCTYPE html>' || fail "report html: $(head -1 report.html)"
 
+# A run both trained and scored on is refused; no sweep is stored.
+if "$T" sweep --db w.db --set truth --train-runs room1_0000,room1_0001 --test-runs room1_0001 \
+  --groups F --orders 1 --covs nodal-diag --floors 0.01 2> both.err > /dev/null; then
+  fail "a sweep with a run in both lists succeeded"
+fi
+grep -q "room1_0001" both.err || fail "sweep message: $(cat both.err)"
+[ "$("$T" sweeps list --db w.db --json | grep -o "\"id\":" | wc -l)" -eq 1 ] ||
+  fail "a refused sweep was stored: $("$T" sweeps list --db w.db --json)"
+
 # An unwritable --out is found before training: nothing is stored.
 if "$T" train --db w.db --set truth --name never --out "$W/no/such/dir/m.json" 2> out.err; then
   fail "train with an unwritable --out succeeded"
