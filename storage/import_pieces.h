@@ -1,0 +1,74 @@
+// Internal to storage: run import in three pieces. Preparing a file (reading, hashing, parsing and
+// encoding it chunk by chunk; import_prepare.cpp) runs on worker threads; the SQL writer
+// (run_writer.cpp) stores one prepared file per transaction on the calling thread; the scheduler
+// (run_import.cpp) hands chunks from the workers to the writer in order.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <filesystem>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "run/run.h"
+#include "run/run_csv.h"
+#include "storage/database_impl.h"
+#include "storage/run_codec.h"
+
+namespace tactile::storage::importing {
+
+inline constexpr std::size_t kDefaultChunkBytes = std::size_t{4} << 20;
+
+// What the writer needs of a file before its steps; made off the writer thread.
+struct FileHead {
+  std::string file;  // as given, for messages
+  std::string name;
+  std::string checksum;
+  std::string error;  // non-empty: the file is rejected
+  std::vector<std::string> warnings;
+  RunData header;  // metadata and x_ column names, no steps
+  bool hasTruth = false;
+  std::size_t chunkCount = 0;
+  std::string noStepsError;  // the reader's error for a file without rows; empty: allowed
+  std::string sceneValue;    // the `scene` metadata value
+  std::string sceneName;
+  std::string sceneJson;  // empty when unresolved
+  std::string sceneChecksum;
+  std::string metadataBlob;
+  std::string extraColumnsBlob;
+};
+
+// Consecutive steps of a run, parsed and encoded off the writer thread.
+struct StepChunk {
+  std::string error;  // non-empty: the file is rejected (the reader's message)
+  RunData rows;       // no metadata
+  std::size_t firstStep = 0;
+  EncodedBlobs sensors;                   // one per step
+  std::vector<std::int64_t> packedTruth;  // one per step when the run has truth
+  std::vector<std::string> extraBlobs;    // one per step when there are x_ columns
+  PartialSummary summary;                 // finest-level blocks of these steps
+};
+
+// Rejects runs that cannot be stored faithfully (hand-built ones; the reader checks files).
+std::string validateRun(const RunData& run);
+// Metadata blobs and the scene, from the header (metadata and x_ names) of a run.
+void describeHead(FileHead& head, const std::filesystem::path& baseDir,
+                  const SceneResolver& resolver);
+StepChunk encodeChunk(RunData rows, std::size_t firstStep, std::size_t extraColumns);
+// Never throws: any failure (even out of memory on a worker thread) becomes the chunk's error.
+StepChunk parseChunk(const RunCsvChunks& chunks, std::size_t index, const std::string& file);
+// The head of a file's text once split into chunks (the header read).
+void describeText(FileHead& head, const RunCsvChunks& chunks, const SceneResolver& resolver);
+// The given name, else `PREFIX_<stem>` (or the stem without a prefix); docs/storage.md#import.
+std::string runName(const ImportOptions& options, const std::filesystem::path& file);
+ImportOutcome cancelledOutcome(const std::filesystem::path& file);
+
+// The SQL writer: stores one run in its own transaction: the run row, then the steps chunk by
+// chunk as `takeChunk(i)` hands them over, then the summary blocks. A chunk with an error, or any
+// failure, rolls everything back.
+ImportOutcome writeRun(RunDatabase::Impl& impl, FileHead& head,
+                       const std::function<StepChunk(std::size_t)>& takeChunk,
+                       std::int64_t failAfterSteps);
+
+}  // namespace tactile::storage::importing

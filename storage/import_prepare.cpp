@@ -1,0 +1,222 @@
+// Preparing run files for the writer: reading, hashing, parsing and encoding, off the writer
+// thread (see import_pieces.h).
+#include <algorithm>
+#include <atomic>
+#include <bit>
+#include <condition_variable>
+#include <cstring>
+#include <deque>
+#include <functional>
+#include <mutex>
+#include <nlohmann/json.hpp>
+#include <optional>
+#include <thread>
+#include <unordered_set>
+
+#include "base/file_text.h"
+#include "run/builtin_scenes.h"
+#include "run/run_csv.h"
+#include "storage/import_pieces.h"
+
+namespace tactile::storage {
+
+static_assert(std::endian::native == std::endian::little,
+              "the sensors BLOB is little-endian float64; add byte swapping for this platform");
+
+std::string checksumHex(std::string_view bytes) {
+  // Two independent multiply-xorshift lanes over 8-byte words (for instruction-level
+  // parallelism), then the tail and the length, then a final avalanche.
+  constexpr std::uint64_t kMul1 = 0x9E3779B97F4A7C15ull;
+  constexpr std::uint64_t kMul2 = 0xC2B2AE3D27D4EB4Full;
+  std::uint64_t a = 0x243F6A8885A308D3ull;
+  std::uint64_t b = 0x13198A2E03707344ull;
+  const char* p = bytes.data();
+  std::size_t n = bytes.size();
+  auto mix = [](std::uint64_t h, std::uint64_t w, std::uint64_t mul) {
+    w *= mul;
+    w ^= w >> 29;
+    return (h ^ w) * kMul2 + 0x165667B19E3779F9ull;
+  };
+  while (n >= 16) {
+    std::uint64_t w1 = 0;
+    std::uint64_t w2 = 0;
+    std::memcpy(&w1, p, 8);
+    std::memcpy(&w2, p + 8, 8);
+    a = mix(a, w1, kMul1);
+    b = mix(b, w2, kMul2);
+    p += 16;
+    n -= 16;
+  }
+  std::uint64_t tail = 0;
+  std::memcpy(&tail, p, std::min<std::size_t>(n, 8));
+  a = mix(a, tail, kMul1);
+  if (n > 8) {
+    tail = 0;
+    std::memcpy(&tail, p + 8, n - 8);
+    b = mix(b, tail, kMul2);
+  }
+  std::uint64_t h = mix(a ^ std::rotl(b, 31), bytes.size(), kMul1);
+  h ^= h >> 33;
+  h *= 0xFF51AFD7ED558CCDull;
+  h ^= h >> 33;
+  char text[17];
+  static constexpr char kHex[] = "0123456789abcdef";
+  for (int i = 15; i >= 0; --i) {
+    text[i] = kHex[h & 15];
+    h >>= 4;
+  }
+  text[16] = '\0';
+  return text;
+}
+
+namespace importing {
+
+// Rejects runs that cannot be stored faithfully (hand-built ones; the reader checks files).
+std::string validateRun(const RunData& run) {
+  const std::size_t n = run.stepCount();
+  if (run.y.size() != n || run.theta.size() != n || run.v.size() != n || run.omega.size() != n ||
+      run.blocked.size() != n) {
+    return "pose, command and blocked columns differ in length";
+  }
+  if (run.sensors.size() != n * kValuesPerStep) return "sensor values do not match the step count";
+  if (!run.truth.empty() && run.truth.size() != n * kGroupCount) {
+    return "truth classes do not match the step count";
+  }
+  if (run.extraValues.size() != n * run.extraColumns.size()) {
+    return "x_ column values do not match the step count";
+  }
+  for (const auto* column : {&run.x, &run.y, &run.theta, &run.v, &run.omega, &run.sensors}) {
+    for (double value : *column) {
+      if (!std::isfinite(value)) return "a value is not finite";
+    }
+  }
+  for (std::uint8_t b : run.blocked) {
+    if (b > 1) return "blocked must be 0 or 1";
+  }
+  for (ContactClass c : run.truth) {
+    if (static_cast<int>(c) >= kContactClassCount) return "unknown truth class";
+  }
+  return {};
+}
+
+namespace {
+
+void resolveScene(FileHead& head, const std::filesystem::path& baseDir,
+                  const SceneResolver& resolver) {
+  const std::string* scene = head.header.meta("scene");
+  if (scene == nullptr || scene->empty()) return;
+  head.sceneValue = *scene;
+  std::string json;
+  if (auto builtin = builtinSceneJson(*scene)) {
+    json = std::string(*builtin);
+  } else if (std::optional<std::string> resolved = resolver ? resolver(*scene) : std::nullopt) {
+    json = std::move(*resolved);
+  } else {
+    std::filesystem::path scenePath(*scene);
+    if (scenePath.is_relative()) scenePath = baseDir / scenePath;
+    std::string error;
+    if (!readFileText(scenePath, json, error)) {
+      head.warnings.push_back("scene '" + *scene +
+                              "' is neither a built-in scene nor a readable file (" +
+                              scenePath.string() + "); the run is stored without its scene");
+      return;
+    }
+  }
+  const nlohmann::json parsed = nlohmann::json::parse(json, nullptr, false);
+  if (parsed.is_discarded() || !parsed.is_object()) {
+    head.warnings.push_back("scene '" + *scene +
+                            "' is not a JSON object; the run is stored without its scene");
+    return;
+  }
+  const auto name = parsed.find("name");
+  head.sceneName = name != parsed.end() && name->is_string() ? name->get<std::string>() : *scene;
+  head.sceneChecksum = checksumHex(json);
+  head.sceneJson = std::move(json);
+}
+
+}  // namespace
+
+// Metadata blobs and the scene, from the header (metadata and x_ names) of a run.
+void describeHead(FileHead& head, const std::filesystem::path& baseDir,
+                  const SceneResolver& resolver) {
+  // Length-prefixed bytes rather than JSON: metadata is kept byte for byte, even text that is not
+  // valid UTF-8 (which a JSON library would refuse or alter).
+  std::vector<std::string> pairs;
+  for (const auto& [key, value] : head.header.metadata) {
+    pairs.push_back(key);
+    pairs.push_back(value);
+  }
+  head.metadataBlob = encodeExtra(pairs.data(), pairs.size());
+  head.extraColumnsBlob =
+      encodeExtra(head.header.extraColumns.data(), head.header.extraColumns.size());
+  resolveScene(head, baseDir, resolver);
+}
+
+StepChunk encodeChunk(RunData rows, std::size_t firstStep, std::size_t extraColumns) {
+  StepChunk chunk;
+  chunk.firstStep = firstStep;
+  const std::size_t n = rows.stepCount();
+  chunk.sensors = encodeStepSensors(rows.sensors.data(), n);
+  chunk.summary = summarizeSteps(rows.sensors.data(), firstStep, n);
+  if (rows.hasTruth()) {
+    chunk.packedTruth.resize(n);
+    for (std::size_t i = 0; i < n; ++i)
+      chunk.packedTruth[i] = packTruth(rows.truth.data() + i * kGroupCount);
+  }
+  if (extraColumns > 0) {
+    chunk.extraBlobs.resize(n);
+    for (std::size_t i = 0; i < n; ++i)
+      chunk.extraBlobs[i] = encodeExtra(rows.extraValues.data() + i * extraColumns, extraColumns);
+  }
+  chunk.rows = std::move(rows);
+  return chunk;
+}
+
+// Never throws: any failure (even out of memory on a worker thread) becomes the chunk's error.
+StepChunk parseChunk(const RunCsvChunks& chunks, std::size_t index, const std::string& file) {
+  try {
+    RunCsvResult parsed = chunks.parse(index);
+    if (!parsed.ok()) {
+      StepChunk failed;
+      failed.error = parsed.errorText();
+      return failed;
+    }
+    return encodeChunk(std::move(parsed.value()), chunks.firstStep(index),
+                       chunks.header().extraColumns.size());
+  } catch (const std::exception& e) {
+    StepChunk failed;
+    failed.error = file + ": " + e.what();
+    return failed;
+  }
+}
+
+// The head of a file's text once split into chunks (the header read).
+void describeText(FileHead& head, const RunCsvChunks& chunks, const SceneResolver& resolver) {
+  if (const Error* error = chunks.error()) {
+    head.error = error->text();
+    return;
+  }
+  head.header.metadata = chunks.header().metadata;
+  head.header.extraColumns = chunks.header().extraColumns;
+  head.hasTruth = chunks.hasTruth();
+  head.chunkCount = chunks.size();
+  if (auto error = chunks.checkStepCount(0)) head.noStepsError = error->text();
+  describeHead(head, std::filesystem::path(head.file).parent_path(), resolver);
+}
+
+// The given name, else `PREFIX_<stem>` (or the stem without a prefix); docs/storage.md#import.
+std::string runName(const ImportOptions& options, const std::filesystem::path& file) {
+  if (!options.name.empty()) return options.name;
+  if (options.namePrefix.empty()) return file.stem().string();
+  return options.namePrefix + "_" + file.stem().string();
+}
+
+ImportOutcome cancelledOutcome(const std::filesystem::path& file) {
+  ImportOutcome outcome;
+  outcome.file = file.string();
+  outcome.message = file.string() + ": cancelled";
+  return outcome;
+}
+
+}  // namespace importing
+}  // namespace tactile::storage
