@@ -1,4 +1,5 @@
 // Models and sweeps: listing, storing cell by cell, deleting (docs/storage.md#models-and-sweeps).
+#include <set>
 #include <string>
 #include <vector>
 
@@ -62,7 +63,9 @@ Status RunDatabase::deleteModels(const std::vector<std::string>& names) {
   return guardedStatus([&] {
     db::Transaction transaction(impl_->connection);
     db::Statement& s = impl_->statement("DELETE FROM models WHERE name = ?");
+    std::set<std::string> done;  // a name given twice is deleted once
     for (const std::string& name : names) {
+      if (!done.insert(name).second) continue;
       s.bind(1, name).run();
       if (impl_->connection.changes() == 0) {
         throw db::DbError("no model named '" + name + "'; nothing deleted");
@@ -187,7 +190,9 @@ Status RunDatabase::deleteSweeps(const std::vector<std::int64_t>& sweepIds) {
   return guardedStatus([&] {
     db::Transaction transaction(impl_->connection);
     db::Statement& s = impl_->statement("DELETE FROM sweeps WHERE id = ?");
+    std::set<std::int64_t> done;  // an id given twice is deleted once
     for (const std::int64_t id : sweepIds) {
+      if (!done.insert(id).second) continue;
       s.bind(1, id).run();
       if (impl_->connection.changes() == 0) {
         throw db::DbError("no sweep with id " + std::to_string(id) + "; nothing deleted");

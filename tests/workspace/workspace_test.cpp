@@ -537,6 +537,33 @@ TEST(WorkspaceTrain, TakenModelNameFailsBeforeTraining) {
   EXPECT_EQ(after->front().trainedOnJson, before->front().trainedOnJson);
 }
 
+// Deleting models: all named or none; a name given twice is one model, not an unknown name.
+TEST(WorkspaceTrain, ModelsDeletedByNameAllOrNone) {
+  TrainFixture f;
+  ASSERT_TRUE(f.ws);
+  TrainRequest request;
+  request.labelSet = "truth";
+  request.groups = {SensorGroup::Front};
+  request.settings = quickSettings();
+  for (const char* name : {"m1", "m2"}) {
+    request.modelName = name;
+    ASSERT_TRUE(f.ws->train(request).ok());
+  }
+  storage::RunDatabase& db = f.ws->database();
+  const Status unknown = db.deleteModels({"m1", "nope"});
+  ASSERT_FALSE(unknown.ok());
+  EXPECT_NE(unknown.errorText().find("'nope'"), std::string::npos) << unknown.errorText();
+  auto models = f.ws->models();
+  ASSERT_TRUE(models.ok());
+  EXPECT_EQ(models->size(), 2u) << "a failed delete removed a model";
+  const Status twice = db.deleteModels({"m1", "m1"});
+  EXPECT_TRUE(twice.ok()) << twice.errorText();
+  models = f.ws->models();
+  ASSERT_TRUE(models.ok());
+  ASSERT_EQ(models->size(), 1u);
+  EXPECT_EQ(models->front().name, "m2");
+}
+
 // ---- sweeps -------------------------------------------------------------------------------------
 
 SweepRequest smallSweep() {
@@ -625,6 +652,15 @@ TEST(WorkspaceSweep, CellsAreStoredAndReadBack) {
   EXPECT_EQ(fitted, 8u);
   EXPECT_EQ(loaded->grid.orders, request.grid.orders);
   EXPECT_EQ(loaded->data.size(), result.data.size());
+
+  // Deleting it takes its cells along; an id given twice is one sweep.
+  ASSERT_TRUE(f.ws->database().deleteSweeps({outcome->sweepId, outcome->sweepId}).ok());
+  sweeps = f.ws->sweeps();
+  ASSERT_TRUE(sweeps.ok());
+  EXPECT_TRUE(sweeps->empty());
+  cells = f.ws->database().sweepCells(outcome->sweepId);
+  ASSERT_TRUE(cells.ok());
+  EXPECT_TRUE(cells->empty());
 }
 
 // Cells are stored as they finish, which on several threads is not the grid order; a loaded sweep
@@ -809,8 +845,8 @@ TEST(WorkspaceRuns, SameStemUnderTwoPrefixesKeepsItsOwnLabels) {
   TempDir dir;
   std::filesystem::create_directories(dir / "a");
   std::filesystem::create_directories(dir / "b");
-  ASSERT_EQ(writeRunCsv(labelledRun(1), dir / "a" / "run_0000.csv"), "");
-  ASSERT_EQ(writeRunCsv(labelledRun(2), dir / "b" / "run_0000.csv"), "");
+  ASSERT_TRUE(writeRunCsv(labelledRun(1), dir / "a" / "run_0000.csv").ok());
+  ASSERT_TRUE(writeRunCsv(labelledRun(2), dir / "b" / "run_0000.csv").ok());
   auto ws = openWorkspace(dir);
   ASSERT_TRUE(ws);
   storage::RunDatabase& db = ws->database();
