@@ -447,6 +447,10 @@ TEST(WorkspaceTrain, LeaveOneRunOutScoresEveryLabelledContactRow) {
     EXPECT_EQ(r.samplesTrain, contactRows);
     EXPECT_GT(r.accuracy, 0.8);
   }
+  // The stored model is trained on every run.
+  EXPECT_EQ(outcome->provenance["train_runs"].size(), f.names.size());
+  EXPECT_TRUE(outcome->provenance["test_runs"].empty());
+  EXPECT_EQ(outcome->provenance["split"], "leave-one-run-out");
   // Test runs with leave-one-run-out are refused.
   request.testRuns = {"run_a"};
   EXPECT_FALSE(f.ws->train(request).ok());
@@ -535,6 +539,24 @@ TEST(WorkspaceTrain, TakenModelNameFailsBeforeTraining) {
   EXPECT_EQ(after->front().id, before->front().id);
   EXPECT_EQ(after->front().createdAt, before->front().createdAt);
   EXPECT_EQ(after->front().trainedOnJson, before->front().trainedOnJson);
+}
+
+// Training cancelled through the progress callback stores no model.
+TEST(WorkspaceTrain, CancelledTrainingStoresNothing) {
+  TrainFixture f;
+  ASSERT_TRUE(f.ws);
+  TrainRequest request;
+  request.labelSet = "truth";
+  request.groups = {SensorGroup::Front, SensorGroup::Right};
+  request.settings = quickSettings();
+  std::size_t calls = 0;
+  auto outcome = f.ws->train(request, [&](std::size_t, std::size_t) { return ++calls < 2; });
+  ASSERT_FALSE(outcome.ok());
+  EXPECT_NE(outcome.errorText().find("cancelled"), std::string::npos) << outcome.errorText();
+  EXPECT_EQ(calls, 2u);
+  auto models = f.ws->models();
+  ASSERT_TRUE(models.ok());
+  EXPECT_TRUE(models->empty());
 }
 
 // Deleting models: all named or none; a name given twice is one model, not an unknown name.
