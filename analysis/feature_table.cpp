@@ -116,12 +116,9 @@ Result<FeatureTable> parseFeatureTable(std::string_view text, std::string_view f
 }
 
 Result<FeatureTable> readFeatureTable(const std::filesystem::path& path) {
-  std::string text;
-  std::string error;
-  if (!readFileText(path, text, error)) {
-    return Error(path.string(), error.empty() ? "cannot read the file" : error);
-  }
-  return parseFeatureTable(text, path.string());
+  Result<std::string> text = readFileText(path);
+  if (!text) return text.error();
+  return parseFeatureTable(text.value(), path.string());
 }
 
 std::string formatFeatureTable(const FeatureTable& table) {

@@ -362,21 +362,17 @@ Result<ModelBundle> parseModelJson(std::string_view text, std::string_view fileN
 }
 
 Result<ModelBundle> readModelFile(const std::filesystem::path& path) {
-  std::string text, error;
-  if (!readFileText(path, text, error)) return Error(path.string(), error);
-  return parseModelJson(text, path.string());
+  Result<std::string> text = readFileText(path);
+  if (!text) return text.error();
+  return parseModelJson(text.value(), path.string());
 }
 
 Status writeModelFile(const std::filesystem::path& path, const GroupModel& model) {
-  const std::string error = writeFileAtomically(path, modelToJson(model).dump(1) + "\n");
-  if (!error.empty()) return Error(error);
-  return Status::success();
+  return writeFileAtomically(path, modelToJson(model).dump(1) + "\n");
 }
 
 Status writeModelBundleFile(const std::filesystem::path& path, const ModelBundle& bundle) {
-  const std::string error = writeFileAtomically(path, bundleToJson(bundle).dump(1) + "\n");
-  if (!error.empty()) return Error(error);
-  return Status::success();
+  return writeFileAtomically(path, bundleToJson(bundle).dump(1) + "\n");
 }
 
 bool contactClassesOf(const ClassModelSet& classifier, std::vector<ContactClass>& out,

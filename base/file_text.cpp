@@ -38,13 +38,10 @@ void FileText::release() {
   buffer_.clear();
 }
 
-bool FileText::load(const std::filesystem::path& path, std::string& error) {
+Status FileText::load(const std::filesystem::path& path) {
   release();
   const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
-  if (fd < 0) {
-    error = std::string("cannot open: ") + std::strerror(errno);
-    return false;
-  }
+  if (fd < 0) return Error(path.string(), std::string("cannot open: ") + std::strerror(errno));
   struct stat info {};
   const bool regular = ::fstat(fd, &info) == 0 && S_ISREG(info.st_mode) && info.st_size > 0;
   if (regular) {
@@ -55,20 +52,22 @@ bool FileText::load(const std::filesystem::path& path, std::string& error) {
       mapped_ = p;
       mappedSize_ = static_cast<std::size_t>(info.st_size);
       ::close(fd);
-      return true;
+      return Status::success();
     }
   }
   ::close(fd);
   // Empty files, pipes, and anything mmap refuses are read the ordinary way.
-  return readFileText(path, buffer_, error);
+  Result<std::string> text = readFileText(path);
+  if (!text) return text.error();
+  buffer_ = std::move(text.value());
+  return Status::success();
 }
 
-bool readFileText(const std::filesystem::path& path, std::string& text, std::string& error) {
+Result<std::string> readFileText(const std::filesystem::path& path) {
   std::FILE* f = std::fopen(path.c_str(), "rb");
-  if (f == nullptr) {
-    error = std::string("cannot open: ") + std::strerror(errno);
-    return false;
-  }
+  if (f == nullptr)
+    return Error(path.string(), std::string("cannot open: ") + std::strerror(errno));
+  std::string text;
   std::error_code ec;
   const auto size = std::filesystem::file_size(path, ec);
   text.clear();
@@ -81,32 +80,29 @@ bool readFileText(const std::filesystem::path& path, std::string& text, std::str
     text.append(buffer, n);
   const bool failed = std::ferror(f) != 0;
   std::fclose(f);
-  if (failed) {
-    error = "read error";
-    return false;
-  }
-  return true;
+  if (failed) return Error(path.string(), "read error");
+  return text;
 }
 
-std::string writeFileAtomically(const std::filesystem::path& path, std::string_view text) {
+Status writeFileAtomically(const std::filesystem::path& path, std::string_view text) {
   std::filesystem::path temp = path;
   static std::atomic<unsigned> counter{0};
   temp += ".tmp-" + std::to_string(::getpid()) + "-" + std::to_string(counter++);
   std::FILE* f = std::fopen(temp.c_str(), "wb");
   if (f == nullptr) {
-    return path.string() + ": cannot write: " + std::strerror(errno);
+    return Error(path.string(), std::string("cannot write: ") + std::strerror(errno));
   }
   const bool wrote = std::fwrite(text.data(), 1, text.size(), f) == text.size();
   const bool closed = std::fclose(f) == 0;
   std::error_code ec;
   if (!wrote || !closed) {
     std::filesystem::remove(temp, ec);
-    return path.string() + ": write failed (disk full?)";
+    return Error(path.string(), "write failed (disk full?)");
   }
   std::filesystem::rename(temp, path, ec);
   if (ec) {
     std::filesystem::remove(temp, ec);
-    return path.string() + ": cannot replace the file: " + ec.message();
+    return Error(path.string(), "cannot replace the file: " + ec.message());
   }
   return {};
 }

@@ -20,8 +20,8 @@ class FileText {
   FileText& operator=(const FileText&) = delete;
   ~FileText();
 
-  // Loads `path`; returns false and sets `error` ("cannot open: ...") on failure.
-  bool load(const std::filesystem::path& path, std::string& error);
+  // Loads `path`; an error names it ("FILE: cannot open: ...").
+  Status load(const std::filesystem::path& path);
 
   std::string_view view() const {
     return mapped_ != nullptr ? std::string_view(static_cast<const char*>(mapped_), mappedSize_)
@@ -36,14 +36,15 @@ class FileText {
   std::string buffer_;
 };
 
-// Reads a whole file into memory; returns false and sets `error` on failure.
-bool readFileText(const std::filesystem::path& path, std::string& text, std::string& error);
+// Reads a whole file into memory; an error names the file.
+Result<std::string> readFileText(const std::filesystem::path& path);
 
 // Checks, before any long work, that `path` could be written: its folder exists and a file can be
 // created in it, and the path is not a folder. Creates nothing that stays.
 Status checkWritable(const std::filesystem::path& path);
 
-// Writes text atomically (temporary file, then rename). Returns an empty string on success.
-std::string writeFileAtomically(const std::filesystem::path& path, std::string_view text);
+// Writes text atomically (temporary file, then rename): a failure never leaves a partial file. An
+// error names the file.
+Status writeFileAtomically(const std::filesystem::path& path, std::string_view text);
 
 }  // namespace tactile

@@ -823,10 +823,7 @@ RunCsvResult parseRunCsvParallel(std::string_view text, std::string_view fileNam
 
 RunCsvResult readRunCsv(const std::filesystem::path& path, const ProgressFn& progress) {
   FileText text;
-  std::string error;
-  if (!text.load(path, error)) {
-    return Error(path.string(), error);
-  }
+  if (Status loaded = text.load(path); !loaded) return loaded.error();
   return parseRunCsv(text.view(), path.string(), progress);
 }
 
@@ -886,7 +883,7 @@ std::string formatRunCsv(const RunData& run) {
   return out;
 }
 
-std::string writeRunCsv(const RunData& run, const std::filesystem::path& path) {
+Status writeRunCsv(const RunData& run, const std::filesystem::path& path) {
   return writeFileAtomically(path, formatRunCsv(run));
 }
 

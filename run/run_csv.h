@@ -72,7 +72,7 @@ RunCsvResult readRunCsv(const std::filesystem::path& path, const ProgressFn& pro
 std::string formatRunCsv(const RunData& run);
 
 // Writes atomically: to a temporary file beside `path`, then renamed over it, so a failure never
-// leaves a partial file. Returns an empty string on success, otherwise the reason.
-std::string writeRunCsv(const RunData& run, const std::filesystem::path& path);
+// leaves a partial file. An error names the file.
+Status writeRunCsv(const RunData& run, const std::filesystem::path& path);
 
 }  // namespace tactile

@@ -156,12 +156,9 @@ Result<Scene> loadScene(std::string_view spec, const RobotGeometry& geometry) {
     result = parseSceneJson(*json, spec);
   } else if (spec.find('/') != std::string_view::npos || spec.ends_with(".json") ||
              std::filesystem::exists(std::filesystem::path(std::string(spec)))) {
-    std::string text;
-    std::string error;
-    if (!readFileText(std::filesystem::path(std::string(spec)), text, error)) {
-      return Error(std::string(spec), error);
-    }
-    result = parseSceneJson(text, spec);
+    Result<std::string> text = readFileText(std::filesystem::path(std::string(spec)));
+    if (!text) return text.error();
+    result = parseSceneJson(text.value(), spec);
   }
   if (!result.ok()) return result;
   std::string error = checkStartPose(result.value(), geometry);

@@ -114,13 +114,14 @@ void resolveScene(FileHead& head, const std::filesystem::path& baseDir,
   } else {
     std::filesystem::path scenePath(*scene);
     if (scenePath.is_relative()) scenePath = baseDir / scenePath;
-    std::string error;
-    if (!readFileText(scenePath, json, error)) {
+    Result<std::string> read = readFileText(scenePath);
+    if (!read) {
       head.warnings.push_back("scene '" + *scene +
                               "' is neither a built-in scene nor a readable file (" +
                               scenePath.string() + "); the run is stored without its scene");
       return;
     }
+    json = std::move(read.value());
   }
   const nlohmann::json parsed = nlohmann::json::parse(json, nullptr, false);
   if (parsed.is_discarded() || !parsed.is_object()) {

@@ -305,9 +305,9 @@ Result<std::vector<LabelSegment>> RunDatabase::segments(std::int64_t setId, std:
 Result<std::int64_t> RunDatabase::importLabels(const std::string& setName,
                                                const std::filesystem::path& file) {
   return guarded<std::int64_t>([&] {
-    std::string text;
-    std::string error;
-    if (!readFileText(file, text, error)) throw db::DbError(file.string() + ": " + error);
+    Result<std::string> content = readFileText(file);
+    if (!content) throw db::DbError(content.errorText());
+    const std::string& text = content.value();
     Result<LabelFile> read =
         isJsonPath(file) ? parseLabelJson(text, file.string()) : parseLabelCsv(text, file.string());
     if (!read) throw db::DbError(read.errorText());
@@ -380,9 +380,7 @@ Status RunDatabase::exportLabels(const std::string& setName, const std::filesyst
   const std::string text = isJsonPath(file)
                                ? formatLabelJson(records, set->name, set->annotator, runs)
                                : formatLabelCsv(records, runs);
-  std::string error = writeFileAtomically(file, text);
-  if (!error.empty()) return Status::failure(file.string() + ": " + error);
-  return Status::success();
+  return writeFileAtomically(file, text);
 }
 
 Result<std::int64_t> RunDatabase::autolabel(std::int64_t runId, const std::string& setName) {

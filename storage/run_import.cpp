@@ -157,9 +157,8 @@ std::vector<ImportOutcome> RunDatabase::importFiles(const std::vector<std::files
     auto source = std::make_shared<Source>();
     std::optional<StepChunk> first;
     try {
-      std::string error;
-      if (!source->text.load(files[j], error)) {
-        head.error = head.file + ": " + error;
+      if (Status loaded = source->text.load(files[j]); !loaded) {
+        head.error = loaded.errorText();
       } else {
         head.checksum = checksumHex(source->text.view());
         if (!known.contains(head.checksum)) {

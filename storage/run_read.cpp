@@ -267,9 +267,7 @@ Result<std::optional<std::string>> RunDatabase::sceneJson(std::int64_t runId) {
 Status RunDatabase::exportRun(std::int64_t runId, const std::filesystem::path& file) {
   Result<RunData> run = loadRun(runId);
   if (!run) return run.error();
-  std::string error = writeRunCsv(run.value(), file);
-  if (!error.empty()) return Status::failure(file.string() + ": " + error);
-  return Status::success();
+  return writeRunCsv(run.value(), file);
 }
 
 }  // namespace tactile::storage

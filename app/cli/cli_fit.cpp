@@ -223,12 +223,12 @@ int runBenchLearn(const BenchArgs& b, const ClassifierArgs& a) {
   const FeatureTable test = makeSyntheticTable(spec);
   if (!b.writeTrain.empty() || !b.writeTest.empty()) {
     if (!b.writeTrain.empty()) {
-      const std::string err = writeFileAtomically(b.writeTrain, formatFeatureTable(train));
-      if (!err.empty()) throw std::runtime_error(err);
+      const Status written = writeFileAtomically(b.writeTrain, formatFeatureTable(train));
+      if (!written) throw std::runtime_error(written.errorText());
     }
     if (!b.writeTest.empty()) {
-      const std::string err = writeFileAtomically(b.writeTest, formatFeatureTable(test));
-      if (!err.empty()) throw std::runtime_error(err);
+      const Status written = writeFileAtomically(b.writeTest, formatFeatureTable(test));
+      if (!written) throw std::runtime_error(written.errorText());
     }
     if (!b.json)
       std::printf("wrote the generated data set (%d + %d rows, D = %d, %d classes)\n", b.rows,

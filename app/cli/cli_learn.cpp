@@ -60,8 +60,9 @@ void readRuns(const std::vector<std::string>& paths, LoadedRuns& out) {
 // A label file, CSV or JSON by its extension, through the one label-file reader: its segments
 // and the provenance of its runs.
 LabelFile readLabels(const std::string& path) {
-  std::string text, error;
-  if (!readFileText(path, text, error)) throw std::runtime_error(path + ": " + error);
+  const Result<std::string> read = readFileText(path);
+  if (!read) throw std::runtime_error(read.errorText());
+  const std::string& text = read.value();
   const bool json = std::filesystem::path(path).extension() == ".json";
   Result<LabelFile> parsed = json ? parseLabelJson(text, path) : parseLabelCsv(text, path);
   if (!parsed) throw std::runtime_error(parsed.errorText());
@@ -86,11 +87,9 @@ std::vector<std::string> matchLabelRuns(const LoadedRuns& loaded, const std::str
   std::vector<std::string> checksums(loaded.runs.size());  // computed when first needed
   auto checksumOf = [&](std::size_t i) -> const std::string& {
     if (checksums[i].empty()) {
-      std::string text, error;
-      if (!readFileText(loaded.paths[i], text, error)) {
-        throw std::runtime_error(loaded.paths[i] + ": " + error);
-      }
-      checksums[i] = storage::checksumHex(text);
+      const Result<std::string> text = readFileText(loaded.paths[i]);
+      if (!text) throw std::runtime_error(text.errorText());
+      checksums[i] = storage::checksumHex(text.value());
     }
     return checksums[i];
   };
@@ -210,8 +209,8 @@ void writeText(const std::string& path, const std::string& text) {
     std::fwrite(text.data(), 1, text.size(), stdout);
     return;
   }
-  const std::string error = writeFileAtomically(path, text);
-  if (!error.empty()) throw std::runtime_error(path + ": " + error);
+  const Status written = writeFileAtomically(path, text);
+  if (!written) throw std::runtime_error(written.errorText());
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -680,8 +679,9 @@ int runReport(const ReportArgs& r) {
     throw UsageError("give FILE (SWEEP.json or MODEL.json) or --db DB --sweep ID");
   const std::string& path = r.path;
   const bool csv = r.csv || r.format == "csv";
-  std::string text, error;
-  if (!readFileText(path, text, error)) throw std::runtime_error(path + ": " + error);
+  const Result<std::string> read = readFileText(path);
+  if (!read) throw std::runtime_error(read.errorText());
+  const std::string& text = read.value();
   json value;
   try {
     value = json::parse(text);

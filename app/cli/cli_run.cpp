@@ -58,8 +58,8 @@ int benchIo(std::size_t steps, int repeats, bool json) {
     formatWall.push_back(t.wallSeconds);
     formatCpu.push_back(t.cpuSeconds);
     t = timeOnce([&] {
-      const std::string error = writeRunCsv(run, path);
-      if (!error.empty()) throw std::runtime_error(error);
+      const Status written = writeRunCsv(run, path);
+      if (!written) throw std::runtime_error(written.errorText());
     });
     writeWall.push_back(t.wallSeconds);
     t = timeOnce([&] {

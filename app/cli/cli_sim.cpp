@@ -105,8 +105,8 @@ int runSimulate(const SimulateArgs& a) {
     RunResult result = simulateRun(world, label, options, progress);
     if (!a.quiet && tty) std::fprintf(stderr, "\n");
     if (!result.ok()) throw std::runtime_error(result.error);
-    std::string error = writeRunCsv(result.run, a.out);
-    if (!error.empty()) throw std::runtime_error(error);
+    const Status written = writeRunCsv(result.run, a.out);
+    if (!written) throw std::runtime_error(written.errorText());
     totalSteps = result.run.stepCount();
     ++outcomes[std::string(runOutcomeName(result.outcome))];
     files.push_back(a.out);
@@ -124,8 +124,8 @@ int runSimulate(const SimulateArgs& a) {
       char number[32];
       std::snprintf(number, sizeof number, "_%0*zu.csv", width, i);
       const std::filesystem::path path = std::filesystem::path(a.outDir) / (a.prefix + number);
-      std::string error = writeRunCsv(r.run, path);
-      if (!error.empty()) return error;
+      const Status written = writeRunCsv(r.run, path);
+      if (!written) return written.errorText();
       std::lock_guard lock(mutex);
       files[i] = path.string();
       outcomeOf[i] = std::string(runOutcomeName(r.outcome));

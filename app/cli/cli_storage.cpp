@@ -366,9 +366,9 @@ int runBenchStorage(const BenchArgs& a) {
   for (int f = 0; f < a.files; ++f) {
     const std::int64_t n = a.steps / a.files + (f < a.steps % a.files ? 1 : 0);
     files.push_back(dir / ("bench-" + std::to_string(f) + ".csv"));
-    const std::string error =
+    const Status written =
         writeRunCsv(storage::makeSyntheticRun(static_cast<std::size_t>(n), 100 + f), files.back());
-    if (!error.empty()) throw std::runtime_error(files.back().string() + ": " + error);
+    if (!written) throw std::runtime_error(written.errorText());
   }
   std::uintmax_t bytes = 0;
   for (const auto& file : files)
@@ -417,9 +417,9 @@ int runBenchStorage(const BenchArgs& a) {
   // 2. One big run: single-file import, then windows and summaries.
   const fs::path big = dir / "big.csv";
   {
-    const std::string error =
+    const Status written =
         writeRunCsv(storage::makeSyntheticRun(static_cast<std::size_t>(a.bigSteps), 7), big);
-    if (!error.empty()) throw std::runtime_error(big.string() + ": " + error);
+    if (!written) throw std::runtime_error(written.errorText());
   }
   auto db = openDatabaseOrCreate(dbPath.string());
   {

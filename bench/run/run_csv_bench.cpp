@@ -34,7 +34,10 @@ BENCHMARK(BM_ParseRunCsv)->Unit(benchmark::kMillisecond);
 
 void BM_ReadRunCsvFile(benchmark::State& state) {
   const auto path = std::filesystem::temp_directory_path() / "tactile_bench_read.csv";
-  tactile::writeFileAtomically(path, sampleText());
+  if (const tactile::Status written = tactile::writeFileAtomically(path, sampleText()); !written) {
+    state.SkipWithError(written.errorText().c_str());
+    return;
+  }
   for (auto _ : state) {
     tactile::RunCsvResult result = tactile::readRunCsv(path);
     if (!result.ok()) state.SkipWithError(result.errorText().c_str());
@@ -59,8 +62,8 @@ BENCHMARK(BM_FormatRunCsv)->Unit(benchmark::kMillisecond);
 void BM_WriteRunCsvFile(benchmark::State& state) {
   const auto path = std::filesystem::temp_directory_path() / "tactile_bench_write.csv";
   for (auto _ : state) {
-    const std::string error = tactile::writeRunCsv(sampleRun(), path);
-    if (!error.empty()) state.SkipWithError(error.c_str());
+    const tactile::Status written = tactile::writeRunCsv(sampleRun(), path);
+    if (!written) state.SkipWithError(written.errorText().c_str());
   }
   std::filesystem::remove(path);
   state.SetBytesProcessed(static_cast<std::int64_t>(state.iterations() * sampleText().size()));

@@ -133,7 +133,7 @@ TEST(RunCsv, RoundTripWithoutTruthAndWithExtraColumns) {
 TEST(RunCsv, HundredThousandStepFileRoundTrips) {
   const RunData run = makeRun(100000, true, 3);
   const auto path = std::filesystem::temp_directory_path() / "tactile_run_100k.csv";
-  ASSERT_EQ(writeRunCsv(run, path), "");
+  ASSERT_TRUE(writeRunCsv(run, path).ok());
   RunCsvResult back = readRunCsv(path);
   std::filesystem::remove(path);
   ASSERT_TRUE(back.ok()) << back.errorText();
@@ -454,8 +454,9 @@ TEST(RunCsv, ProgressIsReportedAndCancelStops) {
 TEST(RunCsv, AtomicWriteLeavesNoFileOnFailure) {
   const auto dir = std::filesystem::temp_directory_path() / "tactile_no_such_dir_xyz";
   std::filesystem::remove_all(dir);
-  const std::string error = writeRunCsv(makeRun(2, false), dir / "out.csv");
-  EXPECT_FALSE(error.empty());
+  const Status written = writeRunCsv(makeRun(2, false), dir / "out.csv");
+  ASSERT_FALSE(written.ok());
+  EXPECT_EQ(written.error().file, (dir / "out.csv").string());
   EXPECT_FALSE(std::filesystem::exists(dir));
 }
 
@@ -469,25 +470,26 @@ TEST(FileText, MapsRegularFilesAndReadsEmptyOnes) {
   const auto dir = std::filesystem::temp_directory_path();
   const auto full = dir / "tactile_file_text_full.txt";
   const auto empty = dir / "tactile_file_text_empty.txt";
-  ASSERT_EQ(writeFileAtomically(full, "abc\ndef"), "");
-  ASSERT_EQ(writeFileAtomically(empty, ""), "");
+  ASSERT_TRUE(writeFileAtomically(full, "abc\ndef").ok());
+  ASSERT_TRUE(writeFileAtomically(empty, "").ok());
   FileText text;
-  std::string error;
-  ASSERT_TRUE(text.load(full, error)) << error;
+  ASSERT_TRUE(text.load(full).ok());
   EXPECT_EQ(text.view(), "abc\ndef");
   FileText moved = std::move(text);
   EXPECT_EQ(moved.view(), "abc\ndef");
-  ASSERT_TRUE(moved.load(empty, error)) << error;
+  ASSERT_TRUE(moved.load(empty).ok());
   EXPECT_EQ(moved.view(), "");
-  EXPECT_FALSE(moved.load(dir / "tactile_no_such_file.txt", error));
-  EXPECT_NE(error.find("cannot open"), std::string::npos);
+  const Status missing = moved.load(dir / "tactile_no_such_file.txt");
+  ASSERT_FALSE(missing.ok());
+  EXPECT_EQ(missing.errorText(), (dir / "tactile_no_such_file.txt").string() +
+                                     ": cannot open: No such file or directory");
   std::filesystem::remove(full);
   std::filesystem::remove(empty);
 }
 
 TEST(Errors, EmptyFileOnDisk) {
   const auto path = std::filesystem::temp_directory_path() / "tactile_empty_run.csv";
-  ASSERT_EQ(writeFileAtomically(path, ""), "");
+  ASSERT_TRUE(writeFileAtomically(path, "").ok());
   RunCsvResult r = readRunCsv(path);
   std::filesystem::remove(path);
   ASSERT_FALSE(r.ok());

@@ -221,7 +221,7 @@ TEST_F(CatalogTest, RenameAndDeleteLabelSetsByName) {
 TEST(CatalogImport, PrefixNamesRunsPrefixUnderscoreStem) {
   TempDir dir;
   std::filesystem::create_directories(dir / "room1");
-  ASSERT_EQ(writeRunCsv(makeRun(30, true, 1), dir / "room1/run_0000.csv"), "");
+  ASSERT_TRUE(writeRunCsv(makeRun(30, true, 1), dir / "room1/run_0000.csv").ok());
   auto db = test::openDb(dir / "p.db");
   ImportOptions options;
   options.namePrefix = "room1";
@@ -235,9 +235,9 @@ TEST(CatalogImport, NameClashInOneBatchFailsThatFileOnlyAndNamesBothFiles) {
   TempDir dir;
   for (const char* folder : {"room1", "chapter5"})
     std::filesystem::create_directories(dir / folder);
-  ASSERT_EQ(writeRunCsv(makeRun(30, true, 1), dir / "room1/run_0000.csv"), "");
-  ASSERT_EQ(writeRunCsv(makeRun(40, true, 2), dir / "chapter5/run_0000.csv"), "");
-  ASSERT_EQ(writeRunCsv(makeRun(50, true, 3), dir / "chapter5/run_0001.csv"), "");
+  ASSERT_TRUE(writeRunCsv(makeRun(30, true, 1), dir / "room1/run_0000.csv").ok());
+  ASSERT_TRUE(writeRunCsv(makeRun(40, true, 2), dir / "chapter5/run_0000.csv").ok());
+  ASSERT_TRUE(writeRunCsv(makeRun(50, true, 3), dir / "chapter5/run_0001.csv").ok());
   auto db = test::openDb(dir / "c.db");
   const auto outcomes = db->importFiles(
       {dir / "room1/run_0000.csv", dir / "chapter5/run_0000.csv", dir / "chapter5/run_0001.csv"});

@@ -26,7 +26,7 @@ void writeText(const std::filesystem::path& path, const std::string& text) {
 TEST(Import, FileRoundTripsBitForBitAndExportsIdenticalText) {
   TempDir dir;
   const RunData original = makeRun(500, true);
-  ASSERT_EQ(writeRunCsv(original, dir / "r1.csv"), "");
+  ASSERT_TRUE(writeRunCsv(original, dir / "r1.csv").ok());
   auto db = test::openDb(dir / "runs.db");
   ASSERT_NE(db, nullptr);
   auto outcomes = db->importFiles({dir / "r1.csv"});
@@ -41,12 +41,10 @@ TEST(Import, FileRoundTripsBitForBitAndExportsIdenticalText) {
   EXPECT_TRUE(std::signbit(loaded->y[0]));  // -0.0 keeps its sign
 
   ASSERT_TRUE(db->exportRun(outcomes[0].runId, dir / "out.csv").ok());
-  std::string exported;
-  std::string original_text;
-  std::string error;
-  ASSERT_TRUE(readFileText(dir / "out.csv", exported, error));
-  ASSERT_TRUE(readFileText(dir / "r1.csv", original_text, error));
-  EXPECT_EQ(exported, original_text);
+  const Result<std::string> exported = readFileText(dir / "out.csv");
+  const Result<std::string> source = readFileText(dir / "r1.csv");
+  ASSERT_TRUE(exported.ok() && source.ok());
+  EXPECT_EQ(exported.value(), source.value());
 
   auto info = db->findRun("r1");
   ASSERT_TRUE(info.ok());
@@ -104,7 +102,7 @@ TEST(Import, MissingFileIsReported) {
 
 TEST(Import, SameChecksumIsSkippedWithAMessage) {
   TempDir dir;
-  ASSERT_EQ(writeRunCsv(makeRun(20, true), dir / "a.csv"), "");
+  ASSERT_TRUE(writeRunCsv(makeRun(20, true), dir / "a.csv").ok());
   std::filesystem::copy_file(dir / "a.csv", dir / "copy-of-a.csv");
   auto db = test::openDb(dir / "runs.db");
   auto first = db->importFiles({dir / "a.csv"});
@@ -140,7 +138,7 @@ TEST(Import, ManyFilesInParallelKeepInputOrder) {
     if (i == 3) {
       writeText(path, "# format: tactile-run 1\nstep,x\n");
     } else {
-      ASSERT_EQ(writeRunCsv(makeRun(100 + i, i % 2 == 0, 10 + i), path), "");
+      ASSERT_TRUE(writeRunCsv(makeRun(100 + i, i % 2 == 0, 10 + i), path).ok());
     }
     files.push_back(path);
   }
@@ -259,7 +257,7 @@ TEST(Import, CancelStopsAfterTheFileBeingWritten) {
   std::vector<std::filesystem::path> files;
   for (int i = 0; i < 5; ++i) {
     files.push_back(dir / ("c" + std::to_string(i) + ".csv"));
-    ASSERT_EQ(writeRunCsv(makeRun(10, false, 100 + i), files.back()), "");
+    ASSERT_TRUE(writeRunCsv(makeRun(10, false, 100 + i), files.back()).ok());
   }
   auto db = test::openDb(":memory:");
   ImportOptions options;
@@ -313,7 +311,7 @@ TEST(Import, SceneFileRelativeToTheRunFile) {
   writeText(dir / "scenes" / "corridor.json", sceneText);
   RunData run = makeRun(8, false);
   run.setMeta("scene", "scenes/corridor.json");
-  ASSERT_EQ(writeRunCsv(run, dir / "c.csv"), "");
+  ASSERT_TRUE(writeRunCsv(run, dir / "c.csv").ok());
   auto db = test::openDb(":memory:");
   auto outcomes = db->importFiles({dir / "c.csv"});
   ASSERT_EQ(outcomes[0].status, ImportStatus::Imported) << outcomes[0].message;
