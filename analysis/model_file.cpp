@@ -375,18 +375,4 @@ Status writeModelBundleFile(const std::filesystem::path& path, const ModelBundle
   return writeFileAtomically(path, bundleToJson(bundle).dump(1) + "\n");
 }
 
-bool contactClassesOf(const ClassModelSet& classifier, std::vector<ContactClass>& out,
-                      std::string& error) {
-  out.clear();
-  for (const std::string& name : classifier.classNames()) {
-    const std::optional<ContactClass> c = parseContactClass(name);
-    if (!c) {
-      error = "class '" + name + "' is not a contact class";
-      return false;
-    }
-    out.push_back(*c);
-  }
-  return true;
-}
-
 }  // namespace tactile::analysis

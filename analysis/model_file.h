@@ -73,9 +73,4 @@ Result<ModelBundle> readModelFile(const std::filesystem::path& path);
 Status writeModelFile(const std::filesystem::path& path, const GroupModel& model);
 Status writeModelBundleFile(const std::filesystem::path& path, const ModelBundle& bundle);
 
-// Builds a GroupModel's class list from a classifier whose class names are contact class names.
-// Returns false (and sets error) when a name is not a contact class.
-bool contactClassesOf(const ClassModelSet& classifier, std::vector<ContactClass>& out,
-                      std::string& error);
-
 }  // namespace tactile::analysis

@@ -38,26 +38,17 @@ void Recorder::record(const Simulator& sim, const Command& command) {
 RunResult simulateRun(std::shared_ptr<const World> world, std::string_view sceneName,
                       const RunOptions& options, const ProgressFn& progress) {
   std::unique_ptr<Driver> driver = makeDriver(options.driver, options.seed);
-  if (!driver) {
-    RunResult r;
-    r.error = "unknown driver '" + options.driver + "'";
-    return r;
-  }
+  if (!driver) return Error("unknown driver '" + options.driver + "'");
   return simulateRunWith(std::move(world), sceneName, *driver, options, progress);
 }
 
 RunResult simulateRunWith(std::shared_ptr<const World> world, std::string_view sceneName,
                           Driver& driver, const RunOptions& options, const ProgressFn& progress) {
-  RunResult result;
   if (options.maxSteps > kMaxStepsPerRun) {
-    result.error = "at most " + std::to_string(kMaxStepsPerRun) + " steps per run";
-    return result;
+    return Error("at most " + std::to_string(kMaxStepsPerRun) + " steps per run");
   }
   Simulator sim(world, options.config);
-  if (sim.isBlocked(world->scene().start)) {
-    result.error = "the start pose overlaps an obstacle";
-    return result;
-  }
+  if (sim.isBlocked(world->scene().start)) return Error("the start pose overlaps an obstacle");
   const std::string name = driver.name();
   // Reserve for typical runs only: a run that ends early should not hold memory for maxSteps.
   Recorder recorder(sim, sceneName, name, std::min<std::size_t>(options.maxSteps, 1u << 16));
@@ -88,20 +79,22 @@ RunResult simulateRunWith(std::shared_ptr<const World> world, std::string_view s
       break;
     }
     if (progress && (k & 1023) == 1023 && !progress(k + 1, options.maxSteps)) {
-      result.error = "cancelled";
-      return result;
+      return Error("cancelled");
     }
   }
   recorder.setOutcome(outcome);
+  SimulatedRun result;
   result.outcome = outcome;
   result.run = recorder.take();
   return result;
 }
 
-std::string simulateBatch(std::shared_ptr<const World> world, std::string_view sceneName,
-                          const RunOptions& options, std::size_t runs, unsigned threads,
-                          const RunSink& sink, const ProgressFn& progress) {
-  if (runs > kMaxRunsPerBatch) return "at most " + std::to_string(kMaxRunsPerBatch) + " runs";
+Status simulateBatch(std::shared_ptr<const World> world, std::string_view sceneName,
+                     const RunOptions& options, std::size_t runs, unsigned threads,
+                     const RunSink& sink, const ProgressFn& progress) {
+  if (runs > kMaxRunsPerBatch) {
+    return Error("at most " + std::to_string(kMaxRunsPerBatch) + " runs");
+  }
   if (threads == 0) threads = std::max(1u, std::thread::hardware_concurrency());
   threads = std::min(threads, 256u);
   threads = static_cast<unsigned>(std::min<std::size_t>(threads, std::max<std::size_t>(runs, 1)));
@@ -123,13 +116,14 @@ std::string simulateBatch(std::shared_ptr<const World> world, std::string_view s
       mine.seed = options.seed + i;
       RunResult result = simulateRun(world, sceneName, mine);
       if (!result.ok()) {
-        fail("run " + std::to_string(i) + ": " + result.error);
+        fail("run " + std::to_string(i) + ": " + result.errorText());
         return;
       }
-      std::string error = sink ? sink(i, result) : std::string();
-      if (!error.empty()) {
-        fail(std::move(error));
-        return;
+      if (sink) {
+        if (const Status stored = sink(i, result.value()); !stored) {
+          fail(stored.errorText());
+          return;
+        }
       }
       std::lock_guard lock(mutex);
       ++done;
@@ -145,7 +139,8 @@ std::string simulateBatch(std::shared_ptr<const World> world, std::string_view s
   worker();
   for (std::thread& t : pool)
     t.join();
-  return firstError;
+  if (!firstError.empty()) return Error(firstError);
+  return Status::success();
 }
 
 }  // namespace tactile::sim

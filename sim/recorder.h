@@ -8,6 +8,7 @@
 #include <memory>
 #include <string>
 
+#include "base/error.h"
 #include "base/progress.h"
 #include "run/run.h"
 #include "sim/driver.h"
@@ -52,12 +53,12 @@ struct RunOptions {
   bool stopAtGoal = true;
 };
 
-struct RunResult {
+// A recorded run and how it ended.
+struct SimulatedRun {
   RunData run;
   RunOutcome outcome = RunOutcome::Unknown;
-  std::string error;  // empty on success
-  bool ok() const { return error.empty(); }
 };
+using RunResult = Result<SimulatedRun>;
 
 // One run: success when the goal is reached, gave-up when the driver gives up, timeout after
 // maxSteps. Deterministic: the same world, options and binary give the same RunData. `progress`
@@ -71,11 +72,11 @@ RunResult simulateRunWith(std::shared_ptr<const World> world, std::string_view s
 
 // Batch: run i uses seed options.seed + i. Runs are spread over `threads` workers (0 = all
 // cores, at most 256); `sink(i, result)` is called from worker threads (once per run, any order)
-// and returns "" or an error that stops the batch. `progress` gets (runs done, runs) from one
-// thread at a time. Returns "" or the first error.
-using RunSink = std::function<std::string(std::size_t index, RunResult& result)>;
-std::string simulateBatch(std::shared_ptr<const World> world, std::string_view sceneName,
-                          const RunOptions& options, std::size_t runs, unsigned threads,
-                          const RunSink& sink, const ProgressFn& progress = {});
+// and returns an error that stops the batch, or success. `progress` gets (runs done, runs) from
+// one thread at a time. Fails with the first error.
+using RunSink = std::function<Status(std::size_t index, SimulatedRun& result)>;
+Status simulateBatch(std::shared_ptr<const World> world, std::string_view sceneName,
+                     const RunOptions& options, std::size_t runs, unsigned threads,
+                     const RunSink& sink, const ProgressFn& progress = {});
 
 }  // namespace tactile::sim

@@ -83,7 +83,10 @@ std::string validatePolygon(const std::vector<Vec2>& poly, std::size_t index,
 
 }  // namespace
 
-std::string validateSceneGeometry(const Scene& scene) {
+namespace {
+
+// The first geometry problem, or "".
+std::string geometryProblem(const Scene& scene) {
   const SceneBounds& b = scene.bounds;
   if (!(b.xmin < b.xmax) || !(b.ymin < b.ymax)) {
     return "bounds: need xmin < xmax and ymin < ymax";
@@ -103,6 +106,13 @@ std::string validateSceneGeometry(const Scene& scene) {
     }
   }
   return {};
+}
+
+}  // namespace
+
+Status validateSceneGeometry(const Scene& scene) {
+  if (std::string problem = geometryProblem(scene); !problem.empty()) return Error(problem);
+  return Status::success();
 }
 
 Result<Scene> parseSceneJson(std::string_view text, std::string_view sourceName) {
@@ -156,8 +166,9 @@ Result<Scene> parseSceneJson(std::string_view text, std::string_view sourceName)
   } catch (const SchemaError& e) {
     return Error(source, e.message);
   }
-  std::string error = validateSceneGeometry(scene);
-  if (!error.empty()) return Error(source, error);
+  if (Status valid = validateSceneGeometry(scene); !valid) {
+    return Error(source, valid.error().message);
+  }
   return scene;
 }
 

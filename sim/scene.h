@@ -40,9 +40,9 @@ Result<Scene> parseSceneJson(std::string_view text, std::string_view sourceName)
 // Polygon and pose checks that need no robot: bounds non-empty; every obstacle has at least three
 // finite vertices inside the bounds, no two consecutive vertices equal, non-zero area, and no two
 // non-adjacent edges that touch (not self-intersecting); start and goal inside the bounds; goal
-// not inside an obstacle. Returns "" or the first problem, e.g.
+// not inside an obstacle. Fails with the first problem, e.g.
 // "obstacle 3: edge from vertex 1 to vertex 2 crosses edge from vertex 4 to vertex 5".
-std::string validateSceneGeometry(const Scene& scene);
+Status validateSceneGeometry(const Scene& scene);
 
 // Scene as JSON text (the format parseSceneJson reads).
 std::string sceneToJson(const Scene& scene);

@@ -95,16 +95,16 @@ Scene generateProceduralScene(std::size_t obstacles, std::uint64_t seed) {
   return scene;
 }
 
-std::string checkStartPose(const Scene& scene, const RobotGeometry& geometry) {
+Status checkStartPose(const Scene& scene, const RobotGeometry& geometry) {
   SimConfig config;
   config.geometry = geometry;
   Simulator sim(std::make_shared<const World>(scene), config);
   if (sim.isBlocked(scene.start)) {
-    return "start: the robot at (" + formatNumber(scene.start.x) + ", " +
-           formatNumber(scene.start.y) + ", " + formatNumber(scene.start.theta) +
-           ") overlaps an obstacle or the bounds";
+    return Error("start: the robot at (" + formatNumber(scene.start.x) + ", " +
+                 formatNumber(scene.start.y) + ", " + formatNumber(scene.start.theta) +
+                 ") overlaps an obstacle or the bounds");
   }
-  return {};
+  return Status::success();
 }
 
 std::optional<std::string> sceneSpecError(std::string_view spec) {
@@ -161,8 +161,9 @@ Result<Scene> loadScene(std::string_view spec, const RobotGeometry& geometry) {
     result = parseSceneJson(text.value(), spec);
   }
   if (!result.ok()) return result;
-  std::string error = checkStartPose(result.value(), geometry);
-  if (!error.empty()) return Error(std::string(spec), error);
+  if (Status start = checkStartPose(result.value(), geometry); !start) {
+    return Error(std::string(spec), start.error().message);
+  }
   return result;
 }
 

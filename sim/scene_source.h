@@ -18,9 +18,9 @@ inline constexpr std::size_t kMaxProceduralObstacles = 10'000;
 // neither is ever blocked. Deterministic for a given (obstacles, seed).
 Scene generateProceduralScene(std::size_t obstacles, std::uint64_t seed);
 
-// The start pose check of a scene: "" or why the robot cannot stand there (body or a dome
+// The start pose check of a scene: fails with why the robot cannot stand there (body or a dome
 // compressed past 5 overlapping an obstacle or the bounds).
-std::string checkStartPose(const Scene& scene, const RobotGeometry& geometry = {});
+Status checkStartPose(const Scene& scene, const RobotGeometry& geometry = {});
 
 // Why what the user typed cannot name a scene at all (an unknown name, a malformed
 // `random:N:SEED`), or nullopt. A front end reports these as usage errors; loadScene fails on them

@@ -104,11 +104,11 @@ int runSimulate(const SimulateArgs& a) {
     }
     RunResult result = simulateRun(world, label, options, progress);
     if (!a.quiet && tty) std::fprintf(stderr, "\n");
-    if (!result.ok()) throw std::runtime_error(result.error);
-    const Status written = writeRunCsv(result.run, a.out);
+    if (!result.ok()) throw std::runtime_error(result.errorText());
+    const Status written = writeRunCsv(result->run, a.out);
     if (!written) throw std::runtime_error(written.errorText());
-    totalSteps = result.run.stepCount();
-    ++outcomes[std::string(runOutcomeName(result.outcome))];
+    totalSteps = result->run.stepCount();
+    ++outcomes[std::string(runOutcomeName(result->outcome))];
     files.push_back(a.out);
   } else {
     std::error_code ec;
@@ -120,17 +120,17 @@ int runSimulate(const SimulateArgs& a) {
     files.resize(runs);
     std::vector<std::string> outcomeOf(runs);
     std::vector<std::size_t> stepsOf(runs, 0);
-    const RunSink sink = [&](std::size_t i, RunResult& r) -> std::string {
+    const RunSink sink = [&](std::size_t i, SimulatedRun& r) -> Status {
       char number[32];
       std::snprintf(number, sizeof number, "_%0*zu.csv", width, i);
       const std::filesystem::path path = std::filesystem::path(a.outDir) / (a.prefix + number);
       const Status written = writeRunCsv(r.run, path);
-      if (!written) return written.errorText();
+      if (!written) return written;
       std::lock_guard lock(mutex);
       files[i] = path.string();
       outcomeOf[i] = std::string(runOutcomeName(r.outcome));
       stepsOf[i] = r.run.stepCount();
-      return {};
+      return Status::success();
     };
     std::size_t lastShown = 0;
     const ProgressFn progress = [&](std::size_t done, std::size_t total) {
@@ -144,8 +144,8 @@ int runSimulate(const SimulateArgs& a) {
       lastShown = done;
       return true;
     };
-    std::string error = simulateBatch(world, label, options, runs, a.threads, sink, progress);
-    if (!error.empty()) throw std::runtime_error(error);
+    const Status batch = simulateBatch(world, label, options, runs, a.threads, sink, progress);
+    if (!batch) throw std::runtime_error(batch.errorText());
     for (std::size_t i = 0; i < runs; ++i) {
       totalSteps += stepsOf[i];
       ++outcomes[outcomeOf[i]];
@@ -207,18 +207,19 @@ Measurement measure(const std::shared_ptr<const World>& world, std::size_t steps
     const auto t0 = std::chrono::steady_clock::now();
     RunResult result = simulateRun(world, "bench", options);
     const double s = secondsSince(t0);
-    if (!result.ok()) throw std::runtime_error(result.error);
-    rates.push_back(static_cast<double>(result.run.stepCount()) / s);
+    if (!result.ok()) throw std::runtime_error(result.errorText());
+    rates.push_back(static_cast<double>(result->run.stepCount()) / s);
     std::size_t touching = 0;
-    for (std::size_t k = 0; k < result.run.stepCount(); ++k) {
+    for (std::size_t k = 0; k < result->run.stepCount(); ++k) {
       for (const GroupInfo& g : kSensorGroups) {
-        if (result.run.truthAt(k, g.group) != ContactClass::NoContact) {
+        if (result->run.truthAt(k, g.group) != ContactClass::NoContact) {
           ++touching;
           break;
         }
       }
     }
-    m.contactFraction = static_cast<double>(touching) / static_cast<double>(result.run.stepCount());
+    m.contactFraction =
+        static_cast<double>(touching) / static_cast<double>(result->run.stepCount());
   }
   std::sort(rates.begin(), rates.end());
   m.stepsPerSecond = rates[rates.size() / 2];

@@ -29,17 +29,20 @@ void runSteps(benchmark::State& state, const std::shared_ptr<const World>& world
     options.stopAtGoal = false;
     options.config.useIndex = useIndex;
     RunResult r = simulateRun(world, "bench", options);
-    if (!r.ok()) state.SkipWithError(r.error.c_str());
+    if (!r.ok()) {
+      state.SkipWithError(r.errorText().c_str());
+      return;
+    }
     contactSteps = 0;
-    for (std::size_t k = 0; k < r.run.stepCount(); ++k) {
+    for (std::size_t k = 0; k < r->run.stepCount(); ++k) {
       for (int g = 0; g < kGroupCount; ++g) {
-        if (r.run.truth[k * kGroupCount + g] != ContactClass::NoContact) {
+        if (r->run.truth[k * kGroupCount + g] != ContactClass::NoContact) {
           ++contactSteps;
           break;
         }
       }
     }
-    benchmark::DoNotOptimize(r.run.sensors.data());
+    benchmark::DoNotOptimize(r->run.sensors.data());
   }
   state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations() * steps));
   state.counters["contact_fraction"] = static_cast<double>(contactSteps) / steps;

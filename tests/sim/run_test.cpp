@@ -32,8 +32,8 @@ TEST(Recorder, RunCarriesMetadataStepsAndTruth) {
   options.seed = 5;
   options.driver = "random";
   RunResult r = simulateRun(builtinWorld("room1"), "room1", options);
-  ASSERT_TRUE(r.ok()) << r.error;
-  const RunData& run = r.run;
+  ASSERT_TRUE(r.ok()) << r.errorText();
+  const RunData& run = r->run;
   EXPECT_EQ(run.stepCount(), 400u);
   ASSERT_NE(run.meta("format"), nullptr);
   EXPECT_EQ(*run.meta("format"), "tactile-run 1");
@@ -74,9 +74,10 @@ TEST(Recorder, ReachingTheGoalEndsTheRunWithSuccess) {
   options.maxSteps = 2000;
   RunResult r = simulateRun(std::make_shared<const World>(s), "open", options);
   ASSERT_TRUE(r.ok());
-  EXPECT_EQ(r.outcome, RunOutcome::Success);
-  EXPECT_LT(r.run.stepCount(), 2000u);
-  EXPECT_EQ(*r.run.meta("outcome"), "success");
+  ASSERT_TRUE(r.ok());
+  EXPECT_EQ(r->outcome, RunOutcome::Success);
+  EXPECT_LT(r->run.stepCount(), 2000u);
+  EXPECT_EQ(*r->run.meta("outcome"), "success");
 }
 
 TEST(Recorder, TooManyStepsIsAnError) {
@@ -91,7 +92,7 @@ TEST(Recorder, UnknownDriverIsAnError) {
   options.driver = "teleport";
   RunResult r = simulateRun(builtinWorld("practice"), "practice", options);
   EXPECT_FALSE(r.ok());
-  EXPECT_NE(r.error.find("teleport"), std::string::npos);
+  EXPECT_NE(r.errorText().find("teleport"), std::string::npos);
 }
 
 TEST(Recorder, WrittenFileReadsBackEqual) {
@@ -102,11 +103,11 @@ TEST(Recorder, WrittenFileReadsBackEqual) {
   ASSERT_TRUE(r.ok());
   const auto path = std::filesystem::temp_directory_path() /
                     ("tactile_sim_test_" + std::to_string(::getpid()) + ".csv");
-  ASSERT_TRUE(writeRunCsv(r.run, path).ok());
+  ASSERT_TRUE(writeRunCsv(r->run, path).ok());
   RunCsvResult back = readRunCsv(path);
   std::filesystem::remove(path);
   ASSERT_TRUE(back.ok()) << back.errorText();
-  EXPECT_TRUE(back.value() == r.run);
+  EXPECT_TRUE(back.value() == r->run);
 }
 
 TEST(Determinism, SameSeedGivesByteIdenticalFiles) {
@@ -116,11 +117,11 @@ TEST(Determinism, SameSeedGivesByteIdenticalFiles) {
     options.seed = 42;
     options.driver = driver;
     auto world = builtinWorld("room2");
-    const std::string a = formatRunCsv(simulateRun(world, "room2", options).run);
-    const std::string b = formatRunCsv(simulateRun(world, "room2", options).run);
+    const std::string a = formatRunCsv(simulateRun(world, "room2", options)->run);
+    const std::string b = formatRunCsv(simulateRun(world, "room2", options)->run);
     EXPECT_EQ(fnv1a(a), fnv1a(b)) << driver;
     options.seed = 43;
-    const std::string c = formatRunCsv(simulateRun(world, "room2", options).run);
+    const std::string c = formatRunCsv(simulateRun(world, "room2", options)->run);
     EXPECT_NE(fnv1a(a), fnv1a(c)) << driver;
   }
 }
@@ -132,14 +133,14 @@ std::vector<std::uint64_t> batchHashes(unsigned threads) {
   options.driver = "random";
   std::vector<std::uint64_t> hashes(8, 0);
   std::mutex m;
-  const std::string error = simulateBatch(builtinWorld("room3"), "room3", options, hashes.size(),
-                                          threads, [&](std::size_t i, RunResult& r) {
-                                            const std::uint64_t h = fnv1a(formatRunCsv(r.run));
-                                            std::lock_guard lock(m);
-                                            hashes[i] = h;
-                                            return std::string();
-                                          });
-  EXPECT_EQ(error, "");
+  const Status batch = simulateBatch(builtinWorld("room3"), "room3", options, hashes.size(),
+                                     threads, [&](std::size_t i, SimulatedRun& r) {
+                                       const std::uint64_t h = fnv1a(formatRunCsv(r.run));
+                                       std::lock_guard lock(m);
+                                       hashes[i] = h;
+                                       return Status::success();
+                                     });
+  EXPECT_TRUE(batch.ok());
   return hashes;
 }
 
@@ -155,25 +156,28 @@ TEST(Determinism, BatchIsIndependentOfThreadCount) {
   options.maxSteps = 400;
   options.seed = 100;
   options.driver = "random";
-  EXPECT_EQ(one[0], fnv1a(formatRunCsv(simulateRun(builtinWorld("room3"), "room3", options).run)));
+  EXPECT_EQ(one[0], fnv1a(formatRunCsv(simulateRun(builtinWorld("room3"), "room3", options)->run)));
 }
 
 TEST(Batch, SinkErrorStopsTheBatch) {
   RunOptions options;
   options.maxSteps = 50;
-  const std::string error = simulateBatch(
-      builtinWorld("practice"), "practice", options, 20, 2,
-      [](std::size_t i, RunResult&) { return i == 3 ? std::string("disk full") : ""; });
-  EXPECT_EQ(error, "disk full");
+  const Status batch = simulateBatch(
+      builtinWorld("practice"), "practice", options, 20, 2, [](std::size_t i, SimulatedRun&) {
+        return i == 3 ? Status(Error("disk full")) : Status::success();
+      });
+  ASSERT_FALSE(batch.ok());
+  EXPECT_EQ(batch.errorText(), "disk full");
 }
 
 TEST(Batch, ProgressCanCancel) {
   RunOptions options;
   options.maxSteps = 50;
   std::size_t calls = 0;
-  const std::string error = simulateBatch(builtinWorld("practice"), "practice", options, 50, 1, {},
-                                          [&](std::size_t, std::size_t) { return ++calls < 3; });
-  EXPECT_EQ(error, "cancelled");
+  const Status batch = simulateBatch(builtinWorld("practice"), "practice", options, 50, 1, {},
+                                     [&](std::size_t, std::size_t) { return ++calls < 3; });
+  ASSERT_FALSE(batch.ok());
+  EXPECT_EQ(batch.errorText(), "cancelled");
   EXPECT_EQ(calls, 3u);
 }
 
@@ -201,7 +205,7 @@ TEST(WallFollow, ReachesTheGoalInThePracticeScene) {
     options.seed = seed;
     RunResult r = simulateRun(builtinWorld("practice"), "practice", options);
     ASSERT_TRUE(r.ok());
-    successes += r.outcome == RunOutcome::Success;
+    successes += r->outcome == RunOutcome::Success;
   }
   EXPECT_GE(successes, 3);
 }

@@ -122,10 +122,10 @@ TEST(SceneSource, StartPoseInObstacleIsAFileError) {
   s.obstacles.push_back(Obstacle{{Vec2(250, 450), Vec2(300, 450), Vec2(300, 550), Vec2(250, 550)}});
   s.start = {200, 500, 0};
   s.goal = Vec2(900, 500);
-  EXPECT_NE(checkStartPose(s).find("overlaps"), std::string::npos);
+  EXPECT_NE(checkStartPose(s).errorText().find("overlaps"), std::string::npos);
   s.start = {200, 500, 3.14159};
   s.obstacles[0] = Obstacle{{Vec2(600, 450), Vec2(700, 450), Vec2(700, 550), Vec2(600, 550)}};
-  EXPECT_EQ(checkStartPose(s), "");
+  EXPECT_TRUE(checkStartPose(s).ok());
 }
 
 TEST(SceneSource, StartTooCloseToTheBoundsIsRejected) {
@@ -134,7 +134,7 @@ TEST(SceneSource, StartTooCloseToTheBoundsIsRejected) {
   s.bounds = {0, 0, 1000, 1000};
   s.start = {10, 500, 0};  // the back overhangs the wall at x = 0
   s.goal = Vec2(900, 500);
-  EXPECT_NE(checkStartPose(s), "");
+  EXPECT_FALSE(checkStartPose(s).ok());
 }
 
 TEST(SceneSource, UnknownNameIsAUsageError) {
@@ -177,8 +177,8 @@ TEST(Procedural, HasTheRequestedObstacleCountAndIsValid) {
   for (std::size_t n : {0u, 1u, 10u, 500u}) {
     const Scene s = generateProceduralScene(n, 3);
     EXPECT_EQ(s.obstacles.size(), n);
-    EXPECT_EQ(validateSceneGeometry(s), "") << n;
-    EXPECT_EQ(checkStartPose(s), "") << n;
+    EXPECT_TRUE(validateSceneGeometry(s).ok()) << n;
+    EXPECT_TRUE(checkStartPose(s).ok()) << n;
   }
 }
 
