@@ -3,6 +3,7 @@
 // the --db forms of train, sweep, report and classify (cli_learn.cpp).
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
@@ -116,7 +117,10 @@ int modelsImport(const Common& c, const std::string& file, std::string name) {
   return kExitOk;
 }
 
-int modelsDelete(const Common& c, const std::vector<std::string>& names) {
+int modelsDelete(const Common& c, std::vector<std::string> names) {
+  // A name given twice is one model.
+  std::sort(names.begin(), names.end());
+  names.erase(std::unique(names.begin(), names.end()), names.end());
   auto db = openDatabaseForWrite(c.db);
   const Status deleted = db->deleteModels(names);
   if (!deleted) throw std::runtime_error(c.db + ": " + deleted.errorText());
@@ -158,7 +162,9 @@ int sweepsList(const Common& c) {
   return kExitOk;
 }
 
-int sweepsDelete(const Common& c, const std::vector<std::int64_t>& ids) {
+int sweepsDelete(const Common& c, std::vector<std::int64_t> ids) {
+  std::sort(ids.begin(), ids.end());
+  ids.erase(std::unique(ids.begin(), ids.end()), ids.end());
   auto db = openDatabaseForWrite(c.db);
   const Status deleted = db->deleteSweeps(ids);
   if (!deleted) throw std::runtime_error(c.db + ": " + deleted.errorText());
