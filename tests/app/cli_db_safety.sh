@@ -168,8 +168,21 @@ nobody() {
 if [ "$DROP" = none ]; then
   echo "note: neither setpriv nor su: the read-only case was not run"
 else
+  # The unprivileged user needs a path it may walk from / (the work folder may sit inside a
+  # private 0700 folder, as under mktemp): the read-only case runs in a folder of its own under
+  # /tmp with the program, the runs and the database copied in, removed on exit.
+  RO=$(mktemp -d "${TMPDIR:-/tmp}/tactile-ro.XXXXXX")
+  trap 'chmod -R u+w "$RO" 2> /dev/null; rm -rf "$RO"' EXIT
+  chmod 755 "$RO"
+  cp "$T" "$RO/tactile"
+  cp -r runs "$RO/runs"
+  chmod -R a+rX "$RO/runs"
+  cp c.db r-source.db
+  cd "$RO"
+  T_MAIN=$T
+  T="$RO/tactile"
   mkdir ro out
-  cp c.db ro/r.db
+  cp "$W/r-source.db" ro/r.db
   "$T" autolabel --db ro/r.db --all --set truth > /dev/null || fail "autolabel exited $?"
   cp ro/r.db r-before.db
   no_companions ro/r.db
@@ -203,6 +216,8 @@ else
   grep -q "^tactile: error: ro/r.db: " ro.err || fail "read-only import error: $(cat ro.err)"
   chmod 755 ro
   chmod 644 ro/r.db
+  T=$T_MAIN
+  cd "$W"
 fi
 
 # ---- 5. eight importers at once into one new database, five rounds -----------------------------
