@@ -107,55 +107,69 @@ Status checkStartPose(const Scene& scene, const RobotGeometry& geometry) {
   return Status::success();
 }
 
-std::optional<std::string> sceneSpecError(std::string_view spec) {
+namespace {
+
+// What the user typed names: a procedural scene (with its N and SEED), a built-in scene or a file;
+// or why it names no scene at all (a usage problem).
+struct SceneSpec {
+  std::optional<std::string> usageProblem;
+  bool procedural = false;
+  std::int64_t obstacles = 0;
+  std::int64_t seed = 0;
+  bool builtin = false;
+  bool file = false;
+};
+
+SceneSpec classifySpec(std::string_view spec) {
+  SceneSpec out;
   if (spec.starts_with("random:")) {
     std::string_view rest = spec.substr(7);
     const std::size_t colon = rest.find(':');
-    std::int64_t n = 0;
-    std::int64_t seed = 0;
-    if (colon == std::string_view::npos || !parseInteger(rest.substr(0, colon), n) ||
-        !parseInteger(rest.substr(colon + 1), seed) || seed < 0) {
-      return "scene '" + std::string(spec) +
-             "': expected random:N:SEED with integers N >= 0 and SEED >= 0";
+    if (colon == std::string_view::npos || !parseInteger(rest.substr(0, colon), out.obstacles) ||
+        !parseInteger(rest.substr(colon + 1), out.seed) || out.seed < 0) {
+      out.usageProblem = "scene '" + std::string(spec) +
+                         "': expected random:N:SEED with integers N >= 0 and SEED >= 0";
+    } else if (out.obstacles < 0 ||
+               static_cast<std::size_t>(out.obstacles) > kMaxProceduralObstacles) {
+      out.usageProblem = "scene '" + std::string(spec) + "': N must be between 0 and " +
+                         std::to_string(kMaxProceduralObstacles);
     }
-    if (n < 0 || static_cast<std::size_t>(n) > kMaxProceduralObstacles) {
-      return "scene '" + std::string(spec) + "': N must be between 0 and " +
-             std::to_string(kMaxProceduralObstacles);
-    }
-    return std::nullopt;
+    out.procedural = true;
+    return out;
   }
-  if (builtinSceneJson(spec) || spec.find('/') != std::string_view::npos ||
-      spec.ends_with(".json") ||
+  if (builtinSceneJson(spec)) {
+    out.builtin = true;
+    return out;
+  }
+  if (spec.find('/') != std::string_view::npos || spec.ends_with(".json") ||
       std::filesystem::exists(std::filesystem::path(std::string(spec)))) {
-    return std::nullopt;
+    out.file = true;
+    return out;
   }
   std::string names;
   for (const std::string& n : builtinSceneNames())
     names += (names.empty() ? "" : ", ") + n;
-  return "unknown scene '" + std::string(spec) + "' (built-in scenes: " + names +
-         "; or a .json file, or random:N:SEED)";
+  out.usageProblem = "unknown scene '" + std::string(spec) + "' (built-in scenes: " + names +
+                     "; or a .json file, or random:N:SEED)";
+  return out;
+}
+
+}  // namespace
+
+std::optional<std::string> sceneSpecError(std::string_view spec) {
+  return classifySpec(spec).usageProblem;
 }
 
 Result<Scene> loadScene(std::string_view spec, const RobotGeometry& geometry) {
-  if (auto problem = sceneSpecError(spec)) return Error(std::move(*problem));
+  const SceneSpec kind = classifySpec(spec);
+  if (kind.usageProblem) return Error(*kind.usageProblem);
   Result<Scene> result = Error("");
-  if (spec.starts_with("random:")) {
-    std::string_view rest = spec.substr(7);
-    const std::size_t colon = rest.find(':');
-    std::int64_t n = 0;
-    std::int64_t seed = 0;
-    if (colon == std::string_view::npos || !parseInteger(rest.substr(0, colon), n) ||
-        !parseInteger(rest.substr(colon + 1), seed) || seed < 0) {
-      return Error("scene '" + std::string(spec) + "': expected random:N:SEED");
-    }
-    if (n < 0 || static_cast<std::size_t>(n) > kMaxProceduralObstacles) {
-      return Error("scene '" + std::string(spec) + "': N out of range");
-    }
-    result = generateProceduralScene(static_cast<std::size_t>(n), static_cast<std::uint64_t>(seed));
-  } else if (auto json = builtinSceneJson(spec)) {
-    result = parseSceneJson(*json, spec);
-  } else if (spec.find('/') != std::string_view::npos || spec.ends_with(".json") ||
-             std::filesystem::exists(std::filesystem::path(std::string(spec)))) {
+  if (kind.procedural) {
+    result = generateProceduralScene(static_cast<std::size_t>(kind.obstacles),
+                                     static_cast<std::uint64_t>(kind.seed));
+  } else if (kind.builtin) {
+    result = parseSceneJson(*builtinSceneJson(spec), spec);
+  } else {
     Result<std::string> text = readFileText(std::filesystem::path(std::string(spec)));
     if (!text) return text.error();
     result = parseSceneJson(text.value(), spec);

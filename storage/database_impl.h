@@ -35,6 +35,10 @@ struct RunDatabase::Impl {
                                        std::int64_t keepId);
 };
 
+// A label segment from a row of `SELECT label_segments.id, runs.name, run_id, grp, first_step,
+// last_step, class, annotator` (label_scope.cpp). Throws DbError on a malformed row.
+LabelSegment labelSegmentFromRow(db::Statement& s);
+
 // Current UTC time as "YYYY-MM-DDTHH:MM:SSZ".
 std::string utcNow();
 

@@ -8,9 +8,7 @@
 
 namespace tactile::storage {
 
-namespace {
-
-LabelSegment segmentFromRow(db::Statement& s) {
+LabelSegment labelSegmentFromRow(db::Statement& s) {
   LabelSegment segment;
   segment.id = s.columnInt(0);
   segment.run = s.columnText(1);
@@ -26,8 +24,6 @@ LabelSegment segmentFromRow(db::Statement& s) {
   return segment;
 }
 
-}  // namespace
-
 Result<LabelSegment> RunDatabase::segment(std::int64_t setId, std::int64_t segmentId) {
   return guarded<LabelSegment>([&] {
     db::Statement& s = impl_->statement(
@@ -39,7 +35,7 @@ Result<LabelSegment> RunDatabase::segment(std::int64_t setId, std::int64_t segme
       throw db::DbError("no label segment with id " + std::to_string(segmentId) + " in label set " +
                         std::to_string(setId));
     }
-    LabelSegment out = segmentFromRow(s);
+    LabelSegment out = labelSegmentFromRow(s);
     s.reset();
     return out;
   });
@@ -63,7 +59,7 @@ Result<std::vector<LabelSegment>> RunDatabase::segmentsInRange(std::int64_t setI
         .bind(5, firstStep);
     std::vector<LabelSegment> out;
     while (s.step())
-      out.push_back(segmentFromRow(s));
+      out.push_back(labelSegmentFromRow(s));
     s.reset();
     return out;
   });

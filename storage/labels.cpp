@@ -279,22 +279,8 @@ Result<std::vector<LabelSegment>> RunDatabase::segments(std::int64_t setId, std:
         "WHERE set_id = ?1 AND (?2 = 0 OR run_id = ?2)");
     s.bind(1, setId).bind(2, runId);
     std::vector<LabelSegment> out;
-    while (s.step()) {
-      LabelSegment segment;
-      segment.id = s.columnInt(0);
-      segment.run = s.columnText(1);
-      segment.runId = s.columnInt(2);
-      const auto group = parseSensorGroup(s.columnTextView(3));
-      const auto cls = parseContactClass(s.columnTextView(6));
-      if (!group || !cls)
-        throw db::DbError("malformed label segment " + std::to_string(segment.id));
-      segment.group = *group;
-      segment.firstStep = s.columnInt(4);
-      segment.lastStep = s.columnInt(5);
-      segment.cls = *cls;
-      segment.annotator = s.columnText(7);
-      out.push_back(std::move(segment));
-    }
+    while (s.step())
+      out.push_back(labelSegmentFromRow(s));
     std::sort(out.begin(), out.end(), [](const LabelSegment& l, const LabelSegment& r) {
       return std::tie(l.run, l.group, l.firstStep) < std::tie(r.run, r.group, r.firstStep);
     });
