@@ -4,16 +4,7 @@
 # labels list/rename/delete, label export with provenance lines, a label file refused for another
 # run of the same name, and file-form train refusing an ambiguous or mismatching run file.
 #   tests/app/cli_catalog.sh TACTILE WORKDIR
-set -eu
-T=$1
-W=$2
-rm -rf "$W"
-mkdir -p "$W"
-cd "$W"
-fail() {
-  echo "FAIL: $*" >&2
-  exit 1
-}
+. "$(dirname "$0")/cli_test_lib.sh"
 # Data rows of a run file (its step count).
 steps() { awk 'f { n++ } /^step,/ { f = 1 } END { print n + 0 }' "$1"; }
 

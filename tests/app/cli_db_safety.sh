@@ -10,16 +10,7 @@
 #  5. eight processes importing into one new database at once, five rounds: all succeed, every run
 #     stored once, the rest reported as skipped.
 #   tests/app/cli_db_safety.sh TACTILE WORKDIR
-set -eu
-T=$1
-W=$2
-rm -rf "$W"
-mkdir -p "$W"
-cd "$W"
-fail() {
-  echo "FAIL: $*" >&2
-  exit 1
-}
+. "$(dirname "$0")/cli_test_lib.sh"
 # No journal or shared-memory files beside $1.
 no_companions() {
   for s in -wal -shm -journal; do

@@ -3,16 +3,7 @@
 # whose log-likelihood is -inf (one definition of mean_loglik for fit, train and sweep), warnings
 # for a variance floor that hides a feature, and no settings the Gaussian method does not use.
 #   tests/app/cli_learning.sh TACTILE WORKDIR
-set -eu
-T=$1
-W=$2
-rm -rf "$W"
-mkdir -p "$W"
-cd "$W"
-fail() {
-  echo "FAIL: $*" >&2
-  exit 1
-}
+. "$(dirname "$0")/cli_test_lib.sh"
 has() {  # has FILE TEXT: the file contains TEXT literally
   grep -qF -- "$2" "$1" || fail "$1 lacks $2: $(cat "$1")"
 }

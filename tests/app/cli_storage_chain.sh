@@ -3,16 +3,7 @@
 # it, import it again (all skipped), autolabel every run, export the labels and a run, check the
 # database, and import a broken file (named by file and line, nothing stored).
 #   tests/app/cli_storage_chain.sh TACTILE WORKDIR
-set -eu
-T=$1
-W=$2
-rm -rf "$W"
-mkdir -p "$W"
-cd "$W"
-fail() {
-  echo "FAIL: $*" >&2
-  exit 1
-}
+. "$(dirname "$0")/cli_test_lib.sh"
 
 "$T" simulate --scene room1 --driver wall-follow --steps 600 --runs 3 --out-dir runs --quiet > /dev/null
 "$T" simulate --scene random:30:5 --driver random --steps 300 --out runs/proc.csv --quiet > /dev/null

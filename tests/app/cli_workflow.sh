@@ -5,16 +5,7 @@
 # model, sweep, list the sweep, report it in three formats, delete the model. Also: an unwritable
 # --out fails before training and stores no model.
 #   tests/app/cli_workflow.sh TACTILE WORKDIR
-set -eu
-T=$1
-W=$2
-rm -rf "$W"
-mkdir -p "$W"
-cd "$W"
-fail() {
-  echo "FAIL: $*" >&2
-  exit 1
-}
+. "$(dirname "$0")/cli_test_lib.sh"
 command -v python3 > /dev/null || fail "python3 is needed to read the JSON output"
 
 "$T" simulate --scene room1 --runs 4 --steps 300 --out-dir b1 --prefix room1 --quiet > /dev/null
