@@ -654,14 +654,23 @@ int runSweepVerb(const SweepArgs& a) {
 struct ReportArgs {
   std::string path;
   bool csv = false;
+  bool json = false;
   std::string db;
   std::int64_t sweep = 0;
   std::string format;
   std::string out;
 };
 
+// With --json the report goes to --out and stdout gets one summary object.
+void checkReportJson(const ReportArgs& a) {
+  if (a.json && (a.out.empty() || a.out == "-")) {
+    throw UsageError("--json prints a summary; give --out FILE for the report itself");
+  }
+}
+
 int runReportDb(const ReportArgs& a) {
   if (a.sweep <= 0) throw UsageError("--db needs --sweep ID (see tactile sweeps list)");
+  checkReportJson(a);
   const std::string format = a.format.empty() ? "text" : a.format;
   const auto style = analysis::parseTableStyle(format);
   if (!style) throw UsageError("unknown --format '" + format + "' (md, csv, html, text)");
@@ -670,6 +679,14 @@ int runReportDb(const ReportArgs& a) {
   auto sweep = ws->loadSweep(a.sweep);
   if (!sweep) throw std::runtime_error(a.db + ": " + sweep.errorText());
   writeText(a.out, analysis::sweepReport(sweep.value(), *style));
+  if (a.json) {
+    std::cout << json{{"sweep", a.sweep},
+                      {"cells", sweep->cells.size()},
+                      {"format", format},
+                      {"out", a.out}}
+                     .dump()
+              << "\n";
+  }
   return kExitOk;
 }
 
@@ -677,6 +694,7 @@ int runReport(const ReportArgs& r) {
   if (!r.db.empty()) return runReportDb(r);
   if (r.path.empty())
     throw UsageError("give FILE (SWEEP.json or MODEL.json) or --db DB --sweep ID");
+  checkReportJson(r);
   const std::string& path = r.path;
   const bool csv = r.csv || r.format == "csv";
   const Result<std::string> read = readFileText(path);
@@ -703,6 +721,7 @@ int runReport(const ReportArgs& r) {
     const Result<analysis::SweepResult> sweep = analysis::sweepFromJson(value);
     if (!sweep) throw std::runtime_error(path + ": " + sweep.errorText());
     writeText(r.out, analysis::sweepReport(sweep.value(), style));
+    if (r.json) std::cout << json{{"file", path}, {"kind", "sweep"}, {"out", r.out}}.dump() << "\n";
     return kExitOk;
   }
   if (format == analysis::kModelFormat || format == analysis::kModelBundleFormat) {
@@ -710,6 +729,7 @@ int runReport(const ReportArgs& r) {
     const Result<analysis::ModelBundle> models = analysis::modelsFromJson(value, path);
     if (!models) throw std::runtime_error(models.errorText());
     writeText(r.out, analysis::modelReport(value, style));
+    if (r.json) std::cout << json{{"file", path}, {"kind", "model"}, {"out", r.out}}.dump() << "\n";
     return kExitOk;
   }
   throw std::runtime_error(path + ": not a sweep or model file (format '" + format + "')");
@@ -962,6 +982,9 @@ void registerLearnVerbs(CLI::App& app, CLI::App& /*bench*/) {
     cmd->add_option("--format", args->format, "md, csv, html or text (default text)");
     cmd->add_option("--out", args->out, "Write here instead of stdout");
     cmd->add_flag("--csv", args->csv, "CSV tables instead of aligned text (= --format csv)");
+    cmd->add_flag(
+        "--json", args->json,
+        R"(With --out: print {"out","format"} and, for a stored sweep, "sweep" and "cells")");
     setAction(cmd, [args] { return runReport(*args); });
   }
   // classify

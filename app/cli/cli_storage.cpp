@@ -178,13 +178,17 @@ int runImport(const ImportArgs& a) {
 
 // ---- export-run ------------------------------------------------------------------------------
 
-int runExport(const std::string& dbPath, const std::string& runName, const std::string& out) {
+int runExport(const std::string& dbPath, const std::string& runName, const std::string& out,
+              bool json) {
   auto db = openDatabaseForRead(dbPath);
   auto run = db->findRun(runName);
   if (!run) throw std::runtime_error(databaseError(dbPath, run.error()));
   const auto status = db->exportRun(run->id, out);
   // SQLite errors name the database (Error::file), write errors the output file.
   if (!status) throw std::runtime_error(status.errorText());
+  if (json) {
+    printJson({{"run", run->name}, {"id", run->id}, {"steps", run->stepCount}, {"out", out}});
+  }
   return kExitOk;
 }
 
@@ -523,11 +527,13 @@ void registerStorageVerbs(CLI::App& app, CLI::App& bench) {
     auto db = std::make_shared<std::string>();
     auto run = std::make_shared<std::string>();
     auto out = std::make_shared<std::string>();
+    auto json = std::make_shared<bool>(false);
     CLI::App* cmd = app.add_subcommand("export-run", "Export a stored run back to a run CSV file");
     cmd->add_option("--db", *db, "Database file")->required();
     cmd->add_option("--run", *run, "Run name")->required();
     cmd->add_option("--out", *out, "Output run file (written atomically)")->required();
-    setAction(cmd, [db, run, out] { return runExport(*db, *run, *out); });
+    cmd->add_flag("--json", *json, R"(Print {"run","id","steps","out"})");
+    setAction(cmd, [db, run, out, json] { return runExport(*db, *run, *out, *json); });
   }
   {
     struct AutoArgs {

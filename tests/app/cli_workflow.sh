@@ -96,6 +96,15 @@ done
 head -1 report.md | grep -q '^# ' || fail "report md: $(head -1 report.md)"
 grep -q '^group,features,method' report.csv || fail "report csv: $(head -3 report.csv)"
 head -1 report.html | grep -qi '<!DOCTYPE html>' || fail "report html: $(head -1 report.html)"
+# --json: the report goes to --out, stdout gets one summary object naming it.
+"$T" report --db w.db --sweep "$id" --format md --out again.md --json > report.json ||
+  fail "report --json exited $?"
+python3 -c "
+import json, sys
+d = json.load(open('report.json'))
+assert d['sweep'] == $id and d['out'] == 'again.md' and d['format'] == 'md' and d['cells'] > 0, d
+" || fail "report --json: $(cat report.json)"
+cmp -s again.md report.md || fail "report --json wrote a different report"
 
 # A run both trained and scored on is refused; no sweep is stored.
 if "$T" sweep --db w.db --set truth --train-runs room1_0000,room1_0001 --test-runs room1_0001 \
