@@ -72,6 +72,24 @@ std::optional<double> Metrics::recallOf(ContactClass c) const {
 // recall_c = tp_c / support_c, precision_c = tp_c / predicted_c, F1_c = 2 tp / (2 tp + fp + fn);
 // balanced accuracy = mean of recall_c over classes with support; macro-F1 = mean of F1_c over
 // classes occurring as truth or prediction (scikit-learn's convention, zero_division = 0).
+std::optional<double> cohensKappa(const ConfusionMatrix& confusion) {
+  const std::size_t total = confusion.total();
+  if (total == 0) return std::nullopt;
+  const auto n = static_cast<double>(total);
+  double observed = 0.0;
+  double chance = 0.0;
+  for (int i = 0; i < kContactClassCount; ++i) {
+    const auto c = static_cast<ContactClass>(i);
+    observed += static_cast<double>(confusion.count(c, c));
+    chance += static_cast<double>(confusion.trueCount(c)) *
+              static_cast<double>(confusion.predictedCount(c));
+  }
+  observed /= n;
+  chance /= n * n;
+  if (chance >= 1.0) return std::nullopt;
+  return (observed - chance) / (1.0 - chance);
+}
+
 Metrics computeMetrics(const ConfusionMatrix& confusion) {
   Metrics out;
   out.total = confusion.total();

@@ -67,6 +67,12 @@ struct Metrics {
 
 Metrics computeMetrics(const ConfusionMatrix& confusion);
 
+// Cohen's kappa of two raters (rows one rater, columns the other): (po - pe) / (1 - pe), with po
+// the observed agreement and pe the agreement expected by chance from the row and column totals
+// (Cohen 1960). nullopt when there are no samples or when pe = 1 (both raters used one and the
+// same class for every sample: kappa is undefined there, as in scikit-learn).
+std::optional<double> cohensKappa(const ConfusionMatrix& confusion);
+
 // Binary confusion of one one-vs-rest classifier (thesis tables 4.1 to 4.18).
 struct BinaryConfusion {
   ContactClass positive = ContactClass::Wall;

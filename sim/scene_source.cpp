@@ -181,4 +181,11 @@ Result<Scene> loadScene(std::string_view spec, const RobotGeometry& geometry) {
   return result;
 }
 
+std::optional<std::string> proceduralSceneJson(const std::string& spec) {
+  if (!spec.starts_with("random:")) return std::nullopt;
+  Result<Scene> generated = loadScene(spec);
+  if (!generated.ok()) return std::nullopt;
+  return sceneToJson(generated.value());
+}
+
 }  // namespace tactile::sim

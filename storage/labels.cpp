@@ -271,6 +271,20 @@ Status RunDatabase::removeSegment(std::int64_t segmentId) {
   });
 }
 
+Result<std::vector<std::pair<std::int64_t, std::int64_t>>> RunDatabase::labelledSteps(
+    std::int64_t setId) {
+  return guarded<std::vector<std::pair<std::int64_t, std::int64_t>>>([&] {
+    db::Statement& s = impl_->statement(
+        "SELECT run_id, SUM(last_step - first_step + 1) FROM label_segments WHERE set_id = ? "
+        "GROUP BY run_id ORDER BY run_id");
+    s.bind(1, setId);
+    std::vector<std::pair<std::int64_t, std::int64_t>> out;
+    while (s.step())
+      out.emplace_back(s.columnInt(0), s.columnInt(1));
+    return out;
+  });
+}
+
 Result<std::vector<LabelSegment>> RunDatabase::segments(std::int64_t setId, std::int64_t runId) {
   return guarded<std::vector<LabelSegment>>([&] {
     db::Statement& s = impl_->statement(

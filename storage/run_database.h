@@ -71,6 +71,21 @@ struct RunSummary {
   std::vector<SummaryBucket> buckets;
 };
 
+// The per-step columns a view draws, without the sensor values: pose, command, blocked flag and
+// truth. About 49 bytes a step, so the track of a million-step run takes about 50 MB where the
+// whole run would take over 750 MB.
+struct RunTrack {
+  std::vector<double> x, y, theta, v, omega;
+  std::vector<std::uint8_t> blocked;
+  std::vector<ContactClass> truth;  // empty, or stepCount() * kGroupCount in group order
+
+  std::size_t stepCount() const { return x.size(); }
+  bool hasTruth() const { return !truth.empty(); }
+  ContactClass truthAt(std::size_t step, SensorGroup g) const {
+    return truth[step * kGroupCount + static_cast<std::size_t>(groupIndex(g))];
+  }
+};
+
 // ---- import ----------------------------------------------------------------------------------
 
 enum class ImportStatus { Imported, Skipped, Failed };
@@ -258,6 +273,8 @@ class RunDatabase {
   Result<RunData> loadRun(std::int64_t runId);
   // Steps [firstStep, firstStep + count) clipped to the run; reads only those rows.
   Result<RunWindow> loadWindow(std::int64_t runId, std::int64_t firstStep, std::int64_t count);
+  // Every step's pose, command, blocked flag and truth, without reading a sensor value.
+  Result<RunTrack> loadTrack(std::int64_t runId);
   // Min/max per bucket of about (lastStep - firstStep + 1) / buckets steps over the range (clipped
   // to the run; lastStep < 0 means the last step), read from stored block summaries when the
   // buckets are wide, so a whole huge run is summarised without loading it.
@@ -309,6 +326,9 @@ class RunDatabase {
   Status replaceSegmentsInRange(std::int64_t setId, std::int64_t runId, SensorGroup group,
                                 std::int64_t firstStep, std::int64_t lastStep,
                                 const std::vector<LabelSegment>& with);
+  // Steps covered by the set's segments per run (summed over the eight groups), for the runs it
+  // has segments on: (run id, covered group-steps).
+  Result<std::vector<std::pair<std::int64_t, std::int64_t>>> labelledSteps(std::int64_t setId);
   // Segments of a set (of one run when runId != 0), ordered by run, group, first step.
   Result<std::vector<LabelSegment>> segments(std::int64_t setId, std::int64_t runId = 0);
 

@@ -95,6 +95,47 @@ RunWindow readWindow(RunDatabase::Impl& impl, std::int64_t runId, std::int64_t f
   return window;
 }
 
+RunTrack readTrack(RunDatabase::Impl& impl, std::int64_t runId) {
+  const RunHeader header = readHeader(impl, runId);
+  const auto n = static_cast<std::size_t>(header.stepCount);
+  RunTrack track;
+  for (auto* column : {&track.x, &track.y, &track.theta, &track.v, &track.omega})
+    column->resize(n);
+  track.blocked.resize(n);
+  if (header.hasTruth) track.truth.resize(n * kGroupCount);
+  // The sensors blob is never named, so SQLite never decodes it; the rows still have to be
+  // walked, which bounds the speed (docs/storage.md#reading).
+  db::Statement& s = impl.statement(
+      "SELECT step, x, y, theta, v, omega, blocked, truth FROM steps WHERE run_id = ? ORDER BY "
+      "step");
+  s.bind(1, runId);
+  std::size_t row = 0;
+  while (s.step()) {
+    if (row >= n || s.columnInt(0) != static_cast<std::int64_t>(row)) {
+      throw db::DbError("run " + std::to_string(runId) + " has a gap or extra row at step " +
+                        std::to_string(s.columnInt(0)));
+    }
+    track.x[row] = s.columnDouble(1);
+    track.y[row] = s.columnDouble(2);
+    track.theta[row] = s.columnDouble(3);
+    track.v[row] = s.columnDouble(4);
+    track.omega[row] = s.columnDouble(5);
+    track.blocked[row] = static_cast<std::uint8_t>(s.columnInt(6));
+    if (header.hasTruth && (s.columnIsNull(7) ||
+                            !unpackTruth(s.columnInt(7), track.truth.data() + row * kGroupCount))) {
+      throw db::DbError("step " + std::to_string(row) + " of run " + std::to_string(runId) +
+                        " has missing or malformed truth");
+    }
+    ++row;
+  }
+  s.reset();
+  if (row != n) {
+    throw db::DbError("run " + std::to_string(runId) + " is missing steps from " +
+                      std::to_string(row));
+  }
+  return track;
+}
+
 // A piece of a summary range: steps [first, last] whose min/max come from one stored block of
 // `level` (or, for level -1, from one step).
 struct Piece {
@@ -242,6 +283,10 @@ Result<RunData> RunDatabase::loadRun(std::int64_t runId) {
 Result<RunWindow> RunDatabase::loadWindow(std::int64_t runId, std::int64_t firstStep,
                                           std::int64_t count) {
   return guarded<RunWindow>([&] { return readWindow(*impl_, runId, firstStep, count); });
+}
+
+Result<RunTrack> RunDatabase::loadTrack(std::int64_t runId) {
+  return guarded<RunTrack>([&] { return readTrack(*impl_, runId); });
 }
 
 Result<RunSummary> RunDatabase::loadSummary(std::int64_t runId, std::int64_t firstStep,

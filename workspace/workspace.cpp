@@ -1,6 +1,7 @@
 #include "workspace/workspace.h"
 
 #include <algorithm>
+#include <array>
 #include <limits>
 #include <set>
 #include <utility>
@@ -126,6 +127,62 @@ Result<storage::RunWindow> Workspace::loadWindow(std::string_view name, std::int
   auto info = db_->findRun(name);
   if (!info) return info.error();
   return db_->loadWindow(info->id, firstStep, count);
+}
+
+Result<storage::RunTrack> Workspace::loadTrack(std::string_view name) {
+  auto info = db_->findRun(name);
+  if (!info) return info.error();
+  return db_->loadTrack(info->id);
+}
+
+Result<std::vector<std::pair<std::int64_t, double>>> Workspace::labelCoverage(std::int64_t setId) {
+  auto covered = db_->labelledSteps(setId);
+  if (!covered) return covered.error();
+  auto runs = db_->listRuns();
+  if (!runs) return runs.error();
+  std::vector<std::pair<std::int64_t, double>> out;
+  for (const auto& [runId, groupSteps] : covered.value()) {
+    const auto run = std::find_if(runs->begin(), runs->end(),
+                                  [id = runId](const storage::RunInfo& r) { return r.id == id; });
+    if (run == runs->end() || run->stepCount == 0) continue;
+    out.emplace_back(runId, 100.0 * static_cast<double>(groupSteps) /
+                                static_cast<double>(run->stepCount * kGroupCount));
+  }
+  return out;
+}
+
+std::vector<GroupAgreement> truthAgreement(const storage::RunTrack& track,
+                                           const std::vector<storage::LabelSegment>& segments) {
+  std::vector<GroupAgreement> out;
+  if (!track.hasTruth()) return out;
+  std::array<analysis::ConfusionMatrix, kGroupCount> confusion;
+  const auto steps = static_cast<std::int64_t>(track.stepCount());
+  for (const storage::LabelSegment& s : segments) {
+    const std::int64_t first = std::max<std::int64_t>(0, s.firstStep);
+    const std::int64_t last = std::min(steps - 1, s.lastStep);
+    // Rows are the truth, columns the labels.
+    for (std::int64_t k = first; k <= last; ++k) {
+      confusion[static_cast<std::size_t>(groupIndex(s.group))].add(
+          track.truthAt(static_cast<std::size_t>(k), s.group), s.cls);
+    }
+  }
+  for (const GroupInfo& info : kSensorGroups) {
+    const analysis::ConfusionMatrix& c =
+        confusion[static_cast<std::size_t>(groupIndex(info.group))];
+    GroupAgreement a;
+    a.group = info.group;
+    a.comparedSteps = static_cast<std::int64_t>(c.total());
+    for (int i = 0; i < kContactClassCount; ++i) {
+      const auto cls = static_cast<ContactClass>(i);
+      a.agreeingSteps += static_cast<std::int64_t>(c.count(cls, cls));
+    }
+    if (a.comparedSteps > 0)
+      a.percent =
+          100.0 * static_cast<double>(a.agreeingSteps) / static_cast<double>(a.comparedSteps);
+    a.kappa = analysis::cohensKappa(c);
+    out.push_back(a);
+  }
+  return out;
 }
 
 // ---- label edits -------------------------------------------------------------------------------

@@ -101,6 +101,19 @@ struct LabelEdit {
   std::int64_t segmentId = 0;  // the added or changed segment (0 for a removal)
 };
 
+// How far a run's labels agree with its truth in one group, over the steps the labels cover.
+struct GroupAgreement {
+  SensorGroup group = SensorGroup::Front;
+  std::int64_t comparedSteps = 0;  // labelled steps (the truth covers every step)
+  std::int64_t agreeingSteps = 0;
+  std::optional<double> percent;  // 100 * agreeing / compared; nullopt with nothing compared
+  std::optional<double> kappa;    // Cohen's kappa (analysis::cohensKappa)
+};
+// Per group in group order; `segments` are one run's label segments of any groups (not
+// overlapping within a group). Empty when the track has no truth.
+std::vector<GroupAgreement> truthAgreement(const storage::RunTrack& track,
+                                           const std::vector<storage::LabelSegment>& segments);
+
 class Workspace {
  public:
   // Opens a database (OpenOptions choose create / existing / read-only).
@@ -120,6 +133,10 @@ class Workspace {
   Result<RunData> loadRun(std::string_view name);
   Result<storage::RunWindow> loadWindow(std::string_view name, std::int64_t firstStep,
                                         std::int64_t count);
+  // Pose, command, blocked flag and truth of every step, without the sensor values.
+  Result<storage::RunTrack> loadTrack(std::string_view name);
+  // Percent of each run's group-steps (steps x 8) that the set's segments cover, by run id.
+  Result<std::vector<std::pair<std::int64_t, double>>> labelCoverage(std::int64_t setId);
 
   // ---- label edits, each one transaction, each returning what it replaced ----
   Result<LabelEdit> addSegment(std::int64_t setId, const storage::LabelSegment& segment);

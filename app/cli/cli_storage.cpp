@@ -102,15 +102,6 @@ struct ImportArgs {
   bool json = false;
 };
 
-// Stores procedural scenes (`random:N:SEED`) by generating them again; storage itself does not
-// link the simulator. Built-in names and file paths are left to storage.
-std::optional<std::string> proceduralSceneJson(const std::string& scene) {
-  if (!scene.starts_with("random:")) return std::nullopt;
-  Result<sim::Scene> generated = sim::loadScene(scene);
-  if (!generated.ok()) return std::nullopt;
-  return sim::sceneToJson(generated.value());
-}
-
 int runImport(const ImportArgs& a) {
   std::vector<fs::path> files = expandInputs(a.files);
   if (!a.name.empty() && files.size() != 1) {
@@ -125,7 +116,7 @@ int runImport(const ImportArgs& a) {
   options.name = a.name;
   options.namePrefix = a.prefix;
   options.threads = a.threads;
-  options.sceneResolver = proceduralSceneJson;
+  options.sceneResolver = sim::proceduralSceneJson;
   const auto t0 = std::chrono::steady_clock::now();
   const auto outcomes = db->importFiles(files, options);
   const double seconds =

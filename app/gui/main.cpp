@@ -1,11 +1,24 @@
 // tactile-workbench: the desktop workbench.
 #include <QApplication>
 #include <QCommandLineParser>
+#include <QFileInfo>
+#include <QSettings>
 #include <QTimer>
 
 #include <cstdio>
 
+#include "app/gui/common/settings_keys.h"
 #include "app/gui/main_window.h"
+#include "app/gui/runs/run_session.h"
+
+namespace {
+
+int fail(const QString& message) {
+  std::fprintf(stderr, "tactile-workbench: error: %s\n", qPrintable(message));
+  return 1;
+}
+
+}  // namespace
 
 int main(int argc, char** argv) {
   QApplication app(argc, argv);
@@ -18,18 +31,63 @@ int main(int argc, char** argv) {
       QApplication::translate("main", "Tactile Workbench: tactile-navigation research desktop"));
   parser.addHelpOption();
   parser.addVersionOption();
+  const QCommandLineOption dbOption(
+      QStringLiteral("db"),
+      QApplication::translate("main", "Open the run database DB (default: the last one used)."),
+      QStringLiteral("DB"));
+  const QCommandLineOption runOption(QStringLiteral("run"),
+                                     QApplication::translate("main", "Open the run named NAME."),
+                                     QStringLiteral("NAME"));
+  const QCommandLineOption stepOption(QStringLiteral("step"),
+                                      QApplication::translate("main", "Put the cursor on step K."),
+                                      QStringLiteral("K"));
   const QCommandLineOption screenshot(
       QStringLiteral("screenshot"),
-      QApplication::translate("main", "Save a PNG of the window to FILE once shown, then quit."),
+      QApplication::translate("main",
+                              "Render the window at 1600x1000 to the PNG file FILE, then quit."),
       QStringLiteral("FILE"));
+  parser.addOption(dbOption);
+  parser.addOption(runOption);
+  parser.addOption(stepOption);
   parser.addOption(screenshot);
   parser.process(app);
 
+  bool stepOk = true;
+  const qlonglong step =
+      parser.isSet(stepOption) ? parser.value(stepOption).toLongLong(&stepOk) : 0;
+  if (!stepOk || step < 0)
+    return fail(QApplication::translate("main", "--step needs a step number, got '%1'")
+                    .arg(parser.value(stepOption)));
+  if (parser.isSet(runOption) && !parser.isSet(dbOption))
+    return fail(QApplication::translate("main", "--run needs --db"));
+
   tactile::gui::MainWindow window;
+  if (parser.isSet(screenshot)) window.resize(1600, 1000);
+  QString db = parser.value(dbOption);
+  if (db.isEmpty()) {
+    const QString last = QSettings().value(tactile::gui::settings_keys::kLastDatabase).toString();
+    if (!last.isEmpty() && QFileInfo::exists(last)) db = last;
+  }
+  if (!db.isEmpty()) {
+    if (parser.isSet(dbOption) && !QFileInfo::exists(db))
+      return fail(QApplication::translate("main", "%1: no such database").arg(db));
+    tactile::Status opened = window.openDatabase(db);
+    if (!opened) {
+      if (parser.isSet(dbOption)) return fail(QString::fromStdString(opened.errorText()));
+      std::fprintf(stderr, "tactile-workbench: warning: %s\n", opened.errorText().c_str());
+    }
+  }
+  if (parser.isSet(runOption)) {
+    tactile::Status opened = window.openRun(parser.value(runOption));
+    if (!opened) return fail(QString::fromStdString(opened.errorText()));
+  }
+  if (parser.isSet(stepOption)) window.session()->setCurrentStep(step);
   window.show();
   if (parser.isSet(screenshot)) {
     const QString path = parser.value(screenshot);
-    QTimer::singleShot(500, &window, [&window, path] {
+    // Long enough for the queued replots of every view.
+    QTimer::singleShot(600, &window, [&window, path] {
+      window.resize(1600, 1000);
       const bool saved = window.grab().save(path);
       if (!saved)
         std::fprintf(stderr, "tactile-workbench: error: cannot save %s\n", qPrintable(path));

@@ -1,48 +1,440 @@
 #include "app/gui/main_window.h"
 
 #include <QAction>
+#include <QActionGroup>
 #include <QApplication>
 #include <QCloseEvent>
+#include <QDockWidget>
+#include <QDragEnterEvent>
+#include <QFileDialog>
+#include <QFileInfo>
+#include <QFutureWatcher>
 #include <QLabel>
 #include <QMenuBar>
 #include <QMessageBox>
+#include <QMimeData>
+#include <QProgressDialog>
 #include <QSettings>
 #include <QStatusBar>
+#include <QToolBar>
+#include <QUndoStack>
 
-#include "run/builtin_scenes.h"
-#include "run/sensor_layout.h"
+#include "app/gui/common/progress_bridge.h"
+#include "app/gui/common/settings_keys.h"
+#include "app/gui/labels/label_model.h"
+#include "app/gui/labels/label_panel_view.h"
+#include "app/gui/runs/import_worker.h"
+#include "app/gui/runs/route_view.h"
+#include "app/gui/runs/run_list_model.h"
+#include "app/gui/runs/run_list_view.h"
+#include "app/gui/runs/run_session.h"
+#include "app/gui/runs/step_controls_view.h"
+#include "app/gui/runs/timeline_view.h"
+#include "workspace/workspace.h"
 
 namespace tactile::gui {
 
-MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
-  setObjectName(QStringLiteral("MainWindow"));
-  setWindowTitle(tr("Tactile Workbench"));
-  welcome_ = new QLabel(this);
-  welcome_->setObjectName(QStringLiteral("welcome"));
-  welcome_->setAlignment(Qt::AlignCenter);
-  welcome_->setWordWrap(true);
-  welcome_->setText(
-      tr("<h2>Tactile Workbench</h2>"
-         "<p>Simulate a robot with %1 tactile domes in %2 sensor groups, record and label its "
-         "runs, and train classifiers on them.</p>"
-         "<p>The run views arrive with the workbench release; until then the <tt>tactile</tt> "
-         "command-line tool does the work.</p>")
-          .arg(kSensorCount)
-          .arg(kGroupCount));
-  setCentralWidget(welcome_);
-  createMenus();
-  statusBar()->showMessage(
-      tr("%n built-in scene(s)", nullptr, static_cast<int>(builtinSceneNames().size())));
-  resize(1200, 800);
-  restoreSettings();
+namespace keys = settings_keys;
+
+namespace {
+
+bool isDatabaseFile(const QString& path) {
+  const QString suffix = QFileInfo(path).suffix().toLower();
+  return suffix == "db" || suffix == "sqlite" || suffix == "sqlite3" || suffix == "tactile";
 }
 
-void MainWindow::createMenus() {
+}  // namespace
+
+MainWindow::MainWindow(QWidget* parent)
+    : QMainWindow(parent),
+      session_(new RunSession(this)),
+      labels_(new LabelModel(this)),
+      runModel_(new RunListModel(this)) {
+  setObjectName(QStringLiteral("MainWindow"));
+  setAcceptDrops(true);
+  setDockNestingEnabled(true);
+  createViews();
+  createActions();
+  resize(1400, 900);
+  restoreSettings();
+  updateTitle();
+  updateStatus();
+
+  connect(session_, &RunSession::errorOccurred, this, &MainWindow::showError);
+  connect(labels_, &LabelModel::errorOccurred, this, &MainWindow::showError);
+  connect(labelPanel_, &LabelPanelView::errorOccurred, this, &MainWindow::showError);
+  connect(labelPanel_, &LabelPanelView::statusMessage, this, &MainWindow::showMessage);
+  connect(session_, &RunSession::currentStepChanged, this, &MainWindow::updateStatus);
+  connect(session_, &RunSession::selectionChanged, this, &MainWindow::updateStatus);
+  connect(session_, &RunSession::runOpened, this, [this] {
+    updateTitle();
+    updateStatus();
+  });
+  connect(labels_, &LabelModel::labelSetChanged, this, [this] {
+    updateStatus();
+    (void)runModel_->reloadCoverage(workspace_.get(), labels_->setId());
+  });
+  connect(labels_->undoStack(), &QUndoStack::indexChanged, this,
+          [this] { (void)runModel_->reloadCoverage(workspace_.get(), labels_->setId()); });
+  connect(runList_, &RunListView::runChosen, this, [this](const QString& name) {
+    if (name.toStdString() != session_->info().name || !session_->isOpen()) {
+      Status s = openRun(name);
+      if (!s) showError(QString::fromStdString(s.errorText()));
+    }
+  });
+}
+
+MainWindow::~MainWindow() {
+  // Views hold pointers into the workspace through the session and the label model.
+  session_->setWorkspace(nullptr);
+  labels_->setWorkspace(nullptr);
+}
+
+void MainWindow::createViews() {
+  timeline_ = new TimelineView(session_, labels_, this);
+  setCentralWidget(timeline_);
+
+  auto dock = [this](const QString& title, const QString& name, QWidget* content,
+                     Qt::DockWidgetArea area) {
+    auto* d = new QDockWidget(title, this);
+    d->setObjectName(name);
+    d->setWidget(content);
+    addDockWidget(area, d);
+    return d;
+  };
+  runList_ = new RunListView(runModel_, this);
+  route_ = new RouteView(session_, labels_, this);
+  labelPanel_ = new LabelPanelView(session_, labels_, this);
+  QDockWidget* runs =
+      dock(tr("Runs"), QStringLiteral("runsDock"), runList_, Qt::LeftDockWidgetArea);
+  QDockWidget* route =
+      dock(tr("Route"), QStringLiteral("routeDock"), route_, Qt::LeftDockWidgetArea);
+  QDockWidget* labels =
+      dock(tr("Labels"), QStringLiteral("labelsDock"), labelPanel_, Qt::RightDockWidgetArea);
+  splitDockWidget(runs, route, Qt::Vertical);
+  resizeDocks({runs, route}, {260, 560}, Qt::Vertical);
+  resizeDocks({runs, labels}, {430, 280}, Qt::Horizontal);
+
+  steps_ = new StepControlsView(session_, this);
+  QToolBar* bar = addToolBar(tr("Steps"));
+  bar->setObjectName(QStringLiteral("stepToolBar"));
+  bar->addWidget(steps_);
+
+  stepLabel_ = new QLabel(this);
+  setLabel_ = new QLabel(this);
+  statusBar()->addPermanentWidget(stepLabel_);
+  statusBar()->addPermanentWidget(setLabel_);
+}
+
+void MainWindow::createActions() {
+  // ---- File ----
   QMenu* file = menuBar()->addMenu(tr("&File"));
+  QAction* open = file->addAction(tr("&Open Database..."), this, [this] { chooseDatabase(false); });
+  open->setShortcut(QKeySequence::Open);
+  file->addAction(tr("&New Database..."), this, [this] { chooseDatabase(true); });
+  recentMenu_ = file->addMenu(tr("Open &Recent"));
+  file->addSeparator();
+  QAction* import = file->addAction(tr("&Import Runs..."), this, &MainWindow::chooseRunFiles);
+  import->setShortcut(QKeySequence(tr("Ctrl+I")));
+  file->addAction(tr("Export &Labels..."), labelPanel_, &LabelPanelView::exportLabels);
+  file->addSeparator();
   QAction* quit = file->addAction(tr("&Quit"), this, &QWidget::close);
   quit->setShortcut(QKeySequence::Quit);
+  rebuildRecentMenu();
+
+  // ---- Edit ----
+  QMenu* edit = menuBar()->addMenu(tr("&Edit"));
+  QAction* undo = labels_->undoStack()->createUndoAction(this, tr("&Undo"));
+  undo->setShortcut(QKeySequence::Undo);
+  QAction* redo = labels_->undoStack()->createRedoAction(this, tr("&Redo"));
+  redo->setShortcuts({QKeySequence::Redo, QKeySequence(tr("Ctrl+Y"))});
+  edit->addAction(undo);
+  edit->addAction(redo);
+  edit->addSeparator();
+  for (int i = 0; i < kContactClassCount; ++i) {
+    const auto cls = static_cast<ContactClass>(i);
+    QAction* a = edit->addAction(tr("Label as %1").arg(i + 1), labelPanel_,
+                                 [this, cls] { labelPanel_->applyClass(cls); });
+    a->setShortcut(QKeySequence(Qt::Key_1 + i));
+    a->setObjectName(QStringLiteral("labelAs%1").arg(i + 1));
+  }
+  QAction* del =
+      edit->addAction(tr("&Delete Segment"), labelPanel_, &LabelPanelView::deleteAtCursor);
+  del->setShortcut(QKeySequence::Delete);
+  edit->addAction(tr("Move Segment Start Left"), this,
+                  [this] { labelPanel_->nudgeEdge(false, -1); })
+      ->setShortcut(QKeySequence(tr("Alt+Shift+Left")));
+  edit->addAction(tr("Move Segment Start Right"), this,
+                  [this] { labelPanel_->nudgeEdge(false, 1); })
+      ->setShortcut(QKeySequence(tr("Alt+Shift+Right")));
+  edit->addAction(tr("Move Segment End Left"), this, [this] { labelPanel_->nudgeEdge(true, -1); })
+      ->setShortcut(QKeySequence(tr("Alt+Left")));
+  edit->addAction(tr("Move Segment End Right"), this, [this] { labelPanel_->nudgeEdge(true, 1); })
+      ->setShortcut(QKeySequence(tr("Alt+Right")));
+  edit->addAction(tr("Clear Selection"), session_, &RunSession::clearSelection)
+      ->setShortcut(QKeySequence(Qt::Key_Escape));
+
+  // ---- Go: stepping is exact, one key press is one step whatever the run's length ----
+  QMenu* go = menuBar()->addMenu(tr("&Go"));
+  struct StepKey {
+    QString text;
+    QKeySequence key;
+    std::int64_t delta;
+  };
+  const StepKey stepKeys[] = {
+      {tr("Next Step"), QKeySequence(Qt::Key_Right), 1},
+      {tr("Previous Step"), QKeySequence(Qt::Key_Left), -1},
+      {tr("Forward 10 Steps"), QKeySequence(Qt::SHIFT | Qt::Key_Right), 10},
+      {tr("Back 10 Steps"), QKeySequence(Qt::SHIFT | Qt::Key_Left), -10},
+      {tr("Forward 100 Steps"), QKeySequence(Qt::CTRL | Qt::Key_Right), 100},
+      {tr("Back 100 Steps"), QKeySequence(Qt::CTRL | Qt::Key_Left), -100},
+  };
+  for (const StepKey& k : stepKeys) {
+    QAction* a = go->addAction(k.text, this, [this, d = k.delta] { stepBy(d); });
+    a->setShortcut(k.key);
+    a->setAutoRepeat(true);
+  }
+  go->addAction(tr("Forward One Screen"), this, [this] {
+      stepByScreen(1);
+    })->setShortcut(QKeySequence(Qt::Key_PageDown));
+  go->addAction(tr("Back One Screen"), this, [this] {
+      stepByScreen(-1);
+    })->setShortcut(QKeySequence(Qt::Key_PageUp));
+  go->addAction(tr("First Step"), this, [this] {
+      session_->setCurrentStep(0);
+    })->setShortcut(QKeySequence(Qt::Key_Home));
+  go->addAction(tr("Last Step"), this, [this] {
+      session_->setCurrentStep(session_->stepCount());
+    })->setShortcut(QKeySequence(Qt::Key_End));
+  QAction* play = go->addAction(tr("Play / Pause"), steps_, &StepControlsView::togglePlaying);
+  play->setShortcut(QKeySequence(Qt::Key_Space));
+
+  // ---- View ----
+  viewMenu_ = menuBar()->addMenu(tr("&View"));
+  for (QDockWidget* d : findChildren<QDockWidget*>())
+    viewMenu_->addAction(d->toggleViewAction());
+  viewMenu_->addSeparator();
+  QAction* closeUp = viewMenu_->addAction(tr("Robot Close-up / Whole Scene"), this,
+                                          [this] { route_->setWholeScene(!route_->wholeScene()); });
+  closeUp->setShortcut(QKeySequence(Qt::Key_M));
+  QAction* byLabel = viewMenu_->addAction(tr("Colour Route by Label"));
+  byLabel->setCheckable(true);
+  connect(byLabel, &QAction::toggled, this, [this](bool on) {
+    route_->setColourMode(on ? RouteView::ColourMode::Label : RouteView::ColourMode::Time);
+  });
+  connect(route_, &RouteView::viewSettingsChanged, this, [this, byLabel] {
+    byLabel->setChecked(route_->colourMode() == RouteView::ColourMode::Label);
+  });
+  viewMenu_->addSeparator();
+  auto* channels = new QActionGroup(this);
+  const std::pair<QString, TimelineView::Channel> channelItems[] = {
+      {tr("Heatmap: Normal"), TimelineView::Channel::Normal},
+      {tr("Heatmap: Shear"), TimelineView::Channel::Shear},
+      {tr("Heatmap: Magnitude"), TimelineView::Channel::Magnitude},
+  };
+  for (const auto& [text, channel] : channelItems) {
+    QAction* a =
+        viewMenu_->addAction(text, this, [this, c = channel] { timeline_->setChannel(c); });
+    a->setCheckable(true);
+    a->setChecked(timeline_->channel() == channel);
+    channels->addAction(a);
+  }
+  viewMenu_->addAction(tr("Zoom to Whole Run"), timeline_, &TimelineView::showWholeRun)
+      ->setShortcut(QKeySequence(tr("Ctrl+0")));
+
   QMenu* help = menuBar()->addMenu(tr("&Help"));
   help->addAction(tr("&About Tactile Workbench"), this, &MainWindow::showAbout);
+}
+
+Status MainWindow::openDatabase(const QString& path, bool create) {
+  storage::OpenOptions options;
+  options.mode = create ? storage::OpenMode::Create : storage::OpenMode::ReadWrite;
+  auto opened = workspace::Workspace::open(path.toStdString(), options);
+  if (!opened) return opened.error();
+  saveSettings();  // the old database's last run and step
+  session_->setWorkspace(nullptr);
+  labels_->setWorkspace(nullptr);
+  workspace_ = std::move(opened.value());
+  dbPath_ = QFileInfo(path).absoluteFilePath();
+  session_->setWorkspace(workspace_.get());
+  labels_->setWorkspace(workspace_.get());
+  rememberDatabase(dbPath_);
+
+  QSettings settings;
+  settings.beginGroup(QStringLiteral("databases/") + QString(dbPath_).replace('/', '|'));
+  const QString lastSet = settings.value(keys::kLastLabelSet).toString();
+  const QString lastRun = settings.value(keys::kLastRun).toString();
+  const qint64 lastStep = settings.value(QStringLiteral("lastStep"), 0).toLongLong();
+  settings.endGroup();
+
+  if (!lastSet.isEmpty() && labels_->openSet(lastSet.toStdString()).ok()) {
+  } else if (auto sets = workspace_->database().listLabelSets(); sets && !sets->empty()) {
+    (void)labels_->openSet(sets->front().name);
+  }
+  Status listed = runModel_->reload(workspace_.get(), labels_->setId());
+  if (!listed) showError(QString::fromStdString(listed.errorText()));
+  if (!lastRun.isEmpty() && openRun(lastRun).ok()) {
+    session_->setCurrentStep(lastStep);
+  } else if (runModel_->rowCount() > 0) {
+    (void)openRun(QString::fromStdString(runModel_->run(0).name));
+  }
+  updateTitle();
+  showMessage(tr("Opened %1").arg(dbPath_));
+  return Status::success();
+}
+
+Status MainWindow::openRun(const QString& name) {
+  Status s = session_->open(name.toStdString());
+  if (!s) return s;
+  labels_->setRun(session_->info().id, session_->info().name, session_->stepCount());
+  runList_->selectRun(session_->info().name);
+  timeline_->showWholeRun();
+  lastError_.clear();
+  return Status::success();
+}
+
+void MainWindow::importRuns(const QStringList& files) {
+  if (!workspace_) return showError(tr("Open or create a database before importing runs."));
+  if (files.isEmpty()) return;
+  auto* bridge = new ProgressBridge(this);
+  auto* dialog = new QProgressDialog(
+      tr("Importing %n run file(s)...", nullptr, static_cast<int>(files.size())), tr("Cancel"), 0,
+      static_cast<int>(files.size()), this);
+  dialog->setObjectName(QStringLiteral("importProgress"));
+  dialog->setWindowModality(Qt::WindowModal);
+  dialog->setMinimumDuration(0);
+  dialog->setValue(0);
+  connect(bridge, &ProgressBridge::progressed, dialog,
+          [dialog](qint64 done, qint64) { dialog->setValue(static_cast<int>(done)); });
+  connect(dialog, &QProgressDialog::canceled, bridge, &ProgressBridge::cancel);
+  auto* watcher = new QFutureWatcher<ImportSummary>(this);
+  connect(watcher, &QFutureWatcher<ImportSummary>::finished, this, [this, watcher, bridge, dialog] {
+    const ImportSummary result = watcher->result();
+    dialog->reset();
+    dialog->deleteLater();
+    watcher->deleteLater();
+    bridge->deleteLater();
+    if (!result.error.isEmpty()) return showError(result.error);
+    Status listed = runModel_->reload(workspace_.get(), labels_->setId());
+    if (!listed) showError(QString::fromStdString(listed.errorText()));
+    QString text = tr("Imported %n run(s)", nullptr, result.imported());
+    if (bridge->cancelled()) text += tr("; cancelled");
+    const QStringList problems = result.problems();
+    if (!problems.isEmpty()) {
+      showError(text +
+                tr("; %n file(s) not imported: ", nullptr, static_cast<int>(problems.size())) +
+                problems.join(QStringLiteral("; ")));
+    } else {
+      showMessage(text);
+    }
+  });
+  watcher->setFuture(startImport(dbPath_, files, bridge));
+}
+
+void MainWindow::stepBy(std::int64_t delta) {
+  session_->setCurrentStep(session_->currentStep() + delta);
+}
+
+void MainWindow::stepByScreen(int direction) {
+  const StepRange visible = timeline_->visibleRange();
+  const std::int64_t page = std::max<std::int64_t>(1, visible.size());
+  timeline_->setVisibleRange({visible.first + direction * page, visible.last + direction * page});
+  session_->setCurrentStep(session_->currentStep() + direction * page);
+}
+
+void MainWindow::chooseDatabase(bool create) {
+  const QString path =
+      create ? QFileDialog::getSaveFileName(this, tr("New database"), QString(),
+                                            tr("Tactile databases (*.db);;All files (*)"))
+             : QFileDialog::getOpenFileName(this, tr("Open database"), QString(),
+                                            tr("Tactile databases (*.db *.sqlite);;All files (*)"));
+  if (path.isEmpty()) return;
+  Status s = openDatabase(path, create);
+  if (!s) showError(QString::fromStdString(s.errorText()));
+}
+
+void MainWindow::chooseRunFiles() {
+  const QStringList files = QFileDialog::getOpenFileNames(this, tr("Import runs"), QString(),
+                                                          tr("Run files (*.csv);;All files (*)"));
+  importRuns(files);
+}
+
+void MainWindow::dragEnterEvent(QDragEnterEvent* event) {
+  if (event->mimeData()->hasUrls()) event->acceptProposedAction();
+}
+
+void MainWindow::dropEvent(QDropEvent* event) {
+  QStringList runs;
+  for (const QUrl& url : event->mimeData()->urls()) {
+    if (!url.isLocalFile()) continue;
+    const QString path = url.toLocalFile();
+    if (isDatabaseFile(path)) {
+      Status s = openDatabase(path);
+      if (!s) showError(QString::fromStdString(s.errorText()));
+      event->acceptProposedAction();
+      return;
+    }
+    runs << path;
+  }
+  if (!runs.isEmpty()) {
+    event->acceptProposedAction();
+    importRuns(runs);
+  }
+}
+
+void MainWindow::showError(const QString& message) {
+  lastError_ = message;
+  statusBar()->showMessage(tr("Error: %1").arg(message), 15000);
+}
+
+void MainWindow::showMessage(const QString& message) {
+  statusBar()->showMessage(message, 8000);
+}
+
+void MainWindow::updateTitle() {
+  QString title = tr("Tactile Workbench");
+  if (!dbPath_.isEmpty()) title = QFileInfo(dbPath_).fileName() + QStringLiteral(" - ") + title;
+  if (session_->isOpen())
+    title = QString::fromStdString(session_->info().name) + QStringLiteral(" - ") + title;
+  setWindowTitle(title);
+}
+
+void MainWindow::updateStatus() {
+  if (session_->isOpen()) {
+    QString text = tr("Step %1 of %2").arg(session_->currentStep()).arg(session_->stepCount() - 1);
+    if (const auto sel = session_->selection())
+      text += tr("  |  selected %1-%2").arg(sel->first).arg(sel->last);
+    stepLabel_->setText(text);
+  } else {
+    stepLabel_->setText(workspace_ ? tr("No run open") : tr("No database open"));
+  }
+  setLabel_->setText(labels_->hasSet()
+                         ? tr("Label set: %1").arg(QString::fromStdString(labels_->setName()))
+                         : tr("No label set"));
+}
+
+void MainWindow::rememberDatabase(const QString& path) {
+  QSettings settings;
+  QStringList recent = settings.value(keys::kRecentDatabases).toStringList();
+  recent.removeAll(path);
+  recent.prepend(path);
+  while (recent.size() > keys::kMaxRecentDatabases)
+    recent.removeLast();
+  settings.setValue(keys::kRecentDatabases, recent);
+  settings.setValue(keys::kLastDatabase, path);
+  rebuildRecentMenu();
+}
+
+void MainWindow::rebuildRecentMenu() {
+  recentMenu_->clear();
+  const QStringList recent = QSettings().value(keys::kRecentDatabases).toStringList();
+  for (const QString& path : recent) {
+    recentMenu_->addAction(path, this, [this, path] {
+      Status s = openDatabase(path);
+      if (!s) showError(QString::fromStdString(s.errorText()));
+    });
+  }
+  recentMenu_->setEnabled(!recent.isEmpty());
 }
 
 void MainWindow::showAbout() {
@@ -54,14 +446,33 @@ void MainWindow::showAbout() {
 
 void MainWindow::restoreSettings() {
   QSettings settings;
-  restoreGeometry(settings.value(QStringLiteral("mainWindow/geometry")).toByteArray());
-  restoreState(settings.value(QStringLiteral("mainWindow/state")).toByteArray());
+  restoreGeometry(settings.value(keys::kGeometry).toByteArray());
+  restoreState(settings.value(keys::kWindowState).toByteArray());
+  timeline_->restoreSettings(settings);
+  route_->restoreSettings(settings);
+  labelPanel_->restoreSettings(settings);
+  steps_->setSpeed(settings.value(keys::kPlaySpeed, steps_->speed()).toInt());
+  runList_->setFilterText(settings.value(keys::kRunFilter).toString());
 }
 
 void MainWindow::saveSettings() const {
   QSettings settings;
-  settings.setValue(QStringLiteral("mainWindow/geometry"), saveGeometry());
-  settings.setValue(QStringLiteral("mainWindow/state"), saveState());
+  settings.setValue(keys::kGeometry, saveGeometry());
+  settings.setValue(keys::kWindowState, saveState());
+  timeline_->saveSettings(settings);
+  route_->saveSettings(settings);
+  labelPanel_->saveSettings(settings);
+  settings.setValue(keys::kPlaySpeed, steps_->speed());
+  settings.setValue(keys::kRunFilter, runList_->filterText());
+  if (!dbPath_.isEmpty()) {
+    settings.beginGroup(QStringLiteral("databases/") + QString(dbPath_).replace('/', '|'));
+    settings.setValue(keys::kLastLabelSet, QString::fromStdString(labels_->setName()));
+    if (session_->isOpen()) {
+      settings.setValue(keys::kLastRun, QString::fromStdString(session_->info().name));
+      settings.setValue(QStringLiteral("lastStep"), static_cast<qint64>(session_->currentStep()));
+    }
+    settings.endGroup();
+  }
 }
 
 void MainWindow::closeEvent(QCloseEvent* event) {

@@ -1,28 +1,100 @@
-// The workbench's main window: menus, status bar and the place the run views dock into.
+// The workbench's main window: the runs, route and labels docks around the timelines, the step
+// controls, menus with recent databases, drag and drop of a database or run files, keyboard
+// stepping and labelling, and every view setting kept in QSettings.
 #pragma once
 
 #include <QMainWindow>
 
+#include <cstdint>
+#include <memory>
+#include <string>
+
+#include "base/error.h"
+
+class QAction;
+class QDockWidget;
 class QLabel;
+class QMenu;
+
+namespace tactile::workspace {
+class Workspace;
+}
 
 namespace tactile::gui {
+
+class LabelModel;
+class LabelPanelView;
+class RouteView;
+class RunListModel;
+class RunListView;
+class RunSession;
+class StepControlsView;
+class TimelineView;
 
 class MainWindow : public QMainWindow {
   Q_OBJECT
 
  public:
   explicit MainWindow(QWidget* parent = nullptr);
+  ~MainWindow() override;
+
+  // Opens a database (an existing one, or a new one when `create`), then the last run and label
+  // set used with it when they still exist.
+  Status openDatabase(const QString& path, bool create = false);
+  Status openRun(const QString& name);
+  // Imports run files into the open database with a progress dialog (Cancel keeps finished runs).
+  void importRuns(const QStringList& files);
+
+  RunSession* session() const { return session_; }
+  LabelModel* labels() const { return labels_; }
+  TimelineView* timeline() const { return timeline_; }
+  RouteView* route() const { return route_; }
+  LabelPanelView* labelPanel() const { return labelPanel_; }
+  RunListView* runList() const { return runList_; }
+  StepControlsView* stepControls() const { return steps_; }
+  QString databasePath() const { return dbPath_; }
+  // The last error shown in the status bar (empty when none since the last success).
+  QString lastError() const { return lastError_; }
+
+  // Saves window and view settings now (also done on close).
+  void saveSettings() const;
 
  protected:
   void closeEvent(QCloseEvent* event) override;
+  void dragEnterEvent(QDragEnterEvent* event) override;
+  void dropEvent(QDropEvent* event) override;
 
  private:
-  void createMenus();
-  void showAbout();
+  void createViews();
+  void createActions();
   void restoreSettings();
-  void saveSettings() const;
+  void showError(const QString& message);
+  void showMessage(const QString& message);
+  void updateTitle();
+  void updateStatus();
+  void rememberDatabase(const QString& path);
+  void rebuildRecentMenu();
+  void stepBy(std::int64_t delta);
+  void stepByScreen(int direction);
+  void chooseDatabase(bool create);
+  void chooseRunFiles();
+  void showAbout();
 
-  QLabel* welcome_ = nullptr;
+  std::unique_ptr<workspace::Workspace> workspace_;
+  QString dbPath_;
+  QString lastError_;
+  RunSession* session_;
+  LabelModel* labels_;
+  RunListModel* runModel_;
+  RunListView* runList_ = nullptr;
+  RouteView* route_ = nullptr;
+  TimelineView* timeline_ = nullptr;
+  LabelPanelView* labelPanel_ = nullptr;
+  StepControlsView* steps_ = nullptr;
+  QMenu* recentMenu_ = nullptr;
+  QMenu* viewMenu_ = nullptr;
+  QLabel* stepLabel_ = nullptr;
+  QLabel* setLabel_ = nullptr;
 };
 
 }  // namespace tactile::gui

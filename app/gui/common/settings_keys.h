@@ -1,0 +1,19 @@
+// QSettings keys of the workbench in one place, so a renamed key cannot silently drop a setting.
+#pragma once
+
+#include <QLatin1StringView>
+
+namespace tactile::gui::settings_keys {
+
+inline constexpr QLatin1StringView kGeometry{"mainWindow/geometry"};
+inline constexpr QLatin1StringView kWindowState{"mainWindow/state"};
+inline constexpr QLatin1StringView kRecentDatabases{"mainWindow/recentDatabases"};
+inline constexpr QLatin1StringView kLastDatabase{"mainWindow/lastDatabase"};
+inline constexpr QLatin1StringView kLastRun{"mainWindow/lastRun"};
+inline constexpr QLatin1StringView kLastLabelSet{"labels/lastSet"};
+inline constexpr QLatin1StringView kLabelGroupsMode{"labels/groupsMode"};
+inline constexpr QLatin1StringView kPlaySpeed{"steps/playSpeed"};
+inline constexpr QLatin1StringView kRunFilter{"runs/filter"};
+inline constexpr int kMaxRecentDatabases = 8;
+
+}  // namespace tactile::gui::settings_keys

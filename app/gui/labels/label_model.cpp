@@ -1,0 +1,216 @@
+#include "app/gui/labels/label_model.h"
+
+#include <QUndoStack>
+
+#include <algorithm>
+#include <memory>
+#include <optional>
+
+#include "app/gui/common/plot_style.h"
+#include "app/gui/labels/label_commands.h"
+#include "workspace/workspace.h"
+
+namespace tactile::gui {
+
+LabelModel::LabelModel(QObject* parent) : QObject(parent), undo_(new QUndoStack(this)) {}
+LabelModel::~LabelModel() = default;
+
+void LabelModel::setWorkspace(workspace::Workspace* workspace) {
+  undo_->clear();
+  workspace_ = workspace;
+  setId_ = 0;
+  setName_.clear();
+  runId_ = 0;
+  runName_.clear();
+  stepCount_ = 0;
+  for (auto& group : segments_)
+    group.clear();
+  emit labelSetChanged();
+  emit labelsChanged();
+}
+
+Status LabelModel::setCurrentSet(std::int64_t id, const std::string& name) {
+  setId_ = id;
+  setName_ = name;
+  emit labelSetChanged();
+  return reload();
+}
+
+Status LabelModel::openSet(const std::string& name) {
+  if (workspace_ == nullptr) return Error("no database is open");
+  auto set = workspace_->database().findLabelSet(name);
+  if (!set) return set.error();
+  return setCurrentSet(set->id, set->name);
+}
+
+Status LabelModel::createSet(const std::string& name) {
+  if (workspace_ == nullptr) return Error("no database is open");
+  auto id = workspace_->database().createLabelSet(name);
+  if (!id) return id.error();
+  return setCurrentSet(id.value(), name);
+}
+
+Status LabelModel::saveSetAs(const std::string& name) {
+  if (workspace_ == nullptr || setId_ == 0) return Error("no label set is open");
+  auto id = workspace_->database().copyLabelSet(setId_, name);
+  if (!id) return id.error();
+  return setCurrentSet(id.value(), name);
+}
+
+Result<std::int64_t> LabelModel::importFile(const std::string& path) {
+  if (workspace_ == nullptr || setId_ == 0) return Error("no label set is open");
+  auto read = workspace_->database().importLabels(setName_, path);
+  if (!read) return read.error();
+  // Imported segments bypass the undo stack; its records of older edits would no longer restore
+  // what is stored, so the history ends here.
+  undo_->clear();
+  if (Status s = reload(); !s) return s.error();
+  return read;
+}
+
+Status LabelModel::exportFile(const std::string& path) {
+  if (workspace_ == nullptr || setId_ == 0) return Error("no label set is open");
+  return workspace_->database().exportLabels(setName_, path);
+}
+
+void LabelModel::setRun(std::int64_t runId, const std::string& runName, std::int64_t stepCount) {
+  runId_ = runId;
+  runName_ = runName;
+  stepCount_ = stepCount;
+  if (Status s = reload(); !s) emit errorOccurred(QString::fromStdString(s.errorText()));
+}
+
+const std::vector<storage::LabelSegment>& LabelModel::segments(SensorGroup group) const {
+  return segments_[static_cast<std::size_t>(groupIndex(group))];
+}
+
+const storage::LabelSegment* LabelModel::segmentAt(SensorGroup group, std::int64_t step) const {
+  const auto& list = segments(group);
+  auto it = std::upper_bound(
+      list.begin(), list.end(), step,
+      [](std::int64_t s, const storage::LabelSegment& seg) { return s < seg.firstStep; });
+  if (it == list.begin()) return nullptr;
+  --it;
+  return step <= it->lastStep ? &*it : nullptr;
+}
+
+std::optional<ContactClass> LabelModel::classAt(SensorGroup group, std::int64_t step) const {
+  const storage::LabelSegment* s = segmentAt(group, step);
+  if (s == nullptr) return std::nullopt;
+  return s->cls;
+}
+
+Status LabelModel::label(const std::vector<SensorGroup>& groups, std::int64_t first,
+                         std::int64_t last, ContactClass cls) {
+  if (workspace_ == nullptr || setId_ == 0) return Error("no label set is open");
+  if (runId_ == 0) return Error("no run is open");
+  if (groups.empty()) return Error("no sensor group is chosen");
+  if (first > last) std::swap(first, last);
+  first = std::max<std::int64_t>(0, first);
+  last = std::min(stepCount_ - 1, last);
+  if (first > last) return Error("the range lies outside the run");
+  const QString text = tr("Label steps %1-%2 as %3").arg(first).arg(last).arg(className(cls));
+  auto failed = std::make_shared<std::optional<Error>>();
+  undo_->beginMacro(text);
+  for (SensorGroup group : groups) {
+    storage::LabelSegment segment;
+    segment.runId = runId_;
+    segment.run = runName_;
+    segment.group = group;
+    segment.firstStep = first;
+    segment.lastStep = last;
+    segment.cls = cls;
+    const std::int64_t set = setId_;
+    workspace::Workspace* ws = workspace_;
+    auto* command = new LabelEditCommand(this, text, [ws, set, segment, failed] {
+      auto edit = ws->addSegment(set, segment);
+      if (!edit && !*failed) *failed = edit.error();
+      return edit;
+    });
+    undo_->push(command);  // runs the edit; a failed one is dropped by the stack
+  }
+  undo_->endMacro();
+  Status reloaded = reload();
+  if (*failed) return **failed;
+  return reloaded;
+}
+
+Status LabelModel::moveSegment(std::int64_t segmentId, std::int64_t first, std::int64_t last) {
+  if (workspace_ == nullptr || setId_ == 0) return Error("no label set is open");
+  const storage::LabelSegment* found = nullptr;
+  for (const auto& group : segments_) {
+    for (const auto& s : group)
+      if (s.id == segmentId) found = &s;
+  }
+  if (found == nullptr) return Error("no such segment in the open run");
+  if (first > last) std::swap(first, last);
+  first = std::max<std::int64_t>(0, first);
+  last = std::min(stepCount_ - 1, last);
+  storage::LabelSegment moved = *found;
+  moved.firstStep = first;
+  moved.lastStep = last;
+  const std::int64_t set = setId_;
+  workspace::Workspace* ws = workspace_;
+  auto failed = std::make_shared<std::optional<Error>>();
+  auto* command = new LabelEditCommand(
+      this, tr("Move %1 segment to steps %2-%3").arg(className(moved.cls)).arg(first).arg(last),
+      [ws, set, segmentId, moved, failed] {
+        auto edit = ws->changeSegment(set, segmentId, moved);
+        if (!edit) *failed = edit.error();
+        return edit;
+      });
+  undo_->push(command);
+  Status reloaded = reload();
+  if (*failed) return **failed;
+  return reloaded;
+}
+
+Status LabelModel::removeSegment(std::int64_t segmentId) {
+  if (workspace_ == nullptr || setId_ == 0) return Error("no label set is open");
+  const std::int64_t set = setId_;
+  workspace::Workspace* ws = workspace_;
+  auto failed = std::make_shared<std::optional<Error>>();
+  auto* command = new LabelEditCommand(this, tr("Delete segment"), [ws, set, segmentId, failed] {
+    auto edit = ws->removeSegment(set, segmentId);
+    if (!edit) *failed = edit.error();
+    return edit;
+  });
+  undo_->push(command);
+  Status reloaded = reload();
+  if (*failed) return **failed;
+  return reloaded;
+}
+
+Status LabelModel::redoEdit(const workspace::LabelEdit& edit) {
+  if (workspace_ == nullptr) return Error("no database is open");
+  Status s = workspace_->redo(edit);
+  if (!s) emit errorOccurred(QString::fromStdString(s.errorText()));
+  if (Status r = reload(); !r) return r;
+  return s;
+}
+
+Status LabelModel::undoEdit(const workspace::LabelEdit& edit) {
+  if (workspace_ == nullptr) return Error("no database is open");
+  Status s = workspace_->undo(edit);
+  if (!s) emit errorOccurred(QString::fromStdString(s.errorText()));
+  if (Status r = reload(); !r) return r;
+  return s;
+}
+
+Status LabelModel::reload() {
+  for (auto& group : segments_)
+    group.clear();
+  if (workspace_ != nullptr && setId_ != 0 && runId_ != 0) {
+    auto all = workspace_->database().segments(setId_, runId_);
+    if (!all) {
+      emit labelsChanged();
+      return all.error();
+    }
+    for (storage::LabelSegment& s : all.value())
+      segments_[static_cast<std::size_t>(groupIndex(s.group))].push_back(std::move(s));
+  }
+  emit labelsChanged();
+  return Status::success();
+}
+
+}  // namespace tactile::gui

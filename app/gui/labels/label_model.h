@@ -1,0 +1,98 @@
+// The labels of the open run in the current label set, and every edit of them. Each edit is one
+// undoable command on the model's QUndoStack and is written to the database at once through the
+// workspace; undo writes back exactly the segments the edit trimmed, split or removed.
+#pragma once
+
+#include <QObject>
+#include <QString>
+
+#include <array>
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "base/error.h"
+#include "run/contact_class.h"
+#include "run/sensor_layout.h"
+#include "storage/run_database.h"
+
+class QUndoStack;
+
+namespace tactile::workspace {
+class Workspace;
+struct LabelEdit;
+}  // namespace tactile::workspace
+
+namespace tactile::gui {
+
+class LabelModel : public QObject {
+  Q_OBJECT
+
+ public:
+  explicit LabelModel(QObject* parent = nullptr);
+  ~LabelModel() override;
+
+  // Not owned. Changing it clears the undo history and the current set.
+  void setWorkspace(workspace::Workspace* workspace);
+  workspace::Workspace* workspace() const { return workspace_; }
+
+  // ---- the current label set ----
+  bool hasSet() const { return setId_ != 0; }
+  std::int64_t setId() const { return setId_; }
+  const std::string& setName() const { return setName_; }
+  // Opens an existing set by name.
+  Status openSet(const std::string& name);
+  // Creates an empty set and opens it.
+  Status createSet(const std::string& name);
+  // Copies the current set under a new name and opens the copy ("Save As").
+  Status saveSetAs(const std::string& name);
+  // Imports a label file (CSV or JSON) into the current set, as one database transaction.
+  Result<std::int64_t> importFile(const std::string& path);
+  // Exports the current set to CSV or JSON (by extension).
+  Status exportFile(const std::string& path);
+
+  // ---- the run whose segments are held ----
+  void setRun(std::int64_t runId, const std::string& runName, std::int64_t stepCount);
+  std::int64_t runId() const { return runId_; }
+  // Segments of one group of the current run, by first step, not overlapping.
+  const std::vector<storage::LabelSegment>& segments(SensorGroup group) const;
+  // The segment covering a step, if any.
+  const storage::LabelSegment* segmentAt(SensorGroup group, std::int64_t step) const;
+  std::optional<ContactClass> classAt(SensorGroup group, std::int64_t step) const;
+
+  // ---- edits (each pushed on the undo stack; several groups make one undo step) ----
+  // Labels [first, last] with `cls` in every group given.
+  Status label(const std::vector<SensorGroup>& groups, std::int64_t first, std::int64_t last,
+               ContactClass cls);
+  // Gives a segment a new range (e.g. an edge dragged or nudged).
+  Status moveSegment(std::int64_t segmentId, std::int64_t first, std::int64_t last);
+  Status removeSegment(std::int64_t segmentId);
+
+  QUndoStack* undoStack() const { return undo_; }
+
+  // Used by the undo commands: applies a stored edit again or takes it back, then reloads.
+  Status redoEdit(const workspace::LabelEdit& edit);
+  Status undoEdit(const workspace::LabelEdit& edit);
+  // Re-reads the current run's segments from the database and emits labelsChanged.
+  Status reload();
+
+ signals:
+  void labelSetChanged();
+  void labelsChanged();
+  void errorOccurred(const QString& message);
+
+ private:
+  Status setCurrentSet(std::int64_t id, const std::string& name);
+
+  workspace::Workspace* workspace_ = nullptr;
+  std::int64_t setId_ = 0;
+  std::string setName_;
+  std::int64_t runId_ = 0;
+  std::string runName_;
+  std::int64_t stepCount_ = 0;
+  std::array<std::vector<storage::LabelSegment>, kGroupCount> segments_;
+  QUndoStack* undo_ = nullptr;
+};
+
+}  // namespace tactile::gui

@@ -1,0 +1,70 @@
+#include "app/gui/runs/run_list_view.h"
+
+#include <QHeaderView>
+#include <QItemSelectionModel>
+#include <QLineEdit>
+#include <QSortFilterProxyModel>
+#include <QTableView>
+#include <QVBoxLayout>
+
+#include "app/gui/runs/run_list_model.h"
+
+namespace tactile::gui {
+
+RunListView::RunListView(RunListModel* model, QWidget* parent) : QWidget(parent), model_(model) {
+  setObjectName(QStringLiteral("runList"));
+  auto* layout = new QVBoxLayout(this);
+  layout->setContentsMargins(2, 2, 2, 2);
+  filter_ = new QLineEdit(this);
+  filter_->setObjectName(QStringLiteral("runFilter"));
+  filter_->setPlaceholderText(tr("Filter runs by name, scene, subject or outcome"));
+  filter_->setClearButtonEnabled(true);
+  proxy_ = new QSortFilterProxyModel(this);
+  proxy_->setSourceModel(model_);
+  proxy_->setFilterCaseSensitivity(Qt::CaseInsensitive);
+  proxy_->setFilterKeyColumn(-1);
+  proxy_->setSortRole(Qt::UserRole);
+  table_ = new QTableView(this);
+  table_->setObjectName(QStringLiteral("runTable"));
+  table_->setModel(proxy_);
+  table_->setSortingEnabled(true);
+  table_->sortByColumn(0, Qt::AscendingOrder);
+  table_->setSelectionBehavior(QAbstractItemView::SelectRows);
+  table_->setSelectionMode(QAbstractItemView::SingleSelection);
+  table_->setEditTriggers(QAbstractItemView::NoEditTriggers);
+  table_->verticalHeader()->hide();
+  table_->verticalHeader()->setDefaultSectionSize(fontMetrics().height() + 6);
+  table_->horizontalHeader()->setStretchLastSection(true);
+  table_->setAlternatingRowColors(true);
+  layout->addWidget(filter_);
+  layout->addWidget(table_);
+
+  connect(filter_, &QLineEdit::textChanged, proxy_, &QSortFilterProxyModel::setFilterFixedString);
+  auto choose = [this](const QModelIndex& index) {
+    if (!index.isValid()) return;
+    const QModelIndex source = proxy_->mapToSource(index);
+    emit runChosen(QString::fromStdString(model_->run(source.row()).name));
+  };
+  connect(table_, &QTableView::activated, this, choose);
+  connect(table_, &QTableView::clicked, this, choose);
+}
+
+QString RunListView::filterText() const {
+  return filter_->text();
+}
+
+void RunListView::setFilterText(const QString& text) {
+  filter_->setText(text);
+}
+
+void RunListView::selectRun(const std::string& name) {
+  const int row = model_->rowOf(name);
+  if (row < 0) return;
+  const QModelIndex index = proxy_->mapFromSource(model_->index(row, 0));
+  if (!index.isValid()) return;
+  table_->selectionModel()->select(index,
+                                   QItemSelectionModel::ClearAndSelect | QItemSelectionModel::Rows);
+  table_->scrollTo(index);
+}
+
+}  // namespace tactile::gui

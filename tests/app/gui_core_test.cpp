@@ -1,0 +1,195 @@
+// The workbench's models and undo commands without any widget: the run session's cursor and
+// selection, label edits written to the database at once, and undo/redo restoring exactly what
+// an edit replaced.
+#include <QSignalSpy>
+#include <QUndoStack>
+#include <QtTest>
+
+#include "app/gui/labels/label_model.h"
+#include "app/gui/runs/run_list_model.h"
+#include "app/gui/runs/run_session.h"
+#include "tests/app/gui_fixture.h"
+
+using tactile::ContactClass;
+using tactile::SensorGroup;
+using tactile::gui::LabelModel;
+using tactile::gui::RunSession;
+using tactile::gui::testing::GuiFixture;
+
+namespace {
+
+// The set's stored segments of one group, as (first, last, class) triples.
+std::vector<std::tuple<std::int64_t, std::int64_t, ContactClass>> stored(GuiFixture& fx,
+                                                                         std::int64_t setId,
+                                                                         SensorGroup group) {
+  std::vector<std::tuple<std::int64_t, std::int64_t, ContactClass>> out;
+  auto all = fx.workspace->database().segments(setId);
+  if (!all) return out;
+  for (const auto& s : all.value())
+    if (s.group == group) out.emplace_back(s.firstStep, s.lastStep, s.cls);
+  return out;
+}
+
+}  // namespace
+
+class GuiCoreTest : public QObject {
+  Q_OBJECT
+
+ private slots:
+  void initTestCase() { QLocale::setDefault(QLocale::c()); }
+
+  void sessionOpensTrackSceneAndClampsTheCursor() {
+    GuiFixture fx(300);
+    RunSession session;
+    session.setWorkspace(fx.workspace.get());
+    QSignalSpy moved(&session, &RunSession::currentStepChanged);
+    QVERIFY(session.open(fx.runName).ok());
+    QCOMPARE(session.stepCount(), 300);
+    QVERIFY(session.scene().has_value());
+    QVERIFY(session.track().hasTruth());
+    auto run = fx.workspace->loadRun(fx.runName);
+    QVERIFY(run.ok());
+    QCOMPARE(session.track().x, run->x);
+    QCOMPARE(session.track().theta, run->theta);
+    QCOMPARE(session.track().truth, run->truth);
+    session.setCurrentStep(57);
+    QCOMPARE(session.currentStep(), 57);
+    for (int v = 0; v < tactile::kValuesPerStep; ++v)
+      QCOMPARE(session.currentSensors()[static_cast<std::size_t>(v)], run->stepSensors(57)[v]);
+    session.setCurrentStep(10'000);
+    QCOMPARE(session.currentStep(), 299);
+    session.setCurrentStep(-5);
+    QCOMPARE(session.currentStep(), 0);
+    const int before = static_cast<int>(moved.count());
+    session.setCurrentStep(0);  // no move, no signal
+    QCOMPARE(moved.count(), before);
+    session.setSelection(120, 80);
+    QCOMPARE(session.selection()->first, 80);
+    QCOMPARE(session.selection()->last, 120);
+    session.setSelection(-3, 1000);
+    QCOMPARE(session.selection()->first, 0);
+    QCOMPARE(session.selection()->last, 299);
+    QVERIFY(!session.open("no_such_run").ok());
+    QCOMPARE(session.info().name, fx.runName);  // the open run stays
+  }
+
+  void labelEditIsStoredAtOnceAndUndoRestoresExactly() {
+    GuiFixture fx(400);
+    RunSession session;
+    session.setWorkspace(fx.workspace.get());
+    QVERIFY(session.open(fx.runName).ok());
+    LabelModel labels;
+    labels.setWorkspace(fx.workspace.get());
+    QVERIFY(labels.createSet("mine").ok());
+    labels.setRun(session.info().id, session.info().name, session.stepCount());
+    const std::int64_t set = labels.setId();
+
+    QVERIFY(labels.label({SensorGroup::Left}, 100, 199, ContactClass::Wall).ok());
+    using Seg = std::tuple<std::int64_t, std::int64_t, ContactClass>;
+    const std::vector<Seg> wall{{100, 199, ContactClass::Wall}};
+    QCOMPARE(stored(fx, set, SensorGroup::Left), wall);
+    // A second edit splits the first; its undo must restore the split segment exactly.
+    QVERIFY(labels.label({SensorGroup::Left}, 140, 149, ContactClass::Corner).ok());
+    const std::vector<Seg> split{{100, 139, ContactClass::Wall},
+                                 {140, 149, ContactClass::Corner},
+                                 {150, 199, ContactClass::Wall}};
+    QCOMPARE(stored(fx, set, SensorGroup::Left), split);
+    QCOMPARE(labels.segments(SensorGroup::Left).size(), std::size_t{3});
+    QCOMPARE(*labels.classAt(SensorGroup::Left, 145), ContactClass::Corner);
+    QVERIFY(!labels.classAt(SensorGroup::Left, 99).has_value());
+
+    labels.undoStack()->undo();
+    QCOMPARE(stored(fx, set, SensorGroup::Left), wall);
+    QCOMPARE(labels.segments(SensorGroup::Left).size(), std::size_t{1});
+    labels.undoStack()->undo();
+    QVERIFY(stored(fx, set, SensorGroup::Left).empty());
+    labels.undoStack()->redo();
+    labels.undoStack()->redo();
+    QCOMPARE(stored(fx, set, SensorGroup::Left), split);
+  }
+
+  void severalGroupsAreOneUndoStep() {
+    GuiFixture fx(300);
+    RunSession session;
+    session.setWorkspace(fx.workspace.get());
+    QVERIFY(session.open(fx.runName).ok());
+    LabelModel labels;
+    labels.setWorkspace(fx.workspace.get());
+    QVERIFY(labels.createSet("two").ok());
+    labels.setRun(session.info().id, session.info().name, session.stepCount());
+    QVERIFY(labels.label({SensorGroup::Left, SensorGroup::Right}, 10, 20, ContactClass::Wall).ok());
+    QCOMPARE(stored(fx, labels.setId(), SensorGroup::Left).size(), std::size_t{1});
+    QCOMPARE(stored(fx, labels.setId(), SensorGroup::Right).size(), std::size_t{1});
+    QCOMPARE(labels.undoStack()->count(), 1);
+    labels.undoStack()->undo();
+    QVERIFY(stored(fx, labels.setId(), SensorGroup::Left).empty());
+    QVERIFY(stored(fx, labels.setId(), SensorGroup::Right).empty());
+  }
+
+  void moveAndRemoveAreUndoable() {
+    GuiFixture fx(300);
+    RunSession session;
+    session.setWorkspace(fx.workspace.get());
+    QVERIFY(session.open(fx.runName).ok());
+    LabelModel labels;
+    labels.setWorkspace(fx.workspace.get());
+    QVERIFY(labels.createSet("m").ok());
+    labels.setRun(session.info().id, session.info().name, session.stepCount());
+    QVERIFY(labels.label({SensorGroup::Front}, 50, 60, ContactClass::Corner).ok());
+    const std::int64_t id = labels.segments(SensorGroup::Front).front().id;
+    QVERIFY(labels.moveSegment(id, 50, 90).ok());
+    QCOMPARE(labels.segments(SensorGroup::Front).front().lastStep, 90);
+    QVERIFY(labels.removeSegment(labels.segments(SensorGroup::Front).front().id).ok());
+    QVERIFY(labels.segments(SensorGroup::Front).empty());
+    labels.undoStack()->undo();
+    QCOMPARE(labels.segments(SensorGroup::Front).front().lastStep, 90);
+    labels.undoStack()->undo();
+    QCOMPARE(labels.segments(SensorGroup::Front).front().lastStep, 60);
+    // Editing without a run or beyond it is an error that changes nothing.
+    QVERIFY(!labels.label({}, 1, 2, ContactClass::Wall).ok());
+    QVERIFY(!labels.label({SensorGroup::Front}, 500, 600, ContactClass::Wall).ok());
+    QCOMPARE(labels.segments(SensorGroup::Front).size(), std::size_t{1});
+  }
+
+  void failedEditLeavesNoUndoStep() {
+    GuiFixture fx(100);
+    RunSession session;
+    session.setWorkspace(fx.workspace.get());
+    QVERIFY(session.open(fx.runName).ok());
+    LabelModel labels;
+    labels.setWorkspace(fx.workspace.get());
+    QVERIFY(labels.createSet("gone").ok());
+    labels.setRun(session.info().id, session.info().name, session.stepCount());
+    // The set vanishes underneath the model (another program deleted it).
+    QVERIFY(fx.workspace->database().deleteLabelSet(labels.setId()).ok());
+    QVERIFY(!labels.label({SensorGroup::Back}, 1, 5, ContactClass::Wall).ok());
+    QVERIFY(!labels.undoStack()->canUndo() || labels.undoStack()->command(0)->childCount() == 0);
+  }
+
+  void runListShowsCoverageOfTheSet() {
+    GuiFixture fx(200);
+    auto set = fx.workspace->database().createLabelSet("cov");
+    QVERIFY(set.ok());
+    auto run = fx.workspace->database().findRun(fx.runName);
+    QVERIFY(run.ok());
+    tactile::storage::LabelSegment s;
+    s.runId = run->id;
+    s.group = SensorGroup::Left;
+    s.firstStep = 0;
+    s.lastStep = 199;
+    s.cls = ContactClass::Wall;
+    QVERIFY(fx.workspace->addSegment(set.value(), s).ok());
+    tactile::gui::RunListModel model;
+    QVERIFY(model.reload(fx.workspace.get(), set.value()).ok());
+    QCOMPARE(model.rowCount(), 1);
+    // One of eight groups over the whole run.
+    QCOMPARE(
+        model.data(model.index(0, tactile::gui::RunListModel::Coverage), Qt::UserRole).toDouble(),
+        12.5);
+    QCOMPARE(model.data(model.index(0, tactile::gui::RunListModel::Steps)).toString(),
+             QStringLiteral("200"));
+  }
+};
+
+QTEST_MAIN(GuiCoreTest)
+#include "gui_core_test.moc"
