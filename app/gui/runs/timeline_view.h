@@ -1,0 +1,69 @@
+// The timelines on one shared step axis, zoomed and panned together: sensor heatmap (44 rows x
+// steps, values 0..5 blue to red, with a colour bar and the group bands F, FLC, L, RLC, B, RRC, R,
+// FRC; normal, shear or magnitude), heading strip (coloured by quadrant), command strip (lanes L,
+// R, F, B), blocked marks, and per group a label strip with the truth beside it where the run has
+// truth. The current-step cursor and the selected range are drawn on an overlay layer.
+//
+// Mouse: a click seeks (a click on a heatmap cell also selects that sensor's group); a drag, or a
+// Shift+click after a click, selects a step range; dragging a label segment's edge moves it; the
+// wheel zooms about the pointer; a right or middle drag pans.
+//
+// Only the visible range is drawn, binned to pixel columns: the heatmap comes from the stored
+// min/max summaries, never from every step, and a hidden view does no work.
+#pragma once
+
+#include <QRect>
+#include <QWidget>
+
+#include <cstdint>
+
+#include "app/gui/runs/run_session.h"
+
+class QCustomPlot;
+class QSettings;
+
+namespace tactile::gui {
+
+class LabelModel;
+
+class TimelineView : public QWidget {
+  Q_OBJECT
+
+ public:
+  enum class Channel { Normal, Shear, Magnitude };
+
+  TimelineView(RunSession* session, LabelModel* labels, QWidget* parent = nullptr);
+  ~TimelineView() override;
+
+  Channel channel() const;
+  void setChannel(Channel channel);
+
+  StepRange visibleRange() const;
+  // Shows [first, last] (clamped to the run); emits visibleRangeChanged.
+  void setVisibleRange(StepRange range);
+  void showWholeRun();
+
+  void saveSettings(QSettings& settings) const;
+  void restoreSettings(const QSettings& settings);
+
+  // Geometry for tests and benchmarks, in this widget's coordinates: the x of a step's centre and
+  // the rectangles of the heatmap, the heading strip and a group's label strip.
+  double stepToX(std::int64_t step) const;
+  QRect heatmapRect() const;
+  QRect headingRect() const;
+  QRect labelStripRect(SensorGroup group) const;
+  QCustomPlot* plot() const;
+
+ signals:
+  void visibleRangeChanged(tactile::gui::StepRange range);
+
+ protected:
+  void showEvent(QShowEvent* event) override;
+  bool eventFilter(QObject* watched, QEvent* event) override;
+
+ private:
+  struct Impl;
+  Impl* d_;
+};
+
+}  // namespace tactile::gui
