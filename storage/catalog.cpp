@@ -68,6 +68,7 @@ std::vector<std::int64_t> idsByName(RunDatabase::Impl& impl, const std::vector<s
 }  // namespace
 
 Result<std::vector<RunCatalogEntry>> RunDatabase::runCatalog() {
+  const ResetStatements reset{*impl_};
   Result<std::vector<RunInfo>> runs = listRuns();
   if (!runs) return Error(impl_->path.string(), runs.error().message);
   return aboutDatabase<std::vector<RunCatalogEntry>>(impl_->path, [&] {
@@ -92,6 +93,7 @@ Result<std::vector<RunCatalogEntry>> RunDatabase::runCatalog() {
 }
 
 Status RunDatabase::renameRun(std::string_view name, const std::string& newName) {
+  const ResetStatements reset{*impl_};
   return aboutDatabase<void>(impl_->path, [&] {
     checkNewName(newName, "run");
     db::Transaction transaction(impl_->connection);
@@ -109,6 +111,7 @@ Status RunDatabase::renameRun(std::string_view name, const std::string& newName)
 }
 
 Status RunDatabase::deleteRuns(const std::vector<std::string>& names) {
+  const ResetStatements reset{*impl_};
   return aboutDatabase<void>(impl_->path, [&] {
     db::Transaction transaction(impl_->connection);
     const std::vector<std::int64_t> ids =
@@ -129,6 +132,7 @@ Status RunDatabase::deleteRuns(const std::vector<std::string>& names) {
 }
 
 Result<std::vector<LabelSetCatalogEntry>> RunDatabase::labelSetCatalog() {
+  const ResetStatements reset{*impl_};
   Result<std::vector<LabelSetInfo>> sets = listLabelSets();
   if (!sets) return Error(impl_->path.string(), sets.error().message);
   return aboutDatabase<std::vector<LabelSetCatalogEntry>>(impl_->path, [&] {
@@ -153,6 +157,7 @@ Result<std::vector<LabelSetCatalogEntry>> RunDatabase::labelSetCatalog() {
 }
 
 Status RunDatabase::renameLabelSetNamed(std::string_view name, const std::string& newName) {
+  const ResetStatements reset{*impl_};
   return aboutDatabase<void>(impl_->path, [&] {
     checkNewName(newName, "label set");
     db::Transaction transaction(impl_->connection);
@@ -172,6 +177,7 @@ Status RunDatabase::renameLabelSetNamed(std::string_view name, const std::string
 }
 
 Status RunDatabase::deleteLabelSets(const std::vector<std::string>& names) {
+  const ResetStatements reset{*impl_};
   return aboutDatabase<void>(impl_->path, [&] {
     db::Transaction transaction(impl_->connection);
     const std::vector<std::int64_t> ids =

@@ -17,6 +17,8 @@ struct RunDatabase::Impl {
   db::Connection connection;
   // Prepared statements reused across calls, keyed by the address of their SQL literal.
   std::unordered_map<const char*, db::Statement> statements;
+  // Public calls running on this connection (one may call another).
+  int callDepth = 0;
 
   // The cached statement for a string literal; ready to bind (reset if it was stepped).
   db::Statement& statement(const char* sql) {
@@ -42,10 +44,32 @@ LabelSegment labelSegmentFromRow(db::Statement& s);
 // Current UTC time as "YYYY-MM-DDTHH:MM:SSZ".
 std::string utcNow();
 
-// Runs `fn` and turns any exception into a failed Result / Status. A DbError from SQLite names its
-// database in Error::file (docs/storage.md#errors).
+// Resets every cached statement when the outermost public call on the connection ends, so that no
+// statement left on a row (a single-row lookup) holds a read transaction open. An open read
+// transaction would pin the connection to an old snapshot: it would not see what other
+// connections (the CLI, the workbench's import worker) write, and would keep the WAL from being
+// checkpointed. A call made inside another leaves the outer call's statements alone.
+class ResetStatements {
+ public:
+  explicit ResetStatements(RunDatabase::Impl& impl) : impl_(impl) { ++impl_.callDepth; }
+  ~ResetStatements() {
+    if (--impl_.callDepth > 0) return;
+    for (auto& [sql, statement] : impl_.statements)
+      statement.reset();
+  }
+  ResetStatements(const ResetStatements&) = delete;
+  ResetStatements& operator=(const ResetStatements&) = delete;
+
+ private:
+  RunDatabase::Impl& impl_;
+};
+
+// Runs one public call: `fn`, with any exception turned into a failed Result / Status (a DbError
+// from SQLite names its database in Error::file, docs/storage.md#errors), then the statements
+// reset as above.
 template <class T, class Fn>
-Result<T> guarded(Fn&& fn) {
+Result<T> guarded(RunDatabase::Impl& impl, Fn&& fn) {
+  const ResetStatements reset{impl};
   try {
     return Result<T>(fn());
   } catch (const db::DbError& e) {
@@ -56,7 +80,8 @@ Result<T> guarded(Fn&& fn) {
 }
 
 template <class Fn>
-Status guardedStatus(Fn&& fn) {
+Status guardedStatus(RunDatabase::Impl& impl, Fn&& fn) {
+  const ResetStatements reset{impl};
   try {
     fn();
     return Status::success();

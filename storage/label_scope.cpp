@@ -25,7 +25,7 @@ LabelSegment labelSegmentFromRow(db::Statement& s) {
 }
 
 Result<LabelSegment> RunDatabase::segment(std::int64_t setId, std::int64_t segmentId) {
-  return guarded<LabelSegment>([&] {
+  return guarded<LabelSegment>(*impl_, [&] {
     db::Statement& s = impl_->statement(
         "SELECT label_segments.id, runs.name, run_id, grp, first_step, last_step, class, "
         "annotator FROM label_segments JOIN runs ON runs.id = run_id "
@@ -46,7 +46,7 @@ Result<std::vector<LabelSegment>> RunDatabase::segmentsInRange(std::int64_t setI
                                                                SensorGroup group,
                                                                std::int64_t firstStep,
                                                                std::int64_t lastStep) {
-  return guarded<std::vector<LabelSegment>>([&] {
+  return guarded<std::vector<LabelSegment>>(*impl_, [&] {
     db::Statement& s = impl_->statement(
         "SELECT label_segments.id, runs.name, run_id, grp, first_step, last_step, class, "
         "annotator FROM label_segments JOIN runs ON runs.id = run_id "
@@ -69,7 +69,7 @@ Status RunDatabase::replaceSegmentsInRange(std::int64_t setId, std::int64_t runI
                                            SensorGroup group, std::int64_t firstStep,
                                            std::int64_t lastStep,
                                            const std::vector<LabelSegment>& with) {
-  return guardedStatus([&] {
+  return guardedStatus(*impl_, [&] {
     db::Transaction transaction(impl_->connection);
     const std::string_view groupName = groupInfo(group).shortName;
     impl_

@@ -125,7 +125,7 @@ std::int64_t RunDatabase::Impl::insertSegmentNewestWins(std::int64_t setId,
 }
 
 Result<std::vector<LabelSetInfo>> RunDatabase::listLabelSets() {
-  return guarded<std::vector<LabelSetInfo>>([&] {
+  return guarded<std::vector<LabelSetInfo>>(*impl_, [&] {
     db::Statement& s = impl_->statement(
         "SELECT id, name, annotator, created_at, "
         "(SELECT count(*) FROM label_segments WHERE set_id = label_sets.id) "
@@ -140,6 +140,7 @@ Result<std::vector<LabelSetInfo>> RunDatabase::listLabelSets() {
 }
 
 Result<LabelSetInfo> RunDatabase::findLabelSet(std::string_view name) {
+  const ResetStatements reset{*impl_};
   Result<std::vector<LabelSetInfo>> sets = listLabelSets();
   if (!sets) return sets.error();
   for (LabelSetInfo& info : sets.value()) {
@@ -150,7 +151,7 @@ Result<LabelSetInfo> RunDatabase::findLabelSet(std::string_view name) {
 
 Result<std::int64_t> RunDatabase::createLabelSet(const std::string& name,
                                                  const std::string& annotator) {
-  return guarded<std::int64_t>([&] {
+  return guarded<std::int64_t>(*impl_, [&] {
     if (name.empty()) throw db::DbError("a label set needs a name");
     db::Transaction transaction(impl_->connection);
     if (impl_->labelSetIdByName(name) != 0) {
@@ -169,7 +170,7 @@ Result<std::int64_t> RunDatabase::createLabelSet(const std::string& name,
 }
 
 Status RunDatabase::renameLabelSet(std::int64_t setId, const std::string& newName) {
-  return guardedStatus([&] {
+  return guardedStatus(*impl_, [&] {
     if (newName.empty()) throw db::DbError("a label set needs a name");
     db::Transaction transaction(impl_->connection);
     const std::int64_t existing = impl_->labelSetIdByName(newName);
@@ -188,7 +189,7 @@ Status RunDatabase::renameLabelSet(std::int64_t setId, const std::string& newNam
 }
 
 Result<std::int64_t> RunDatabase::copyLabelSet(std::int64_t setId, const std::string& newName) {
-  return guarded<std::int64_t>([&] {
+  return guarded<std::int64_t>(*impl_, [&] {
     if (newName.empty()) throw db::DbError("a label set needs a name");
     db::Transaction transaction(impl_->connection);
     if (impl_->labelSetIdByName(newName) != 0) {
@@ -221,7 +222,7 @@ Result<std::int64_t> RunDatabase::copyLabelSet(std::int64_t setId, const std::st
 }
 
 Status RunDatabase::deleteLabelSet(std::int64_t setId) {
-  return guardedStatus([&] {
+  return guardedStatus(*impl_, [&] {
     db::Transaction transaction(impl_->connection);
     impl_->statement("DELETE FROM label_sets WHERE id = ?").bind(1, setId).run();
     if (impl_->connection.changes() == 0) {
@@ -232,7 +233,7 @@ Status RunDatabase::deleteLabelSet(std::int64_t setId) {
 }
 
 Result<std::int64_t> RunDatabase::addSegment(std::int64_t setId, const LabelSegment& segment) {
-  return guarded<std::int64_t>([&] {
+  return guarded<std::int64_t>(*impl_, [&] {
     db::Transaction transaction(impl_->connection);
     db::Statement& set = impl_->statement("SELECT 1 FROM label_sets WHERE id = ?");
     set.bind(1, setId);
@@ -245,7 +246,7 @@ Result<std::int64_t> RunDatabase::addSegment(std::int64_t setId, const LabelSegm
 }
 
 Status RunDatabase::changeSegment(std::int64_t segmentId, const LabelSegment& segment) {
-  return guardedStatus([&] {
+  return guardedStatus(*impl_, [&] {
     db::Transaction transaction(impl_->connection);
     db::Statement& s = impl_->statement("SELECT set_id, run_id FROM label_segments WHERE id = ?");
     s.bind(1, segmentId);
@@ -261,7 +262,7 @@ Status RunDatabase::changeSegment(std::int64_t segmentId, const LabelSegment& se
 }
 
 Status RunDatabase::removeSegment(std::int64_t segmentId) {
-  return guardedStatus([&] {
+  return guardedStatus(*impl_, [&] {
     db::Transaction transaction(impl_->connection);
     impl_->statement("DELETE FROM label_segments WHERE id = ?").bind(1, segmentId).run();
     if (impl_->connection.changes() == 0) {
@@ -273,7 +274,7 @@ Status RunDatabase::removeSegment(std::int64_t segmentId) {
 
 Result<std::vector<std::pair<std::int64_t, std::int64_t>>> RunDatabase::labelledSteps(
     std::int64_t setId) {
-  return guarded<std::vector<std::pair<std::int64_t, std::int64_t>>>([&] {
+  return guarded<std::vector<std::pair<std::int64_t, std::int64_t>>>(*impl_, [&] {
     db::Statement& s = impl_->statement(
         "SELECT run_id, SUM(last_step - first_step + 1) FROM label_segments WHERE set_id = ? "
         "GROUP BY run_id ORDER BY run_id");
@@ -286,7 +287,7 @@ Result<std::vector<std::pair<std::int64_t, std::int64_t>>> RunDatabase::labelled
 }
 
 Result<std::vector<LabelSegment>> RunDatabase::segments(std::int64_t setId, std::int64_t runId) {
-  return guarded<std::vector<LabelSegment>>([&] {
+  return guarded<std::vector<LabelSegment>>(*impl_, [&] {
     db::Statement& s = impl_->statement(
         "SELECT label_segments.id, runs.name, run_id, grp, first_step, last_step, class, "
         "annotator FROM label_segments JOIN runs ON runs.id = run_id "
@@ -304,7 +305,7 @@ Result<std::vector<LabelSegment>> RunDatabase::segments(std::int64_t setId, std:
 
 Result<std::int64_t> RunDatabase::importLabels(const std::string& setName,
                                                const std::filesystem::path& file) {
-  return guarded<std::int64_t>([&] {
+  return guarded<std::int64_t>(*impl_, [&] {
     Result<std::string> content = readFileText(file);
     if (!content) throw db::DbError(content.errorText());
     const std::string& text = content.value();
@@ -362,6 +363,7 @@ Result<std::int64_t> RunDatabase::importLabels(const std::string& setName,
 }
 
 Status RunDatabase::exportLabels(const std::string& setName, const std::filesystem::path& file) {
+  const ResetStatements reset{*impl_};
   Result<LabelSetInfo> set = findLabelSet(setName);
   if (!set) return set.error();
   Result<std::vector<LabelSegment>> all = segments(set->id);
@@ -384,7 +386,7 @@ Status RunDatabase::exportLabels(const std::string& setName, const std::filesyst
 }
 
 Result<std::int64_t> RunDatabase::autolabel(std::int64_t runId, const std::string& setName) {
-  return guarded<std::int64_t>([&] {
+  return guarded<std::int64_t>(*impl_, [&] {
     db::Transaction transaction(impl_->connection);
     db::Statement& s = impl_->statement("SELECT name, has_truth FROM runs WHERE id = ?");
     s.bind(1, runId);

@@ -36,7 +36,7 @@ constexpr const char* kSweepColumns =
 }  // namespace
 
 Result<std::vector<ModelInfo>> RunDatabase::listModels() {
-  return guarded<std::vector<ModelInfo>>([&] {
+  return guarded<std::vector<ModelInfo>>(*impl_, [&] {
     std::vector<ModelInfo> out;
     db::Statement& s = impl_->statement(
         "SELECT id, name, created_at, trained_on, metrics FROM models ORDER BY name");
@@ -48,7 +48,7 @@ Result<std::vector<ModelInfo>> RunDatabase::listModels() {
 }
 
 Result<ModelInfo> RunDatabase::modelInfo(std::string_view name) {
-  return guarded<ModelInfo>([&] {
+  return guarded<ModelInfo>(*impl_, [&] {
     db::Statement& s = impl_->statement(
         "SELECT id, name, created_at, trained_on, metrics FROM models WHERE name = ?");
     s.bind(1, name);
@@ -60,7 +60,7 @@ Result<ModelInfo> RunDatabase::modelInfo(std::string_view name) {
 }
 
 Status RunDatabase::deleteModels(const std::vector<std::string>& names) {
-  return guardedStatus([&] {
+  return guardedStatus(*impl_, [&] {
     db::Transaction transaction(impl_->connection);
     db::Statement& s = impl_->statement("DELETE FROM models WHERE name = ?");
     std::set<std::string> done;  // a name given twice is deleted once
@@ -78,7 +78,7 @@ Status RunDatabase::deleteModels(const std::vector<std::string>& names) {
 Result<std::int64_t> RunDatabase::addModel(const std::string& name, const std::string& json,
                                            const std::string& trainedOnJson,
                                            const std::string& metricsJson) {
-  return guarded<std::int64_t>([&] {
+  return guarded<std::int64_t>(*impl_, [&] {
     db::Transaction transaction(impl_->connection);
     db::Statement& exists = impl_->statement("SELECT 1 FROM models WHERE name = ?");
     exists.bind(1, name);
@@ -106,7 +106,7 @@ Result<std::int64_t> RunDatabase::addModel(const std::string& name, const std::s
 
 Result<std::int64_t> RunDatabase::createSweep(const std::string& name,
                                               const std::string& configurationJson) {
-  return guarded<std::int64_t>([&] {
+  return guarded<std::int64_t>(*impl_, [&] {
     db::Transaction transaction(impl_->connection);
     impl_->statement("INSERT INTO sweeps(name, configuration, created_at) VALUES(?, ?, ?)")
         .bind(1, name)
@@ -122,7 +122,7 @@ Result<std::int64_t> RunDatabase::createSweep(const std::string& name,
 Result<std::int64_t> RunDatabase::addSweepCell(std::int64_t sweepId,
                                                const std::string& configurationJson,
                                                const std::string& metricsJson) {
-  return guarded<std::int64_t>([&] {
+  return guarded<std::int64_t>(*impl_, [&] {
     db::Transaction transaction(impl_->connection);
     impl_->statement("INSERT INTO sweep_cells(sweep_id, configuration, metrics) VALUES(?, ?, ?)")
         .bind(1, sweepId)
@@ -136,7 +136,7 @@ Result<std::int64_t> RunDatabase::addSweepCell(std::int64_t sweepId,
 }
 
 Status RunDatabase::updateSweep(std::int64_t sweepId, const std::string& configurationJson) {
-  return guardedStatus([&] {
+  return guardedStatus(*impl_, [&] {
     db::Transaction transaction(impl_->connection);
     impl_->statement("UPDATE sweeps SET configuration = ? WHERE id = ?")
         .bind(1, configurationJson)
@@ -150,7 +150,7 @@ Status RunDatabase::updateSweep(std::int64_t sweepId, const std::string& configu
 }
 
 Result<std::vector<SweepInfo>> RunDatabase::listSweeps() {
-  return guarded<std::vector<SweepInfo>>([&] {
+  return guarded<std::vector<SweepInfo>>(*impl_, [&] {
     static const std::string sql = std::string(kSweepColumns) + " ORDER BY id";
     std::vector<SweepInfo> out;
     db::Statement& s = impl_->statement(sql.c_str());
@@ -162,7 +162,7 @@ Result<std::vector<SweepInfo>> RunDatabase::listSweeps() {
 }
 
 Result<SweepInfo> RunDatabase::sweepInfo(std::int64_t sweepId) {
-  return guarded<SweepInfo>([&] {
+  return guarded<SweepInfo>(*impl_, [&] {
     static const std::string sql = std::string(kSweepColumns) + " WHERE id = ?";
     db::Statement& s = impl_->statement(sql.c_str());
     s.bind(1, sweepId);
@@ -174,7 +174,7 @@ Result<SweepInfo> RunDatabase::sweepInfo(std::int64_t sweepId) {
 }
 
 Result<std::vector<SweepCellRecord>> RunDatabase::sweepCells(std::int64_t sweepId) {
-  return guarded<std::vector<SweepCellRecord>>([&] {
+  return guarded<std::vector<SweepCellRecord>>(*impl_, [&] {
     std::vector<SweepCellRecord> out;
     db::Statement& s = impl_->statement(
         "SELECT id, configuration, metrics FROM sweep_cells WHERE sweep_id = ? ORDER BY id");
@@ -187,7 +187,7 @@ Result<std::vector<SweepCellRecord>> RunDatabase::sweepCells(std::int64_t sweepI
 }
 
 Status RunDatabase::deleteSweeps(const std::vector<std::int64_t>& sweepIds) {
-  return guardedStatus([&] {
+  return guardedStatus(*impl_, [&] {
     db::Transaction transaction(impl_->connection);
     db::Statement& s = impl_->statement("DELETE FROM sweeps WHERE id = ?");
     std::set<std::int64_t> done;  // an id given twice is deleted once

@@ -316,7 +316,7 @@ RunInfo readRunInfo(const db::Statement& s) {
 }  // namespace
 
 Result<std::vector<RunInfo>> RunDatabase::listRuns() {
-  return guarded<std::vector<RunInfo>>([&] {
+  return guarded<std::vector<RunInfo>>(*impl_, [&] {
     static const std::string sql = std::string(kRunColumns) + "ORDER BY name";
     db::Statement& s = impl_->statement(sql.c_str());
     std::vector<RunInfo> runs;
@@ -327,7 +327,7 @@ Result<std::vector<RunInfo>> RunDatabase::listRuns() {
 }
 
 Result<RunInfo> RunDatabase::findRun(std::string_view name) {
-  return guarded<RunInfo>([&] {
+  return guarded<RunInfo>(*impl_, [&] {
     static const std::string sql = std::string(kRunColumns) + "WHERE name = ?";
     db::Statement& s = impl_->statement(sql.c_str());
     s.bind(1, name);
@@ -339,7 +339,7 @@ Result<RunInfo> RunDatabase::findRun(std::string_view name) {
 }
 
 Result<RunInfo> RunDatabase::runInfo(std::int64_t runId) {
-  return guarded<RunInfo>([&] {
+  return guarded<RunInfo>(*impl_, [&] {
     static const std::string sql = std::string(kRunColumns) + "WHERE id = ?";
     db::Statement& s = impl_->statement(sql.c_str());
     s.bind(1, runId);
@@ -351,7 +351,7 @@ Result<RunInfo> RunDatabase::runInfo(std::int64_t runId) {
 }
 
 Status RunDatabase::deleteRun(std::int64_t runId) {
-  return guardedStatus([&] {
+  return guardedStatus(*impl_, [&] {
     db::Transaction transaction(impl_->connection);
     db::Statement& s = impl_->statement("DELETE FROM runs WHERE id = ?");
     s.bind(1, runId).run();
@@ -403,6 +403,7 @@ void addProblem(IntegrityReport& report, const std::string& kind, const std::str
 }  // namespace
 
 IntegrityReport RunDatabase::check() {
+  const ResetStatements reset{*impl_};
   IntegrityReport report;
   try {
     db::Connection& c = impl_->connection;
@@ -452,7 +453,7 @@ IntegrityReport RunDatabase::check() {
 Result<std::int64_t> RunDatabase::saveModel(const std::string& name, const std::string& json,
                                             const std::string& trainedOnJson,
                                             const std::string& metricsJson) {
-  return guarded<std::int64_t>([&] {
+  return guarded<std::int64_t>(*impl_, [&] {
     db::Transaction transaction(impl_->connection);
     const std::string now = utcNow();
     db::Statement& s = impl_->statement(
@@ -471,7 +472,7 @@ Result<std::int64_t> RunDatabase::saveModel(const std::string& name, const std::
 }
 
 Result<std::string> RunDatabase::loadModel(const std::string& name) {
-  return guarded<std::string>([&] {
+  return guarded<std::string>(*impl_, [&] {
     db::Statement& s = impl_->statement("SELECT json FROM models WHERE name = ?");
     s.bind(1, name);
     if (!s.step()) throw db::DbError("no model named '" + name + "'");
@@ -484,7 +485,7 @@ Result<std::string> RunDatabase::loadModel(const std::string& name) {
 Result<std::int64_t> RunDatabase::saveSweep(
     const std::string& name, const std::string& configurationJson,
     const std::vector<std::pair<std::string, std::string>>& cells) {
-  return guarded<std::int64_t>([&] {
+  return guarded<std::int64_t>(*impl_, [&] {
     db::Transaction transaction(impl_->connection);
     const std::string now = utcNow();
     impl_->statement("INSERT INTO sweeps(name, configuration, created_at) VALUES(?, ?, ?)")

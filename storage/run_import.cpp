@@ -21,6 +21,7 @@ using namespace importing;
 
 ImportOutcome RunDatabase::importText(std::string_view text, const std::string& fileName,
                                       const ImportOptions& options) {
+  const ResetStatements reset{*impl_};
   FileHead head;
   head.file = fileName;
   head.name = runName(options, fileName);
@@ -41,6 +42,7 @@ ImportOutcome RunDatabase::importText(std::string_view text, const std::string& 
 ImportOutcome RunDatabase::importRun(const RunData& run, const std::string& name,
                                      const std::string& sourceFile,
                                      const SceneResolver& sceneResolver) {
+  const ResetStatements reset{*impl_};
   FileHead head;
   head.file = sourceFile.empty() ? name : sourceFile;
   head.name = name;
@@ -69,6 +71,7 @@ ImportOutcome RunDatabase::importRun(const RunData& run, const std::string& name
 std::vector<ImportOutcome> RunDatabase::importFiles(const std::vector<std::filesystem::path>& files,
                                                     const ImportOptions& options,
                                                     const ProgressFn& progress) {
+  const ResetStatements reset{*impl_};
   std::vector<ImportOutcome> outcomes;
   outcomes.reserve(files.size());
   if (files.empty()) return outcomes;

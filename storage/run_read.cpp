@@ -274,7 +274,7 @@ RunSummary readSummary(RunDatabase::Impl& impl, std::int64_t runId, std::int64_t
 }  // namespace
 
 Result<RunData> RunDatabase::loadRun(std::int64_t runId) {
-  return guarded<RunData>([&] {
+  return guarded<RunData>(*impl_, [&] {
     const std::int64_t steps = impl_->runStepCount(runId);
     return std::move(readWindow(*impl_, runId, 0, steps).data);
   });
@@ -282,21 +282,21 @@ Result<RunData> RunDatabase::loadRun(std::int64_t runId) {
 
 Result<RunWindow> RunDatabase::loadWindow(std::int64_t runId, std::int64_t firstStep,
                                           std::int64_t count) {
-  return guarded<RunWindow>([&] { return readWindow(*impl_, runId, firstStep, count); });
+  return guarded<RunWindow>(*impl_, [&] { return readWindow(*impl_, runId, firstStep, count); });
 }
 
 Result<RunTrack> RunDatabase::loadTrack(std::int64_t runId) {
-  return guarded<RunTrack>([&] { return readTrack(*impl_, runId); });
+  return guarded<RunTrack>(*impl_, [&] { return readTrack(*impl_, runId); });
 }
 
 Result<RunSummary> RunDatabase::loadSummary(std::int64_t runId, std::int64_t firstStep,
                                             std::int64_t lastStep, int buckets) {
   return guarded<RunSummary>(
-      [&] { return readSummary(*impl_, runId, firstStep, lastStep, buckets); });
+      *impl_, [&] { return readSummary(*impl_, runId, firstStep, lastStep, buckets); });
 }
 
 Result<std::optional<std::string>> RunDatabase::sceneJson(std::int64_t runId) {
-  return guarded<std::optional<std::string>>([&] {
+  return guarded<std::optional<std::string>>(*impl_, [&] {
     db::Statement& s = impl_->statement(
         "SELECT scenes.json FROM runs LEFT JOIN scenes ON scenes.id = runs.scene_id "
         "WHERE runs.id = ?");
@@ -310,6 +310,7 @@ Result<std::optional<std::string>> RunDatabase::sceneJson(std::int64_t runId) {
 }
 
 Status RunDatabase::exportRun(std::int64_t runId, const std::filesystem::path& file) {
+  const ResetStatements reset{*impl_};
   Result<RunData> run = loadRun(runId);
   if (!run) return run.error();
   return writeRunCsv(run.value(), file);

@@ -8,6 +8,8 @@
 #include <random>
 #include <stdexcept>
 
+#include <sqlite3.h>
+
 #include "run/run_csv.h"
 #include "storage/run_codec.h"
 #include "storage_test_util.h"
@@ -299,6 +301,58 @@ TEST(RunCodec, MalformedValueBlobsAreRejected) {
   std::vector<unsigned char> dense(8 * kValuesPerStep, 0);
   dense[8] = 0x3F;
   EXPECT_TRUE(decodeValues(dense.data(), dense.size(), kValuesPerStep, out.data()));
+}
+
+}  // namespace
+}  // namespace tactile::storage
+
+namespace tactile::storage {
+namespace {
+
+TEST_F(ReadTest, TrackEqualsTheRunsColumnsWithoutSensors) {
+  const auto track = db_->loadTrack(runId_);
+  ASSERT_TRUE(track.ok()) << track.errorText();
+  EXPECT_EQ(track->x, run_.x);
+  EXPECT_EQ(track->y, run_.y);
+  EXPECT_EQ(track->theta, run_.theta);
+  EXPECT_EQ(track->v, run_.v);
+  EXPECT_EQ(track->omega, run_.omega);
+  EXPECT_EQ(track->blocked, run_.blocked);
+  EXPECT_EQ(track->truth, run_.truth);
+  EXPECT_FALSE(db_->loadTrack(runId_ + 100).ok());
+}
+
+TEST_F(ReadTest, TrackOfARunWithoutTruthHasNoTruth) {
+  const auto outcome = db_->importRun(makeRun(50, false), "plain");
+  ASSERT_EQ(outcome.status, ImportStatus::Imported) << outcome.message;
+  const auto track = db_->loadTrack(outcome.runId);
+  ASSERT_TRUE(track.ok()) << track.errorText();
+  EXPECT_EQ(track->stepCount(), 50u);
+  EXPECT_FALSE(track->hasTruth());
+}
+
+// Regression: a read that failed on a malformed row (after stepping onto it) left its statement on
+// the row, so the connection kept a read transaction open and never saw what another connection
+// wrote afterwards.
+TEST(ReadSnapshot, AFailedReadDoesNotPinTheConnectionToAnOldSnapshot) {
+  test::TempDir dir;
+  const auto path = dir.path() / "two.db";
+  auto a = test::openDb(path.string());
+  ASSERT_NE(a, nullptr);
+  const auto outcome = a->importRun(makeRun(10, false), "broken");
+  ASSERT_EQ(outcome.status, ImportStatus::Imported);
+  {
+    sqlite3* raw = nullptr;
+    ASSERT_EQ(sqlite3_open(path.string().c_str(), &raw), SQLITE_OK);
+    ASSERT_EQ(sqlite3_exec(raw, "UPDATE runs SET metadata = x'01'", nullptr, nullptr, nullptr),
+              SQLITE_OK);
+    sqlite3_close(raw);
+  }
+  auto b = test::openDb(path.string());
+  ASSERT_NE(b, nullptr);
+  EXPECT_FALSE(b->loadWindow(outcome.runId, 0, 5).ok());  // malformed metadata
+  ASSERT_TRUE(a->createLabelSet("new").ok());             // written by the other connection
+  EXPECT_TRUE(b->findLabelSet("new").ok());               // and seen at once
 }
 
 }  // namespace
