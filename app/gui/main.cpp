@@ -4,6 +4,7 @@
 #include <QFileInfo>
 #include <QSettings>
 #include <QTimer>
+#include <QTranslator>
 
 #include <cstdio>
 
@@ -25,6 +26,12 @@ int main(int argc, char** argv) {
   QApplication::setOrganizationName(QStringLiteral("TactileWorkbench"));
   QApplication::setApplicationName(QStringLiteral("tactile-workbench"));
   QApplication::setApplicationVersion(QStringLiteral(TACTILE_VERSION));
+
+  // The user's language where a translation is embedded (German so far), English otherwise.
+  QTranslator translator;
+  if (translator.load(QLocale(), QStringLiteral("tactile_workbench"), QStringLiteral("_"),
+                      QStringLiteral(":/i18n")))
+    QApplication::installTranslator(&translator);
 
   QCommandLineParser parser;
   parser.setApplicationDescription(

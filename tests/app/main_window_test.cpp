@@ -1,13 +1,45 @@
+// The main window as an annotator uses it: keys step exactly, a drag on the timeline plus a number
+// key stores a segment at once, undo takes it out of the database, and the window comes back as
+// it was left (database, run, step, label set, docks, view settings).
 #include <QAction>
-#include <QLabel>
+#include <QDockWidget>
 #include <QMenuBar>
 #include <QSettings>
-#include <QStatusBar>
+#include <QSignalSpy>
+#include <QSpinBox>
 #include <QTemporaryDir>
+#include <QUndoStack>
 #include <QtTest>
 
+#include "app/gui/labels/label_model.h"
+#include "app/gui/labels/label_panel_view.h"
 #include "app/gui/main_window.h"
-#include "run/builtin_scenes.h"
+#include "app/gui/runs/route_view.h"
+#include "app/gui/runs/run_session.h"
+#include "app/gui/runs/timeline_view.h"
+#include "tests/app/gui_fixture.h"
+
+using tactile::ContactClass;
+using tactile::SensorGroup;
+using tactile::gui::MainWindow;
+using tactile::gui::testing::GuiFixture;
+
+namespace {
+
+// Segments of the set stored in the database for one group.
+std::size_t storedSegments(GuiFixture& fx, const std::string& set, SensorGroup group,
+                           ContactClass cls) {
+  auto info = fx.workspace->database().findLabelSet(set);
+  if (!info) return 0;
+  auto all = fx.workspace->database().segments(info->id);
+  std::size_t n = 0;
+  for (const auto& s : all.value()) {
+    n += s.group == group && s.cls == cls ? 1 : 0;
+  }
+  return n;
+}
+
+}  // namespace
 
 class MainWindowTest : public QObject {
   Q_OBJECT
@@ -21,32 +53,182 @@ class MainWindowTest : public QObject {
     QCoreApplication::setOrganizationName(QStringLiteral("TactileWorkbenchTest"));
   }
 
-  void showsTitleMenusAndSceneCount() {
-    tactile::gui::MainWindow window;
-    window.show();
-    QVERIFY(QTest::qWaitForWindowExposed(&window));
-    QCOMPARE(window.windowTitle(), QStringLiteral("Tactile Workbench"));
+  void init() { QSettings().clear(); }
+
+  void docksAndMenusHaveStableNames() {
+    MainWindow window;
+    for (const char* name : {"runsDock", "routeDock", "labelsDock"})
+      QVERIFY2(window.findChild<QDockWidget*>(QLatin1String(name)) != nullptr, name);
     QStringList menus;
     for (QAction* action : window.menuBar()->actions())
       menus << action->text();
-    QCOMPARE(menus, (QStringList{QStringLiteral("&File"), QStringLiteral("&Help")}));
-    const int scenes = static_cast<int>(tactile::builtinSceneNames().size());
-    QVERIFY(window.statusBar()->currentMessage().startsWith(QString::number(scenes) + " "));
-    auto* welcome = window.findChild<QLabel*>(QStringLiteral("welcome"));
-    QVERIFY(welcome != nullptr);
-    QVERIFY(welcome->text().contains(QStringLiteral("44 tactile domes")));
+    QCOMPARE(menus, (QStringList{"&File", "&Edit", "&Go", "&View", "&Help"}));
   }
 
-  void restoresGeometryFromSettings() {
+  void keysStepExactly() {
+    GuiFixture fx(2000);
+    MainWindow window;
+    window.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&window));
+    window.activateWindow();
+    QVERIFY(QTest::qWaitForWindowActive(&window));
+    QVERIFY(window.openDatabase(QString::fromStdString(fx.dbPath)).ok());
+    QVERIFY(window.openRun(QString::fromStdString(fx.runName)).ok());
+    auto* s = window.session();
+    QCOMPARE(s->currentStep(), 0);
+    QWidget* target = window.timeline();
+    QTest::keyClick(target, Qt::Key_Right);
+    QCOMPARE(s->currentStep(), 1);
+    QTest::keyClick(target, Qt::Key_Right, Qt::ShiftModifier);
+    QCOMPARE(s->currentStep(), 11);
+    QTest::keyClick(target, Qt::Key_Right, Qt::ControlModifier);
+    QCOMPARE(s->currentStep(), 111);
+    QTest::keyClick(target, Qt::Key_Left);
+    QCOMPARE(s->currentStep(), 110);
+    QTest::keyClick(target, Qt::Key_Left, Qt::ShiftModifier);
+    QCOMPARE(s->currentStep(), 100);
+    QTest::keyClick(target, Qt::Key_Left, Qt::ControlModifier);
+    QCOMPARE(s->currentStep(), 0);
+    QTest::keyClick(target, Qt::Key_End);
+    QCOMPARE(s->currentStep(), 1999);
+    QTest::keyClick(target, Qt::Key_Right);  // clamped at the end
+    QCOMPARE(s->currentStep(), 1999);
+    QTest::keyClick(target, Qt::Key_Home);
+    QCOMPARE(s->currentStep(), 0);
+    // Ten single presses are ten steps, however long the run.
+    for (int i = 0; i < 10; ++i)
+      QTest::keyClick(target, Qt::Key_Right);
+    QCOMPARE(s->currentStep(), 10);
+    // A screen is the visible range.
+    window.timeline()->setVisibleRange({0, 199});
+    QTest::keyClick(target, Qt::Key_PageDown);
+    QCOMPARE(s->currentStep(), 210);
+    // The step spin box follows and drives the cursor.
+    auto* spin = window.findChild<QSpinBox*>(QStringLiteral("stepSpin"));
+    QVERIFY(spin != nullptr);
+    QCOMPARE(spin->value(), 210);
+    spin->setValue(1234);
+    QCOMPARE(s->currentStep(), 1234);
+  }
+
+  void dragAndNumberKeyStoreASegmentAndUndoRemovesIt() {
+    GuiFixture fx(1000);
+    MainWindow window;
+    window.resize(1400, 900);
+    window.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&window));
+    window.activateWindow();
+    QVERIFY(QTest::qWaitForWindowActive(&window));
+    QVERIFY(window.openDatabase(QString::fromStdString(fx.dbPath)).ok());
+    QVERIFY(window.openRun(QString::fromStdString(fx.runName)).ok());
+    QVERIFY(window.labels()->createSet("annotator").ok());
+    tactile::gui::TimelineView* t = window.timeline();
+    t->setVisibleRange({0, 999});
+    QCoreApplication::processEvents();
+    // Select the left group, then drag over steps 200..399 on the heading strip.
+    window.session()->setSelectedGroup(SensorGroup::Left);
+    QWidget* plot = reinterpret_cast<QWidget*>(t->plot());
+    const int y = t->headingRect().center().y();
+    const QPoint from = plot->mapFrom(t, QPoint(qRound(t->stepToX(200)), y));
+    const QPoint to = plot->mapFrom(t, QPoint(qRound(t->stepToX(399)), y));
+    QTest::mousePress(plot, Qt::LeftButton, {}, from);
+    QTest::mouseMove(plot, (from + to) / 2);
+    QTest::mouseMove(plot, to);
+    QTest::mouseRelease(plot, Qt::LeftButton, {}, to);
+    QVERIFY(window.session()->selection().has_value());
+    const auto sel = *window.session()->selection();
+    QVERIFY2(std::abs(sel.first - 200) <= 1 && std::abs(sel.last - 399) <= 1,
+             qPrintable(QStringLiteral("%1-%2").arg(sel.first).arg(sel.last)));
+    QAction* wallAction = window.findChild<QAction*>(QStringLiteral("labelAs2"));
+    QVERIFY(wallAction != nullptr);
+    QSignalSpy fired(wallAction, &QAction::triggered);
+    QTest::keyClick(t, Qt::Key_2);  // Wall
+    QCOMPARE(fired.count(), 1);
+    QVERIFY2(window.lastError().isEmpty(), qPrintable(window.lastError()));
+    QCOMPARE(storedSegments(fx, "annotator", SensorGroup::Left, ContactClass::Wall),
+             std::size_t{1});
+    QCOMPARE(*window.labels()->classAt(SensorGroup::Left, 300), ContactClass::Wall);
+    QTest::keyClick(t, Qt::Key_Z, Qt::ControlModifier);
+    QCOMPARE(storedSegments(fx, "annotator", SensorGroup::Left, ContactClass::Wall),
+             std::size_t{0});
+    QTest::keyClick(t, Qt::Key_Z, Qt::ControlModifier | Qt::ShiftModifier);
+    QCOMPARE(storedSegments(fx, "annotator", SensorGroup::Left, ContactClass::Wall),
+             std::size_t{1});
+    // Checked groups: one key press labels both, one undo takes both back.
+    window.labelPanel()->setGroupsMode(tactile::gui::LabelPanelView::GroupsMode::Checked);
+    window.labelPanel()->setGroupChecked(SensorGroup::Right, true);
+    window.labelPanel()->setGroupChecked(SensorGroup::Back, true);
+    QTest::keyClick(t, Qt::Key_3);  // Corner
+    QCOMPARE(storedSegments(fx, "annotator", SensorGroup::Right, ContactClass::Corner),
+             std::size_t{1});
+    QCOMPARE(storedSegments(fx, "annotator", SensorGroup::Back, ContactClass::Corner),
+             std::size_t{1});
+    QTest::keyClick(t, Qt::Key_Z, Qt::ControlModifier);
+    QCOMPARE(storedSegments(fx, "annotator", SensorGroup::Right, ContactClass::Corner),
+             std::size_t{0});
+    QCOMPARE(storedSegments(fx, "annotator", SensorGroup::Back, ContactClass::Corner),
+             std::size_t{0});
+  }
+
+  void clickOnTheTimelineSeeksToTheNearestStep() {
+    GuiFixture fx(500);
+    MainWindow window;
+    window.resize(1400, 900);
+    window.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&window));
+    QVERIFY(window.openDatabase(QString::fromStdString(fx.dbPath)).ok());
+    tactile::gui::TimelineView* t = window.timeline();
+    t->setVisibleRange({0, 99});
+    QCoreApplication::processEvents();
+    QWidget* plot = reinterpret_cast<QWidget*>(t->plot());
+    for (int step : {3, 50, 97}) {
+      // A little off the step's centre still lands on it.
+      const QPoint at =
+          plot->mapFrom(t, QPoint(qRound(t->stepToX(step) + 0.3 * (t->stepToX(1) - t->stepToX(0))),
+                                  t->headingRect().center().y()));
+      QTest::mouseClick(plot, Qt::LeftButton, {}, at);
+      QCOMPARE(window.session()->currentStep(), step);
+    }
+  }
+
+  void comesBackAsItWasLeft() {
+    GuiFixture fx(800);
     {
-      tactile::gui::MainWindow window;
+      MainWindow window;
       window.show();
       QVERIFY(QTest::qWaitForWindowExposed(&window));
-      window.resize(900, 640);
+      QVERIFY(window.openDatabase(QString::fromStdString(fx.dbPath)).ok());
+      QVERIFY(window.labels()->createSet("kept").ok());
+      window.session()->setCurrentStep(321);
+      window.timeline()->setChannel(tactile::gui::TimelineView::Channel::Shear);
+      window.route()->setWholeScene(false);
+      window.labelPanel()->setGroupsMode(tactile::gui::LabelPanelView::GroupsMode::Contacting);
+      window.resize(1111, 777);
+      window.findChild<QDockWidget*>(QStringLiteral("routeDock"))->hide();
       window.close();
     }
-    tactile::gui::MainWindow again;
-    QCOMPARE(again.size(), QSize(900, 640));
+    MainWindow again;
+    QVERIFY(again.openDatabase(QString::fromStdString(fx.dbPath)).ok());
+    again.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&again));
+    QCOMPARE(again.size(), QSize(1111, 777));
+    QCOMPARE(again.session()->info().name, fx.runName);
+    QCOMPARE(again.session()->currentStep(), 321);
+    QCOMPARE(again.labels()->setName(), std::string("kept"));
+    QCOMPARE(again.timeline()->channel(), tactile::gui::TimelineView::Channel::Shear);
+    QVERIFY(!again.route()->wholeScene());
+    QCOMPARE(again.labelPanel()->groupsMode(),
+             tactile::gui::LabelPanelView::GroupsMode::Contacting);
+    QVERIFY(again.findChild<QDockWidget*>(QStringLiteral("routeDock"))->isHidden());
+  }
+
+  void badDatabaseIsAnErrorAndChangesNothing() {
+    MainWindow window;
+    QTemporaryDir dir;
+    const QString missing = dir.filePath(QStringLiteral("absent.db"));
+    QVERIFY(!window.openDatabase(missing).ok());
+    QVERIFY(!QFileInfo::exists(missing));
+    QVERIFY(window.databasePath().isEmpty());
   }
 
  private:
