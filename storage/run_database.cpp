@@ -233,7 +233,7 @@ Result<std::unique_ptr<RunDatabase>> RunDatabase::open(const std::filesystem::pa
       c.exec("PRAGMA foreign_keys = ON");
       c.exec("PRAGMA temp_store = MEMORY");
       c.exec("PRAGMA cache_size = -" + std::to_string(options.cacheKiB));
-      c.exec("PRAGMA mmap_size = 1073741824");
+      c.exec("PRAGMA mmap_size = " + std::to_string(options.mmapBytes));
       const int version = db::schemaVersion(c);
       if (version > db::kSchemaVersion) {
         return R(Error(name, "schema version " + std::to_string(version) + ", newer than version " +
@@ -273,7 +273,7 @@ Result<std::unique_ptr<RunDatabase>> RunDatabase::open(const std::filesystem::pa
     c.exec("PRAGMA foreign_keys = ON");
     c.exec("PRAGMA temp_store = MEMORY");
     c.exec("PRAGMA cache_size = -" + std::to_string(options.cacheKiB));
-    c.exec("PRAGMA mmap_size = 1073741824");
+    c.exec("PRAGMA mmap_size = " + std::to_string(options.mmapBytes));
     const db::MigrationReport report = db::migrate(c, impl->path);
     impl->backup = report.backupPath;
     return R(std::unique_ptr<RunDatabase>(new RunDatabase(std::move(impl))));

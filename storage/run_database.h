@@ -222,6 +222,10 @@ struct OpenOptions {
   bool create = true;
   // Page cache per connection in KiB (PRAGMA cache_size = -cacheKiB).
   int cacheKiB = 256 * 1024;
+  // Bytes of the file SQLite may map into memory (PRAGMA mmap_size). Mapped pages count towards
+  // the process's resident memory while they are read, so a program that keeps running (the
+  // workbench) may choose 0 and read through the page cache alone.
+  std::int64_t mmapBytes = std::int64_t{1} << 30;
 };
 
 class RunDatabase {

@@ -38,6 +38,8 @@ namespace keys = settings_keys;
 
 namespace {
 
+constexpr int kPageCacheKiB = 16 * 1024;
+
 bool isDatabaseFile(const QString& path) {
   const QString suffix = QFileInfo(path).suffix().toLower();
   return suffix == "db" || suffix == "sqlite" || suffix == "sqlite3" || suffix == "tactile";
@@ -254,6 +256,11 @@ void MainWindow::createActions() {
 Status MainWindow::openDatabase(const QString& path, bool create) {
   storage::OpenOptions options;
   options.mode = create ? storage::OpenMode::Create : storage::OpenMode::ReadWrite;
+  // The views read a run's track once and then small windows and summaries; a large page cache or
+  // a memory-mapped file would only hold the whole steps table after the first open (hundreds of
+  // MB of resident memory on a long run).
+  options.cacheKiB = kPageCacheKiB;
+  options.mmapBytes = 0;
   auto opened = workspace::Workspace::open(path.toStdString(), options);
   if (!opened) return opened.error();
   saveSettings();  // the old database's last run and step

@@ -34,6 +34,8 @@ RunListView::RunListView(RunListModel* model, QWidget* parent) : QWidget(parent)
   table_->setEditTriggers(QAbstractItemView::NoEditTriggers);
   table_->verticalHeader()->hide();
   table_->verticalHeader()->setDefaultSectionSize(fontMetrics().height() + 6);
+  // Columns as wide as their content, so every column fits a narrow dock.
+  table_->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
   table_->horizontalHeader()->setStretchLastSection(true);
   table_->setAlternatingRowColors(true);
   layout->addWidget(filter_);
