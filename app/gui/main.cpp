@@ -10,7 +10,7 @@
 
 #include "app/gui/common/settings_keys.h"
 #include "app/gui/main_window.h"
-#include "app/gui/runs/run_session.h"
+#include "app/gui/runs/run_session_model.h"
 
 namespace {
 

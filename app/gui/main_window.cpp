@@ -27,7 +27,7 @@
 #include "app/gui/runs/route_view.h"
 #include "app/gui/runs/run_list_model.h"
 #include "app/gui/runs/run_list_view.h"
-#include "app/gui/runs/run_session.h"
+#include "app/gui/runs/run_session_model.h"
 #include "app/gui/runs/step_controls_view.h"
 #include "app/gui/runs/timeline_view.h"
 #include "workspace/workspace.h"

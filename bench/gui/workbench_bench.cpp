@@ -24,7 +24,7 @@
 #include <string>
 
 #include "app/gui/main_window.h"
-#include "app/gui/runs/run_session.h"
+#include "app/gui/runs/run_session_model.h"
 #include "app/gui/runs/timeline_view.h"
 #include "storage/run_database.h"
 #include "storage/synthetic_run.h"

@@ -7,7 +7,7 @@
 
 #include "app/gui/labels/label_model.h"
 #include "app/gui/runs/run_list_model.h"
-#include "app/gui/runs/run_session.h"
+#include "app/gui/runs/run_session_model.h"
 #include "tests/app/gui_fixture.h"
 
 using tactile::ContactClass;

@@ -15,7 +15,7 @@
 #include "app/gui/labels/label_panel_view.h"
 #include "app/gui/main_window.h"
 #include "app/gui/runs/route_view.h"
-#include "app/gui/runs/run_session.h"
+#include "app/gui/runs/run_session_model.h"
 #include "app/gui/runs/timeline_view.h"
 #include "tests/app/gui_fixture.h"
 

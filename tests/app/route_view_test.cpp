@@ -13,7 +13,7 @@
 #include "app/gui/common/plot_style.h"
 #include "app/gui/labels/label_model.h"
 #include "app/gui/runs/route_view.h"
-#include "app/gui/runs/run_session.h"
+#include "app/gui/runs/run_session_model.h"
 #include "gui_fixture.h"
 
 using tactile::ContactClass;

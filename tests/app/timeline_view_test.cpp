@@ -13,7 +13,7 @@
 
 #include "app/gui/common/plot_style.h"
 #include "app/gui/labels/label_model.h"
-#include "app/gui/runs/run_session.h"
+#include "app/gui/runs/run_session_model.h"
 #include "app/gui/runs/timeline_view.h"
 #include "gui_fixture.h"
 

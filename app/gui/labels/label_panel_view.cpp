@@ -21,7 +21,7 @@
 #include "app/gui/common/plot_style.h"
 #include "app/gui/common/settings_keys.h"
 #include "app/gui/labels/label_model.h"
-#include "app/gui/runs/run_session.h"
+#include "app/gui/runs/run_session_model.h"
 #include "workspace/workspace.h"
 
 namespace tactile::gui {

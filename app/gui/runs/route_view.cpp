@@ -15,7 +15,7 @@
 
 #include "app/gui/common/plot_style.h"
 #include "app/gui/labels/label_model.h"
-#include "app/gui/runs/run_session.h"
+#include "app/gui/runs/run_session_model.h"
 #include "run/robot_geometry.h"
 
 namespace tactile::gui {

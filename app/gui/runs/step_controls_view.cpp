@@ -14,7 +14,7 @@
 #include <array>
 #include <limits>
 
-#include "app/gui/runs/run_session.h"
+#include "app/gui/runs/run_session_model.h"
 
 namespace tactile::gui {
 namespace {

@@ -17,7 +17,7 @@
 
 #include <cstdint>
 
-#include "app/gui/runs/run_session.h"
+#include "app/gui/runs/run_session_model.h"
 
 class QCustomPlot;
 class QSettings;

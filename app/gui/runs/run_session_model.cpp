@@ -1,4 +1,4 @@
-#include "app/gui/runs/run_session.h"
+#include "app/gui/runs/run_session_model.h"
 
 #include <algorithm>
 
