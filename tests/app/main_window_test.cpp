@@ -3,10 +3,12 @@
 // it was left (database, run, step, label set, docks, view settings).
 #include <QAction>
 #include <QDockWidget>
+#include <QFile>
 #include <QMenuBar>
 #include <QSettings>
 #include <QSignalSpy>
 #include <QSpinBox>
+#include <QTableView>
 #include <QTemporaryDir>
 #include <QUndoStack>
 #include <QtTest>
@@ -15,8 +17,10 @@
 #include "app/gui/labels/label_panel_view.h"
 #include "app/gui/main_window.h"
 #include "app/gui/runs/route_view.h"
+#include "app/gui/runs/run_list_view.h"
 #include "app/gui/runs/run_session_model.h"
 #include "app/gui/runs/timeline_view.h"
+#include "run/run_csv.h"
 #include "tests/app/gui_fixture.h"
 
 using tactile::ContactClass;
@@ -220,6 +224,36 @@ class MainWindowTest : public QObject {
     QCOMPARE(again.labelPanel()->groupsMode(),
              tactile::gui::LabelPanelView::GroupsMode::Contacting);
     QVERIFY(again.findChild<QDockWidget*>(QStringLiteral("routeDock"))->isHidden());
+  }
+
+  void importedRunFilesAppearInTheRunList() {
+    GuiFixture fx(300);
+    // Two run files: one good, one with a broken line.
+    auto run = fx.workspace->loadRun(fx.runName);
+    QVERIFY(run.ok());
+    run->setMeta("subject", "another annotator");  // not a copy of the stored run
+    const QString good = fx.dir.filePath(QStringLiteral("extra.csv"));
+    QVERIFY(tactile::writeRunCsv(run.value(), good.toStdString()).ok());
+    const QString bad = fx.dir.filePath(QStringLiteral("broken.csv"));
+    {
+      QFile f(bad);
+      QVERIFY(f.open(QIODevice::WriteOnly));
+      f.write("# format: tactile-run 1\nstep,x\n1,2,3\n");
+    }
+    MainWindow window;
+    window.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&window));
+    QVERIFY(window.openDatabase(QString::fromStdString(fx.dbPath)).ok());
+    auto* table = window.runList()->table();
+    QCOMPARE(table->model()->rowCount(), 1);
+    window.importRuns({good, bad});
+    QTRY_COMPARE_WITH_TIMEOUT(table->model()->rowCount(), 2, 10000);
+    // The broken file is reported with its name, and the good one was kept.
+    QTRY_VERIFY(window.lastError().contains(QStringLiteral("broken.csv")));
+    QVERIFY(fx.workspace->database().findRun("extra").ok());
+    // The filter narrows the list.
+    window.runList()->setFilterText(QStringLiteral("extra"));
+    QCOMPARE(table->model()->rowCount(), 1);
   }
 
   void badDatabaseIsAnErrorAndChangesNothing() {
