@@ -47,6 +47,35 @@ TEST(Metrics, AccuracyBalancedAccuracyMacroF1) {
   EXPECT_NEAR(*r.recallOf(C), 0.5, 1e-15);
 }
 
+// Two raters, 50 samples: po = 35/50 = 0.7; pe = (25*30 + 25*20) / 50^2 = 0.5; kappa = 0.4.
+TEST(Metrics, CohensKappaKnownAnswer) {
+  ConfusionMatrix c;
+  c.add(ContactClass::Wall, ContactClass::Wall, 20);
+  c.add(ContactClass::Wall, ContactClass::Corner, 5);
+  c.add(ContactClass::Corner, ContactClass::Wall, 10);
+  c.add(ContactClass::Corner, ContactClass::Corner, 15);
+  ASSERT_TRUE(cohensKappa(c).has_value());
+  EXPECT_NEAR(*cohensKappa(c), 0.4, 1e-12);
+}
+
+TEST(Metrics, CohensKappaPerfectAndChanceAndDegenerate) {
+  ConfusionMatrix perfect;
+  perfect.add(ContactClass::Wall, ContactClass::Wall, 7);
+  perfect.add(ContactClass::NoContact, ContactClass::NoContact, 3);
+  EXPECT_DOUBLE_EQ(*cohensKappa(perfect), 1.0);
+  // Agreement no better than chance: kappa 0.
+  ConfusionMatrix chance;
+  for (ContactClass t : {ContactClass::Wall, ContactClass::Corner})
+    for (ContactClass p : {ContactClass::Wall, ContactClass::Corner})
+      chance.add(t, p, 10);
+  EXPECT_NEAR(*cohensKappa(chance), 0.0, 1e-12);
+  // No samples, and both raters using one class throughout: undefined, never NaN.
+  EXPECT_FALSE(cohensKappa(ConfusionMatrix{}).has_value());
+  ConfusionMatrix single;
+  single.add(ContactClass::Wall, ContactClass::Wall, 12);
+  EXPECT_FALSE(cohensKappa(single).has_value());
+}
+
 TEST(Metrics, EmptyConfusionHasNoNaN) {
   const Metrics r = computeMetrics(ConfusionMatrix());
   EXPECT_EQ(r.total, 0u);

@@ -1,6 +1,7 @@
 // The workbench's models and undo commands without any widget: the run session's cursor and
 // selection, label edits written to the database at once, and undo/redo restoring exactly what
 // an edit replaced.
+#include <QFile>
 #include <QSignalSpy>
 #include <QUndoStack>
 #include <QtTest>
@@ -9,6 +10,7 @@
 #include "app/gui/runs/run_list_model.h"
 #include "app/gui/runs/run_session_model.h"
 #include "tests/app/gui_fixture.h"
+#include "workspace/workspace.h"
 
 using tactile::ContactClass;
 using tactile::SensorGroup;
@@ -164,6 +166,81 @@ class GuiCoreTest : public QObject {
     QVERIFY(fx.workspace->database().deleteLabelSet(labels.setId()).ok());
     QVERIFY(!labels.label({SensorGroup::Back}, 1, 5, ContactClass::Wall).ok());
     QVERIFY(!labels.undoStack()->canUndo() || labels.undoStack()->command(0)->childCount() == 0);
+  }
+
+  void labelSetsSaveAsExportAndImport() {
+    GuiFixture fx(300);
+    RunSession session;
+    session.setWorkspace(fx.workspace.get());
+    QVERIFY(session.open(fx.runName).ok());
+    LabelModel labels;
+    labels.setWorkspace(fx.workspace.get());
+    QVERIFY(labels.createSet("first").ok());
+    labels.setRun(session.info().id, session.info().name, session.stepCount());
+    QVERIFY(labels.label({SensorGroup::Right}, 30, 80, ContactClass::Wall).ok());
+    QVERIFY(!labels.createSet("first").ok());  // the name is taken
+    QCOMPARE(labels.setName(), std::string("first"));
+    // Save As copies the set and continues in the copy; the original keeps its segment.
+    QVERIFY(labels.saveSetAs("second").ok());
+    QCOMPARE(labels.setName(), std::string("second"));
+    QVERIFY(labels.label({SensorGroup::Right}, 81, 90, ContactClass::Corner).ok());
+    QCOMPARE(stored(fx, labels.setId(), SensorGroup::Right).size(), std::size_t{2});
+    auto first = fx.workspace->database().findLabelSet("first");
+    QVERIFY(first.ok());
+    QCOMPARE(stored(fx, first->id, SensorGroup::Right).size(), std::size_t{1});
+    // Export, then import into a fresh set: the same segments.
+    const std::string file = fx.dir.filePath(QStringLiteral("second.csv")).toStdString();
+    QVERIFY(labels.exportFile(file).ok());
+    QVERIFY(labels.createSet("third").ok());
+    auto read = labels.importFile(file);
+    QVERIFY2(read.ok(), read.ok() ? "" : read.errorText().c_str());
+    QCOMPARE(read.value(), 2);
+    QCOMPARE(labels.segments(SensorGroup::Right).size(), std::size_t{2});
+    QCOMPARE(labels.segments(SensorGroup::Right)[1].cls, ContactClass::Corner);
+    // A broken file changes nothing and names the file.
+    const QString bad = fx.dir.filePath(QStringLiteral("bad.csv"));
+    {
+      QFile f(bad);
+      QVERIFY(f.open(QIODevice::WriteOnly));
+      f.write("run,group,first_step,last_step,class\nroom1_demo,R,5,1,Wall\n");
+    }
+    auto refused = labels.importFile(bad.toStdString());
+    QVERIFY(!refused.ok());
+    QVERIFY(QString::fromStdString(refused.errorText()).contains(QStringLiteral("bad.csv")));
+    QCOMPARE(labels.segments(SensorGroup::Right).size(), std::size_t{2});
+  }
+
+  void truthAgreementCountsLabelledStepsAndKappa() {
+    GuiFixture fx(400);
+    RunSession session;
+    session.setWorkspace(fx.workspace.get());
+    QVERIFY(session.open(fx.runName).ok());
+    const auto& track = session.track();
+    // Labels equal to the truth over steps 0..199 of group R agree fully.
+    std::vector<tactile::storage::LabelSegment> segments;
+    for (std::int64_t k = 0; k < 200; ++k) {
+      tactile::storage::LabelSegment s;
+      s.group = SensorGroup::Right;
+      s.firstStep = s.lastStep = k;
+      s.cls = track.truthAt(static_cast<std::size_t>(k), SensorGroup::Right);
+      segments.push_back(s);
+    }
+    auto rows = tactile::workspace::truthAgreement(track, segments);
+    QCOMPARE(rows.size(), std::size_t{8});
+    const auto& r = rows[static_cast<std::size_t>(tactile::groupIndex(SensorGroup::Right))];
+    QCOMPARE(r.comparedSteps, 200);
+    QCOMPARE(r.agreeingSteps, 200);
+    QCOMPARE(*r.percent, 100.0);
+    QVERIFY(!rows[0].percent.has_value());  // nothing labelled in F
+    // One wrong class on every fourth step lowers both figures.
+    for (std::size_t i = 0; i < segments.size(); i += 4)
+      segments[i].cls =
+          segments[i].cls == ContactClass::DeadPath ? ContactClass::Wall : ContactClass::DeadPath;
+    rows = tactile::workspace::truthAgreement(track, segments);
+    const auto& worse = rows[static_cast<std::size_t>(tactile::groupIndex(SensorGroup::Right))];
+    QCOMPARE(*worse.percent, 75.0);
+    QVERIFY(worse.kappa.has_value());
+    QVERIFY(*worse.kappa < 0.9);
   }
 
   void runListShowsCoverageOfTheSet() {
