@@ -74,6 +74,7 @@ MainWindow::MainWindow(QWidget* parent)
   });
   connect(labels_, &LabelModel::labelSetChanged, this, [this] {
     updateStatus();
+    if (workspace_) saveSettings();
     (void)runModel_->reloadCoverage(workspace_.get(), labels_->setId());
   });
   connect(labels_->undoStack(), &QUndoStack::indexChanged, this,
@@ -264,6 +265,9 @@ Status MainWindow::openDatabase(const QString& path, bool create) {
   auto opened = workspace::Workspace::open(path.toStdString(), options);
   if (!opened) return opened.error();
   saveSettings();  // the old database's last run and step
+  // Until the new database's run and set are restored, what the models pass through on the way
+  // (no set, step 0) must not overwrite what is remembered.
+  switching_ = true;
   session_->setWorkspace(nullptr);
   labels_->setWorkspace(nullptr);
   workspace_ = std::move(opened.value());
@@ -290,6 +294,8 @@ Status MainWindow::openDatabase(const QString& path, bool create) {
   } else if (runModel_->rowCount() > 0) {
     (void)openRun(QString::fromStdString(runModel_->run(0).name));
   }
+  switching_ = false;
+  saveSettings();
   updateTitle();
   showMessage(tr("Opened %1").arg(dbPath_));
   return Status::success();
@@ -302,6 +308,8 @@ Status MainWindow::openRun(const QString& name) {
   runList_->selectRun(session_->info().name);
   timeline_->showWholeRun();
   lastError_.clear();
+  // Remembered at once, so a crash or a killed session still comes back to this run.
+  saveSettings();
   return Status::success();
 }
 
@@ -476,7 +484,7 @@ void MainWindow::saveSettings() const {
   labelPanel_->saveSettings(settings);
   settings.setValue(keys::kPlaySpeed, steps_->speed());
   settings.setValue(keys::kRunFilter, runList_->filterText());
-  if (!dbPath_.isEmpty()) {
+  if (!dbPath_.isEmpty() && !switching_) {
     settings.beginGroup(QStringLiteral("databases/") + QString(dbPath_).replace('/', '|'));
     settings.setValue(keys::kLastLabelSet, QString::fromStdString(labels_->setName()));
     if (session_->isOpen()) {

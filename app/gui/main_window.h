@@ -83,6 +83,7 @@ class MainWindow : public QMainWindow {
   std::unique_ptr<workspace::Workspace> workspace_;
   QString dbPath_;
   QString lastError_;
+  bool switching_ = false;  // inside openDatabase
   RunSession* session_;
   LabelModel* labels_;
   RunListModel* runModel_;

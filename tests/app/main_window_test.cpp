@@ -256,6 +256,29 @@ class MainWindowTest : public QObject {
     QCOMPARE(table->model()->rowCount(), 1);
   }
 
+  // Regression: the last run was remembered only on a clean close, so a killed session came back
+  // to the first run.
+  void theRunOpenedIsRememberedWithoutAClose() {
+    GuiFixture fx(200);
+    auto run = fx.workspace->loadRun(fx.runName);
+    QVERIFY(run.ok());
+    run->setMeta("subject", "second");
+    QCOMPARE(fx.workspace->database().importRun(run.value(), "zz_second").status,
+             tactile::storage::ImportStatus::Imported);
+    {
+      MainWindow window;
+      QVERIFY(window.openDatabase(QString::fromStdString(fx.dbPath)).ok());
+      QCOMPARE(window.session()->info().name, fx.runName);  // the first by name
+      QVERIFY(window.openRun(QStringLiteral("zz_second")).ok());
+      QVERIFY(window.labels()->createSet("later").ok());
+      // No close(): the window is destroyed as if the session were killed.
+    }
+    MainWindow again;
+    QVERIFY(again.openDatabase(QString::fromStdString(fx.dbPath)).ok());
+    QCOMPARE(again.session()->info().name, std::string("zz_second"));
+    QCOMPARE(again.labels()->setName(), std::string("later"));
+  }
+
   void badDatabaseIsAnErrorAndChangesNothing() {
     MainWindow window;
     QTemporaryDir dir;

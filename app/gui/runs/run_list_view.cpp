@@ -41,7 +41,9 @@ RunListView::RunListView(RunListModel* model, QWidget* parent) : QWidget(parent)
   layout->addWidget(filter_);
   layout->addWidget(table_);
 
-  connect(filter_, &QLineEdit::textChanged, proxy_, &QSortFilterProxyModel::setFilterFixedString);
+  // Spaces around what was typed or pasted are never part of a run's name.
+  connect(filter_, &QLineEdit::textChanged, this,
+          [this](const QString& text) { proxy_->setFilterFixedString(text.trimmed()); });
   auto choose = [this](const QModelIndex& index) {
     if (!index.isValid()) return;
     const QModelIndex source = proxy_->mapToSource(index);
