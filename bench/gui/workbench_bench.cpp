@@ -24,6 +24,7 @@
 #include <string>
 
 #include "app/gui/main_window.h"
+#include "app/gui/runs/route_view.h"
 #include "app/gui/runs/run_session_model.h"
 #include "app/gui/runs/timeline_view.h"
 #include "storage/run_database.h"
@@ -134,6 +135,16 @@ void BM_CursorOneStep(benchmark::State& state) {
   }
 }
 
+// The same with the route view following the robot in its close-up (it redraws the visible part of
+// the route on every move instead of reusing a cached picture).
+void BM_CursorOneStepCloseUp(benchmark::State& state) {
+  MainWindow* w = window();
+  w->route()->setWholeScene(false);
+  settle();
+  BM_CursorOneStep(state);
+  w->route()->setWholeScene(true);
+}
+
 void BM_ZoomTimelinesToWholeRun(benchmark::State& state) {
   MainWindow* w = window();
   tactile::gui::TimelineView* t = w->timeline();
@@ -149,9 +160,31 @@ void BM_ZoomTimelinesToWholeRun(benchmark::State& state) {
   }
 }
 
+// The baseline: what a viewer that loads whole runs would spend before drawing anything (every
+// step's 88 sensor values decoded into memory). Registered last: it leaves the process holding
+// the run's memory.
+void BM_BaselineLoadWholeRun(benchmark::State& state) {
+  auto db = tactile::storage::RunDatabase::open(benchDatabase().toStdString(),
+                                                tactile::storage::OpenMode::ReadOnly);
+  if (!db) {
+    state.SkipWithError("cannot open the database");
+    return;
+  }
+  auto info = db.value()->findRun("long");
+  for (auto _ : state) {
+    auto run = db.value()->loadRun(info->id);
+    benchmark::DoNotOptimize(run.ok());
+    state.counters["run_mib"] =
+        run.ok() ? static_cast<double>(run->sensors.size() * sizeof(double)) / (1 << 20) : 0.0;
+  }
+  state.counters["peak_rss_mib"] = memoryMiB("VmHWM:");
+}
+
 BENCHMARK(BM_OpenRunToFirstPaint)->Unit(benchmark::kMillisecond)->Iterations(3)->UseRealTime();
 BENCHMARK(BM_CursorOneStep)->Unit(benchmark::kMillisecond)->Iterations(200)->UseRealTime();
+BENCHMARK(BM_CursorOneStepCloseUp)->Unit(benchmark::kMillisecond)->Iterations(200)->UseRealTime();
 BENCHMARK(BM_ZoomTimelinesToWholeRun)->Unit(benchmark::kMillisecond)->Iterations(10)->UseRealTime();
+BENCHMARK(BM_BaselineLoadWholeRun)->Unit(benchmark::kMillisecond)->Iterations(1)->UseRealTime();
 
 }  // namespace
 
