@@ -5,6 +5,7 @@
 #include <QDockWidget>
 #include <QFile>
 #include <QMenuBar>
+#include <QMimeData>
 #include <QSettings>
 #include <QSignalSpy>
 #include <QSpinBox>
@@ -277,6 +278,35 @@ class MainWindowTest : public QObject {
     QVERIFY(again.openDatabase(QString::fromStdString(fx.dbPath)).ok());
     QCOMPARE(again.session()->info().name, std::string("zz_second"));
     QCOMPARE(again.labels()->setName(), std::string("later"));
+  }
+
+  void droppingADatabaseOpensItAndDroppingRunFilesImportsThem() {
+    GuiFixture fx(150);
+    auto run = fx.workspace->loadRun(fx.runName);
+    QVERIFY(run.ok());
+    run->setMeta("subject", "dropped");
+    const QString csv = fx.dir.filePath(QStringLiteral("dropped.csv"));
+    QVERIFY(tactile::writeRunCsv(run.value(), csv.toStdString()).ok());
+    // The event handler as the drag and drop machinery calls it.
+    struct DropTarget : MainWindow {
+      using MainWindow::dropEvent;
+    } window;
+    window.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&window));
+    auto drop = [&window](const QString& file) {
+      QMimeData mime;
+      mime.setUrls({QUrl::fromLocalFile(file)});
+      QDropEvent event(QPointF(100, 100), Qt::CopyAction, &mime, Qt::LeftButton, Qt::NoModifier);
+      window.dropEvent(&event);
+    };
+    drop(QString::fromStdString(fx.dbPath));
+    QVERIFY2(window.lastError().isEmpty(), qPrintable(window.lastError()));
+    QCOMPARE(window.databasePath(),
+             QFileInfo(QString::fromStdString(fx.dbPath)).absoluteFilePath());
+    QCOMPARE(window.session()->info().name, fx.runName);
+    drop(csv);
+    QTRY_COMPARE_WITH_TIMEOUT(window.runList()->table()->model()->rowCount(), 2, 10000);
+    QVERIFY(fx.workspace->database().findRun("dropped").ok());
   }
 
   void badDatabaseIsAnErrorAndChangesNothing() {
