@@ -116,7 +116,7 @@ void MainWindow::createViews() {
       dock(tr("Labels"), QStringLiteral("labelsDock"), labelPanel_, Qt::RightDockWidgetArea);
   splitDockWidget(runs, route, Qt::Vertical);
   resizeDocks({runs, route}, {260, 560}, Qt::Vertical);
-  resizeDocks({runs, labels}, {430, 280}, Qt::Horizontal);
+  resizeDocks({runs, labels}, {500, 300}, Qt::Horizontal);
 
   steps_ = new StepControlsView(session_, this);
   QToolBar* bar = addToolBar(tr("Steps"));
