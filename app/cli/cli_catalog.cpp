@@ -165,15 +165,15 @@ struct CatalogArgs {
 };
 
 // `VERB rename --db DB OLD NEW` and `VERB delete --db DB NAME...` (names as `A B` or `A,B`).
-void addRenameDelete(CLI::App* parent, const char* what,
+void addRenameDelete(CLI::App* parent, const std::string& what, const std::string& contents,
                      int (*rename)(const std::string&, const std::string&, const std::string&,
                                    bool),
                      int (*remove)(const std::string&, const std::vector<std::string>&, bool)) {
   auto renameArgs = std::make_shared<CatalogArgs>();
-  CLI::App* ren = parent->add_subcommand("rename", std::string("Rename a ") + what);
+  CLI::App* ren =
+      parent->add_subcommand("rename", "Rename a " + what + " (with its " + contents + ")");
   ren->add_option("--db", renameArgs->db, "Database file (must exist)")->required();
-  ren->add_option("names", renameArgs->names,
-                  std::string("The ") + what + "'s name, then the new name")
+  ren->add_option("names", renameArgs->names, "The " + what + "'s name, then the new name")
       ->required()
       ->expected(2);
   ren->add_flag("--json", renameArgs->json, R"(Print {"renamed":{"from","to"}})");
@@ -182,9 +182,8 @@ void addRenameDelete(CLI::App* parent, const char* what,
   });
 
   auto deleteArgs = std::make_shared<CatalogArgs>();
-  const std::string deleteHelp =
-      std::string("Delete ") + what +
-      "s by name, all in one transaction (an unknown name deletes nothing)";
+  const std::string deleteHelp = "Delete " + what + "s by name with their " + contents +
+                                 ", all in one transaction (an unknown name deletes nothing)";
   CLI::App* del = parent->add_subcommand("delete", deleteHelp);
   del->add_option("--db", deleteArgs->db, "Database file (must exist)")->required();
   del->add_option("names", deleteArgs->names, std::string("Names (A B or A,B)"))
@@ -210,8 +209,8 @@ void registerCatalogVerbs(CLI::App& app) {
     list->add_flag("--json", listArgs->json,
                    R"(Print {"runs":[{"name","id","steps","scene","label_sets"}]})");
     setAction(list, [listArgs] { return runRunsList(listArgs->db, listArgs->json); });
-    addRenameDelete(runs, "run (with its steps, truth, summaries and label segments)",
-                    runRunsRename, runRunsDelete);
+    addRenameDelete(runs, "run", "steps, truth, summaries and label segments", runRunsRename,
+                    runRunsDelete);
   }
   {
     CLI::App* labels = app.add_subcommand(
@@ -225,7 +224,7 @@ void registerCatalogVerbs(CLI::App& app) {
     list->add_flag("--json", listArgs->json,
                    R"(Print {"label_sets":[{"name","id","annotator","segments","runs"}]})");
     setAction(list, [listArgs] { return runLabelsList(listArgs->db, listArgs->json); });
-    addRenameDelete(labels, "label set (with its segments)", runLabelsRename, runLabelsDelete);
+    addRenameDelete(labels, "label set", "segments", runLabelsRename, runLabelsDelete);
 
     struct LabelArgs {
       std::string db, set, file;
