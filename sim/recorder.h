@@ -36,7 +36,11 @@ class Recorder {
     run_.setMeta("outcome", std::string(runOutcomeName(outcome)));
   }
   const RunData& run() const { return run_; }
-  RunData take() { return std::move(run_); }
+  // The run, its truth smoothed over the whole run (smoothTruth in sim/truth.h).
+  RunData take() {
+    smoothTruth(run_.truth, run_.stepCount());
+    return std::move(run_);
+  }
 
  private:
   RunData run_;

@@ -6,7 +6,10 @@
 namespace tactile::sim {
 
 Simulator::Simulator(std::shared_ptr<const World> world, SimConfig config)
-    : world_(std::move(world)), config_(config), domes_(domePlacements(config.geometry)) {
+    : world_(std::move(world)),
+      config_(config),
+      domes_(domePlacements(config.geometry)),
+      truth_(config.geometry) {
   const RobotGeometry& g = config_.geometry;
   cornerRadius_ = g.cornerRadiusUnits;
   innerLo_ = Vec2(g.backX() + cornerRadius_, -g.halfWidth() + cornerRadius_);
@@ -194,7 +197,12 @@ void Simulator::step(double v, double omega) {
   gatherCandidates(pose_, motion + r);
   const double envelope = std::max(r - kMaxNormal, 0.0);
   Pose2d target = integratePose(pose_, v, omega, dt);
+  // A blocked step moves as far as is free: to the last sub-pose before the first blocked one,
+  // so the run records the contact that stopped the robot (sub-poses are at most
+  // maxSubstepUnits apart, so the robot ends within that distance of the blocking pose).
   bool blocked = false;
+  Pose2d lastFree = pose_;
+  bool moved = false;
   if (motion > 0.0) {
     // Sub-steps unless the whole motion fits in the clearance around the body.
     transformCandidates(pose_);
@@ -206,7 +214,13 @@ void Simulator::step(double v, double omega) {
     if (!(motion + envelope < clearance)) {
       const int sub = std::max(1, static_cast<int>(std::ceil(motion / config_.maxSubstepUnits)));
       for (int i = 1; i < sub && !blocked; ++i) {
-        blocked = blockedAt(integratePose(pose_, v, omega, dt * i / sub));
+        const Pose2d at = integratePose(pose_, v, omega, dt * i / sub);
+        if (blockedAt(at)) {
+          blocked = true;
+        } else {
+          lastFree = at;
+          moved = true;
+        }
       }
     }
   }
@@ -215,14 +229,20 @@ void Simulator::step(double v, double omega) {
     evaluateInto(target, next);
     blocked = next.blocked;
   }
-  if (blocked) {
-    // Cancelled: pose kept; the contact at the kept pose is unchanged.
-    blocked_ = true;
-  } else {
+  if (!blocked) {
     blocked_ = false;
     target.theta = wrapAngle(target.theta);
     pose_ = target;
     contact_ = next;
+  } else {
+    blocked_ = true;
+    if (moved) {
+      // The sub-poses share the candidates gathered for the whole sweep.
+      lastFree.theta = wrapAngle(lastFree.theta);
+      pose_ = lastFree;
+      evaluateInto(pose_, contact_);
+    }
+    // Otherwise the very first sub-pose was blocked: the pose and its contact are kept.
   }
   // Spring-damper c x' + k x = k u, implicit Euler: x += a (u - x), a = dt / (tau + dt).
   const double a = dt / (config_.filterTauSeconds + dt);
@@ -236,7 +256,7 @@ void Simulator::step(double v, double omega) {
     s = std::clamp(s, -kMaxShear, kMaxShear);
     if (contact_.domes[k].edge < 0 && std::abs(n) < zero && std::abs(s) < zero) n = s = 0.0;
   }
-  truth_.update(*world_, contact_, sensors_.data());
+  truth_.update(*world_, pose_, contact_, sensors_.data());
   ++steps_;
 }
 

@@ -57,9 +57,10 @@ class Simulator {
   bool reset(const Pose2d& pose);
 
   // One step of dt: tries to move by (v, omega) (non-finite values count as 0; clamped to
-  // kMaxSpeedUnits and kMaxTurnRate). If any sub-pose along the way is blocked, the
-  // step is cancelled (pose kept, blocked() true). Then the dome values are filtered toward the
-  // raw contact at the resulting pose and the ground truth is updated.
+  // kMaxSpeedUnits and kMaxTurnRate). If a sub-pose along the way is blocked, the robot stops at
+  // the last free sub-pose before it (blocked() true; the pose is kept when even the first
+  // sub-pose is blocked). Then the dome values are filtered toward the raw contact at the
+  // resulting pose and the ground truth is updated.
   void step(double v, double omega);
 
   // Raw contact at an arbitrary pose (does not change the state).

@@ -1,32 +1,33 @@
 // Ground truth per sensor group per step, from the geometry (rules in docs/sim.md#ground-truth).
 //
-// Inputs per step: for every dome, whether it touches an obstacle (raw, unfiltered) and the
-// feature it touches: the interior of an edge, or a vertex (convex = sticking out into free
-// space, concave, or flat = a nearly straight joint); and the recorded (filtered) values.
-// Rules for group g at step k, first match wins:
+// Inputs per step: the robot's pose, for every dome the obstacle edge it touches (raw, unfiltered)
+// and whether its closest point is an end vertex, and the recorded (filtered) values. Rules for
+// group g at step k, first match wins:
 //   1. NoContact   all recorded values of g are 0 (the same rule the classifiers use).
-//   2. LeavingWall no dome of g touches anything any more, but values are still decaying
-//                  (a decaying Corner or DeadPath keeps its class instead).
-//   3. DeadPath    g is F, FLC, FRC, L or R and touches something, while the front edge F, the
-//                  left side L and the right side R all touch: a pocket the robot can only back
-//                  out of.
-//   4. LeavingWall g was Wall within the last kLeavingWallSteps steps on edge e, touches nothing
-//                  but e and its end vertices, and either touches a convex end vertex of e
-//                  (sliding off the wall's end), or g was already LeavingWall at step k-1 and no
-//                  more domes touch than then (sticky until the contact ends or grows again).
-//                  Turning away from a wall shows as rule 2 once the domes are released.
-//   5. Corner      g touches a convex or concave vertex, or two edges whose directions differ by
-//                  more than kFlatVertexDegrees (a concave corner between walls).
+//   2. (tail)      no dome of g touches any more, values still decaying: the class g had at its
+//                  last touching step (a released Wall stays Wall until the values reach 0).
+//   3. DeadPath    g is F, FLC, FRC, L or R and touches, while F, L and R all touch: a pocket the
+//                  robot can only back out of ("cannot move anywhere but retrace its steps").
+//   4. LeavingWall g is L, R, RLC or RRC; all its touching domes are on one wall (edge e, or e's
+//                  ends); a convex end vertex v of e lies within reach of one of them (dome radius
+//                  plus kFeatureMarginUnits); and v moved toward the rear in the robot's frame
+//                  since the previous step (the robot is sliding off the wall's end).
+//   5. Corner      a non-flat vertex (an end of an edge g touches) lies within reach of a touching
+//                  dome of g, or g touches two edges whose directions differ by more than
+//                  kFlatVertexDegrees.
 //   6. Wall        otherwise: all contacts on one straight wall.
-// Contact features come from the closest obstacle point of each dome (sim/simulator.h), so a
-// dome sees one feature; a flat vertex (edges turning by less than kFlatVertexDegrees) counts as
-// part of the wall.
+// Then, over the whole run (smoothTruth), a segment shorter than kMinTruthSegmentSteps inside one
+// contact episode of a group takes the class of the segment before it.
 #pragma once
 
 #include <array>
 #include <cstddef>
+#include <optional>
+#include <vector>
 
 #include "run/contact_class.h"
+#include "run/robot_geometry.h"
+#include "run/run.h"
 #include "run/sensor_layout.h"
 
 namespace tactile::sim {
@@ -34,25 +35,38 @@ namespace tactile::sim {
 class World;
 struct PoseContact;
 
-inline constexpr int kLeavingWallSteps = 20;
+// How far beyond the dome's own radius a vertex still counts as "at" the dome: a dome 6 units in
+// radius sees a vertex up to 10 units from its centre.
+inline constexpr double kFeatureMarginUnits = 4.0;
+// Shorter segments within one contact episode are merged into the segment before them.
+inline constexpr int kMinTruthSegmentSteps = 3;
 
 class TruthTracker {
  public:
+  explicit TruthTracker(const RobotGeometry& geometry = {});
   void reset();
-  // Classifies step `contact` (raw) with recorded values `values` (kValuesPerStep).
-  void update(const World& world, const PoseContact& contact, const double* values);
+  // Classifies the step whose raw contact at `pose` is `contact`, with recorded values `values`
+  // (kValuesPerStep).
+  void update(const World& world, const Pose2d& pose, const PoseContact& contact,
+              const double* values);
   const std::array<ContactClass, kGroupCount>& classes() const { return classes_; }
 
  private:
-  struct GroupHistory {
-    long long lastWallStep = -1000000;
-    int wallEdge = -1;
-    int wallCount = 0;
-    int leavingCount = -1;  // domes touching at the last LeavingWall step; -1 when not leaving
-  };
+  ContactClass touching(const World& world, const Pose2d& pose, const PoseContact& contact,
+                        const GroupInfo& info, ContactClass previous) const;
+
+  RobotGeometry geometry_;
+  std::array<DomePlacement, kSensorCount> domes_;
   std::array<ContactClass, kGroupCount> classes_{};
-  std::array<GroupHistory, kGroupCount> history_{};
-  long long step_ = 0;
+  // The class each group had at its last step with a touching dome (for decay tails).
+  std::array<ContactClass, kGroupCount> lastTouching_{};
+  std::optional<Pose2d> previousPose_;
 };
+
+// Applies the merge rule to a run's truth (steps * kGroupCount classes, step-major as in
+// RunData::truth): within each contact episode (maximal steps of one group not NoContact), a
+// segment shorter than kMinTruthSegmentSteps that is not the episode's first takes the class of
+// the segment before it.
+void smoothTruth(std::vector<ContactClass>& truth, std::size_t steps);
 
 }  // namespace tactile::sim

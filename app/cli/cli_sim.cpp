@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <cstdio>
 #include <filesystem>
+#include <iomanip>
 #include <map>
 #include <memory>
 #include <mutex>
@@ -19,6 +20,7 @@
 #include "run/run_csv.h"
 #include "sim/recorder.h"
 #include "sim/scene_source.h"
+#include "sim/truth_stats.h"
 
 namespace tactile::cli {
 namespace {
@@ -58,6 +60,53 @@ std::string sceneLabel(const std::string& spec, const World& world) {
   return world.scene().name;
 }
 
+// Steps of each class per group: {"F":{"NoContact":n,...},...}.
+nlohmann::json classStepsJson(const TruthStats& stats) {
+  nlohmann::json out = nlohmann::json::object();
+  for (const GroupInfo& info : kSensorGroups) {
+    nlohmann::json row = nlohmann::json::object();
+    for (int c = 0; c < kContactClassCount; ++c) {
+      row[std::string(contactClassName(static_cast<ContactClass>(c)))] =
+          stats.classSteps[static_cast<std::size_t>(groupIndex(info.group))]
+                          [static_cast<std::size_t>(c)];
+    }
+    out[std::string(info.shortName)] = row;
+  }
+  return out;
+}
+
+nlohmann::json truthQualityJson(const TruthStats& stats) {
+  nlohmann::json changes = nlohmann::json::object();
+  for (const GroupInfo& info : kSensorGroups)
+    changes[std::string(info.shortName)] = stats.changesPer100ContactSteps(info.group);
+  return {{"changes_per_100_contact_steps", changes},
+          {"blocked_steps", stats.blockedSteps},
+          {"blocked_without_readings", stats.blockedWithoutReadings}};
+}
+
+// The class table printed after a simulation: steps per group and class, and the flicker.
+std::string classTable(const TruthStats& stats) {
+  std::ostringstream o;
+  o << "truth steps per group:\n  group";
+  for (int c = 0; c < kContactClassCount; ++c) {
+    o << ' ' << std::setw(12) << contactClassName(static_cast<ContactClass>(c));
+  }
+  o << "  changes/100\n";
+  for (const GroupInfo& info : kSensorGroups) {
+    o << "  " << std::setw(5) << info.shortName;
+    for (int c = 0; c < kContactClassCount; ++c) {
+      o << ' ' << std::setw(12)
+        << stats.classSteps[static_cast<std::size_t>(groupIndex(info.group))]
+                           [static_cast<std::size_t>(c)];
+    }
+    o << "  " << std::fixed << std::setprecision(2) << std::setw(11)
+      << stats.changesPer100ContactSteps(info.group) << '\n';
+  }
+  o << "blocked steps: " << stats.blockedSteps
+    << ", without any reading: " << stats.blockedWithoutReadings << '\n';
+  return o.str();
+}
+
 int runSimulate(const SimulateArgs& a) {
   if (a.steps <= 0) throw UsageError("--steps must be at least 1, got " + std::to_string(a.steps));
   if (static_cast<std::uint64_t>(a.steps) > kMaxStepsPerRun) {
@@ -93,6 +142,7 @@ int runSimulate(const SimulateArgs& a) {
   std::size_t totalSteps = 0;
   std::map<std::string, int> outcomes;
   std::vector<std::string> files;
+  TruthStats stats;
   const bool tty = isatty(2) != 0;
   if (!batch) {
     ProgressFn progress;
@@ -108,6 +158,7 @@ int runSimulate(const SimulateArgs& a) {
     const Status written = writeRunCsv(result->run, a.out);
     if (!written) throw std::runtime_error(written.errorText());
     totalSteps = result->run.stepCount();
+    stats.add(result->run);
     ++outcomes[std::string(runOutcomeName(result->outcome))];
     files.push_back(a.out);
   } else {
@@ -126,7 +177,10 @@ int runSimulate(const SimulateArgs& a) {
       const std::filesystem::path path = std::filesystem::path(a.outDir) / (a.prefix + number);
       const Status written = writeRunCsv(r.run, path);
       if (!written) return written;
+      TruthStats mine;
+      mine.add(r.run);
       std::lock_guard lock(mutex);
+      stats.merge(mine);
       files[i] = path.string();
       outcomeOf[i] = std::string(runOutcomeName(r.outcome));
       stepsOf[i] = r.run.stepCount();
@@ -163,6 +217,8 @@ int runSimulate(const SimulateArgs& a) {
     j["seconds"] = seconds;
     j["steps_per_second"] = rate;
     j["files"] = files;
+    j["class_steps"] = classStepsJson(stats);
+    j["truth"] = truthQualityJson(stats);
     std::printf("%s\n", j.dump().c_str());
   } else {
     std::ostringstream o;
@@ -174,6 +230,7 @@ int runSimulate(const SimulateArgs& a) {
       std::printf("wrote %s\n", a.out.c_str());
     else
       std::printf("wrote %lld files to %s\n", static_cast<long long>(a.runs), a.outDir.c_str());
+    if (!a.quiet) std::printf("%s", classTable(stats).c_str());
   }
   return kExitOk;
 }

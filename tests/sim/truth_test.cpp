@@ -1,6 +1,9 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <numbers>
+#include <string>
+#include <vector>
 
 #include "sim_test_util.h"
 
@@ -53,45 +56,111 @@ TEST(Truth, CornerGroupInAConcaveCornerIsCorner) {
   EXPECT_EQ(classOf(*sim, SensorGroup::Right), ContactClass::NoContact);
 }
 
-TEST(Truth, DrivingPastTheEndOfAWallIsLeavingWall) {
-  // A wall along the right side that ends at x = 1100; drive forward past its end.
-  auto sim = makeSim(roomWith({box(500, 800, 1100, 1000 - 43)}));
-  std::vector<ContactClass> seen;
-  for (int k = 0; k < 60; ++k) {
-    sim->step(50, 0);
-    ASSERT_FALSE(sim->blocked());
-    seen.push_back(classOf(*sim, SensorGroup::Right));
+// The classes a group shows, in order, with repeats collapsed ("Wall LeavingWall NoContact").
+std::string sequenceOf(const std::vector<ContactClass>& seen) {
+  std::string out;
+  ContactClass last = ContactClass::NoContact;
+  bool first = true;
+  for (ContactClass c : seen) {
+    if (!first && c == last) continue;
+    if (!out.empty()) out += ' ';
+    out += contactClassName(c);
+    last = c;
+    first = false;
   }
-  ASSERT_EQ(seen.front(), ContactClass::Wall);
-  std::string trace;
-  for (ContactClass c : seen)
-    trace += std::string(contactClassName(c)) + " ";
-  SCOPED_TRACE(trace);
-  const auto firstLeaving = std::find(seen.begin(), seen.end(), ContactClass::LeavingWall);
-  ASSERT_NE(firstLeaving, seen.end());
-  const auto firstNone = std::find(firstLeaving, seen.end(), ContactClass::NoContact);
-  ASSERT_NE(firstNone, seen.end());
-  // Wall ... Wall, LeavingWall ... LeavingWall, NoContact ...: never Corner at the wall's end.
-  EXPECT_TRUE(std::all_of(seen.begin(), firstLeaving,
-                          [](ContactClass c) { return c == ContactClass::Wall; }));
-  EXPECT_TRUE(std::all_of(firstLeaving, firstNone,
-                          [](ContactClass c) { return c == ContactClass::LeavingWall; }));
-  EXPECT_TRUE(std::all_of(firstNone, seen.end(),
-                          [](ContactClass c) { return c == ContactClass::NoContact; }));
+  return out;
 }
 
-TEST(Truth, TurningAwayFromAWallIsLeavingWall) {
-  // Default spring-damper: the released domes fade out over a few steps (rule 2).
-  auto sim = makeSim(roomWith({box(500, 800, 1500, 1000 - 43)}), SimConfig{});
-  sim->step(0, 0);
-  ASSERT_EQ(classOf(*sim, SensorGroup::Right), ContactClass::Wall);
-  bool leaving = false;
-  for (int k = 0; k < 30 && classOf(*sim, SensorGroup::Right) != ContactClass::NoContact; ++k) {
-    sim->step(30, 0.6);  // veer left, away from the wall
-    leaving = leaving || classOf(*sim, SensorGroup::Right) == ContactClass::LeavingWall;
+TEST(Truth, DrivingPastTheEndOfAWallIsWallThenLeavingWallThenNoContactAtAnySpeed) {
+  // A wall along the right side that ends at x = 1100; drive forward past its end with the
+  // default spring-damper, at speeds 10 to 60.
+  for (double speed : {10.0, 20.0, 30.0, 40.0, 50.0, 60.0}) {
+    auto sim = makeSim(roomWith({box(500, 800, 1100, 1000 - 43)}), SimConfig{});
+    std::vector<ContactClass> right;
+    std::vector<ContactClass> frontRight;
+    sim->step(0, 0);  // settle on the wall
+    for (int k = 0; k < static_cast<int>(2000 / speed); ++k) {
+      sim->step(speed, 0);
+      ASSERT_FALSE(sim->blocked());
+      right.push_back(classOf(*sim, SensorGroup::Right));
+      frontRight.push_back(classOf(*sim, SensorGroup::FrontRightCorner));
+    }
+    EXPECT_EQ(sequenceOf(right), "Wall LeavingWall NoContact") << "speed " << speed;
+    // The front corner group never leaves a wall (no such class there).
+    EXPECT_EQ(std::count(frontRight.begin(), frontRight.end(), ContactClass::LeavingWall), 0)
+        << "speed " << speed << ": " << sequenceOf(frontRight);
   }
-  EXPECT_TRUE(leaving);
-  EXPECT_EQ(classOf(*sim, SensorGroup::Right), ContactClass::NoContact);
+}
+
+TEST(Truth, TouchingAndReleasingAWallGivesOnlyWallAndNoContact) {
+  // Default spring-damper: the released domes fade out over a few steps and keep their class.
+  for (double omega : {0.4, 0.6}) {
+    auto sim = makeSim(roomWith({box(500, 800, 1500, 1000 - 43)}), SimConfig{});
+    std::vector<ContactClass> seen;
+    sim->step(0, 0);
+    seen.push_back(classOf(*sim, SensorGroup::Right));
+    for (int k = 0; k < 30; ++k) {
+      sim->step(30, omega);  // veer left, away from the wall
+      seen.push_back(classOf(*sim, SensorGroup::Right));
+    }
+    EXPECT_EQ(sequenceOf(seen), "Wall NoContact") << "omega " << omega;
+  }
+}
+
+TEST(Truth, HexagonTipIsCornerOnEveryContactStepWhileTurningInPlace) {
+  // A hexagon whose tip sits 2 units ahead of the middle of the front edge; the robot turns in
+  // place one way and back, its front domes rolling over the tip.
+  const double tip = 1000 + 105 + 6 - 4;  // 4 units of compression on the middle dome
+  Obstacle hexagon;
+  for (int i = 0; i < 6; ++i) {
+    const double a = std::numbers::pi + i * std::numbers::pi / 3;
+    hexagon.polygon.push_back(Vec2(tip + 50 + 50 * std::cos(a), 1000 + 50 * std::sin(a)));
+  }
+  auto sim = makeSim(roomWith({hexagon}), SimConfig{});
+  int contactSteps = 0;
+  for (int k = 0; k < 40; ++k) {
+    sim->step(0, k < 20 ? 0.05 : -0.05);
+    const ContactClass f = classOf(*sim, SensorGroup::Front);
+    if (f == ContactClass::NoContact) continue;
+    ++contactSteps;
+    EXPECT_EQ(f, ContactClass::Corner) << "step " << k;
+  }
+  EXPECT_GT(contactSteps, 30);
+}
+
+TEST(Truth, SmoothingMergesShortSegmentsInsideAContactEpisode) {
+  // One group's classes over 20 steps; the other groups stay NoContact.
+  const std::string in = "..WWWLWWCCCWLW..LLW.";
+  const std::string out = "..WWWWWWCCCCCC..LLL.";
+  const auto decode = [](char c) {
+    switch (c) {
+      case 'W':
+        return ContactClass::Wall;
+      case 'C':
+        return ContactClass::Corner;
+      case 'L':
+        return ContactClass::LeavingWall;
+      default:
+        return ContactClass::NoContact;
+    }
+  };
+  std::vector<ContactClass> truth(in.size() * kGroupCount, ContactClass::NoContact);
+  for (std::size_t k = 0; k < in.size(); ++k)
+    truth[k * kGroupCount + 2] = decode(in[k]);
+  smoothTruth(truth, in.size());
+  std::string got;
+  for (std::size_t k = 0; k < in.size(); ++k) {
+    const ContactClass c = truth[k * kGroupCount + 2];
+    got += c == ContactClass::Wall          ? 'W'
+           : c == ContactClass::Corner      ? 'C'
+           : c == ContactClass::LeavingWall ? 'L'
+                                            : '.';
+    for (int g = 0; g < kGroupCount; ++g) {
+      if (g == 2) continue;
+      EXPECT_EQ(truth[k * kGroupCount + g], ContactClass::NoContact);
+    }
+  }
+  EXPECT_EQ(got, out);
 }
 
 TEST(Truth, FadingCornerContactStaysCorner) {
