@@ -16,10 +16,12 @@
 #include <vector>
 
 #include "app/cli/cli_common.h"
+#include "base/file_text.h"
 #include "run/builtin_scenes.h"
 #include "run/run_csv.h"
 #include "sim/recorder.h"
 #include "sim/scene_source.h"
+#include "sim/training_plan.h"
 #include "sim/truth_stats.h"
 
 namespace tactile::cli {
@@ -29,6 +31,7 @@ using namespace tactile::sim;
 
 struct SimulateArgs {
   std::string scene;
+  std::string plan;
   std::string driver = "wall-follow";
   std::int64_t steps = 5000;
   std::uint64_t seed = 1;
@@ -107,7 +110,91 @@ std::string classTable(const TruthStats& stats) {
   return o.str();
 }
 
+// `simulate --plan training`: run i of the recipe for every i < runs, one after another (the runs
+// are short); generated scenes are written beside their runs as P_0000.scene.json.
+int runPlan(const SimulateArgs& a) {
+  if (a.plan != "training") throw UsageError("--plan must be training, got '" + a.plan + "'");
+  if (a.outDir.empty()) throw UsageError("--plan needs --out-dir");
+  if (!a.scene.empty()) throw UsageError("give --scene or --plan, not both");
+  if (a.runs <= 0 || static_cast<std::uint64_t>(a.runs) > kMaxRunsPerBatch) {
+    throw UsageError("--runs must be between 1 and " + std::to_string(kMaxRunsPerBatch));
+  }
+  std::error_code ec;
+  std::filesystem::create_directories(a.outDir, ec);
+  if (ec) throw std::runtime_error(a.outDir + ": cannot create directory: " + ec.message());
+  const auto t0 = std::chrono::steady_clock::now();
+  const auto runs = static_cast<std::size_t>(a.runs);
+  const int width = std::max<int>(4, static_cast<int>(std::to_string(runs - 1).size()));
+  TruthStats stats;
+  std::size_t totalSteps = 0;
+  std::map<std::string, int> kinds;
+  nlohmann::json runList = nlohmann::json::array();
+  for (std::size_t i = 0; i < runs; ++i) {
+    PlannedRun planned = planTrainingRun(a.seed, i);
+    std::string number = std::to_string(i);
+    if (number.size() < static_cast<std::size_t>(width))
+      number.insert(0, static_cast<std::size_t>(width) - number.size(), '0');
+    const std::string stem = a.prefix + "_" + number;
+    const std::filesystem::path dir(a.outDir);
+    std::string label = planned.sceneName;
+    if (label.empty()) {
+      // Stored with the run: the import reads a relative scene path beside the run file.
+      label = stem + ".scene.json";
+      planned.scene.name = label;
+      const Status written = writeFileAtomically(dir / label, sceneToJson(planned.scene));
+      if (!written) throw std::runtime_error(written.errorText());
+    }
+    auto world = std::make_shared<const World>(std::move(planned.scene));
+    RunResult result = simulateRunWith(world, label, *planned.driver, planned.options);
+    if (!result.ok()) {
+      throw std::runtime_error("run " + std::to_string(i) + " (" + planned.kind +
+                               "): " + result.errorText());
+    }
+    RunData& run = result->run;
+    run.setMeta("plan", "training " + std::to_string(a.seed) + " " + std::to_string(i) + " " +
+                            planned.kind);
+    // A scripted run has no navigation goal: it neither reaches nor misses one.
+    if (planned.sceneName.empty()) run.setMeta("outcome", "unknown");
+    const std::filesystem::path file = dir / (stem + ".csv");
+    const Status written = writeRunCsv(run, file);
+    if (!written) throw std::runtime_error(written.errorText());
+    stats.add(run);
+    totalSteps += run.stepCount();
+    ++kinds[planned.kind];
+    runList.push_back({{"file", file.string()},
+                       {"kind", planned.kind},
+                       {"scene", label},
+                       {"steps", run.stepCount()},
+                       {"outcome", *run.meta("outcome")}});
+    if (!a.quiet) std::fprintf(stderr, "\rsimulate: %zu/%zu runs", i + 1, runs);
+  }
+  if (!a.quiet) std::fprintf(stderr, "\n");
+  const double seconds = secondsSince(t0);
+  if (a.json) {
+    nlohmann::json j;
+    j["plan"] = a.plan;
+    j["seed"] = a.seed;
+    j["runs"] = runList;
+    j["steps"] = totalSteps;
+    j["seconds"] = seconds;
+    j["class_steps"] = classStepsJson(stats);
+    j["truth"] = truthQualityJson(stats);
+    std::printf("%s\n", j.dump().c_str());
+  } else {
+    std::ostringstream o;
+    for (const auto& [k, v] : kinds)
+      o << " " << k << "=" << v;
+    std::printf(
+        "simulated %zu planned run(s), %zu steps in %.3f s; kinds:%s\nwrote %zu files to %s\n",
+        runs, totalSteps, seconds, o.str().c_str(), runs, a.outDir.c_str());
+    std::printf("%s", classTable(stats).c_str());
+  }
+  return kExitOk;
+}
+
 int runSimulate(const SimulateArgs& a) {
+  if (!a.plan.empty()) return runPlan(a);
+  if (a.scene.empty()) throw UsageError("give --scene (or --plan training)");
   if (a.steps <= 0) throw UsageError("--steps must be at least 1, got " + std::to_string(a.steps));
   if (static_cast<std::uint64_t>(a.steps) > kMaxStepsPerRun) {
     throw UsageError("--steps must be at most " + std::to_string(kMaxStepsPerRun) + ", got " +
@@ -355,8 +442,10 @@ void registerSimVerbs(CLI::App& app, CLI::App& bench) {
   CLI::App* sim =
       app.add_subcommand("simulate", "Drive the simulated robot through a scene and record runs");
   sim->add_option("--scene", args->scene,
-                  "Built-in scene name, scene JSON file, or random:N:SEED (procedural)")
-      ->required();
+                  "Built-in scene name, scene JSON file, or random:N:SEED (procedural)");
+  sim->add_option("--plan", args->plan,
+                  "training: N runs from the standard training recipe (needs --out-dir; scenes "
+                  "and drivers come from the recipe, docs/sim.md#training-corpus)");
   sim->add_option("--driver", args->driver, "wall-follow (Bug-2 explorer) or random");
   sim->add_option("--steps", args->steps, "Maximum steps per run (1..1000000)");
   sim->add_option("--seed", args->seed, "Seed; run i of a batch uses SEED+i");

@@ -1,0 +1,277 @@
+#include "sim/training_plan.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <numbers>
+#include <random>
+
+#include "run/builtin_scenes.h"
+#include "sim/scene_source.h"
+
+namespace tactile::sim {
+namespace {
+
+// Robot body: front edge 105 units ahead of the rear axle, back edge 35 behind, 40 to each side,
+// domes 6 units proud of the outline (run/robot_geometry.h).
+constexpr double kFront = 105.0;
+constexpr double kBack = 35.0;
+constexpr double kHalfWidth = 40.0;
+constexpr double kDome = 6.0;
+constexpr double kAxleX = 1000.0;
+constexpr double kAxleY = 1000.0;
+
+class Draw {
+ public:
+  explicit Draw(std::uint64_t seed) : rng_(seed) {}
+  double uniform(double lo, double hi) {
+    return lo + (hi - lo) * static_cast<double>(rng_() >> 11) * 0x1.0p-53;
+  }
+  int integer(int lo, int hi) { return lo + static_cast<int>(uniform(0.0, hi - lo + 1 - 1e-9)); }
+  bool coin() { return uniform(0.0, 1.0) < 0.5; }
+  std::uint64_t next() { return rng_(); }
+
+ private:
+  std::mt19937_64 rng_;
+};
+
+Obstacle rect(double x0, double y0, double x1, double y1) {
+  return Obstacle{{Vec2(x0, y0), Vec2(x1, y0), Vec2(x1, y1), Vec2(x0, y1)}};
+}
+
+// A polygon turned by `angle` about (cx, cy).
+Obstacle turned(Obstacle o, double cx, double cy, double angle) {
+  const double c = std::cos(angle), s = std::sin(angle);
+  for (Vec2& p : o.polygon) {
+    const double x = p.x() - cx, y = p.y() - cy;
+    p = Vec2(cx + c * x - s * y, cy + s * x + c * y);
+  }
+  return o;
+}
+
+Scene openRoom(std::vector<Obstacle> obstacles) {
+  Scene s;
+  s.name = "training";
+  s.bounds = {0, 0, 2000, 2000};
+  s.obstacles = std::move(obstacles);
+  s.start = {kAxleX, kAxleY, 0.0};
+  s.goal = Vec2(1900, 1900);
+  return s;
+}
+
+using Leg = ScriptDriver::Leg;
+
+// Pushing into something with small turns either way, so the readings vary while blocked.
+void pushAndWiggle(std::vector<Leg>& legs, Draw& draw, double v, int steps) {
+  for (int done = 0; done < steps;) {
+    const int n = draw.integer(5, 15);
+    legs.push_back({{v, draw.uniform(-0.3, 0.3)}, n});
+    done += n;
+  }
+}
+
+PlannedRun wallEnd(Draw& draw, bool slow) {
+  // A corridor 2 x gap wider than the robot with dome surfaces; both walls end `ahead` units in
+  // front of the robot's front. Below a gap of about -3 the rear-corner domes touch too.
+  const double gap = slow ? draw.uniform(-4.5, -2.5) : draw.uniform(-3.5, 1.0);
+  const double y = kHalfWidth + kDome + gap;
+  const double end = kAxleX + kFront + draw.uniform(60.0, 200.0);
+  PlannedRun run;
+  run.scene = openRoom(
+      {rect(200, kAxleY - y - 60, end, kAxleY - y), rect(200, kAxleY + y, end, kAxleY + y + 60)});
+  std::vector<Leg> legs;
+  const int passes = slow ? draw.integer(22, 32) : draw.integer(10, 16);
+  for (int i = 0; i < passes; ++i) {
+    const double v = slow ? draw.uniform(10.0, 25.0) : draw.uniform(10.0, 60.0);
+    // Past the ends until the rear corners are clear, then back into the corridor.
+    const double out = (end - kAxleX) + kBack + 40.0;
+    const int steps = static_cast<int>(std::ceil(out / (v * 0.1)));
+    legs.push_back({{v, 0.0}, steps});
+    legs.push_back({{-v, 0.0}, steps});
+  }
+  run.driver = std::make_unique<ScriptDriver>(std::move(legs));
+  run.kind = "wall-end";
+  return run;
+}
+
+PlannedRun insideCorner(Draw& draw, bool left) {
+  const double side = left ? 1.0 : -1.0;
+  const double ahead = draw.uniform(20.0, 150.0);
+  const double beside = kHalfWidth + kDome + draw.uniform(-1.0, 30.0);
+  const double fx = kAxleX + kFront + kDome + ahead;
+  const double sy = kAxleY + side * beside;
+  // An L: a wall across ahead and a wall along the chosen side, meeting in a concave corner.
+  std::vector<Obstacle> walls{rect(fx, 300, fx + 60, 1700)};
+  walls.push_back(left ? rect(300, sy, fx + 60, sy + 60) : rect(300, sy - 60, fx + 60, sy));
+  PlannedRun run;
+  run.scene = openRoom(std::move(walls));
+  std::vector<Leg> legs;
+  const int rounds = draw.integer(4, 7);
+  for (int i = 0; i < rounds; ++i) {
+    const double v = draw.uniform(15.0, 50.0);
+    const double turn = side * draw.uniform(0.05, 0.25);
+    legs.push_back({{v, turn}, static_cast<int>((ahead + 40.0) / (v * 0.1)) + 5});
+    pushAndWiggle(legs, draw, v * 0.5, draw.integer(40, 90));
+    legs.push_back({{-v, -turn}, static_cast<int>((ahead + 40.0) / (v * 0.1))});
+  }
+  run.driver = std::make_unique<ScriptDriver>(std::move(legs));
+  run.kind = "inside-corner";
+  return run;
+}
+
+PlannedRun tip(Draw& draw, double aheadLateral, double behindLateral) {
+  // Convex tips (squares turned 45 degrees) ahead and behind, the given units to the left of the
+  // robot's axis: 0 meets the front or back edge, about 40 a corner group.
+  const double gapAhead = draw.uniform(5.0, 50.0);
+  const double gapBehind = draw.uniform(5.0, 50.0);
+  PlannedRun run;
+  const auto diamond = [&](double tipX, double dir, double lateral) {
+    const double half = draw.uniform(40.0, 90.0);
+    const double cx = tipX + dir * half;
+    const double cy = kAxleY + lateral + draw.uniform(-5.0, 5.0);
+    Obstacle d{
+        {Vec2(cx - half, cy), Vec2(cx, cy - half), Vec2(cx + half, cy), Vec2(cx, cy + half)}};
+    return turned(d, cx, cy, draw.uniform(-0.2, 0.2));
+  };
+  run.scene = openRoom({diamond(kAxleX + kFront + kDome + gapAhead, 1.0, aheadLateral),
+                        diamond(kAxleX - kBack - kDome - gapBehind, -1.0, behindLateral)});
+  std::vector<Leg> legs;
+  const int rounds = draw.integer(4, 6);
+  for (int i = 0; i < rounds; ++i) {
+    for (const auto& [dir, gap] : {std::pair{1.0, gapAhead}, std::pair{-1.0, gapBehind}}) {
+      const double v = draw.uniform(10.0, 40.0);
+      legs.push_back({{dir * v, 0.0}, static_cast<int>((gap + 10.0) / (v * 0.1)) + 3});
+      pushAndWiggle(legs, draw, dir * v * 0.4, draw.integer(50, 100));
+      legs.push_back({{-dir * v, 0.0}, static_cast<int>((gap + 10.0) / (v * 0.1))});
+    }
+  }
+  run.driver = std::make_unique<ScriptDriver>(std::move(legs));
+  run.kind = "tip";
+  return run;
+}
+
+PlannedRun reverse(Draw& draw, int corner) {
+  const double gap = draw.uniform(10.0, 120.0);
+  const double bx = kAxleX - kBack - kDome - gap;
+  std::vector<Obstacle> walls{rect(bx - 60, 300, bx, 1700)};
+  if (corner != 0) {
+    // A concave corner behind: a side wall along the back half of one side.
+    const double side = corner > 0 ? 1.0 : -1.0;
+    const double sy = kAxleY + side * (kHalfWidth + kDome + draw.uniform(0.0, 20.0));
+    walls.push_back(side > 0 ? rect(bx - 60, sy, kAxleX + 20, sy + 60)
+                             : rect(bx - 60, sy - 60, kAxleX + 20, sy));
+  }
+  PlannedRun run;
+  run.scene = openRoom({turned(walls[0], bx, kAxleY, draw.uniform(-0.1, 0.1))});
+  for (std::size_t i = 1; i < walls.size(); ++i)
+    run.scene.obstacles.push_back(walls[i]);
+  std::vector<Leg> legs;
+  const int rounds = draw.integer(6, 9);
+  for (int i = 0; i < rounds; ++i) {
+    const double v = draw.uniform(10.0, 40.0);
+    legs.push_back({{-v, draw.uniform(-0.1, 0.1)}, static_cast<int>((gap + 20.0) / (v * 0.1))});
+    pushAndWiggle(legs, draw, -v * 0.5, draw.integer(50, 100));
+    legs.push_back({{v, 0.0}, static_cast<int>((gap + 10.0) / (v * 0.1))});
+  }
+  run.driver = std::make_unique<ScriptDriver>(std::move(legs));
+  run.kind = "reverse";
+  return run;
+}
+
+PlannedRun pocket(Draw& draw) {
+  // A U open towards the robot, a few units wider than the robot with its domes.
+  // The side domes press the pocket's sides (by 0.5 to 3 units), so F, L and R all touch at its
+  // end.
+  const double inner = kHalfWidth + kDome - draw.uniform(0.5, 3.0);
+  const double mouth = kAxleX + kFront - draw.uniform(40.0, 100.0);  // the robot starts inside
+  const double depth = draw.uniform(150.0, 300.0);
+  const double endX = mouth + depth;
+  PlannedRun run;
+  run.scene = openRoom({rect(mouth, kAxleY - inner - 60, endX + 60, kAxleY - inner),
+                        rect(mouth, kAxleY + inner, endX + 60, kAxleY + inner + 60),
+                        rect(endX, kAxleY - inner, endX + 60, kAxleY + inner)});
+  std::vector<Leg> legs;
+  const int rounds = draw.integer(3, 5);
+  const double room = endX - (kAxleX + kFront + kDome);
+  for (int i = 0; i < rounds; ++i) {
+    const double v = draw.uniform(15.0, 50.0);
+    legs.push_back({{v, 0.0}, static_cast<int>(room / (v * 0.1)) + 5});
+    pushAndWiggle(legs, draw, v * 0.5, draw.integer(50, 100));
+    legs.push_back({{-v, 0.0}, static_cast<int>(std::min(room, 120.0) / (v * 0.1))});
+  }
+  run.driver = std::make_unique<ScriptDriver>(std::move(legs));
+  run.kind = "pocket";
+  return run;
+}
+
+}  // namespace
+
+Command ScriptDriver::next(const Observation&) {
+  while (leg_ < legs_.size() && done_ >= legs_[leg_].steps) {
+    ++leg_;
+    done_ = 0;
+  }
+  if (leg_ >= legs_.size()) return {};
+  ++done_;
+  return legs_[leg_].command;
+}
+
+std::size_t ScriptDriver::totalSteps() const {
+  std::size_t n = 0;
+  for (const Leg& l : legs_)
+    n += static_cast<std::size_t>(std::max(0, l.steps));
+  return n;
+}
+
+PlannedRun planTrainingRun(std::uint64_t seed, std::size_t index) {
+  // One stream per run, so a run does not depend on how many came before it.
+  Draw draw(seed * 0x9E3779B97F4A7C15ull + index * 0xD1B54A32D192ED03ull + 1);
+  const int kind = static_cast<int>(index % kTrainingPlanKinds);
+  // Which pass of the recipe this is: alternates sides and positions between passes.
+  const std::size_t round = index / kTrainingPlanKinds;
+  PlannedRun run;
+  switch (kind) {
+    case 0:
+    case 1: {
+      static constexpr std::array<const char*, 4> kScenes{"room1", "room2", "room3", "chapter5"};
+      run.sceneName = kind == 0 ? kScenes[round % kScenes.size()]
+                                : "random:" + std::to_string(draw.integer(20, 60)) + ":" +
+                                      std::to_string(draw.next() % 100000);
+      auto loaded = loadScene(run.sceneName);
+      if (loaded) run.scene = std::move(loaded.value());
+      const std::uint64_t driverSeed = draw.next();
+      run.driver = makeDriver("wall-follow", driverSeed);
+      run.options.seed = driverSeed;
+      run.options.maxSteps = 3000;
+      run.kind = kind == 0 ? "wall-follow" : "cluttered";
+      return run;
+    }
+    case 2:
+      run = wallEnd(draw, false);
+      break;
+    case 3:
+      run = insideCorner(draw, round % 2 == 0);
+      break;
+    case 4:
+      run = tip(draw, round % 2 == 0 ? 40.0 : -40.0, round % 2 == 0 ? -40.0 : 40.0);
+      break;
+    case 5:
+      run = reverse(draw, std::array{1, -1, 0}[round % 3]);
+      break;
+    case 6:
+      run = pocket(draw);
+      break;
+    case 7:
+      run = wallEnd(draw, true);
+      break;
+    default:
+      run = tip(draw, 0.0, 0.0);
+      break;
+  }
+  const auto* script = static_cast<const ScriptDriver*>(run.driver.get());
+  run.options.maxSteps = script->totalSteps();
+  run.options.stopAtGoal = false;
+  return run;
+}
+
+}  // namespace tactile::sim

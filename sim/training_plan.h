@@ -1,0 +1,66 @@
+// The standard training corpus (docs/sim.md#training-corpus): a deterministic recipe of runs
+// that, together, show every group each class it can have. Run i of a plan with seed S is one of
+// these kinds, in turn:
+//   wall-follow   the wall follower in a built-in scene (room1, room2, room3, chapter5, in turn)
+//   cluttered     the wall follower in a procedural room (random:N:SEED, N 20..60)
+//   wall-end      a corridor about as wide as the robot whose walls end ahead: the robot
+//                 drives past the ends and back again at speeds 10..60 (Wall, then LeavingWall on
+//                 the sides and rear corners)
+//   inside-corner the robot pushes into a concave corner ahead at an angle, wiggling, then backs
+//                 off; repeated (front Wall and Corner, corner groups Corner, sides Wall)
+//   tip           convex tips (squares turned 45 degrees) ahead and behind at opposite corners,
+//                 sides swapped in turn, pushed and rolled over (Corner on the corner groups)
+//   reverse       the robot backs into a concave corner behind it (left, right) or a plain wall, in
+//                 turn (back Wall and Corner, rear corners)
+//   pocket        a dead-end pocket whose sides press the side domes: in to the end, push, back
+//                 out (DeadPath on F, FLC, FRC, L, R)
+//   slow wall-end the wall-end corridor narrower, at speeds 10..25 (more rear-corner contact)
+//   middle tip    tips ahead and behind on the robot's axis (Corner on F and B)
+// Start poses, speeds, angles, gaps and sizes are drawn from the seed.
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <string>
+
+#include "sim/driver.h"
+#include "sim/recorder.h"
+#include "sim/scene.h"
+
+namespace tactile::sim {
+
+struct PlannedRun {
+  std::string kind;
+  // What the run's `scene` metadata says: a built-in name or `random:N:SEED`; empty when the
+  // scene was generated for this run only (then `scene` must be written beside the run).
+  std::string sceneName;
+  Scene scene;
+  std::unique_ptr<Driver> driver;
+  RunOptions options;
+};
+
+inline constexpr int kTrainingPlanKinds = 9;
+
+// Run `index` of the plan with `seed`; the same (seed, index) always gives the same run.
+PlannedRun planTrainingRun(std::uint64_t seed, std::size_t index);
+
+// A driver that plays a fixed list of (v, omega, steps) legs, then stops (gives up).
+class ScriptDriver : public Driver {
+ public:
+  struct Leg {
+    Command command;
+    int steps = 0;
+  };
+  explicit ScriptDriver(std::vector<Leg> legs) : legs_(std::move(legs)) {}
+  std::string name() const override { return "script"; }
+  Command next(const Observation& obs) override;
+  bool gaveUp() const override { return leg_ >= legs_.size(); }
+  std::size_t totalSteps() const;
+
+ private:
+  std::vector<Leg> legs_;
+  std::size_t leg_ = 0;
+  int done_ = 0;
+};
+
+}  // namespace tactile::sim
