@@ -6,7 +6,8 @@
 
 namespace tactile {
 namespace {
-constexpr std::array<std::string_view, 4> kOutcomeNames{"unknown", "success", "gave-up", "timeout"};
+constexpr std::array<std::string_view, 5> kOutcomeNames{"unknown", "success", "gave-up", "timeout",
+                                                        "unreachable"};
 }  // namespace
 
 std::string_view runOutcomeName(RunOutcome outcome) {

@@ -17,8 +17,10 @@ namespace tactile {
 
 inline constexpr std::string_view kRunFormat = "tactile-run 1";
 
-enum class RunOutcome : std::uint8_t { Unknown, Success, GaveUp, Timeout };
-std::string_view runOutcomeName(RunOutcome outcome);  // "success", "gave-up", ...
+// Unreachable: the driver found no way to the goal (wall-follow: it walked all round the obstacle
+// in its way).
+enum class RunOutcome : std::uint8_t { Unknown, Success, GaveUp, Timeout, Unreachable };
+std::string_view runOutcomeName(RunOutcome outcome);  // "success", "gave-up", "unreachable", ...
 std::optional<RunOutcome> parseRunOutcome(std::string_view name);
 
 struct Pose2d {

@@ -46,6 +46,11 @@ class Driver {
   virtual Command next(const Observation& obs) = 0;
   // True once the driver has given up (the run then ends with outcome `gave-up`).
   virtual bool gaveUp() const { return false; }
+  // How the driver ended the run on its own, or nullopt while it is still driving. The run loop
+  // stops on the first step this is set. Defaults to `gave-up` when gaveUp() is true.
+  virtual std::optional<RunOutcome> finished() const {
+    return gaveUp() ? std::optional<RunOutcome>(RunOutcome::GaveUp) : std::nullopt;
+  }
 };
 
 // Largest normal value of a group.
@@ -66,32 +71,74 @@ class ManualDriver : public Driver {
   std::deque<std::pair<Command, int>> queue_;
 };
 
-// Bug-2 style explorer: heads for the goal; on touching something, follows the wall by touch
-// (on a side chosen from the seed), keeping that side's domes lightly pressed; leaves the wall
-// where it crosses the start-goal line closer to the goal than where it hit. Gives up after
-// following walls for too long. Speeds and side vary with the seed so runs differ.
+// Follow-wall rule of thesis 5.2 on the followed side's domes (the side group and its two corner
+// groups; normal values, upper bound 5): turn away from the wall when the largest value is above
+// kFollowAwayMax or the mean of the touching (non-zero) values is above kFollowAwayMean; turn
+// toward it when the largest is below kFollowTowardMax or that mean is below kFollowTowardMean
+// (so a side that touches nothing turns toward the wall); otherwise go straight.
+enum class FollowAction { Away, Toward, Straight };
+inline constexpr double kFollowAwayMax = 4.0;
+inline constexpr double kFollowAwayMean = 3.0;
+inline constexpr double kFollowTowardMax = 0.5;
+inline constexpr double kFollowTowardMean = 2.0;
+FollowAction followWallAction(const std::array<double, kValuesPerStep>& values, bool wallOnRight);
+
+// Bug-2 style explorer: heads for the goal; on touching something, follows the wall by touch on a
+// side chosen from the seed (followWallAction); leaves the wall where it crosses the start-goal
+// line closer to the goal than where it hit, with a clear front. Ends the run as `unreachable`
+// when it comes back to the point where it started following the current obstacle (the wall
+// closes around start or goal), and as `gave-up` after kGiveUpSteps steps since its first
+// contact. Speeds and side vary with the seed so runs differ; no allocation per step.
 class WallFollowDriver : public Driver {
  public:
+  // Steps after the first contact (every step: following, escaping, heading for the goal) after
+  // which the driver gives up.
+  static constexpr std::size_t kGiveUpSteps = 4000;
+  // Back within kHitReturnUnits of the hit point after having been more than kHitDepartUnits
+  // from it: the obstacle has been walked round without finding a way to the goal.
+  static constexpr double kHitReturnUnits = 40.0;
+  static constexpr double kHitDepartUnits = 100.0;
+
   explicit WallFollowDriver(std::uint64_t seed);
   std::string name() const override { return "wall-follow"; }
   Command next(const Observation& obs) override;
   bool gaveUp() const override { return gaveUp_; }
+  bool unreachable() const { return unreachable_; }
+  std::optional<RunOutcome> finished() const override;
+  bool wallOnRight() const { return wallSide_ < 0.0; }
 
  private:
   enum class Mode { GoToGoal, Follow };
+  struct Touch;  // what the domes say, seen from the followed side
+  static Touch readTouch(const std::array<double, kValuesPerStep>& values, bool wallOnRight);
+  Command headForGoal(const Observation& obs, const Vec2& toGoal);
+  Command follow(const Observation& obs, const Touch& touch, const Vec2& pos, double goalDistance);
+  Command escape();
+  Command backOffThenArc(const Observation& obs);
+  void startFollowing(double goalDistance);
+
   std::mt19937_64 rng_;
-  double cruise_ = 40.0;
+  double cruise_ = 40.0;    // units/s
+  double turn_ = 0.12;      // rad/s of a slight follow-wall turn
   double wallSide_ = -1.0;  // -1: wall on the right (turn left to avoid), +1: wall on the left
   Mode mode_ = Mode::GoToGoal;
   Command escape_;
   int escapeSteps_ = 0;
-  int leaveSteps_ = 0;
   std::size_t escapeIndex_ = 0;
-  double hitDistance_ = 0.0;
-  std::size_t followSteps_ = 0;
-  std::size_t totalFollowSteps_ = 0;
   int blockedStreak_ = 0;
+  int leaveSteps_ = 0;   // arcing away from the wall just left
+  int backSteps_ = 0;    // backing off in a corner manoeuvre, then
+  bool arcing_ = false;  // arcing away from the wall
+  double arcStartTheta_ = 0.0;
+  Vec2 hitPoint_ = Vec2::Zero();  // where following the current obstacle started
+  bool hitPointSet_ = false;
+  double hitDistance_ = 0.0;      // goal distance at the first touch of the current obstacle
+  double farFromHitUnits_ = 0.0;  // largest distance from the hit point while following
+  std::size_t followSteps_ = 0;
+  bool contacted_ = false;
+  std::size_t stepsSinceContact_ = 0;
   bool gaveUp_ = false;
+  bool unreachable_ = false;
 };
 
 // Bounded random walk: holds a random (v, omega) in [-20, 60] x [-1, 1] for 5..30 steps; after a

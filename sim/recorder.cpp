@@ -74,9 +74,11 @@ RunResult simulateRunWith(std::shared_ptr<const World> world, std::string_view s
       outcome = RunOutcome::Success;
       break;
     }
-    if (options.stopAtGoal && driver.gaveUp()) {
-      outcome = RunOutcome::GaveUp;
-      break;
+    if (options.stopAtGoal) {
+      if (const std::optional<RunOutcome> ended = driver.finished()) {
+        outcome = *ended;
+        break;
+      }
     }
     if (progress && (k & 1023) == 1023 && !progress(k + 1, options.maxSteps)) {
       return Error("cancelled");

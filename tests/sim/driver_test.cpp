@@ -1,0 +1,217 @@
+#include <gtest/gtest.h>
+
+#include <initializer_list>
+
+#include "run/run_csv.h"
+#include "sim/driver.h"
+#include "sim/recorder.h"
+#include "sim_test_util.h"
+
+namespace tactile::sim {
+namespace {
+
+using Values = std::array<double, kValuesPerStep>;
+
+// Sets the normal values of the first domes of group g (the rest of the step stays as it is).
+void press(Values& values, SensorGroup g, std::initializer_list<double> normals) {
+  int d = groupInfo(g).firstSensor;
+  for (double n : normals)
+    values[normalOffset(d++)] = n;
+}
+
+Values pressed(SensorGroup g, std::initializer_list<double> normals) {
+  Values values{};
+  press(values, g, normals);
+  return values;
+}
+
+TEST(FollowWallAction, LargestValueAboveFourTurnsAway) {
+  // Mean of the touching domes 1.875 would turn toward; the maximum wins.
+  EXPECT_EQ(followWallAction(pressed(SensorGroup::Right, {4.5, 1.0, 1.0, 1.0}), true),
+            FollowAction::Away);
+}
+
+TEST(FollowWallAction, TouchingMeanAboveThreeTurnsAway) {
+  EXPECT_EQ(followWallAction(pressed(SensorGroup::Right, {3.9, 3.1}), true), FollowAction::Away);
+}
+
+TEST(FollowWallAction, LargestValueBelowHalfTurnsToward) {
+  EXPECT_EQ(followWallAction(pressed(SensorGroup::Right, {0.4, 0.4, 0.3}), true),
+            FollowAction::Toward);
+}
+
+TEST(FollowWallAction, TouchingMeanBelowTwoTurnsToward) {
+  EXPECT_EQ(followWallAction(pressed(SensorGroup::Right, {1.9, 1.1}), true), FollowAction::Toward);
+}
+
+TEST(FollowWallAction, NothingTouchingTurnsToward) {
+  EXPECT_EQ(followWallAction(Values{}, true), FollowAction::Toward);
+  EXPECT_EQ(followWallAction(Values{}, false), FollowAction::Toward);
+}
+
+TEST(FollowWallAction, ModeratePressureGoesStraight) {
+  // Max 3.0, mean of the two touching domes 2.5; the eight untouched domes of R do not count.
+  EXPECT_EQ(followWallAction(pressed(SensorGroup::Right, {3.0, 2.0}), true),
+            FollowAction::Straight);
+}
+
+TEST(FollowWallAction, ThresholdsAreStrict) {
+  // Exactly 4 is not above 4, exactly 3 is not above 3, exactly 2 is not below 2.
+  EXPECT_EQ(followWallAction(pressed(SensorGroup::Right, {4.0, 2.0}), true),
+            FollowAction::Straight);
+  EXPECT_EQ(followWallAction(pressed(SensorGroup::Right, {3.0, 3.0}), true),
+            FollowAction::Straight);
+  EXPECT_EQ(followWallAction(pressed(SensorGroup::Right, {2.0, 2.0}), true),
+            FollowAction::Straight);
+}
+
+TEST(FollowWallAction, LeftSideUsesTheLeftGroupsOnly) {
+  Values values = pressed(SensorGroup::Left, {3.0, 2.0});
+  press(values, SensorGroup::Right, {4.8, 4.8});
+  press(values, SensorGroup::FrontRightCorner, {4.9});
+  EXPECT_EQ(followWallAction(values, false), FollowAction::Straight);
+  // The same step read for a wall on the right sees only the pressed right side.
+  EXPECT_EQ(followWallAction(values, true), FollowAction::Away);
+}
+
+TEST(FollowWallAction, RightSideIgnoresTheLeftGroups) {
+  Values values = pressed(SensorGroup::Right, {3.0, 2.0});
+  press(values, SensorGroup::Left, {0.2});
+  press(values, SensorGroup::FrontLeftCorner, {4.9, 4.9});
+  EXPECT_EQ(followWallAction(values, true), FollowAction::Straight);
+  EXPECT_EQ(followWallAction(values, false), FollowAction::Away);
+}
+
+TEST(FollowWallAction, CornerGroupsBelongToTheirSide) {
+  // A pressed front-right corner alone turns away from a wall on the right ...
+  EXPECT_EQ(followWallAction(pressed(SensorGroup::FrontRightCorner, {4.5}), true),
+            FollowAction::Away);
+  // ... and the rear-left corner's light touch pulls the left side's mean below 2.
+  Values values = pressed(SensorGroup::Left, {2.5, 2.5});
+  EXPECT_EQ(followWallAction(values, false), FollowAction::Straight);
+  press(values, SensorGroup::RearLeftCorner, {0.2, 0.2});
+  EXPECT_EQ(followWallAction(values, false), FollowAction::Toward);
+}
+
+// Observation of a robot far from its goal that sees `values` and is blocked or not.
+Observation observe(const Values& values, bool blocked, std::size_t step) {
+  Observation obs;
+  obs.step = step;
+  obs.pose = {500, 500, 0};
+  obs.start = {100, 500, 0};
+  obs.goal = Vec2(1900, 500);
+  obs.blocked = blocked;
+  obs.values = &values;
+  return obs;
+}
+
+TEST(WallFollowDriver, BlockedStepsTryAPlainForwardEscape) {
+  // Regression: the escape list had no plain forward move, so a robot wedged at the edge of a
+  // hole with the way ahead free stayed wedged for thousands of steps.
+  const Values values = pressed(SensorGroup::Front, {1.0});
+  WallFollowDriver driver(7);
+  driver.next(observe(values, true, 0));  // first blocked step: not an escape yet
+  bool forward = false;
+  Command previous{1e9, 1e9};
+  for (std::size_t k = 1; k <= 8; ++k) {
+    const Command c = driver.next(observe(values, true, k));
+    forward = forward || (c.v > 0.0 && c.omega == 0.0);
+    // Each blocked step tries the next manoeuvre.
+    EXPECT_FALSE(c.v == previous.v && c.omega == previous.omega) << k;
+    previous = c;
+  }
+  EXPECT_TRUE(forward);
+}
+
+TEST(WallFollowDriver, EveryStepAfterTheFirstContactCountsTowardGivingUp) {
+  const Values values = pressed(SensorGroup::Front, {1.0});
+  WallFollowDriver driver(3);
+  std::size_t k = 0;
+  driver.next(observe(values, true, k++));  // the first contact
+  for (; k <= WallFollowDriver::kGiveUpSteps - 1; ++k) {
+    driver.next(observe(values, k % 3 == 0, k));
+    ASSERT_FALSE(driver.finished().has_value()) << k;
+  }
+  driver.next(observe(values, true, k));
+  EXPECT_TRUE(driver.gaveUp());
+  EXPECT_FALSE(driver.unreachable());
+  EXPECT_EQ(driver.finished(), RunOutcome::GaveUp);
+  const Command after = driver.next(observe(values, false, k + 1));
+  EXPECT_EQ(after.v, 0.0);
+  EXPECT_EQ(after.omega, 0.0);
+}
+
+TEST(WallFollowDriver, FinishedStaysEmptyWithoutContact) {
+  const Values values{};
+  WallFollowDriver driver(1);
+  for (std::size_t k = 0; k < WallFollowDriver::kGiveUpSteps + 100; ++k) {
+    driver.next(observe(values, false, k));
+  }
+  EXPECT_FALSE(driver.finished().has_value());
+}
+
+TEST(RunOutcome, UnreachableHasAFileName) {
+  EXPECT_EQ(runOutcomeName(RunOutcome::Unreachable), "unreachable");
+  EXPECT_EQ(parseRunOutcome("unreachable"), RunOutcome::Unreachable);
+  EXPECT_EQ(parseRunOutcome("timeout"), RunOutcome::Timeout);
+}
+
+// A 1200 x 800 room cut in two by a wall from the bottom to the top bound: the robot starts in
+// the west half, the goal lies in the east half.
+Scene splitRoom() {
+  Scene s;
+  s.name = "split";
+  s.bounds = {0, 0, 1200, 800};
+  s.obstacles = {test::box(600, 0, 620, 800)};
+  s.start = {200, 400, 0};
+  s.goal = Vec2(1000, 400);
+  return s;
+}
+
+TEST(WallFollowRun, WalkingRoundAClosedRoomEndsUnreachable) {
+  const auto world = std::make_shared<const World>(splitRoom());
+  bool sawLeft = false;
+  bool sawRight = false;
+  for (std::uint64_t seed = 1; seed <= 6; ++seed) {
+    RunOptions options;
+    options.maxSteps = 8000;
+    options.seed = seed;
+    RunResult r = simulateRun(world, "split", options);
+    ASSERT_TRUE(r.ok()) << r.errorText();
+    EXPECT_EQ(r->outcome, RunOutcome::Unreachable) << "seed " << seed;
+    EXPECT_LT(r->run.stepCount(), options.maxSteps) << "seed " << seed;
+    ASSERT_NE(r->run.meta("outcome"), nullptr);
+    EXPECT_EQ(*r->run.meta("outcome"), "unreachable");
+    // The outcome survives the run file.
+    RunCsvResult back = parseRunCsv(formatRunCsv(r->run), "split.csv");
+    ASSERT_TRUE(back.ok()) << back.errorText();
+    EXPECT_EQ(back.value().outcome(), RunOutcome::Unreachable);
+    (WallFollowDriver(seed).wallOnRight() ? sawRight : sawLeft) = true;
+  }
+  // Both following sides walk round the room.
+  EXPECT_TRUE(sawLeft);
+  EXPECT_TRUE(sawRight);
+}
+
+TEST(WallFollowRun, ARobotThatKeepsBeingBlockedGivesUpInsteadOfTimingOut) {
+  // A closed slot barely longer and wider than the robot: it can neither turn nor get out, and
+  // never gets far from where it first touched, so only the step budget ends the run.
+  Scene s = test::roomWith({test::box(300, 300, 670, 400), test::box(300, 510, 670, 610),
+                            test::box(300, 400, 400, 510), test::box(570, 400, 670, 510)},
+                           Pose2d{444, 455, 0});
+  s.goal = Vec2(1800, 1800);
+  RunOptions options;
+  options.maxSteps = 8000;
+  RunResult r = simulateRun(std::make_shared<const World>(s), "slot", options);
+  ASSERT_TRUE(r.ok()) << r.errorText();
+  EXPECT_EQ(r->outcome, RunOutcome::GaveUp);
+  EXPECT_GE(r->run.stepCount(), WallFollowDriver::kGiveUpSteps);
+  EXPECT_LT(r->run.stepCount(), options.maxSteps);
+  std::size_t blocked = 0;
+  for (std::uint8_t b : r->run.blocked)
+    blocked += b;
+  EXPECT_GT(blocked, r->run.stepCount() / 10);
+}
+
+}  // namespace
+}  // namespace tactile::sim
