@@ -39,7 +39,7 @@ struct RunInfo {
   std::string scene;     // the run's `scene` metadata value, empty if none
   bool sceneStored = false;
   std::string subject;
-  std::string outcome;  // "success", "gave-up", "timeout" or "unknown"
+  std::string outcome;  // "success", "gave-up", "unreachable", "timeout" or "unknown"
   std::optional<double> dtSeconds;
   std::int64_t stepCount = 0;
   bool hasTruth = false;
