@@ -337,7 +337,8 @@ class Parser {
       if (key == "outcome" && !parseRunOutcome(value)) {
         return setError(
             lineNo,
-            "expected 'outcome' to be success, gave-up, unreachable, timeout or unknown, found " + shown(value));
+            "expected 'outcome' to be success, gave-up, unreachable, timeout or unknown, found " +
+                shown(value));
       }
       run_.metadata.emplace_back(std::string(key), value);
       metadataLines_.push_back(lineNo);

@@ -65,8 +65,9 @@ struct SimulatedRun {
 using RunResult = Result<SimulatedRun>;
 
 // One run: success when the goal is reached, gave-up or unreachable as the driver finishes
-// (Driver::finished), timeout after maxSteps. Deterministic: the same world, options and binary give the same RunData. `progress`
-// gets (steps done, maxSteps) every 1024 steps; returning false cancels (error "cancelled").
+// (Driver::finished), timeout after maxSteps. Deterministic: the same world, options and binary
+// give the same RunData. `progress` gets (steps done, maxSteps) every 1024 steps; returning false
+// cancels (error "cancelled").
 RunResult simulateRun(std::shared_ptr<const World> world, std::string_view sceneName,
                       const RunOptions& options, const ProgressFn& progress = {});
 // Same, with a caller-made driver (e.g. a manual queue or a future navigator).
