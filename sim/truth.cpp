@@ -104,7 +104,10 @@ ContactClass TruthTracker::touching(const World& world, const Pose2d& pose,
     }
   }
   if (mayLeaveWall(info.group) && onlyThisWall) {
-    if (leaving && !approaching) return ContactClass::LeavingWall;
+    // Leaving a wall is what a group does that was on the wall: one coming from a corner is
+    // moving round that corner.
+    const bool fromWall = previous == ContactClass::Wall || previous == ContactClass::LeavingWall;
+    if (leaving && !approaching && fromWall) return ContactClass::LeavingWall;
     // Once leaving, the group stays so while it touches nothing but that wall and its end,
     // whichever way the robot moves there (stopped, turning, or backing off a blocked step).
     if (nearVertex && previous == ContactClass::LeavingWall) return ContactClass::LeavingWall;

@@ -128,6 +128,25 @@ TEST(Truth, HexagonTipIsCornerOnEveryContactStepWhileTurningInPlace) {
   EXPECT_GT(contactSteps, 30);
 }
 
+// Leaving is for a group that was on a wall: sliding past a convex tip met side-on is moving
+// round a corner, Corner throughout.
+TEST(Truth, PassingATipBesideTheSideIsCornerNotLeavingWall) {
+  // A square turned 45 degrees below the robot, its top vertex 2 units into the right side's
+  // domes, 30 units ahead of the rear axle.
+  const double top = 1000 - 46 + 2;
+  Obstacle diamond{
+      {Vec2(1030, top), Vec2(970, top - 60), Vec2(1030, top - 120), Vec2(1090, top - 60)}};
+  auto sim = makeSim(roomWith({diamond}), SimConfig{});
+  std::vector<ContactClass> right;
+  for (int k = 0; k < 40; ++k) {
+    sim->step(10, 0);
+    right.push_back(classOf(*sim, SensorGroup::Right));
+  }
+  EXPECT_EQ(std::count(right.begin(), right.end(), ContactClass::LeavingWall), 0)
+      << sequenceOf(right);
+  EXPECT_GT(std::count(right.begin(), right.end(), ContactClass::Corner), 5) << sequenceOf(right);
+}
+
 TEST(Truth, SmoothingMergesShortSegmentsInsideAContactEpisode) {
   // One group's classes over 20 steps; the other groups stay NoContact.
   const std::string in = "..WWWLWWCCCWLW..LLW.";
