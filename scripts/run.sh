@@ -21,13 +21,15 @@ make_demo_database() {
     "$tactile" simulate --scene "$scene" --runs 2 --steps 3000 --seed 1 --out-dir "$work/runs" \
       --prefix "$scene" --quiet >/dev/null
   done
-  # Built beside the final name and moved into place, so an interrupted run leaves no half demo.
+  # Built in a temporary folder, copied next to its final name and renamed there (one atomic
+  # step), so an interrupted first start never leaves half a demo database.
   "$tactile" import --db "$work/demo.db" "$work/runs" >/dev/null
   "$tactile" autolabel --db "$work/demo.db" --all --set truth >/dev/null
   printf 'run,group,first_step,last_step,class\n' >"$work/empty.csv"
   "$tactile" labels import --db "$work/demo.db" --set annotations "$work/empty.csv" >/dev/null
   mkdir -p "$(dirname "$db")"
-  mv "$work/demo.db" "$db"
+  cp "$work/demo.db" "$db.partial"
+  mv "$db.partial" "$db"
 }
 
 if [ $# -eq 0 ]; then
