@@ -36,6 +36,23 @@ RunHeader readHeader(RunDatabase::Impl& impl, std::int64_t runId) {
   return header;
 }
 
+// Columns 0-6 of a steps row (step, x, y, theta, v, omega, blocked) into row `row` of `out` (a
+// RunData or a RunTrack), after checking that the row is step firstStep + row of n.
+template <class Columns>
+void readMotion(const db::Statement& s, std::int64_t runId, std::int64_t firstStep, std::size_t row,
+                std::size_t n, Columns& out) {
+  if (row >= n || s.columnInt(0) != firstStep + static_cast<std::int64_t>(row)) {
+    throw db::DbError("run " + std::to_string(runId) + " has a gap or extra row at step " +
+                      std::to_string(s.columnInt(0)));
+  }
+  out.x[row] = s.columnDouble(1);
+  out.y[row] = s.columnDouble(2);
+  out.theta[row] = s.columnDouble(3);
+  out.v[row] = s.columnDouble(4);
+  out.omega[row] = s.columnDouble(5);
+  out.blocked[row] = static_cast<std::uint8_t>(s.columnInt(6));
+}
+
 RunWindow readWindow(RunDatabase::Impl& impl, std::int64_t runId, std::int64_t firstStep,
                      std::int64_t count) {
   RunHeader header = readHeader(impl, runId);
@@ -61,16 +78,7 @@ RunWindow readWindow(RunDatabase::Impl& impl, std::int64_t runId, std::int64_t f
   s.bind(1, runId).bind(2, firstStep).bind(3, end);
   std::size_t row = 0;
   while (s.step()) {
-    if (row >= n || s.columnInt(0) != firstStep + static_cast<std::int64_t>(row)) {
-      throw db::DbError("run " + std::to_string(runId) + " has a gap or extra row at step " +
-                        std::to_string(s.columnInt(0)));
-    }
-    run.x[row] = s.columnDouble(1);
-    run.y[row] = s.columnDouble(2);
-    run.theta[row] = s.columnDouble(3);
-    run.v[row] = s.columnDouble(4);
-    run.omega[row] = s.columnDouble(5);
-    run.blocked[row] = static_cast<std::uint8_t>(s.columnInt(6));
+    readMotion(s, runId, firstStep, row, n, run);
     if (!decodeValues(s.columnBlob(7), static_cast<std::size_t>(s.columnBytes(7)), kValuesPerStep,
                       run.sensors.data() + row * kValuesPerStep)) {
       throw db::DbError("step " + std::to_string(firstStep + static_cast<std::int64_t>(row)) +
@@ -111,16 +119,7 @@ RunTrack readTrack(RunDatabase::Impl& impl, std::int64_t runId) {
   s.bind(1, runId);
   std::size_t row = 0;
   while (s.step()) {
-    if (row >= n || s.columnInt(0) != static_cast<std::int64_t>(row)) {
-      throw db::DbError("run " + std::to_string(runId) + " has a gap or extra row at step " +
-                        std::to_string(s.columnInt(0)));
-    }
-    track.x[row] = s.columnDouble(1);
-    track.y[row] = s.columnDouble(2);
-    track.theta[row] = s.columnDouble(3);
-    track.v[row] = s.columnDouble(4);
-    track.omega[row] = s.columnDouble(5);
-    track.blocked[row] = static_cast<std::uint8_t>(s.columnInt(6));
+    readMotion(s, runId, 0, row, n, track);
     if (header.hasTruth && (s.columnIsNull(7) ||
                             !unpackTruth(s.columnInt(7), track.truth.data() + row * kGroupCount))) {
       throw db::DbError("step " + std::to_string(row) + " of run " + std::to_string(runId) +

@@ -32,6 +32,16 @@ std::vector<std::tuple<std::int64_t, std::int64_t, ContactClass>> stored(GuiFixt
   return out;
 }
 
+// Opens the fixture's run in `session` and a new, empty label set `set` in `labels` for it.
+bool openWithNewSet(GuiFixture& fx, RunSession& session, LabelModel& labels, const char* set) {
+  session.setWorkspace(fx.workspace.get());
+  if (!session.open(fx.runName).ok()) return false;
+  labels.setWorkspace(fx.workspace.get());
+  if (!labels.createSet(set).ok()) return false;
+  labels.setRun(session.info().id, session.info().name, session.stepCount());
+  return true;
+}
+
 }  // namespace
 
 class GuiCoreTest : public QObject {
@@ -78,12 +88,8 @@ class GuiCoreTest : public QObject {
   void labelEditIsStoredAtOnceAndUndoRestoresExactly() {
     GuiFixture fx(400);
     RunSession session;
-    session.setWorkspace(fx.workspace.get());
-    QVERIFY(session.open(fx.runName).ok());
     LabelModel labels;
-    labels.setWorkspace(fx.workspace.get());
-    QVERIFY(labels.createSet("mine").ok());
-    labels.setRun(session.info().id, session.info().name, session.stepCount());
+    QVERIFY(openWithNewSet(fx, session, labels, "mine"));
     const std::int64_t set = labels.setId();
 
     QVERIFY(labels.label({SensorGroup::Left}, 100, 199, ContactClass::Wall).ok());
@@ -113,12 +119,8 @@ class GuiCoreTest : public QObject {
   void severalGroupsAreOneUndoStep() {
     GuiFixture fx(300);
     RunSession session;
-    session.setWorkspace(fx.workspace.get());
-    QVERIFY(session.open(fx.runName).ok());
     LabelModel labels;
-    labels.setWorkspace(fx.workspace.get());
-    QVERIFY(labels.createSet("two").ok());
-    labels.setRun(session.info().id, session.info().name, session.stepCount());
+    QVERIFY(openWithNewSet(fx, session, labels, "two"));
     QVERIFY(labels.label({SensorGroup::Left, SensorGroup::Right}, 10, 20, ContactClass::Wall).ok());
     QCOMPARE(stored(fx, labels.setId(), SensorGroup::Left).size(), std::size_t{1});
     QCOMPARE(stored(fx, labels.setId(), SensorGroup::Right).size(), std::size_t{1});
@@ -131,12 +133,8 @@ class GuiCoreTest : public QObject {
   void moveAndRemoveAreUndoable() {
     GuiFixture fx(300);
     RunSession session;
-    session.setWorkspace(fx.workspace.get());
-    QVERIFY(session.open(fx.runName).ok());
     LabelModel labels;
-    labels.setWorkspace(fx.workspace.get());
-    QVERIFY(labels.createSet("m").ok());
-    labels.setRun(session.info().id, session.info().name, session.stepCount());
+    QVERIFY(openWithNewSet(fx, session, labels, "m"));
     QVERIFY(labels.label({SensorGroup::Front}, 50, 60, ContactClass::Corner).ok());
     const std::int64_t id = labels.segments(SensorGroup::Front).front().id;
     QVERIFY(labels.moveSegment(id, 50, 90).ok());
@@ -156,12 +154,8 @@ class GuiCoreTest : public QObject {
   void failedEditLeavesNoUndoStep() {
     GuiFixture fx(100);
     RunSession session;
-    session.setWorkspace(fx.workspace.get());
-    QVERIFY(session.open(fx.runName).ok());
     LabelModel labels;
-    labels.setWorkspace(fx.workspace.get());
-    QVERIFY(labels.createSet("gone").ok());
-    labels.setRun(session.info().id, session.info().name, session.stepCount());
+    QVERIFY(openWithNewSet(fx, session, labels, "gone"));
     // The set vanishes underneath the model (another program deleted it).
     QVERIFY(fx.workspace->database().deleteLabelSet(labels.setId()).ok());
     QVERIFY(!labels.label({SensorGroup::Back}, 1, 5, ContactClass::Wall).ok());
@@ -171,12 +165,8 @@ class GuiCoreTest : public QObject {
   void labelSetsSaveAsExportAndImport() {
     GuiFixture fx(300);
     RunSession session;
-    session.setWorkspace(fx.workspace.get());
-    QVERIFY(session.open(fx.runName).ok());
     LabelModel labels;
-    labels.setWorkspace(fx.workspace.get());
-    QVERIFY(labels.createSet("first").ok());
-    labels.setRun(session.info().id, session.info().name, session.stepCount());
+    QVERIFY(openWithNewSet(fx, session, labels, "first"));
     QVERIFY(labels.label({SensorGroup::Right}, 30, 80, ContactClass::Wall).ok());
     QVERIFY(!labels.createSet("first").ok());  // the name is taken
     QCOMPARE(labels.setName(), std::string("first"));

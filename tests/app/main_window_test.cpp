@@ -82,22 +82,25 @@ class MainWindowTest : public QObject {
     auto* s = window.session();
     QCOMPARE(s->currentStep(), 0);
     QWidget* target = window.timeline();
-    QTest::keyClick(target, Qt::Key_Right);
-    QCOMPARE(s->currentStep(), 1);
-    QTest::keyClick(target, Qt::Key_Right, Qt::ShiftModifier);
-    QCOMPARE(s->currentStep(), 11);
-    QTest::keyClick(target, Qt::Key_Right, Qt::ControlModifier);
-    QCOMPARE(s->currentStep(), 111);
-    QTest::keyClick(target, Qt::Key_Left);
-    QCOMPARE(s->currentStep(), 110);
-    QTest::keyClick(target, Qt::Key_Left, Qt::ShiftModifier);
-    QCOMPARE(s->currentStep(), 100);
-    QTest::keyClick(target, Qt::Key_Left, Qt::ControlModifier);
-    QCOMPARE(s->currentStep(), 0);
-    QTest::keyClick(target, Qt::Key_End);
-    QCOMPARE(s->currentStep(), 1999);
-    QTest::keyClick(target, Qt::Key_Right);  // clamped at the end
-    QCOMPARE(s->currentStep(), 1999);
+    // Each key press and the step it must land on, in order.
+    const struct {
+      Qt::Key key;
+      Qt::KeyboardModifiers modifiers;
+      std::int64_t expected;
+    } presses[] = {
+        {Qt::Key_Right, Qt::NoModifier, 1},
+        {Qt::Key_Right, Qt::ShiftModifier, 11},
+        {Qt::Key_Right, Qt::ControlModifier, 111},
+        {Qt::Key_Left, Qt::NoModifier, 110},
+        {Qt::Key_Left, Qt::ShiftModifier, 100},
+        {Qt::Key_Left, Qt::ControlModifier, 0},
+        {Qt::Key_End, Qt::NoModifier, 1999},
+        {Qt::Key_Right, Qt::NoModifier, 1999},  // clamped
+    };
+    for (const auto& p : presses) {
+      QTest::keyClick(target, p.key, p.modifiers);
+      QCOMPARE(s->currentStep(), p.expected);
+    }
     QTest::keyClick(target, Qt::Key_Home);
     QCOMPARE(s->currentStep(), 0);
     // Ten single presses are ten steps, however long the run.

@@ -182,16 +182,16 @@ Status LabelModel::removeSegment(std::int64_t segmentId) {
 }
 
 Status LabelModel::redoEdit(const workspace::LabelEdit& edit) {
-  if (workspace_ == nullptr) return Error("no database is open");
-  Status s = workspace_->redo(edit);
-  if (!s) emit errorOccurred(QString::fromStdString(s.errorText()));
-  if (Status r = reload(); !r) return r;
-  return s;
+  return replay(edit, true);
 }
 
 Status LabelModel::undoEdit(const workspace::LabelEdit& edit) {
+  return replay(edit, false);
+}
+
+Status LabelModel::replay(const workspace::LabelEdit& edit, bool forward) {
   if (workspace_ == nullptr) return Error("no database is open");
-  Status s = workspace_->undo(edit);
+  Status s = forward ? workspace_->redo(edit) : workspace_->undo(edit);
   if (!s) emit errorOccurred(QString::fromStdString(s.errorText()));
   if (Status r = reload(); !r) return r;
   return s;

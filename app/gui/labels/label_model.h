@@ -84,6 +84,8 @@ class LabelModel : public QObject {
 
  private:
   Status setCurrentSet(std::int64_t id, const std::string& name);
+  // Writes an edit's segments after (forward) or before it back, then reloads.
+  Status replay(const workspace::LabelEdit& edit, bool forward);
 
   workspace::Workspace* workspace_ = nullptr;
   std::int64_t setId_ = 0;
