@@ -66,21 +66,7 @@ SweepCellResult runCell(const SweepCell& cell, const SweepGrid& grid, const Shar
     r.reason = "no class has enough samples (at least max(2, D))";
     return r;
   }
-  ClassifierOptions options;
-  options.method = cell.method;
-  options.priors = grid.priors;
-  options.oneVsRest = false;
-  options.threads = 1;
-  options.gmm.components = cell.method == ClassifierMethod::Gaussian ? 1 : cell.order;
-  options.gmm.form = cell.form;
-  options.gmm.varianceFloor = cell.varianceFloor;
-  options.gmm.reg = grid.regularization;
-  options.gmm.init = grid.init;
-  options.gmm.seed = cell.seed;
-  options.gmm.restarts = grid.restarts;
-  options.gmm.maxIterations = grid.maxIterations;
-  options.gmm.tolerance = grid.tolerance;
-  options.gmm.threads = 1;
+  const ClassifierOptions options = cellClassifierOptions(grid, cell);
   const ClassifierFit fit = trainClassifier(data.perClass, data.names, options, keepGoing);
   r.fitSeconds = fit.fitSeconds;
   r.warnings = fit.warnings;
@@ -106,6 +92,25 @@ SweepCellResult runCell(const SweepCell& cell, const SweepGrid& grid, const Shar
 }
 
 }  // namespace
+
+ClassifierOptions cellClassifierOptions(const SweepGrid& grid, const SweepCell& cell) {
+  ClassifierOptions options;
+  options.method = cell.method;
+  options.priors = grid.priors;
+  options.oneVsRest = false;
+  options.threads = 1;
+  options.gmm.components = cell.method == ClassifierMethod::Gaussian ? 1 : cell.order;
+  options.gmm.form = cell.form;
+  options.gmm.varianceFloor = cell.varianceFloor;
+  options.gmm.reg = grid.regularization;
+  options.gmm.init = grid.init;
+  options.gmm.seed = cell.seed;
+  options.gmm.restarts = grid.restarts;
+  options.gmm.maxIterations = grid.maxIterations;
+  options.gmm.tolerance = grid.tolerance;
+  options.gmm.threads = 1;
+  return options;
+}
 
 std::vector<SweepCell> expandGrid(const SweepGrid& grid) {
   std::vector<SweepCell> cells;

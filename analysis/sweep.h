@@ -55,6 +55,10 @@ struct SweepCell {
   std::uint64_t seed = 1;
 };
 
+// The classifier settings of one cell: its own settings with the grid's shared ones, one thread
+// (results do not depend on it). A model trained with them reproduces the cell.
+ClassifierOptions cellClassifierOptions(const SweepGrid& grid, const SweepCell& cell);
+
 // Cells of a grid in a fixed order (group, features, method, form, order, variance floor, seed).
 std::vector<SweepCell> expandGrid(const SweepGrid& grid);
 
