@@ -313,6 +313,18 @@ Result<Workspace::Labelled> Workspace::loadLabelled(std::int64_t setId,
   return out;
 }
 
+RunSplit holdOutEveryFourth(std::vector<std::string> runs) {
+  RunSplit split;
+  runs = sorted(std::move(runs));
+  for (std::size_t i = 0; i < runs.size(); ++i)
+    (i % 4 == 3 ? split.test : split.train).push_back(runs[i]);
+  if (split.test.empty() && split.train.size() >= 2) {
+    split.test.push_back(split.train.back());
+    split.train.pop_back();
+  }
+  return split;
+}
+
 Result<TrainOutcome> Workspace::train(const TrainRequest& request, const ProgressFn& progress) {
   auto set = db_->findLabelSet(request.labelSet);
   if (!set) return set.error();
@@ -355,15 +367,9 @@ Result<TrainOutcome> Workspace::train(const TrainRequest& request, const Progres
     }
     outcome.evaluatedOn = "leave-one-run-out";
   } else if (testRuns.empty() && automaticTrain && trainRuns.size() >= 2) {
-    // Every fourth run by name is held out, and at least one.
-    std::vector<std::string> keep;
-    for (std::size_t i = 0; i < trainRuns.size(); ++i)
-      (i % 4 == 3 ? testRuns : keep).push_back(trainRuns[i]);
-    if (testRuns.empty()) {
-      testRuns.push_back(keep.back());
-      keep.pop_back();
-    }
-    trainRuns = std::move(keep);
+    RunSplit split = holdOutEveryFourth(trainRuns);
+    trainRuns = std::move(split.train);
+    testRuns = std::move(split.test);
     outcome.evaluatedOn = "test runs";
   } else {
     outcome.evaluatedOn = testRuns.empty() ? "training runs" : "test runs";

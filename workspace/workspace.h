@@ -39,6 +39,14 @@ enum class SplitMode {
 std::optional<SplitMode> parseSplitMode(std::string_view name);
 std::string_view splitModeName(SplitMode mode);
 
+// The default hold-out: every fourth run by name is a test run, and at least one when there are
+// two or more runs.
+struct RunSplit {
+  std::vector<std::string> train;
+  std::vector<std::string> test;
+};
+RunSplit holdOutEveryFourth(std::vector<std::string> runs);
+
 struct TrainRequest {
   std::string labelSet;
   std::vector<std::string> trainRuns;  // empty: every run the set labels, minus the test runs
@@ -162,6 +170,20 @@ class Workspace {
   Result<analysis::SweepResult> loadSweep(std::int64_t sweepId);
   // A stored model bundle.
   Result<analysis::ModelBundle> loadModel(std::string_view name);
+
+  // ---- model files (workspace_models.cpp) ----
+  // Writes a stored model to a model file through the one model reader and writer, so the file
+  // is exactly what training writes. Nothing is left at `out` on failure.
+  Status exportModel(std::string_view name, const std::filesystem::path& out);
+  // Stores a model file (checked by the model reader) under `name`, or the file's stem when empty;
+  // returns the stored name. A taken name is an error.
+  Result<std::string> importModel(const std::filesystem::path& file, std::string name = {});
+  // Trains the model of one sweep cell (index into loadSweep(sweepId).cells): the cell's group and
+  // settings with the sweep's shared settings, on the sweep's label set and training runs, scored
+  // on its test runs, and stored under `modelName` (empty: "<sweep name> <cell description>",
+  // made unique). Its test confusion equals the cell's: same data, settings and seed.
+  Result<TrainOutcome> trainSweepCell(std::int64_t sweepId, std::size_t cellIndex,
+                                      std::string modelName = {}, const ProgressFn& progress = {});
   // Classifies a stored run with a stored model; the bundle is returned beside the result, which
   // points into it.
   struct Classified {

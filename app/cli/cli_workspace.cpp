@@ -15,6 +15,7 @@
 #include "app/cli/cli_common.h"
 #include "base/file_text.h"
 #include "storage/run_database.h"
+#include "workspace/workspace.h"
 
 namespace tactile::cli {
 namespace {
@@ -75,44 +76,29 @@ int modelsList(const Common& c) {
 int modelsExport(const Common& c, const std::string& name, const std::string& out) {
   const Status writable = checkWritable(out);
   if (!writable) throw std::runtime_error(writable.errorText());
-  auto db = openDatabaseForRead(c.db);
-  auto text = db->loadModel(name);
-  if (!text) throw std::runtime_error(c.db + ": " + text.errorText());
-  // Through the one model reader and writer, so the file is exactly what training would write.
-  const Result<analysis::ModelBundle> read =
-      analysis::parseModelJson(text.value(), "model '" + name + "'");
-  if (!read) throw std::runtime_error(c.db + ": " + read.errorText());
-  const Status written = analysis::writeModelBundleFile(out, read.value());
-  if (!written) throw std::runtime_error(written.errorText());
+  workspace::Workspace ws(openDatabaseForRead(c.db));
+  const Status written = ws.exportModel(name, out);
+  if (!written) throw std::runtime_error(c.db + ": " + written.errorText());
+  const std::size_t groups = ws.loadModel(name).value().models.size();
   if (c.json) {
-    std::cout << json{{"model", name}, {"out", out}, {"groups", read->models.size()}}.dump()
-              << "\n";
+    std::cout << json{{"model", name}, {"out", out}, {"groups", groups}}.dump() << "\n";
   } else {
-    std::printf("wrote model '%s' (%zu group model(s)) to %s\n", name.c_str(), read->models.size(),
-                out.c_str());
+    std::printf("wrote model '%s' (%zu group model(s)) to %s\n", name.c_str(), groups, out.c_str());
   }
   return kExitOk;
 }
 
-int modelsImport(const Common& c, const std::string& file, std::string name) {
-  const Result<analysis::ModelBundle> read = analysis::readModelFile(file);
-  if (!read) throw std::runtime_error(read.errorText());
-  if (name.empty()) name = std::filesystem::path(file).stem().string();
-  auto db = openDatabaseOrCreate(c.db);
-  json metrics = json::object();
-  for (const analysis::GroupModel& m : read->models)
-    metrics[std::string(groupInfo(m.group).shortName)] = m.metrics;
-  json trainedOn = read->models.empty() ? json::object() : read->models.front().trainedOn;
-  if (!trainedOn.is_object()) trainedOn = json::object();
-  trainedOn["imported_from"] = file;
-  auto id = db->addModel(name, analysis::bundleToJson(read.value()).dump(), trainedOn.dump(),
-                         metrics.dump());
-  if (!id) throw std::runtime_error(c.db + ": " + id.errorText());
+int modelsImport(const Common& c, const std::string& file, const std::string& name) {
+  workspace::Workspace ws(openDatabaseOrCreate(c.db));
+  const Result<std::string> stored = ws.importModel(file, name);
+  if (!stored) throw std::runtime_error(stored.errorText());
+  const std::size_t groups = ws.loadModel(stored.value()).value().models.size();
+  auto id = ws.database().modelInfo(stored.value());
   if (c.json) {
-    std::cout << json{{"model", name}, {"id", id.value()}, {"groups", read->models.size()}}.dump()
+    std::cout << json{{"model", stored.value()}, {"id", id ? id->id : 0}, {"groups", groups}}.dump()
               << "\n";
   } else {
-    std::printf("stored model '%s' from %s\n", name.c_str(), file.c_str());
+    std::printf("stored model '%s' from %s\n", stored.value().c_str(), file.c_str());
   }
   return kExitOk;
 }

@@ -1,0 +1,138 @@
+// Model files in and out of a workspace, and models trained from sweep cells: the CLI's `models
+// export|import` and the workbench's Learn menu call these.
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <cstdio>
+#include <filesystem>
+#include <string>
+#include <system_error>
+#include <utility>
+#include <vector>
+
+#include "analysis/model_file.h"
+#include "workspace/workspace.h"
+
+namespace tactile::workspace {
+
+using nlohmann::json;
+
+namespace {
+
+Error failure(std::string message) {
+  return Error(std::move(message));
+}
+
+}  // namespace
+
+Status Workspace::exportModel(std::string_view name, const std::filesystem::path& out) {
+  auto bundle = loadModel(name);
+  if (!bundle) return bundle.error();
+  // Written beside the target and renamed into place: a failed write leaves no half file.
+  std::filesystem::path partial = out;
+  partial += ".partial";
+  if (Status written = analysis::writeModelBundleFile(partial, bundle.value()); !written) {
+    std::error_code ignored;
+    std::filesystem::remove(partial, ignored);
+    return written;
+  }
+  std::error_code ec;
+  std::filesystem::rename(partial, out, ec);
+  if (ec) {
+    std::filesystem::remove(partial, ec);
+    return failure(out.string() + ": cannot write: " + ec.message());
+  }
+  return {};
+}
+
+Result<std::string> Workspace::importModel(const std::filesystem::path& file, std::string name) {
+  const Result<analysis::ModelBundle> read = analysis::readModelFile(file);
+  if (!read) return read.error();
+  if (name.empty()) name = file.stem().string();
+  json metrics = json::object();
+  for (const analysis::GroupModel& m : read->models)
+    metrics[std::string(groupInfo(m.group).shortName)] = m.metrics;
+  json trainedOn = read->models.empty() ? json::object() : read->models.front().trainedOn;
+  if (!trainedOn.is_object()) trainedOn = json::object();
+  trainedOn["imported_from"] = file.string();
+  auto id = db_->addModel(name, analysis::bundleToJson(read.value()).dump(), trainedOn.dump(),
+                          metrics.dump());
+  if (!id) return id.error();
+  return name;
+}
+
+namespace {
+
+std::vector<std::string> runNames(const json& runs) {
+  std::vector<std::string> out;
+  if (!runs.is_array()) return out;
+  for (const json& r : runs)
+    if (r.is_object() && r.contains("name") && r["name"].is_string())
+      out.push_back(r["name"].get<std::string>());
+  return out;
+}
+
+std::string floorText(double floor) {
+  char buffer[32];
+  std::snprintf(buffer, sizeof buffer, "%g", floor);
+  return buffer;
+}
+
+}  // namespace
+
+Result<TrainOutcome> Workspace::trainSweepCell(std::int64_t sweepId, std::size_t cellIndex,
+                                               std::string modelName, const ProgressFn& progress) {
+  auto info = db_->sweepInfo(sweepId);
+  if (!info) return info.error();
+  auto sweep = loadSweep(sweepId);
+  if (!sweep) return sweep.error();
+  if (cellIndex >= sweep->cells.size()) {
+    return failure("sweep " + std::to_string(sweepId) + " has " +
+                   std::to_string(sweep->cells.size()) + " cells; there is no cell " +
+                   std::to_string(cellIndex));
+  }
+  json configuration;
+  try {
+    configuration = json::parse(info->configurationJson);
+  } catch (const json::exception& e) {
+    return failure("sweep " + std::to_string(sweepId) + ": stored JSON is malformed: " + e.what());
+  }
+  const analysis::SweepCell& cell = sweep->cells[cellIndex].cell;
+  TrainRequest request;
+  request.labelSet = configuration.value("label_set", std::string());
+  if (request.labelSet.empty()) {
+    return failure("sweep " + std::to_string(sweepId) +
+                   " was not run on a stored label set; train its settings with `tactile train`");
+  }
+  request.trainRuns = runNames(configuration.value("train_runs", json::array()));
+  request.testRuns = runNames(configuration.value("test_runs", json::array()));
+  request.groups = {cell.group};
+  request.settings.features = cell.features;
+  request.settings.classifier = analysis::cellClassifierOptions(sweep->grid, cell);
+  request.settings.classifier.threads = 0;
+  request.settings.classifier.gmm.threads = 0;
+  request.minRowsPerGroup = 1;
+  if (modelName.empty()) {
+    const std::string base = info->name + " " + std::string(groupInfo(cell.group).shortName) + " " +
+                             std::string(analysis::classifierMethodName(cell.method)) +
+                             (cell.method == analysis::ClassifierMethod::Gmm
+                                  ? " " + std::string(analysis::covarianceFormName(cell.form)) +
+                                        " order " + std::to_string(cell.order)
+                                  : std::string()) +
+                             " floor " + floorText(cell.varianceFloor);
+    modelName = base;
+    for (int n = 2; db_->modelInfo(modelName); ++n)
+      modelName = base + " (" + std::to_string(n) + ")";
+  }
+  request.modelName = modelName;
+  auto outcome = train(request, progress);
+  if (!outcome) return outcome.error();
+  if (outcome->groups.empty() || !outcome->groups.front().trained) {
+    return failure("the cell's model could not be trained: " +
+                   (outcome->groups.empty() ? std::string("no group")
+                                            : outcome->groups.front().skippedBecause));
+  }
+  return outcome;
+}
+
+}  // namespace tactile::workspace
