@@ -1,7 +1,293 @@
-// placeholder: replaced by the real tests
+// The train-and-sweep dialog: a sweep started from it runs off the GUI thread with progress and a
+// time estimate, streams its cells into the sortable table, can be cancelled keeping its finished
+// cells, and stores exactly the numbers `tactile sweep` stores for the same request.
+#include <QComboBox>
+#include <QLabel>
+#include <QLineEdit>
+#include <QProcess>
+#include <QProgressBar>
+#include <QPushButton>
+#include <QSignalSpy>
+#include <QTableView>
 #include <QtTest>
-class Placeholder : public QObject {
-  Q_OBJECT
+
+#include <memory>
+
+#include "app/gui/learning/sweep_cells_model.h"
+#include "app/gui/learning/sweep_worker.h"
+#include "app/gui/learning/training_dialog.h"
+#include "tests/app/gui_fixture.h"
+
+using namespace tactile;
+using tactile::gui::TrainingDialog;
+
+namespace {
+
+// The fixture's run plus two more from other scenes, all labelled from their truth in set
+// "truth"; room3_demo is the test run.
+struct LearningFixture : gui::testing::GuiFixture {
+  LearningFixture() : GuiFixture(500, "room1") {
+    for (const char* scene : {"room2", "room3"}) {
+      auto loaded = sim::loadScene(scene);
+      if (!loaded) throw std::runtime_error(loaded.errorText());
+      auto world = std::make_shared<const sim::World>(std::move(loaded.value()));
+      sim::RunOptions options;
+      options.maxSteps = 500;
+      options.stopAtGoal = false;
+      auto run = sim::simulateRun(world, scene, options);
+      if (!run) throw std::runtime_error(run.errorText());
+      const std::string name = std::string(scene) + "_demo";
+      const storage::ImportOutcome out = workspace->database().importRun(run.value().run, name);
+      if (out.status != storage::ImportStatus::Imported) throw std::runtime_error(out.message);
+    }
+    for (const char* name : {"room1_demo", "room2_demo", "room3_demo"}) {
+      auto info = workspace->database().findRun(name);
+      if (!info) throw std::runtime_error(info.errorText());
+      auto written = workspace->database().autolabel(info->id, "truth");
+      if (!written) throw std::runtime_error(written.errorText());
+    }
+  }
 };
-QTEST_MAIN(Placeholder)
+
+// A small grid: 2 groups x 2 orders x 1 form x 2 floors = 8 cells.
+void smallGrid(TrainingDialog& dialog) {
+  dialog.setLabelSet(QStringLiteral("truth"));
+  dialog.setRunRole(QStringLiteral("room1_demo"), TrainingDialog::RunRole::Train);
+  dialog.setRunRole(QStringLiteral("room2_demo"), TrainingDialog::RunRole::Train);
+  dialog.setRunRole(QStringLiteral("room3_demo"), TrainingDialog::RunRole::Test);
+  dialog.setGroupsChecked({SensorGroup::Front, SensorGroup::Left});
+  dialog.setFormsChecked({analysis::CovarianceForm::NodalDiag});
+  dialog.setGrid(QStringLiteral("1, 2"), QStringLiteral("0.03 0.1"), QStringLiteral("1"));
+}
+
+QPushButton* button(TrainingDialog& dialog, const char* name) {
+  auto* b = dialog.findChild<QPushButton*>(QString::fromLatin1(name));
+  if (b == nullptr) qFatal("no button %s", name);
+  return b;
+}
+
+}  // namespace
+
+class TrainingDialogTest : public QObject {
+  Q_OBJECT
+
+ private slots:
+  void defaultSplitHoldsOutEveryFourthRun();
+  void sweepShowsProgressAndStreamsSortedCells();
+  void cliStoresTheSameNumbers();
+  void cancelKeepsFinishedCells();
+  void badGridIsReportedAndNothingStarts();
+  void trainStoresAModel();
+};
+
+void TrainingDialogTest::defaultSplitHoldsOutEveryFourthRun() {
+  LearningFixture f;
+  TrainingDialog dialog(*f.workspace, QString::fromStdString(f.dbPath));
+  dialog.setLabelSet(QStringLiteral("truth"));
+  auto request = dialog.sweepRequest();
+  QVERIFY2(request.ok(), request.ok() ? "" : request.errorText().c_str());
+  // Three runs: none is fourth, so the last by name is held out, as `tactile train` does.
+  QCOMPARE(request->testRuns, std::vector<std::string>{"room3_demo"});
+  QCOMPARE(request->trainRuns, (std::vector<std::string>{"room1_demo", "room2_demo"}));
+}
+
+void TrainingDialogTest::sweepShowsProgressAndStreamsSortedCells() {
+  LearningFixture f;
+  TrainingDialog dialog(*f.workspace, QString::fromStdString(f.dbPath));
+  smallGrid(dialog);
+  QSignalSpy progressed(dialog.worker(), &gui::SweepWorker::progressed);
+  QSignalSpy cells(dialog.worker(), &gui::SweepWorker::cellFinished);
+  QSignalSpy stored(&dialog, &TrainingDialog::sweepStored);
+  QSignalSpy finished(&dialog, &TrainingDialog::jobFinished);
+  QTest::mouseClick(button(dialog, "runSweep"), Qt::LeftButton);
+  QVERIFY(dialog.worker()->isRunning());
+  QVERIFY(!button(dialog, "runSweep")->isEnabled());
+  QVERIFY(button(dialog, "cancel")->isEnabled());
+  QCOMPARE(dialog.progressBar()->maximum(), 8);
+  QVERIFY(finished.wait(120000));
+
+  QCOMPARE(cells.count(), 8);
+  QCOMPARE(dialog.cellsModel()->rowCount(), 8);
+  QVERIFY(progressed.count() >= 1);
+  QCOMPARE(progressed.last().at(0).toLongLong(), 8);  // done
+  QCOMPARE(progressed.last().at(1).toLongLong(), 8);  // of
+  QCOMPARE(dialog.progressBar()->value(), 8);
+  QVERIFY2(dialog.statusLabel()->text().contains(QStringLiteral("finished")),
+           qPrintable(dialog.statusLabel()->text()));
+  QCOMPARE(stored.count(), 1);
+  const qint64 sweepId = stored.first().at(0).toLongLong();
+  QVERIFY(sweepId > 0);
+  QVERIFY(button(dialog, "runSweep")->isEnabled());
+  QVERIFY(!button(dialog, "cancel")->isEnabled());
+
+  // The table is sorted by balanced accuracy, best first, and shows each cell's own score.
+  const QAbstractItemModel* view = dialog.cellsView()->model();
+  double previous = 1e9;
+  for (int row = 0; row < view->rowCount(); ++row) {
+    const double score =
+        view->data(view->index(row, gui::SweepCellsModel::BalancedAccuracy), Qt::UserRole)
+            .toDouble();
+    QVERIFY(score <= previous);
+    previous = score;
+  }
+  double best = -1;
+  for (const analysis::SweepCellResult& c : dialog.cellsModel()->cells())
+    if (c.ok) best = std::max(best, 100.0 * c.metrics.balancedAccuracy);
+  QVERIFY(best > 0.0);  // cells were fitted and scored
+  QCOMPARE(
+      view->data(view->index(0, gui::SweepCellsModel::BalancedAccuracy), Qt::UserRole).toDouble(),
+      best);
+
+  // What the table shows is what was stored.
+  auto loaded = f.workspace->loadSweep(sweepId);
+  QVERIFY(loaded.ok());
+  QCOMPARE(loaded->cells.size(), std::size_t{8});
+}
+
+void TrainingDialogTest::cliStoresTheSameNumbers() {
+  LearningFixture f;
+  TrainingDialog dialog(*f.workspace, QString::fromStdString(f.dbPath));
+  smallGrid(dialog);
+  QSignalSpy stored(&dialog, &TrainingDialog::sweepStored);
+  QSignalSpy finished(&dialog, &TrainingDialog::jobFinished);
+  dialog.startSweep();
+  QVERIFY(finished.wait(120000));
+  QCOMPARE(stored.count(), 1);
+  const qint64 guiSweep = stored.first().at(0).toLongLong();
+
+  QProcess cli;
+  cli.start(QStringLiteral(TACTILE_CLI), {QStringLiteral("sweep"),
+                                          QStringLiteral("--db"),
+                                          QString::fromStdString(f.dbPath),
+                                          QStringLiteral("--set"),
+                                          QStringLiteral("truth"),
+                                          QStringLiteral("--train-runs"),
+                                          QStringLiteral("room1_demo,room2_demo"),
+                                          QStringLiteral("--test-runs"),
+                                          QStringLiteral("room3_demo"),
+                                          QStringLiteral("--groups"),
+                                          QStringLiteral("F,L"),
+                                          QStringLiteral("--orders"),
+                                          QStringLiteral("1,2"),
+                                          QStringLiteral("--covs"),
+                                          QStringLiteral("nodal-diag"),
+                                          QStringLiteral("--floors"),
+                                          QStringLiteral("0.03,0.1"),
+                                          QStringLiteral("--seeds"),
+                                          QStringLiteral("1"),
+                                          QStringLiteral("--json")});
+  QVERIFY(cli.waitForFinished(180000));
+  QVERIFY2(cli.exitCode() == 0, cli.readAllStandardError().constData());
+
+  auto sweeps = f.workspace->sweeps();
+  QVERIFY(sweeps.ok());
+  QCOMPARE(sweeps->size(), std::size_t{2});
+  const std::int64_t cliSweep =
+      sweeps->front().id == guiSweep ? sweeps->back().id : sweeps->front().id;
+  auto a = f.workspace->loadSweep(guiSweep);
+  auto b = f.workspace->loadSweep(cliSweep);
+  QVERIFY(a.ok() && b.ok());
+  QCOMPARE(a->cells.size(), b->cells.size());
+  QCOMPARE(a->cells.size(), std::size_t{8});
+  for (std::size_t i = 0; i < a->cells.size(); ++i) {
+    const analysis::SweepCellResult& x = a->cells[i];
+    const analysis::SweepCellResult& y = b->cells[i];
+    QCOMPARE(x.cell.group, y.cell.group);
+    QCOMPARE(x.cell.order, y.cell.order);
+    QCOMPARE(x.cell.varianceFloor, y.cell.varianceFloor);
+    QCOMPARE(x.ok, y.ok);
+    QCOMPARE(x.trainRows, y.trainRows);
+    QCOMPARE(x.testRows, y.testRows);
+    QCOMPARE(x.iterations, y.iterations);
+    QVERIFY(x.confusion == y.confusion);
+    QVERIFY(x.confusion.total() > 0 || !x.ok);
+    QCOMPARE(x.metrics.balancedAccuracy, y.metrics.balancedAccuracy);
+    QCOMPARE(x.meanLogLikelihood.has_value(), y.meanLogLikelihood.has_value());
+    if (x.meanLogLikelihood) QCOMPARE(*x.meanLogLikelihood, *y.meanLogLikelihood);
+  }
+}
+
+void TrainingDialogTest::cancelKeepsFinishedCells() {
+  LearningFixture f;
+  TrainingDialog dialog(*f.workspace, QString::fromStdString(f.dbPath));
+  dialog.setLabelSet(QStringLiteral("truth"));
+  // Big enough not to finish before the cancel: 8 groups x 7 orders x 4 forms x 3 floors.
+  dialog.setFormsChecked({analysis::CovarianceForm::NodalFull, analysis::CovarianceForm::NodalDiag,
+                          analysis::CovarianceForm::GrandFull,
+                          analysis::CovarianceForm::GrandDiag});
+  dialog.setGrid(QStringLiteral("1,2,4,8,16,32,64"), QStringLiteral("0.01,0.03,0.1"),
+                 QStringLiteral("1"));
+  QSignalSpy cells(dialog.worker(), &gui::SweepWorker::cellFinished);
+  QSignalSpy finished(&dialog, &TrainingDialog::jobFinished);
+  QSignalSpy stored(&dialog, &TrainingDialog::sweepStored);
+  dialog.startSweep();
+  QCOMPARE(dialog.progressBar()->maximum(), 8 * 7 * 4 * 3);
+  QVERIFY(cells.wait(120000));
+  QTest::mouseClick(button(dialog, "cancel"), Qt::LeftButton);
+  QVERIFY(!button(dialog, "cancel")->isEnabled());
+  QVERIFY(finished.wait(60000));
+  QVERIFY2(dialog.statusLabel()->text().contains(QStringLiteral("cancelled")),
+           qPrintable(dialog.statusLabel()->text()));
+  const int shown = dialog.cellsModel()->rowCount();
+  QVERIFY(shown >= 1);
+  QVERIFY(shown < 8 * 7 * 4 * 3);
+  QCOMPARE(stored.count(), 1);
+  auto sweep = f.workspace->loadSweep(stored.first().at(0).toLongLong());
+  QVERIFY(sweep.ok());
+  QVERIFY(sweep->cancelled);
+  QCOMPARE(static_cast<int>(sweep->cells.size()), shown);
+  QVERIFY(button(dialog, "runSweep")->isEnabled());
+}
+
+void TrainingDialogTest::badGridIsReportedAndNothingStarts() {
+  LearningFixture f;
+  TrainingDialog dialog(*f.workspace, QString::fromStdString(f.dbPath));
+  smallGrid(dialog);
+  dialog.setGrid(QStringLiteral("1, x"), QStringLiteral("0.1"), QStringLiteral("1"));
+  dialog.startSweep();
+  QVERIFY(!dialog.worker()->isRunning());
+  QVERIFY2(dialog.statusLabel()->text().contains(QStringLiteral("&#x27;x&#x27;")) ||
+               dialog.statusLabel()->text().contains(QStringLiteral("'x'")),
+           qPrintable(dialog.statusLabel()->text()));
+  dialog.setGrid(QStringLiteral("1"), QStringLiteral("-0.1"), QStringLiteral("1"));
+  dialog.startSweep();
+  QVERIFY(!dialog.worker()->isRunning());
+  QVERIFY(dialog.statusLabel()->text().contains(QStringLiteral("negative")));
+  auto sweeps = f.workspace->sweeps();
+  QVERIFY(sweeps.ok());
+  QVERIFY(sweeps->empty());
+}
+
+void TrainingDialogTest::trainStoresAModel() {
+  LearningFixture f;
+  TrainingDialog dialog(*f.workspace, QString::fromStdString(f.dbPath));
+  smallGrid(dialog);
+  QSignalSpy trained(&dialog, &TrainingDialog::modelTrained);
+  QSignalSpy finished(&dialog, &TrainingDialog::jobFinished);
+  QTest::mouseClick(button(dialog, "trainModel"), Qt::LeftButton);
+  QVERIFY(finished.wait(120000));
+  QCOMPARE(trained.count(), 1);
+  const QString name = trained.first().at(0).toString();
+  auto bundle = f.workspace->loadModel(name.toStdString());
+  QVERIFY2(bundle.ok(), bundle.ok() ? "" : bundle.errorText().c_str());
+  // Groups F and L only, each either in the bundle or reported as skipped; order 1 (the first).
+  QVERIFY(!bundle->models.empty());
+  for (const char* group : {"F", "L"}) {
+    bool inBundle = false;
+    for (const analysis::GroupModel& m : bundle->models) {
+      QVERIFY(m.group == SensorGroup::Front || m.group == SensorGroup::Left);
+      inBundle = inBundle || groupInfo(m.group).shortName == group;
+    }
+    const bool skipped =
+        dialog.statusLabel()->text().contains(QStringLiteral("%1: skipped").arg(group));
+    QVERIFY2(inBundle != skipped, qPrintable(dialog.statusLabel()->text()));
+  }
+  for (const analysis::GroupModel& m : bundle->models) {
+    QCOMPARE(m.varianceFloor, 0.03);
+    for (const analysis::GaussianMixture& mixture : m.classifier.models())
+      QCOMPARE(mixture.components(), 1);
+  }
+}
+
+QTEST_MAIN(TrainingDialogTest)
 #include "training_dialog_test.moc"

@@ -1,1 +1,154 @@
-// placeholder
+#include "app/gui/learning/sweep_cells_model.h"
+
+#include <QString>
+
+#include <utility>
+
+namespace tactile::gui {
+
+namespace {
+
+QString text(std::string_view s) {
+  return QString::fromUtf8(s.data(), static_cast<qsizetype>(s.size()));
+}
+
+bool isGaussian(const analysis::SweepCell& c) {
+  return c.method == analysis::ClassifierMethod::Gaussian;
+}
+
+}  // namespace
+
+SweepCellsModel::SweepCellsModel(QObject* parent) : QAbstractTableModel(parent) {}
+
+void SweepCellsModel::setCells(std::vector<analysis::SweepCellResult> cells) {
+  beginResetModel();
+  cells_ = std::move(cells);
+  endResetModel();
+}
+
+void SweepCellsModel::addCell(const analysis::SweepCellResult& cell) {
+  const int row = static_cast<int>(cells_.size());
+  beginInsertRows({}, row, row);
+  cells_.push_back(cell);
+  endInsertRows();
+}
+
+void SweepCellsModel::clear() {
+  setCells({});
+}
+
+int SweepCellsModel::rowCount(const QModelIndex& parent) const {
+  return parent.isValid() ? 0 : static_cast<int>(cells_.size());
+}
+
+int SweepCellsModel::columnCount(const QModelIndex& parent) const {
+  return parent.isValid() ? 0 : ColumnCount;
+}
+
+QVariant SweepCellsModel::data(const QModelIndex& index, int role) const {
+  if (!index.isValid() || index.row() >= rowCount()) return {};
+  const analysis::SweepCellResult& r = cells_[static_cast<std::size_t>(index.row())];
+  const analysis::SweepCell& c = r.cell;
+  const bool sort = role == Qt::UserRole;
+  if (role == Qt::TextAlignmentRole) {
+    const bool numeric = index.column() == Order || index.column() == Floor ||
+                         index.column() == Seed || index.column() >= FitSeconds;
+    return numeric && index.column() != Converged && index.column() != Status
+               ? QVariant(int(Qt::AlignRight | Qt::AlignVCenter))
+               : QVariant();
+  }
+  if (role == Qt::ToolTipRole) {
+    if (!r.ok) return text(r.reason);
+    QStringList lines;
+    for (const std::string& w : r.warnings)
+      lines << text(w);
+    return lines.isEmpty() ? QVariant() : QVariant(lines.join(QLatin1Char('\n')));
+  }
+  if (role != Qt::DisplayRole && !sort) return {};
+  // A score of a cell without a model sorts below every real score.
+  const auto score = [&](double value, int decimals) -> QVariant {
+    if (!r.ok) return sort ? QVariant(-1.0) : QVariant(QStringLiteral("-"));
+    return sort ? QVariant(value) : QVariant(QString::number(value, 'f', decimals));
+  };
+  switch (index.column()) {
+    case Group:
+      return sort ? QVariant(static_cast<int>(c.group))
+                  : QVariant(text(groupInfo(c.group).shortName));
+    case Method:
+      return text(analysis::classifierMethodName(c.method));
+    case Form:
+      return isGaussian(c) ? QString() : text(analysis::covarianceFormName(c.form));
+    case Order:
+      return isGaussian(c) && !sort ? QVariant(QString()) : QVariant(c.order);
+    case Floor:
+      return sort ? QVariant(c.varianceFloor) : QVariant(QString::number(c.varianceFloor, 'g', 4));
+    case Features:
+      return text(analysis::featureKindName(c.features));
+    case Seed:
+      return sort ? QVariant(static_cast<qulonglong>(c.seed)) : QVariant(QString::number(c.seed));
+    case FitSeconds:
+      return sort ? QVariant(r.fitSeconds) : QVariant(QString::number(r.fitSeconds, 'f', 3));
+    case PredictSeconds:
+      return sort ? QVariant(r.predictSeconds)
+                  : QVariant(QString::number(r.predictSeconds, 'f', 3));
+    case Iterations:
+      return r.iterations;
+    case Converged:
+      return r.ok ? (r.converged ? tr("yes") : tr("no")) : QString();
+    case Accuracy:
+      return score(100.0 * r.metrics.accuracy, 1);
+    case BalancedAccuracy:
+      return score(100.0 * r.metrics.balancedAccuracy, 1);
+    case MacroF1:
+      return score(r.metrics.macroF1, 3);
+    case LogLikelihood:
+      if (!r.meanLogLikelihood) return sort ? QVariant(-1e300) : QVariant(QStringLiteral("-"));
+      return score(*r.meanLogLikelihood, 2);
+    case Status:
+      return r.ok ? tr("fitted") : tr("no model: %1").arg(text(r.reason));
+    default:
+      return {};
+  }
+}
+
+QVariant SweepCellsModel::headerData(int section, Qt::Orientation orientation, int role) const {
+  if (orientation != Qt::Horizontal || role != Qt::DisplayRole) return {};
+  switch (section) {
+    case Group:
+      return tr("Group");
+    case Method:
+      return tr("Method");
+    case Form:
+      return tr("Covariance");
+    case Order:
+      return tr("Order");
+    case Floor:
+      return tr("Floor");
+    case Features:
+      return tr("Features");
+    case Seed:
+      return tr("Seed");
+    case FitSeconds:
+      return tr("Fit s");
+    case PredictSeconds:
+      return tr("Predict s");
+    case Iterations:
+      return tr("Iterations");
+    case Converged:
+      return tr("Converged");
+    case Accuracy:
+      return tr("Accuracy %");
+    case BalancedAccuracy:
+      return tr("Balanced %");
+    case MacroF1:
+      return tr("Macro-F1");
+    case LogLikelihood:
+      return tr("Held-out loglik");
+    case Status:
+      return tr("Status");
+    default:
+      return {};
+  }
+}
+
+}  // namespace tactile::gui

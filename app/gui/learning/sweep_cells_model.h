@@ -1,1 +1,56 @@
-// placeholder
+// The cells of a sweep as a table: one row per cell with its settings, times and scores, growing
+// as cells finish. Display text is formatted; Qt::UserRole holds the raw number (or text) of each
+// column, so a QSortFilterProxyModel with sort role UserRole sorts numerically.
+#pragma once
+
+#include <QAbstractTableModel>
+
+#include <vector>
+
+#include "analysis/sweep.h"
+
+namespace tactile::gui {
+
+class SweepCellsModel : public QAbstractTableModel {
+  Q_OBJECT
+
+ public:
+  enum Column {
+    Group,
+    Method,
+    Form,
+    Order,
+    Floor,
+    Features,
+    Seed,
+    FitSeconds,
+    PredictSeconds,
+    Iterations,
+    Converged,
+    Accuracy,
+    BalancedAccuracy,
+    MacroF1,
+    LogLikelihood,
+    Status,
+    ColumnCount
+  };
+
+  explicit SweepCellsModel(QObject* parent = nullptr);
+
+  void setCells(std::vector<analysis::SweepCellResult> cells);
+  void addCell(const analysis::SweepCellResult& cell);
+  void clear();
+  const std::vector<analysis::SweepCellResult>& cells() const { return cells_; }
+  const analysis::SweepCellResult& cell(int row) const { return cells_.at(row); }
+
+  int rowCount(const QModelIndex& parent = {}) const override;
+  int columnCount(const QModelIndex& parent = {}) const override;
+  QVariant data(const QModelIndex& index, int role = Qt::DisplayRole) const override;
+  QVariant headerData(int section, Qt::Orientation orientation,
+                      int role = Qt::DisplayRole) const override;
+
+ private:
+  std::vector<analysis::SweepCellResult> cells_;
+};
+
+}  // namespace tactile::gui

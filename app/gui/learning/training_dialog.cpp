@@ -1,1 +1,538 @@
-// placeholder
+#include "app/gui/learning/training_dialog.h"
+
+#include <QCheckBox>
+#include <QComboBox>
+#include <QDialogButtonBox>
+#include <QFormLayout>
+#include <QGroupBox>
+#include <QHBoxLayout>
+#include <QHeaderView>
+#include <QLabel>
+#include <QLineEdit>
+#include <QProgressBar>
+#include <QPushButton>
+#include <QRegularExpression>
+#include <QSortFilterProxyModel>
+#include <QSpinBox>
+#include <QSplitter>
+#include <QTableView>
+#include <QTableWidget>
+#include <QVBoxLayout>
+
+#include <algorithm>
+#include <cmath>
+#include <utility>
+
+#include "app/gui/learning/sweep_cells_model.h"
+#include "app/gui/learning/sweep_worker.h"
+
+namespace tactile::gui {
+
+namespace {
+
+constexpr int kTrainColumn = 2;
+constexpr int kTestColumn = 3;
+
+Error failure(std::string message) {
+  return Error(std::move(message));
+}
+
+QString qs(std::string_view s) {
+  return QString::fromUtf8(s.data(), static_cast<qsizetype>(s.size()));
+}
+
+// "1, 2, 4" or "1 2 4": the items, or what is wrong.
+Result<std::vector<double>> parseNumbers(const QString& text, const QString& what) {
+  std::vector<double> out;
+  const QStringList items =
+      text.split(QRegularExpression(QStringLiteral("[,;\\s]+")), Qt::SkipEmptyParts);
+  for (const QString& item : items) {
+    bool ok = false;
+    const double v = item.toDouble(&ok);
+    if (!ok || !std::isfinite(v)) {
+      return failure(what.toStdString() + ": '" + item.toStdString() + "' is not a number");
+    }
+    out.push_back(v);
+  }
+  if (out.empty()) return failure(what.toStdString() + ": give at least one value");
+  return out;
+}
+
+QString duration(double seconds) {
+  const long s = std::lround(std::max(0.0, seconds));
+  return s >= 3600 ? QStringLiteral("%1:%2:%3")
+                         .arg(s / 3600)
+                         .arg((s / 60) % 60, 2, 10, QLatin1Char('0'))
+                         .arg(s % 60, 2, 10, QLatin1Char('0'))
+                   : QStringLiteral("%1:%2").arg(s / 60).arg(s % 60, 2, 10, QLatin1Char('0'));
+}
+
+}  // namespace
+
+TrainingDialog::TrainingDialog(workspace::Workspace& workspace, QString databasePath,
+                               QWidget* parent)
+    : QDialog(parent), workspace_(workspace), databasePath_(std::move(databasePath)) {
+  setWindowTitle(tr("Train and sweep"));
+  worker_ = new SweepWorker(this);
+  cells_ = new SweepCellsModel(this);
+  buildUi();
+  connect(worker_, &SweepWorker::progressed, this, &TrainingDialog::onProgress);
+  connect(worker_, &SweepWorker::cellFinished, this,
+          [this](const analysis::SweepCellResult& cell) { cells_->addCell(cell); });
+  connect(worker_, &SweepWorker::finished, this, &TrainingDialog::onFinished);
+  reload();
+}
+
+TrainingDialog::~TrainingDialog() = default;
+
+void TrainingDialog::buildUi() {
+  auto* settings = new QWidget;
+  auto* form = new QFormLayout(settings);
+
+  labelSet_ = new QComboBox;
+  labelSet_->setObjectName(QStringLiteral("labelSet"));
+  connect(labelSet_, &QComboBox::currentTextChanged, this, [this] { fillRuns(); });
+  form->addRow(tr("Label set:"), labelSet_);
+
+  runs_ = new QTableWidget(0, 4);
+  runs_->setObjectName(QStringLiteral("runs"));
+  runs_->setHorizontalHeaderLabels({tr("Run"), tr("Steps"), tr("Train"), tr("Test")});
+  runs_->horizontalHeader()->setSectionResizeMode(0, QHeaderView::Stretch);
+  runs_->verticalHeader()->hide();
+  runs_->setSelectionMode(QAbstractItemView::NoSelection);
+  runs_->setMinimumHeight(140);
+  // A run is a training run or a test run, never both.
+  connect(runs_, &QTableWidget::itemChanged, this, [this](QTableWidgetItem* item) {
+    if (item->checkState() != Qt::Checked) return;
+    const int other = item->column() == kTrainColumn ? kTestColumn : kTrainColumn;
+    if (item->column() != kTrainColumn && item->column() != kTestColumn) return;
+    if (QTableWidgetItem* o = runs_->item(item->row(), other); o && o->checkState() == Qt::Checked)
+      o->setCheckState(Qt::Unchecked);
+  });
+  form->addRow(tr("Runs:"), runs_);
+
+  split_ = new QComboBox;
+  split_->addItem(tr("Score on the test runs"), static_cast<int>(workspace::SplitMode::ByRun));
+  split_->addItem(tr("Leave one run out (training only)"),
+                  static_cast<int>(workspace::SplitMode::LeaveOneRunOut));
+  form->addRow(tr("Split:"), split_);
+
+  auto* groupRow = new QHBoxLayout;
+  for (const GroupInfo& g : kSensorGroups) {
+    auto* box = new QCheckBox(qs(g.shortName));
+    box->setToolTip(qs(g.longName));
+    box->setChecked(true);
+    groups_.push_back(box);
+    groupRow->addWidget(box);
+  }
+  groupRow->addStretch();
+  form->addRow(tr("Groups:"), groupRow);
+
+  auto* methodRow = new QHBoxLayout;
+  gaussian_ = new QCheckBox(tr("Gaussian"));
+  gmm_ = new QCheckBox(tr("GMM"));
+  gmm_->setChecked(true);
+  methodRow->addWidget(gaussian_);
+  methodRow->addWidget(gmm_);
+  methodRow->addStretch();
+  form->addRow(tr("Methods:"), methodRow);
+
+  orders_ = new QLineEdit(QStringLiteral("1, 2, 4, 8, 16"));
+  orders_->setObjectName(QStringLiteral("orders"));
+  orders_->setToolTip(tr("Model orders (components per class), comma-separated"));
+  form->addRow(tr("Orders:"), orders_);
+
+  auto* formRow = new QHBoxLayout;
+  for (analysis::CovarianceForm f : analysis::kAllCovarianceForms) {
+    auto* box = new QCheckBox(qs(analysis::covarianceFormName(f)));
+    box->setChecked(f == analysis::CovarianceForm::NodalDiag ||
+                    f == analysis::CovarianceForm::NodalFull);
+    forms_.push_back(box);
+    formRow->addWidget(box);
+  }
+  formRow->addStretch();
+  form->addRow(tr("Covariance:"), formRow);
+
+  floors_ = new QLineEdit(QStringLiteral("0.01, 0.03, 0.1"));
+  floors_->setObjectName(QStringLiteral("floors"));
+  floors_->setToolTip(tr("Variance floors, comma-separated"));
+  form->addRow(tr("Variance floors:"), floors_);
+
+  auto* featureRow = new QHBoxLayout;
+  for (analysis::FeatureKind k : {analysis::FeatureKind::Normal, analysis::FeatureKind::Magnitude,
+                                  analysis::FeatureKind::NormalShear}) {
+    auto* box = new QCheckBox(qs(analysis::featureKindName(k)));
+    box->setChecked(k == analysis::FeatureKind::Normal);
+    features_.push_back(box);
+    featureRow->addWidget(box);
+  }
+  featureRow->addStretch();
+  form->addRow(tr("Features:"), featureRow);
+
+  seeds_ = new QLineEdit(QStringLiteral("1"));
+  seeds_->setObjectName(QStringLiteral("seeds"));
+  form->addRow(tr("Seeds:"), seeds_);
+
+  name_ = new QLineEdit;
+  name_->setPlaceholderText(tr("automatic"));
+  form->addRow(tr("Name:"), name_);
+
+  threads_ = new QSpinBox;
+  threads_->setRange(0, 256);
+  threads_->setSpecialValueText(tr("all cores"));
+  form->addRow(tr("Threads:"), threads_);
+
+  sweepButton_ = new QPushButton(tr("Run sweep"));
+  sweepButton_->setObjectName(QStringLiteral("runSweep"));
+  sweepButton_->setDefault(true);
+  trainButton_ = new QPushButton(tr("Train model"));
+  trainButton_->setObjectName(QStringLiteral("trainModel"));
+  trainButton_->setToolTip(tr("Train one model per group with the first value of every list"));
+  cancelButton_ = new QPushButton(tr("Cancel"));
+  cancelButton_->setObjectName(QStringLiteral("cancel"));
+  cancelButton_->setEnabled(false);
+  auto* close = new QPushButton(tr("Close"));
+  connect(sweepButton_, &QPushButton::clicked, this, &TrainingDialog::startSweep);
+  connect(trainButton_, &QPushButton::clicked, this, &TrainingDialog::startTrain);
+  connect(cancelButton_, &QPushButton::clicked, this, &TrainingDialog::cancel);
+  connect(close, &QPushButton::clicked, this, &QDialog::close);
+
+  progress_ = new QProgressBar;
+  progress_->setRange(0, 1);
+  progress_->setValue(0);
+  status_ = new QLabel(tr("Choose the runs and the grid, then run a sweep or train a model."));
+  status_->setWordWrap(true);
+  status_->setTextInteractionFlags(Qt::TextSelectableByMouse);
+
+  sorted_ = new QSortFilterProxyModel(this);
+  sorted_->setSourceModel(cells_);
+  sorted_->setSortRole(Qt::UserRole);
+  cellsView_ = new QTableView;
+  cellsView_->setObjectName(QStringLiteral("cells"));
+  cellsView_->setModel(sorted_);
+  cellsView_->setSortingEnabled(true);
+  cellsView_->sortByColumn(SweepCellsModel::BalancedAccuracy, Qt::DescendingOrder);
+  cellsView_->setSelectionBehavior(QAbstractItemView::SelectRows);
+  cellsView_->verticalHeader()->hide();
+  cellsView_->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
+  cellsView_->horizontalHeader()->setStretchLastSection(true);
+
+  auto* buttons = new QHBoxLayout;
+  buttons->addWidget(sweepButton_);
+  buttons->addWidget(trainButton_);
+  buttons->addWidget(cancelButton_);
+  buttons->addStretch();
+  buttons->addWidget(close);
+
+  auto* results = new QWidget;
+  auto* resultsLayout = new QVBoxLayout(results);
+  resultsLayout->setContentsMargins(0, 0, 0, 0);
+  resultsLayout->addWidget(progress_);
+  resultsLayout->addWidget(status_);
+  resultsLayout->addWidget(cellsView_, 1);
+
+  auto* splitter = new QSplitter(Qt::Vertical);
+  splitter->addWidget(settings);
+  splitter->addWidget(results);
+  splitter->setStretchFactor(1, 1);
+
+  auto* layout = new QVBoxLayout(this);
+  layout->addWidget(splitter, 1);
+  layout->addLayout(buttons);
+  resize(900, 820);
+}
+
+void TrainingDialog::reload() {
+  const QString current = labelSet_->currentText();
+  const QSignalBlocker block(labelSet_);
+  labelSet_->clear();
+  auto sets = workspace_.labelSets();
+  if (sets) {
+    for (const storage::LabelSetCatalogEntry& e : sets.value())
+      labelSet_->addItem(QString::fromStdString(e.set.name));
+  }
+  const int keep = labelSet_->findText(current);
+  if (keep >= 0) labelSet_->setCurrentIndex(keep);
+  fillRuns();
+}
+
+void TrainingDialog::setLabelSet(const QString& name) {
+  const int i = labelSet_->findText(name);
+  if (i >= 0) labelSet_->setCurrentIndex(i);
+}
+
+void TrainingDialog::fillRuns() {
+  const QSignalBlocker block(runs_);
+  runs_->setRowCount(0);
+  auto sets = workspace_.labelSets();
+  auto runs = workspace_.runs();
+  if (!sets || !runs) return;
+  std::vector<std::string> labelled;
+  for (const storage::LabelSetCatalogEntry& e : sets.value())
+    if (QString::fromStdString(e.set.name) == labelSet_->currentText()) labelled = e.runs;
+  // The same default hold-out as `tactile train`: every fourth run by name is a test run.
+  const workspace::RunSplit split = workspace::holdOutEveryFourth(labelled);
+  for (const storage::RunCatalogEntry& r : runs.value()) {
+    if (std::find(labelled.begin(), labelled.end(), r.run.name) == labelled.end()) continue;
+    const int row = runs_->rowCount();
+    runs_->insertRow(row);
+    auto* name = new QTableWidgetItem(QString::fromStdString(r.run.name));
+    name->setFlags(Qt::ItemIsEnabled);
+    auto* steps = new QTableWidgetItem(QString::number(r.run.stepCount));
+    steps->setFlags(Qt::ItemIsEnabled);
+    steps->setTextAlignment(Qt::AlignRight | Qt::AlignVCenter);
+    const bool test =
+        std::find(split.test.begin(), split.test.end(), r.run.name) != split.test.end();
+    auto* train = new QTableWidgetItem;
+    train->setFlags(Qt::ItemIsEnabled | Qt::ItemIsUserCheckable);
+    train->setCheckState(test ? Qt::Unchecked : Qt::Checked);
+    auto* testItem = new QTableWidgetItem;
+    testItem->setFlags(Qt::ItemIsEnabled | Qt::ItemIsUserCheckable);
+    testItem->setCheckState(test ? Qt::Checked : Qt::Unchecked);
+    runs_->setItem(row, 0, name);
+    runs_->setItem(row, 1, steps);
+    runs_->setItem(row, kTrainColumn, train);
+    runs_->setItem(row, kTestColumn, testItem);
+  }
+  runs_->resizeColumnToContents(1);
+}
+
+void TrainingDialog::setRunRole(const QString& run, RunRole role) {
+  for (int row = 0; row < runs_->rowCount(); ++row) {
+    if (runs_->item(row, 0)->text() != run) continue;
+    runs_->item(row, kTrainColumn)
+        ->setCheckState(role == RunRole::Train ? Qt::Checked : Qt::Unchecked);
+    runs_->item(row, kTestColumn)
+        ->setCheckState(role == RunRole::Test ? Qt::Checked : Qt::Unchecked);
+  }
+}
+
+void TrainingDialog::setGrid(const QString& orders, const QString& floors, const QString& seeds) {
+  orders_->setText(orders);
+  floors_->setText(floors);
+  seeds_->setText(seeds);
+}
+
+void TrainingDialog::setGroupsChecked(const std::vector<SensorGroup>& groups) {
+  for (std::size_t i = 0; i < groups_.size(); ++i)
+    groups_[i]->setChecked(std::find(groups.begin(), groups.end(), kSensorGroups[i].group) !=
+                           groups.end());
+}
+
+void TrainingDialog::setFormsChecked(const std::vector<analysis::CovarianceForm>& forms) {
+  for (std::size_t i = 0; i < forms_.size(); ++i)
+    forms_[i]->setChecked(std::find(forms.begin(), forms.end(), analysis::kAllCovarianceForms[i]) !=
+                          forms.end());
+}
+
+std::vector<std::string> TrainingDialog::runsWithRole(RunRole role) const {
+  std::vector<std::string> out;
+  const int column = role == RunRole::Train ? kTrainColumn : kTestColumn;
+  for (int row = 0; row < runs_->rowCount(); ++row)
+    if (runs_->item(row, column)->checkState() == Qt::Checked)
+      out.push_back(runs_->item(row, 0)->text().toStdString());
+  return out;
+}
+
+Result<analysis::SweepGrid> TrainingDialog::grid() const {
+  analysis::SweepGrid g;
+  g.groups.clear();
+  for (std::size_t i = 0; i < groups_.size(); ++i)
+    if (groups_[i]->isChecked()) g.groups.push_back(kSensorGroups[i].group);
+  if (g.groups.empty()) return failure("choose at least one group");
+  g.methods.clear();
+  if (gaussian_->isChecked()) g.methods.push_back(analysis::ClassifierMethod::Gaussian);
+  if (gmm_->isChecked()) g.methods.push_back(analysis::ClassifierMethod::Gmm);
+  if (g.methods.empty()) return failure("choose at least one method");
+  auto orders = parseNumbers(orders_->text(), tr("Orders"));
+  if (!orders) return orders.error();
+  g.orders.clear();
+  for (double o : orders.value()) {
+    if (o < 1 || o > 4096 || o != std::floor(o)) {
+      return failure("Orders: " + QString::number(o).toStdString() +
+                     " is not a whole number from 1 to 4096");
+    }
+    g.orders.push_back(static_cast<int>(o));
+  }
+  g.forms.clear();
+  for (std::size_t i = 0; i < forms_.size(); ++i)
+    if (forms_[i]->isChecked()) g.forms.push_back(analysis::kAllCovarianceForms[i]);
+  if (g.forms.empty() && gmm_->isChecked()) return failure("choose at least one covariance form");
+  if (g.forms.empty()) g.forms.push_back(analysis::CovarianceForm::NodalFull);
+  auto floors = parseNumbers(floors_->text(), tr("Variance floors"));
+  if (!floors) return floors.error();
+  for (double f : floors.value())
+    if (f < 0)
+      return failure("Variance floors: " + QString::number(f).toStdString() + " is negative");
+  g.varianceFloors = floors.value();
+  g.features.clear();
+  const analysis::FeatureKind kinds[] = {analysis::FeatureKind::Normal,
+                                         analysis::FeatureKind::Magnitude,
+                                         analysis::FeatureKind::NormalShear};
+  for (std::size_t i = 0; i < features_.size(); ++i)
+    if (features_[i]->isChecked()) g.features.push_back(kinds[i]);
+  if (g.features.empty()) return failure("choose at least one feature kind");
+  auto seeds = parseNumbers(seeds_->text(), tr("Seeds"));
+  if (!seeds) return seeds.error();
+  g.seeds.clear();
+  for (double s : seeds.value()) {
+    if (s < 0 || s != std::floor(s) || s > 9.0e15) {
+      return failure("Seeds: " + QString::number(s).toStdString() +
+                     " is not a whole number of at least 0");
+    }
+    g.seeds.push_back(static_cast<std::uint64_t>(s));
+  }
+  return g;
+}
+
+Result<workspace::SweepRequest> TrainingDialog::sweepRequest() const {
+  if (labelSet_->currentText().isEmpty()) return failure("the database has no label set");
+  workspace::SweepRequest request;
+  request.labelSet = labelSet_->currentText().toStdString();
+  request.trainRuns = runsWithRole(RunRole::Train);
+  request.testRuns = runsWithRole(RunRole::Test);
+  if (request.trainRuns.empty()) return failure("mark at least one run for training");
+  if (request.testRuns.empty()) return failure("a sweep scores on test runs: mark at least one");
+  auto g = grid();
+  if (!g) return g.error();
+  request.grid = std::move(g.value());
+  request.name = name_->text().trimmed().toStdString();
+  request.threads = threads_->value();
+  return request;
+}
+
+Result<workspace::TrainRequest> TrainingDialog::trainRequest() const {
+  if (labelSet_->currentText().isEmpty()) return failure("the database has no label set");
+  auto g = grid();
+  if (!g) return g.error();
+  workspace::TrainRequest request;
+  request.labelSet = labelSet_->currentText().toStdString();
+  request.split = static_cast<workspace::SplitMode>(split_->currentData().toInt());
+  request.trainRuns = runsWithRole(RunRole::Train);
+  if (request.split == workspace::SplitMode::ByRun) request.testRuns = runsWithRole(RunRole::Test);
+  if (request.trainRuns.empty()) return failure("mark at least one run for training");
+  request.groups = g->groups;
+  request.settings.features = g->features.front();
+  analysis::SweepCell first;
+  first.method = g->methods.back();  // GMM when both are chosen
+  first.order = g->orders.front();
+  first.form = g->forms.front();
+  first.varianceFloor = g->varianceFloors.front();
+  first.features = g->features.front();
+  first.seed = g->seeds.front();
+  request.settings.classifier = analysis::cellClassifierOptions(g.value(), first);
+  request.settings.classifier.oneVsRest = true;
+  request.settings.classifier.threads = threads_->value();
+  request.settings.classifier.gmm.threads = threads_->value();
+  request.modelName = name_->text().trimmed().toStdString();
+  return request;
+}
+
+void TrainingDialog::setBusy(bool busy) {
+  sweepButton_->setEnabled(!busy);
+  trainButton_->setEnabled(!busy);
+  cancelButton_->setEnabled(busy);
+  labelSet_->setEnabled(!busy);
+  runs_->setEnabled(!busy);
+}
+
+void TrainingDialog::showError(const QString& message) {
+  status_->setText(
+      QStringLiteral("<span style=\"color:#b00020\">%1</span>").arg(message.toHtmlEscaped()));
+}
+
+void TrainingDialog::startSweep() {
+  auto request = sweepRequest();
+  if (!request) {
+    showError(QString::fromStdString(request.errorText()));
+    return;
+  }
+  const std::size_t total = analysis::expandGrid(request->grid).size();
+  cells_->clear();
+  if (!worker_->startSweep(databasePath_, request.value())) return;
+  setBusy(true);
+  progress_->setRange(0, static_cast<int>(total));
+  progress_->setValue(0);
+  status_->setText(tr("Sweep of %n cell(s) started.", nullptr, static_cast<int>(total)));
+}
+
+void TrainingDialog::startTrain() {
+  auto request = trainRequest();
+  if (!request) {
+    showError(QString::fromStdString(request.errorText()));
+    return;
+  }
+  if (!worker_->startTrain(databasePath_, request.value())) return;
+  setBusy(true);
+  progress_->setRange(0, 0);
+  status_->setText(tr("Training started."));
+}
+
+void TrainingDialog::cancel() {
+  if (!worker_->isRunning()) return;
+  worker_->cancel();
+  cancelButton_->setEnabled(false);
+  status_->setText(tr("Cancelling: running fits stop after their current iteration..."));
+}
+
+void TrainingDialog::onProgress(qint64 done, qint64 total, double secondsLeft) {
+  if (total <= 0) return;
+  if (progress_->maximum() != static_cast<int>(total))
+    progress_->setRange(0, static_cast<int>(total));
+  progress_->setValue(static_cast<int>(std::min(done, total)));
+  if (!cancelButton_->isEnabled()) return;  // cancelling
+  status_->setText(
+      secondsLeft >= 0
+          ? tr("%1 of %2 done, about %3 left").arg(done).arg(total).arg(duration(secondsLeft))
+          : tr("%1 of %2 done").arg(done).arg(total));
+}
+
+void TrainingDialog::onFinished(const LearningJobResult& result) {
+  setBusy(false);
+  if (progress_->maximum() == 0) progress_->setRange(0, 1);
+  if (result.kind == LearningJobResult::Kind::Sweep) {
+    if (!result.error.isEmpty()) {
+      showError(tr("The sweep failed: %1").arg(result.error));
+    } else if (result.cancelled) {
+      status_->setText(tr("Sweep %1 cancelled after %2 s; its %n finished cell(s) are stored.",
+                          nullptr, static_cast<int>(result.cells))
+                           .arg(result.sweepId)
+                           .arg(result.seconds, 0, 'f', 1));
+    } else {
+      progress_->setValue(progress_->maximum());
+      status_->setText(
+          tr("Sweep %1 finished: %n cell(s) in %2 s.", nullptr, static_cast<int>(result.cells))
+              .arg(result.sweepId)
+              .arg(result.seconds, 0, 'f', 1));
+    }
+    if (result.sweepId > 0 && result.cells > 0) emit sweepStored(result.sweepId);
+  } else {
+    if (result.ok) {
+      QStringList lines;
+      for (const workspace::GroupTrainReport& g : result.groups) {
+        const QString name = qs(groupInfo(g.group).shortName);
+        lines << (g.trained
+                      ? tr("%1: balanced accuracy %2 %")
+                            .arg(name)
+                            .arg(100.0 * g.balancedAccuracy, 0, 'f', 1)
+                      : tr("%1: skipped (%2)").arg(name, QString::fromStdString(g.skippedBecause)));
+      }
+      progress_->setRange(0, 1);
+      progress_->setValue(1);
+      status_->setText(tr("Model '%1' stored (%2 s). %3")
+                           .arg(result.modelName)
+                           .arg(result.seconds, 0, 'f', 1)
+                           .arg(lines.join(QStringLiteral("; "))));
+      emit modelTrained(result.modelName);
+    } else if (result.cancelled) {
+      progress_->setRange(0, 1);
+      status_->setText(tr("Training cancelled; nothing was stored."));
+    } else {
+      progress_->setRange(0, 1);
+      showError(tr("Training failed: %1").arg(result.error));
+    }
+  }
+  emit jobFinished();
+}
+
+}  // namespace tactile::gui

@@ -1,1 +1,113 @@
-// placeholder
+// Train and sweep: a researcher picks a label set, the training and test runs, the groups, the
+// methods and the grid (orders, covariance forms, variance floors), the features and the seeds,
+// then trains one model or runs a sweep in the background. A progress bar with the time left and
+// Cancel follow the work; finished cells stream into a sortable table. The work runs through the
+// same Workspace calls as `tactile train` and `tactile sweep`, so both store the same numbers.
+#pragma once
+
+#include <QDialog>
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "base/error.h"
+#include "workspace/workspace.h"
+
+class QCheckBox;
+class QComboBox;
+class QLabel;
+class QLineEdit;
+class QProgressBar;
+class QPushButton;
+class QSortFilterProxyModel;
+class QSpinBox;
+class QTableView;
+class QTableWidget;
+
+namespace tactile::gui {
+
+class SweepCellsModel;
+class SweepWorker;
+struct LearningJobResult;
+
+class TrainingDialog : public QDialog {
+  Q_OBJECT
+
+ public:
+  TrainingDialog(workspace::Workspace& workspace, QString databasePath, QWidget* parent = nullptr);
+  ~TrainingDialog() override;
+
+  // Re-reads label sets and runs; keeps the chosen set when it still exists.
+  void reload();
+  void setLabelSet(const QString& name);
+
+  // The request the form describes, or what is wrong with it.
+  Result<workspace::SweepRequest> sweepRequest() const;
+  // A training with the first value of every grid list.
+  Result<workspace::TrainRequest> trainRequest() const;
+
+  // Role of a run in the split.
+  enum class RunRole { Train, Test, Unused };
+  void setRunRole(const QString& run, RunRole role);
+  // Fills the grid fields: comma-separated lists as in the CLI.
+  void setGrid(const QString& orders, const QString& floors, const QString& seeds);
+  void setGroupsChecked(const std::vector<SensorGroup>& groups);
+  void setFormsChecked(const std::vector<analysis::CovarianceForm>& forms);
+
+  SweepWorker* worker() const { return worker_; }
+  SweepCellsModel* cellsModel() const { return cells_; }
+  QProgressBar* progressBar() const { return progress_; }
+  QLabel* statusLabel() const { return status_; }
+  QTableView* cellsView() const { return cellsView_; }
+
+ public slots:
+  void startSweep();
+  void startTrain();
+  void cancel();
+
+ signals:
+  // A sweep stored cells (finished or cancelled); the main window opens its results.
+  void sweepStored(qint64 sweepId);
+  void modelTrained(const QString& name);
+  // Any job is over (ok, cancelled or failed).
+  void jobFinished();
+
+ private:
+  void buildUi();
+  void fillRuns();
+  void setBusy(bool busy);
+  void onProgress(qint64 done, qint64 total, double secondsLeft);
+  void onFinished(const LearningJobResult& result);
+  std::vector<std::string> runsWithRole(RunRole role) const;
+  Result<analysis::SweepGrid> grid() const;
+  void showError(const QString& message);
+
+  workspace::Workspace& workspace_;
+  QString databasePath_;
+  SweepWorker* worker_ = nullptr;
+  SweepCellsModel* cells_ = nullptr;
+  QSortFilterProxyModel* sorted_ = nullptr;
+
+  QComboBox* labelSet_ = nullptr;
+  QTableWidget* runs_ = nullptr;
+  QComboBox* split_ = nullptr;
+  std::vector<QCheckBox*> groups_;
+  QCheckBox* gaussian_ = nullptr;
+  QCheckBox* gmm_ = nullptr;
+  std::vector<QCheckBox*> forms_;
+  std::vector<QCheckBox*> features_;
+  QLineEdit* orders_ = nullptr;
+  QLineEdit* floors_ = nullptr;
+  QLineEdit* seeds_ = nullptr;
+  QLineEdit* name_ = nullptr;
+  QSpinBox* threads_ = nullptr;
+  QPushButton* sweepButton_ = nullptr;
+  QPushButton* trainButton_ = nullptr;
+  QPushButton* cancelButton_ = nullptr;
+  QProgressBar* progress_ = nullptr;
+  QLabel* status_ = nullptr;
+  QTableView* cellsView_ = nullptr;
+};
+
+}  // namespace tactile::gui
