@@ -944,3 +944,112 @@ TEST(WorkspaceRuns, SameStemUnderTwoPrefixesKeepsItsOwnLabels) {
 
 }  // namespace
 }  // namespace tactile::workspace
+
+// ---- models from sweep cells, model files ------------------------------------------------------
+
+namespace tactile::workspace {
+namespace {
+
+TEST(WorkspaceCellModel, ModelOfACellScoresExactlyAsTheCell) {
+  TrainFixture f;
+  ASSERT_TRUE(f.ws);
+  auto sweep = f.ws->sweep(smallSweep());
+  ASSERT_TRUE(sweep.ok()) << sweep.errorText();
+  auto stored = f.ws->loadSweep(sweep->sweepId);
+  ASSERT_TRUE(stored.ok());
+  std::size_t checked = 0;
+  for (std::size_t i = 0; i < stored->cells.size(); ++i) {
+    const analysis::SweepCellResult& cell = stored->cells[i];
+    if (!cell.ok) continue;
+    auto trained = f.ws->trainSweepCell(sweep->sweepId, i);
+    ASSERT_TRUE(trained.ok()) << trained.errorText();
+    ASSERT_EQ(trained->groups.size(), 1u);
+    const GroupTrainReport& g = trained->groups.front();
+    EXPECT_EQ(g.group, cell.cell.group);
+    EXPECT_TRUE(g.trained);
+    EXPECT_EQ(g.samplesTrain, cell.trainRows);
+    EXPECT_EQ(g.samplesTest, cell.testRows);
+    EXPECT_DOUBLE_EQ(g.balancedAccuracy, cell.metrics.balancedAccuracy);
+    EXPECT_DOUBLE_EQ(g.accuracy, cell.metrics.accuracy);
+    // Stored under a name that says where it came from, distinct for every cell.
+    EXPECT_NE(trained->modelName.find("order " + std::to_string(cell.cell.order)),
+              std::string::npos)
+        << trained->modelName;
+    const analysis::GroupModel* m = trained->bundle.find(cell.cell.group);
+    ASSERT_NE(m, nullptr);
+    EXPECT_EQ(m->varianceFloor, cell.cell.varianceFloor);
+    EXPECT_EQ(m->classifier.models().front().components(), cell.cell.order);
+    ++checked;
+  }
+  EXPECT_GE(checked, 2u);
+  auto models = f.ws->models();
+  ASSERT_TRUE(models.ok());
+  EXPECT_EQ(models->size(), checked);
+}
+
+TEST(WorkspaceCellModel, MissingCellAndSweepAreErrors) {
+  TrainFixture f;
+  ASSERT_TRUE(f.ws);
+  auto sweep = f.ws->sweep(smallSweep());
+  ASSERT_TRUE(sweep.ok());
+  auto noCell = f.ws->trainSweepCell(sweep->sweepId, 1000);
+  ASSERT_FALSE(noCell.ok());
+  EXPECT_NE(noCell.errorText().find("no cell 1000"), std::string::npos) << noCell.errorText();
+  EXPECT_FALSE(f.ws->trainSweepCell(sweep->sweepId + 99, 0).ok());
+  auto models = f.ws->models();
+  ASSERT_TRUE(models.ok());
+  EXPECT_TRUE(models->empty());
+}
+
+TEST(WorkspaceModelFiles, ExportThenImportGivesTheSameBundle) {
+  TrainFixture f;
+  ASSERT_TRUE(f.ws);
+  TrainRequest request;
+  request.labelSet = "truth";
+  request.settings = quickSettings();
+  request.modelName = "m";
+  ASSERT_TRUE(f.ws->train(request).ok());
+  const std::filesystem::path file = f.dir / "m.json";
+  ASSERT_TRUE(f.ws->exportModel("m", file).ok());
+  EXPECT_FALSE(std::filesystem::exists(f.dir / "m.json.partial"));
+  auto imported = f.ws->importModel(file);
+  // The file's stem is the default name, and it is taken by the original.
+  ASSERT_FALSE(imported.ok());
+  imported = f.ws->importModel(file, "copy");
+  ASSERT_TRUE(imported.ok()) << imported.errorText();
+  EXPECT_EQ(imported.value(), "copy");
+  auto a = f.ws->loadModel("m");
+  auto b = f.ws->loadModel("copy");
+  ASSERT_TRUE(a.ok() && b.ok());
+  EXPECT_EQ(analysis::bundleToJson(a.value()).dump(), analysis::bundleToJson(b.value()).dump());
+}
+
+TEST(WorkspaceModelFiles, FailedExportLeavesNoFileAndBadImportStoresNothing) {
+  TrainFixture f;
+  ASSERT_TRUE(f.ws);
+  EXPECT_FALSE(f.ws->exportModel("absent", f.dir / "absent.json").ok());
+  EXPECT_FALSE(std::filesystem::exists(f.dir / "absent.json"));
+  const std::filesystem::path bad = f.dir / "bad.json";
+  std::ofstream(bad) << "{\"format\":\"tactile-model\",\"version\":1,\"group\":\"F\"}";
+  auto imported = f.ws->importModel(bad);
+  ASSERT_FALSE(imported.ok());
+  EXPECT_NE(imported.errorText().find("bad.json"), std::string::npos) << imported.errorText();
+  auto models = f.ws->models();
+  ASSERT_TRUE(models.ok());
+  EXPECT_TRUE(models->empty());
+}
+
+TEST(WorkspaceSplit, HoldOutEveryFourthRunByName) {
+  const RunSplit five = holdOutEveryFourth({"e", "a", "d", "b", "c"});
+  EXPECT_EQ(five.train, (std::vector<std::string>{"a", "b", "c", "e"}));
+  EXPECT_EQ(five.test, (std::vector<std::string>{"d"}));
+  const RunSplit two = holdOutEveryFourth({"b", "a"});
+  EXPECT_EQ(two.train, (std::vector<std::string>{"a"}));
+  EXPECT_EQ(two.test, (std::vector<std::string>{"b"}));
+  const RunSplit one = holdOutEveryFourth({"a"});
+  EXPECT_EQ(one.train, (std::vector<std::string>{"a"}));
+  EXPECT_TRUE(one.test.empty());
+}
+
+}  // namespace
+}  // namespace tactile::workspace
