@@ -97,6 +97,10 @@ Result<TrainOutcome> Workspace::trainSweepCell(std::int64_t sweepId, std::size_t
   } catch (const json::exception& e) {
     return failure("sweep " + std::to_string(sweepId) + ": stored JSON is malformed: " + e.what());
   }
+  if (!sweep->cells[cellIndex].ok) {
+    return failure("cell " + std::to_string(cellIndex) + " of sweep " + std::to_string(sweepId) +
+                   " has no model: " + sweep->cells[cellIndex].reason);
+  }
   const analysis::SweepCell& cell = sweep->cells[cellIndex].cell;
   TrainRequest request;
   request.labelSet = configuration.value("label_set", std::string());

@@ -103,6 +103,42 @@ int modelsImport(const Common& c, const std::string& file, const std::string& na
   return kExitOk;
 }
 
+int modelsFromSweep(const Common& c, std::int64_t sweepId, std::size_t cell,
+                    const std::string& name, const std::string& out) {
+  if (!out.empty()) {
+    const Status writable = checkWritable(out);
+    if (!writable) throw std::runtime_error(writable.errorText());
+  }
+  workspace::Workspace ws(openDatabaseForWrite(c.db));
+  auto trained = ws.trainSweepCell(sweepId, cell, name);
+  if (!trained) throw std::runtime_error(c.db + ": " + trained.errorText());
+  if (!out.empty()) {
+    const Status written = ws.exportModel(trained->modelName, out);
+    if (!written) throw std::runtime_error(written.errorText());
+  }
+  const workspace::GroupTrainReport& g = trained->groups.front();
+  if (c.json) {
+    json report = {{"model", trained->modelName},
+                   {"id", trained->modelId},
+                   {"sweep", sweepId},
+                   {"cell", cell},
+                   {"group", std::string(groupInfo(g.group).shortName)},
+                   {"accuracy", g.accuracy},
+                   {"balanced_accuracy", g.balancedAccuracy},
+                   {"samples_train", g.samplesTrain},
+                   {"samples_test", g.samplesTest}};
+    if (!out.empty()) report["out"] = out;
+    std::cout << report.dump() << "\n";
+  } else {
+    std::printf(
+        "stored model '%s' (group %s, balanced accuracy %.1f %% on the sweep's test runs)\n",
+        trained->modelName.c_str(), std::string(groupInfo(g.group).shortName).c_str(),
+        100.0 * g.balancedAccuracy);
+    if (!out.empty()) std::printf("wrote it to %s\n", out.c_str());
+  }
+  return kExitOk;
+}
+
 int modelsDelete(const Common& c, std::vector<std::string> names) {
   // A name given twice is one model.
   std::sort(names.begin(), names.end());
@@ -197,6 +233,28 @@ void registerWorkspaceVerbs(CLI::App& app) {
     cmd->add_option("FILE", *file, "Model or model bundle JSON")->required();
     cmd->add_option("--name", *name, "Name to store it under (default: the file's stem)");
     setAction(cmd, [c, file, name] { return modelsImport(*c, *file, *name); });
+  }
+  {
+    auto c = std::make_shared<Common>();
+    auto sweep = std::make_shared<std::int64_t>(0);
+    auto cell = std::make_shared<std::size_t>(0);
+    auto name = std::make_shared<std::string>();
+    auto out = std::make_shared<std::string>();
+    CLI::App* cmd = withCommon(
+        models->add_subcommand("from-sweep",
+                               "Train and store the model of one sweep cell (its settings, the "
+                               "sweep's label set and runs)"),
+        *c);
+    cmd->add_option("--sweep", *sweep, "Stored sweep id (see tactile sweeps list)")->required();
+    cmd->add_option("--cell", *cell,
+                    "Cell index, 0-based in the sweep's grid order (the \"cell\" column of "
+                    "tactile report)")
+        ->required();
+    cmd->add_option("--name", *name, "Name to store it under (default: from the cell's settings)");
+    cmd->add_option("--out", *out, "Also write it to this model file");
+    setAction(cmd, [c, sweep, cell, name, out] {
+      return modelsFromSweep(*c, *sweep, *cell, *name, *out);
+    });
   }
   {
     auto c = std::make_shared<Common>();

@@ -106,6 +106,31 @@ assert d['sweep'] == $id and d['out'] == 'again.md' and d['format'] == 'md' and 
 " || fail "report --json: $(cat report.json)"
 cmp -s again.md report.md || fail "report --json wrote a different report"
 
+# The model of a sweep cell (the best one that has a model) scores as the cell did.
+cell=$(python3 -c "
+import json
+cells = json.load(open('sweep.json'))['cells']
+ok = [i for i, c in enumerate(cells) if c.get('balanced_accuracy') is not None and len(c['classes']) > 1]
+assert ok, cells
+print(max(ok, key=lambda i: cells[i]['balanced_accuracy']))
+") || fail "no sweep cell with a model"
+"$T" models from-sweep --db w.db --sweep "$id" --cell "$cell" --name fromcell --out cell.json \
+  --json > fromcell.json || fail "models from-sweep exited $?"
+python3 -c "
+import json
+d = json.load(open('fromcell.json'))
+c = json.load(open('sweep.json'))['cells'][$cell]
+assert d['model'] == 'fromcell' and d['cell'] == $cell and d['group'] == c['group'], (d, c)
+assert abs(d['balanced_accuracy'] - c['balanced_accuracy']) < 1e-12, (d, c)
+m = json.load(open('cell.json'))
+assert m['format'].startswith('tactile-model') and len(m['models']) == 1, m.keys()
+" || fail "from-sweep: $(cat fromcell.json)"
+if "$T" models from-sweep --db w.db --sweep "$id" --cell 999 2> nocell.err > /dev/null; then
+  fail "from-sweep of a missing cell succeeded"
+fi
+grep -q "no cell 999" nocell.err || fail "from-sweep message: $(cat nocell.err)"
+"$T" models delete --db w.db fromcell > /dev/null || fail "models delete fromcell exited $?"
+
 # A run both trained and scored on is refused; no sweep is stored.
 if "$T" sweep --db w.db --set truth --train-runs room1_0000,room1_0001 --test-runs room1_0001 \
   --groups F --orders 1 --covs nodal-diag --floors 0.01 2> both.err > /dev/null; then
