@@ -2,12 +2,17 @@
 
 #include <algorithm>
 #include <cctype>
+#include <charconv>
+#include <cmath>
 #include <cstdio>
+#include <limits>
 #include <map>
 #include <sstream>
 #include <tuple>
 
+#include "analysis/report_svg.h"
 #include "analysis/training.h"
+#include "base/file_text.h"
 
 namespace tactile::analysis {
 
@@ -15,10 +20,12 @@ using nlohmann::json;
 
 namespace {
 
+// Numbers are written with std::to_chars, never printf: the workbench runs under the user's
+// locale, whose decimal comma would break CSV and the figures.
 std::string fixed(double v, int digits) {
   char buf[64];
-  std::snprintf(buf, sizeof buf, "%.*f", digits, v);
-  return buf;
+  const auto r = std::to_chars(buf, buf + sizeof buf, v, std::chars_format::fixed, digits);
+  return std::string(buf, r.ptr);
 }
 
 std::string pct(std::optional<double> fraction) {
@@ -40,10 +47,10 @@ bool looksNumeric(const std::string& s) {
                         s[0] == '.' || s.back() == '%');
 }
 
-std::string floorText(double f) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%g", f);
-  return buf;
+std::string floorText(double f) {  // as "%g"
+  char buf[64];
+  const auto r = std::to_chars(buf, buf + sizeof buf, f, std::chars_format::general, 6);
+  return std::string(buf, r.ptr);
 }
 
 // Mean, min, max over the classes of a cell of the per-class rate (recall), percent.
@@ -78,8 +85,8 @@ std::vector<std::string> cellKey(const SweepCell& c) {
           std::string(classifierMethodName(c.method)), std::string(covarianceFormName(c.form))};
 }
 
-// Cells sorted by (group, features, method, form, fixed variable, swept variable, seed).
-Table spreadTable(const SweepResult& sweep, bool sweptIsFloor) {
+Table spreadTable(const SweepResult& sweep, SweptVariable variable) {
+  const bool sweptIsFloor = variable == SweptVariable::Floor;
   Table t;
   t.title = sweptIsFloor ? "Correct rate against variance floor (thesis figure 4.13)"
                          : "Correct rate against model order (thesis figure 4.14)";
@@ -95,35 +102,22 @@ Table spreadTable(const SweepResult& sweep, bool sweptIsFloor) {
               "max_rate_%",
               "accuracy_%",
               "balanced_%"};
-  std::vector<const SweepCellResult*> cells;
-  for (const SweepCellResult& r : sweep.cells) {
-    if (r.ok) cells.push_back(&r);
-  }
-  auto key = [sweptIsFloor](const SweepCellResult* r) {
-    const SweepCell& c = r->cell;
-    const double fixedVar = sweptIsFloor ? c.order : c.varianceFloor;
-    const double swept = sweptIsFloor ? c.varianceFloor : c.order;
-    return std::make_tuple(groupIndex(c.group), static_cast<int>(c.features),
-                           static_cast<int>(c.method), static_cast<int>(c.form), fixedVar, swept,
-                           c.seed);
-  };
-  std::stable_sort(
-      cells.begin(), cells.end(),
-      [&](const SweepCellResult* a, const SweepCellResult* b) { return key(a) < key(b); });
-  for (const SweepCellResult* r : cells) {
-    const RateSpread s = spreadOf(r->metrics);
-    std::vector<std::string> row = cellKey(r->cell);
-    const std::string order = std::to_string(r->cell.order);
-    const std::string floor = floorText(r->cell.varianceFloor);
-    row.push_back(sweptIsFloor ? order : floor);
-    row.push_back(sweptIsFloor ? floor : order);
-    row.push_back(std::to_string(r->cell.seed));
-    row.push_back(s.any ? fixed(s.mean, 1) : "");
-    row.push_back(s.any ? fixed(s.min, 1) : "");
-    row.push_back(s.any ? fixed(s.max, 1) : "");
-    row.push_back(fixed(100.0 * r->metrics.accuracy, 1));
-    row.push_back(fixed(100.0 * r->metrics.balancedAccuracy, 1));
-    t.rows.push_back(std::move(row));
+  for (const RateSeries& series : rateSeries(sweep, variable)) {
+    for (std::size_t i = 0; i < series.x.size(); ++i) {
+      const SweepCell& c = sweep.cells[series.cells[i]].cell;
+      std::vector<std::string> row = cellKey(c);
+      const std::string order = std::to_string(c.order);
+      const std::string floor = floorText(c.varianceFloor);
+      row.push_back(sweptIsFloor ? order : floor);
+      row.push_back(sweptIsFloor ? floor : order);
+      row.push_back(std::to_string(c.seed));
+      row.push_back(fixed(series.mean[i], 1));
+      row.push_back(fixed(series.min[i], 1));
+      row.push_back(fixed(series.max[i], 1));
+      row.push_back(fixed(series.accuracy[i], 1));
+      row.push_back(fixed(series.balancedAccuracy[i], 1));
+      t.rows.push_back(std::move(row));
+    }
   }
   return t;
 }
@@ -342,11 +336,103 @@ Table classRateTable(const std::vector<std::pair<std::string, Metrics>>& rows,
   return t;
 }
 
+std::vector<RateSeries> rateSeries(const SweepResult& sweep, SweptVariable variable) {
+  const bool sweptIsFloor = variable == SweptVariable::Floor;
+  // Series key: (group, features, method, form, fixed value, seed), in that order.
+  using Key = std::tuple<int, int, int, int, double, std::uint64_t>;
+  std::map<Key, std::vector<std::size_t>> members;
+  for (std::size_t i = 0; i < sweep.cells.size(); ++i) {
+    const SweepCellResult& r = sweep.cells[i];
+    if (!r.ok || !spreadOf(r.metrics).any) continue;
+    const SweepCell& c = r.cell;
+    members[Key{groupIndex(c.group), static_cast<int>(c.features), static_cast<int>(c.method),
+                static_cast<int>(c.form),
+                sweptIsFloor ? static_cast<double>(c.order) : c.varianceFloor, c.seed}]
+        .push_back(i);
+  }
+  std::vector<RateSeries> out;
+  for (auto& [key, cells] : members) {
+    auto swept = [&](std::size_t i) {
+      const SweepCell& c = sweep.cells[i].cell;
+      return sweptIsFloor ? c.varianceFloor : static_cast<double>(c.order);
+    };
+    std::stable_sort(cells.begin(), cells.end(),
+                     [&](std::size_t a, std::size_t b) { return swept(a) < swept(b); });
+    const SweepCell& first = sweep.cells[cells.front()].cell;
+    RateSeries s;
+    s.group = first.group;
+    s.features = first.features;
+    s.method = first.method;
+    s.form = first.form;
+    s.fixedValue = std::get<4>(key);
+    s.seed = first.seed;
+    s.label =
+        std::string(groupInfo(first.group).shortName) + " " +
+        std::string(classifierMethodName(first.method)) +
+        (first.method == ClassifierMethod::Gmm ? " " + std::string(covarianceFormName(first.form))
+                                               : std::string()) +
+        (first.features != FeatureKind::Normal ? " " + std::string(featureKindName(first.features))
+                                               : std::string()) +
+        (sweptIsFloor ? " order " + std::to_string(first.order)
+                      : " floor " + floorText(first.varianceFloor));
+    if (sweep.grid.seeds.size() > 1) s.label += " seed " + std::to_string(first.seed);
+    for (std::size_t i : cells) {
+      const SweepCellResult& r = sweep.cells[i];
+      const RateSpread spread = spreadOf(r.metrics);
+      s.x.push_back(swept(i));
+      s.mean.push_back(spread.mean);
+      s.min.push_back(spread.min);
+      s.max.push_back(spread.max);
+      s.accuracy.push_back(100.0 * r.metrics.accuracy);
+      s.balancedAccuracy.push_back(100.0 * r.metrics.balancedAccuracy);
+      s.cells.push_back(i);
+    }
+    out.push_back(std::move(s));
+  }
+  return out;
+}
+
+std::vector<std::size_t> paretoFront(const SweepResult& sweep, std::optional<SensorGroup> group) {
+  struct Point {
+    std::size_t index;
+    double seconds;
+    double error;
+  };
+  std::vector<Point> points;
+  for (std::size_t i = 0; i < sweep.cells.size(); ++i) {
+    const SweepCellResult& r = sweep.cells[i];
+    if (!r.ok || (group && r.cell.group != *group)) continue;
+    if (!std::isfinite(r.fitSeconds + r.predictSeconds) ||
+        !std::isfinite(r.metrics.balancedAccuracy))
+      continue;
+    points.push_back(
+        {i, r.fitSeconds + r.predictSeconds, 100.0 - 100.0 * r.metrics.balancedAccuracy});
+  }
+  std::stable_sort(points.begin(), points.end(), [](const Point& a, const Point& b) {
+    return a.seconds != b.seconds ? a.seconds < b.seconds : a.error < b.error;
+  });
+  // Walking by time, a point is on the front when its error is below every faster point's, or
+  // equals that of the point that set the best error with the same time.
+  std::vector<std::size_t> front;
+  double bestError = std::numeric_limits<double>::infinity();
+  double bestSeconds = -1.0;
+  for (const Point& p : points) {
+    if (p.error < bestError) {
+      bestError = p.error;
+      bestSeconds = p.seconds;
+      front.push_back(p.index);
+    } else if (p.error == bestError && p.seconds == bestSeconds) {
+      front.push_back(p.index);
+    }
+  }
+  return front;
+}
+
 Table rateAgainstFloorTable(const SweepResult& sweep) {
-  return spreadTable(sweep, true);
+  return spreadTable(sweep, SweptVariable::Floor);
 }
 Table rateAgainstOrderTable(const SweepResult& sweep) {
-  return spreadTable(sweep, false);
+  return spreadTable(sweep, SweptVariable::Order);
 }
 
 Table bestCellsTable(const SweepResult& sweep) {
@@ -387,12 +473,15 @@ Table bestCellsTable(const SweepResult& sweep) {
 Table sweepCellsTable(const SweepResult& sweep) {
   Table t;
   t.title = "Sweep cells";
-  t.header = {"group",       "features",     "method",     "covariance", "order",
-              "floor",       "seed",         "ok",         "fit_s",      "predict_s",
-              "iterations",  "converged",    "accuracy_%", "balanced_%", "macro_f1",
-              "mean_loglik", "neg_inf_rows", "dropped",    "reason"};
-  for (const SweepCellResult& r : sweep.cells) {
-    std::vector<std::string> row = cellKey(r.cell);
+  t.header = {"cell",      "group",       "features",     "method",     "covariance",
+              "order",     "floor",       "seed",         "ok",         "fit_s",
+              "predict_s", "iterations",  "converged",    "accuracy_%", "balanced_%",
+              "macro_f1",  "mean_loglik", "neg_inf_rows", "dropped",    "reason"};
+  for (std::size_t i = 0; i < sweep.cells.size(); ++i) {
+    const SweepCellResult& r = sweep.cells[i];
+    std::vector<std::string> row{std::to_string(i)};
+    const std::vector<std::string> key = cellKey(r.cell);
+    row.insert(row.end(), key.begin(), key.end());
     row.push_back(std::to_string(r.cell.order));
     row.push_back(floorText(r.cell.varianceFloor));
     row.push_back(std::to_string(r.cell.seed));
@@ -442,7 +531,115 @@ Table contactPatternTable(const ContactPatternTable& patterns) {
   return t;
 }
 
+namespace {
+
+std::string joined(const std::vector<std::string>& items) {
+  std::string out;
+  for (const std::string& i : items)
+    out += (out.empty() ? "" : ", ") + i;
+  return out;
+}
+
+template <typename T, typename Name>
+std::string joinedNames(const std::vector<T>& items, Name name) {
+  std::vector<std::string> out;
+  for (const T& i : items)
+    out.push_back(name(i));
+  return joined(out);
+}
+
+std::vector<std::string> runNamesOf(const json& runs) {
+  std::vector<std::string> out;
+  if (!runs.is_array()) return out;
+  for (const json& r : runs)
+    if (r.is_object() && r.contains("name") && r["name"].is_string())
+      out.push_back(r["name"].get<std::string>());
+  return out;
+}
+
+Table configurationTable(const SweepResult& sweep, const json& configuration) {
+  const SweepGrid& g = sweep.grid;
+  Table t;
+  t.title = "Configuration";
+  t.header = {"setting", "value"};
+  auto add = [&t](std::string key, std::string value) {
+    t.rows.push_back({std::move(key), std::move(value)});
+  };
+  if (configuration.is_object()) {
+    if (configuration.contains("label_set") && configuration["label_set"].is_string())
+      add("label set", configuration["label_set"].get<std::string>());
+    if (configuration.contains("train_runs"))
+      add("training runs", joined(runNamesOf(configuration["train_runs"])));
+    if (configuration.contains("test_runs"))
+      add("test runs", joined(runNamesOf(configuration["test_runs"])));
+    if (configuration.contains("state") && configuration["state"].is_string())
+      add("state", configuration["state"].get<std::string>());
+    if (configuration.contains("program_version") && configuration["program_version"].is_string())
+      add("program version", configuration["program_version"].get<std::string>());
+  }
+  std::vector<SensorGroup> groups = g.groups;
+  if (groups.empty())
+    for (const GroupInfo& info : kSensorGroups)
+      groups.push_back(info.group);
+  add("groups",
+      joinedNames(groups, [](SensorGroup x) { return std::string(groupInfo(x).shortName); }));
+  add("methods", joinedNames(g.methods, [](ClassifierMethod m) {
+        return std::string(classifierMethodName(m));
+      }));
+  add("orders", joinedNames(g.orders, [](int o) { return std::to_string(o); }));
+  add("covariance forms",
+      joinedNames(g.forms, [](CovarianceForm f) { return std::string(covarianceFormName(f)); }));
+  add("variance floors", joinedNames(g.varianceFloors, [](double f) { return floorText(f); }));
+  add("features",
+      joinedNames(g.features, [](FeatureKind k) { return std::string(featureKindName(k)); }));
+  add("seeds", joinedNames(g.seeds, [](std::uint64_t x) { return std::to_string(x); }));
+  add("regularization", std::string(regularizationName(g.regularization)));
+  add("initialisation", std::string(gmmInitName(g.init)));
+  add("restarts", std::to_string(g.restarts));
+  add("max iterations", std::to_string(g.maxIterations));
+  add("tolerance", floorText(g.tolerance));
+  add("priors", std::string(priorModeName(g.priors)));
+  add("threads", std::to_string(sweep.threads));
+  return t;
+}
+
+std::string cellName(const SweepCell& c) {
+  return "Group " + std::string(groupInfo(c.group).shortName) + ", " +
+         std::string(classifierMethodName(c.method)) + " " +
+         std::string(covarianceFormName(c.form)) + " order " + std::to_string(c.order) +
+         " variance floor " + floorText(c.varianceFloor) +
+         (c.features != FeatureKind::Normal ? ", " + std::string(featureKindName(c.features))
+                                            : std::string()) +
+         ", seed " + std::to_string(c.seed);
+}
+
+void heading(std::string& out, TableStyle style, const std::string& text) {
+  if (style == TableStyle::Markdown) out += "## " + text + "\n\n";
+  if (style == TableStyle::Html) out += "<h2>" + htmlEscape(text) + "</h2>\n";
+  if (style == TableStyle::Text) out += "== " + text + " ==\n\n";
+}
+
+}  // namespace
+
+std::vector<SweepFigure> sweepFigures(const SweepResult& sweep) {
+  return {
+      {"rate_floor.svg", "Correct rate against variance floor (thesis figure 4.13)",
+       rateChartSvg(rateSeries(sweep, SweptVariable::Floor), SweptVariable::Floor,
+                    "Correct rate against variance floor")},
+      {"rate_order.svg", "Correct rate against model order (thesis figure 4.14)",
+       rateChartSvg(rateSeries(sweep, SweptVariable::Order), SweptVariable::Order,
+                    "Correct rate against model order")},
+      {"time_error.svg", "Run time against error, Pareto front marked",
+       timeErrorChartSvg(sweep, "Run time against error")},
+  };
+}
+
 std::string sweepReport(const SweepResult& sweep, TableStyle style) {
+  return sweepReport(sweep, style, SweepReportOptions{});
+}
+
+std::string sweepReport(const SweepResult& sweep, TableStyle style,
+                        const SweepReportOptions& options) {
   std::string out;
   const std::string sep = style == TableStyle::Text ? "\n" : "";
   std::size_t ok = 0;
@@ -457,33 +654,83 @@ std::string sweepReport(const SweepResult& sweep, TableStyle style) {
   if (style == TableStyle::Html) {
     out +=
         "<!DOCTYPE html>\n<html><head><meta charset=\"utf-8\"><title>Sweep report</title>"
-        "<style>table{border-collapse:collapse;margin-bottom:1em}td,th{border:1px solid "
-        "#bbb;padding:2px 6px;text-align:right}th{background:#eee}</style></head><body>\n<h1>" +
+        "<style>body{font-family:sans-serif}table{border-collapse:collapse;margin-bottom:1em}"
+        "td,th{border:1px solid #bbb;padding:2px 6px;text-align:right}th{background:#eee}"
+        "</style></head><body>\n<h1>" +
         htmlEscape(headline) + "</h1>\n";
   }
+  out += configurationTable(sweep, options.configuration).render(style) + sep;
   out += bestCellsTable(sweep).render(style) + sep;
+
+  // Figures: inline in HTML, linked files in Markdown (when written beside it).
+  if (style == TableStyle::Html ||
+      (style == TableStyle::Markdown && !options.figureFolder.empty())) {
+    heading(out, style, "Figures");
+    for (const SweepFigure& f : sweepFigures(sweep)) {
+      if (style == TableStyle::Html) {
+        out += "<figure>" + f.svg + "<figcaption>" + htmlEscape(f.caption) +
+               "</figcaption></figure>\n";
+      } else {
+        out += "![" + f.caption + "](" + options.figureFolder + "/" + f.file + ")\n\n";
+      }
+    }
+  }
   out += rateAgainstFloorTable(sweep).render(style) + sep;
   out += rateAgainstOrderTable(sweep).render(style) + sep;
-  // Confusion matrices of each group's best cell.
+
+  // Each group's best cell in detail: confusion in counts and percent, class rates, patterns.
   std::map<int, const SweepCellResult*> best;
   for (const SweepCellResult& r : sweep.cells) {
     if (!r.ok) continue;
     const SweepCellResult*& b = best[groupIndex(r.cell.group)];
     if (b == nullptr || r.metrics.balancedAccuracy > b->metrics.balancedAccuracy) b = &r;
   }
+  heading(out, style, "Best cell of each group");
+  std::vector<std::pair<std::string, Metrics>> rates;
   for (const auto& [g, r] : best) {
-    const std::string name = "Group " + std::string(groupInfo(r->cell.group).shortName) + ", " +
-                             std::string(classifierMethodName(r->cell.method)) + " " +
-                             std::string(covarianceFormName(r->cell.form)) + " order " +
-                             std::to_string(r->cell.order) + " variance floor " +
-                             floorText(r->cell.varianceFloor);
+    const std::string name = cellName(r->cell);
     out += confusionTable(r->confusion, false, name + ": confusion (counts)").render(style) + sep;
     out +=
         confusionTable(r->confusion, true, name + ": confusion (row percent)").render(style) + sep;
+    if (!r->patterns.rows.empty()) out += contactPatternTable(r->patterns).render(style) + sep;
+    rates.emplace_back(std::string(groupInfo(r->cell.group).shortName), r->metrics);
   }
-  out += sweepCellsTable(sweep).render(style);
+  if (!rates.empty()) {
+    out += classRateTable(rates, "Per-class correct rate of each group's best cell (%)")
+               .render(style) +
+           sep;
+  }
+  out += sweepCellsTable(sweep).render(style) + sep;
+  heading(out, style, "Confusion matrices of every cell");
+  for (std::size_t i = 0; i < sweep.cells.size(); ++i) {
+    const SweepCellResult& r = sweep.cells[i];
+    if (!r.ok) continue;
+    out += confusionTable(r.confusion, false,
+                          "Cell " + std::to_string(i) + ": " + cellName(r.cell) + " (counts)")
+               .render(style) +
+           sep;
+  }
   if (style == TableStyle::Html) out += "</body></html>\n";
   return out;
+}
+
+Status writeSweepReport(const SweepResult& sweep, TableStyle style,
+                        const std::filesystem::path& out, const json& configuration) {
+  namespace fs = std::filesystem;
+  SweepReportOptions options;
+  options.configuration = configuration;
+  const bool figureFiles = style == TableStyle::Markdown;
+  const fs::path folder = out.parent_path() / (out.stem().string() + "_files");
+  if (figureFiles) options.figureFolder = folder.filename().string();
+  if (figureFiles) {
+    std::error_code ec;
+    fs::create_directories(folder, ec);
+    if (ec) return Error(folder.string() + ": cannot create: " + ec.message());
+    for (const SweepFigure& f : sweepFigures(sweep)) {
+      if (Status s = writeFileAtomically(folder / f.file, f.svg); !s) return s;
+    }
+  }
+  return writeFileAtomically(out, sweepReport(sweep, style, options));
 }
 
 std::string modelReport(const json& value, TableStyle style) {
@@ -547,19 +794,8 @@ std::string modelReport(const json& value, TableStyle style) {
                sep;
     if (eval.contains("contact_patterns")) {
       ContactPatternTable patterns;
-      patterns.group = *group;
-      for (const json& r : eval["contact_patterns"]) {
-        const auto truth = parseContactClass(r.value("truth", ""));
-        if (!truth) continue;
-        ContactPatternRow row{r.value("pattern", ""), *truth, {}};
-        for (auto it = r["predicted"].begin(); it != r["predicted"].end(); ++it) {
-          if (const auto p = parseContactClass(it.key())) {
-            row.predicted[static_cast<std::size_t>(*p)] = it.value().get<std::size_t>();
-          }
-        }
-        patterns.rows.push_back(row);
-      }
-      details += contactPatternTable(patterns).render(style) + sep;
+      if (patternsFromJson(eval["contact_patterns"], *group, patterns))
+        details += contactPatternTable(patterns).render(style) + sep;
     }
     if (eval.contains("one_vs_rest")) {
       std::vector<BinaryConfusion> bins;

@@ -6,6 +6,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include <cstdint>
+#include <filesystem>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -14,6 +16,7 @@
 
 #include "analysis/metrics.h"
 #include "analysis/sweep.h"
+#include "base/error.h"
 
 namespace tactile::analysis {
 
@@ -43,9 +46,36 @@ Table oneVsRestRateTable(
 Table classRateTable(const std::vector<std::pair<std::string, Metrics>>& rows,
                      const std::string& title);
 
-// Figures 4.13 / 4.14 as tables. One row per successful sweep cell, grouped into series that
-// hold everything but the swept variable fixed; values are the mean, min and max over the
-// cell's classes of the per-class rate (recall, percent), plus accuracy and balanced accuracy.
+// Figures 4.13 / 4.14 as data: one series per fixed setting (group, features, method, form, the
+// other of order / floor, seed) with a point per value of the swept variable, ascending. Each
+// point is one successful cell with per-class rates (recall, percent): their mean, min and max
+// over the cell's classes, and the cell's accuracy and balanced accuracy (percent).
+enum class SweptVariable { Floor, Order };
+struct RateSeries {
+  SensorGroup group = SensorGroup::Front;
+  FeatureKind features = FeatureKind::Normal;
+  ClassifierMethod method = ClassifierMethod::Gmm;
+  CovarianceForm form = CovarianceForm::NodalDiag;
+  double fixedValue = 0.0;  // the order (floor swept) or the floor (order swept)
+  std::uint64_t seed = 1;
+  std::string label;      // e.g. "F gmm nodal-diag order 4" or "R gaussian floor 0.1"
+  std::vector<double> x;  // swept values
+  std::vector<double> mean, min, max, accuracy, balancedAccuracy;
+  std::vector<std::size_t> cells;  // index into SweepResult::cells of each point
+};
+std::vector<RateSeries> rateSeries(const SweepResult& sweep, SweptVariable variable);
+
+// Run time against error: the successful cells (of one group, or all) that no other one beats,
+// that is, none has both fit + predict seconds and error (100 - balanced accuracy, percent) at
+// most as large and one of them smaller. Indices into sweep.cells, by ascending time (cells equal
+// in both are all kept).
+std::vector<std::size_t> paretoFront(const SweepResult& sweep,
+                                     std::optional<SensorGroup> group = std::nullopt);
+
+// Figures 4.13 / 4.14 as tables (rateSeries, one row per point). One row per successful sweep cell,
+// grouped into series that hold everything but the swept variable fixed; values are the mean, min
+// and max over the cell's classes of the per-class rate (recall, percent), plus accuracy and
+// balanced accuracy.
 Table rateAgainstFloorTable(const SweepResult& sweep);
 Table rateAgainstOrderTable(const SweepResult& sweep);
 
@@ -58,8 +88,33 @@ Table sweepCellsTable(const SweepResult& sweep);
 // Thesis table 4.39: per on/off pattern and true class, the counts of predicted classes.
 Table contactPatternTable(const ContactPatternTable& patterns);
 
-// Whole reports, as printed by `tactile report`.
+// Whole reports, as printed by `tactile report`: the headline, the configuration (the grid and,
+// from the stored sweep's configuration JSON, label set, runs and state), the best cell per group,
+// the figures (HTML: inline SVG; Markdown: links into `figureFolder` when set), rate against
+// floor and order, each group's best cell in detail (confusion in counts and percent, contact
+// patterns, per-class rates), every cell, and every fitted cell's confusion matrix.
+struct SweepReportOptions {
+  nlohmann::json configuration = nlohmann::json::object();
+  std::string figureFolder;  // Markdown: folder (relative to the report) holding the figures
+};
 std::string sweepReport(const SweepResult& sweep, TableStyle style);
+std::string sweepReport(const SweepResult& sweep, TableStyle style,
+                        const SweepReportOptions& options);
+
+// The report's figures (report_svg.h): file name, caption and SVG text.
+struct SweepFigure {
+  std::string file;
+  std::string caption;
+  std::string svg;
+};
+std::vector<SweepFigure> sweepFigures(const SweepResult& sweep);
+
+// Writes the report to `out`; Markdown also writes its figures as SVG files into the folder
+// "<stem>_files" beside it. Every file is written under a temporary name and renamed into place.
+// The CLI's `report` and the workbench's Export Report call this.
+Status writeSweepReport(const SweepResult& sweep, TableStyle style,
+                        const std::filesystem::path& out,
+                        const nlohmann::json& configuration = nlohmann::json::object());
 // A model file's (or bundle's) stored evaluation ("metrics" of each model, as written by
 // `tactile train`): confusion in counts and percent, rates, contact patterns, one-vs-rest table.
 std::string modelReport(const nlohmann::json& modelOrBundle, TableStyle style);

@@ -26,6 +26,7 @@ double secondsSince(Clock::time_point start) {
 struct SharedGroupData {
   GroupDataSet train;
   GroupDataSet test;
+  std::vector<std::string> testPatterns;  // on/off pattern of every test row
   ClassSelection selection;
   std::vector<Eigen::MatrixXd> perClass;  // training rows of each modelled class
   std::vector<std::string> names;
@@ -81,7 +82,9 @@ SweepCellResult runCell(const SweepCell& cell, const SweepGrid& grid, const Shar
     if (c < fit.converged.size() && !fit.converged[c]) r.converged = false;
     if (c < fit.droppedComponents.size()) r.droppedComponents += fit.droppedComponents[c];
   }
-  const GroupEvaluation ev = evaluateClassifier(fit.model, data.selection.modelled, data.test);
+  const GroupEvaluation ev =
+      evaluateClassifier(fit.model, data.selection.modelled, data.test, &data.testPatterns);
+  r.patterns = ev.patterns;
   r.predictSeconds = ev.predictSeconds;
   r.confusion = ev.confusion;
   r.metrics = ev.metrics;
@@ -156,6 +159,7 @@ SweepResult runSweep(const std::vector<LabelledRun>& train, const std::vector<La
     SharedGroupData& d = shared[key];
     d.train = buildGroupDataSet(train, cell.group, cell.features);
     d.test = buildGroupDataSet(test, cell.group, cell.features);
+    d.testPatterns = rowPatterns(d.test, test);
     d.selection = selectClasses(d.train);
     for (ContactClass c : d.selection.modelled) {
       d.perClass.push_back(d.train.rowsOf(c));
@@ -342,6 +346,7 @@ json sweepToJson(const SweepResult& result) {
     }
     c["rates"] = std::move(rates);
     c["confusion"] = confusionToJson(r.confusion);
+    if (!r.patterns.rows.empty()) c["patterns"] = patternsToJson(r.patterns);
     cells.push_back(std::move(c));
   }
   out["cells"] = std::move(cells);
@@ -466,6 +471,10 @@ std::string readSweep(const json& value, SweepResult& out) {
       r.droppedComponents = c.value("dropped_components", 0);
       r.warnings = c.value("warnings", std::vector<std::string>{});
       if (!confusionFromJson(c.at("confusion"), r.confusion)) return where + "bad confusion";
+      // Sweeps stored before contact patterns were kept have none.
+      r.patterns.group = r.cell.group;
+      if (c.contains("patterns") && !patternsFromJson(c["patterns"], r.cell.group, r.patterns))
+        return where + "bad patterns";
       r.metrics = computeMetrics(r.confusion);
       out.cells.push_back(std::move(r));
     }

@@ -81,6 +81,9 @@ struct SweepCellResult {
   std::size_t negInfRows = 0;               // test rows left out of it: log-likelihood -inf
   int droppedComponents = 0;                // sum over the classes' fits
   std::vector<std::string> warnings;        // ClassifierFit::warnings
+  // Test rows by on/off pattern of the group's sensors, true and predicted class (thesis table
+  // 4.39).
+  ContactPatternTable patterns;
 };
 
 // Per (group, features): how much data the cells saw.

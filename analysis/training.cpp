@@ -59,11 +59,21 @@ GroupTrainResult trainGroupModel(const GroupDataSet& data, const TrainSettings& 
   return result;
 }
 
+std::vector<std::string> rowPatterns(const GroupDataSet& data,
+                                     const std::vector<LabelledRun>& runs) {
+  std::vector<std::string> out(data.size());
+  for (std::size_t i = 0; i < data.size(); ++i)
+    out[i] = contactPattern(*runs[data.runIndex[i]].run, data.step[i], data.group);
+  return out;
+}
+
 GroupEvaluation evaluateClassifier(const ClassModelSet& classifier,
                                    const std::vector<ContactClass>& classes,
-                                   const GroupDataSet& data) {
+                                   const GroupDataSet& data,
+                                   const std::vector<std::string>* rowPatterns) {
   GroupEvaluation ev;
   ev.zeroRows = data.zeroRows;
+  ev.patterns.group = data.group;
   if (data.size() == 0 || classes.empty()) return ev;
   const auto start = std::chrono::steady_clock::now();
   Eigen::MatrixXd logLik;
@@ -80,9 +90,12 @@ GroupEvaluation evaluateClassifier(const ClassModelSet& classifier,
   std::vector<int> truthColumn(data.size());
   for (std::size_t i = 0; i < data.size(); ++i) {
     const ContactClass truth = data.y[i];
-    ev.confusion.add(truth, classes[static_cast<std::size_t>(predicted[i])]);
+    const ContactClass said = classes[static_cast<std::size_t>(predicted[i])];
+    ev.confusion.add(truth, said);
     truthColumn[i] = column[static_cast<std::size_t>(truth)];
+    if (rowPatterns != nullptr) ev.patterns.add((*rowPatterns)[i], truth, said);
   }
+  if (rowPatterns != nullptr) ev.patterns.sortRows();
   ev.metrics = computeMetrics(ev.confusion);
   const HeldOutLogLikelihood ll = heldOutLogLikelihood(logLik, truthColumn);
   ev.meanLogLikelihood = ll.mean;
@@ -103,18 +116,9 @@ GroupEvaluation evaluateClassifier(const ClassModelSet& classifier,
 
 GroupEvaluation evaluateGroupModel(const GroupModel& model, const GroupDataSet& data,
                                    const std::vector<LabelledRun>* runs) {
-  GroupEvaluation ev = evaluateClassifier(model.classifier, model.classes, data);
-  ev.patterns.group = data.group;
-  if (runs != nullptr && data.size() > 0) {
-    const std::vector<int> predicted = model.classifier.predict(data.x);
-    for (std::size_t i = 0; i < data.size(); ++i) {
-      const RunData& run = *(*runs)[data.runIndex[i]].run;
-      ev.patterns.add(contactPattern(run, data.step[i], data.group), data.y[i],
-                      model.classes[static_cast<std::size_t>(predicted[i])]);
-    }
-    ev.patterns.sortRows();
-  }
-  return ev;
+  if (runs == nullptr) return evaluateClassifier(model.classifier, model.classes, data);
+  const std::vector<std::string> patterns = rowPatterns(data, *runs);
+  return evaluateClassifier(model.classifier, model.classes, data, &patterns);
 }
 
 json confusionToJson(const ConfusionMatrix& confusion) {
@@ -158,6 +162,44 @@ bool confusionFromJson(const json& value, ConfusionMatrix& out) {
   return true;
 }
 
+json patternsToJson(const ContactPatternTable& patterns) {
+  json rows = json::array();
+  for (const ContactPatternRow& r : patterns.rows) {
+    json row;
+    row["pattern"] = r.pattern;
+    row["truth"] = contactClassName(r.truth);
+    json predicted = json::object();
+    for (int c = 0; c < kContactClassCount; ++c) {
+      if (r.predicted[static_cast<std::size_t>(c)] > 0) {
+        predicted[std::string(kContactClassNames[static_cast<std::size_t>(c)])] =
+            r.predicted[static_cast<std::size_t>(c)];
+      }
+    }
+    row["predicted"] = std::move(predicted);
+    rows.push_back(std::move(row));
+  }
+  return rows;
+}
+
+bool patternsFromJson(const json& value, SensorGroup group, ContactPatternTable& out) {
+  out = ContactPatternTable{};
+  out.group = group;
+  if (!value.is_array()) return false;
+  for (const json& r : value) {
+    if (!r.is_object()) return false;
+    const auto truth = parseContactClass(r.value("truth", ""));
+    if (!truth || !r.contains("predicted") || !r["predicted"].is_object()) return false;
+    ContactPatternRow row{r.value("pattern", ""), *truth, {}};
+    for (auto it = r["predicted"].begin(); it != r["predicted"].end(); ++it) {
+      const auto p = parseContactClass(it.key());
+      if (!p || !it.value().is_number_unsigned()) return false;
+      row.predicted[static_cast<std::size_t>(*p)] = it.value().get<std::size_t>();
+    }
+    out.rows.push_back(std::move(row));
+  }
+  return true;
+}
+
 json evaluationToJson(const GroupEvaluation& ev) {
   json out;
   out["samples"] = ev.metrics.total;
@@ -180,24 +222,7 @@ json evaluationToJson(const GroupEvaluation& ev) {
   }
   out["per_class"] = std::move(perClass);
   out["confusion"] = confusionToJson(ev.confusion);
-  if (!ev.patterns.rows.empty()) {
-    json rows = json::array();
-    for (const ContactPatternRow& r : ev.patterns.rows) {
-      json row;
-      row["pattern"] = r.pattern;
-      row["truth"] = contactClassName(r.truth);
-      json predicted = json::object();
-      for (int c = 0; c < kContactClassCount; ++c) {
-        if (r.predicted[static_cast<std::size_t>(c)] > 0) {
-          predicted[std::string(kContactClassNames[static_cast<std::size_t>(c)])] =
-              r.predicted[static_cast<std::size_t>(c)];
-        }
-      }
-      row["predicted"] = std::move(predicted);
-      rows.push_back(std::move(row));
-    }
-    out["contact_patterns"] = std::move(rows);
-  }
+  if (!ev.patterns.rows.empty()) out["contact_patterns"] = patternsToJson(ev.patterns);
   if (!ev.oneVsRest.empty()) {
     json ovr = json::array();
     for (const BinaryConfusion& b : ev.oneVsRest) {

@@ -66,15 +66,24 @@ struct GroupEvaluation {
 GroupEvaluation evaluateGroupModel(const GroupModel& model, const GroupDataSet& data,
                                    const std::vector<LabelledRun>* runs = nullptr);
 
-// Same, from the classifier alone (sweep cells): per-row log-likelihoods computed once.
+// Same, from the classifier alone (sweep cells): per-row log-likelihoods computed once. With
+// `rowPatterns` (one on/off pattern per data row, rowPatterns()) the contact patterns are filled.
 GroupEvaluation evaluateClassifier(const ClassModelSet& classifier,
                                    const std::vector<ContactClass>& classes,
-                                   const GroupDataSet& data);
+                                   const GroupDataSet& data,
+                                   const std::vector<std::string>* rowPatterns = nullptr);
+
+// The on/off pattern (contactPattern) of every row of a data set built from `runs`.
+std::vector<std::string> rowPatterns(const GroupDataSet& data,
+                                     const std::vector<LabelledRun>& runs);
 
 nlohmann::json confusionToJson(const ConfusionMatrix& confusion);
 // Reads {"classes":[...],"counts":[[...]]}; false on a malformed value.
 bool confusionFromJson(const nlohmann::json& value, ConfusionMatrix& out);
 nlohmann::json evaluationToJson(const GroupEvaluation& evaluation);
+// [{"pattern","truth","predicted":{class: n}}]; the reader is false on a malformed value.
+nlohmann::json patternsToJson(const ContactPatternTable& patterns);
+bool patternsFromJson(const nlohmann::json& value, SensorGroup group, ContactPatternTable& out);
 
 // Splits each run's labelled steps in time: the first (1 - holdout) of its steps for training,
 // the rest for testing (a random row split would leak neighbouring, nearly identical steps).

@@ -678,7 +678,20 @@ int runReportDb(const ReportArgs& a) {
   auto ws = openWorkspace(a.db, false);
   auto sweep = ws->loadSweep(a.sweep);
   if (!sweep) throw std::runtime_error(a.db + ": " + sweep.errorText());
-  writeText(a.out, analysis::sweepReport(sweep.value(), *style));
+  auto info = ws->database().sweepInfo(a.sweep);
+  json configuration = json::object();
+  if (info) configuration = json::parse(info->configurationJson, nullptr, false);
+  if (a.out.empty() || a.out == "-") {
+    analysis::SweepReportOptions options;
+    if (!configuration.is_discarded()) options.configuration = configuration;
+    writeText(a.out, analysis::sweepReport(sweep.value(), *style, options));
+  } else {
+    // The same writer as the workbench's Export Report (Markdown: figures beside the file).
+    const Status written =
+        analysis::writeSweepReport(sweep.value(), *style, a.out,
+                                   configuration.is_discarded() ? json::object() : configuration);
+    if (!written) throw std::runtime_error(written.errorText());
+  }
   if (a.json) {
     std::cout << json{{"sweep", a.sweep},
                       {"cells", sweep->cells.size()},
@@ -720,7 +733,12 @@ int runReport(const ReportArgs& r) {
   if (format == "tactile-sweep") {
     const Result<analysis::SweepResult> sweep = analysis::sweepFromJson(value);
     if (!sweep) throw std::runtime_error(path + ": " + sweep.errorText());
-    writeText(r.out, analysis::sweepReport(sweep.value(), style));
+    if (r.out.empty() || r.out == "-") {
+      writeText(r.out, analysis::sweepReport(sweep.value(), style));
+    } else {
+      const Status written = analysis::writeSweepReport(sweep.value(), style, r.out);
+      if (!written) throw std::runtime_error(written.errorText());
+    }
     if (r.json) std::cout << json{{"file", path}, {"kind", "sweep"}, {"out", r.out}}.dump() << "\n";
     return kExitOk;
   }

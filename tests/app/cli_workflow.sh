@@ -104,7 +104,15 @@ import json, sys
 d = json.load(open('report.json'))
 assert d['sweep'] == $id and d['out'] == 'again.md' and d['format'] == 'md' and d['cells'] > 0, d
 " || fail "report --json: $(cat report.json)"
-cmp -s again.md report.md || fail "report --json wrote a different report"
+# Markdown figures are written beside the report, in "<stem>_files", and linked from it.
+for f in rate_floor rate_order time_error; do
+  grep -q "](report_files/$f.svg)" report.md || fail "report.md does not link $f.svg"
+  head -c 200 report_files/$f.svg | grep -q "<svg" || fail "report_files/$f.svg is not SVG"
+  [ -s again_files/$f.svg ] || fail "again_files/$f.svg missing"
+done
+sed 's/again_files/report_files/g' again.md | cmp -s - report.md ||
+  fail "report --json wrote a different report"
+grep -q "<svg" report.html || fail "report.html has no inline figure"
 
 # The model of a sweep cell (the best one that has a model) scores as the cell did.
 cell=$(python3 -c "

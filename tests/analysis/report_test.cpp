@@ -1,0 +1,272 @@
+// Sweep reports: contact patterns per cell (filled and read back), the rate series behind figures
+// 4.13 / 4.14, the time-against-error Pareto front, the SVG figures and the written report with
+// its figure files.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <clocale>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <random>
+#include <sstream>
+#include <string>
+
+#include "analysis/report.h"
+#include "analysis/report_svg.h"
+#include "analysis/sweep.h"
+#include "tests/analysis/learn_test_data.h"
+
+namespace tactile::analysis {
+namespace {
+
+// A fresh folder, removed with its contents.
+class TempDir {
+ public:
+  TempDir()
+      : path_(std::filesystem::temp_directory_path() /
+              ("tactile-report-test-" + std::to_string(std::random_device{}()))) {
+    std::filesystem::create_directories(path_);
+  }
+  ~TempDir() {
+    std::error_code ignored;
+    std::filesystem::remove_all(path_, ignored);
+  }
+  std::filesystem::path operator/(const std::string& name) const { return path_ / name; }
+
+ private:
+  std::filesystem::path path_;
+};
+
+// A cell with a hand-made confusion: rows of (truth, predicted, count).
+SweepCellResult cellWith(SensorGroup group, int order, double floor, double seconds,
+                         std::vector<std::tuple<ContactClass, ContactClass, std::size_t>> counts) {
+  SweepCellResult r;
+  r.cell.group = group;
+  r.cell.order = order;
+  r.cell.varianceFloor = floor;
+  r.cell.form = CovarianceForm::NodalDiag;
+  r.ok = true;
+  r.fitSeconds = seconds;
+  for (const auto& [t, p, n] : counts)
+    r.confusion.add(t, p, n);
+  r.metrics = computeMetrics(r.confusion);
+  return r;
+}
+
+constexpr ContactClass W = ContactClass::Wall;
+constexpr ContactClass C = ContactClass::Corner;
+
+SweepResult handSweep() {
+  SweepResult s;
+  s.grid.orders = {1, 2};
+  s.grid.varianceFloors = {0.01, 0.1};
+  // Group F: recall (Wall, Corner) per cell.
+  s.cells.push_back(cellWith(SensorGroup::Front, 1, 0.01, 0.010,
+                             {{W, W, 9}, {W, C, 1}, {C, C, 1}, {C, W, 1}}));  // 90, 50
+  s.cells.push_back(cellWith(SensorGroup::Front, 1, 0.1, 0.020,
+                             {{W, W, 8}, {W, C, 2}, {C, C, 3}, {C, W, 1}}));  // 80, 75
+  s.cells.push_back(
+      cellWith(SensorGroup::Front, 2, 0.01, 0.030, {{W, W, 10}, {C, C, 1}, {C, W, 3}}));  // 100, 25
+  s.cells.push_back(
+      cellWith(SensorGroup::Front, 2, 0.1, 0.040, {{W, W, 7}, {W, C, 3}, {C, C, 4}}));  // 70, 100
+  SweepCellResult failed;
+  failed.cell.group = SensorGroup::Left;
+  failed.reason = "no labelled contact samples";
+  s.cells.push_back(failed);
+  return s;
+}
+
+TEST(ReportSeries, RateSeriesGroupsByFixedSettingAndSortsBySweptValue) {
+  const SweepResult s = handSweep();
+  const std::vector<RateSeries> byFloor = rateSeries(s, SweptVariable::Floor);
+  ASSERT_EQ(byFloor.size(), 2u);  // orders 1 and 2; the failed cell is no point
+  for (const RateSeries& r : byFloor) {
+    EXPECT_EQ(r.x, (std::vector<double>{0.01, 0.1}));
+    ASSERT_EQ(r.cells.size(), 2u);
+    for (std::size_t i = 0; i < r.cells.size(); ++i) {
+      const Metrics& m = s.cells[r.cells[i]].metrics;
+      const double wall = 100.0 * *m.recallOf(W);
+      const double corner = 100.0 * *m.recallOf(C);
+      EXPECT_DOUBLE_EQ(r.mean[i], (wall + corner) / 2);
+      EXPECT_DOUBLE_EQ(r.min[i], std::min(wall, corner));
+      EXPECT_DOUBLE_EQ(r.max[i], std::max(wall, corner));
+      EXPECT_DOUBLE_EQ(r.balancedAccuracy[i], 100.0 * m.balancedAccuracy);
+      EXPECT_EQ(s.cells[r.cells[i]].cell.order, static_cast<int>(r.fixedValue));
+    }
+  }
+  EXPECT_NE(byFloor[0].label.find("order 1"), std::string::npos) << byFloor[0].label;
+  EXPECT_EQ(byFloor[0].mean[0], 70.0);  // cell 0: (90 + 50) / 2
+  const std::vector<RateSeries> byOrder = rateSeries(s, SweptVariable::Order);
+  ASSERT_EQ(byOrder.size(), 2u);  // floors 0.01 and 0.1
+  EXPECT_EQ(byOrder[1].x, (std::vector<double>{1, 2}));
+  EXPECT_EQ(byOrder[1].cells, (std::vector<std::size_t>{1, 3}));
+  // The tables are the series, one row per point.
+  EXPECT_EQ(rateAgainstFloorTable(s).rows.size(), 4u);
+  EXPECT_EQ(rateAgainstOrderTable(s).rows.size(), 4u);
+}
+
+TEST(ReportSeries, ParetoFrontKeepsOnlyUnbeatenCells) {
+  SweepResult s = handSweep();
+  // Balanced accuracy: cell 0 70, cell 1 77.5, cell 2 62.5, cell 3 85. Times rise with the index,
+  // so cell 2 (slower and worse than cell 1) is beaten; the others each trade time for error.
+  EXPECT_EQ(paretoFront(s), (std::vector<std::size_t>{0, 1, 3}));
+  // A copy of cell 1 equal in both is kept beside it; one equally fast but worse is not.
+  s.cells.push_back(s.cells[1]);
+  SweepCellResult worse = s.cells[1];
+  worse.confusion = ConfusionMatrix{};
+  worse.confusion.add(W, C, 5);
+  worse.confusion.add(C, C, 5);
+  worse.metrics = computeMetrics(worse.confusion);
+  s.cells.push_back(worse);
+  EXPECT_EQ(paretoFront(s), (std::vector<std::size_t>{0, 1, 5, 3}));
+  EXPECT_TRUE(paretoFront(s, SensorGroup::Left).empty());
+  EXPECT_TRUE(paretoFront(SweepResult{}).empty());
+}
+
+// Well-formed enough to parse: every opened element closed, in order; no NaN or inf anywhere.
+void expectWellFormed(const std::string& svg) {
+  ASSERT_EQ(svg.rfind("<svg", 0), 0u) << svg.substr(0, 80);
+  std::vector<std::string> open;
+  std::size_t i = 0;
+  while ((i = svg.find('<', i)) != std::string::npos) {
+    const std::size_t end = svg.find('>', i);
+    ASSERT_NE(end, std::string::npos);
+    const std::string tag = svg.substr(i + 1, end - i - 1);
+    if (tag[0] == '/') {
+      ASSERT_FALSE(open.empty()) << tag;
+      EXPECT_EQ(open.back(), tag.substr(1));
+      open.pop_back();
+    } else if (tag.back() != '/') {
+      open.push_back(tag.substr(0, tag.find(' ')));
+    }
+    i = end;
+  }
+  EXPECT_TRUE(open.empty());
+  std::string lower = svg;
+  std::transform(lower.begin(), lower.end(), lower.begin(), ::tolower);
+  EXPECT_EQ(lower.find("nan"), std::string::npos);
+  EXPECT_EQ(lower.find("inf"), std::string::npos);
+}
+
+TEST(ReportSvg, ChartsAreWellFormedAndDrawEverySeriesAndPoint) {
+  SweepResult s = handSweep();
+  s.cells[0].fitSeconds = std::numeric_limits<double>::quiet_NaN();  // left out, never written
+  const std::string rate = rateChartSvg(rateSeries(s, SweptVariable::Floor), SweptVariable::Floor,
+                                        "Rate & floor <test>");
+  expectWellFormed(rate);
+  EXPECT_NE(rate.find("Rate &amp; floor &lt;test&gt;"), std::string::npos);
+  // One solid mean line and two dashed bound lines per series.
+  auto count = [](const std::string& text, const std::string& what) {
+    std::size_t n = 0;
+    for (std::size_t i = text.find(what); i != std::string::npos; i = text.find(what, i + 1))
+      ++n;
+    return n;
+  };
+  EXPECT_EQ(count(rate, "<polyline"), 2u * 3u);
+  const std::string time = timeErrorChartSvg(s, "Run time against error");
+  expectWellFormed(time);
+  EXPECT_EQ(count(time, "<title>cell "), 3u);  // cells 1..3; cell 0 has no finite time
+  EXPECT_NE(time.find("Pareto front (2)"), std::string::npos);  // cells 1 and 3
+  expectWellFormed(timeErrorChartSvg(SweepResult{}, "empty"));
+  expectWellFormed(rateChartSvg({}, SweptVariable::Order, "empty"));
+}
+
+TEST(ReportSvg, NumbersIgnoreTheLocale) {
+  // A decimal comma in the process's locale must not reach the figures or the CSV tables.
+  const char* before = std::setlocale(LC_NUMERIC, nullptr);
+  const std::string saved = before ? before : "C";
+  const bool german = std::setlocale(LC_NUMERIC, "de_DE.UTF-8") != nullptr;
+  const SweepResult s = handSweep();
+  const std::string svg = timeErrorChartSvg(s, "t");
+  const std::string csv = rateAgainstFloorTable(s).render(TableStyle::Csv);
+  std::setlocale(LC_NUMERIC, saved.c_str());
+  EXPECT_NE(csv.find("70.0"), std::string::npos) << csv;
+  EXPECT_EQ(csv.find("70,0"), std::string::npos) << csv;
+  if (!german) GTEST_SKIP() << "no de_DE locale here; checked in the C locale only";
+  EXPECT_EQ(svg.find("0,5"), std::string::npos);
+}
+
+TEST(ReportPatterns, SweepCellsCountTestRowsByPatternAndKeepThemInJson) {
+  const RunData a = testdata::makeLabelledRun(900, 31);
+  const RunData b = testdata::makeLabelledRun(600, 32);
+  const std::vector<LabelledRun> train{{&a, labelsFromTruth(a)}};
+  const std::vector<LabelledRun> test{{&b, labelsFromTruth(b)}};
+  SweepGrid grid;
+  grid.groups = {SensorGroup::Right};
+  grid.orders = {1};
+  grid.forms = {CovarianceForm::NodalDiag};
+  grid.varianceFloors = {0.1};
+  const SweepResult r = runSweep(train, test, grid);
+  ASSERT_EQ(r.cells.size(), 1u);
+  const SweepCellResult& cell = r.cells[0];
+  ASSERT_TRUE(cell.ok) << cell.reason;
+  ASSERT_FALSE(cell.patterns.rows.empty());
+  EXPECT_EQ(cell.patterns.group, SensorGroup::Right);
+  // Every test row is in exactly one pattern row, with its truth and prediction.
+  std::size_t total = 0;
+  ConfusionMatrix fromPatterns;
+  for (const ContactPatternRow& row : cell.patterns.rows) {
+    EXPECT_EQ(row.pattern.size(),
+              static_cast<std::size_t>(groupInfo(SensorGroup::Right).sensorCount));
+    EXPECT_NE(row.pattern.find('1'), std::string::npos);  // contact rows only
+    total += row.total();
+    for (int c = 0; c < kContactClassCount; ++c)
+      fromPatterns.add(row.truth, static_cast<ContactClass>(c),
+                       row.predicted[static_cast<std::size_t>(c)]);
+  }
+  EXPECT_EQ(total, cell.testRows);
+  EXPECT_EQ(fromPatterns, cell.confusion);
+  // Written and read back.
+  auto back = sweepFromJson(sweepToJson(r));
+  ASSERT_TRUE(back.ok()) << back.errorText();
+  ASSERT_EQ(back->cells[0].patterns.rows.size(), cell.patterns.rows.size());
+  for (std::size_t i = 0; i < cell.patterns.rows.size(); ++i) {
+    EXPECT_EQ(back->cells[0].patterns.rows[i].pattern, cell.patterns.rows[i].pattern);
+    EXPECT_EQ(back->cells[0].patterns.rows[i].truth, cell.patterns.rows[i].truth);
+    EXPECT_EQ(back->cells[0].patterns.rows[i].predicted, cell.patterns.rows[i].predicted);
+  }
+  // A sweep stored before patterns were kept still reads.
+  nlohmann::json old = sweepToJson(r);
+  old["cells"][0].erase("patterns");
+  auto oldBack = sweepFromJson(old);
+  ASSERT_TRUE(oldBack.ok()) << oldBack.errorText();
+  EXPECT_TRUE(oldBack->cells[0].patterns.rows.empty());
+  // A malformed one is an error.
+  nlohmann::json bad = sweepToJson(r);
+  bad["cells"][0]["patterns"] = 7;
+  EXPECT_FALSE(sweepFromJson(bad).ok());
+}
+
+TEST(ReportFile, MarkdownLinksItsFigureFilesAndHtmlInlinesThem) {
+  TempDir dir;
+  const SweepResult s = handSweep();
+  const nlohmann::json configuration = {{"label_set", "truth"},
+                                        {"train_runs", {{{"name", "r1"}}, {{"name", "r2"}}}},
+                                        {"test_runs", {{{"name", "r3"}}}}};
+  ASSERT_TRUE(writeSweepReport(s, TableStyle::Markdown, dir / "rep.md", configuration).ok());
+  std::ifstream md(dir / "rep.md");
+  std::stringstream text;
+  text << md.rdbuf();
+  for (const SweepFigure& f : sweepFigures(s)) {
+    EXPECT_NE(text.str().find("](rep_files/" + f.file + ")"), std::string::npos) << f.file;
+    EXPECT_TRUE(std::filesystem::exists(dir / "rep_files" / f.file)) << f.file;
+    EXPECT_FALSE(std::filesystem::exists(dir / "rep_files" / (f.file + ".partial")));
+  }
+  EXPECT_NE(text.str().find("| training runs | r1, r2 |"), std::string::npos);
+  EXPECT_NE(text.str().find("Cell 3: "), std::string::npos);  // every fitted cell's confusion
+  ASSERT_TRUE(writeSweepReport(s, TableStyle::Html, dir / "rep.html").ok());
+  std::ifstream html(dir / "rep.html");
+  std::stringstream page;
+  page << html.rdbuf();
+  std::size_t svgs = 0;
+  for (std::size_t i = page.str().find("<svg"); i != std::string::npos;
+       i = page.str().find("<svg", i + 1))
+    ++svgs;
+  EXPECT_EQ(svgs, 3u);
+  // An unwritable place is an error, and nothing is left behind.
+  EXPECT_FALSE(writeSweepReport(s, TableStyle::Html, dir / "no" / "such" / "r.html").ok());
+}
+
+}  // namespace
+}  // namespace tactile::analysis
