@@ -150,6 +150,22 @@ BinaryConfusion binaryConfusionOf(ContactClass positive, const std::vector<Conta
   return b;
 }
 
+std::vector<BinaryConfusion> binaryConfusions(const ConfusionMatrix& confusion,
+                                              const std::vector<ContactClass>& classes) {
+  std::vector<BinaryConfusion> out;
+  const std::size_t total = confusion.total();
+  for (ContactClass c : classes) {
+    BinaryConfusion b;
+    b.positive = c;
+    b.truePositive = confusion.count(c, c);
+    b.falsePositive = confusion.predictedCount(c) - b.truePositive;
+    b.falseNegative = confusion.trueCount(c) - b.truePositive;
+    b.trueNegative = total - b.truePositive - b.falsePositive - b.falseNegative;
+    out.push_back(b);
+  }
+  return out;
+}
+
 std::string contactPattern(const RunData& run, std::size_t step, SensorGroup group) {
   const GroupInfo& info = groupInfo(group);
   std::string out(static_cast<std::size_t>(info.sensorCount), '0');

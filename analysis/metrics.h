@@ -91,6 +91,11 @@ struct BinaryConfusion {
 BinaryConfusion binaryConfusionOf(ContactClass positive, const std::vector<ContactClass>& truth,
                                   const std::vector<std::uint8_t>& predictedPositive);
 
+// One-vs-rest counts of each class read off a multi-class confusion (the argmax decision "is c"),
+// for the thesis table 4.19 layout of a classifier without rest models (sweep cells).
+std::vector<BinaryConfusion> binaryConfusions(const ConfusionMatrix& confusion,
+                                              const std::vector<ContactClass>& classes);
+
 // On/off pattern of a group's sensors at a step, one character per sensor in index order ('1' where
 // n or s is non-zero), as in the "Contact Situation" column of thesis table 4.39.
 std::string contactPattern(const RunData& run, std::size_t step, SensorGroup group);

@@ -699,6 +699,10 @@ std::string sweepReport(const SweepResult& sweep, TableStyle style,
     out += classRateTable(rates, "Per-class correct rate of each group's best cell (%)")
                .render(style) +
            sep;
+    std::vector<std::pair<SensorGroup, std::vector<BinaryConfusion>>> oneVsRest;
+    for (const auto& [g, r] : best)
+      oneVsRest.emplace_back(r->cell.group, binaryConfusions(r->confusion, r->classes));
+    out += oneVsRestRateTable(oneVsRest).render(style) + sep;
   }
   out += sweepCellsTable(sweep).render(style) + sep;
   heading(out, style, "Confusion matrices of every cell");

@@ -270,3 +270,31 @@ TEST(ReportFile, MarkdownLinksItsFigureFilesAndHtmlInlinesThem) {
 
 }  // namespace
 }  // namespace tactile::analysis
+
+namespace tactile::analysis {
+namespace {
+
+TEST(ReportRates, OneVsRestCountsFromAMultiClassConfusion) {
+  ConfusionMatrix m;
+  m.add(W, W, 8);
+  m.add(W, C, 2);
+  m.add(C, C, 3);
+  m.add(C, W, 1);
+  m.add(ContactClass::LeavingWall, W, 4);
+  const std::vector<BinaryConfusion> b = binaryConfusions(m, {W, C});
+  ASSERT_EQ(b.size(), 2u);
+  EXPECT_EQ(b[0].positive, W);
+  EXPECT_EQ(b[0].truePositive, 8u);
+  EXPECT_EQ(b[0].falsePositive, 5u);  // Corner and LeavingWall rows said Wall
+  EXPECT_EQ(b[0].falseNegative, 2u);
+  EXPECT_EQ(b[0].trueNegative, 3u);
+  EXPECT_EQ(b[1].truePositive, 3u);
+  EXPECT_EQ(b[1].falsePositive, 2u);
+  EXPECT_EQ(b[1].falseNegative, 1u);
+  EXPECT_EQ(b[1].trueNegative, 12u);
+  for (const BinaryConfusion& x : b)
+    EXPECT_EQ(x.truePositive + x.falsePositive + x.falseNegative + x.trueNegative, m.total());
+}
+
+}  // namespace
+}  // namespace tactile::analysis
