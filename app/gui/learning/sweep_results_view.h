@@ -1,1 +1,90 @@
-// placeholder
+// A sweep's results (thesis 4.3-4.4): every cell in a sortable table, filtered by group, and for
+// the selected cell its confusion matrix (counts and row percent, coloured), the per-class correct
+// rates (thesis table 4.19 layout, each group's best cell) and its contact-pattern error table
+// (thesis table 4.39); rate against floor and against order (figures 4.13 and 4.14) and run time
+// against error with the Pareto front. Cells stream in while a sweep runs.
+#pragma once
+
+#include <QWidget>
+
+#include <cstdint>
+#include <optional>
+
+#include "analysis/sweep.h"
+
+class QComboBox;
+class QLabel;
+class QSortFilterProxyModel;
+class QTabWidget;
+class QTableView;
+
+namespace tactile::gui {
+
+class SweepCellsModel;
+class SweepPlot;
+class TableView;
+
+class SweepResultsView : public QWidget {
+  Q_OBJECT
+
+ public:
+  explicit SweepResultsView(QWidget* parent = nullptr);
+
+  void setSweep(std::int64_t sweepId, const analysis::SweepResult& sweep);
+  // A newly finished cell of the shown sweep (cheap: one table row; plots refresh when shown).
+  void addCell(const analysis::SweepCellResult& cell);
+
+  const analysis::SweepResult& sweep() const { return sweep_; }
+  // Index into sweep().cells of the selected cell, -1 when none.
+  int selectedCell() const { return selected_; }
+  void selectCell(int cellIndex);
+  // Selects the group's best cell by balanced accuracy (ties: fewer components, then faster).
+  void selectBestCell(SensorGroup group);
+  // Shows only one group's cells and figures (nullopt: all).
+  void setGroupFilter(std::optional<SensorGroup> group);
+
+  // Parts, for tests and the results window.
+  QTableView* cellsView() const { return cellsView_; }
+  SweepCellsModel* cellsModel() const { return cells_; }
+  QTabWidget* tabs() const { return tabs_; }
+  TableView* confusionCounts() const { return counts_; }
+  TableView* confusionPercent() const { return percent_; }
+  TableView* classRates() const { return rates_; }
+  TableView* oneVsRest() const { return oneVsRest_; }
+  TableView* patterns() const { return patterns_; }
+  SweepPlot* rateFloorPlot() const { return floorPlot_; }
+  SweepPlot* rateOrderPlot() const { return orderPlot_; }
+  SweepPlot* timeErrorPlot() const { return timePlot_; }
+
+ signals:
+  void cellSelected(int cellIndex);
+
+ private:
+  void refreshFigures();
+  void refreshCellDetails();
+  void refreshTitle();
+
+  std::int64_t sweepId_ = 0;
+  analysis::SweepResult sweep_;
+  int selected_ = -1;
+  std::optional<SensorGroup> group_;
+  bool figuresStale_ = true;
+
+  QLabel* title_ = nullptr;
+  QComboBox* groupBox_ = nullptr;
+  SweepCellsModel* cells_ = nullptr;
+  QSortFilterProxyModel* filtered_ = nullptr;
+  QTableView* cellsView_ = nullptr;
+  QTabWidget* tabs_ = nullptr;
+  QLabel* cellTitle_ = nullptr;
+  TableView* counts_ = nullptr;
+  TableView* percent_ = nullptr;
+  TableView* rates_ = nullptr;
+  TableView* oneVsRest_ = nullptr;
+  TableView* patterns_ = nullptr;
+  SweepPlot* floorPlot_ = nullptr;
+  SweepPlot* orderPlot_ = nullptr;
+  SweepPlot* timePlot_ = nullptr;
+};
+
+}  // namespace tactile::gui

@@ -1,0 +1,138 @@
+#include "app/gui/learning/sweep_results_window.h"
+
+#include <QFileDialog>
+#include <QFileInfo>
+#include <QInputDialog>
+#include <QMessageBox>
+#include <QStatusBar>
+#include <QToolBar>
+
+#include <utility>
+
+#include "analysis/report.h"
+#include "app/gui/learning/sweep_results_view.h"
+#include "app/gui/learning/sweep_worker.h"
+#include "workspace/workspace.h"
+
+namespace tactile::gui {
+
+SweepResultsWindow::SweepResultsWindow(workspace::Workspace& workspace, QString databasePath,
+                                       QWidget* parent)
+    : QMainWindow(parent), workspace_(workspace), databasePath_(std::move(databasePath)) {
+  setAttribute(Qt::WA_DeleteOnClose, false);
+  view_ = new SweepResultsView;
+  setCentralWidget(view_);
+  worker_ = new SweepWorker(this);
+  connect(worker_, &SweepWorker::finished, this, &SweepResultsWindow::onModelTrained);
+
+  QToolBar* bar = addToolBar(tr("Sweep"));
+  bar->setObjectName(QStringLiteral("sweepToolBar"));
+  bar->addAction(tr("Export Report..."), this, &SweepResultsWindow::chooseReportFile);
+  bar->addAction(tr("Store Model of Cell"), this, [this] {
+    bool ok = false;
+    const QString name = QInputDialog::getText(
+        this, tr("Store Model"), tr("Name (empty: automatic):"), QLineEdit::Normal, QString(), &ok);
+    if (ok) trainSelectedCell(name.trimmed());
+  });
+  bar->addAction(tr("Export Model of Cell..."), this, &SweepResultsWindow::chooseModelFile);
+  resize(1400, 900);
+}
+
+SweepResultsWindow::~SweepResultsWindow() = default;
+
+Status SweepResultsWindow::showSweep(std::int64_t sweepId) {
+  auto info = workspace_.database().sweepInfo(sweepId);
+  if (!info) return info.error();
+  auto sweep = workspace_.loadSweep(sweepId);
+  if (!sweep) return sweep.error();
+  sweepId_ = sweepId;
+  sweep_ = std::move(sweep.value());
+  try {
+    configuration_ = nlohmann::json::parse(info->configurationJson);
+  } catch (const nlohmann::json::exception&) {
+    configuration_ = nlohmann::json::object();
+  }
+  view_->setSweep(sweepId, sweep_);
+  const std::string state = configuration_.value("state", std::string());
+  setWindowTitle(tr("Sweep %1: %2 (%3)")
+                     .arg(sweepId)
+                     .arg(QString::fromStdString(info->name), QString::fromStdString(state)));
+  return {};
+}
+
+void SweepResultsWindow::addCell(std::int64_t sweepId, const analysis::SweepCellResult& cell) {
+  if (sweepId != sweepId_) return;
+  sweep_.cells.push_back(cell);
+  view_->addCell(cell);
+}
+
+Status SweepResultsWindow::exportReport(const QString& path) {
+  if (sweepId_ == 0) return Error("no sweep is shown");
+  const QString suffix = QFileInfo(path).suffix().toLower();
+  const analysis::TableStyle style = suffix == QLatin1String("md") ? analysis::TableStyle::Markdown
+                                     : suffix == QLatin1String("csv") ? analysis::TableStyle::Csv
+                                     : suffix == QLatin1String("txt") ? analysis::TableStyle::Text
+                                                                      : analysis::TableStyle::Html;
+  return analysis::writeSweepReport(sweep_, style, path.toStdString(), configuration_);
+}
+
+void SweepResultsWindow::chooseReportFile() {
+  const QString path = QFileDialog::getSaveFileName(
+      this, tr("Export Report"), QStringLiteral("sweep-%1.html").arg(sweepId_),
+      tr("HTML report (*.html);;Markdown report (*.md);;CSV tables (*.csv);;Text (*.txt)"));
+  if (path.isEmpty()) return;
+  if (Status s = exportReport(path); !s) {
+    QMessageBox::warning(this, tr("Export Report"), QString::fromStdString(s.errorText()));
+    return;
+  }
+  statusBar()->showMessage(tr("Report written to %1").arg(path), 8000);
+}
+
+bool SweepResultsWindow::trainSelectedCell(const QString& name, const QString& file) {
+  const int cell = view_->selectedCell();
+  if (cell < 0 || static_cast<std::size_t>(cell) >= sweep_.cells.size()) {
+    statusBar()->showMessage(tr("Select a cell first."), 5000);
+    return false;
+  }
+  if (!sweep_.cells[static_cast<std::size_t>(cell)].ok) {
+    statusBar()->showMessage(
+        tr("That cell has no model: %1")
+            .arg(QString::fromStdString(sweep_.cells[static_cast<std::size_t>(cell)].reason)),
+        8000);
+    return false;
+  }
+  pendingModelFile_ = file;
+  if (!worker_->startCellModel(databasePath_, sweepId_, static_cast<std::size_t>(cell), name))
+    return false;
+  statusBar()->showMessage(tr("Training the cell's model..."));
+  return true;
+}
+
+void SweepResultsWindow::chooseModelFile() {
+  const QString path =
+      QFileDialog::getSaveFileName(this, tr("Export Model"), QString(), tr("Model files (*.json)"));
+  if (!path.isEmpty()) trainSelectedCell(QString(), path);
+}
+
+void SweepResultsWindow::onModelTrained(const LearningJobResult& result) {
+  if (!result.ok) {
+    const QString why = result.cancelled ? tr("cancelled") : result.error;
+    QMessageBox::warning(this, tr("Model of Cell"), tr("No model was stored: %1").arg(why));
+    return;
+  }
+  QString message = tr("Model '%1' stored.").arg(result.modelName);
+  if (!pendingModelFile_.isEmpty()) {
+    const Status written =
+        workspace_.exportModel(result.modelName.toStdString(), pendingModelFile_.toStdString());
+    if (!written) {
+      QMessageBox::warning(this, tr("Export Model"), QString::fromStdString(written.errorText()));
+    } else {
+      message += QLatin1Char(' ') + tr("Written to %1.").arg(pendingModelFile_);
+    }
+    pendingModelFile_.clear();
+  }
+  statusBar()->showMessage(message, 10000);
+  emit modelStored(result.modelName);
+}
+
+}  // namespace tactile::gui

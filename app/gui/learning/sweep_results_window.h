@@ -1,0 +1,65 @@
+// A stored sweep's results in a window of their own (beside the runs, or on a second screen): the
+// results views, and the actions on them: export the report (HTML or Markdown, with the plots),
+// and train the selected cell's model to store it or write it to a model file.
+#pragma once
+
+#include <QMainWindow>
+
+#include <cstdint>
+
+#include "analysis/sweep.h"
+#include "base/error.h"
+
+namespace tactile::workspace {
+class Workspace;
+}
+
+namespace tactile::gui {
+
+class SweepResultsView;
+class SweepWorker;
+struct LearningJobResult;
+
+class SweepResultsWindow : public QMainWindow {
+  Q_OBJECT
+
+ public:
+  SweepResultsWindow(workspace::Workspace& workspace, QString databasePath,
+                     QWidget* parent = nullptr);
+  ~SweepResultsWindow() override;
+
+  // Loads a stored sweep (its cells so far) and shows it.
+  Status showSweep(std::int64_t sweepId);
+  // A cell finished by a sweep that is still running: shown at once when it is this window's sweep.
+  void addCell(std::int64_t sweepId, const analysis::SweepCellResult& cell);
+
+  std::int64_t sweepId() const { return sweepId_; }
+  const analysis::SweepResult& sweep() const { return sweep_; }
+  SweepResultsView* view() const { return view_; }
+  SweepWorker* worker() const { return worker_; }
+
+  // Writes the sweep's report (style chosen by the suffix: .html, .htm, .md, .csv, .txt).
+  Status exportReport(const QString& path);
+  // Trains the selected cell's model in the background and stores it under `name` (empty:
+  // automatic); when `file` is not empty the model is also written there.
+  bool trainSelectedCell(const QString& name, const QString& file = {});
+
+ signals:
+  void modelStored(const QString& name);
+
+ private:
+  void chooseReportFile();
+  void chooseModelFile();
+  void onModelTrained(const LearningJobResult& result);
+
+  workspace::Workspace& workspace_;
+  QString databasePath_;
+  std::int64_t sweepId_ = 0;
+  analysis::SweepResult sweep_;
+  nlohmann::json configuration_;
+  SweepResultsView* view_ = nullptr;
+  SweepWorker* worker_ = nullptr;
+  QString pendingModelFile_;
+};
+
+}  // namespace tactile::gui
