@@ -401,7 +401,8 @@ std::vector<std::size_t> paretoFront(const SweepResult& sweep, std::optional<Sen
   std::vector<Point> points;
   for (std::size_t i = 0; i < sweep.cells.size(); ++i) {
     const SweepCellResult& r = sweep.cells[i];
-    if (!r.ok || (group && r.cell.group != *group)) continue;
+    // A cell scored on no test rows has no error to weigh.
+    if (!r.ok || r.confusion.total() == 0 || (group && r.cell.group != *group)) continue;
     if (!std::isfinite(r.fitSeconds + r.predictSeconds) ||
         !std::isfinite(r.metrics.balancedAccuracy))
       continue;

@@ -65,7 +65,8 @@ struct RateSeries {
 };
 std::vector<RateSeries> rateSeries(const SweepResult& sweep, SweptVariable variable);
 
-// Run time against error: the successful cells (of one group, or all) that no other one beats,
+// Run time against error: the successful cells scored on test rows (of one group, or all) that
+// no other one beats,
 // that is, none has both fit + predict seconds and error (100 - balanced accuracy, percent) at
 // most as large and one of them smaller. Indices into sweep.cells, by ascending time (cells equal
 // in both are all kept).

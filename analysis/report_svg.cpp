@@ -231,7 +231,7 @@ std::string timeErrorChartSvg(const SweepResult& sweep, const std::string& title
   std::vector<double> seconds;
   for (const SweepCellResult& r : sweep.cells) {
     const double s = r.fitSeconds + r.predictSeconds;
-    if (r.ok && finite(s) && finite(r.metrics.balancedAccuracy))
+    if (r.ok && r.confusion.total() > 0 && finite(s) && finite(r.metrics.balancedAccuracy))
       seconds.push_back(std::max(s, kMinSeconds));
   }
   Axis x;
@@ -271,7 +271,8 @@ std::string timeErrorChartSvg(const SweepResult& sweep, const std::string& title
   };
   for (std::size_t i = 0; i < sweep.cells.size(); ++i) {
     const SweepCellResult& r = sweep.cells[i];
-    if (!r.ok || !finite(r.fitSeconds + r.predictSeconds) || !finite(r.metrics.balancedAccuracy))
+    if (!r.ok || r.confusion.total() == 0 || !finite(r.fitSeconds + r.predictSeconds) ||
+        !finite(r.metrics.balancedAccuracy))
       continue;
     const auto [px, py] = point(r);
     const SweepCell& c = r.cell;

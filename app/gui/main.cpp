@@ -9,6 +9,7 @@
 #include <cstdio>
 
 #include "app/gui/common/settings_keys.h"
+#include "app/gui/learning/sweep_results_window.h"
 #include "app/gui/main_window.h"
 #include "app/gui/runs/run_session_model.h"
 
@@ -51,9 +52,22 @@ int main(int argc, char** argv) {
   const QCommandLineOption screenshot(
       QStringLiteral("screenshot"),
       QApplication::translate("main",
-                              "Render the window at 1600x1000 to the PNG file FILE, then quit."),
+                              "Render the window (or with --sweep the results window) at "
+                              "1600x1000 to the PNG file FILE, then quit."),
       QStringLiteral("FILE"));
+  const QCommandLineOption sweepOption(
+      QStringLiteral("sweep"),
+      QApplication::translate("main", "Open the results of the stored sweep ID (needs --db)."),
+      QStringLiteral("ID"));
+  const QCommandLineOption modelOption(
+      QStringLiteral("model"),
+      QApplication::translate("main",
+                              "Show the stored model NAME's predictions under the labels (needs "
+                              "--run)."),
+      QStringLiteral("NAME"));
   parser.addOption(dbOption);
+  parser.addOption(sweepOption);
+  parser.addOption(modelOption);
   parser.addOption(runOption);
   parser.addOption(stepOption);
   parser.addOption(screenshot);
@@ -67,6 +81,16 @@ int main(int argc, char** argv) {
                     .arg(parser.value(stepOption)));
   if (parser.isSet(runOption) && !parser.isSet(dbOption))
     return fail(QApplication::translate("main", "--run needs --db"));
+  if (parser.isSet(sweepOption) && !parser.isSet(dbOption))
+    return fail(QApplication::translate("main", "--sweep needs --db"));
+  if (parser.isSet(modelOption) && !parser.isSet(runOption))
+    return fail(QApplication::translate("main", "--model needs --run"));
+  bool sweepOk = true;
+  const qlonglong sweepId =
+      parser.isSet(sweepOption) ? parser.value(sweepOption).toLongLong(&sweepOk) : 0;
+  if (!sweepOk || (parser.isSet(sweepOption) && sweepId <= 0))
+    return fail(QApplication::translate("main", "--sweep needs a sweep id, got '%1'")
+                    .arg(parser.value(sweepOption)));
 
   tactile::gui::MainWindow window;
   if (parser.isSet(screenshot)) window.resize(1600, 1000);
@@ -88,14 +112,29 @@ int main(int argc, char** argv) {
     tactile::Status opened = window.openRun(parser.value(runOption));
     if (!opened) return fail(QString::fromStdString(opened.errorText()));
   }
+  if (parser.isSet(modelOption)) {
+    tactile::Status shown = window.showPredictions(parser.value(modelOption));
+    if (!shown) return fail(QString::fromStdString(shown.errorText()));
+  }
   if (parser.isSet(stepOption)) window.session()->setCurrentStep(step);
   window.show();
+  QWidget* shot = &window;
+  if (parser.isSet(sweepOption)) {
+    tactile::Status opened = window.openSweep(sweepId);
+    if (!opened) return fail(QString::fromStdString(opened.errorText()));
+    shot = window.sweepResults();
+  }
   if (parser.isSet(screenshot)) {
     const QString path = parser.value(screenshot);
     // Long enough for the queued replots of every view.
-    QTimer::singleShot(600, &window, [&window, path] {
-      window.resize(1600, 1000);
-      const bool saved = window.grab().save(path);
+    // A sweep's results window is shot instead of the main window. Predictions are computed in
+    // the background: wait for them as well.
+    QTimer::singleShot(600, &window, [&window, shot, path] {
+      window.waitForPredictions();
+      QCoreApplication::sendPostedEvents();
+      QCoreApplication::processEvents();
+      shot->resize(1600, 1000);
+      const bool saved = shot->grab().save(path);
       if (!saved)
         std::fprintf(stderr, "tactile-workbench: error: cannot save %s\n", qPrintable(path));
       QApplication::exit(saved ? 0 : 1);

@@ -9,6 +9,7 @@
 #include <QFileDialog>
 #include <QFileInfo>
 #include <QFutureWatcher>
+#include <QInputDialog>
 #include <QLabel>
 #include <QMenuBar>
 #include <QMessageBox>
@@ -19,10 +20,16 @@
 #include <QToolBar>
 #include <QUndoStack>
 
+#include "app/gui/common/plot_style.h"
 #include "app/gui/common/progress_bridge.h"
 #include "app/gui/common/settings_keys.h"
 #include "app/gui/labels/label_model.h"
 #include "app/gui/labels/label_panel_view.h"
+#include "app/gui/learning/model_picker_dialog.h"
+#include "app/gui/learning/prediction_model.h"
+#include "app/gui/learning/sweep_results_window.h"
+#include "app/gui/learning/sweep_worker.h"
+#include "app/gui/learning/training_dialog.h"
 #include "app/gui/runs/import_worker.h"
 #include "app/gui/runs/route_view.h"
 #include "app/gui/runs/run_list_model.h"
@@ -107,6 +114,18 @@ void MainWindow::createViews() {
   };
   runList_ = new RunListView(runModel_, this);
   route_ = new RouteView(session_, labels_, this);
+  predictions_ = new PredictionModel(labels_, this);
+  timeline_->setPredictions(predictions_);
+  route_->setPredictions(predictions_);
+  connect(predictions_, &PredictionModel::failed, this,
+          [this](const QString& message) { showError(tr("Predictions: %1").arg(message)); });
+  connect(predictions_, &PredictionModel::ready, this, [this] {
+    std::size_t n = 0;
+    for (const GroupInfo& g : kSensorGroups)
+      n += predictions_->group(g.group).disagreements;
+    showMessage(tr("Predictions shown: %n step(s) disagree with the labels (N: next)", nullptr,
+                   static_cast<int>(n)));
+  });
   labelPanel_ = new LabelPanelView(session_, labels_, this);
   QDockWidget* runs =
       dock(tr("Runs"), QStringLiteral("runsDock"), runList_, Qt::LeftDockWidgetArea);
@@ -250,6 +269,23 @@ void MainWindow::createActions() {
   viewMenu_->addAction(tr("Zoom to Whole Run"), timeline_, &TimelineView::showWholeRun)
       ->setShortcut(QKeySequence(tr("Ctrl+0")));
 
+  // ---- Learn ----
+  QMenu* learn = menuBar()->addMenu(tr("&Learn"));
+  learn->addAction(tr("&Train and Sweep..."), this, &MainWindow::showTrainingDialog)
+      ->setShortcut(QKeySequence(tr("Ctrl+T")));
+  learn->addAction(tr("Open &Sweep Results..."), this, &MainWindow::chooseSweep);
+  learn->addSeparator();
+  learn->addAction(tr("Show &Predictions..."), this, &MainWindow::choosePredictionModels)
+      ->setShortcut(QKeySequence(tr("Ctrl+P")));
+  learn->addAction(tr("&Hide Predictions"), this, [this] { predictions_->clear(); });
+  learn->addAction(tr("&Next Disagreement"), this, [this] { jumpToDisagreement(true); })
+      ->setShortcut(QKeySequence(Qt::Key_N));
+  learn->addAction(tr("Pre&vious Disagreement"), this, [this] { jumpToDisagreement(false); })
+      ->setShortcut(QKeySequence(Qt::SHIFT | Qt::Key_N));
+  learn->addSeparator();
+  learn->addAction(tr("&Export Model..."), this, &MainWindow::chooseModelToExport);
+  learn->addAction(tr("&Import Model..."), this, &MainWindow::chooseModelToImport);
+
   QMenu* help = menuBar()->addMenu(tr("&Help"));
   help->addAction(tr("&About Tactile Workbench"), this, &MainWindow::showAbout);
 }
@@ -268,6 +304,13 @@ Status MainWindow::openDatabase(const QString& path, bool create) {
   // Until the new database's run and set are restored, what the models pass through on the way
   // (no set, step 0) must not overwrite what is remembered.
   switching_ = true;
+  // The learning windows work on the old database's connection.
+  delete training_;
+  training_ = nullptr;
+  delete results_;
+  results_ = nullptr;
+  predictions_->waitForFinished();
+  predictions_->clear();  // the models chosen belong to the old database
   session_->setWorkspace(nullptr);
   labels_->setWorkspace(nullptr);
   workspace_ = std::move(opened.value());
@@ -306,6 +349,8 @@ Status MainWindow::openRun(const QString& name) {
   if (!s) return s;
   labels_->setRun(session_->info().id, session_->info().name, session_->stepCount());
   runList_->selectRun(session_->info().name);
+  // The chosen models follow the user from run to run.
+  if (predictionsWanted()) predictions_->compute(dbPath_, name, predictions_->models());
   timeline_->showWholeRun();
   lastError_.clear();
   // Remembered at once, so a crash or a killed session still comes back to this run.
@@ -497,7 +542,191 @@ void MainWindow::saveSettings() const {
 
 void MainWindow::closeEvent(QCloseEvent* event) {
   saveSettings();
+  if (training_ != nullptr && training_->worker()->isRunning()) {
+    const auto answer = QMessageBox::question(this, tr("Quit"),
+                                              tr("A sweep or training is running. Cancel it and "
+                                                 "quit? Finished sweep cells stay stored."));
+    if (answer != QMessageBox::Yes) {
+      event->ignore();
+      return;
+    }
+  }
+  if (results_ != nullptr) results_->close();
   event->accept();
+}
+
+TrainingDialog* MainWindow::trainingDialog() {
+  if (!workspace_) return nullptr;
+  if (training_ == nullptr) {
+    training_ = new TrainingDialog(*workspace_, dbPath_, this);
+    connect(training_, &TrainingDialog::sweepStored, this, [this](qint64 id) {
+      if (Status s = openSweep(id); !s) showError(QString::fromStdString(s.errorText()));
+    });
+    connect(training_, &TrainingDialog::modelTrained, this,
+            [this](const QString& name) { showMessage(tr("Model '%1' stored").arg(name)); });
+  }
+  return training_;
+}
+
+void MainWindow::showTrainingDialog() {
+  TrainingDialog* dialog = trainingDialog();
+  if (dialog == nullptr) {
+    showError(tr("Open a database first"));
+    return;
+  }
+  if (!dialog->worker()->isRunning()) {
+    dialog->reload();
+    if (!labels_->setName().empty())
+      dialog->setLabelSet(QString::fromStdString(labels_->setName()));
+  }
+  dialog->show();
+  dialog->raise();
+  dialog->activateWindow();
+}
+
+Status MainWindow::openSweep(qint64 sweepId) {
+  if (!workspace_) return Error("no database is open");
+  if (results_ == nullptr) {
+    results_ = new SweepResultsWindow(*workspace_, dbPath_, this);
+    results_->setWindowFlag(Qt::Window);
+    connect(results_, &SweepResultsWindow::modelStored, this,
+            [this](const QString& name) { showMessage(tr("Model '%1' stored").arg(name)); });
+  }
+  if (Status s = results_->showSweep(sweepId); !s) return s;
+  results_->show();
+  results_->raise();
+  return Status::success();
+}
+
+void MainWindow::chooseSweep() {
+  if (!workspace_) return showError(tr("Open a database first"));
+  auto sweeps = workspace_->sweeps();
+  if (!sweeps) return showError(QString::fromStdString(sweeps.errorText()));
+  if (sweeps->empty())
+    return showError(tr("The database has no sweep yet: Learn > Train and Sweep"));
+  QStringList items;
+  for (auto it = sweeps->rbegin(); it != sweeps->rend(); ++it)
+    items << tr("%1: %2 (%3 cells, %4)")
+                 .arg(it->id)
+                 .arg(QString::fromStdString(it->name))
+                 .arg(it->cellCount)
+                 .arg(QString::fromStdString(it->createdAt));
+  bool ok = false;
+  const QString item =
+      QInputDialog::getItem(this, tr("Open Sweep Results"), tr("Sweep:"), items, 0, false, &ok);
+  if (!ok) return;
+  const qint64 id = item.section(QLatin1Char(':'), 0, 0).toLongLong();
+  if (Status s = openSweep(id); !s) showError(QString::fromStdString(s.errorText()));
+}
+
+void MainWindow::chooseModelToExport() {
+  if (!workspace_) return showError(tr("Open a database first"));
+  auto models = workspace_->models();
+  if (!models) return showError(QString::fromStdString(models.errorText()));
+  if (models->empty()) return showError(tr("The database has no model yet"));
+  QStringList names;
+  for (const storage::ModelInfo& m : models.value())
+    names << QString::fromStdString(m.name);
+  bool ok = false;
+  const QString name =
+      QInputDialog::getItem(this, tr("Export Model"), tr("Model:"), names, 0, false, &ok);
+  if (!ok) return;
+  const QString path = QFileDialog::getSaveFileName(this, tr("Export Model"), name + ".json",
+                                                    tr("Model files (*.json)"));
+  if (path.isEmpty()) return;
+  if (Status s = workspace_->exportModel(name.toStdString(), path.toStdString()); !s)
+    return showError(QString::fromStdString(s.errorText()));
+  showMessage(tr("Model '%1' written to %2").arg(name, path));
+}
+
+bool MainWindow::predictionsWanted() const {
+  for (const QString& m : predictions_->models())
+    if (!m.isEmpty()) return true;
+  return false;
+}
+
+Status MainWindow::showPredictions(const QString& model) {
+  PredictionModel::Choice choice = PredictionModel::sameForAll(model);
+  return showPredictions(choice);
+}
+
+Status MainWindow::showPredictions(const PredictionModel::Choice& models) {
+  if (!workspace_) return Error("no database is open");
+  if (!session_->isOpen()) return Error("no run is open");
+  for (const QString& m : models) {
+    if (m.isEmpty()) continue;
+    if (auto info = workspace_->database().modelInfo(m.toStdString()); !info) return info.error();
+  }
+  predictions_->compute(dbPath_, QString::fromStdString(session_->info().name), models);
+  return Status::success();
+}
+
+void MainWindow::waitForPredictions() {
+  predictions_->waitForFinished();
+}
+
+void MainWindow::choosePredictionModels() {
+  if (!workspace_ || !session_->isOpen()) return showError(tr("Open a run first"));
+  auto models = workspace_->models();
+  if (!models) return showError(QString::fromStdString(models.errorText()));
+  if (models->empty())
+    return showError(tr("The database has no model yet: Learn > Train and Sweep"));
+  QStringList names;
+  for (const storage::ModelInfo& m : models.value())
+    names << QString::fromStdString(m.name);
+  ModelPickerDialog picker(names, predictions_->models(), this);
+  if (picker.exec() != QDialog::Accepted) return;
+  if (Status s = showPredictions(picker.choice()); !s)
+    showError(QString::fromStdString(s.errorText()));
+}
+
+void MainWindow::jumpToDisagreement(bool forward) {
+  if (!predictions_->hasPredictions())
+    return showError(tr("No predictions shown: Learn > Show Predictions"));
+  const std::int64_t from = session_->currentStep();
+  const std::optional<std::int64_t> at =
+      forward ? predictions_->nextDisagreement(from, std::nullopt)
+              : predictions_->previousDisagreement(from, std::nullopt);
+  if (!at) return showMessage(tr("The model agrees with the labels everywhere"));
+  session_->setCurrentStep(*at);
+  // The first group that disagrees there becomes the selected one, and the timeline shows it.
+  for (const GroupInfo& g : kSensorGroups) {
+    const GroupPrediction& p = predictions_->group(g.group);
+    if (*at >= static_cast<std::int64_t>(p.disagrees.size()) ||
+        !p.disagrees[static_cast<std::size_t>(*at)])
+      continue;
+    session_->setSelectedGroup(g.group);
+    const auto said = p.classAt(*at);
+    const auto label = labels_->classAt(g.group, *at);
+    showMessage(
+        tr("Step %1, group %2: the model says %3 (%4 %), the label %5")
+            .arg(*at)
+            .arg(QString::fromUtf8(g.shortName.data(), static_cast<qsizetype>(g.shortName.size())))
+            .arg(said ? className(*said) : QString())
+            .arg(100.0 * p.confidence[static_cast<std::size_t>(*at)], 0, 'f', 0)
+            .arg(label ? className(*label) : QString()));
+    break;
+  }
+  const StepRange visible = timeline_->visibleRange();
+  if (*at < visible.first || *at > visible.last) {
+    const std::int64_t half = visible.size() / 2;
+    timeline_->setVisibleRange({*at - half, *at - half + visible.size() - 1});
+  }
+}
+
+void MainWindow::chooseModelToImport() {
+  if (!workspace_) return showError(tr("Open a database first"));
+  const QString path =
+      QFileDialog::getOpenFileName(this, tr("Import Model"), QString(), tr("Model files (*.json)"));
+  if (path.isEmpty()) return;
+  bool ok = false;
+  const QString name =
+      QInputDialog::getText(this, tr("Import Model"), tr("Store as:"), QLineEdit::Normal,
+                            QFileInfo(path).completeBaseName(), &ok);
+  if (!ok) return;
+  auto stored = workspace_->importModel(path.toStdString(), name.trimmed().toStdString());
+  if (!stored) return showError(QString::fromStdString(stored.errorText()));
+  showMessage(tr("Model '%1' stored from %2").arg(QString::fromStdString(stored.value()), path));
 }
 
 }  // namespace tactile::gui

@@ -5,11 +5,13 @@
 
 #include <QMainWindow>
 
+#include <array>
 #include <cstdint>
 #include <memory>
 #include <string>
 
 #include "base/error.h"
+#include "run/sensor_layout.h"
 
 class QAction;
 class QDockWidget;
@@ -28,7 +30,10 @@ class RouteView;
 class RunListModel;
 class RunListView;
 class RunSession;
+class PredictionModel;
 class StepControlsView;
+class SweepResultsWindow;
+class TrainingDialog;
 class TimelineView;
 
 class MainWindow : public QMainWindow {
@@ -56,6 +61,23 @@ class MainWindow : public QMainWindow {
   // The last error shown in the status bar (empty when none since the last success).
   QString lastError() const { return lastError_; }
 
+  // ---- learning ----
+  // The train-and-sweep dialog (made on first use; null without a database).
+  TrainingDialog* trainingDialog();
+  void showTrainingDialog();
+  // Opens a stored sweep's results window.
+  Status openSweep(qint64 sweepId);
+  SweepResultsWindow* sweepResults() const { return results_; }
+  // Shows a stored model's predictions (one model for every group, or one per group) for the open
+  // run, and for every run opened after it, until hidden.
+  Status showPredictions(const QString& model);
+  Status showPredictions(const std::array<QString, kGroupCount>& models);
+  PredictionModel* predictions() const { return predictions_; }
+  // Blocks until predictions being computed are shown (screenshots and tests).
+  void waitForPredictions();
+  // N / Shift+N: the cursor to the next / previous step where the model disagrees with a label.
+  void jumpToDisagreement(bool forward);
+
   // Saves window and view settings now (also done on close).
   void saveSettings() const;
 
@@ -79,6 +101,11 @@ class MainWindow : public QMainWindow {
   void chooseDatabase(bool create);
   void chooseRunFiles();
   void showAbout();
+  void chooseSweep();
+  void chooseModelToExport();
+  void chooseModelToImport();
+  void choosePredictionModels();
+  bool predictionsWanted() const;
 
   std::unique_ptr<workspace::Workspace> workspace_;
   QString dbPath_;
@@ -96,6 +123,9 @@ class MainWindow : public QMainWindow {
   QMenu* viewMenu_ = nullptr;
   QLabel* stepLabel_ = nullptr;
   QLabel* setLabel_ = nullptr;
+  TrainingDialog* training_ = nullptr;
+  SweepResultsWindow* results_ = nullptr;
+  PredictionModel* predictions_ = nullptr;
 };
 
 }  // namespace tactile::gui

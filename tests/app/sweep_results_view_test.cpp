@@ -130,8 +130,15 @@ void SweepResultsViewTest::figuresDrawTheCoreSeriesAndFront() {
   const analysis::SweepResult sweep = makeSweep();
   SweepResultsView view;
   view.setSweep(1, sweep);
-  const auto floorSeries = analysis::rateSeries(sweep, analysis::SweptVariable::Floor);
-  const auto orderSeries = analysis::rateSeries(sweep, analysis::SweptVariable::Order);
+  // The rate figures hold the selected cell's group.
+  const SensorGroup shownGroup =
+      sweep.cells[static_cast<std::size_t>(view.selectedCell())].cell.group;
+  analysis::SweepResult ofGroup;
+  for (const auto& c : sweep.cells)
+    if (c.cell.group == shownGroup) ofGroup.cells.push_back(c);
+  const auto floorSeries = analysis::rateSeries(ofGroup, analysis::SweptVariable::Floor);
+  const auto orderSeries = analysis::rateSeries(ofGroup, analysis::SweptVariable::Order);
+  QVERIFY(!floorSeries.empty());
   QCOMPARE(view.rateFloorPlot()->seriesCount(), static_cast<int>(floorSeries.size()));
   QCOMPARE(view.rateOrderPlot()->seriesCount(), static_cast<int>(orderSeries.size()));
   std::size_t points = 0;
@@ -144,7 +151,7 @@ void SweepResultsViewTest::figuresDrawTheCoreSeriesAndFront() {
   QCOMPARE(view.timeErrorPlot()->frontCount(), static_cast<int>(front.size()));
   std::size_t ok = 0;
   for (const auto& c : sweep.cells)
-    ok += c.ok ? 1 : 0;
+    ok += c.ok && c.confusion.total() > 0 ? 1 : 0;
   QCOMPARE(view.timeErrorPlot()->pointCount(), static_cast<int>(ok));
   // A click on a front point selects that cell.
   QSignalSpy clicked(view.timeErrorPlot(), &gui::SweepPlot::cellClicked);

@@ -51,11 +51,10 @@ QVariant SweepCellsModel::data(const QModelIndex& index, int role) const {
   const analysis::SweepCell& c = r.cell;
   const bool sort = role == Qt::UserRole;
   if (role == Qt::TextAlignmentRole) {
-    const bool numeric = index.column() == Order || index.column() == Floor ||
-                         index.column() == Seed || index.column() >= FitSeconds;
-    return numeric && index.column() != Converged && index.column() != Status
-               ? QVariant(int(Qt::AlignRight | Qt::AlignVCenter))
-               : QVariant();
+    const int c = index.column();
+    const bool numeric =
+        c == Order || c == Floor || c == Seed || (c >= BalancedAccuracy && c <= Iterations);
+    return numeric ? QVariant(int(Qt::AlignRight | Qt::AlignVCenter)) : QVariant();
   }
   if (role == Qt::ToolTipRole) {
     if (!r.ok) return text(r.reason);
@@ -129,9 +128,9 @@ QVariant SweepCellsModel::headerData(int section, Qt::Orientation orientation, i
     case Seed:
       return tr("Seed");
     case FitSeconds:
-      return tr("Fit s");
+      return tr("Fit ms");
     case PredictSeconds:
-      return tr("Predict s");
+      return tr("Predict ms");
     case Iterations:
       return tr("Iterations");
     case Converged:

@@ -15,22 +15,23 @@ class SweepCellsModel : public QAbstractTableModel {
   Q_OBJECT
 
  public:
+  // The scores first: they are what a researcher reads a sweep for.
   enum Column {
     Group,
     Method,
     Form,
     Order,
     Floor,
-    Features,
-    Seed,
+    BalancedAccuracy,
+    Accuracy,
+    MacroF1,
+    LogLikelihood,
     FitSeconds,
     PredictSeconds,
     Iterations,
     Converged,
-    Accuracy,
-    BalancedAccuracy,
-    MacroF1,
-    LogLikelihood,
+    Features,
+    Seed,
     Status,
     ColumnCount
   };

@@ -132,6 +132,13 @@ void SweepPlot::showRates(const std::vector<analysis::RateSeries>& series,
     pointCount_ += static_cast<int>(keys.size());
     ++seriesCount_;
   }
+  // Ticks at exactly the swept values (a log ticker would pick round numbers between them).
+  std::sort(xs.begin(), xs.end());
+  xs.erase(std::unique(xs.begin(), xs.end()), xs.end());
+  QSharedPointer<QCPAxisTickerText> ticks(new QCPAxisTickerText);
+  for (double x : xs)
+    ticks->addTick(x, QString::number(x, 'g', 4));
+  plot_->xAxis->setTicker(ticks);
   plot_->xAxis->setRange(paddedRange(xs, log));
   plot_->yAxis->setRange(0, 105);
   plot_->legend->setVisible(seriesCount_ > 0 && seriesCount_ <= kMaxLegendEntries);
@@ -157,7 +164,7 @@ void SweepPlot::showTimeError(const analysis::SweepResult& sweep,
   std::vector<double> times;
   for (std::size_t i = 0; i < sweep.cells.size(); ++i) {
     const analysis::SweepCellResult& r = sweep.cells[i];
-    if (!r.ok || (group && r.cell.group != *group)) continue;
+    if (!r.ok || r.confusion.total() == 0 || (group && r.cell.group != *group)) continue;
     if (!std::isfinite(r.fitSeconds + r.predictSeconds) ||
         !std::isfinite(r.metrics.balancedAccuracy))
       continue;

@@ -249,6 +249,9 @@ void SweepResultsView::selectBestCell(SensorGroup group) {
 
 void SweepResultsView::selectCell(int cellIndex) {
   if (cellIndex < 0 || cellIndex >= static_cast<int>(sweep_.cells.size())) return;
+  const std::optional<SensorGroup> previousGroup =
+      selected_ >= 0 ? std::optional(sweep_.cells[static_cast<std::size_t>(selected_)].cell.group)
+                     : std::nullopt;
   selected_ = cellIndex;
   const QModelIndex source = cells_->index(cellIndex, 0);
   const QModelIndex shown = filtered_->mapFromSource(source);
@@ -258,6 +261,9 @@ void SweepResultsView::selectCell(int cellIndex) {
         shown, QItemSelectionModel::ClearAndSelect | QItemSelectionModel::Rows);
     cellsView_->scrollTo(shown);
   }
+  const bool groupChanged =
+      previousGroup != sweep_.cells[static_cast<std::size_t>(cellIndex)].cell.group;
+  if (!group_ && groupChanged) refreshFigures();
   refreshCellDetails();
   emit cellSelected(cellIndex);
 }
@@ -273,10 +279,15 @@ void SweepResultsView::refreshTitle() {
 }
 
 void SweepResultsView::refreshFigures() {
+  // Rate figures hold one group: the filtered one, else the selected cell's (all groups' series
+  // at once would be a thicket of lines). Time against error shows every group.
+  std::optional<SensorGroup> rateGroup = group_;
+  if (!rateGroup && selected_ >= 0)
+    rateGroup = sweep_.cells[static_cast<std::size_t>(selected_)].cell.group;
   analysis::SweepResult shown;
   shown.grid = sweep_.grid;
   for (const analysis::SweepCellResult& r : sweep_.cells)
-    if (!group_ || r.cell.group == *group_) shown.cells.push_back(r);
+    if (!rateGroup || r.cell.group == *rateGroup) shown.cells.push_back(r);
   floorPlot_->showRates(analysis::rateSeries(shown, analysis::SweptVariable::Floor),
                         analysis::SweptVariable::Floor);
   orderPlot_->showRates(analysis::rateSeries(shown, analysis::SweptVariable::Order),

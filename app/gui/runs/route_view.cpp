@@ -15,6 +15,7 @@
 
 #include "app/gui/common/plot_style.h"
 #include "app/gui/labels/label_model.h"
+#include "app/gui/learning/prediction_model.h"
 #include "app/gui/runs/run_session_model.h"
 #include "run/robot_geometry.h"
 
@@ -30,6 +31,7 @@ constexpr int kTimeBins = 64;
 constexpr std::uint8_t kUnlabelledKey = kContactClassCount;
 // Polyline pieces stay short so that culling and click search can skip most of a long route.
 constexpr int kMaxChunkPoints = 512;
+constexpr int kMaxHoleMarks = 300;  // hole marks along the route, at most
 constexpr std::size_t kWidePenPoints = 50000;
 
 const QString kColourModeKey = QStringLiteral("routeView/colourMode");
@@ -126,6 +128,7 @@ struct RouteView::Impl {
   QRectF sceneRect;  // scene units, y up: what the whole-scene mode fits
   std::vector<QPolygonF> obstacles;
   std::array<DomePlacement, kSensorCount> domes = domePlacements();
+  const PredictionModel* predictions = nullptr;
   RobotGeometry robot;
 
   bool routeDirty = true;
@@ -364,6 +367,50 @@ struct RouteView::Impl {
     return g ? std::optional(QPointF(g->first, g->second)) : std::nullopt;
   }
 
+  // Holes (thesis 4.5) from the predictions: one mark with its width where a run of consecutive
+  // steps shows a hole on one side, and at the current step the gap itself between its two domes.
+  void drawHoles(QPainter& p, const Transform& xf) const {
+    if (predictions == nullptr || !predictions->hasPredictions() || !session->isOpen() ||
+        predictions->runName() != QString::fromStdString(session->info().name))
+      return;
+    p.setRenderHint(QPainter::Antialiasing, true);
+    const std::vector<HoleMark>& holes = predictions->holes();
+    QFont small = q->font();
+    small.setPointSizeF(small.pointSizeF() * 0.8);
+    p.setFont(small);
+    int drawn = 0;
+    for (std::size_t i = 0; i < holes.size() && drawn < kMaxHoleMarks; ++i) {
+      // The first step of a run of steps with a hole on the same side.
+      bool continues = false;
+      for (std::size_t j = i; j-- > 0 && holes[j].step >= holes[i].step - 1;) {
+        if (holes[j].step == holes[i].step - 1 && holes[j].side == holes[i].side) continues = true;
+      }
+      if (continues) continue;
+      const Pose2d pose = poseAt(holes[i].step);
+      const QPointF at = xf.map(pose.x, pose.y);
+      p.setPen(QPen(QColor(20, 20, 20), 1.5));
+      p.setBrush(QColor(255, 200, 0));
+      p.drawRect(QRectF(at.x() - 3.5, at.y() - 3.5, 7, 7));
+      p.drawText(at + QPointF(6, -4), RouteView::tr("hole %1").arg(holes[i].widthUnits, 0, 'f', 1));
+      ++drawn;
+    }
+    const Pose2d pose = poseAt(session->currentStep());
+    const double c = std::cos(pose.theta);
+    const double sn = std::sin(pose.theta);
+    const QTransform body = QTransform(c, sn, -sn, c, pose.x, pose.y) * xf.qt();
+    for (const HoleMark& h : predictions->holesAt(session->currentStep())) {
+      const DomePlacement& a = domes[static_cast<std::size_t>(h.sensorBefore)];
+      const DomePlacement& b = domes[static_cast<std::size_t>(h.sensorAfter)];
+      const QPointF pa = body.map(QPointF(a.centre.x, a.centre.y));
+      const QPointF pb = body.map(QPointF(b.centre.x, b.centre.y));
+      p.setPen(QPen(QColor(255, 140, 0), 3.0, Qt::DashLine, Qt::RoundCap));
+      p.drawLine(pa, pb);
+      p.setPen(QColor(20, 20, 20));
+      p.drawText((pa + pb) / 2 + QPointF(6, 12),
+                 RouteView::tr("hole %1 wide").arg(h.widthUnits, 0, 'f', 1));
+    }
+  }
+
   void drawRobot(QPainter& p, const Transform& xf) const {
     const Pose2d pose = poseAt(session->currentStep());
     const double c = std::cos(pose.theta);
@@ -409,6 +456,19 @@ struct RouteView::Impl {
     }
   }
 };
+
+void RouteView::setPredictions(const PredictionModel* predictions) {
+  if (d_->predictions != nullptr) disconnect(d_->predictions, nullptr, this, nullptr);
+  d_->predictions = predictions;
+  if (predictions != nullptr)
+    connect(predictions, &PredictionModel::ready, this, [this] { update(); });
+  update();
+}
+
+int RouteView::holeMarksAt(std::int64_t step) const {
+  if (d_->predictions == nullptr || !d_->predictions->hasPredictions()) return 0;
+  return static_cast<int>(d_->predictions->holesAt(step).size());
+}
 
 RouteView::RouteView(RunSession* session, LabelModel* labels, QWidget* parent)
     : QWidget(parent), d_(new Impl) {
@@ -544,6 +604,7 @@ void RouteView::paintEvent(QPaintEvent*) {
   d_->ensureLayer(xf);
   p.drawPixmap(0, 0, d_->layer);
   d_->drawRobot(p, xf);
+  d_->drawHoles(p, xf);
   p.setRenderHint(QPainter::Antialiasing, false);
   drawBadge(p, rect(),
             d_->whole ? tr("Whole scene (M: close-up)") : tr("Close-up (M: whole scene)"), false);

@@ -1,6 +1,7 @@
 // The route view: the scene's obstacles and bounds, start and goal, the route (coloured by time or
 // by the selected group's labels), and the robot at the current step with its 44 domes (contacting
-// domes filled blue to red by value), its heading arrow, an arrow to the goal and the distance.
+// domes filled blue to red by value), its heading arrow, an arrow to the goal and the distance,
+// and with a model's predictions the holes found along the route with their widths.
 // Click a route point to move the cursor to the nearest step; the wheel zooms and a drag pans; M
 // switches between the robot close-up and the whole scene.
 //
@@ -18,6 +19,7 @@ namespace tactile::gui {
 
 class RunSession;
 class LabelModel;
+class PredictionModel;
 
 class RouteView : public QWidget {
   Q_OBJECT
@@ -44,6 +46,11 @@ class RouteView : public QWidget {
   std::optional<std::int64_t> stepAt(QPointF widgetPos, double radius = 8.0) const;
   // How many points the decimated route holds at the current scale (for tests and benchmarks).
   int drawnRoutePoints() const;
+
+  // Marks the holes a model's run scan found (thesis 4.5), with their widths (null: none).
+  void setPredictions(const PredictionModel* predictions);
+  // Holes drawn across the robot at a step (for tests).
+  int holeMarksAt(std::int64_t step) const;
 
  signals:
   void viewSettingsChanged();

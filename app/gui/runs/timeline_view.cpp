@@ -18,6 +18,7 @@
 
 #include "app/gui/common/plot_style.h"
 #include "app/gui/labels/label_model.h"
+#include "app/gui/learning/prediction_model.h"
 
 namespace tactile::gui {
 namespace {
@@ -31,6 +32,11 @@ enum Lane { kLaneLeft, kLaneRight, kLaneForward, kLaneBack, kLaneBlocked, kLaneC
 
 // What a re-bin refills.
 enum Part : unsigned { kHeat = 1, kTrack = 2, kLabels = 4, kAll = 7 };
+
+// A prediction whose posterior is below this is drawn pale.
+constexpr float kConfident = 0.8f;
+constexpr double kDisagreeLevel = 2.0 * kContactClassCount + 1.0;
+constexpr double kHoleLevel = kDisagreeLevel + 1.0;
 
 const QString kChannelKey = QStringLiteral("timelineView/channel");
 const QString kRangeKey = QStringLiteral("timelineView/range");
@@ -176,6 +182,10 @@ struct TimelineView::Impl {
   std::optional<StepRange> restoredRange;  // waits for a run it fits
   std::optional<std::int64_t> openingStep;
   bool truthRows = false;
+  // With predictions, two more rows per group: the predicted class (pale where its posterior is
+  // under kConfident) and a row marking steps where it disagrees with the label.
+  const PredictionModel* predictions = nullptr;
+  bool predictionRows = false;
   unsigned dirty = kAll;
   int binnedWidth = -1;
   bool replotQueued = false;
@@ -199,10 +209,25 @@ struct TimelineView::Impl {
     return labels != nullptr && labels->hasSet() && session->isOpen() &&
            labels->runId() == session->info().id;
   }
-  int labelRow(SensorGroup g) const { return groupIndex(g) * (truthRows ? 2 : 1); }
+  int rowsPerGroup() const { return 1 + (truthRows ? 1 : 0) + (predictionRows ? 2 : 0); }
+  int labelRow(SensorGroup g) const { return groupIndex(g) * rowsPerGroup(); }
+  int predictedRow(SensorGroup g) const { return labelRow(g) + (truthRows ? 1 : 0) + 1; }
+  int disagreeRow(SensorGroup g) const { return predictedRow(g) + 1; }
+  // Below the groups, with predictions: the steps where a side shows a hole (thesis 4.5).
+  int holesRow() const { return kGroupCount * rowsPerGroup(); }
+  int labelRows() const { return kGroupCount * rowsPerGroup() + (predictionRows ? 1 : 0); }
 
   void build();
   void configureLabelRows();
+  // A label-rect row's rectangle in the widget's coordinates.
+  QRect rowRect(int row) const {
+    const QCPAxis* y = labelRect->axis(QCPAxis::atLeft);
+    const auto top = static_cast<int>(std::lround(y->coordToPixel(row - 0.5)));
+    const auto bottom = static_cast<int>(std::lround(y->coordToPixel(row + 0.5)));
+    const QRect inner = labelRect->rect();
+    return QRect(QPoint(inner.left(), top), QPoint(inner.right(), bottom - 1))
+        .translated(plot->pos());
+  }
   void applyChannel();
   void applyAxisRange();
   void rebin(unsigned parts);
@@ -277,11 +302,20 @@ void TimelineView::Impl::build() {
   commands->setGradient(levelGradient({Qt::white, QColor(215, 40, 40), QColor(60, 60, 60)}));
   commands->setDataRange({0, 2});
   labelMap = new QCPColorMap(labelRect->axis(QCPAxis::atBottom), labelRect->axis(QCPAxis::atLeft));
+  // Levels: 0 empty, 1..C the classes, C+1..2C the same paler (an unsure prediction), then the
+  // disagreement mark.
   std::vector<QColor> classes{Qt::white};
   for (int c = 0; c < kContactClassCount; ++c)
     classes.push_back(classColor(ContactClass(c)));
+  for (int c = 0; c < kContactClassCount; ++c) {
+    const QColor full = classColor(ContactClass(c));
+    classes.push_back(QColor((full.red() + 2 * 255) / 3, (full.green() + 2 * 255) / 3,
+                             (full.blue() + 2 * 255) / 3));
+  }
+  classes.push_back(QColor(200, 0, 0));
+  classes.push_back(QColor(70, 70, 70));
   labelMap->setGradient(levelGradient(classes));
-  labelMap->setDataRange({0, static_cast<double>(kContactClassCount)});
+  labelMap->setDataRange({0, kHoleLevel});
   for (QCPColorMap* m : {heat, heading, commands, labelMap}) {
     m->setInterpolate(false);
     m->data()->clear();  // nothing until the first binning
@@ -339,6 +373,8 @@ void TimelineView::Impl::build() {
 // Label rows, with a truth row under each group's when the run has truth.
 void TimelineView::Impl::configureLabelRows() {
   truthRows = session->isOpen() && session->track().hasTruth();
+  predictionRows = predictions != nullptr && predictions->hasPredictions() && session->isOpen() &&
+                   predictions->runName() == QString::fromStdString(session->info().name);
   QVector<double> at;
   QVector<QString> names;
   for (const GroupInfo& g : kSensorGroups) {
@@ -350,8 +386,17 @@ void TimelineView::Impl::configureLabelRows() {
       at << labelRow(g.group) + 1;
       names << TimelineView::tr("%1 truth").arg(name);
     }
+    if (predictionRows) {
+      at << predictedRow(g.group) << disagreeRow(g.group);
+      names << TimelineView::tr("%1 model").arg(name)
+            << TimelineView::tr("%1 \u2260 label").arg(name);
+    }
   }
-  const int rows = kGroupCount * (truthRows ? 2 : 1);
+  if (predictionRows) {
+    at << holesRow();
+    names << TimelineView::tr("holes");
+  }
+  const int rows = labelRows();
   setRowNames(labelRect, at, names, rows);
   for (QCPItemStraightLine* line : labelSeparators)
     plot->removeItem(line);
@@ -486,7 +531,7 @@ void TimelineView::Impl::fillTrack(const Columns& cols) {
 }
 
 void TimelineView::Impl::fillLabels(const Columns& cols) {
-  const int rows = kGroupCount * (truthRows ? 2 : 1);
+  const int rows = labelRows();
   CellGrid grid(cols.count, rows, cols.edges(), {-0.5, rows - 0.5});
   const storage::RunTrack& t = session->track();
   const bool labelled = hasLabels();
@@ -517,6 +562,36 @@ void TimelineView::Impl::fillLabels(const Columns& cols) {
         grid.set(c, row + 1, int(cls) + 1.0);
       }
     }
+    if (predictionRows) {
+      const GroupPrediction& p = predictions->group(g.group);
+      const auto n = static_cast<std::int64_t>(p.cls.size());
+      for (int c = 0; c < cols.count; ++c) {
+        // The column's middle step shows its class; a disagreement anywhere in the column marks
+        // it, so none hides between two pixel columns.
+        const std::int64_t m = cols.middle(c);
+        if (m < n && p.cls[static_cast<std::size_t>(m)] >= 0) {
+          const int cls = p.cls[static_cast<std::size_t>(m)];
+          const bool sure = p.confidence[static_cast<std::size_t>(m)] >= kConfident;
+          grid.set(c, predictedRow(g.group), cls + 1.0 + (sure ? 0.0 : kContactClassCount));
+        }
+        const std::int64_t first = cols.firstStep(c);
+        const std::int64_t last = std::min(cols.lastStep(c), n - 1);
+        for (std::int64_t s = first; s <= last; ++s) {
+          if (p.disagrees.size() > static_cast<std::size_t>(s) &&
+              p.disagrees[static_cast<std::size_t>(s)]) {
+            grid.set(c, disagreeRow(g.group), kDisagreeLevel);
+            break;
+          }
+        }
+      }
+    }
+  }
+  if (predictionRows) {
+    const std::vector<HoleMark>& holes = predictions->holes();
+    auto h = std::lower_bound(holes.begin(), holes.end(), range.first,
+                              [](const HoleMark& m, std::int64_t step) { return m.step < step; });
+    for (; h != holes.end() && h->step <= range.last; ++h)
+      grid.set(cols.columnOf(h->step), holesRow(), kHoleLevel);
   }
   grid.handTo(labelMap);
 }
@@ -548,8 +623,8 @@ void TimelineView::Impl::replotOverlay() {
 bool TimelineView::Impl::grabEdge(QPointF pos) {
   if (!hasLabels() || !labelRect->rect().contains(pos.toPoint())) return false;
   const auto row = std::llround(labelRect->axis(QCPAxis::atLeft)->pixelToCoord(pos.y()));
-  if (row < 0 || (truthRows && row % 2 == 1)) return false;
-  const auto group = static_cast<std::uint8_t>(truthRows ? row / 2 : row);
+  if (row < 0 || row % rowsPerGroup() != 0) return false;  // only label rows have edges
+  const auto group = static_cast<std::uint8_t>(row / rowsPerGroup());
   if (group >= kGroupCount) return false;
   edgeGroup = SensorGroup(group);
   const auto& segs = labels->segments(edgeGroup);
@@ -754,13 +829,38 @@ QRect TimelineView::headingRect() const {
 }
 
 QRect TimelineView::labelStripRect(SensorGroup group) const {
-  const QCPAxis* y = d_->labelRect->axis(QCPAxis::atLeft);
-  const double row = d_->labelRow(group);
-  const auto top = static_cast<int>(std::lround(y->coordToPixel(row - 0.5)));
-  const auto bottom = static_cast<int>(std::lround(y->coordToPixel(row + 0.5)));
-  const QRect inner = d_->labelRect->rect();
-  return QRect(QPoint(inner.left(), top), QPoint(inner.right(), bottom - 1))
-      .translated(d_->plot->pos());
+  return d_->rowRect(d_->labelRow(group));
+}
+
+QRect TimelineView::predictionStripRect(SensorGroup group) const {
+  return d_->predictionRows ? d_->rowRect(d_->predictedRow(group)) : QRect();
+}
+
+QRect TimelineView::disagreementStripRect(SensorGroup group) const {
+  return d_->predictionRows ? d_->rowRect(d_->disagreeRow(group)) : QRect();
+}
+
+QRect TimelineView::holesStripRect() const {
+  return d_->predictionRows ? d_->rowRect(d_->holesRow()) : QRect();
+}
+
+bool TimelineView::showsPredictions() const {
+  return d_->predictionRows;
+}
+
+void TimelineView::setPredictions(const PredictionModel* predictions) {
+  if (d_->predictions != nullptr) disconnect(d_->predictions, nullptr, this, nullptr);
+  d_->predictions = predictions;
+  if (predictions != nullptr) {
+    auto refresh = [this] {
+      d_->configureLabelRows();
+      d_->rebin(kLabels);
+    };
+    connect(predictions, &PredictionModel::ready, this, refresh);
+    connect(predictions, &PredictionModel::changed, this, refresh);
+  }
+  d_->configureLabelRows();
+  d_->rebin(kLabels);
 }
 
 QCustomPlot* TimelineView::plot() const {

@@ -2,7 +2,9 @@
 // steps, values 0..5 blue to red, with a colour bar and the group bands F, FLC, L, RLC, B, RRC, R,
 // FRC; normal, shear or magnitude), heading strip (coloured by quadrant), command strip (lanes L,
 // R, F, B), blocked marks, and per group a label strip with the truth beside it where the run has
-// truth. The current-step cursor and the selected range are drawn on an overlay layer.
+// truth and, with a model's predictions, the predicted class (pale when unsure) and a strip
+// marking where it disagrees with the label. The current-step cursor and the selected range are
+// drawn on an overlay layer.
 //
 // Mouse: a click seeks (a click on a heatmap cell also selects that sensor's group); a drag, or a
 // Shift+click after a click, selects a step range; dragging a label segment's edge moves it; the
@@ -25,6 +27,7 @@ class QSettings;
 namespace tactile::gui {
 
 class LabelModel;
+class PredictionModel;
 
 class TimelineView : public QWidget {
   Q_OBJECT
@@ -52,6 +55,15 @@ class TimelineView : public QWidget {
   QRect heatmapRect() const;
   QRect headingRect() const;
   QRect labelStripRect(SensorGroup group) const;
+  // With predictions shown: a group's predicted-class strip and its disagreement strip (empty
+  // rectangles otherwise).
+  QRect predictionStripRect(SensorGroup group) const;
+  QRect disagreementStripRect(SensorGroup group) const;
+  QRect holesStripRect() const;
+  bool showsPredictions() const;
+
+  // Draws a model's predictions under the label strips (null: none); follows its changes.
+  void setPredictions(const PredictionModel* predictions);
   QCustomPlot* plot() const;
 
  signals:
