@@ -1,7 +1,326 @@
-// placeholder: replaced by the real tests
+// Predictions in the workbench: the model's per-step classes equal `tactile classify`'s core call,
+// confidences are probabilities, disagreements are exactly where prediction and label differ and
+// N walks them (wrapping), holes match the side scan, and the timeline, route and main window show
+// them.
+#include <QComboBox>
+#include <QSettings>
+#include <QSignalSpy>
+#include <QTemporaryDir>
 #include <QtTest>
-class Placeholder : public QObject {
-  Q_OBJECT
+
+#include <cmath>
+#include <limits>
+#include <memory>
+
+#include "analysis/classify_run.h"
+#include "analysis/hole_detection.h"
+#include "app/gui/labels/label_model.h"
+#include "app/gui/learning/model_picker_dialog.h"
+#include "app/gui/learning/prediction_model.h"
+#include "app/gui/main_window.h"
+#include "app/gui/runs/route_view.h"
+#include "app/gui/runs/run_session_model.h"
+#include "app/gui/runs/timeline_view.h"
+#include "gui_fixture.h"
+
+using namespace tactile;
+using tactile::gui::PredictionModel;
+
+namespace {
+
+void settle() {
+  for (int i = 0; i < 3; ++i)
+    QTest::qWait(10);
+}
+
+// The fixture's run labelled from its truth (set "truth"), a model trained on it, and a copy of
+// the set with one stretch relabelled so that the model surely disagrees there.
+struct Predicted {
+  gui::testing::GuiFixture fx{900, "room1"};
+  std::string model = "m";
+  std::int64_t runId = 0;
+
+  Predicted() {
+    auto info = fx.workspace->database().findRun(fx.runName);
+    if (!info) throw std::runtime_error(info.errorText());
+    runId = info->id;
+    if (!fx.workspace->database().autolabel(runId, "truth"))
+      throw std::runtime_error("autolabel failed");
+    workspace::TrainRequest request;
+    request.labelSet = "truth";
+    request.trainRuns = {fx.runName};
+    request.modelName = model;
+    request.minRowsPerGroup = 5;
+    request.settings.classifier.gmm.components = 1;
+    auto trained = fx.workspace->train(request);
+    if (!trained) throw std::runtime_error(trained.errorText());
+  }
 };
-QTEST_MAIN(Placeholder)
+
+}  // namespace
+
+class PredictionTest : public QObject {
+  Q_OBJECT
+
+ private slots:
+  void posteriorsAreProbabilitiesInLogSpace();
+  void predictionsEqualTheCoreClassification();
+  void disagreementsAreWherePredictionAndLabelDiffer();
+  void nextDisagreementWrapsAround();
+  void holesMatchTheSideScan();
+  void timelineAndRouteShowPredictions();
+  void mainWindowShowsAModelAndKeyNJumps();
+  void pickerChoosesOneOrPerGroup();
+};
+
+void PredictionTest::posteriorsAreProbabilitiesInLogSpace() {
+  const double ninf = -std::numeric_limits<double>::infinity();
+  Eigen::MatrixXd ll(3, 3);
+  ll << -1000.0, -1001.0, -1003.0,  // far below exp's range: still a proper posterior
+      ninf, ninf, ninf,             // no class can explain the row
+      0.0, ninf, -2.0;
+  const Eigen::VectorXd priors = Eigen::Vector3d::Constant(std::log(1.0 / 3.0));
+  const Eigen::MatrixXd post = gui::logPosteriors(ll, priors);
+  double sum = 0.0;
+  for (int c = 0; c < 3; ++c)
+    sum += std::exp(post(0, c));
+  QVERIFY(std::abs(sum - 1.0) < 1e-12);
+  QVERIFY(std::abs(std::exp(post(0, 0)) - 1.0 / (1.0 + std::exp(-1.0) + std::exp(-3.0))) < 1e-12);
+  for (int c = 0; c < 3; ++c)
+    QVERIFY(post(1, c) == ninf);
+  QVERIFY(post(2, 1) == ninf);
+  QVERIFY(!std::isnan(post.sum()));
+}
+
+void PredictionTest::predictionsEqualTheCoreClassification() {
+  Predicted p;
+  gui::LabelModel labels;
+  PredictionModel predictions(&labels);
+  QSignalSpy ready(&predictions, &PredictionModel::ready);
+  predictions.compute(QString::fromStdString(p.fx.dbPath), QString::fromStdString(p.fx.runName),
+                      PredictionModel::sameForAll(QString::fromStdString(p.model)));
+  QVERIFY(predictions.isComputing());
+  QVERIFY(ready.wait(30000));
+  auto classified = p.fx.workspace->classify(p.model, p.fx.runName);
+  QVERIFY(classified.ok());
+  QCOMPARE(predictions.stepCount(), static_cast<std::int64_t>(classified->result.steps));
+  std::size_t predicted = 0;
+  for (const GroupInfo& g : kSensorGroups) {
+    const gui::GroupPrediction& mine = predictions.group(g.group);
+    const analysis::GroupClassification& core =
+        classified->result.groups[static_cast<std::size_t>(groupIndex(g.group))];
+    QCOMPARE(mine.hasModel, core.model != nullptr);
+    for (std::size_t t = 0; t < classified->result.steps; ++t) {
+      const std::string name = core.className(t);
+      const auto cls = mine.classAt(static_cast<std::int64_t>(t));
+      QCOMPARE(cls ? std::string(contactClassName(*cls)) : std::string(), name);
+      const float conf = mine.confidence[t];
+      QVERIFY(std::isfinite(conf) && conf >= 0.0f && conf <= 1.0f);
+      if (cls && *cls != ContactClass::NoContact) {
+        ++predicted;
+        // With C classes the winner's posterior is at least 1 / C.
+        QVERIFY(conf >= 1.0f / static_cast<float>(core.model->classes.size()) - 1e-6f);
+      }
+    }
+  }
+  QVERIFY(predicted > 0);
+}
+
+void PredictionTest::disagreementsAreWherePredictionAndLabelDiffer() {
+  Predicted p;
+  gui::LabelModel labels;
+  labels.setWorkspace(p.fx.workspace.get());
+  QVERIFY(labels.openSet("truth").ok());
+  auto info = p.fx.workspace->database().findRun(p.fx.runName);
+  labels.setRun(info->id, info->name, info->stepCount);
+  PredictionModel predictions(&labels);
+  predictions.compute(QString::fromStdString(p.fx.dbPath), QString::fromStdString(p.fx.runName),
+                      PredictionModel::sameForAll(QString::fromStdString(p.model)));
+  predictions.waitForFinished();
+  QVERIFY(predictions.hasPredictions());
+  auto check = [&] {
+    std::size_t total = 0;
+    for (const GroupInfo& g : kSensorGroups) {
+      const gui::GroupPrediction& pr = predictions.group(g.group);
+      std::size_t counted = 0;
+      for (std::int64_t t = 0; t < predictions.stepCount(); ++t) {
+        const auto said = pr.classAt(t);
+        const auto label = labels.classAt(g.group, t);
+        const bool differs = said && label && *said != *label;
+        if (differs != (pr.disagrees[static_cast<std::size_t>(t)] != 0)) return false;
+        counted += differs ? 1 : 0;
+      }
+      if (counted != pr.disagreements) return false;
+      total += counted;
+    }
+    (void)total;
+    return true;
+  };
+  QVERIFY(check());
+  // Relabelling a contact step as DeadPath (which this model never predicts) makes it a
+  // disagreement, and the change arrives without recomputing.
+  // The first group and step with a predicted contact class.
+  std::optional<SensorGroup> group;
+  std::int64_t first = -1;
+  for (const GroupInfo& g : kSensorGroups) {
+    const gui::GroupPrediction& pr = predictions.group(g.group);
+    for (std::int64_t t = 0; t < predictions.stepCount() && first < 0; ++t)
+      if (pr.classAt(t) && *pr.classAt(t) != ContactClass::NoContact) first = t;
+    if (first >= 0) {
+      group = g.group;
+      break;
+    }
+  }
+  QVERIFY(group.has_value());
+  const std::size_t before = predictions.group(*group).disagreements;
+  QSignalSpy changed(&predictions, &PredictionModel::changed);
+  QVERIFY(labels.label({*group}, first, first, ContactClass::DeadPath).ok());
+  QVERIFY(changed.count() >= 1);
+  QVERIFY(check());
+  QVERIFY(predictions.group(*group).disagrees[static_cast<std::size_t>(first)]);
+  QVERIFY(predictions.group(*group).disagreements >= before);
+}
+
+void PredictionTest::nextDisagreementWrapsAround() {
+  Predicted p;
+  gui::LabelModel labels;
+  labels.setWorkspace(p.fx.workspace.get());
+  QVERIFY(labels.createSet("mine").ok());
+  auto info = p.fx.workspace->database().findRun(p.fx.runName);
+  labels.setRun(info->id, info->name, info->stepCount);
+  PredictionModel predictions(&labels);
+  predictions.compute(QString::fromStdString(p.fx.dbPath), QString::fromStdString(p.fx.runName),
+                      PredictionModel::sameForAll(QString::fromStdString(p.model)));
+  predictions.waitForFinished();
+  QVERIFY(!predictions.nextDisagreement(0, std::nullopt));  // an empty set: nothing to disagree
+  // Two labelled steps that the model cannot have predicted: DeadPath on a no-contact rule step
+  // is still a disagreement (the rule says NoContact).
+  const std::int64_t a = 100, b = 400;
+  QVERIFY(labels.label({SensorGroup::Back}, a, a, ContactClass::DeadPath).ok());
+  QVERIFY(labels.label({SensorGroup::Back}, b, b, ContactClass::DeadPath).ok());
+  QCOMPARE(predictions.nextDisagreement(0, std::nullopt), std::optional<std::int64_t>(a));
+  QCOMPARE(predictions.nextDisagreement(a, std::nullopt), std::optional<std::int64_t>(b));
+  QCOMPARE(predictions.nextDisagreement(b, std::nullopt), std::optional<std::int64_t>(a));  // wraps
+  QCOMPARE(predictions.previousDisagreement(a, std::nullopt), std::optional<std::int64_t>(b));
+  QCOMPARE(predictions.nextDisagreement(0, SensorGroup::Back), std::optional<std::int64_t>(a));
+  QVERIFY(!predictions.nextDisagreement(0, SensorGroup::Front));
+}
+
+void PredictionTest::holesMatchTheSideScan() {
+  Predicted p;
+  auto run = p.fx.workspace->loadRun(p.fx.runName);
+  QVERIFY(run.ok());
+  const std::vector<gui::HoleMark> holes = gui::findHoles(run.value());
+  // Every step's holes are exactly the side scans' holes, in side order.
+  const auto placements = domePlacements();
+  std::size_t k = 0;
+  for (std::size_t t = 0; t < run->stepCount(); ++t) {
+    const auto contact = analysis::sensorContacts(run.value(), t);
+    for (std::size_t side = 0; side < analysis::kSides.size(); ++side) {
+      const auto& s = analysis::kSides[side];
+      for (const analysis::Hole& h :
+           analysis::scanSide(contact, s.firstSensor, s.count, placements).holes) {
+        QVERIFY(k < holes.size());
+        QCOMPARE(holes[k].step, static_cast<std::int64_t>(t));
+        QCOMPARE(holes[k].side, static_cast<int>(side));
+        QCOMPARE(holes[k].widthUnits, h.widthUnits);
+        ++k;
+      }
+    }
+  }
+  QCOMPARE(k, holes.size());
+}
+
+void PredictionTest::timelineAndRouteShowPredictions() {
+  Predicted p;
+  gui::RunSession session;
+  session.setWorkspace(p.fx.workspace.get());
+  QVERIFY(session.open(p.fx.runName).ok());
+  gui::LabelModel labels;
+  labels.setWorkspace(p.fx.workspace.get());
+  QVERIFY(labels.openSet("truth").ok());
+  labels.setRun(session.info().id, session.info().name, session.stepCount());
+  PredictionModel predictions(&labels);
+  gui::TimelineView timeline(&session, &labels);
+  gui::RouteView route(&session, &labels);
+  timeline.resize(1200, 900);
+  timeline.show();
+  QVERIFY(QTest::qWaitForWindowExposed(&timeline));
+  timeline.setPredictions(&predictions);
+  route.setPredictions(&predictions);
+  settle();
+  QVERIFY(!timeline.showsPredictions());
+  QVERIFY(timeline.predictionStripRect(SensorGroup::Front).isEmpty());
+  predictions.compute(QString::fromStdString(p.fx.dbPath), QString::fromStdString(p.fx.runName),
+                      PredictionModel::sameForAll(QString::fromStdString(p.model)));
+  predictions.waitForFinished();
+  settle();
+  QVERIFY(timeline.showsPredictions());
+  // A disagreement step shows red in its group's disagreement strip; an agreeing stretch does not.
+  QVERIFY(labels.label({SensorGroup::Back}, 300, 300, ContactClass::DeadPath).ok());
+  timeline.showWholeRun();
+  settle();
+  const QRect strip = timeline.disagreementStripRect(SensorGroup::Back);
+  QVERIFY(!strip.isEmpty());
+  const QImage image = timeline.grab().toImage();
+  const QColor at300 =
+      image.pixelColor(static_cast<int>(std::lround(timeline.stepToX(300))), strip.center().y());
+  QVERIFY2(at300.red() > 150 && at300.green() < 60, qPrintable(at300.name()));
+  // Route: the current step's holes are drawn across the robot.
+  for (const gui::HoleMark& h : predictions.holes()) {
+    QCOMPARE(route.holeMarksAt(h.step), static_cast<int>(predictions.holesAt(h.step).size()));
+    break;
+  }
+  QCOMPARE(route.holeMarksAt(-5), 0);
+  predictions.clear();
+  settle();
+  QVERIFY(!timeline.showsPredictions());
+}
+
+void PredictionTest::mainWindowShowsAModelAndKeyNJumps() {
+  Predicted p;
+  QTemporaryDir settingsDir;
+  QSettings::setPath(QSettings::IniFormat, QSettings::UserScope, settingsDir.path());
+  QSettings::setDefaultFormat(QSettings::IniFormat);
+  gui::MainWindow window;
+  window.resize(1400, 900);
+  QVERIFY(window.openDatabase(QString::fromStdString(p.fx.dbPath)).ok());
+  QVERIFY(window.openRun(QString::fromStdString(p.fx.runName)).ok());
+  window.show();
+  QVERIFY(QTest::qWaitForWindowExposed(&window));
+  QVERIFY(!window.showPredictions(QStringLiteral("no such model")).ok());
+  QVERIFY(window.showPredictions(QString::fromStdString(p.model)).ok());
+  window.waitForPredictions();
+  QVERIFY(window.predictions()->hasPredictions());
+  window.session()->setCurrentStep(0);
+  const auto expected = window.predictions()->nextDisagreement(0, std::nullopt);
+  QTest::keyClick(&window, Qt::Key_N);
+  if (expected) {
+    QCOMPARE(window.session()->currentStep(), *expected);
+    QVERIFY(window.predictions()
+                ->group(window.session()->selectedGroup())
+                .disagrees[static_cast<std::size_t>(*expected)]);
+    QTest::keyClick(&window, Qt::Key_N, Qt::ShiftModifier);
+    QCOMPARE(window.session()->currentStep(),
+             *window.predictions()->previousDisagreement(*expected, std::nullopt));
+  } else {
+    QCOMPARE(window.session()->currentStep(), std::int64_t{0});
+  }
+}
+
+void PredictionTest::pickerChoosesOneOrPerGroup() {
+  const QStringList models{QStringLiteral("a"), QStringLiteral("b")};
+  gui::ModelPickerDialog same(models, PredictionModel::sameForAll(QStringLiteral("a")));
+  QCOMPARE(same.choice(), PredictionModel::sameForAll(QStringLiteral("a")));
+  PredictionModel::Choice mixed = PredictionModel::sameForAll(QStringLiteral("a"));
+  mixed[static_cast<std::size_t>(groupIndex(SensorGroup::Back))] = QStringLiteral("b");
+  mixed[static_cast<std::size_t>(groupIndex(SensorGroup::Left))] = QString();
+  gui::ModelPickerDialog perGroup(models, mixed);
+  QCOMPARE(perGroup.choice(), mixed);
+  perGroup.setPerGroup(false);
+  perGroup.allGroupsBox()->setCurrentIndex(perGroup.allGroupsBox()->findData(QStringLiteral("b")));
+  QCOMPARE(perGroup.choice(), PredictionModel::sameForAll(QStringLiteral("b")));
+}
+
+QTEST_MAIN(PredictionTest)
 #include "prediction_test.moc"
