@@ -1,6 +1,7 @@
 // The workbench on a long run (default 1,000,000 steps), measured through the real main window on
 // the offscreen platform: opening the run to a first full paint, moving the cursor one step with
-// every view updated, zooming the timelines to the whole run, and the memory the process holds.
+// every view updated (also while a sweep runs on every core), zooming the timelines to the whole
+// run, cancelling a running sweep, and the memory the process holds.
 //
 //   QT_QPA_PLATFORM=offscreen build/bench/gui/tactile_gui_bench --benchmark_repetitions=5
 //
@@ -10,10 +11,12 @@
 
 #include <QApplication>
 #include <QDir>
+#include <QElapsedTimer>
 #include <QFile>
 #include <QFileInfo>
 #include <QProcess>
 #include <QSettings>
+#include <QSignalSpy>
 #include <QTemporaryDir>
 
 #include <cstdio>
@@ -23,10 +26,14 @@
 #include <memory>
 #include <string>
 
+#include "app/gui/learning/sweep_worker.h"
 #include "app/gui/main_window.h"
 #include "app/gui/runs/route_view.h"
 #include "app/gui/runs/run_session_model.h"
 #include "app/gui/runs/timeline_view.h"
+#include "sim/recorder.h"
+#include "sim/scene_source.h"
+#include "sim/world.h"
 #include "storage/run_database.h"
 #include "storage/synthetic_run.h"
 
@@ -160,6 +167,107 @@ void BM_ZoomTimelinesToWholeRun(benchmark::State& state) {
   }
 }
 
+// ---- during a sweep ----
+// Three short simulated wall-following runs labelled from their truth (set "truth") are added to
+// the benchmark database once; a sweep over them runs on a worker thread, on every core, through
+// the same worker as the train-and-sweep dialog, while the main window's cursor moves.
+const char* const kSweepRuns[] = {"sweep_room1", "sweep_room2", "sweep_room3"};
+
+void ensureSweepRuns() {
+  auto db = tactile::storage::RunDatabase::open(benchDatabase().toStdString());
+  if (!db) std::abort();
+  for (const char* name : kSweepRuns) {
+    if (db.value()->findRun(name)) continue;
+    const std::string scene = std::string(name).substr(6);
+    auto loaded = tactile::sim::loadScene(scene);
+    if (!loaded) std::abort();
+    auto world = std::make_shared<const tactile::sim::World>(std::move(loaded.value()));
+    tactile::sim::RunOptions options;
+    options.maxSteps = 1500;
+    options.stopAtGoal = false;
+    auto run = tactile::sim::simulateRun(world, scene, options);
+    if (!run) std::abort();
+    if (db.value()->importRun(run.value().run, name).status !=
+        tactile::storage::ImportStatus::Imported)
+      std::abort();
+    auto info = db.value()->findRun(name);
+    if (!info || !db.value()->autolabel(info->id, "truth")) std::abort();
+  }
+}
+
+// Every group, orders 1..64, four forms, three floors: far longer than any measurement.
+tactile::workspace::SweepRequest bigSweep() {
+  tactile::workspace::SweepRequest request;
+  request.labelSet = "truth";
+  request.trainRuns = {kSweepRuns[0], kSweepRuns[1]};
+  request.testRuns = {kSweepRuns[2]};
+  request.name = "bench sweep";
+  return request;
+}
+
+// Waits in the event loop until the worker's job is over.
+void waitUntilIdle(tactile::gui::SweepWorker& worker) {
+  while (worker.isRunning()) {
+    QCoreApplication::processEvents(QEventLoop::WaitForMoreEvents, 50);
+  }
+}
+
+void BM_CursorOneStepDuringSweep(benchmark::State& state) {
+  MainWindow* w = window();
+  ensureSweepRuns();
+  tactile::gui::SweepWorker worker;
+  if (!worker.startSweep(benchDatabase(), bigSweep())) {
+    state.SkipWithError("the sweep did not start");
+    return;
+  }
+  QSignalSpy cells(&worker, &tactile::gui::SweepWorker::cellFinished);
+  // Measured once the fits are under way on every core.
+  while (cells.count() == 0 && worker.isRunning())
+    cells.wait(50);
+  tactile::gui::RunSession* s = w->session();
+  w->timeline()->showWholeRun();
+  s->setCurrentStep(s->stepCount() / 2);
+  settle();
+  std::int64_t direction = 1;
+  double worstMs = 0.0;
+  for (auto _ : state) {
+    QElapsedTimer clock;
+    clock.start();
+    s->setCurrentStep(s->currentStep() + direction);
+    settle();
+    worstMs = std::max(worstMs, static_cast<double>(clock.nsecsElapsed()) / 1e6);
+    direction = -direction;
+  }
+  state.counters["worst_ms"] = worstMs;
+  state.counters["sweep_running"] = worker.isRunning() ? 1 : 0;
+  worker.cancel();
+  waitUntilIdle(worker);
+}
+
+// From Cancel to the worker's finished signal, with fits running on every core.
+void BM_CancelRunningSweep(benchmark::State& state) {
+  window();
+  ensureSweepRuns();
+  for (auto _ : state) {
+    state.PauseTiming();
+    tactile::gui::SweepWorker worker;
+    QSignalSpy cells(&worker, &tactile::gui::SweepWorker::cellFinished);
+    QSignalSpy finished(&worker, &tactile::gui::SweepWorker::finished);
+    if (!worker.startSweep(benchDatabase(), bigSweep())) std::abort();
+    while (cells.count() == 0 && worker.isRunning())
+      cells.wait(50);
+    state.ResumeTiming();
+    worker.cancel();
+    while (finished.count() == 0)
+      finished.wait(10);
+    state.PauseTiming();
+    const auto result = finished.first().at(0).value<tactile::gui::LearningJobResult>();
+    state.counters["cells_kept"] = static_cast<double>(result.cells);
+    if (!result.cancelled) state.SkipWithError("the sweep was not cancelled");
+    state.ResumeTiming();
+  }
+}
+
 // The baseline: what a viewer that loads whole runs would spend before drawing anything (every
 // step's 88 sensor values decoded into memory). Registered last: it leaves the process holding
 // the run's memory.
@@ -184,6 +292,11 @@ BENCHMARK(BM_OpenRunToFirstPaint)->Unit(benchmark::kMillisecond)->Iterations(3)-
 BENCHMARK(BM_CursorOneStep)->Unit(benchmark::kMillisecond)->Iterations(200)->UseRealTime();
 BENCHMARK(BM_CursorOneStepCloseUp)->Unit(benchmark::kMillisecond)->Iterations(200)->UseRealTime();
 BENCHMARK(BM_ZoomTimelinesToWholeRun)->Unit(benchmark::kMillisecond)->Iterations(10)->UseRealTime();
+BENCHMARK(BM_CursorOneStepDuringSweep)
+    ->Unit(benchmark::kMillisecond)
+    ->Iterations(200)
+    ->UseRealTime();
+BENCHMARK(BM_CancelRunningSweep)->Unit(benchmark::kMillisecond)->Iterations(3)->UseRealTime();
 BENCHMARK(BM_BaselineLoadWholeRun)->Unit(benchmark::kMillisecond)->Iterations(1)->UseRealTime();
 
 }  // namespace

@@ -67,7 +67,7 @@ class MainWindowTest : public QObject {
     QStringList menus;
     for (QAction* action : window.menuBar()->actions())
       menus << action->text();
-    QCOMPARE(menus, (QStringList{"&File", "&Edit", "&Go", "&View", "&Help"}));
+    QCOMPARE(menus, (QStringList{"&File", "&Edit", "&Go", "&View", "&Learn", "&Help"}));
   }
 
   void keysStepExactly() {
