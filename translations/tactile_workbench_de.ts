@@ -25,6 +25,21 @@
     </message>
 </context>
 <context>
+    <name>QObject</name>
+    <message>
+        <source>Group %1, %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>, variance floor %1, %2 features, seed %3</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>none</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
     <name>main</name>
     <message>
         <source>Tactile Workbench: tactile-navigation research desktop</source>
@@ -43,10 +58,6 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>Render the window at 1600x1000 to the PNG file FILE, then quit.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
         <source>--step needs a step number, got &apos;%1&apos;</source>
         <translation type="unfinished"></translation>
     </message>
@@ -56,6 +67,30 @@
     </message>
     <message>
         <source>%1: no such database</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Render the window (or with --sweep the results window) at 1600x1000 to the PNG file FILE, then quit.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Open the results of the stored sweep ID (needs --db).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Show the stored model NAME&apos;s predictions under the labels (needs --run).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>--sweep needs --db</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>--model needs --run</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>--sweep needs a sweep id, got &apos;%1&apos;</source>
         <translation type="unfinished"></translation>
     </message>
 </context>
@@ -558,6 +593,164 @@
 Research workbench for tactile-based mobile-robot navigation.</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <source>&amp;Learn</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Train and Sweep...</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Ctrl+T</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Open &amp;Sweep Results...</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Export Model...</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Import Model...</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Quit</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>A sweep or training is running. Cancel it and quit? Finished sweep cells stay stored.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Model &apos;%1&apos; stored</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Open a database first</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The database has no sweep yet: Learn &gt; Train and Sweep</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1: %2 (%3 cells, %4)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Open Sweep Results</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Sweep:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The database has no model yet</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Export Model</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Model:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Model files (*.json)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Model &apos;%1&apos; written to %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Import Model</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Store as:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Model &apos;%1&apos; stored from %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Predictions: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message numerus="yes">
+        <source>Predictions shown: %n step(s) disagree with the labels (N: next)</source>
+        <translation type="unfinished">
+            <numerusform></numerusform>
+            <numerusform></numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Show &amp;Predictions...</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Ctrl+P</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Hide Predictions</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Next Disagreement</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Pre&amp;vious Disagreement</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Open a run first</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The database has no model yet: Learn &gt; Train and Sweep</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>No predictions shown: Learn &gt; Show Predictions</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The model agrees with the labels everywhere</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Step %1, group %2: the model says %3 (%4 %), the label %5</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>tactile::gui::ModelPickerDialog</name>
+    <message>
+        <source>Show Predictions</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>A model per group</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Model:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The timeline shows each group&apos;s predicted class under its labels, pale where the model is unsure, and marks where it disagrees with the labels (N: next disagreement).</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>tactile::gui::RouteView</name>
@@ -575,6 +768,14 @@ Research workbench for tactile-based mobile-robot navigation.</source>
     </message>
     <message>
         <source>Close-up (M: whole scene)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>hole %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>hole %1 wide</source>
         <translation type="unfinished"></translation>
     </message>
 </context>
@@ -653,6 +854,333 @@ imported from %2</source>
     </message>
 </context>
 <context>
+    <name>tactile::gui::SweepCellsModel</name>
+    <message>
+        <source>yes</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>no</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>fitted</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>no model: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Group</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Method</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Covariance</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Order</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Floor</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Features</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Seed</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Iterations</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Converged</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Accuracy %</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Balanced %</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Macro-F1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Held-out loglik</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Status</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Fit ms</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Predict ms</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>tactile::gui::SweepPlot</name>
+    <message>
+        <source>Export PNG...</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Export PDF...</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Export PNG</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>PNG images (*.png)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Cannot write %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Export PDF</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>PDF files (*.pdf)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Variance floor</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Model order</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Correct rate per class (%)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Fit + predict time (s)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Error: 100 - balanced accuracy (%)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>group %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Pareto front (%1)</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>tactile::gui::SweepResultsView</name>
+    <message>
+        <source>No sweep</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>All groups</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Group:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Confusion</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Class rates</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Rate vs floor</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Rate vs order</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Time vs error</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Contact patterns</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Sweep %1: %2 cells, %3 with a model</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>(cancelled: the finished cells)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>No cell has a model yet.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>- each group&apos;s best cell</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>No cells yet.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Select a cell.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Cell %1: %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>This cell has no model: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Confusion (counts)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Confusion (row percent)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Per-class correct rate of this cell (%)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>No contact patterns were kept for this cell.</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>tactile::gui::SweepResultsWindow</name>
+    <message>
+        <source>Sweep</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Export Report...</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Store Model of Cell</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Store Model</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Name (empty: automatic):</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Export Model of Cell...</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Sweep %1: %2 (%3)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Export Report</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>HTML report (*.html);;Markdown report (*.md);;CSV tables (*.csv);;Text (*.txt)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Report written to %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Select a cell first.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>That cell has no model: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Training the cell&apos;s model...</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Export Model</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Model files (*.json)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>cancelled</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Model of Cell</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>No model was stored: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Model &apos;%1&apos; stored.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Written to %1.</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>tactile::gui::TableView</name>
+    <message>
+        <source>Export CSV...</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Export CSV</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>CSV files (*.csv)</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
     <name>tactile::gui::TimelineView</name>
     <message>
         <source>Step</source>
@@ -696,6 +1224,218 @@ imported from %2</source>
     </message>
     <message>
         <source>Magnitude</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 model</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 ≠ label</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>holes</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>tactile::gui::TrainingDialog</name>
+    <message>
+        <source>Train and sweep</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Label set:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Run</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Steps</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Train</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Test</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Runs:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Score on the test runs</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Leave one run out (training only)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Split:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Groups:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Gaussian</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>GMM</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Methods:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Model orders (components per class), comma-separated</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Orders:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Covariance:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Variance floors, comma-separated</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Variance floors:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Features:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Seeds:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>automatic</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Name:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>all cores</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Threads:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Run sweep</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Train model</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Train one model per group with the first value of every list</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Close</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Choose the runs and the grid, then run a sweep or train a model.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Orders</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Variance floors</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Seeds</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message numerus="yes">
+        <source>Sweep of %n cell(s) started.</source>
+        <translation type="unfinished">
+            <numerusform></numerusform>
+            <numerusform></numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Training started.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Cancelling: running fits stop after their current iteration...</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 of %2 done, about %3 left</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 of %2 done</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The sweep failed: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message numerus="yes">
+        <source>Sweep %1 cancelled after %2 s; its %n finished cell(s) are stored.</source>
+        <translation type="unfinished">
+            <numerusform></numerusform>
+            <numerusform></numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>Sweep %1 finished: %n cell(s) in %2 s.</source>
+        <translation type="unfinished">
+            <numerusform></numerusform>
+            <numerusform></numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>%1: balanced accuracy %2 %</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1: skipped (%2)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Model &apos;%1&apos; stored (%2 s). %3</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Training cancelled; nothing was stored.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Training failed: %1</source>
         <translation type="unfinished"></translation>
     </message>
 </context>
