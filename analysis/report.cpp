@@ -124,16 +124,6 @@ Table spreadTable(const SweepResult& sweep, SweptVariable variable) {
 
 }  // namespace
 
-std::optional<TableStyle> parseTableStyle(std::string_view name) {
-  if (name == "text") return TableStyle::Text;
-  if (name == "csv") return TableStyle::Csv;
-  if (name == "md" || name == "markdown") return TableStyle::Markdown;
-  if (name == "html") return TableStyle::Html;
-  return std::nullopt;
-}
-
-namespace {
-
 std::string htmlEscape(const std::string& s) {
   std::string out;
   for (const char c : s) {
@@ -156,6 +146,25 @@ std::string htmlEscape(const std::string& s) {
   }
   return out;
 }
+
+std::vector<std::string> runNamesOf(const json& runs) {
+  std::vector<std::string> out;
+  if (!runs.is_array()) return out;
+  for (const json& r : runs)
+    if (r.is_object() && r.contains("name") && r["name"].is_string())
+      out.push_back(r["name"].get<std::string>());
+  return out;
+}
+
+std::optional<TableStyle> parseTableStyle(std::string_view name) {
+  if (name == "text") return TableStyle::Text;
+  if (name == "csv") return TableStyle::Csv;
+  if (name == "md" || name == "markdown") return TableStyle::Markdown;
+  if (name == "html") return TableStyle::Html;
+  return std::nullopt;
+}
+
+namespace {
 
 std::string markdownEscape(const std::string& s) {
   std::string out;
@@ -547,15 +556,6 @@ std::string joinedNames(const std::vector<T>& items, Name name) {
   for (const T& i : items)
     out.push_back(name(i));
   return joined(out);
-}
-
-std::vector<std::string> runNamesOf(const json& runs) {
-  std::vector<std::string> out;
-  if (!runs.is_array()) return out;
-  for (const json& r : runs)
-    if (r.is_object() && r.contains("name") && r["name"].is_string())
-      out.push_back(r["name"].get<std::string>());
-  return out;
 }
 
 Table configurationTable(const SweepResult& sweep, const json& configuration) {

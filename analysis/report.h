@@ -24,6 +24,11 @@ enum class TableStyle { Text, Csv, Markdown, Html };
 // "text", "csv", "md", "html".
 std::optional<TableStyle> parseTableStyle(std::string_view name);
 
+// Text escaped for HTML and SVG (& < > ").
+std::string htmlEscape(const std::string& text);
+// The names in a stored configuration's run list ([{"name": ...}, ...]; other entries skipped).
+std::vector<std::string> runNamesOf(const nlohmann::json& runs);
+
 // A small table: header and rows of cells, rendered as aligned text (numbers right-aligned), CSV,
 // a Markdown pipe table or an HTML table (cells escaped).
 struct Table {

@@ -48,30 +48,17 @@ std::string tickText(double v) {
   return std::string(buffer, r.ptr);
 }
 
-std::string escape(const std::string& text) {
-  std::string out;
-  for (char c : text) {
-    switch (c) {
-      case '&':
-        out += "&amp;";
-        break;
-      case '<':
-        out += "&lt;";
-        break;
-      case '>':
-        out += "&gt;";
-        break;
-      case '"':
-        out += "&quot;";
-        break;
-      default:
-        out += c;
-    }
-  }
-  return out;
-}
-
 struct Axis {
+  // The y axis of every figure: percent, 0 at the bottom.
+  static Axis percent() {
+    Axis a;
+    a.lo = 0.0;
+    a.hi = 100.0;
+    a.pixelLo = kHeight - kBottom;
+    a.pixelHi = kTop;
+    return a;
+  }
+
   double lo = 0.0;
   double hi = 1.0;
   bool log = false;
@@ -113,8 +100,8 @@ std::string header(const std::string& title) {
          "\" height=\"" + num(kHeight) + "\" viewBox=\"0 0 " + num(kWidth) + " " + num(kHeight) +
          "\" font-family=\"sans-serif\" font-size=\"11\">\n<rect width=\"100%\" height=\"100%\" "
          "fill=\"white\"/>\n<text x=\"" +
-         num(kWidth / 2) + "\" y=\"18\" text-anchor=\"middle\" font-size=\"13\">" + escape(title) +
-         "</text>\n";
+         num(kWidth / 2) + "\" y=\"18\" text-anchor=\"middle\" font-size=\"13\">" +
+         htmlEscape(title) + "</text>\n";
 }
 
 // Frame, ticks, grid and axis titles. xTicks are drawn at the given values.
@@ -142,9 +129,9 @@ std::string frame(const Axis& x, const Axis& y, const std::vector<double>& xTick
          num(kWidth - kRight - kLeft) + "\" height=\"" + num(bottom - top) +
          "\" fill=\"none\" stroke=\"#444\"/>\n";
   out += "<text x=\"" + num((kLeft + kWidth - kRight) / 2) + "\" y=\"" + num(kHeight - 12) +
-         "\" text-anchor=\"middle\">" + escape(xTitle) + "</text>\n";
+         "\" text-anchor=\"middle\">" + htmlEscape(xTitle) + "</text>\n";
   out += "<text transform=\"translate(16 " + num((top + bottom) / 2) +
-         ") rotate(-90)\" text-anchor=\"middle\">" + escape(yTitle) + "</text>\n";
+         ") rotate(-90)\" text-anchor=\"middle\">" + htmlEscape(yTitle) + "</text>\n";
   return out;
 }
 
@@ -154,12 +141,12 @@ std::string legendEntry(std::size_t row, const std::string& colour, const std::s
   return "<line x1=\"" + num(lx) + "\" y1=\"" + num(ly) + "\" x2=\"" + num(lx + 18) + "\" y2=\"" +
          num(ly) + "\" stroke=\"" + colour + "\" stroke-width=\"2\"/>\n<circle cx=\"" +
          num(lx + 9) + "\" cy=\"" + num(ly) + "\" r=\"3\" fill=\"" + colour + "\"/>\n<text x=\"" +
-         num(lx + 24) + "\" y=\"" + num(ly + 4) + "\">" + escape(text) + "</text>\n";
+         num(lx + 24) + "\" y=\"" + num(ly + 4) + "\">" + htmlEscape(text) + "</text>\n";
 }
 
 std::string emptyNote(const std::string& text) {
   return "<text x=\"" + num((kLeft + kWidth - kRight) / 2) + "\" y=\"" + num(kHeight / 2) +
-         "\" text-anchor=\"middle\" fill=\"#777\">" + escape(text) + "</text>\n";
+         "\" text-anchor=\"middle\" fill=\"#777\">" + htmlEscape(text) + "</text>\n";
 }
 
 bool finite(double v) {
@@ -177,11 +164,7 @@ std::string rateChartSvg(const std::vector<RateSeries>& series, SweptVariable va
   std::sort(xs.begin(), xs.end());
   xs.erase(std::unique(xs.begin(), xs.end()), xs.end());
   const Axis x = xAxisOver(xs);
-  Axis y;
-  y.lo = 0.0;
-  y.hi = 100.0;
-  y.pixelLo = kHeight - kBottom;
-  y.pixelHi = kTop;
+  const Axis y = Axis::percent();
   std::string out = header(title);
   out += frame(x, y, xs, {0, 20, 40, 60, 80, 100},
                variable == SweptVariable::Floor ? "Variance floor" : "Model order",
@@ -202,7 +185,7 @@ std::string rateChartSvg(const std::vector<RateSeries>& series, SweptVariable va
       line += (line.empty() ? "" : " ") + px + "," + num(y.map(s.mean[i]));
       bandUpper += (bandUpper.empty() ? "" : " ") + px + "," + num(y.map(s.max[i]));
       bandLower += (bandLower.empty() ? "" : " ") + px + "," + num(y.map(s.min[i]));
-      dots += "<g><title>" + escape(s.label) + ": " + tickText(s.x[i]) + " mean " +
+      dots += "<g><title>" + htmlEscape(s.label) + ": " + tickText(s.x[i]) + " mean " +
               num(s.mean[i], 1) + " %, min " + num(s.min[i], 1) + " %, max " + num(s.max[i], 1) +
               " %</title><circle cx=\"" + px + "\" cy=\"" + num(y.map(s.mean[i])) +
               "\" r=\"3\" fill=\"" + colour + "\"/></g>\n";
@@ -250,11 +233,7 @@ std::string timeErrorChartSvg(const SweepResult& sweep, const std::string& title
     x.lo = 1e-3;
     x.hi = 1.0;
   }
-  Axis y;
-  y.lo = 0.0;
-  y.hi = 100.0;
-  y.pixelLo = kHeight - kBottom;
-  y.pixelHi = kTop;
+  const Axis y = Axis::percent();
   std::string out = header(title);
   out += frame(x, y, ticks, {0, 20, 40, 60, 80, 100}, "Fit + predict time (s)",
                "Error: 100 - balanced accuracy (%)");

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "analysis/model_file.h"
+#include "analysis/report.h"
 #include "workspace/workspace.h"
 
 namespace tactile::workspace {
@@ -63,15 +64,6 @@ Result<std::string> Workspace::importModel(const std::filesystem::path& file, st
 
 namespace {
 
-std::vector<std::string> runNames(const json& runs) {
-  std::vector<std::string> out;
-  if (!runs.is_array()) return out;
-  for (const json& r : runs)
-    if (r.is_object() && r.contains("name") && r["name"].is_string())
-      out.push_back(r["name"].get<std::string>());
-  return out;
-}
-
 std::string floorText(double floor) {
   char buffer[32];
   std::snprintf(buffer, sizeof buffer, "%g", floor);
@@ -108,8 +100,8 @@ Result<TrainOutcome> Workspace::trainSweepCell(std::int64_t sweepId, std::size_t
     return failure("sweep " + std::to_string(sweepId) +
                    " was not run on a stored label set; train its settings with `tactile train`");
   }
-  request.trainRuns = runNames(configuration.value("train_runs", json::array()));
-  request.testRuns = runNames(configuration.value("test_runs", json::array()));
+  request.trainRuns = analysis::runNamesOf(configuration.value("train_runs", json::array()));
+  request.testRuns = analysis::runNamesOf(configuration.value("test_runs", json::array()));
   request.groups = {cell.group};
   request.settings.features = cell.features;
   request.settings.classifier = analysis::cellClassifierOptions(sweep->grid, cell);

@@ -57,6 +57,26 @@ struct Predicted {
   }
 };
 
+// Labels of the fixture's run in a set (an existing one, or a new empty one), and the model's
+// predictions computed for that run.
+struct Reviewed {
+  Predicted p;
+  gui::LabelModel labels;
+  std::unique_ptr<PredictionModel> predictions;
+
+  explicit Reviewed(const std::string& set, bool create) {
+    labels.setWorkspace(p.fx.workspace.get());
+    if (!(create ? labels.createSet(set) : labels.openSet(set)))
+      throw std::runtime_error("no label set " + set);
+    auto info = p.fx.workspace->database().findRun(p.fx.runName);
+    labels.setRun(info->id, info->name, info->stepCount);
+    predictions = std::make_unique<PredictionModel>(&labels);
+    predictions->compute(QString::fromStdString(p.fx.dbPath), QString::fromStdString(p.fx.runName),
+                         PredictionModel::sameForAll(QString::fromStdString(p.model)));
+    predictions->waitForFinished();
+  }
+};
+
 }  // namespace
 
 class PredictionTest : public QObject {
@@ -127,16 +147,9 @@ void PredictionTest::predictionsEqualTheCoreClassification() {
 }
 
 void PredictionTest::disagreementsAreWherePredictionAndLabelDiffer() {
-  Predicted p;
-  gui::LabelModel labels;
-  labels.setWorkspace(p.fx.workspace.get());
-  QVERIFY(labels.openSet("truth").ok());
-  auto info = p.fx.workspace->database().findRun(p.fx.runName);
-  labels.setRun(info->id, info->name, info->stepCount);
-  PredictionModel predictions(&labels);
-  predictions.compute(QString::fromStdString(p.fx.dbPath), QString::fromStdString(p.fx.runName),
-                      PredictionModel::sameForAll(QString::fromStdString(p.model)));
-  predictions.waitForFinished();
+  Reviewed r("truth", false);
+  gui::LabelModel& labels = r.labels;
+  PredictionModel& predictions = *r.predictions;
   QVERIFY(predictions.hasPredictions());
   auto check = [&] {
     std::size_t total = 0;
@@ -182,16 +195,9 @@ void PredictionTest::disagreementsAreWherePredictionAndLabelDiffer() {
 }
 
 void PredictionTest::nextDisagreementWrapsAround() {
-  Predicted p;
-  gui::LabelModel labels;
-  labels.setWorkspace(p.fx.workspace.get());
-  QVERIFY(labels.createSet("mine").ok());
-  auto info = p.fx.workspace->database().findRun(p.fx.runName);
-  labels.setRun(info->id, info->name, info->stepCount);
-  PredictionModel predictions(&labels);
-  predictions.compute(QString::fromStdString(p.fx.dbPath), QString::fromStdString(p.fx.runName),
-                      PredictionModel::sameForAll(QString::fromStdString(p.model)));
-  predictions.waitForFinished();
+  Reviewed r("mine", true);
+  gui::LabelModel& labels = r.labels;
+  PredictionModel& predictions = *r.predictions;
   QVERIFY(!predictions.nextDisagreement(0, std::nullopt));  // an empty set: nothing to disagree
   // Two labelled steps that the model cannot have predicted: DeadPath on a no-contact rule step
   // is still a disagreement (the rule says NoContact).

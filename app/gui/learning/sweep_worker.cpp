@@ -109,49 +109,46 @@ bool SweepWorker::startSweep(const QString& databasePath, const workspace::Sweep
   });
 }
 
+LearningJobResult SweepWorker::trainingJob(LearningJobResult::Kind kind,
+                                           const QString& databasePath,
+                                           const TrainFunction& train) {
+  LearningJobResult out;
+  out.kind = kind;
+  auto ws = openForWork(databasePath);
+  if (!ws) {
+    out.error = QString::fromStdString(ws.errorText());
+    return out;
+  }
+  auto outcome = train(*ws.value(), progressCallback());
+  if (!outcome) {
+    out.cancelled = cancelled_.load();
+    if (!out.cancelled) out.error = QString::fromStdString(outcome.errorText());
+    return out;
+  }
+  out.ok = true;
+  out.modelName = QString::fromStdString(outcome->modelName);
+  out.groups = outcome->groups;
+  return out;
+}
+
 bool SweepWorker::startTrain(const QString& databasePath, const workspace::TrainRequest& request) {
   return launch([this, databasePath, request] {
-    LearningJobResult out;
-    out.kind = LearningJobResult::Kind::Train;
-    auto ws = openForWork(databasePath);
-    if (!ws) {
-      out.error = QString::fromStdString(ws.errorText());
-      return out;
-    }
-    auto outcome = ws.value()->train(request, progressCallback());
-    if (!outcome) {
-      out.cancelled = cancelled_.load();
-      if (!out.cancelled) out.error = QString::fromStdString(outcome.errorText());
-      return out;
-    }
-    out.ok = true;
-    out.modelName = QString::fromStdString(outcome->modelName);
-    out.groups = outcome->groups;
-    return out;
+    return trainingJob(LearningJobResult::Kind::Train, databasePath,
+                       [&request](workspace::Workspace& ws, const ProgressFn& progress) {
+                         return ws.train(request, progress);
+                       });
   });
 }
 
 bool SweepWorker::startCellModel(const QString& databasePath, std::int64_t sweepId,
                                  std::size_t cellIndex, const QString& modelName) {
   return launch([this, databasePath, sweepId, cellIndex, modelName] {
-    LearningJobResult out;
-    out.kind = LearningJobResult::Kind::CellModel;
+    LearningJobResult out = trainingJob(
+        LearningJobResult::Kind::CellModel, databasePath,
+        [&](workspace::Workspace& ws, const ProgressFn& progress) {
+          return ws.trainSweepCell(sweepId, cellIndex, modelName.toStdString(), progress);
+        });
     out.sweepId = sweepId;
-    auto ws = openForWork(databasePath);
-    if (!ws) {
-      out.error = QString::fromStdString(ws.errorText());
-      return out;
-    }
-    auto outcome =
-        ws.value()->trainSweepCell(sweepId, cellIndex, modelName.toStdString(), progressCallback());
-    if (!outcome) {
-      out.cancelled = cancelled_.load();
-      if (!out.cancelled) out.error = QString::fromStdString(outcome.errorText());
-      return out;
-    }
-    out.ok = true;
-    out.modelName = QString::fromStdString(outcome->modelName);
-    out.groups = outcome->groups;
     return out;
   });
 }

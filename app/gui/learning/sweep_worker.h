@@ -66,6 +66,12 @@ class SweepWorker : public QObject {
 
  private:
   bool launch(std::function<LearningJobResult()> job);
+  // A training of any kind on the worker thread: opens the database, runs `train`, fills the
+  // result.
+  using TrainFunction =
+      std::function<Result<workspace::TrainOutcome>(workspace::Workspace&, const ProgressFn&)>;
+  LearningJobResult trainingJob(LearningJobResult::Kind kind, const QString& databasePath,
+                                const TrainFunction& train);
   ProgressFn progressCallback();
   void report(qint64 done, qint64 total);
 
