@@ -59,6 +59,16 @@ GroupTrainResult trainGroupModel(const GroupDataSet& data, const TrainSettings& 
   return result;
 }
 
+TrainSettings defaultTrainSettings() {
+  TrainSettings s;
+  s.features = FeatureKind::Normal;
+  s.classifier.method = ClassifierMethod::Gmm;
+  s.classifier.gmm.form = CovarianceForm::NodalFull;
+  s.classifier.gmm.components = 8;
+  s.classifier.gmm.varianceFloor = 0.03;
+  return s;
+}
+
 std::vector<std::string> rowPatterns(const GroupDataSet& data,
                                      const std::vector<LabelledRun>& runs) {
   std::vector<std::string> out(data.size());

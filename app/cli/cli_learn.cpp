@@ -226,9 +226,13 @@ struct TrainArgs {
   std::vector<std::string> runs;
   std::vector<std::string> testRuns;
   std::string labels;
+  // Defaults from the core's defaultTrainSettings(), the workbench's too.
   ClassifierArgs classifier = [] {
+    const analysis::TrainSettings d = analysis::defaultTrainSettings();
     ClassifierArgs c;
-    c.floor = 0.03;
+    c.order = d.classifier.gmm.components;
+    c.cov = std::string(analysis::covarianceFormName(d.classifier.gmm.form));
+    c.floor = d.classifier.gmm.varianceFloor;
     return c;
   }();
   std::string features = "normal";
