@@ -272,6 +272,23 @@ void PredictionTest::timelineAndRouteShowPredictions() {
   const QColor at300 =
       image.pixelColor(static_cast<int>(std::lround(timeline.stepToX(300))), strip.center().y());
   QVERIFY2(at300.red() > 150 && at300.green() < 60, qPrintable(at300.name()));
+  // Tooltips: a model row says the class and its posterior, the holes row each hole's width.
+  const QRect model = timeline.predictionStripRect(SensorGroup::Back);
+  const QString modelTip = timeline.predictionTipAt(
+      QPoint(static_cast<int>(std::lround(timeline.stepToX(300))), model.center().y()));
+  QVERIFY2(modelTip.contains(QStringLiteral("step 300")) && modelTip.contains(QStringLiteral("%")),
+           qPrintable(modelTip));
+  QVERIFY(modelTip.contains(QStringLiteral("Dead path")));  // the label it disagrees with
+  if (!predictions.holes().empty()) {
+    const gui::HoleMark& h = predictions.holes().front();
+    timeline.setVisibleRange({std::max<std::int64_t>(0, h.step - 20), h.step + 20});
+    settle();
+    const QString holeTip =
+        timeline.predictionTipAt(QPoint(static_cast<int>(std::lround(timeline.stepToX(h.step))),
+                                        timeline.holesStripRect().center().y()));
+    QVERIFY2(holeTip.contains(QString::number(h.widthUnits, 'f', 1)), qPrintable(holeTip));
+  }
+  QVERIFY(timeline.predictionTipAt(timeline.heatmapRect().center()).isEmpty());
   // Route: the current step's holes are drawn across the robot.
   for (const gui::HoleMark& h : predictions.holes()) {
     QCOMPARE(route.holeMarksAt(h.step), static_cast<int>(predictions.holesAt(h.step).size()));

@@ -16,6 +16,7 @@
 #include <utility>
 #include <vector>
 
+#include "analysis/hole_detection.h"
 #include "app/gui/common/plot_style.h"
 #include "app/gui/labels/label_model.h"
 #include "app/gui/learning/prediction_model.h"
@@ -219,6 +220,9 @@ struct TimelineView::Impl {
 
   void build();
   void configureLabelRows();
+  // Over a model row: the predicted class and its posterior; over the holes row: the holes with
+  // their widths. Empty elsewhere.
+  QString predictionTip(QPointF pos) const;
   // A label-rect row's rectangle in the widget's coordinates.
   QRect rowRect(int row) const {
     const QCPAxis* y = labelRect->axis(QCPAxis::atLeft);
@@ -407,6 +411,45 @@ void TimelineView::Impl::configureLabelRows() {
   }
   // Heights roughly in proportion to rows; the label rect also carries the step axis.
   plot->plotLayout()->setRowStretchFactors({44.0, 2.2, 8.0, rows * 1.6 + 7.0});
+}
+
+QString TimelineView::Impl::predictionTip(QPointF pos) const {
+  if (!predictionRows || !labelRect->rect().contains(pos.toPoint())) return {};
+  const auto row = std::llround(labelRect->axis(QCPAxis::atLeft)->pixelToCoord(pos.y()));
+  const std::int64_t step = stepAtPixel(pos.x());
+  if (row == holesRow()) {
+    QStringList lines;
+    for (const HoleMark& h : predictions->holesAt(step)) {
+      lines << TimelineView::tr("step %1, %2 side: hole %3 units wide between domes %4 and %5")
+                   .arg(step)
+                   .arg(
+                       QString::fromLatin1(analysis::kSides[static_cast<std::size_t>(h.side)].name))
+                   .arg(h.widthUnits, 0, 'f', 1)
+                   .arg(h.sensorBefore)
+                   .arg(h.sensorAfter);
+    }
+    return lines.join(QLatin1Char('\n'));
+  }
+  for (const GroupInfo& g : kSensorGroups) {
+    if (row != predictedRow(g.group) && row != disagreeRow(g.group)) continue;
+    const GroupPrediction& p = predictions->group(g.group);
+    const auto cls = p.classAt(step);
+    if (!cls) return {};
+    QString tip =
+        TimelineView::tr("step %1, %2: the model says %3 (%4 %)")
+            .arg(step)
+            .arg(QString::fromUtf8(g.shortName.data(), static_cast<qsizetype>(g.shortName.size())))
+            .arg(className(*cls))
+            .arg(100.0 * p.confidence[static_cast<std::size_t>(step)], 0, 'f', 0);
+    if (const auto label = labels != nullptr ? labels->classAt(g.group, step) : std::nullopt)
+      tip += TimelineView::tr(", the label %1").arg(className(*label));
+    return tip;
+  }
+  return {};
+}
+
+QString TimelineView::predictionTipAt(QPoint widgetPos) const {
+  return d_->predictionTip(d_->plot->mapFrom(this, widgetPos));
 }
 
 void TimelineView::Impl::applyChannel() {
@@ -903,6 +946,11 @@ bool TimelineView::eventFilter(QObject* watched, QEvent* event) {
       const double dx = pos.x() - d.pressPos.x();
       if (d.drag == Impl::Drag::None) {
         d.plot->setCursor(d.grabEdge(pos) ? Qt::SizeHorCursor : Qt::ArrowCursor);
+        const QString tip = d.predictionTip(pos);
+        if (tip.isEmpty())
+          QToolTip::hideText();
+        else
+          QToolTip::showText(d.plot->mapToGlobal(pos.toPoint()), tip, d.plot);
       } else if (d.drag == Impl::Drag::Pending && std::abs(dx) > kGrabPixels) {
         d.drag = Impl::Drag::Select;
       }

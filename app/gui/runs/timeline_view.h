@@ -61,6 +61,9 @@ class TimelineView : public QWidget {
   QRect disagreementStripRect(SensorGroup group) const;
   QRect holesStripRect() const;
   bool showsPredictions() const;
+  // The tooltip shown at a point (widget coordinates) of a model row (class and posterior) or of
+  // the holes row (each hole's width); empty elsewhere.
+  QString predictionTipAt(QPoint widgetPos) const;
 
   // Draws a model's predictions under the label strips (null: none); follows its changes.
   void setPredictions(const PredictionModel* predictions);
