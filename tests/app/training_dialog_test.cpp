@@ -2,6 +2,8 @@
 // time estimate, streams its cells into the sortable table, can be cancelled keeping its finished
 // cells, and stores exactly the numbers `tactile sweep` stores for the same request.
 #include <QComboBox>
+#include <QFile>
+#include <QFileInfo>
 #include <QLabel>
 #include <QLineEdit>
 #include <QProcess>
@@ -9,11 +11,14 @@
 #include <QPushButton>
 #include <QSignalSpy>
 #include <QTableView>
+#include <QTemporaryDir>
 #include <QtTest>
 
 #include <memory>
 
 #include "app/gui/learning/sweep_cells_model.h"
+#include "app/gui/learning/sweep_results_view.h"
+#include "app/gui/learning/sweep_results_window.h"
 #include "app/gui/learning/sweep_worker.h"
 #include "app/gui/learning/training_dialog.h"
 #include "tests/app/gui_fixture.h"
@@ -78,6 +83,7 @@ class TrainingDialogTest : public QObject {
   void cancelKeepsFinishedCells();
   void badGridIsReportedAndNothingStarts();
   void trainStoresAModel();
+  void resultsWindowExportsReportAndCellModel();
 };
 
 void TrainingDialogTest::defaultSplitHoldsOutEveryFourthRun() {
@@ -287,6 +293,59 @@ void TrainingDialogTest::trainStoresAModel() {
     for (const analysis::GaussianMixture& mixture : m.classifier.models())
       QCOMPARE(mixture.components(), 1);
   }
+}
+
+void TrainingDialogTest::resultsWindowExportsReportAndCellModel() {
+  LearningFixture f;
+  TrainingDialog dialog(*f.workspace, QString::fromStdString(f.dbPath));
+  smallGrid(dialog);
+  QSignalSpy stored(&dialog, &TrainingDialog::sweepStored);
+  QSignalSpy finished(&dialog, &TrainingDialog::jobFinished);
+  dialog.startSweep();
+  QVERIFY(finished.wait(120000));
+  const qint64 id = stored.first().at(0).toLongLong();
+
+  gui::SweepResultsWindow window(*f.workspace, QString::fromStdString(f.dbPath));
+  QVERIFY(window.showSweep(id).ok());
+  QVERIFY(window.windowTitle().contains(QStringLiteral("finished")));
+  QCOMPARE(window.sweep().cells.size(), std::size_t{8});
+  QVERIFY(!window.showSweep(id + 100).ok());  // an unknown sweep is an error, the shown one stays
+  QCOMPARE(window.sweepId(), id);
+
+  // The report is exactly what `tactile report --out` writes (the same core function).
+  QTemporaryDir dir;
+  const QString html = dir.filePath(QStringLiteral("r.html"));
+  QVERIFY(window.exportReport(html).ok());
+  const QString md = dir.filePath(QStringLiteral("r.md"));
+  QVERIFY(window.exportReport(md).ok());
+  QVERIFY(QFileInfo::exists(dir.filePath(QStringLiteral("r_files/time_error.svg"))));
+  QProcess cli;
+  const QString cliHtml = dir.filePath(QStringLiteral("cli.html"));
+  cli.start(QStringLiteral(TACTILE_CLI),
+            {QStringLiteral("report"), QStringLiteral("--db"), QString::fromStdString(f.dbPath),
+             QStringLiteral("--sweep"), QString::number(id), QStringLiteral("--format"),
+             QStringLiteral("html"), QStringLiteral("--out"), cliHtml});
+  QVERIFY(cli.waitForFinished(60000));
+  QCOMPARE(cli.exitCode(), 0);
+  QFile a(html), b(cliHtml);
+  QVERIFY(a.open(QIODevice::ReadOnly) && b.open(QIODevice::ReadOnly));
+  QCOMPARE(a.readAll(), b.readAll());
+
+  // The selected cell's model, stored and written to a file; it scores as the cell did.
+  const int cell = window.view()->selectedCell();
+  QVERIFY(cell >= 0);
+  QSignalSpy modelStored(&window, &gui::SweepResultsWindow::modelStored);
+  const QString file = dir.filePath(QStringLiteral("cell.json"));
+  QVERIFY(window.trainSelectedCell(QStringLiteral("best cell"), file));
+  QVERIFY(modelStored.wait(60000));
+  QCOMPARE(modelStored.first().at(0).toString(), QStringLiteral("best cell"));
+  QVERIFY(QFileInfo::exists(file));
+  auto model = f.workspace->database().modelInfo("best cell");
+  QVERIFY(model.ok());
+  const nlohmann::json metrics = nlohmann::json::parse(model->metricsJson);
+  const analysis::SweepCellResult& chosen = window.sweep().cells[static_cast<std::size_t>(cell)];
+  const std::string group(groupInfo(chosen.cell.group).shortName);
+  QVERIFY2(metrics.contains(group), model->metricsJson.c_str());
 }
 
 QTEST_MAIN(TrainingDialogTest)
