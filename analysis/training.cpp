@@ -63,8 +63,8 @@ TrainSettings defaultTrainSettings() {
   TrainSettings s;
   s.features = FeatureKind::Normal;
   s.classifier.method = ClassifierMethod::Gmm;
-  s.classifier.gmm.form = CovarianceForm::NodalFull;
-  s.classifier.gmm.components = 8;
+  s.classifier.gmm.form = CovarianceForm::NodalDiag;
+  s.classifier.gmm.components = 16;
   s.classifier.gmm.varianceFloor = 0.03;
   return s;
 }
