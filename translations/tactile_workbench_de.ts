@@ -1238,6 +1238,18 @@ imported from %2</source>
         <source>holes</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <source>step %1, %2 side: hole %3 units wide between domes %4 and %5</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>step %1, %2: the model says %3 (%4 %)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>, the label %1</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>tactile::gui::TrainingDialog</name>
