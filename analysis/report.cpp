@@ -402,36 +402,36 @@ std::vector<RateSeries> rateSeries(const SweepResult& sweep, SweptVariable varia
 }
 
 std::vector<std::size_t> paretoFront(const SweepResult& sweep, std::optional<SensorGroup> group) {
+  // Error is 1 - balanced accuracy: compared through the balanced accuracy itself (higher is less
+  // error), so that no rounding of a subtraction can make two different cells look equal.
   struct Point {
     std::size_t index;
     double seconds;
-    double error;
+    double balanced;
   };
   std::vector<Point> points;
   for (std::size_t i = 0; i < sweep.cells.size(); ++i) {
     const SweepCellResult& r = sweep.cells[i];
     // A cell scored on no test rows has no error to weigh.
     if (!r.ok || r.confusion.total() == 0 || (group && r.cell.group != *group)) continue;
-    if (!std::isfinite(r.fitSeconds + r.predictSeconds) ||
-        !std::isfinite(r.metrics.balancedAccuracy))
-      continue;
-    points.push_back(
-        {i, r.fitSeconds + r.predictSeconds, 100.0 - 100.0 * r.metrics.balancedAccuracy});
+    const double seconds = r.fitSeconds + r.predictSeconds;
+    if (!std::isfinite(seconds) || !std::isfinite(r.metrics.balancedAccuracy)) continue;
+    points.push_back({i, seconds, r.metrics.balancedAccuracy});
   }
   std::stable_sort(points.begin(), points.end(), [](const Point& a, const Point& b) {
-    return a.seconds != b.seconds ? a.seconds < b.seconds : a.error < b.error;
+    return a.seconds != b.seconds ? a.seconds < b.seconds : a.balanced > b.balanced;
   });
   // Walking by time, a point is on the front when its error is below every faster point's, or
   // equals that of the point that set the best error with the same time.
   std::vector<std::size_t> front;
-  double bestError = std::numeric_limits<double>::infinity();
+  double bestBalanced = -std::numeric_limits<double>::infinity();
   double bestSeconds = -1.0;
   for (const Point& p : points) {
-    if (p.error < bestError) {
-      bestError = p.error;
+    if (p.balanced > bestBalanced) {
+      bestBalanced = p.balanced;
       bestSeconds = p.seconds;
       front.push_back(p.index);
-    } else if (p.error == bestError && p.seconds == bestSeconds) {
+    } else if (p.balanced == bestBalanced && p.seconds == bestSeconds) {
       front.push_back(p.index);
     }
   }
@@ -445,26 +445,34 @@ Table rateAgainstOrderTable(const SweepResult& sweep) {
   return spreadTable(sweep, SweptVariable::Order);
 }
 
+bool betterCell(const SweepCellResult& a, const SweepCellResult& b) {
+  if (a.metrics.balancedAccuracy != b.metrics.balancedAccuracy)
+    return a.metrics.balancedAccuracy > b.metrics.balancedAccuracy;
+  if (a.cell.order != b.cell.order) return a.cell.order < b.cell.order;
+  return a.fitSeconds < b.fitSeconds;
+}
+
+std::vector<std::size_t> bestCells(const SweepResult& sweep) {
+  std::map<int, std::size_t> best;
+  for (std::size_t i = 0; i < sweep.cells.size(); ++i) {
+    const SweepCellResult& r = sweep.cells[i];
+    if (!r.ok) continue;
+    const auto [it, inserted] = best.try_emplace(groupIndex(r.cell.group), i);
+    if (!inserted && betterCell(r, sweep.cells[it->second])) it->second = i;
+  }
+  std::vector<std::size_t> out;
+  for (const auto& [g, i] : best)
+    out.push_back(i);
+  return out;
+}
+
 Table bestCellsTable(const SweepResult& sweep) {
   Table t;
   t.title = "Best cell per group (balanced accuracy on held-out rows)";
   t.header = {"group",      "features",   "method",   "covariance",  "order", "floor",  "seed",
               "balanced_%", "accuracy_%", "macro_f1", "mean_loglik", "fit_s", "dropped"};
-  std::map<int, const SweepCellResult*> best;
-  for (const SweepCellResult& r : sweep.cells) {
-    if (!r.ok) continue;
-    const int g = groupIndex(r.cell.group);
-    const SweepCellResult*& b = best[g];
-    auto better = [](const SweepCellResult& a, const SweepCellResult& c) {
-      if (a.metrics.balancedAccuracy != c.metrics.balancedAccuracy) {
-        return a.metrics.balancedAccuracy > c.metrics.balancedAccuracy;
-      }
-      if (a.cell.order != c.cell.order) return a.cell.order < c.cell.order;
-      return a.fitSeconds < c.fitSeconds;
-    };
-    if (b == nullptr || better(r, *b)) b = &r;
-  }
-  for (const auto& [g, r] : best) {
+  for (const std::size_t i : bestCells(sweep)) {
+    const SweepCellResult* r = &sweep.cells[i];
     std::vector<std::string> row = cellKey(r->cell);
     row.push_back(std::to_string(r->cell.order));
     row.push_back(floorText(r->cell.varianceFloor));
@@ -573,6 +581,10 @@ Table configurationTable(const SweepResult& sweep, const json& configuration) {
       add("training runs", joined(runNamesOf(configuration["train_runs"])));
     if (configuration.contains("test_runs"))
       add("test runs", joined(runNamesOf(configuration["test_runs"])));
+    // A sweep over run files without test runs scores the last share of each training run.
+    if (configuration.contains("holdout") && configuration["holdout"].is_number() &&
+        configuration["holdout"].get<double>() > 0.0)
+      add("held-out share of each training run", floorText(configuration["holdout"].get<double>()));
     if (configuration.contains("state") && configuration["state"].is_string())
       add("state", configuration["state"].get<std::string>());
     if (configuration.contains("program_version") && configuration["program_version"].is_string())
@@ -612,6 +624,26 @@ std::string cellName(const SweepCell& c) {
          (c.features != FeatureKind::Normal ? ", " + std::string(featureKindName(c.features))
                                             : std::string()) +
          ", seed " + std::to_string(c.seed);
+}
+
+// A relative path as a Markdown link target: characters that end or break a link (space,
+// parentheses, angle brackets, '%', '#', '?', control bytes) percent-encoded; other bytes (UTF-8
+// names included) kept.
+std::string linkTarget(const std::string& path) {
+  static constexpr char kHex[] = "0123456789ABCDEF";
+  std::string out;
+  for (const char c : path) {
+    const auto u = static_cast<unsigned char>(c);
+    if (u <= 0x20 || u == 0x7f ||
+        std::string_view("()<>%#?[]\\\"").find(c) != std::string_view::npos) {
+      out += '%';
+      out += kHex[u >> 4];
+      out += kHex[u & 15];
+    } else {
+      out += c;
+    }
+  }
+  return out;
 }
 
 void heading(std::string& out, TableStyle style, const std::string& text) {
@@ -672,7 +704,7 @@ std::string sweepReport(const SweepResult& sweep, TableStyle style,
         out += "<figure>" + f.svg + "<figcaption>" + htmlEscape(f.caption) +
                "</figcaption></figure>\n";
       } else {
-        out += "![" + f.caption + "](" + options.figureFolder + "/" + f.file + ")\n\n";
+        out += "![" + f.caption + "](" + linkTarget(options.figureFolder + "/" + f.file) + ")\n\n";
       }
     }
   }
@@ -680,15 +712,12 @@ std::string sweepReport(const SweepResult& sweep, TableStyle style,
   out += rateAgainstOrderTable(sweep).render(style) + sep;
 
   // Each group's best cell in detail: confusion in counts and percent, class rates, patterns.
-  std::map<int, const SweepCellResult*> best;
-  for (const SweepCellResult& r : sweep.cells) {
-    if (!r.ok) continue;
-    const SweepCellResult*& b = best[groupIndex(r.cell.group)];
-    if (b == nullptr || r.metrics.balancedAccuracy > b->metrics.balancedAccuracy) b = &r;
-  }
+  std::vector<const SweepCellResult*> best;
+  for (const std::size_t i : bestCells(sweep))
+    best.push_back(&sweep.cells[i]);
   heading(out, style, "Best cell of each group");
   std::vector<std::pair<std::string, Metrics>> rates;
-  for (const auto& [g, r] : best) {
+  for (const SweepCellResult* r : best) {
     const std::string name = cellName(r->cell);
     out += confusionTable(r->confusion, false, name + ": confusion (counts)").render(style) + sep;
     out +=
@@ -701,7 +730,7 @@ std::string sweepReport(const SweepResult& sweep, TableStyle style,
                .render(style) +
            sep;
     std::vector<std::pair<SensorGroup, std::vector<BinaryConfusion>>> oneVsRest;
-    for (const auto& [g, r] : best)
+    for (const SweepCellResult* r : best)
       oneVsRest.emplace_back(r->cell.group, binaryConfusions(r->confusion, r->classes));
     out += oneVsRestRateTable(oneVsRest).render(style) + sep;
   }

@@ -71,10 +71,10 @@ struct RateSeries {
 std::vector<RateSeries> rateSeries(const SweepResult& sweep, SweptVariable variable);
 
 // Run time against error: the successful cells scored on test rows (of one group, or all) that
-// no other one beats,
-// that is, none has both fit + predict seconds and error (100 - balanced accuracy, percent) at
-// most as large and one of them smaller. Indices into sweep.cells, by ascending time (cells equal
-// in both are all kept).
+// no other one beats, that is, none has both fit + predict seconds and error (1 - balanced
+// accuracy) at most as large and one of them smaller. Indices into sweep.cells, by ascending time
+// (cells equal in both are all kept, in cell order). Cells with a non-finite time or balanced
+// accuracy are left out.
 std::vector<std::size_t> paretoFront(const SweepResult& sweep,
                                      std::optional<SensorGroup> group = std::nullopt);
 
@@ -85,7 +85,14 @@ std::vector<std::size_t> paretoFront(const SweepResult& sweep,
 Table rateAgainstFloorTable(const SweepResult& sweep);
 Table rateAgainstOrderTable(const SweepResult& sweep);
 
-// The best cell per group by balanced accuracy (ties: fewer components, then faster fit).
+// The better of two successful cells: higher balanced accuracy, then fewer components (order),
+// then a faster fit. The report, the CLI and the workbench pick best cells with this one rule.
+bool betterCell(const SweepCellResult& a, const SweepCellResult& b);
+// Index into sweep.cells of each group's best successful cell (betterCell; the first of equals),
+// in group order; groups without one are left out.
+std::vector<std::size_t> bestCells(const SweepResult& sweep);
+
+// The best cell per group (bestCells): settings and metrics.
 Table bestCellsTable(const SweepResult& sweep);
 
 // Every cell: settings, fit / predict time, iterations, converged, metrics, held-out loglik.

@@ -73,8 +73,8 @@ struct Axis {
   }
 };
 
-// An x axis over the given values: logarithmic when all are positive and span more than a factor
-// of 2, padded by a little on both sides.
+// An x axis over the given values: logarithmic when all are positive (floors and orders are
+// swept in geometric steps), linear when one is 0 or below; padded by a little on both sides.
 Axis xAxisOver(const std::vector<double>& values) {
   Axis a;
   a.pixelLo = kLeft;
@@ -83,7 +83,7 @@ Axis xAxisOver(const std::vector<double>& values) {
   const auto [mn, mx] = std::minmax_element(values.begin(), values.end());
   a.lo = *mn;
   a.hi = *mx;
-  a.log = a.lo > 0.0 && a.hi / a.lo > 2.0;
+  a.log = a.lo > 0.0;
   if (a.log) {
     a.lo /= 1.3;
     a.hi *= 1.3;
@@ -135,11 +135,17 @@ std::string frame(const Axis& x, const Axis& y, const std::vector<double>& xTick
   return out;
 }
 
-std::string legendEntry(std::size_t row, const std::string& colour, const std::string& text) {
+// The mean line of the n-th series: colours cycle; the second cycle is dashed, and so on.
+std::string seriesDash(std::size_t n) {
+  return (n / kColours.size()) % 2 == 1 ? " stroke-dasharray=\"7 3\"" : "";
+}
+
+std::string legendEntry(std::size_t row, const std::string& colour, const std::string& text,
+                        const std::string& dash = "") {
   const double lx = kWidth - kRight + 14;
   const double ly = kTop + 8 + 18.0 * static_cast<double>(row);
   return "<line x1=\"" + num(lx) + "\" y1=\"" + num(ly) + "\" x2=\"" + num(lx + 18) + "\" y2=\"" +
-         num(ly) + "\" stroke=\"" + colour + "\" stroke-width=\"2\"/>\n<circle cx=\"" +
+         num(ly) + "\" stroke=\"" + colour + "\" stroke-width=\"2\"" + dash + "/>\n<circle cx=\"" +
          num(lx + 9) + "\" cy=\"" + num(ly) + "\" r=\"3\" fill=\"" + colour + "\"/>\n<text x=\"" +
          num(lx + 24) + "\" y=\"" + num(ly + 4) + "\">" + htmlEscape(text) + "</text>\n";
 }
@@ -176,8 +182,10 @@ std::string rateChartSvg(const std::vector<RateSeries>& series, SweptVariable va
     std::string line;
     std::string bandUpper;
     std::string bandLower;
+    std::vector<std::string> lowerPoints;  // the band's lower edge, walked back
     std::string dots;
-    for (std::size_t i = 0; i < s.x.size(); ++i) {
+    const std::size_t n = std::min({s.x.size(), s.mean.size(), s.min.size(), s.max.size()});
+    for (std::size_t i = 0; i < n; ++i) {
       if (!finite(s.x[i]) || !finite(s.mean[i]) || !finite(s.min[i]) || !finite(s.max[i]) ||
           (x.log && s.x[i] <= 0.0))
         continue;
@@ -185,20 +193,26 @@ std::string rateChartSvg(const std::vector<RateSeries>& series, SweptVariable va
       line += (line.empty() ? "" : " ") + px + "," + num(y.map(s.mean[i]));
       bandUpper += (bandUpper.empty() ? "" : " ") + px + "," + num(y.map(s.max[i]));
       bandLower += (bandLower.empty() ? "" : " ") + px + "," + num(y.map(s.min[i]));
+      lowerPoints.push_back(px + "," + num(y.map(s.min[i])));
       dots += "<g><title>" + htmlEscape(s.label) + ": " + tickText(s.x[i]) + " mean " +
               num(s.mean[i], 1) + " %, min " + num(s.min[i], 1) + " %, max " + num(s.max[i], 1) +
               " %</title><circle cx=\"" + px + "\" cy=\"" + num(y.map(s.mean[i])) +
               "\" r=\"3\" fill=\"" + colour + "\"/></g>\n";
     }
     if (line.empty()) continue;
-    // min and max over the classes as thin dashed lines around the mean.
+    // min..max over the classes as a pale band edged by thin dashed lines around the mean.
+    std::string band = bandUpper;
+    for (auto it = lowerPoints.rbegin(); it != lowerPoints.rend(); ++it)
+      band += " " + *it;
+    out += "<polygon points=\"" + band + "\" fill=\"" + colour +
+           "\" fill-opacity=\"0.10\" stroke=\"none\"/>\n";
     for (const std::string* bound : {&bandUpper, &bandLower}) {
       out += "<polyline points=\"" + *bound + "\" fill=\"none\" stroke=\"" + colour +
              "\" stroke-width=\"0.8\" stroke-dasharray=\"3 3\"/>\n";
     }
     out += "<polyline points=\"" + line + "\" fill=\"none\" stroke=\"" + colour +
-           "\" stroke-width=\"2\"/>\n" + dots;
-    if (drawn < kLegendRows) out += legendEntry(drawn, colour, s.label);
+           "\" stroke-width=\"2\"" + seriesDash(drawn) + "/>\n" + dots;
+    if (drawn < kLegendRows) out += legendEntry(drawn, colour, s.label, seriesDash(drawn));
     ++drawn;
   }
   if (drawn > kLegendRows) {
@@ -262,33 +276,39 @@ std::string timeErrorChartSvg(const SweepResult& sweep, const std::string& title
            " floor " + tickText(c.varianceFloor) + "</title><circle cx=\"" + num(px) + "\" cy=\"" +
            num(py) + "\" r=\"3\" fill=\"" + colourOf[groupIndex(c.group)] + "\"/></g>\n";
   }
-  // The front as a staircase: from each front cell right to the next one's time, then down.
-  const std::vector<std::size_t> front = paretoFront(sweep);
-  std::string steps;
-  for (std::size_t k = 0; k < front.size(); ++k) {
-    const auto [px, py] = point(sweep.cells[front[k]]);
-    if (k > 0) {
-      const auto [prevX, prevY] = point(sweep.cells[front[k - 1]]);
-      steps += " " + num(px) + "," + num(prevY);
-      (void)prevX;
+  // Each group's own front (cells of different groups are no alternatives to each other), in the
+  // group's colour, as a staircase: from each front cell right to the next one's time, then down.
+  std::size_t ringed = 0;
+  std::map<int, std::size_t> frontSize;
+  for (const auto& [g, colour] : colourOf) {
+    const std::vector<std::size_t> front =
+        paretoFront(sweep, kSensorGroups[static_cast<std::size_t>(g)].group);
+    frontSize[g] = front.size();
+    std::string steps;
+    for (std::size_t k = 0; k < front.size(); ++k) {
+      const auto [px, py] = point(sweep.cells[front[k]]);
+      if (k > 0) steps += " " + num(px) + "," + num(point(sweep.cells[front[k - 1]]).second);
+      steps += (steps.empty() ? "" : " ") + num(px) + "," + num(py);
+      out += "<circle cx=\"" + num(px) + "\" cy=\"" + num(py) +
+             "\" r=\"6\" fill=\"none\" stroke=\"#000\" stroke-width=\"1.2\"/>\n";
+      ++ringed;
     }
-    steps += (steps.empty() ? "" : " ") + num(px) + "," + num(py);
-    out += "<circle cx=\"" + num(px) + "\" cy=\"" + num(py) +
-           "\" r=\"6\" fill=\"none\" stroke=\"#000\" stroke-width=\"1.2\"/>\n";
-  }
-  if (!steps.empty()) {
-    out += "<polyline points=\"" + steps +
-           "\" fill=\"none\" stroke=\"#000\" stroke-width=\"1.2\" stroke-dasharray=\"4 3\"/>\n";
+    if (!steps.empty()) {
+      out += "<polyline points=\"" + steps + "\" fill=\"none\" stroke=\"" + colour +
+             "\" stroke-width=\"1.5\" stroke-dasharray=\"4 3\"/>\n";
+    }
   }
   std::size_t row = 0;
   for (const auto& [g, colour] : colourOf) {
     if (row >= kLegendRows) break;
     out +=
         legendEntry(row++, colour,
-                    "group " + std::string(kSensorGroups[static_cast<std::size_t>(g)].shortName));
+                    "group " + std::string(kSensorGroups[static_cast<std::size_t>(g)].shortName) +
+                        " (front: " + std::to_string(frontSize[g]) + ")");
   }
-  if (!front.empty() && row < kLegendRows) {
-    out += legendEntry(row, "#000000", "Pareto front (" + std::to_string(front.size()) + ")");
+  if (ringed > 0 && row < kLegendRows) {
+    out += legendEntry(row, "#000000",
+                       "ringed: the group's Pareto front (" + std::to_string(ringed) + ")");
   }
   out += "</svg>\n";
   return out;

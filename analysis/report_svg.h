@@ -13,14 +13,17 @@
 
 namespace tactile::analysis {
 
-// Rate against the swept variable (log x axis when every x is positive): the mean as a solid
-// line, min and max dashed. Empty series are left
-// out; with none the chart says so.
+// Rate against the swept variable (log x axis when every x is positive, linear otherwise; a tick
+// at each swept value): per series the mean as a solid line with dots, the min..max band pale and
+// edged by dashed lines, a legend entry by label. Series without a finite point are left out;
+// with none the chart says so. Points are read up to the shortest of x, mean, min and max.
 std::string rateChartSvg(const std::vector<RateSeries>& series, SweptVariable variable,
                          const std::string& title);
 
-// Fit + predict seconds (log x) against error percent (100 - balanced accuracy) of every
-// successful cell, one colour per group; the Pareto front (paretoFront) joined and ringed.
+// Fit + predict seconds (log x, decades) against error percent (100 - balanced accuracy) of every
+// successful cell scored on test rows, one colour per group; each group's own Pareto front
+// (paretoFront of that group: cells of different groups are no alternatives to each other) ringed
+// and joined as a staircase in the group's colour. Cells with a non-finite time are left out.
 std::string timeErrorChartSvg(const SweepResult& sweep, const std::string& title);
 
 }  // namespace tactile::analysis

@@ -707,6 +707,24 @@ int runReportDb(const ReportArgs& a) {
   return kExitOk;
 }
 
+// What a SWEEP.json written by `tactile sweep --runs` says of its data, in the shape of a stored
+// sweep's configuration: labels, run files (as run names) and the held-out share.
+json sweepFileConfiguration(const json& doc) {
+  json out = json::object();
+  if (doc.contains("labels") && doc["labels"].is_string()) out["label_set"] = doc["labels"];
+  auto runs = [&doc](const char* key) {
+    json list = json::array();
+    if (doc.contains(key) && doc[key].is_array())
+      for (const json& p : doc[key])
+        if (p.is_string()) list.push_back(json{{"name", p}});
+    return list;
+  };
+  if (doc.contains("runs")) out["train_runs"] = runs("runs");
+  if (doc.contains("test_runs") && !doc["test_runs"].empty()) out["test_runs"] = runs("test_runs");
+  if (doc.contains("holdout") && doc["holdout"].is_number()) out["holdout"] = doc["holdout"];
+  return out;
+}
+
 int runReport(const ReportArgs& r) {
   if (!r.db.empty()) return runReportDb(r);
   if (r.path.empty())
@@ -737,10 +755,13 @@ int runReport(const ReportArgs& r) {
   if (format == "tactile-sweep") {
     const Result<analysis::SweepResult> sweep = analysis::sweepFromJson(value);
     if (!sweep) throw std::runtime_error(path + ": " + sweep.errorText());
+    const json configuration = sweepFileConfiguration(value);
     if (r.out.empty() || r.out == "-") {
-      writeText(r.out, analysis::sweepReport(sweep.value(), style));
+      analysis::SweepReportOptions options;
+      options.configuration = configuration;
+      writeText(r.out, analysis::sweepReport(sweep.value(), style, options));
     } else {
-      const Status written = analysis::writeSweepReport(sweep.value(), style, r.out);
+      const Status written = analysis::writeSweepReport(sweep.value(), style, r.out, configuration);
       if (!written) throw std::runtime_error(written.errorText());
     }
     if (r.json) std::cout << json{{"file", path}, {"kind", "sweep"}, {"out", r.out}}.dump() << "\n";

@@ -5,8 +5,10 @@
 
 #include <algorithm>
 #include <clocale>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <map>
 #include <random>
 #include <sstream>
@@ -167,7 +169,8 @@ TEST(ReportSvg, ChartsAreWellFormedAndDrawEverySeriesAndPoint) {
   const std::string time = timeErrorChartSvg(s, "Run time against error");
   expectWellFormed(time);
   EXPECT_EQ(count(time, "<title>cell "), 3u);  // cells 1..3; cell 0 has no finite time
-  EXPECT_NE(time.find("Pareto front (2)"), std::string::npos);  // cells 1 and 3
+  EXPECT_NE(time.find("group F (front: 2)"), std::string::npos);  // cells 1 and 3
+  EXPECT_EQ(count(time, "r=\"6\""), 2u);                          // rings
   expectWellFormed(timeErrorChartSvg(SweepResult{}, "empty"));
   expectWellFormed(rateChartSvg({}, SweptVariable::Order, "empty"));
 }
@@ -266,6 +269,154 @@ TEST(ReportFile, MarkdownLinksItsFigureFilesAndHtmlInlinesThem) {
   EXPECT_EQ(svgs, 3u);
   // An unwritable place is an error, and nothing is left behind.
   EXPECT_FALSE(writeSweepReport(s, TableStyle::Html, dir / "no" / "such" / "r.html").ok());
+}
+
+TEST(ReportFile, MarkdownLinksSurviveSpacesInTheName) {
+  TempDir dir;
+  const SweepResult s = handSweep();
+  const nlohmann::json configuration = {{"label_set", "truth"}, {"holdout", 0.25}};
+  ASSERT_TRUE(
+      writeSweepReport(s, TableStyle::Markdown, dir / "my sweep (1).md", configuration).ok());
+  std::ifstream md(dir / "my sweep (1).md");
+  std::stringstream text;
+  text << md.rdbuf();
+  for (const SweepFigure& f : sweepFigures(s)) {
+    EXPECT_TRUE(std::filesystem::exists(dir / "my sweep (1)_files" / f.file)) << f.file;
+    EXPECT_NE(text.str().find("](my%20sweep%20%281%29_files/" + f.file + ")"), std::string::npos)
+        << f.file;
+  }
+  EXPECT_NE(text.str().find("| held-out share of each training run | 0.25 |"), std::string::npos);
+}
+
+// Two cells of group F equal in balanced accuracy: the one with fewer components is the best,
+// and then the faster; the best-cells table and the report's detailed section agree.
+TEST(ReportBest, OneRuleForTheBestCellOfEachGroup) {
+  SweepResult s = handSweep();
+  SweepCellResult twin = s.cells[3];  // balanced accuracy as cell 3 (the best of F), order 1
+  twin.cell.order = 1;
+  twin.cell.varianceFloor = 0.3;
+  twin.fitSeconds = 5.0;
+  s.cells.push_back(twin);  // index 5
+  SweepCellResult right = cellWith(SensorGroup::Right, 4, 0.1, 0.1, {{W, W, 3}, {C, W, 1}});
+  s.cells.push_back(right);                         // index 6
+  EXPECT_TRUE(betterCell(s.cells[5], s.cells[3]));  // fewer components
+  EXPECT_FALSE(betterCell(s.cells[3], s.cells[5]));
+  EXPECT_TRUE(betterCell(s.cells[3], s.cells[1]));  // higher balanced accuracy
+  SweepCellResult slower = s.cells[5];
+  slower.fitSeconds = 6.0;
+  EXPECT_TRUE(betterCell(s.cells[5], slower));
+  EXPECT_FALSE(betterCell(s.cells[5], s.cells[5]));  // not better than itself
+  // Front before Right (group order); the failed Left cell gives nothing.
+  EXPECT_EQ(bestCells(s), (std::vector<std::size_t>{5, 6}));
+  const Table best = bestCellsTable(s);
+  ASSERT_EQ(best.rows.size(), 2u);
+  EXPECT_EQ(best.rows[0][4], "1");    // order
+  EXPECT_EQ(best.rows[0][5], "0.3");  // floor
+  const std::string report = sweepReport(s, TableStyle::Markdown);
+  EXPECT_NE(report.find("Group F, gmm nodal-diag order 1 variance floor 0.3, seed 1: confusion"),
+            std::string::npos);
+  EXPECT_EQ(report.find("Group F, gmm nodal-diag order 2 variance floor 0.1, seed 1: confusion"),
+            std::string::npos);
+  EXPECT_TRUE(bestCells(SweepResult{}).empty());
+}
+
+TEST(ReportSeries, ParetoFrontPerGroupAndWithoutUnscoredCells) {
+  SweepResult s = handSweep();
+  // A Right cell faster than every F cell and better than all but cell 3.
+  s.cells.push_back(cellWith(SensorGroup::Right, 1, 0.1, 0.005,
+                             {{W, W, 4}, {W, C, 1}, {C, C, 4}, {C, W, 1}}));  // 80, 80
+  // Faster still, but scored on nothing, and one with no finite time: neither is a point.
+  SweepCellResult unscored = cellWith(SensorGroup::Front, 1, 0.3, 0.001, {});
+  s.cells.push_back(unscored);
+  SweepCellResult noTime = s.cells[3];
+  noTime.fitSeconds = std::numeric_limits<double>::infinity();
+  s.cells.push_back(noTime);
+  // Balanced accuracy: F 70, 77.5, 62.5, 85 (cells 0..3), R 80 (cell 5). Cell 5 is faster than
+  // cells 0 and 1 and better than both; only cell 3 is better still.
+  const double r = s.cells[5].metrics.balancedAccuracy;
+  ASSERT_GT(r, s.cells[1].metrics.balancedAccuracy);
+  ASSERT_LT(r, s.cells[3].metrics.balancedAccuracy);
+  EXPECT_EQ(paretoFront(s), (std::vector<std::size_t>{5, 3}));
+  EXPECT_EQ(paretoFront(s, SensorGroup::Front), (std::vector<std::size_t>{0, 1, 3}));
+  EXPECT_EQ(paretoFront(s, SensorGroup::Right), (std::vector<std::size_t>{5}));
+  // Equal in both, whatever the order they are listed in: both kept, in cell order.
+  SweepResult two;
+  two.cells = {s.cells[3], s.cells[3]};
+  EXPECT_EQ(paretoFront(two), (std::vector<std::size_t>{0, 1}));
+  // Equal time, different error: only the better; equal error, different time: only the faster.
+  two.cells[1].confusion = s.cells[1].confusion;
+  two.cells[1].metrics = s.cells[1].metrics;
+  EXPECT_EQ(paretoFront(two), (std::vector<std::size_t>{0}));
+  two.cells[1] = s.cells[3];
+  two.cells[0].fitSeconds += 1.0;
+  EXPECT_EQ(paretoFront(two), (std::vector<std::size_t>{1}));
+}
+
+// The x positions of the first `n` circles of a figure (the series' dots come before the legend).
+std::vector<double> circleXs(const std::string& svg, std::size_t n) {
+  std::vector<double> out;
+  const std::string key = "<circle cx=\"";
+  for (std::size_t i = svg.find(key); i != std::string::npos && out.size() < n;
+       i = svg.find(key, i + 1))
+    out.push_back(std::stod(svg.substr(i + key.size())));
+  return out;
+}
+
+TEST(ReportSvg, TimeChartRingsEachGroupsOwnFront) {
+  SweepResult s = handSweep();
+  // A Right cell faster and better than every F cell but cell 3: it does not push F's cells off
+  // F's front.
+  s.cells.push_back(
+      cellWith(SensorGroup::Right, 1, 0.1, 0.005, {{W, W, 4}, {W, C, 1}, {C, C, 4}, {C, W, 1}}));
+  const std::string svg = timeErrorChartSvg(s, "t");
+  expectWellFormed(svg);
+  const std::size_t fronts =
+      paretoFront(s, SensorGroup::Front).size() + paretoFront(s, SensorGroup::Right).size();
+  EXPECT_EQ(fronts, 4u);
+  std::size_t rings = 0;
+  for (std::size_t i = svg.find("r=\"6\""); i != std::string::npos; i = svg.find("r=\"6\"", i + 1))
+    ++rings;
+  EXPECT_EQ(rings, fronts);
+  EXPECT_NE(svg.find("group F (front: 3)"), std::string::npos);
+  EXPECT_NE(svg.find("group R (front: 1)"), std::string::npos);
+}
+
+TEST(ReportSvg, RateChartHasALogAxisABandPerSeriesAndReadsOnlyWholePoints) {
+  RateSeries a;
+  a.label = "F gmm nodal-diag floor 0.01";
+  a.x = {1, 1.5, 2};
+  a.mean = {50, 60, 70};
+  a.min = {40, 50, 60};
+  a.max = {60, 70, 80};
+  const std::string svg = rateChartSvg({a}, SweptVariable::Order, "order");
+  expectWellFormed(svg);
+  const std::vector<double> xs = circleXs(svg, 3);
+  ASSERT_EQ(xs.size(), 3u);
+  // Log axis, even over a factor of only 2: 1.5 sits at log(1.5) / log(2) of the way from 1 to 2
+  // (0.585; a linear axis would put it half way).
+  EXPECT_GT(xs[1], xs[0]);
+  EXPECT_NEAR((xs[1] - xs[0]) / (xs[2] - xs[0]), std::log(1.5) / std::log(2.0), 0.002);
+  auto count = [](const std::string& text, const std::string& what) {
+    std::size_t n = 0;
+    for (std::size_t i = text.find(what); i != std::string::npos; i = text.find(what, i + 1))
+      ++n;
+    return n;
+  };
+  EXPECT_EQ(count(svg, "<polygon"), 1u);
+  EXPECT_EQ(count(svg, "<title>"), 3u);
+  EXPECT_NE(svg.find(">F gmm nodal-diag floor 0.01</text>"), std::string::npos);  // legend
+  // A series whose vectors disagree in length is drawn up to the shortest; NaN points are skipped.
+  RateSeries b = a;
+  b.mean = {50, std::numeric_limits<double>::quiet_NaN()};
+  const std::string partial = rateChartSvg({b}, SweptVariable::Order, "order");
+  expectWellFormed(partial);
+  EXPECT_EQ(count(partial, "<title>"), 1u);
+  // With a 0 on the axis it is linear: 0 -> 1 and 1 -> 2 equally far apart.
+  RateSeries c = a;
+  c.x = {0, 1, 2};
+  const std::vector<double> linear = circleXs(rateChartSvg({c}, SweptVariable::Floor, "f"), 3);
+  ASSERT_EQ(linear.size(), 3u);
+  EXPECT_NEAR(linear[1] - linear[0], linear[2] - linear[1], 0.02);
 }
 
 }  // namespace

@@ -89,6 +89,17 @@ has sweep.json '"warnings":'
 [ "$(grep -o '"neg_inf_rows":' s.json | wc -l)" -eq 2 ] || fail "sweep cells: $(cat s.json)"
 "$T" report s.json > report.txt || fail "report exited $?"
 has report.txt "dropped"
+# The report of a sweep file: its training runs, each cell's contact patterns kept in the file and
+# shown for the best cell; Markdown to a file writes its figures beside it and links them.
+has s.json '"patterns":'
+has report.txt "runs/run_0000.csv, runs/run_0001.csv"
+has report.txt "Contact patterns of group R"
+"$T" report s.json --format md --out "sweep report.md" || fail "report md exited $?"
+for f in rate_floor rate_order time_error; do
+  has "sweep report.md" "](sweep%20report_files/$f.svg)"
+  has "sweep report_files/$f.svg" "</svg>"
+  lacks "sweep report_files/$f.svg" "nan"
+done
 "$T" report m.json > model.txt || fail "report exited $?"
 has model.txt "dropped"
 echo "ok"
