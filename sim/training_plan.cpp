@@ -70,24 +70,43 @@ void pushAndWiggle(std::vector<Leg>& legs, Draw& draw, double v, int steps) {
   }
 }
 
-PlannedRun wallEnd(Draw& draw, bool slow) {
-  // A corridor 2 x gap wider than the robot with dome surfaces; both walls end `ahead` units in
-  // front of the robot's front. Below a gap of about -3 the rear-corner domes touch too.
-  const double gap = slow ? draw.uniform(-4.5, -2.5) : draw.uniform(-3.5, 1.0);
+PlannedRun wallEnd(Draw& draw, bool slow, std::size_t round) {
+  // A short corridor 2 x gap wider than the robot with dome surfaces, from just behind the robot
+  // to 60-200 units ahead of its front. Below a gap of about -3 the rear-corner domes touch too.
+  // Each pass drives out of the far end until the whole robot is clear, turns in place, drives
+  // back through the corridor and out of the near end, turns again and comes back to the start:
+  // the robot leaves the walls twice a pass, always forwards (backing onto a wall's end reads
+  // like leaving it but is not).
+  // The gap is stratified over the plan's runs of the kind (four bands in turn), so that a few
+  // runs cover its whole range.
+  const double lo = slow ? -4.5 : -3.5;
+  const double hi = slow ? -2.5 : 1.0;
+  const double gap =
+      lo + (hi - lo) * (static_cast<double>(round % 4) + draw.uniform(0.0, 1.0)) / 4.0;
   const double y = kHalfWidth + kDome + gap;
+  const double near = kAxleX - kBack - 5.0;
   const double end = kAxleX + kFront + draw.uniform(60.0, 200.0);
   PlannedRun run;
   run.scene = openRoom(
-      {rect(200, kAxleY - y - 60, end, kAxleY - y), rect(200, kAxleY + y, end, kAxleY + y + 60)});
+      {rect(near, kAxleY - y - 60, end, kAxleY - y), rect(near, kAxleY + y, end, kAxleY + y + 60)});
   std::vector<Leg> legs;
-  const int passes = slow ? draw.integer(22, 32) : draw.integer(10, 16);
+  // Turning in place sweeps 126 units about the rear axle: clear the corridor by more.
+  constexpr double kClear = 140.0;
+  const int passes = slow ? draw.integer(10, 14) : draw.integer(4, 6);
+  const auto forward = [&](double v, double distance) {
+    legs.push_back({{v, 0.0}, static_cast<int>(std::round(distance / (v * 0.1)))});
+  };
+  const auto turnAround = [&] {
+    const int steps = draw.integer(15, 30);
+    legs.push_back({{0.0, std::numbers::pi / (steps * 0.1)}, steps});
+  };
   for (int i = 0; i < passes; ++i) {
-    const double v = slow ? draw.uniform(10.0, 25.0) : draw.uniform(10.0, 60.0);
-    // Past the ends until the rear corners are clear, then back into the corridor.
-    const double out = (end - kAxleX) + kBack + 40.0;
-    const int steps = static_cast<int>(std::ceil(out / (v * 0.1)));
-    legs.push_back({{v, 0.0}, steps});
-    legs.push_back({{-v, 0.0}, steps});
+    const double v = slow ? draw.uniform(5.0, 15.0) : draw.uniform(10.0, 60.0);
+    forward(v, end + kClear - kAxleX);
+    turnAround();
+    forward(v, (end + kClear) - (near - kClear));
+    turnAround();
+    forward(v, kAxleX - (near - kClear));
   }
   run.driver = std::make_unique<ScriptDriver>(std::move(legs));
   run.kind = "wall-end";
@@ -157,7 +176,7 @@ PlannedRun reverse(Draw& draw, int corner) {
   if (corner != 0) {
     // A concave corner behind: a side wall along the back half of one side.
     const double side = corner > 0 ? 1.0 : -1.0;
-    const double sy = kAxleY + side * (kHalfWidth + kDome + draw.uniform(0.0, 20.0));
+    const double sy = kAxleY + side * (kHalfWidth + kDome + draw.uniform(-4.5, 1.0));
     walls.push_back(side > 0 ? rect(bx - 60, sy, kAxleX + 20, sy + 60)
                              : rect(bx - 60, sy - 60, kAxleX + 20, sy));
   }
@@ -178,11 +197,14 @@ PlannedRun reverse(Draw& draw, int corner) {
   return run;
 }
 
-PlannedRun pocket(Draw& draw) {
+PlannedRun pocket(Draw& draw, std::size_t round) {
   // A U open towards the robot, a few units wider than the robot with its domes.
   // The side domes press the pocket's sides (by 0.5 to 3 units), so F, L and R all touch at its
   // end.
-  const double inner = kHalfWidth + kDome - draw.uniform(0.5, 3.0);
+  // The press is stratified over the plan's pocket runs (four bands of 0.5..3 in turn), so a few
+  // runs already cover the whole range instead of whatever a few draws give.
+  const double band = static_cast<double>(round % 4);
+  const double inner = kHalfWidth + kDome - (0.5 + 2.5 * (band + draw.uniform(0.0, 1.0)) / 4.0);
   const double mouth = kAxleX + kFront - draw.uniform(40.0, 100.0);  // the robot starts inside
   const double depth = draw.uniform(150.0, 300.0);
   const double endX = mouth + depth;
@@ -201,6 +223,41 @@ PlannedRun pocket(Draw& draw) {
   }
   run.driver = std::make_unique<ScriptDriver>(std::move(legs));
   run.kind = "pocket";
+  return run;
+}
+
+PlannedRun sideTips(Draw& draw) {
+  // Rows of convex tips (squares turned 45 degrees) along both sides, each pressing the side
+  // domes by its own 0.5..4.5 units (past about 2.2 the corner groups' side domes touch it too).
+  // The robot drives past them and back: side and corner groups roll over a vertex met side-on.
+  PlannedRun run;
+  const int perSide = draw.integer(3, 5);
+  double span = 0.0;
+  for (const double side : {1.0, -1.0}) {
+    double x = kAxleX + kFront + kDome + draw.uniform(20.0, 80.0);
+    for (int i = 0; i < perSide; ++i) {
+      const double half = draw.uniform(30.0, 70.0);
+      const double tipY = kAxleY + side * (kHalfWidth + kDome - draw.uniform(1.5, 4.5));
+      const double cy = tipY + side * half;
+      Obstacle d{{Vec2(x - half, cy), Vec2(x, cy - half), Vec2(x + half, cy), Vec2(x, cy + half)}};
+      run.scene.obstacles.push_back(turned(d, x, cy, draw.uniform(-0.15, 0.15)));
+      span = std::max(span, x - kAxleX);
+      x += draw.uniform(150.0, 260.0);
+    }
+  }
+  const auto obstacles = std::move(run.scene.obstacles);
+  run.scene = openRoom(obstacles);
+  std::vector<Leg> legs;
+  const int passes = draw.integer(3, 5);
+  const double travel = span + kBack + 40.0;
+  for (int i = 0; i < passes; ++i) {
+    const double v = draw.uniform(10.0, 40.0);
+    const int steps = static_cast<int>(std::ceil(travel / (v * 0.1)));
+    legs.push_back({{v, 0.0}, steps});
+    legs.push_back({{-v, 0.0}, steps});
+  }
+  run.driver = std::make_unique<ScriptDriver>(std::move(legs));
+  run.kind = "side tip";
   return run;
 }
 
@@ -247,7 +304,7 @@ PlannedRun planTrainingRun(std::uint64_t seed, std::size_t index) {
       return run;
     }
     case 2:
-      run = wallEnd(draw, false);
+      run = wallEnd(draw, false, round);
       break;
     case 3:
       run = insideCorner(draw, round % 2 == 0);
@@ -259,13 +316,16 @@ PlannedRun planTrainingRun(std::uint64_t seed, std::size_t index) {
       run = reverse(draw, std::array{1, -1, 0}[round % 3]);
       break;
     case 6:
-      run = pocket(draw);
+      run = pocket(draw, round);
       break;
     case 7:
-      run = wallEnd(draw, true);
+      run = wallEnd(draw, true, round);
+      break;
+    case 8:
+      run = tip(draw, 0.0, 0.0);
       break;
     default:
-      run = tip(draw, 0.0, 0.0);
+      run = sideTips(draw);
       break;
   }
   const auto* script = static_cast<const ScriptDriver*>(run.driver.get());

@@ -3,9 +3,10 @@
 // these kinds, in turn:
 //   wall-follow   the wall follower in a built-in scene (room1, room2, room3, chapter5, in turn)
 //   cluttered     the wall follower in a procedural room (random:N:SEED, N 20..60)
-//   wall-end      a corridor about as wide as the robot whose walls end ahead: the robot
-//                 drives past the ends and back again at speeds 10..60 (Wall, then LeavingWall on
-//                 the sides and rear corners)
+//   wall-end      a short corridor about as wide as the robot: the robot drives out of one end,
+//                 turns in place, drives back through and out of the other end, always forwards,
+//                 at speeds 10..60 (Wall, then LeavingWall on the sides; Corner where it meets
+//                 the walls' ends coming in)
 //   inside-corner the robot pushes into a concave corner ahead at an angle, wiggling, then backs
 //                 off; repeated (front Wall and Corner, corner groups Corner, sides Wall)
 //   tip           convex tips (squares turned 45 degrees) ahead and behind at opposite corners,
@@ -14,9 +15,12 @@
 //                 turn (back Wall and Corner, rear corners)
 //   pocket        a dead-end pocket whose sides press the side domes: in to the end, push, back
 //                 out (DeadPath on F, FLC, FRC, L, R)
-//   slow wall-end the wall-end corridor narrower, at speeds 10..25 (more rear-corner contact)
+//   slow wall-end the wall-end corridor narrower, at speeds 5..15 (more corner-group contact)
 //   middle tip    tips ahead and behind on the robot's axis (Corner on F and B)
-// Start poses, speeds, angles, gaps and sizes are drawn from the seed.
+//   side tip      rows of tips along both sides, driven past and back (Corner on the side and
+//                 corner groups)
+// Start poses, speeds, angles, gaps and sizes are drawn from the seed; the corridor and pocket
+// widths are stratified over a kind's runs, so that a few runs cover their whole range.
 #pragma once
 
 #include <cstdint>
@@ -39,7 +43,7 @@ struct PlannedRun {
   RunOptions options;
 };
 
-inline constexpr int kTrainingPlanKinds = 9;
+inline constexpr int kTrainingPlanKinds = 10;
 
 // Run `index` of the plan with `seed`; the same (seed, index) always gives the same run.
 PlannedRun planTrainingRun(std::uint64_t seed, std::size_t index);

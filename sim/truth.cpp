@@ -1,6 +1,8 @@
 #include "sim/truth.h"
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numbers>
 
 #include "sim/simulator.h"
@@ -27,6 +29,18 @@ double bodyX(const Pose2d& pose, const Vec2& p) {
   return std::cos(pose.theta) * (p.x() - pose.x) + std::sin(pose.theta) * (p.y() - pose.y);
 }
 
+// The other edge of the polygon loop of edge `e` that meets it at vertex `v`; -1 when `v` is not
+// an end of `e`. A loop's edges are stored one after another, in order.
+int otherEdgeAt(const std::vector<Edge>& edges, int e, int v) {
+  if (v < 0 || (edges[e].vertexA != v && edges[e].vertexB != v)) return -1;
+  for (int k = e - 1; k >= 0 && edges[k].obstacle == edges[e].obstacle; --k)
+    if (k != e && (edges[k].vertexA == v || edges[k].vertexB == v)) return k;
+  for (int k = e + 1; k < static_cast<int>(edges.size()) && edges[k].obstacle == edges[e].obstacle;
+       ++k)
+    if (edges[k].vertexA == v || edges[k].vertexB == v) return k;
+  return -1;
+}
+
 }  // namespace
 
 TruthTracker::TruthTracker(const RobotGeometry& geometry)
@@ -44,8 +58,6 @@ ContactClass TruthTracker::touching(const World& world, const Pose2d& pose,
                                     const PoseContact& contact, const GroupInfo& info,
                                     ContactClass previous) const {
   const auto& edges = world.edges();
-  const double reach = geometry_.domeRadiusUnits + kFeatureMarginUnits;
-  const double reach2 = reach * reach;
   const double flatCos = std::cos(kFlatVertexDegrees * std::numbers::pi / 180.0);
   // The wall: the edge of the most compressed dome touching an edge's interior (a dome on a
   // vertex touches both edges there, so its edge says nothing about direction); the most
@@ -77,42 +89,80 @@ ContactClass TruthTracker::touching(const World& world, const Pose2d& pose,
   if (interiorWall >= 0) wall = interiorWall;
   if (twoDirections) return ContactClass::Corner;
 
-  // Non-flat vertices (ends of touched edges) within reach of a touching dome.
-  bool nearVertex = false;
-  bool leaving = false;
-  bool approaching = false;
-  bool onlyThisWall = true;
-  const Edge& w = edges[wall];
+  // A dome whose closest point is a non-flat vertex sits on it: the group feels a corner there.
+  bool feltVertex = false;
+  int frontTouching = -1;  // the group's front-most touching dome (largest body x)
   for (int d = info.firstSensor; d < info.firstSensor + info.sensorCount; ++d) {
     const DomeContact& dc = contact.domes[d];
     if (dc.edge < 0) continue;
-    if (dc.edge != wall && dc.vertex != w.vertexA && dc.vertex != w.vertexB) onlyThisWall = false;
-    const Vec2 centre = bodyToWorld(pose, Vec2(domes_[d].centre.x, domes_[d].centre.y));
-    const Edge& e = edges[dc.edge];
-    for (const auto& [vertex, at] : {std::pair{e.vertexA, e.a}, std::pair{e.vertexB, e.b}}) {
-      if (world.vertexKind(vertex) == VertexKind::Flat) continue;
-      if ((at - centre).squaredNorm() >= reach2) continue;
-      nearVertex = true;
-      // Sliding off the end of the wall: a convex end of the wall moving rearward.
-      const bool endOfWall = vertex == w.vertexA || vertex == w.vertexB;
-      if (!endOfWall) onlyThisWall = false;
-      if (endOfWall && world.vertexKind(vertex) == VertexKind::Convex && previousPose_) {
-        const double rearward = bodyX(*previousPose_, at) - bodyX(pose, at);
-        if (rearward > kStillUnits) leaving = true;
-        if (rearward < -kStillUnits) approaching = true;
+    if (dc.vertex >= 0 && world.vertexKind(dc.vertex) != VertexKind::Flat) feltVertex = true;
+    if (frontTouching < 0 || domes_[d].centre.x > domes_[frontTouching].centre.x) frontTouching = d;
+  }
+  // Leaving a wall (L, R, RLC, RRC). The group lies along wall e, which runs along the robot
+  // (within kFlatVertexDegrees of its heading), and touches nothing but e and its ends; a convex
+  // end v of e has reached the group's front-most touching dome (that dome is on v, or v lies
+  // between it and the next dome of the group ahead, which has lost the wall); and the group's
+  // front-most dome is off the wall or on v. The group enters LeavingWall from Wall when v moves
+  // rearward in the robot's frame (the robot slides off the end) while a dome of the group is
+  // still on e's interior; it stays LeavingWall while the end stays so, however the robot moves.
+  // When every touching dome is on one vertex, either edge there may be the wall.
+  if (mayLeaveWall(info.group) &&
+      (previous == ContactClass::Wall || previous == ContactClass::LeavingWall)) {
+    int front = info.firstSensor;
+    for (int d = info.firstSensor; d < info.firstSensor + info.sensorCount; ++d)
+      if (domes_[d].centre.x > domes_[front].centre.x) front = d;
+    const Vec2 heading(std::cos(pose.theta), std::sin(pose.theta));
+    const double frontX = domes_[frontTouching].centre.x;
+    double nextX = std::numeric_limits<double>::infinity();
+    for (int d = info.firstSensor; d < info.firstSensor + info.sensorCount; ++d) {
+      if (domes_[d].centre.x > frontX) nextX = std::min(nextX, domes_[d].centre.x);
+    }
+    const int onFront = contact.domes[frontTouching].vertex;
+    const auto leavesWall = [&](int e) {
+      const Edge& w = edges[e];
+      if (std::abs(w.dir.dot(heading)) < flatCos) return false;
+      bool onInterior = false;
+      for (int d = info.firstSensor; d < info.firstSensor + info.sensorCount; ++d) {
+        const DomeContact& dc = contact.domes[d];
+        if (dc.edge < 0) continue;
+        if (dc.edge != e && dc.vertex != w.vertexA && dc.vertex != w.vertexB)
+          return false;  // touches something besides this wall and its ends
+        if (dc.vertex < 0) onInterior = true;
+      }
+      for (const auto& [vertex, at] : {std::pair{w.vertexA, w.a}, std::pair{w.vertexB, w.b}}) {
+        if (world.vertexKind(vertex) != VertexKind::Convex) continue;
+        const DomeContact& fc = contact.domes[front];
+        if (fc.edge >= 0 && fc.vertex != vertex) continue;
+        const double x = bodyX(pose, at);
+        if (onFront != vertex && !(std::isfinite(nextX) && x > frontX && x < nextX)) continue;
+        if (previous == ContactClass::LeavingWall) return true;
+        if (onInterior && previousPose_ && bodyX(*previousPose_, at) - x > kStillUnits) return true;
+      }
+      return false;
+    };
+    if (leavesWall(wall)) return ContactClass::LeavingWall;
+    if (interiorWall < 0) {
+      const int other = otherEdgeAt(edges, wall, contact.domes[frontTouching].vertex);
+      if (other >= 0 && leavesWall(other)) return ContactClass::LeavingWall;
+    }
+  }
+  if (feltVertex) return ContactClass::Corner;
+  // A group that felt a corner stays Corner while a non-flat end of an edge it touches is still
+  // within a dome radius of a touching dome's centre: a robot working round a corner keeps
+  // rolling on and off its vertex.
+  if (previous == ContactClass::Corner) {
+    const double reach = geometry_.domeRadiusUnits;
+    for (int d = info.firstSensor; d < info.firstSensor + info.sensorCount; ++d) {
+      const DomeContact& dc = contact.domes[d];
+      if (dc.edge < 0) continue;
+      const Vec2 centre = bodyToWorld(pose, Vec2(domes_[d].centre.x, domes_[d].centre.y));
+      const Edge& e = edges[dc.edge];
+      for (const auto& [vertex, at] : {std::pair{e.vertexA, e.a}, std::pair{e.vertexB, e.b}}) {
+        if (world.vertexKind(vertex) != VertexKind::Flat && (at - centre).norm() < reach)
+          return ContactClass::Corner;
       }
     }
   }
-  if (mayLeaveWall(info.group) && onlyThisWall) {
-    // Leaving a wall is what a group does that was on the wall: one coming from a corner is
-    // moving round that corner.
-    const bool fromWall = previous == ContactClass::Wall || previous == ContactClass::LeavingWall;
-    if (leaving && !approaching && fromWall) return ContactClass::LeavingWall;
-    // Once leaving, the group stays so while it touches nothing but that wall and its end,
-    // whichever way the robot moves there (stopped, turning, or backing off a blocked step).
-    if (nearVertex && previous == ContactClass::LeavingWall) return ContactClass::LeavingWall;
-  }
-  if (nearVertex) return ContactClass::Corner;
   return ContactClass::Wall;
 }
 

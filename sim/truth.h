@@ -1,21 +1,25 @@
 // Ground truth per sensor group per step, from the geometry (rules in docs/sim.md#ground-truth).
 //
 // Inputs per step: the robot's pose, for every dome the obstacle edge it touches (raw, unfiltered)
-// and whether its closest point is an end vertex, and the recorded (filtered) values. Rules for
-// group g at step k, first match wins:
+// and whether its closest point is an end vertex, and the recorded (filtered) values. A dome
+// "sits on" a vertex when its closest point is that vertex. Rules for group g at step k, first
+// match wins:
 //   1. NoContact   all recorded values of g are 0 (the same rule the classifiers use).
 //   2. (tail)      no dome of g touches any more, values still decaying: the class g had at its
 //                  last touching step (a released Wall stays Wall until the values reach 0).
 //   3. DeadPath    g is F, FLC, FRC, L or R and touches, while F, L and R all touch: a pocket the
 //                  robot can only back out of ("cannot move anywhere but retrace its steps").
-//   4. LeavingWall g is L, R, RLC or RRC; all its touching domes are on one wall (edge e, or e's
-//                  ends); a convex end vertex v of e lies within reach of one of them (dome radius
-//                  plus kFeatureMarginUnits); and v moved toward the rear in the robot's frame
-//                  since the previous step (the robot is sliding off the wall's end).
-//   5. Corner      a non-flat vertex (an end of an edge g touches) lies within reach of a touching
-//                  dome of g, or g touches two edges whose directions differ by more than
-//                  kFlatVertexDegrees.
-//   6. Wall        otherwise: all contacts on one straight wall.
+//   4. Corner      two domes of g touch edge interiors whose directions differ by more than
+//                  kFlatVertexDegrees (a concave corner).
+//   5. LeavingWall g is L, R, RLC or RRC and touches only one wall e (and e's ends), e runs along
+//                  the robot (within kFlatVertexDegrees of its heading), a convex end v of e has
+//                  reached g's front-most touching dome (it sits on v, or v lies between it and
+//                  the next dome of g ahead), and g's front-most dome is off the wall or on v.
+//                  Entered from Wall when v moves rearward in the robot's frame while a dome of
+//                  g is still on e's interior (sliding off forwards); kept while it holds.
+//   6. Corner      a dome of g sits on a non-flat vertex; or g was Corner and a non-flat end of
+//                  an edge it touches lies within a dome radius of a touching dome's centre.
+//   7. Wall        otherwise: all contacts on one straight wall.
 // Then, over the whole run (smoothTruth), a segment shorter than kMinTruthSegmentSteps inside one
 // contact episode of a group takes the class of the segment before it.
 #pragma once
@@ -35,9 +39,6 @@ namespace tactile::sim {
 class World;
 struct PoseContact;
 
-// How far beyond the dome's own radius a vertex still counts as "at" the dome: a dome 6 units in
-// radius sees a vertex up to 10 units from its centre.
-inline constexpr double kFeatureMarginUnits = 4.0;
 // Shorter segments within one contact episode are merged into the segment before them.
 inline constexpr int kMinTruthSegmentSteps = 3;
 

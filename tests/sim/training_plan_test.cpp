@@ -1,9 +1,12 @@
 #include <gtest/gtest.h>
 
 #include <memory>
+#include <mutex>
 #include <string>
 
+#include "run/builtin_scenes.h"
 #include "sim/recorder.h"
+#include "sim/scene_source.h"
 #include "sim/training_plan.h"
 #include "sim/truth_stats.h"
 #include "sim/world.h"
@@ -57,6 +60,63 @@ TEST(TrainingPlan, ThePocketRunShowsDeadPathInFrontAndSideGroups) {
   EXPECT_EQ(stats.classSteps[static_cast<std::size_t>(groupIndex(SensorGroup::Back))]
                             [static_cast<std::size_t>(ContactClass::DeadPath)],
             0);
+}
+
+// The corpus recipe at N = 40: every group has at least 1,000 contact steps of each class it
+// shows, and DeadPath at least 300 in the groups that can see it; F, FLC and FRC never leave a
+// wall, and only L, R, RLC and RRC may.
+TEST(TrainingPlan, FortyRunsShowEachClassOfEveryGroupAThousandTimes) {
+  TruthStats stats;
+  for (std::size_t i = 0; i < 40; ++i)
+    stats.add(simulatePlanned(1, i));
+  for (const GroupInfo& info : kSensorGroups) {
+    const auto& row = stats.classSteps[static_cast<std::size_t>(groupIndex(info.group))];
+    const auto steps = [&](ContactClass c) { return row[static_cast<std::size_t>(c)]; };
+    EXPECT_GE(steps(ContactClass::Wall), 1000) << info.shortName;
+    EXPECT_GE(steps(ContactClass::Corner), 1000) << info.shortName;
+    const bool sees = info.group == SensorGroup::Front ||
+                      info.group == SensorGroup::FrontLeftCorner ||
+                      info.group == SensorGroup::FrontRightCorner ||
+                      info.group == SensorGroup::Left || info.group == SensorGroup::Right;
+    if (sees) {
+      EXPECT_GE(steps(ContactClass::DeadPath), 300) << info.shortName;
+    } else {
+      EXPECT_EQ(steps(ContactClass::DeadPath), 0) << info.shortName;
+    }
+    if (info.group == SensorGroup::Left || info.group == SensorGroup::Right) {
+      EXPECT_GE(steps(ContactClass::LeavingWall), 1000) << info.shortName;
+    } else if (info.group != SensorGroup::RearLeftCorner &&
+               info.group != SensorGroup::RearRightCorner) {
+      EXPECT_EQ(steps(ContactClass::LeavingWall), 0) << info.shortName;
+    }
+  }
+}
+
+// Wall-following runs in the built-in scenes: fewer than 2 changes between two contact classes
+// per 100 contact steps in every group.
+TEST(TruthStats, WallFollowingRunsChangeClassLessThanTwicePerHundredContactSteps) {
+  TruthStats all;
+  std::mutex mutex;
+  for (const char* name : {"room1", "room2", "room3", "chapter5"}) {
+    auto scene = loadScene(name);
+    ASSERT_TRUE(scene.ok()) << name;
+    auto world = std::make_shared<const World>(std::move(scene.value()));
+    RunOptions options;
+    options.maxSteps = 5000;
+    options.seed = 1;
+    const Status status =
+        simulateBatch(world, name, options, 8, 0, [&](std::size_t, SimulatedRun& result) -> Status {
+          std::lock_guard lock(mutex);
+          all.add(result.run);
+          return {};
+        });
+    ASSERT_TRUE(status.ok()) << name;
+  }
+  for (const GroupInfo& info : kSensorGroups) {
+    EXPECT_GT(all.contactSteps(info.group), 0) << info.shortName;
+    EXPECT_LT(all.changesPer100ContactSteps(info.group), 2.0) << info.shortName;
+  }
+  EXPECT_EQ(all.blockedWithoutReadings, 0);
 }
 
 TEST(TruthStats, CountsClassesChangesAndBlockedStepsWithoutReadings) {

@@ -92,6 +92,58 @@ TEST(Truth, DrivingPastTheEndOfAWallIsWallThenLeavingWallThenNoContactAtAnySpeed
   }
 }
 
+// Leaving starts where the readings show it: while the front-most dome of R is still on the
+// wall's interior the group reads as on the wall, and is Wall.
+TEST(Truth, LeavingWallStartsOnlyOnceTheEndHasReachedTheFrontMostDome) {
+  const int front = groupInfo(SensorGroup::Right).firstSensor + 9;  // dome 41, R's front-most
+  auto sim = makeSim(roomWith({box(500, 800, 1100, 1000 - 43)}), SimConfig{});
+  sim->step(0, 0);
+  int leaving = 0;
+  for (int k = 0; k < 100; ++k) {
+    sim->step(10, 0);
+    const DomeContact& fc = sim->contact().domes[front];
+    const ContactClass r = classOf(*sim, SensorGroup::Right);
+    if (fc.edge >= 0 && fc.vertex < 0) {
+      EXPECT_EQ(r, ContactClass::Wall) << "step " << k;
+    }
+    if (r == ContactClass::LeavingWall) ++leaving;
+  }
+  EXPECT_GT(leaving, 50);
+}
+
+// Backing along a wall onto its end reads like leaving it, but the robot is not leaving.
+TEST(Truth, BackingOntoTheEndOfAWallIsNeverLeavingWall) {
+  for (double speed : {10.0, 30.0}) {
+    // The wall's end is 20 units behind the robot's rear; the robot backs along it.
+    auto sim = makeSim(roomWith({box(500, 800, 1000 - 35 - 20, 1000 - 43)}), SimConfig{});
+    std::vector<ContactClass> right;
+    for (int k = 0; k < static_cast<int>(4000 / speed); ++k) {  // 400 units
+      sim->step(-speed, 0);
+      ASSERT_FALSE(sim->blocked());
+      right.push_back(classOf(*sim, SensorGroup::Right));
+    }
+    EXPECT_EQ(std::count(right.begin(), right.end(), ContactClass::LeavingWall), 0)
+        << "speed " << speed << ": " << sequenceOf(right);
+    EXPECT_EQ(right.back(), ContactClass::Wall) << sequenceOf(right);
+  }
+}
+
+// A two-dome rear corner along a side wall touches it with its side dome only: when that dome
+// rolls off the wall's end no dome of the group is left on the wall, so the group shows a corner
+// there, not leaving.
+TEST(Truth, RearCornerRollingOffAWallEndIsCornerNotLeavingWall) {
+  // The wall presses the right side's domes by 4 units, enough for RRC's side dome to touch.
+  auto sim = makeSim(roomWith({box(500, 800, 1100, 1000 - 42)}), SimConfig{});
+  sim->step(0, 0);
+  ASSERT_EQ(classOf(*sim, SensorGroup::RearRightCorner), ContactClass::Wall);
+  std::vector<ContactClass> rrc;
+  for (int k = 0; k < 150; ++k) {
+    sim->step(10, 0);
+    rrc.push_back(classOf(*sim, SensorGroup::RearRightCorner));
+  }
+  EXPECT_EQ(sequenceOf(rrc), "Wall Corner NoContact");
+}
+
 TEST(Truth, TouchingAndReleasingAWallGivesOnlyWallAndNoContact) {
   // Default spring-damper: the released domes fade out over a few steps and keep their class.
   for (double omega : {0.4, 0.6}) {
@@ -145,6 +197,22 @@ TEST(Truth, PassingATipBesideTheSideIsCornerNotLeavingWall) {
   EXPECT_EQ(std::count(right.begin(), right.end(), ContactClass::LeavingWall), 0)
       << sequenceOf(right);
   EXPECT_GT(std::count(right.begin(), right.end(), ContactClass::Corner), 5) << sequenceOf(right);
+}
+
+// Working round a corner: a dome rolling on and off the vertex keeps the group on Corner.
+TEST(Truth, RollingOnAndOffAVertexStaysCorner) {
+  // A square turned 45 degrees, its top vertex 3 units into the right side's domes; the robot
+  // rocks forward and back by less than a dome's width over it.
+  const double top = 1000 - 46 + 3;
+  Obstacle diamond{
+      {Vec2(1030, top), Vec2(970, top - 60), Vec2(1030, top - 120), Vec2(1090, top - 60)}};
+  auto sim = makeSim(roomWith({diamond}), SimConfig{});
+  std::vector<ContactClass> right;
+  for (int k = 0; k < 60; ++k) {
+    sim->step((k / 4) % 2 == 0 ? 10.0 : -10.0, 0);
+    right.push_back(classOf(*sim, SensorGroup::Right));
+  }
+  EXPECT_EQ(sequenceOf(right), "Corner") << sequenceOf(right);
 }
 
 TEST(Truth, SmoothingMergesShortSegmentsInsideAContactEpisode) {
