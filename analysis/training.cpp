@@ -64,8 +64,8 @@ TrainSettings defaultTrainSettings() {
   s.features = FeatureKind::Normal;
   s.classifier.method = ClassifierMethod::Gmm;
   s.classifier.gmm.form = CovarianceForm::NodalDiag;
-  s.classifier.gmm.components = 16;
-  s.classifier.gmm.varianceFloor = 0.03;
+  s.classifier.gmm.components = 8;
+  s.classifier.gmm.varianceFloor = 0.3;
   return s;
 }
 

@@ -24,7 +24,7 @@ struct TrainSettings {
 };
 
 // What `tactile train` and the workbench train with unless told otherwise: normal values, GMM,
-// nodal-diag covariance, order 16, variance floor 0.03 (clamp), k-means++, seed 1. Chosen on a
+// nodal-diag covariance, order 8, variance floor 0.3 (clamp), k-means++, seed 1. Chosen on a
 // validation corpus apart from the one scores are quoted on (docs/learning.md#training-defaults).
 TrainSettings defaultTrainSettings();
 
