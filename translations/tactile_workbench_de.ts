@@ -27,14 +27,6 @@
 <context>
     <name>QObject</name>
     <message>
-        <source>Group %1, %2</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>, variance floor %1, %2 features, seed %3</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
         <source>none</source>
         <translation type="unfinished"></translation>
     </message>
@@ -994,6 +986,14 @@ imported from %2</source>
         <source>Pareto front (%1)</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <source>No cells with a model yet.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>No cells with a model scored on test rows.</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>tactile::gui::SweepResultsView</name>
@@ -1046,10 +1046,6 @@ imported from %2</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>- each group&apos;s best cell</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
         <source>No cells yet.</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1079,6 +1075,26 @@ imported from %2</source>
     </message>
     <message>
         <source>No contact patterns were kept for this cell.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>each group&apos;s best cell</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>This cell was not scored: the test runs have no labelled rows of its group.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>this cell</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Group %1, GMM %2, order %3, variance floor %4, %5 features, seed %6</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Group %1, %2, variance floor %3, %4 features, seed %5</source>
         <translation type="unfinished"></translation>
     </message>
 </context>

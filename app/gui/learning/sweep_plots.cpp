@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <tuple>
 
 namespace tactile::gui {
 
@@ -20,7 +21,17 @@ const QColor kSeriesColours[] = {QColor(0x1f, 0x77, 0xb4), QColor(0xd6, 0x27, 0x
                                  QColor(0xe3, 0x77, 0xc2), QColor(0x17, 0xbe, 0xcf),
                                  QColor(0x7f, 0x7f, 0x7f), QColor(0xbc, 0xbd, 0x22)};
 constexpr int kColourCount = sizeof kSeriesColours / sizeof kSeriesColours[0];
-constexpr int kMaxLegendEntries = 14;
+const QCPScatterStyle::ScatterShape kShapes[] = {QCPScatterStyle::ssCircle,
+                                                 QCPScatterStyle::ssSquare,
+                                                 QCPScatterStyle::ssTriangle,
+                                                 QCPScatterStyle::ssDiamond,
+                                                 QCPScatterStyle::ssTriangleInverted,
+                                                 QCPScatterStyle::ssCross,
+                                                 QCPScatterStyle::ssPlus,
+                                                 QCPScatterStyle::ssStar};
+constexpr int kShapeCount = sizeof kShapes / sizeof kShapes[0];
+// More series than this leave the legend out (it would be taller than the figure).
+constexpr int kMaxLegendEntries = 24;
 
 void useLogAxis(QCPAxis* axis) {
   axis->setScaleType(QCPAxis::stLogarithmic);
@@ -46,14 +57,40 @@ QCPRange paddedRange(const std::vector<double>& values, bool log) {
   return QCPRange(*mn - pad, *mx + pad);
 }
 
+// A series' colour: one hue per family of settings (all but the fixed value), darker for a
+// smaller fixed value, lighter for a larger one.
+QColor shade(const QColor& base, int rank, int count) {
+  if (count <= 1) return base;
+  const double t = static_cast<double>(rank) / (count - 1);
+  float h = 0, s = 0, l = 0, a = 1;
+  base.getHslF(&h, &s, &l, &a);
+  return QColor::fromHslF(h, s, static_cast<float>(0.25 + 0.40 * t), a);
+}
+
 }  // namespace
 
 SweepPlot::SweepPlot(QWidget* parent) : QWidget(parent) {
   plot_ = new QCustomPlot;
   plot_->setMinimumSize(360, 260);
-  plot_->yAxis->setRange(0, 100);
-  plot_->legend->setFont(QFont(font().family(), 8));
-  plot_->axisRect()->insetLayout()->setInsetAlignment(0, Qt::AlignBottom | Qt::AlignRight);
+  plot_->yAxis->setRange(0, 105);
+  QFont small = font();
+  small.setPointSizeF(small.pointSizeF() * 0.9);
+  plot_->legend->setFont(small);
+  // The legend beside the axes, at the top, so it never covers a point.
+  auto* side = new QCPLayoutGrid;
+  plot_->plotLayout()->addElement(0, 1, side);
+  side->addElement(0, 0, plot_->legend);
+  side->addElement(1, 0, new QCPLayoutElement(plot_));
+  side->setRowStretchFactor(0, 0.001);
+  side->setRowStretchFactor(1, 1);
+  side->setAutoMargins(QCP::msNone);
+  side->setMargins(QMargins(4, 8, 8, 4));
+  plot_->plotLayout()->setColumnStretchFactor(1, 0.001);
+  empty_ = new QCPItemText(plot_);
+  empty_->position->setType(QCPItemPosition::ptAxisRectRatio);
+  empty_->position->setCoords(0.5, 0.5);
+  empty_->setPositionAlignment(Qt::AlignCenter);
+  empty_->setColor(QColor(0x60, 0x60, 0x60));
   connect(plot_, &QCustomPlot::plottableClick, this, &SweepPlot::onPlottableClick);
   auto* png = new QPushButton(tr("Export PNG..."));
   png->setObjectName(QStringLiteral("exportPng"));
@@ -79,19 +116,42 @@ SweepPlot::SweepPlot(QWidget* parent) : QWidget(parent) {
   layout->setContentsMargins(0, 0, 0, 0);
   layout->addWidget(plot_, 1);
   layout->addLayout(buttons);
+  finish(tr("No cells with a model yet."));
 }
 
 void SweepPlot::clear() {
   plot_->clearPlottables();
-  plot_->clearItems();
+  front_ = nullptr;
+  mark_ = nullptr;
   cellsOf_.clear();
+  pointOf_.clear();
   seriesCount_ = 0;
   frontCount_ = 0;
   pointCount_ = 0;
 }
 
+// After the data: the ring of the marked cell, the legend, the empty note, one redraw.
+void SweepPlot::finish(const QString& emptyText) {
+  mark_ = plot_->addGraph();
+  mark_->setLineStyle(QCPGraph::lsNone);
+  mark_->setScatterStyle(QCPScatterStyle(QCPScatterStyle::ssCircle,
+                                         QPen(QColor(0xff, 0xc4, 0x00), 3), Qt::NoBrush, 17));
+  mark_->removeFromLegend();
+  const bool legend = seriesCount_ > 0 && plot_->legend->itemCount() <= kMaxLegendEntries;
+  if (!legend) plot_->legend->clearItems();
+  plot_->legend->setVisible(legend);
+  empty_->setText(pointCount_ == 0 ? emptyText : QString());
+  empty_->setVisible(pointCount_ == 0);
+  markCell(marked_);
+  plot_->replot();
+}
+
+QString SweepPlot::emptyMessage() const {
+  return empty_->visible() ? empty_->text() : QString();
+}
+
 void SweepPlot::showRates(const std::vector<analysis::RateSeries>& series,
-                          analysis::SweptVariable variable) {
+                          analysis::SweptVariable variable, const std::vector<int>& cellOf) {
   clear();
   std::vector<double> xs;
   bool allPositive = true;
@@ -109,40 +169,88 @@ void SweepPlot::showRates(const std::vector<analysis::RateSeries>& series,
   plot_->xAxis->setLabel(variable == analysis::SweptVariable::Floor ? tr("Variance floor")
                                                                     : tr("Model order"));
   plot_->yAxis->setLabel(tr("Correct rate per class (%)"));
+  std::sort(xs.begin(), xs.end());
+  xs.erase(std::unique(xs.begin(), xs.end()), xs.end());
+
+  // Families: series equal in all but the fixed value (order or floor) share a hue.
+  using Family = std::tuple<int, int, int, int, std::uint64_t>;
+  auto familyOf = [](const analysis::RateSeries& s) {
+    return Family(groupIndex(s.group), static_cast<int>(s.features), static_cast<int>(s.method),
+                  static_cast<int>(s.form), s.seed);
+  };
+  std::map<Family, int> hue;
+  std::map<Family, std::vector<double>> fixedValues;
   for (const analysis::RateSeries& s : series) {
-    const QColor colour = kSeriesColours[seriesCount_ % kColourCount];
+    hue.try_emplace(familyOf(s), static_cast<int>(hue.size()));
+    fixedValues[familyOf(s)].push_back(s.fixedValue);
+  }
+  for (auto& [family, values] : fixedValues) {
+    std::sort(values.begin(), values.end());
+    values.erase(std::unique(values.begin(), values.end()), values.end());
+  }
+
+  // Series at one x are spread a little sideways, so their error bars stay apart; the ticks stay
+  // at the swept values.
+  // `gap` is the smallest step between swept values: in decades on a log axis.
+  double gap = xs.size() > 1 ? HUGE_VAL : 1.0;
+  for (std::size_t i = 1; i < xs.size(); ++i)
+    gap = std::min(gap, log ? std::log10(xs[i] / xs[i - 1]) : xs[i] - xs[i - 1]);
+  const int n = static_cast<int>(series.size());
+  const double spread = std::min(0.3, 0.04 * std::max(n - 1, 0)) * gap;
+  const double step = n > 1 ? spread / (n - 1) : 0.0;
+
+  for (int k = 0; k < n; ++k) {
+    const analysis::RateSeries& s = series[static_cast<std::size_t>(k)];
+    const Family family = familyOf(s);
+    const std::vector<double>& values = fixedValues[family];
+    const int rank = static_cast<int>(std::lower_bound(values.begin(), values.end(), s.fixedValue) -
+                                      values.begin());
+    const QColor colour =
+        shade(kSeriesColours[hue[family] % kColourCount], rank, static_cast<int>(values.size()));
     QCPGraph* graph = plot_->addGraph();
     graph->setName(QString::fromStdString(s.label));
     graph->setPen(QPen(colour, 1.8));
-    graph->setScatterStyle(QCPScatterStyle(QCPScatterStyle::ssCircle, colour, colour, 5));
+    graph->setScatterStyle(
+        QCPScatterStyle(kShapes[rank % kShapeCount], QPen(colour, 1.5), colour, 7));
+    const double offset = (k - (n - 1) / 2.0) * step;
     QVector<double> keys, means, minus, plus;
+    std::vector<int>& cells = cellsOf_[graph];
     for (std::size_t i = 0; i < s.x.size(); ++i) {
       if (!std::isfinite(s.mean[i]) || (log && s.x[i] <= 0)) continue;
-      keys << s.x[i];
+      const double x = log ? s.x[i] * std::pow(10.0, offset) : s.x[i] + offset;
+      keys << x;
       means << s.mean[i];
       minus << s.mean[i] - s.min[i];
       plus << s.max[i] - s.mean[i];
+      int cell = i < s.cells.size() ? static_cast<int>(s.cells[i]) : -1;
+      if (cell >= 0 && !cellOf.empty())
+        cell = static_cast<std::size_t>(cell) < cellOf.size()
+                   ? cellOf[static_cast<std::size_t>(cell)]
+                   : -1;
+      cells.push_back(cell);
+      if (cell >= 0) pointOf_[cell] = QPointF(x, s.mean[i]);
     }
     graph->setData(keys, means, true);
     auto* bars = new QCPErrorBars(plot_->xAxis, plot_->yAxis);
     bars->removeFromLegend();
     bars->setDataPlottable(graph);
     bars->setData(minus, plus);
-    bars->setPen(QPen(colour.lighter(130), 1));
+    QColor barColour = colour;
+    barColour.setAlpha(170);
+    bars->setPen(QPen(barColour, 1.2));
+    bars->setWhiskerWidth(6);
     pointCount_ += static_cast<int>(keys.size());
     ++seriesCount_;
   }
-  // Ticks at exactly the swept values (a log ticker would pick round numbers between them).
-  std::sort(xs.begin(), xs.end());
-  xs.erase(std::unique(xs.begin(), xs.end()), xs.end());
   QSharedPointer<QCPAxisTickerText> ticks(new QCPAxisTickerText);
   for (double x : xs)
     ticks->addTick(x, QString::number(x, 'g', 4));
   plot_->xAxis->setTicker(ticks);
-  plot_->xAxis->setRange(paddedRange(xs, log));
+  QCPRange range = paddedRange(xs, log);
+  if (log && xs.size() > 1) range = QCPRange(xs.front() / 1.6, xs.back() * 1.6);
+  plot_->xAxis->setRange(range);
   plot_->yAxis->setRange(0, 105);
-  plot_->legend->setVisible(seriesCount_ > 0 && seriesCount_ <= kMaxLegendEntries);
-  plot_->replot();
+  finish(tr("No cells with a model yet."));
 }
 
 void SweepPlot::showTimeError(const analysis::SweepResult& sweep,
@@ -175,12 +283,10 @@ void SweepPlot::showTimeError(const analysis::SweepResult& sweep,
     std::stable_sort(cells.begin(), cells.end(),
                      [&](std::size_t a, std::size_t b) { return timeOf(a) < timeOf(b); });
     const QColor colour = kSeriesColours[g % kColourCount];
+    const std::string_view name = kSensorGroups[static_cast<std::size_t>(g)].shortName;
     QCPGraph* graph = plot_->addGraph();
-    graph->setName(tr("group %1")
-                       .arg(QString::fromUtf8(
-                           kSensorGroups[static_cast<std::size_t>(g)].shortName.data(),
-                           static_cast<qsizetype>(
-                               kSensorGroups[static_cast<std::size_t>(g)].shortName.size()))));
+    graph->setName(
+        tr("group %1").arg(QString::fromUtf8(name.data(), static_cast<qsizetype>(name.size()))));
     graph->setLineStyle(QCPGraph::lsNone);
     graph->setScatterStyle(QCPScatterStyle(QCPScatterStyle::ssDisc, colour, colour, 6));
     QVector<double> keys, values;
@@ -189,6 +295,7 @@ void SweepPlot::showTimeError(const analysis::SweepResult& sweep,
       keys << timeOf(i);
       values << errorOf(i);
       cellIndex.push_back(static_cast<int>(i));
+      pointOf_[static_cast<int>(i)] = QPointF(timeOf(i), errorOf(i));
     }
     graph->setData(keys, values, true);
     pointCount_ += static_cast<int>(keys.size());
@@ -196,33 +303,42 @@ void SweepPlot::showTimeError(const analysis::SweepResult& sweep,
   }
   const std::vector<std::size_t> front = analysis::paretoFront(sweep, group);
   if (!front.empty()) {
-    QCPGraph* graph = plot_->addGraph();
-    graph->setName(tr("Pareto front (%1)").arg(front.size()));
-    graph->setPen(QPen(Qt::black, 1.2, Qt::DashLine));
-    graph->setLineStyle(QCPGraph::lsStepLeft);
-    graph->setScatterStyle(
+    front_ = plot_->addGraph();
+    front_->setName(tr("Pareto front (%1)").arg(front.size()));
+    front_->setPen(QPen(Qt::black, 1.2, Qt::DashLine));
+    front_->setLineStyle(QCPGraph::lsStepLeft);
+    front_->setScatterStyle(
         QCPScatterStyle(QCPScatterStyle::ssCircle, QPen(Qt::black, 1.5), Qt::NoBrush, 11));
     QVector<double> keys, values;
-    std::vector<int>& cellIndex = cellsOf_[graph];
+    std::vector<int>& cellIndex = cellsOf_[front_];
     for (std::size_t i : front) {
       keys << timeOf(i);
       values << errorOf(i);
       cellIndex.push_back(static_cast<int>(i));
     }
-    graph->setData(keys, values, true);
+    front_->setData(keys, values, true);
     frontCount_ = static_cast<int>(front.size());
   }
   plot_->xAxis->setRange(paddedRange(times, true));
   plot_->yAxis->setRange(0, 105);
-  plot_->legend->setVisible(seriesCount_ > 0);
-  plot_->replot();
+  finish(tr("No cells with a model scored on test rows."));
+}
+
+void SweepPlot::markCell(int cellIndex) {
+  marked_ = cellIndex;
+  if (mark_ == nullptr) return;
+  mark_->data()->clear();
+  if (const auto it = pointOf_.find(cellIndex); it != pointOf_.end())
+    mark_->addData(it->second.x(), it->second.y());
+  plot_->replot(QCustomPlot::rpQueuedReplot);
 }
 
 void SweepPlot::onPlottableClick(QCPAbstractPlottable* plottable, int dataIndex, QMouseEvent*) {
   const auto it = cellsOf_.find(plottable);
   if (it == cellsOf_.end() || dataIndex < 0 || dataIndex >= static_cast<int>(it->second.size()))
     return;
-  emit cellClicked(it->second[static_cast<std::size_t>(dataIndex)]);
+  const int cell = it->second[static_cast<std::size_t>(dataIndex)];
+  if (cell >= 0) emit cellClicked(cell);
 }
 
 bool SweepPlot::exportPng(const QString& path) {

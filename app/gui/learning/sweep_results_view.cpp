@@ -8,9 +8,10 @@
 #include <QSplitter>
 #include <QTabWidget>
 #include <QTableView>
+#include <QTimer>
 #include <QVBoxLayout>
 
-#include <map>
+#include <initializer_list>
 #include <utility>
 
 #include "analysis/report.h"
@@ -59,36 +60,28 @@ std::optional<QColor> confusionColour(const analysis::ConfusionMatrix& m, int ro
   return t == p ? QColor(46, 160, 67, alpha) : QColor(214, 39, 40, alpha);
 }
 
-// The better of two cells of one group: higher balanced accuracy, then fewer components, then a
-// faster fit (as the report's best-cells table).
-bool better(const analysis::SweepCellResult& a, const analysis::SweepCellResult& b) {
-  if (a.metrics.balancedAccuracy != b.metrics.balancedAccuracy)
-    return a.metrics.balancedAccuracy > b.metrics.balancedAccuracy;
-  if (a.cell.order != b.cell.order) return a.cell.order < b.cell.order;
-  return a.fitSeconds < b.fitSeconds;
-}
-
 QString describe(const analysis::SweepCell& c) {
   auto s = [](std::string_view v) {
     return QString::fromUtf8(v.data(), static_cast<qsizetype>(v.size()));
   };
-  QString text =
-      QObject::tr("Group %1, %2")
-          .arg(s(groupInfo(c.group).shortName), s(analysis::classifierMethodName(c.method)));
+  const QString group = s(groupInfo(c.group).shortName);
+  const QString floor = QString::number(c.varianceFloor, 'g', 4);
+  const QString features = s(analysis::featureKindName(c.features));
+  const QString seed = QString::number(c.seed);
   if (c.method == analysis::ClassifierMethod::Gmm)
-    text +=
-        QStringLiteral(" %1, order %2").arg(s(analysis::covarianceFormName(c.form))).arg(c.order);
-  text += QObject::tr(", variance floor %1, %2 features, seed %3")
-              .arg(c.varianceFloor)
-              .arg(s(analysis::featureKindName(c.features)))
-              .arg(c.seed);
-  return text;
+    return SweepResultsView::tr(
+               "Group %1, GMM %2, order %3, variance floor %4, %5 features, seed %6")
+        .arg(group, s(analysis::covarianceFormName(c.form)), QString::number(c.order), floor,
+             features, seed);
+  return SweepResultsView::tr("Group %1, %2, variance floor %3, %4 features, seed %5")
+      .arg(group, s(analysis::classifierMethodName(c.method)), floor, features, seed);
 }
 
 }  // namespace
 
 SweepResultsView::SweepResultsView(QWidget* parent) : QWidget(parent) {
   title_ = new QLabel(tr("No sweep"));
+  title_->setObjectName(QStringLiteral("sweepTitle"));
   QFont big = title_->font();
   big.setPointSizeF(big.pointSizeF() * 1.2);
   big.setBold(true);
@@ -121,6 +114,7 @@ SweepResultsView::SweepResultsView(QWidget* parent) : QWidget(parent) {
   cellsView_->setSelectionBehavior(QAbstractItemView::SelectRows);
   cellsView_->setSelectionMode(QAbstractItemView::SingleSelection);
   cellsView_->verticalHeader()->hide();
+  cellsView_->verticalHeader()->setDefaultSectionSize(cellsView_->fontMetrics().height() + 8);
   cellsView_->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
   connect(cellsView_->selectionModel(), &QItemSelectionModel::currentRowChanged, this,
           [this](const QModelIndex& current) {
@@ -140,24 +134,32 @@ SweepResultsView::SweepResultsView(QWidget* parent) : QWidget(parent) {
   leftLayout->addWidget(cellsView_, 1);
 
   cellTitle_ = new QLabel;
+  cellTitle_->setObjectName(QStringLiteral("cellTitle"));
   cellTitle_->setWordWrap(true);
+  // Small tables as tall as their rows, one under the other.
+  auto page = [](std::initializer_list<TableView*> tables) {
+    auto* w = new QWidget;
+    auto* layout = new QVBoxLayout(w);
+    for (TableView* t : tables) {
+      t->setFitHeight(true);
+      layout->addWidget(t);
+    }
+    layout->addStretch(1);
+    return w;
+  };
   counts_ = new TableView;
   percent_ = new TableView;
-  auto* confusion = new QWidget;
-  auto* confusionLayout = new QVBoxLayout(confusion);
-  confusionLayout->addWidget(counts_);
-  confusionLayout->addWidget(percent_);
+  QWidget* confusion = page({counts_, percent_});
+  cellOneVsRest_ = new TableView;
   rates_ = new TableView;
   oneVsRest_ = new TableView;
-  auto* ratesPage = new QWidget;
-  auto* ratesLayout = new QVBoxLayout(ratesPage);
-  ratesLayout->addWidget(oneVsRest_);
-  ratesLayout->addWidget(rates_);
+  QWidget* ratesPage = page({cellOneVsRest_, rates_, oneVsRest_});
   patterns_ = new TableView;
   floorPlot_ = new SweepPlot;
   orderPlot_ = new SweepPlot;
   timePlot_ = new SweepPlot;
-  connect(timePlot_, &SweepPlot::cellClicked, this, &SweepResultsView::selectCell);
+  for (SweepPlot* plot : {floorPlot_, orderPlot_, timePlot_})
+    connect(plot, &SweepPlot::cellClicked, this, &SweepResultsView::selectCell);
 
   tabs_ = new QTabWidget;
   tabs_->addTab(confusion, tr("Confusion"));
@@ -167,6 +169,14 @@ SweepResultsView::SweepResultsView(QWidget* parent) : QWidget(parent) {
   tabs_->addTab(timePlot_, tr("Time vs error"));
   tabs_->addTab(patterns_, tr("Contact patterns"));
   connect(tabs_, &QTabWidget::currentChanged, this, [this] {
+    if (figuresStale_) refreshFigures();
+  });
+
+  // While cells stream in, the figures are redrawn at most this often.
+  refreshTimer_ = new QTimer(this);
+  refreshTimer_->setSingleShot(true);
+  refreshTimer_->setInterval(250);
+  connect(refreshTimer_, &QTimer::timeout, this, [this] {
     if (figuresStale_) refreshFigures();
   });
 
@@ -185,6 +195,7 @@ SweepResultsView::SweepResultsView(QWidget* parent) : QWidget(parent) {
   auto* layout = new QVBoxLayout(this);
   layout->addWidget(title_);
   layout->addWidget(splitter, 1);
+  refreshFigures();
   refreshCellDetails();
 }
 
@@ -192,20 +203,23 @@ void SweepResultsView::setSweep(std::int64_t sweepId, const analysis::SweepResul
   sweepId_ = sweepId;
   sweep_ = sweep;
   selected_ = -1;
+  refreshTimer_->stop();
   cells_->setCells(sweep_.cells);
   refreshTitle();
-  refreshFigures();
   // The best cell of the shown group (or of all) first.
   int best = -1;
-  for (std::size_t i = 0; i < sweep_.cells.size(); ++i) {
-    const analysis::SweepCellResult& r = sweep_.cells[i];
-    if (!r.ok || (group_ && r.cell.group != *group_)) continue;
-    if (best < 0 || better(r, sweep_.cells[static_cast<std::size_t>(best)]))
+  for (const std::size_t i : analysis::bestCells(sweep_)) {
+    if (group_ && sweep_.cells[i].cell.group != *group_) continue;
+    if (best < 0 ||
+        analysis::betterCell(sweep_.cells[i], sweep_.cells[static_cast<std::size_t>(best)]))
       best = static_cast<int>(i);
   }
+  refreshFigures();
   if (best >= 0) {
     selectCell(best);
   } else {
+    for (SweepPlot* plot : {floorPlot_, orderPlot_, timePlot_})
+      plot->markCell(-1);
     refreshCellDetails();
   }
 }
@@ -216,10 +230,16 @@ void SweepResultsView::addCell(const analysis::SweepCellResult& cell) {
   figuresStale_ = true;
   refreshTitle();
   if (selected_ < 0 && cell.ok) selectCell(static_cast<int>(sweep_.cells.size()) - 1);
-  // Only the visible figure is redrawn now; the others when their tab is shown.
-  if (tabs_->currentWidget() == floorPlot_ || tabs_->currentWidget() == orderPlot_ ||
-      tabs_->currentWidget() == timePlot_)
-    refreshFigures();
+  // The figures and the best cells' table are redrawn when the stream pauses (or every 250 ms)
+  // if one is in view; hidden ones when their tab is shown.
+  const QWidget* current = tabs_->currentWidget();
+  const bool figureInView = current == floorPlot_ || current == orderPlot_ ||
+                            current == timePlot_ || current == oneVsRest_->parentWidget();
+  if (figureInView && figuresStale_ && !refreshTimer_->isActive()) refreshTimer_->start();
+}
+
+bool SweepResultsView::figuresPending() const {
+  return refreshTimer_->isActive();
 }
 
 void SweepResultsView::setGroupFilter(std::optional<SensorGroup> group) {
@@ -234,17 +254,16 @@ void SweepResultsView::setGroupFilter(std::optional<SensorGroup> group) {
   if (group &&
       (selected_ < 0 || sweep_.cells[static_cast<std::size_t>(selected_)].cell.group != *group))
     selectBestCell(*group);
+  scrollToSelected();
 }
 
 void SweepResultsView::selectBestCell(SensorGroup group) {
-  int best = -1;
-  for (std::size_t i = 0; i < sweep_.cells.size(); ++i) {
-    const analysis::SweepCellResult& r = sweep_.cells[i];
-    if (!r.ok || r.cell.group != group) continue;
-    if (best < 0 || better(r, sweep_.cells[static_cast<std::size_t>(best)]))
-      best = static_cast<int>(i);
+  for (const std::size_t i : analysis::bestCells(sweep_)) {
+    if (sweep_.cells[i].cell.group == group) {
+      selectCell(static_cast<int>(i));
+      return;
+    }
   }
-  if (best >= 0) selectCell(best);
 }
 
 void SweepResultsView::selectCell(int cellIndex) {
@@ -253,22 +272,40 @@ void SweepResultsView::selectCell(int cellIndex) {
       selected_ >= 0 ? std::optional(sweep_.cells[static_cast<std::size_t>(selected_)].cell.group)
                      : std::nullopt;
   selected_ = cellIndex;
-  const QModelIndex source = cells_->index(cellIndex, 0);
-  const QModelIndex shown = filtered_->mapFromSource(source);
+  const QModelIndex shown = filtered_->mapFromSource(cells_->index(cellIndex, 0));
   if (shown.isValid() && cellsView_->currentIndex().row() != shown.row()) {
     const QSignalBlocker block(cellsView_->selectionModel());
     cellsView_->selectionModel()->setCurrentIndex(
         shown, QItemSelectionModel::ClearAndSelect | QItemSelectionModel::Rows);
-    cellsView_->scrollTo(shown);
   }
+  scrollToSelected();
+  // Without a group filter the rate figures hold the selected cell's group.
   const bool groupChanged =
       previousGroup != sweep_.cells[static_cast<std::size_t>(cellIndex)].cell.group;
   if (!group_ && groupChanged) refreshFigures();
+  for (SweepPlot* plot : {floorPlot_, orderPlot_, timePlot_})
+    plot->markCell(cellIndex);
   refreshCellDetails();
   emit cellSelected(cellIndex);
 }
 
+void SweepResultsView::scrollToSelected() {
+  if (selected_ < 0) return;
+  const QModelIndex shown = filtered_->mapFromSource(cells_->index(selected_, 0));
+  if (shown.isValid()) cellsView_->scrollTo(shown, QAbstractItemView::PositionAtCenter);
+}
+
+void SweepResultsView::showEvent(QShowEvent* event) {
+  QWidget::showEvent(event);
+  // A view scrolled before it had a size scrolls again once it has one.
+  QTimer::singleShot(0, this, [this] { scrollToSelected(); });
+}
+
 void SweepResultsView::refreshTitle() {
+  if (sweepId_ == 0 && sweep_.cells.empty() && !sweep_.cancelled) {
+    title_->setText(tr("No sweep"));
+    return;
+  }
   std::size_t ok = 0;
   for (const analysis::SweepCellResult& r : sweep_.cells)
     ok += r.ok ? 1 : 0;
@@ -279,6 +316,7 @@ void SweepResultsView::refreshTitle() {
 }
 
 void SweepResultsView::refreshFigures() {
+  refreshTimer_->stop();
   // Rate figures hold one group: the filtered one, else the selected cell's (all groups' series
   // at once would be a thicket of lines). Time against error shows every group.
   std::optional<SensorGroup> rateGroup = group_;
@@ -286,28 +324,28 @@ void SweepResultsView::refreshFigures() {
     rateGroup = sweep_.cells[static_cast<std::size_t>(selected_)].cell.group;
   analysis::SweepResult shown;
   shown.grid = sweep_.grid;
-  for (const analysis::SweepCellResult& r : sweep_.cells)
-    if (!rateGroup || r.cell.group == *rateGroup) shown.cells.push_back(r);
-  floorPlot_->showRates(analysis::rateSeries(shown, analysis::SweptVariable::Floor),
-                        analysis::SweptVariable::Floor);
-  orderPlot_->showRates(analysis::rateSeries(shown, analysis::SweptVariable::Order),
-                        analysis::SweptVariable::Order);
-  timePlot_->showTimeError(sweep_, group_);
-  // Thesis table 4.19: one row per group, from each group's best cell.
-  std::map<int, const analysis::SweepCellResult*> best;
-  for (const analysis::SweepCellResult& r : sweep_.cells) {
-    if (!r.ok) continue;
-    const analysis::SweepCellResult*& b = best[groupIndex(r.cell.group)];
-    if (b == nullptr || better(r, *b)) b = &r;
+  std::vector<int> origin;  // index in sweep_.cells of each cell of `shown`
+  for (std::size_t i = 0; i < sweep_.cells.size(); ++i) {
+    if (rateGroup && sweep_.cells[i].cell.group != *rateGroup) continue;
+    shown.cells.push_back(sweep_.cells[i]);
+    origin.push_back(static_cast<int>(i));
   }
+  floorPlot_->showRates(analysis::rateSeries(shown, analysis::SweptVariable::Floor),
+                        analysis::SweptVariable::Floor, origin);
+  orderPlot_->showRates(analysis::rateSeries(shown, analysis::SweptVariable::Order),
+                        analysis::SweptVariable::Order, origin);
+  timePlot_->showTimeError(sweep_, group_);
+  // Thesis table 4.19: one row per group, from each group's best cell (as the report).
   std::vector<std::pair<SensorGroup, std::vector<analysis::BinaryConfusion>>> groups;
-  for (const auto& [g, r] : best)
-    groups.emplace_back(r->cell.group, analysis::binaryConfusions(r->confusion, r->classes));
+  for (const std::size_t i : analysis::bestCells(sweep_)) {
+    const analysis::SweepCellResult& r = sweep_.cells[i];
+    groups.emplace_back(r.cell.group, analysis::binaryConfusions(r.confusion, r.classes));
+  }
   if (groups.empty()) {
     oneVsRest_->setMessage(tr("No cell has a model yet."));
   } else {
     analysis::Table t = analysis::oneVsRestRateTable(groups);
-    t.title += " " + tr("- each group's best cell").toStdString();
+    t.title += " - " + tr("each group's best cell").toStdString();
     oneVsRest_->setTable(t);
   }
   figuresStale_ = false;
@@ -316,19 +354,22 @@ void SweepResultsView::refreshFigures() {
 void SweepResultsView::refreshCellDetails() {
   if (selected_ < 0) {
     cellTitle_->setText(sweep_.cells.empty() ? tr("No cells yet.") : tr("Select a cell."));
-    counts_->setMessage(QString());
-    percent_->setMessage(QString());
-    rates_->setMessage(QString());
-    patterns_->setMessage(QString());
+    for (TableView* t : {counts_, percent_, cellOneVsRest_, rates_, patterns_})
+      t->setMessage(QString());
     return;
   }
   const analysis::SweepCellResult& r = sweep_.cells[static_cast<std::size_t>(selected_)];
   cellTitle_->setText(tr("Cell %1: %2").arg(selected_).arg(describe(r.cell)));
+  QString why;
   if (!r.ok) {
-    const QString why = tr("This cell has no model: %1").arg(QString::fromStdString(r.reason));
+    why = tr("This cell has no model: %1").arg(QString::fromStdString(r.reason));
+  } else if (r.confusion.total() == 0) {
+    why = tr("This cell was not scored: the test runs have no labelled rows of its group.");
+  }
+  if (!why.isEmpty()) {
     counts_->setMessage(why);
-    percent_->setMessage(QString());
-    rates_->setMessage(why);
+    for (TableView* t : {percent_, cellOneVsRest_, rates_})
+      t->setMessage(QString());
     patterns_->setMessage(why);
     return;
   }
@@ -337,6 +378,10 @@ void SweepResultsView::refreshCellDetails() {
                     [&m](int row, int column) { return confusionColour(m, row, column); });
   percent_->setTable(analysis::confusionTable(m, true, tr("Confusion (row percent)").toStdString()),
                      [&m](int row, int column) { return confusionColour(m, row, column); });
+  analysis::Table own =
+      analysis::oneVsRestRateTable({{r.cell.group, analysis::binaryConfusions(m, r.classes)}});
+  own.title += " - " + tr("this cell").toStdString();
+  cellOneVsRest_->setTable(own);
   rates_->setTable(
       analysis::classRateTable({{std::string(groupInfo(r.cell.group).shortName), r.metrics}},
                                tr("Per-class correct rate of this cell (%)").toStdString()));

@@ -1,6 +1,7 @@
 #include "app/gui/learning/table_view.h"
 
 #include <QFileDialog>
+#include <QHBoxLayout>
 #include <QHeaderView>
 #include <QLabel>
 #include <QMessageBox>
@@ -36,6 +37,7 @@ QStandardItem* itemFor(const std::string& text) {
 TableView::TableView(QWidget* parent) : QWidget(parent) {
   title_ = new QLabel;
   title_->setWordWrap(true);
+  title_->setAlignment(Qt::AlignLeft | Qt::AlignTop);
   QFont bold = title_->font();
   bold.setBold(true);
   title_->setFont(bold);
@@ -49,13 +51,15 @@ TableView::TableView(QWidget* parent) : QWidget(parent) {
   view_->sortByColumn(-1, Qt::AscendingOrder);  // the table's own order until a header is clicked
   view_->verticalHeader()->hide();
   view_->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
+  view_->verticalHeader()->setDefaultSectionSize(view_->fontMetrics().height() + 8);
   view_->setSelectionBehavior(QAbstractItemView::SelectRows);
-  auto* exportButton = new QPushButton(tr("Export CSV..."));
-  exportButton->setObjectName(QStringLiteral("exportCsv"));
-  connect(exportButton, &QPushButton::clicked, this, &TableView::chooseCsvFile);
+  exportButton_ = new QPushButton(tr("Export CSV..."));
+  exportButton_->setObjectName(QStringLiteral("exportCsv"));
+  exportButton_->setVisible(false);
+  connect(exportButton_, &QPushButton::clicked, this, &TableView::chooseCsvFile);
   auto* top = new QHBoxLayout;
   top->addWidget(title_, 1);
-  top->addWidget(exportButton);
+  top->addWidget(exportButton_, 0, Qt::AlignTop);
   auto* layout = new QVBoxLayout(this);
   layout->setContentsMargins(0, 0, 0, 0);
   layout->addLayout(top);
@@ -83,17 +87,33 @@ void TableView::setTable(const analysis::Table& table, CellColour colour) {
     model_->appendRow(items);
   }
   view_->setVisible(true);
+  exportButton_->setVisible(true);
 }
 
 void TableView::setMessage(const QString& message) {
   table_ = analysis::Table{};
   model_->clear();
   title_->setText(message);
+  view_->setVisible(false);
+  exportButton_->setVisible(false);
+}
+
+void TableView::setFitHeight(bool fit) {
+  view_->setSizeAdjustPolicy(fit ? QAbstractScrollArea::AdjustToContents
+                                 : QAbstractScrollArea::AdjustIgnored);
+  view_->setSizePolicy(QSizePolicy::Expanding, fit ? QSizePolicy::Maximum : QSizePolicy::Expanding);
+  setSizePolicy(QSizePolicy::Preferred, fit ? QSizePolicy::Maximum : QSizePolicy::Preferred);
 }
 
 QString TableView::cellText(int row, int column) const {
   const QStandardItem* item = model_->item(row, column);
   return item != nullptr ? item->text() : QString();
+}
+
+std::optional<QColor> TableView::cellBackground(int row, int column) const {
+  const QStandardItem* item = model_->item(row, column);
+  if (item == nullptr || item->background().style() == Qt::NoBrush) return std::nullopt;
+  return item->background().color();
 }
 
 Status TableView::exportCsv(const QString& path) const {

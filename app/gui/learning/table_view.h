@@ -13,6 +13,7 @@
 #include "base/error.h"
 
 class QLabel;
+class QPushButton;
 class QStandardItemModel;
 class QTableView;
 
@@ -29,12 +30,16 @@ class TableView : public QWidget {
 
   void setTable(const analysis::Table& table, CellColour colour = {});
   const analysis::Table& table() const { return table_; }
-  // Shown instead of a table (no data, a failed cell).
+  // Shown instead of a table (no data, a failed cell); nothing to export then.
   void setMessage(const QString& message);
 
+  // As tall as its rows (a small table in a page with others) instead of filling the space.
+  void setFitHeight(bool fit);
+
   QTableView* view() const { return view_; }
-  // The text shown in a body cell (for tests).
+  // The text and background shown in a body cell, in the table's own row order (for tests).
   QString cellText(int row, int column) const;
+  std::optional<QColor> cellBackground(int row, int column) const;
 
   // Writes table().render(Csv) to `path` (atomically).
   Status exportCsv(const QString& path) const;
@@ -44,6 +49,7 @@ class TableView : public QWidget {
 
   analysis::Table table_;
   QLabel* title_ = nullptr;
+  QPushButton* exportButton_ = nullptr;
   QTableView* view_ = nullptr;
   QStandardItemModel* model_ = nullptr;
 };
