@@ -85,11 +85,12 @@ QVariant SweepCellsModel::data(const QModelIndex& index, int role) const {
       return text(analysis::featureKindName(c.features));
     case Seed:
       return sort ? QVariant(static_cast<qulonglong>(c.seed)) : QVariant(QString::number(c.seed));
-    case FitSeconds:
-      return sort ? QVariant(r.fitSeconds) : QVariant(QString::number(r.fitSeconds, 'f', 3));
+    case FitSeconds:  // shown in milliseconds, sorted by the seconds
+      return sort ? QVariant(r.fitSeconds)
+                  : QVariant(QString::number(1000.0 * r.fitSeconds, 'f', 1));
     case PredictSeconds:
       return sort ? QVariant(r.predictSeconds)
-                  : QVariant(QString::number(r.predictSeconds, 'f', 3));
+                  : QVariant(QString::number(1000.0 * r.predictSeconds, 'f', 1));
     case Iterations:
       return r.iterations;
     case Converged:
