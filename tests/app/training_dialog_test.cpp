@@ -65,6 +65,16 @@ void smallGrid(TrainingDialog& dialog) {
   dialog.setGrid(QStringLiteral("1, 2"), QStringLiteral("0.03 0.1"), QStringLiteral("1"));
 }
 
+// Runs the small grid's sweep from the dialog; the stored sweep's id, or 0 when none was stored.
+qint64 sweepFromDialog(TrainingDialog& dialog) {
+  smallGrid(dialog);
+  QSignalSpy stored(&dialog, &TrainingDialog::sweepStored);
+  QSignalSpy finished(&dialog, &TrainingDialog::jobFinished);
+  dialog.startSweep();
+  if (!finished.wait(120000) || stored.count() != 1) return 0;
+  return stored.first().at(0).toLongLong();
+}
+
 QPushButton* button(TrainingDialog& dialog, const char* name) {
   auto* b = dialog.findChild<QPushButton*>(QString::fromLatin1(name));
   if (b == nullptr) qFatal("no button %s", name);
@@ -153,13 +163,8 @@ void TrainingDialogTest::sweepShowsProgressAndStreamsSortedCells() {
 void TrainingDialogTest::cliStoresTheSameNumbers() {
   LearningFixture f;
   TrainingDialog dialog(*f.workspace, QString::fromStdString(f.dbPath));
-  smallGrid(dialog);
-  QSignalSpy stored(&dialog, &TrainingDialog::sweepStored);
-  QSignalSpy finished(&dialog, &TrainingDialog::jobFinished);
-  dialog.startSweep();
-  QVERIFY(finished.wait(120000));
-  QCOMPARE(stored.count(), 1);
-  const qint64 guiSweep = stored.first().at(0).toLongLong();
+  const qint64 guiSweep = sweepFromDialog(dialog);
+  QVERIFY(guiSweep > 0);
 
   QProcess cli;
   cli.start(QStringLiteral(TACTILE_CLI), {QStringLiteral("sweep"),
@@ -298,12 +303,8 @@ void TrainingDialogTest::trainStoresAModel() {
 void TrainingDialogTest::resultsWindowExportsReportAndCellModel() {
   LearningFixture f;
   TrainingDialog dialog(*f.workspace, QString::fromStdString(f.dbPath));
-  smallGrid(dialog);
-  QSignalSpy stored(&dialog, &TrainingDialog::sweepStored);
-  QSignalSpy finished(&dialog, &TrainingDialog::jobFinished);
-  dialog.startSweep();
-  QVERIFY(finished.wait(120000));
-  const qint64 id = stored.first().at(0).toLongLong();
+  const qint64 id = sweepFromDialog(dialog);
+  QVERIFY(id > 0);
 
   gui::SweepResultsWindow window(*f.workspace, QString::fromStdString(f.dbPath));
   QVERIFY(window.showSweep(id).ok());
