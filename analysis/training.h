@@ -5,6 +5,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <array>
 #include <optional>
 #include <string>
 #include <vector>
@@ -23,10 +24,22 @@ struct TrainSettings {
   ClassifierOptions classifier;  // method, GMM options (order, form, floor, ...), priors
 };
 
-// What `tactile train` and the workbench train with unless told otherwise: normal values, GMM,
-// nodal-diag covariance, order 8, variance floor 0.3 (clamp), k-means++, seed 1. Chosen on a
-// validation corpus apart from the one scores are quoted on (docs/learning.md#training-defaults).
-TrainSettings defaultTrainSettings();
+// Settings of each group's classifier, indexed by groupIndex().
+struct GroupSettings {
+  std::array<TrainSettings, kGroupCount> byGroup{};
+
+  // The same settings for every group.
+  static GroupSettings same(const TrainSettings& settings);
+  const TrainSettings& of(SensorGroup group) const { return byGroup[groupIndex(group)]; }
+  TrainSettings& of(SensorGroup group) { return byGroup[groupIndex(group)]; }
+};
+
+// What `tactile train` and the workbench train with unless told otherwise: GMM, nodal-full, on
+// normal+shear features, k-means++ with 3 restarts, seed 1, and per group the order and variance
+// floor (clamp) that did best on two validation corpora apart from the one scores are quoted on
+// (docs/learning.md#training-defaults).
+GroupSettings defaultGroupSettings();
+TrainSettings defaultTrainSettings(SensorGroup group);
 
 // Classes of a data set that get a model: present with at least max(2, D) samples (the engine
 // rejects fewer samples than dimensions). The others are listed in `unmodelled`; their test rows

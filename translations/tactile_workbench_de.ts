@@ -1378,10 +1378,6 @@ imported from %2</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>Train one model per group with the first value of every list</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
         <source>Cancel</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1464,6 +1460,22 @@ imported from %2</source>
     </message>
     <message>
         <source>Training failed: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>each group&apos;s default settings</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Train model uses each group&apos;s default order, covariance, floor and features, as tactile train does; unticked, the first value of every list above</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Train model with:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Train one model per group and store it in the database</source>
         <translation type="unfinished"></translation>
     </message>
 </context>

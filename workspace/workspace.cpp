@@ -403,14 +403,15 @@ Result<TrainOutcome> Workspace::train(const TrainRequest& request, const Progres
     report.group = g;
     const std::string gName(groupInfo(g).shortName);
     const analysis::GroupDataSet data =
-        analysis::buildGroupDataSet(train->labelled, g, request.settings.features);
+        analysis::buildGroupDataSet(train->labelled, g, request.settings.of(g).features);
     report.samplesTrain = data.size();
     if (std::string why = tooLittleData(data, request.minRowsPerGroup); !why.empty()) {
       report.skippedBecause = why;
       outcome.groups.push_back(std::move(report));
       continue;
     }
-    analysis::GroupTrainResult tr = analysis::trainGroupModel(data, request.settings);
+    const analysis::TrainSettings& settings = request.settings.of(g);
+    analysis::GroupTrainResult tr = analysis::trainGroupModel(data, settings);
     if (!tr.ok) {
       report.skippedBecause = tr.reason;
       outcome.groups.push_back(std::move(report));
@@ -430,17 +431,15 @@ Result<TrainOutcome> Workspace::train(const TrainRequest& request, const Progres
         const analysis::GroupDataSet fold = rowsOfRun(data, r, false);
         const analysis::GroupDataSet held = rowsOfRun(data, r, true);
         if (held.size() == 0 || !tooLittleData(fold, request.minRowsPerGroup).empty()) continue;
-        const analysis::GroupTrainResult foldModel =
-            analysis::trainGroupModel(fold, request.settings);
+        const analysis::GroupTrainResult foldModel = analysis::trainGroupModel(fold, settings);
         if (!foldModel.ok) continue;
         confusion.merge(analysis::evaluateGroupModel(foldModel.model, held).confusion);
       }
       report.samplesTest = confusion.total();
     } else {
       const analysis::GroupDataSet evalData =
-          testRuns.empty()
-              ? data
-              : analysis::buildGroupDataSet(test.labelled, g, request.settings.features);
+          testRuns.empty() ? data
+                           : analysis::buildGroupDataSet(test.labelled, g, settings.features);
       const analysis::GroupEvaluation ev = analysis::evaluateGroupModel(tr.model, evalData);
       confusion = ev.confusion;
       report.samplesTest = evalData.size();
@@ -478,10 +477,16 @@ Result<TrainOutcome> Workspace::train(const TrainRequest& request, const Progres
   provenance["test_runs"] = runsJson(test.infos);
   provenance["split"] = splitModeName(request.split);
   provenance["evaluated_on"] = outcome.evaluatedOn;
-  provenance["settings"] = settingsJson(request.settings);
   provenance["program_version"] = programVersion();
-  for (analysis::GroupModel& model : outcome.bundle.models)
+  // Each model carries its own group's settings; the bundle's provenance all of them by group.
+  json allSettings = json::object();
+  for (analysis::GroupModel& model : outcome.bundle.models) {
+    const json s = settingsJson(request.settings.of(model.group));
+    allSettings[std::string(groupInfo(model.group).shortName)] = s;
     model.trainedOn = provenance;
+    model.trainedOn["settings"] = s;
+  }
+  provenance["settings"] = allSettings;
   outcome.provenance = provenance;
 
   std::string name = request.modelName;

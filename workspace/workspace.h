@@ -52,8 +52,8 @@ struct TrainRequest {
   std::vector<std::string> trainRuns;  // empty: every run the set labels, minus the test runs
   std::vector<std::string> testRuns;
   SplitMode split = SplitMode::ByRun;
-  std::vector<SensorGroup> groups;  // empty: all eight
-  analysis::TrainSettings settings = analysis::defaultTrainSettings();
+  std::vector<SensorGroup> groups;                                      // empty: all eight
+  analysis::GroupSettings settings = analysis::defaultGroupSettings();  // each group's own
   std::string modelName;  // empty: "<label set>-<n>", the first free n
   // A group with fewer labelled contact rows than this for training, or with fewer than two
   // classes that can be modelled, is skipped with a warning; the other groups train.

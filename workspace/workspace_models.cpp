@@ -103,10 +103,12 @@ Result<TrainOutcome> Workspace::trainSweepCell(std::int64_t sweepId, std::size_t
   request.trainRuns = analysis::runNamesOf(configuration.value("train_runs", json::array()));
   request.testRuns = analysis::runNamesOf(configuration.value("test_runs", json::array()));
   request.groups = {cell.group};
-  request.settings.features = cell.features;
-  request.settings.classifier = analysis::cellClassifierOptions(sweep->grid, cell);
-  request.settings.classifier.threads = 0;
-  request.settings.classifier.gmm.threads = 0;
+  analysis::TrainSettings settings;
+  settings.features = cell.features;
+  settings.classifier = analysis::cellClassifierOptions(sweep->grid, cell);
+  settings.classifier.threads = 0;
+  settings.classifier.gmm.threads = 0;
+  request.settings = analysis::GroupSettings::same(settings);
   request.minRowsPerGroup = 1;
   if (modelName.empty()) {
     const std::string base = info->name + " " + std::string(groupInfo(cell.group).shortName) + " " +

@@ -226,16 +226,13 @@ struct TrainArgs {
   std::vector<std::string> runs;
   std::vector<std::string> testRuns;
   std::string labels;
-  // Defaults from the core's defaultTrainSettings(), the workbench's too.
-  ClassifierArgs classifier = [] {
-    const analysis::TrainSettings d = analysis::defaultTrainSettings();
-    ClassifierArgs c;
-    c.order = d.classifier.gmm.components;
-    c.cov = std::string(analysis::covarianceFormName(d.classifier.gmm.form));
-    c.floor = d.classifier.gmm.varianceFloor;
-    return c;
-  }();
-  std::string features = "normal";
+  // Unless given, --method, --order, --cov, --floor, --restarts and --features are each group's
+  // default (analysis::defaultGroupSettings(), the workbench's too).
+  ClassifierArgs classifier;
+  std::string features;
+  struct Given {
+    bool method = false, order = false, cov = false, floor = false, restarts = false;
+  } given;
   std::vector<std::string> groups;
   double holdout = 0.0;
   std::string out;
@@ -255,7 +252,7 @@ void checkOutput(const std::string& path) {
   if (!writable) throw std::runtime_error(writable.errorText());
 }
 
-int runTrainDb(const TrainArgs& a, const analysis::TrainSettings& settings,
+int runTrainDb(const TrainArgs& a, const analysis::GroupSettings& settings,
                const std::vector<SensorGroup>& groups) {
   if (a.set.empty()) throw UsageError("--db needs --set SET (the label set to train on)");
   if (!a.runs.empty() || !a.labels.empty() || a.holdout > 0.0) {
@@ -337,10 +334,25 @@ int runTrainDb(const TrainArgs& a, const analysis::TrainSettings& settings,
   return kExitOk;
 }
 
+// Each group's default settings, with what the command line gave applied to every group.
+analysis::GroupSettings trainSettings(const TrainArgs& a) {
+  const analysis::ClassifierOptions typed = toClassifierOptions(a.classifier);
+  analysis::GroupSettings out = analysis::defaultGroupSettings();
+  for (analysis::TrainSettings& s : out.byGroup) {
+    analysis::ClassifierOptions o = typed;
+    if (!a.given.method) o.method = s.classifier.method;
+    if (!a.given.order) o.gmm.components = s.classifier.gmm.components;
+    if (!a.given.cov) o.gmm.form = s.classifier.gmm.form;
+    if (!a.given.floor) o.gmm.varianceFloor = s.classifier.gmm.varianceFloor;
+    if (!a.given.restarts) o.gmm.restarts = s.classifier.gmm.restarts;
+    s.classifier = o;
+    if (!a.features.empty()) s.features = parseFeatures(a.features);
+  }
+  return out;
+}
+
 int runTrain(const TrainArgs& a) {
-  analysis::TrainSettings settings;
-  settings.features = parseFeatures(a.features);
-  settings.classifier = toClassifierOptions(a.classifier);
+  const analysis::GroupSettings settings = trainSettings(a);
   if (!a.db.empty()) {
     std::vector<SensorGroup> groups = parseGroups(a.groups);
     return runTrainDb(a, settings, groups);
@@ -384,12 +396,14 @@ int runTrain(const TrainArgs& a) {
   json summary = json::array();
   for (SensorGroup g : groups) {
     const std::string gName(groupInfo(g).shortName);
-    const analysis::GroupDataSet data = analysis::buildGroupDataSet(train, g, settings.features);
+    const analysis::TrainSettings& groupSettings = settings.of(g);
+    const analysis::GroupDataSet data =
+        analysis::buildGroupDataSet(train, g, groupSettings.features);
     if (data.size() == 0) {
       printWarning("group " + gName + ": no labelled contact samples; no model");
       continue;
     }
-    analysis::GroupTrainResult tr = analysis::trainGroupModel(data, settings);
+    analysis::GroupTrainResult tr = analysis::trainGroupModel(data, groupSettings);
     if (!tr.ok) {
       // One group without enough data must not cost the others their models.
       std::string keep;
@@ -406,7 +420,8 @@ int runTrain(const TrainArgs& a) {
     for (const std::string& w : tr.fit.warnings)
       printWarning("group " + gName + ": " + w);
     const analysis::GroupDataSet evalData =
-        testRuns == &train ? data : analysis::buildGroupDataSet(*testRuns, g, settings.features);
+        testRuns == &train ? data
+                           : analysis::buildGroupDataSet(*testRuns, g, groupSettings.features);
     const analysis::GroupEvaluation ev = analysis::evaluateGroupModel(tr.model, evalData, testRuns);
     json trainedOn;
     trainedOn["runs"] = loaded.paths;
@@ -417,7 +432,7 @@ int runTrain(const TrainArgs& a) {
     trainedOn["holdout"] = a.holdout;
     trainedOn["init"] = a.classifier.init;
     trainedOn["seed"] = a.classifier.seed;
-    trainedOn["restarts"] = a.classifier.restarts;
+    trainedOn["restarts"] = groupSettings.classifier.gmm.restarts;
     trainedOn["max_iterations"] = a.classifier.maxIterations;
     trainedOn["tolerance"] = a.classifier.tolerance;
     trainedOn["tolerance_rule"] = a.classifier.tolRule;
@@ -951,13 +966,26 @@ void registerLearnVerbs(CLI::App& app, CLI::App& /*bench*/) {
                     "on the training data)")
         ->capture_default_str();
     addClassifierOptions(cmd, args->classifier, true);
-    cmd->add_option("--features", args->features, "normal, magnitude or normal+shear")
-        ->capture_default_str();
+    // These default to each group's own setting; given, they apply to every group.
+    for (const char* name : {"--method", "--order", "--cov", "--floor", "--restarts"}) {
+      CLI::Option* o = cmd->get_option(name);
+      o->default_str("");
+      o->description(o->get_description() + " (default: each group's own)");
+    }
+    cmd->add_option("--features", args->features,
+                    "normal, magnitude or normal+shear (default: each group's own)");
     cmd->add_option("--groups", args->groups, "Groups to train (default all), e.g. R,L")
         ->delimiter(',');
     cmd->add_option("--out", args->out, "Model bundle JSON to write (checked before training)");
     cmd->add_flag("--json", args->json, "Print a JSON summary");
-    setAction(cmd, [args] { return runTrain(*args); });
+    setAction(cmd, [args, cmd] {
+      args->given.method = cmd->get_option("--method")->count() > 0;
+      args->given.order = cmd->get_option("--order")->count() > 0;
+      args->given.cov = cmd->get_option("--cov")->count() > 0;
+      args->given.floor = cmd->get_option("--floor")->count() > 0;
+      args->given.restarts = cmd->get_option("--restarts")->count() > 0;
+      return runTrain(*args);
+    });
   }
   // sweep
   {

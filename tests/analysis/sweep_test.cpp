@@ -47,6 +47,27 @@ TEST(Training, SplitKeepsTimeOrderAndPartitionsLabels) {
   }
 }
 
+TEST(Training, DefaultsAreEachGroupsOwnTunedGmm) {
+  const GroupSettings d = defaultGroupSettings();
+  bool ordersDiffer = false;
+  for (const GroupInfo& g : kSensorGroups) {
+    const TrainSettings& s = d.of(g.group);
+    EXPECT_EQ(s.features, FeatureKind::NormalShear) << g.shortName;
+    EXPECT_EQ(s.classifier.method, ClassifierMethod::Gmm) << g.shortName;
+    EXPECT_EQ(s.classifier.gmm.form, CovarianceForm::NodalFull) << g.shortName;
+    EXPECT_EQ(s.classifier.gmm.restarts, 3) << g.shortName;
+    EXPECT_GE(s.classifier.gmm.components, 1) << g.shortName;
+    EXPECT_GT(s.classifier.gmm.varianceFloor, 0.0) << g.shortName;
+    EXPECT_EQ(s.classifier.gmm.components, defaultTrainSettings(g.group).classifier.gmm.components);
+    ordersDiffer |= s.classifier.gmm.components != d.byGroup[0].classifier.gmm.components;
+  }
+  EXPECT_TRUE(ordersDiffer) << "the defaults are per group, not one setting for all";
+  const GroupSettings same = GroupSettings::same(defaultTrainSettings(SensorGroup::Back));
+  for (const TrainSettings& s : same.byGroup)
+    EXPECT_EQ(s.classifier.gmm.components,
+              defaultTrainSettings(SensorGroup::Back).classifier.gmm.components);
+}
+
 TEST(Training, SeparableDataIsClassifiedWell) {
   const Fixture& f = fixture();
   std::vector<LabelledRun> train, test;

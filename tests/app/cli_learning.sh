@@ -82,6 +82,17 @@ for key in '"dropped_components":' '"neg_inf_rows":' '"mean_loglik":' '"warnings
   has train.json "$key"
 done
 lacks train.json '"dropped_components":0'
+# Unset train options keep each group's own default; a given one applies to every group.
+"$T" train --runs runs/run_0000.csv runs/run_0001.csv --groups R,F --order 4 --out d.json \
+  > /dev/null 2>&1 || fail "train --order 4 exited $?"
+"$T" report d.json > d.txt || fail "report exited $?"
+grep -Eq '^R +normal\+shear +gmm +nodal-full +4 +0\.1 ' d.txt || fail "R defaults: $(cat d.txt)"
+grep -Eq '^F +normal\+shear +gmm +nodal-full +4 +0\.03 ' d.txt || fail "F defaults: $(cat d.txt)"
+"$T" train --runs runs/run_0000.csv runs/run_0001.csv --groups R,F --floor 0.5 --cov nodal-diag \
+  --features normal --out e.json > /dev/null 2>&1 || fail "train --floor exited $?"
+"$T" report e.json > e.txt || fail "report exited $?"
+grep -Eq '^R +normal +gmm +nodal-diag +16 +0\.5 ' e.txt || fail "R overridden: $(cat e.txt)"
+grep -Eq '^F +normal +gmm +nodal-diag +16 +0\.5 ' e.txt || fail "F overridden: $(cat e.txt)"
 "$T" sweep --runs runs/run_0000.csv runs/run_0001.csv --groups R --orders 1,64 \
   --covs nodal-diag --floors 0.03 --out s.json --json > sweep.json || fail "sweep exited $?"
 has sweep.json '"warnings":'

@@ -51,7 +51,8 @@ struct Predicted {
     request.trainRuns = {fx.runName};
     request.modelName = model;
     request.minRowsPerGroup = 5;
-    request.settings.classifier.gmm.components = 1;
+    for (analysis::TrainSettings& s : request.settings.byGroup)
+      s.classifier.gmm.components = 1;
     auto trained = fx.workspace->train(request);
     if (!trained) throw std::runtime_error(trained.errorText());
   }

@@ -1,6 +1,7 @@
 // The train-and-sweep dialog: a sweep started from it runs off the GUI thread with progress and a
 // time estimate, streams its cells into the sortable table, can be cancelled keeping its finished
 // cells, and stores exactly the numbers `tactile sweep` stores for the same request.
+#include <QCheckBox>
 #include <QComboBox>
 #include <QFile>
 #include <QFileInfo>
@@ -93,6 +94,7 @@ class TrainingDialogTest : public QObject {
   void cancelKeepsFinishedCells();
   void badGridIsReportedAndNothingStarts();
   void trainStoresAModel();
+  void trainWithGroupDefaultsUsesEachGroupsOwn();
   void resultsWindowExportsReportAndCellModel();
 };
 
@@ -273,6 +275,10 @@ void TrainingDialogTest::trainStoresAModel() {
   LearningFixture f;
   TrainingDialog dialog(*f.workspace, QString::fromStdString(f.dbPath));
   smallGrid(dialog);
+  auto* groupDefaults = dialog.findChild<QCheckBox*>(QStringLiteral("groupDefaults"));
+  QVERIFY(groupDefaults);
+  QVERIFY(groupDefaults->isChecked());
+  groupDefaults->setChecked(false);  // the first value of every list
   QSignalSpy trained(&dialog, &TrainingDialog::modelTrained);
   QSignalSpy finished(&dialog, &TrainingDialog::jobFinished);
   QTest::mouseClick(button(dialog, "trainModel"), Qt::LeftButton);
@@ -297,6 +303,31 @@ void TrainingDialogTest::trainStoresAModel() {
     QCOMPARE(m.varianceFloor, 0.03);
     for (const analysis::GaussianMixture& mixture : m.classifier.models())
       QCOMPARE(mixture.components(), 1);
+  }
+}
+
+void TrainingDialogTest::trainWithGroupDefaultsUsesEachGroupsOwn() {
+  LearningFixture f;
+  TrainingDialog dialog(*f.workspace, QString::fromStdString(f.dbPath));
+  smallGrid(dialog);
+  dialog.setGroupsChecked({SensorGroup::Front, SensorGroup::Left, SensorGroup::Right});
+  QSignalSpy trained(&dialog, &TrainingDialog::modelTrained);
+  QSignalSpy finished(&dialog, &TrainingDialog::jobFinished);
+  QTest::mouseClick(button(dialog, "trainModel"), Qt::LeftButton);
+  QVERIFY(finished.wait(120000));
+  QCOMPARE(trained.count(), 1);
+  auto bundle = f.workspace->loadModel(trained.first().at(0).toString().toStdString());
+  QVERIFY2(bundle.ok(), bundle.ok() ? "" : bundle.errorText().c_str());
+  QVERIFY(!bundle->models.empty());
+  // Not the lists' firsts (order 1, floor 0.03, normal): each group's own defaults.
+  for (const analysis::GroupModel& m : bundle->models) {
+    const analysis::TrainSettings d = analysis::defaultTrainSettings(m.group);
+    QCOMPARE(m.features, d.features);
+    QCOMPARE(m.covariance, d.classifier.gmm.form);
+    QCOMPARE(m.varianceFloor, d.classifier.gmm.varianceFloor);
+    for (const analysis::GaussianMixture& mixture : m.classifier.models())
+      QVERIFY(mixture.components() <= d.classifier.gmm.components);
+    QCOMPARE(m.trainedOn["settings"]["order"].get<int>(), d.classifier.gmm.components);
   }
 }
 

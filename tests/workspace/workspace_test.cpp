@@ -55,12 +55,13 @@ std::int64_t addRun(Workspace& ws, const std::string& name, std::uint64_t seed,
   return out.runId;
 }
 
-analysis::TrainSettings quickSettings() {
+// One quick setting for every group.
+analysis::GroupSettings quickSettings() {
   analysis::TrainSettings s;
   s.classifier.gmm.components = 1;
   s.classifier.gmm.varianceFloor = 0.01;
   s.classifier.gmm.maxIterations = 20;
-  return s;
+  return analysis::GroupSettings::same(s);
 }
 
 // A segment as undo must give it back: range, class and annotator (ids may change).
@@ -463,7 +464,7 @@ TEST(WorkspaceTrain, StoredModelNamesItsProvenance) {
   request.labelSet = "truth";
   request.groups = {SensorGroup::Back};
   request.settings = quickSettings();
-  request.settings.classifier.gmm.seed = 77;
+  request.settings.of(SensorGroup::Back).classifier.gmm.seed = 77;
   auto outcome = f.ws->train(request);
   ASSERT_TRUE(outcome.ok()) << outcome.errorText();
   EXPECT_EQ(outcome->modelName, "truth-1");
@@ -478,10 +479,15 @@ TEST(WorkspaceTrain, StoredModelNamesItsProvenance) {
   EXPECT_EQ(p["split"], "by-run");
   EXPECT_EQ(p["program_version"], std::string(programVersion()));
   EXPECT_FALSE(std::string(programVersion()).empty());
-  EXPECT_EQ(p["settings"]["seed"], 77);
-  EXPECT_EQ(p["settings"]["method"], "gmm");
-  EXPECT_EQ(p["settings"]["order"], 1);
-  EXPECT_EQ(p["settings"]["features"], "normal");
+  // The bundle's provenance holds each trained group's settings; each model its own.
+  ASSERT_TRUE(p["settings"].is_object());
+  EXPECT_EQ(p["settings"].size(), 1u);
+  EXPECT_EQ(p["settings"]["B"]["seed"], 77);
+  EXPECT_EQ(p["settings"]["B"]["method"], "gmm");
+  EXPECT_EQ(p["settings"]["B"]["order"], 1);
+  EXPECT_EQ(p["settings"]["B"]["features"], "normal");
+  ASSERT_EQ(outcome->bundle.models.size(), 1u);
+  EXPECT_EQ(outcome->bundle.models.front().trainedOn["settings"], p["settings"]["B"]);
   std::set<std::string> named;
   for (const char* key : {"train_runs", "test_runs"}) {
     ASSERT_TRUE(p[key].is_array()) << key;
@@ -498,13 +504,16 @@ TEST(WorkspaceTrain, StoredModelNamesItsProvenance) {
   }
   EXPECT_EQ(named, std::set<std::string>(f.names.begin(), f.names.end()));
   EXPECT_EQ(p["test_runs"].size(), 1u);
-  // The metrics are stored too, and the bundle's models carry the same provenance.
+  // The metrics are stored too, and the bundle's models carry the same provenance with their own
+  // group's settings.
   const json metrics = json::parse(m.metricsJson);
   EXPECT_TRUE(metrics.contains("B")) << m.metricsJson;
   auto bundle = f.ws->loadModel("truth-1");
   ASSERT_TRUE(bundle.ok()) << bundle.errorText();
   ASSERT_EQ(bundle->models.size(), 1u);
-  EXPECT_EQ(bundle->models[0].trainedOn, p);
+  json own = p;
+  own["settings"] = p["settings"]["B"];
+  EXPECT_EQ(bundle->models[0].trainedOn, own);
   // The next automatic name is the next free number.
   auto second = f.ws->train(request);
   ASSERT_TRUE(second.ok());

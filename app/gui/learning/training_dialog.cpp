@@ -182,12 +182,20 @@ void TrainingDialog::buildUi() {
   threads_->setSpecialValueText(tr("all cores"));
   form->addRow(tr("Threads:"), threads_);
 
+  groupDefaults_ = new QCheckBox(tr("each group's default settings"));
+  groupDefaults_->setObjectName(QStringLiteral("groupDefaults"));
+  groupDefaults_->setChecked(true);
+  groupDefaults_->setToolTip(
+      tr("Train model uses each group's default order, covariance, floor and features, as "
+         "tactile train does; unticked, the first value of every list above"));
+  form->addRow(tr("Train model with:"), groupDefaults_);
+
   sweepButton_ = new QPushButton(tr("Run sweep"));
   sweepButton_->setObjectName(QStringLiteral("runSweep"));
   sweepButton_->setDefault(true);
   trainButton_ = new QPushButton(tr("Train model"));
   trainButton_->setObjectName(QStringLiteral("trainModel"));
-  trainButton_->setToolTip(tr("Train one model per group with the first value of every list"));
+  trainButton_->setToolTip(tr("Train one model per group and store it in the database"));
   cancelButton_ = new QPushButton(tr("Cancel"));
   cancelButton_->setObjectName(QStringLiteral("cancel"));
   cancelButton_->setEnabled(false);
@@ -412,18 +420,26 @@ Result<workspace::TrainRequest> TrainingDialog::trainRequest() const {
   if (request.split == workspace::SplitMode::ByRun) request.testRuns = runsWithRole(RunRole::Test);
   if (request.trainRuns.empty()) return failure("mark at least one run for training");
   request.groups = g->groups;
-  request.settings.features = g->features.front();
-  analysis::SweepCell first;
-  first.method = g->methods.back();  // GMM when both are chosen
-  first.order = g->orders.front();
-  first.form = g->forms.front();
-  first.varianceFloor = g->varianceFloors.front();
-  first.features = g->features.front();
-  first.seed = g->seeds.front();
-  request.settings.classifier = analysis::cellClassifierOptions(g.value(), first);
-  request.settings.classifier.oneVsRest = true;
-  request.settings.classifier.threads = threads_->value();
-  request.settings.classifier.gmm.threads = threads_->value();
+  if (groupDefaults_->isChecked()) {
+    request.settings = analysis::defaultGroupSettings();
+  } else {
+    analysis::SweepCell first;
+    first.method = g->methods.back();  // GMM when both are chosen
+    first.order = g->orders.front();
+    first.form = g->forms.front();
+    first.varianceFloor = g->varianceFloors.front();
+    first.features = g->features.front();
+    first.seed = g->seeds.front();
+    analysis::TrainSettings settings;
+    settings.features = first.features;
+    settings.classifier = analysis::cellClassifierOptions(g.value(), first);
+    settings.classifier.oneVsRest = true;
+    request.settings = analysis::GroupSettings::same(settings);
+  }
+  for (analysis::TrainSettings& s : request.settings.byGroup) {
+    s.classifier.threads = threads_->value();
+    s.classifier.gmm.threads = threads_->value();
+  }
   request.modelName = name_->text().trimmed().toStdString();
   return request;
 }

@@ -102,6 +102,7 @@ class TrainingDialog : public QDialog {
   QLineEdit* seeds_ = nullptr;
   QLineEdit* name_ = nullptr;
   QSpinBox* threads_ = nullptr;
+  QCheckBox* groupDefaults_ = nullptr;  // Train model: each group's defaults, or the lists' firsts
   QPushButton* sweepButton_ = nullptr;
   QPushButton* trainButton_ = nullptr;
   QPushButton* cancelButton_ = nullptr;
