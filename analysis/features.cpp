@@ -15,12 +15,14 @@ std::string_view featureKindName(FeatureKind kind) {
       return "magnitude";
     case FeatureKind::NormalShear:
       return "normal+shear";
+    case FeatureKind::NormalShearTouch:
+      return "normal+shear+touch";
   }
   return "normal";
 }
 
 std::optional<FeatureKind> parseFeatureKind(std::string_view name) {
-  for (FeatureKind k : {FeatureKind::Normal, FeatureKind::Magnitude, FeatureKind::NormalShear}) {
+  for (FeatureKind k : kFeatureKinds) {
     if (featureKindName(k) == name) return k;
   }
   return std::nullopt;
@@ -28,7 +30,16 @@ std::optional<FeatureKind> parseFeatureKind(std::string_view name) {
 
 int featureDimension(SensorGroup group, FeatureKind kind) {
   const int n = groupInfo(group).sensorCount;
-  return kind == FeatureKind::NormalShear ? 2 * n : n;
+  switch (kind) {
+    case FeatureKind::NormalShear:
+      return 2 * n;
+    case FeatureKind::NormalShearTouch:
+      return 2 * n + kTouchFlags;
+    case FeatureKind::Normal:
+    case FeatureKind::Magnitude:
+      break;
+  }
+  return n;
 }
 
 bool groupIsZero(const RunData& run, std::size_t step, SensorGroup group) {
@@ -56,10 +67,24 @@ void groupFeatures(const RunData& run, std::size_t step, SensorGroup group, Feat
         out[i] = std::hypot(n, s);  // |(n, s)| = sqrt(n^2 + s^2)
         break;
       case FeatureKind::NormalShear:
+      case FeatureKind::NormalShearTouch:
         out[2 * i] = n;
         out[2 * i + 1] = s;
         break;
     }
+  }
+  if (kind != FeatureKind::NormalShearTouch) return;
+  // Flags, not values: the dead-path rule asks whether F, L and R touch, not how hard, and a
+  // pocket of another width presses them differently.
+  double* flags = out + 2 * info.sensorCount;
+  const SensorGroup around[kTouchFlags] = {SensorGroup::Front, SensorGroup::Left,
+                                           SensorGroup::Right};
+  for (int c = 0; c < kTouchFlags; ++c) {
+    const GroupInfo& other = groupInfo(around[c]);
+    bool touches = false;
+    for (int i = 0; i < other.sensorCount && !touches; ++i)
+      touches = values[normalOffset(other.firstSensor + i)] > 0.0;
+    flags[c] = touches ? 1.0 : 0.0;
   }
 }
 

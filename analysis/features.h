@@ -25,12 +25,22 @@ enum class FeatureKind : std::uint8_t {
   Normal,       // the group's n values (default)
   Magnitude,    // sqrt(n^2 + s^2) per sensor
   NormalShear,  // n0, s0, n1, s1, ... per sensor
+  // normal+shear, then three touch flags of the whole robot: 1 when any n value of the front, of
+  // the left side, of the right side is above 0, else 0 (the groups whose joint touch makes a
+  // dead path).
+  NormalShearTouch,
 };
+inline constexpr int kTouchFlags = 3;
+inline constexpr std::array<FeatureKind, 4> kFeatureKinds{
+    FeatureKind::Normal, FeatureKind::Magnitude, FeatureKind::NormalShear,
+    FeatureKind::NormalShearTouch};
 
-std::string_view featureKindName(FeatureKind kind);  // "normal", "magnitude", "normal+shear"
+// "normal", "magnitude", "normal+shear", "normal+shear+touch".
+std::string_view featureKindName(FeatureKind kind);
 std::optional<FeatureKind> parseFeatureKind(std::string_view name);
 
-// Dimension D of a group's feature vector: sensorCount, or 2 * sensorCount for normal+shear.
+// Dimension D of a group's feature vector: sensorCount, 2 * sensorCount for normal+shear, plus
+// kTouchFlags with the touch flags.
 int featureDimension(SensorGroup group, FeatureKind kind);
 
 // True when every n and s value of the group is exactly zero at `step`: NoContact by rule, and no

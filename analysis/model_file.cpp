@@ -169,7 +169,8 @@ GroupModel modelOf(const json& v, const std::string& path) {
   const std::optional<FeatureKind> kind = parseFeatureKind(featureName);
   if (!kind) {
     fail(path + ".features",
-         "expected normal, magnitude or normal+shear, found '" + featureName + "'");
+         "expected normal, magnitude, normal+shear or normal+shear+touch, found '" + featureName +
+             "'");
   }
   model.features = *kind;
   const int dim = featureDimension(model.group, model.features);

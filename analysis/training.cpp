@@ -69,25 +69,29 @@ namespace {
 
 struct GroupDefault {
   SensorGroup group;
+  FeatureKind features;
   int order;
   double floor;
 };
 
-// The setting with the best mean balanced accuracy over two validation corpora (`simulate --plan
-// training --runs 12 --seed 2000` and `--seed 3000`) and three seeds each, trained on `--runs 40
-// --seed 1` with 3 restarts, among orders 1-16, the four forms, floors 1e-4..1 and the feature
-// kinds. normal+shear and nodal-full won in every group: a dome pressed flat on a wall has a
-// fixed shear-to-normal ratio set by its angle to the wall, one rolling over a vertex does not,
-// and a full covariance with a small floor keeps that thin line.
+// Per group, the setting with the best mean balanced accuracy over two validation corpora
+// (`simulate --plan training --runs 12 --seed 2000` and `--seed 3000`) and fit seeds 1-3, trained
+// on `--runs 40 --seed 1` with 3 restarts (docs/learning.md#training-defaults). Nodal-full won in
+// every group: a dome pressed flat on a wall has a fixed shear-to-normal ratio set by its angle to
+// the wall, one rolling over a vertex does not, and a full covariance with a small floor keeps
+// that thin line. The touch flags of F, L and R won in every group that can see a dead path, and
+// in B; the rear corners did better without them.
+constexpr FeatureKind kShear = FeatureKind::NormalShear;
+constexpr FeatureKind kTouch = FeatureKind::NormalShearTouch;
 constexpr std::array<GroupDefault, kGroupCount> kGroupDefaults{{
-    {SensorGroup::Front, 16, 0.03},
-    {SensorGroup::FrontLeftCorner, 4, 1e-4},
-    {SensorGroup::Left, 16, 0.1},
-    {SensorGroup::RearLeftCorner, 4, 1e-3},
-    {SensorGroup::Back, 16, 1e-4},
-    {SensorGroup::RearRightCorner, 8, 1e-4},
-    {SensorGroup::Right, 16, 0.1},
-    {SensorGroup::FrontRightCorner, 4, 1e-4},
+    {SensorGroup::Front, kTouch, 16, 0.01},
+    {SensorGroup::FrontLeftCorner, kTouch, 8, 0.01},
+    {SensorGroup::Left, kTouch, 8, 0.01},
+    {SensorGroup::RearLeftCorner, kShear, 4, 1e-3},
+    {SensorGroup::Back, kTouch, 2, 1e-4},
+    {SensorGroup::RearRightCorner, kShear, 4, 1e-4},
+    {SensorGroup::Right, kTouch, 16, 0.1},
+    {SensorGroup::FrontRightCorner, kTouch, 8, 1e-3},
 }};
 
 constexpr bool inGroupOrder() {
@@ -102,7 +106,7 @@ static_assert(inGroupOrder(), "kGroupDefaults lists the groups in groupIndex() o
 TrainSettings defaultTrainSettings(SensorGroup group) {
   const GroupDefault& d = kGroupDefaults[static_cast<std::size_t>(groupIndex(group))];
   TrainSettings s;
-  s.features = FeatureKind::NormalShear;
+  s.features = d.features;
   s.classifier.method = ClassifierMethod::Gmm;
   s.classifier.gmm.form = CovarianceForm::NodalFull;
   s.classifier.gmm.components = d.order;

@@ -34,9 +34,10 @@ struct GroupSettings {
   TrainSettings& of(SensorGroup group) { return byGroup[groupIndex(group)]; }
 };
 
-// What `tactile train` and the workbench train with unless told otherwise: GMM, nodal-full, on
-// normal+shear features, k-means++ with 3 restarts, seed 1, and per group the order and variance
-// floor (clamp) that did best on two validation corpora apart from the one scores are quoted on
+// What `tactile train` and the workbench train with unless told otherwise: GMM, nodal-full,
+// k-means++ with 3 restarts, seed 1, and per group the feature kind (normal+shear, with the touch
+// flags where the group can see a dead path), order and variance floor (clamp) that did best on
+// two validation corpora apart from the one scores are quoted on
 // (docs/learning.md#training-defaults).
 GroupSettings defaultGroupSettings();
 TrainSettings defaultTrainSettings(SensorGroup group);

@@ -230,6 +230,15 @@ void smoothTruth(std::vector<ContactClass>& truth, std::size_t steps) {
         }
         s = e;
       }
+      // A short first segment has no segment before it: it takes the class of the one after.
+      std::size_t first = k;
+      while (first < end && at(first, g) == at(k, g))
+        ++first;
+      if (first < end && first - k < static_cast<std::size_t>(kMinTruthSegmentSteps)) {
+        const ContactClass next = at(first, g);
+        for (std::size_t i = k; i < first; ++i)
+          at(i, g) = next;
+      }
       k = end;
     }
   }

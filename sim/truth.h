@@ -21,7 +21,8 @@
 //                  an edge it touches lies within a dome radius of a touching dome's centre.
 //   7. Wall        otherwise: all contacts on one straight wall.
 // Then, over the whole run (smoothTruth), a segment shorter than kMinTruthSegmentSteps inside one
-// contact episode of a group takes the class of the segment before it.
+// contact episode of a group takes the class of the segment before it (the episode's first
+// segment, if short, that of the segment after it).
 #pragma once
 
 #include <array>
@@ -39,7 +40,8 @@ namespace tactile::sim {
 class World;
 struct PoseContact;
 
-// Shorter segments within one contact episode are merged into the segment before them.
+// Shorter segments within one contact episode are merged into the segment before them (a short
+// first segment into the one after).
 inline constexpr int kMinTruthSegmentSteps = 3;
 
 class TruthTracker {
@@ -67,7 +69,7 @@ class TruthTracker {
 // Applies the merge rule to a run's truth (steps * kGroupCount classes, step-major as in
 // RunData::truth): within each contact episode (maximal steps of one group not NoContact), a
 // segment shorter than kMinTruthSegmentSteps that is not the episode's first takes the class of
-// the segment before it.
+// the segment before it; then a short first segment followed by another takes that one's class.
 void smoothTruth(std::vector<ContactClass>& truth, std::size_t steps);
 
 }  // namespace tactile::sim

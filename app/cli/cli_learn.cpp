@@ -200,7 +200,9 @@ std::vector<T> parseNames(const std::vector<std::string>& names, Parse parse, co
 
 FeatureKind parseFeatures(const std::string& name) {
   const auto f = analysis::parseFeatureKind(name);
-  if (!f) throw UsageError("unknown --features '" + name + "' (normal, magnitude, normal+shear)");
+  if (!f)
+    throw UsageError("unknown --features '" + name +
+                     "' (normal, magnitude, normal+shear, normal+shear+touch)");
   return *f;
 }
 
@@ -972,8 +974,9 @@ void registerLearnVerbs(CLI::App& app, CLI::App& /*bench*/) {
       o->default_str("");
       o->description(o->get_description() + " (default: each group's own)");
     }
-    cmd->add_option("--features", args->features,
-                    "normal, magnitude or normal+shear (default: each group's own)");
+    cmd->add_option(
+        "--features", args->features,
+        "normal, magnitude, normal+shear or normal+shear+touch (default: each group's own)");
     cmd->add_option("--groups", args->groups, "Groups to train (default all), e.g. R,L")
         ->delimiter(',');
     cmd->add_option("--out", args->out, "Model bundle JSON to write (checked before training)");

@@ -22,10 +22,11 @@ RunData oneStepRun() {
 }
 
 TEST(Features, KindNamesRoundTrip) {
-  for (FeatureKind k : {FeatureKind::Normal, FeatureKind::Magnitude, FeatureKind::NormalShear}) {
+  for (FeatureKind k : kFeatureKinds) {
     ASSERT_TRUE(parseFeatureKind(featureKindName(k)).has_value());
     EXPECT_EQ(*parseFeatureKind(featureKindName(k)), k);
   }
+  EXPECT_EQ(featureKindName(FeatureKind::NormalShearTouch), "normal+shear+touch");
   EXPECT_FALSE(parseFeatureKind("Normal").has_value());
   EXPECT_FALSE(parseFeatureKind("").has_value());
 }
@@ -35,6 +36,8 @@ TEST(Features, DimensionPerGroupAndKind) {
     EXPECT_EQ(featureDimension(info.group, FeatureKind::Normal), info.sensorCount);
     EXPECT_EQ(featureDimension(info.group, FeatureKind::Magnitude), info.sensorCount);
     EXPECT_EQ(featureDimension(info.group, FeatureKind::NormalShear), 2 * info.sensorCount);
+    EXPECT_EQ(featureDimension(info.group, FeatureKind::NormalShearTouch),
+              2 * info.sensorCount + 3);
   }
 }
 
@@ -64,6 +67,28 @@ TEST(Features, NormalShearInterleaves) {
     EXPECT_EQ(f[static_cast<std::size_t>(2 * i)], run.normal(0, 32 + i));
     EXPECT_EQ(f[static_cast<std::size_t>(2 * i + 1)], run.shear(0, 32 + i));
   }
+}
+
+TEST(Features, TouchFlagsSayWhetherFrontLeftAndRightRead) {
+  RunData run;
+  auto values = testdata::zeroStep();
+  values[static_cast<std::size_t>(normalOffset(3))] = 0.4;       // front
+  values[static_cast<std::size_t>(normalOffset(5))] = 0.9;       // front
+  values[static_cast<std::size_t>(shearOffset(34))] = 5.0;       // right side shear: not counted
+  values[static_cast<std::size_t>(normalOffset(9))] = 7.0;       // front-left corner: not counted
+  values[static_cast<std::size_t>(normalOffset(12))] = 1e-9;     // left side, barely
+  values[static_cast<std::size_t>(normalOffset(24))] = 9.0;      // back: not counted
+  run.appendStep(0, 0, 0, 0, 0, false, values.data(), nullptr);  // right side n all zero
+
+  std::vector<double> f(7, -1.0);
+  groupFeatures(run, 0, SensorGroup::FrontLeftCorner, FeatureKind::NormalShearTouch, f.data());
+  EXPECT_EQ(f[0], 0.0);  // sensor 8: n, s
+  EXPECT_EQ(f[1], 0.0);
+  EXPECT_EQ(f[2], 7.0);  // sensor 9: n, s
+  EXPECT_EQ(f[3], 0.0);
+  EXPECT_EQ(f[4], 1.0);  // front touches
+  EXPECT_EQ(f[5], 1.0);  // left side touches, however lightly
+  EXPECT_EQ(f[6], 0.0);  // right side: shear alone is not a touch
 }
 
 TEST(Features, ZeroGroupIsNoContactByRule) {

@@ -52,7 +52,17 @@ TEST(Training, DefaultsAreEachGroupsOwnTunedGmm) {
   bool ordersDiffer = false;
   for (const GroupInfo& g : kSensorGroups) {
     const TrainSettings& s = d.of(g.group);
-    EXPECT_EQ(s.features, FeatureKind::NormalShear) << g.shortName;
+    // The touch flags of F, L and R in every group that can see a dead path; the others choose.
+    const bool seesDeadPath = g.group == SensorGroup::Front || g.group == SensorGroup::Left ||
+                              g.group == SensorGroup::Right ||
+                              g.group == SensorGroup::FrontLeftCorner ||
+                              g.group == SensorGroup::FrontRightCorner;
+    if (seesDeadPath) {
+      EXPECT_EQ(s.features, FeatureKind::NormalShearTouch) << g.shortName;
+    }
+    EXPECT_TRUE(s.features == FeatureKind::NormalShearTouch ||
+                s.features == FeatureKind::NormalShear)
+        << g.shortName;
     EXPECT_EQ(s.classifier.method, ClassifierMethod::Gmm) << g.shortName;
     EXPECT_EQ(s.classifier.gmm.form, CovarianceForm::NodalFull) << g.shortName;
     EXPECT_EQ(s.classifier.gmm.restarts, 3) << g.shortName;

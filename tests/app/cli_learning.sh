@@ -86,8 +86,8 @@ lacks train.json '"dropped_components":0'
 "$T" train --runs runs/run_0000.csv runs/run_0001.csv --groups R,F --order 4 --out d.json \
   > /dev/null 2>&1 || fail "train --order 4 exited $?"
 "$T" report d.json > d.txt || fail "report exited $?"
-grep -Eq '^R +normal\+shear +gmm +nodal-full +4 +0\.1 ' d.txt || fail "R defaults: $(cat d.txt)"
-grep -Eq '^F +normal\+shear +gmm +nodal-full +4 +0\.03 ' d.txt || fail "F defaults: $(cat d.txt)"
+grep -Eq '^R +normal\+shear\+touch +gmm +nodal-full +4 +0\.1 ' d.txt || fail "R defaults: $(cat d.txt)"
+grep -Eq '^F +normal\+shear\+touch +gmm +nodal-full +4 +0\.01 ' d.txt || fail "F defaults: $(cat d.txt)"
 "$T" train --runs runs/run_0000.csv runs/run_0001.csv --groups R,F --floor 0.5 --cov nodal-diag \
   --features normal --out e.json > /dev/null 2>&1 || fail "train --floor exited $?"
 "$T" report e.json > e.txt || fail "report exited $?"

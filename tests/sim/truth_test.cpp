@@ -216,9 +216,9 @@ TEST(Truth, RollingOnAndOffAVertexStaysCorner) {
 }
 
 TEST(Truth, SmoothingMergesShortSegmentsInsideAContactEpisode) {
-  // One group's classes over 20 steps; the other groups stay NoContact.
-  const std::string in = "..WWWLWWCCCWLW..LLW.";
-  const std::string out = "..WWWWWWCCCCCC..LLL.";
+  // One group's classes over 38 steps; the other groups stay NoContact.
+  const std::string in = "..WWWLWWCCCWLW..LLW.WCCCC.WW.CCWWWWLL.";
+  const std::string out = "..WWWWWWCCCCCC..LLL.CCCCC.WW.WWWWWWWW.";
   const auto decode = [](char c) {
     switch (c) {
       case 'W':

@@ -159,8 +159,7 @@ void TrainingDialog::buildUi() {
   form->addRow(tr("Variance floors:"), floors_);
 
   auto* featureRow = new QHBoxLayout;
-  for (analysis::FeatureKind k : {analysis::FeatureKind::Normal, analysis::FeatureKind::Magnitude,
-                                  analysis::FeatureKind::NormalShear}) {
+  for (analysis::FeatureKind k : analysis::kFeatureKinds) {
     auto* box = new QCheckBox(qs(analysis::featureKindName(k)));
     box->setChecked(k == analysis::FeatureKind::Normal);
     features_.push_back(box);
@@ -374,11 +373,8 @@ Result<analysis::SweepGrid> TrainingDialog::grid() const {
       return failure("Variance floors: " + QString::number(f).toStdString() + " is negative");
   g.varianceFloors = floors.value();
   g.features.clear();
-  const analysis::FeatureKind kinds[] = {analysis::FeatureKind::Normal,
-                                         analysis::FeatureKind::Magnitude,
-                                         analysis::FeatureKind::NormalShear};
   for (std::size_t i = 0; i < features_.size(); ++i)
-    if (features_[i]->isChecked()) g.features.push_back(kinds[i]);
+    if (features_[i]->isChecked()) g.features.push_back(analysis::kFeatureKinds[i]);
   if (g.features.empty()) return failure("choose at least one feature kind");
   auto seeds = parseNumbers(seeds_->text(), tr("Seeds"));
   if (!seeds) return seeds.error();
