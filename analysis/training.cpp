@@ -80,18 +80,18 @@ struct GroupDefault {
 // fewer features win. Nodal-full won in every group: a dome pressed flat on a wall has a fixed
 // shear-to-normal ratio set by its angle to the wall, one rolling over a vertex does not, and a
 // full covariance with a small floor keeps that thin line. The touch flags of F, L and R won in
-// every group that can see a dead path; B and the rear corners do as well or better without.
+// every group that can see a dead path, and in RRC; B and RLC do as well or better without.
 constexpr FeatureKind kShear = FeatureKind::NormalShear;
 constexpr FeatureKind kTouch = FeatureKind::NormalShearTouch;
 constexpr std::array<GroupDefault, kGroupCount> kGroupDefaults{{
     {SensorGroup::Front, kTouch, 16, 0.01},
     {SensorGroup::FrontLeftCorner, kTouch, 8, 1e-4},
     {SensorGroup::Left, kTouch, 8, 0.01},
-    {SensorGroup::RearLeftCorner, kShear, 4, 1e-3},
-    {SensorGroup::Back, kShear, 2, 0.03},
-    {SensorGroup::RearRightCorner, kShear, 4, 1e-4},
+    {SensorGroup::RearLeftCorner, kShear, 4, 1e-4},
+    {SensorGroup::Back, kShear, 2, 1e-3},
+    {SensorGroup::RearRightCorner, kTouch, 16, 0.01},
     {SensorGroup::Right, kTouch, 16, 0.1},
-    {SensorGroup::FrontRightCorner, kTouch, 8, 1e-3},
+    {SensorGroup::FrontRightCorner, kTouch, 8, 1e-4},
 }};
 
 constexpr bool inGroupOrder() {

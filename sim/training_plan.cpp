@@ -138,34 +138,162 @@ PlannedRun insideCorner(Draw& draw, bool left) {
   return run;
 }
 
-PlannedRun tip(Draw& draw, double aheadLateral, double behindLateral) {
-  // Convex tips (squares turned 45 degrees) ahead and behind, the given units to the left of the
-  // robot's axis: 0 meets the front or back edge, about 40 a corner group.
-  const double gapAhead = draw.uniform(5.0, 50.0);
-  const double gapBehind = draw.uniform(5.0, 50.0);
-  PlannedRun run;
-  const auto diamond = [&](double tipX, double dir, double lateral) {
-    const double half = draw.uniform(40.0, 90.0);
-    const double cx = tipX + dir * half;
-    const double cy = kAxleY + lateral + draw.uniform(-5.0, 5.0);
-    Obstacle d{
-        {Vec2(cx - half, cy), Vec2(cx, cy - half), Vec2(cx + half, cy), Vec2(cx, cy + half)}};
-    return turned(d, cx, cy, draw.uniform(-0.2, 0.2));
+// Plays a list of approaches to obstacles placed round the start: turn in place to a heading,
+// drive (forwards or backwards) until blocked or a distance is covered, push with small turns
+// either way (stopping if that slides 25 units along the obstacle), then drive back, steering
+// toward the start once clear, until the start is abeam. Unlike ScriptDriver it steers by the
+// pose, so every approach begins from about the start whatever the pushing did to the heading.
+class ApproachDriver : public Driver {
+ public:
+  struct Approach {
+    double heading = 0.0;    // world frame, radians
+    double dir = 1.0;        // +1 front first, -1 back first
+    double v = 20.0;         // units/s
+    double maxTravel = 0.0;  // give the approach up after this distance without being blocked
+    std::vector<Leg> push;   // played once blocked (speeds signed already)
   };
-  run.scene = openRoom({diamond(kAxleX + kFront + kDome + gapAhead, 1.0, aheadLateral),
-                        diamond(kAxleX - kBack - kDome - gapBehind, -1.0, behindLateral)});
-  std::vector<Leg> legs;
-  const int rounds = draw.integer(4, 6);
-  for (int i = 0; i < rounds; ++i) {
-    for (const auto& [dir, gap] : {std::pair{1.0, gapAhead}, std::pair{-1.0, gapBehind}}) {
-      const double v = draw.uniform(10.0, 40.0);
-      legs.push_back({{dir * v, 0.0}, static_cast<int>((gap + 10.0) / (v * 0.1)) + 3});
-      pushAndWiggle(legs, draw, dir * v * 0.4, draw.integer(50, 100));
-      legs.push_back({{-dir * v, 0.0}, static_cast<int>((gap + 10.0) / (v * 0.1))});
+  explicit ApproachDriver(std::vector<Approach> approaches) : approaches_(std::move(approaches)) {}
+  std::string name() const override { return "script"; }
+  bool gaveUp() const override { return index_ >= approaches_.size(); }
+
+  Command next(const Observation& obs) override {
+    // Stuck while turning or backing (the pushing moved the robot somewhere it cannot turn): end
+    // the run rather than grind against the obstacle.
+    stuck_ = obs.blocked && (phase_ == Phase::Turn || phase_ == Phase::Back) ? stuck_ + 1 : 0;
+    if (stuck_ > kMaxStuckSteps) index_ = approaches_.size();
+    while (index_ < approaches_.size()) {
+      const Approach& a = approaches_[index_];
+      const Vec2 at(obs.pose.x, obs.pose.y);
+      const Vec2 along(std::cos(obs.pose.theta), std::sin(obs.pose.theta));
+      ++phaseSteps_;
+      switch (phase_) {
+        case Phase::Turn: {
+          const double err = std::remainder(a.heading - obs.pose.theta, 2.0 * std::numbers::pi);
+          if (std::abs(err) > 1e-3 && phaseSteps_ <= kMaxPhaseSteps)
+            return {0.0, std::clamp(err / obs.dtSeconds, -kTurnRate, kTurnRate)};
+          enter(Phase::Drive);
+          from_ = at;
+          continue;
+        }
+        case Phase::Drive:
+          if (phaseSteps_ > 1 &&
+              (obs.blocked || (at - from_).norm() >= a.maxTravel || phaseSteps_ > kMaxPhaseSteps)) {
+            enter(Phase::Push);
+            leg_ = 0;
+            legDone_ = 0;
+            from_ = at;
+            continue;
+          }
+          return {a.dir * a.v, 0.0};
+        case Phase::Push:
+          // A push that slides off the tip would drive on into the open: stop it 25 units on.
+          if ((at - from_).norm() > kMaxSlide) leg_ = a.push.size();
+          while (leg_ < a.push.size() && legDone_ >= a.push[leg_].steps) {
+            ++leg_;
+            legDone_ = 0;
+          }
+          if (leg_ < a.push.size()) {
+            ++legDone_;
+            return a.push[leg_].command;
+          }
+          enter(Phase::Back);
+          continue;
+        case Phase::Back: {
+          // Back the way it came while the start lies ahead along the motion; once 15 units off
+          // the obstacle, steer so the motion points at the start (the pushing may have turned
+          // the robot), so the next turn in place happens there.
+          if (phaseSteps_ == 1) from_ = at;
+          const Vec2 start(obs.start.x, obs.start.y);
+          const Vec2 toStart = start - at;
+          const double ahead = toStart.dot(-a.dir * along);
+          if (ahead > 0.5 * a.v * obs.dtSeconds && phaseSteps_ <= kMaxPhaseSteps) {
+            double omega = 0.0;
+            if ((at - from_).norm() > 15.0) {
+              const double want =
+                  std::atan2(toStart.y(), toStart.x()) + (a.dir > 0 ? std::numbers::pi : 0.0);
+              omega = std::clamp(
+                  2.0 * std::remainder(want - obs.pose.theta, 2.0 * std::numbers::pi), -0.5, 0.5);
+            }
+            return {-a.dir * a.v, omega};
+          }
+          enter(Phase::Turn);
+          ++index_;
+          continue;
+        }
+      }
+    }
+    return {};
+  }
+
+ private:
+  enum class Phase { Turn, Drive, Push, Back };
+  static constexpr int kMaxPhaseSteps = 600;
+  static constexpr int kMaxStuckSteps = 20;
+  static constexpr double kMaxSlide = 25.0;
+  static constexpr double kTurnRate = 1.0;  // rad/s
+  void enter(Phase p) {
+    phase_ = p;
+    phaseSteps_ = 0;
+  }
+  std::vector<Approach> approaches_;
+  std::size_t index_ = 0;
+  Phase phase_ = Phase::Turn;
+  int phaseSteps_ = 0;
+  Vec2 from_ = Vec2::Zero();
+  std::size_t leg_ = 0;
+  int legDone_ = 0;
+  int stuck_ = 0;
+};
+
+PlannedRun tips(Draw& draw, std::size_t round) {
+  // Five convex tips (squares turned 45 degrees, each turned again about its tip) round the start,
+  // their tips 140-165 units from the rear axle, clear of the 126 units a turn in place sweeps.
+  // Each tip sits off the ray from the start by its own lateral offset; the offsets are stratified
+  // over five bands of -45..45, so one run meets tips on every part of the front and the back, and
+  // on the corners. The robot turns to each tip in turn (heading jittered by up to 0.1 rad), drives
+  // into it front first, pushes with small turns, comes back to the start, then does the same
+  // with the back.
+  constexpr int kTips = 5;
+  const double first = draw.uniform(0.0, 2.0 * std::numbers::pi);
+  std::array<int, kTips> band{0, 1, 2, 3, 4};
+  std::rotate(band.begin(), band.begin() + static_cast<long>(round % kTips), band.end());
+  for (int i = kTips - 1; i > 0; --i)
+    std::swap(band[static_cast<std::size_t>(i)],
+              band[static_cast<std::size_t>(draw.integer(0, i))]);
+  PlannedRun run;
+  std::vector<Obstacle> obstacles;
+  std::array<double, kTips> ray{}, reach{};
+  for (int k = 0; k < kTips; ++k) {
+    const std::size_t ks = static_cast<std::size_t>(k);
+    ray[ks] = first + 2.0 * std::numbers::pi * k / kTips;
+    reach[ks] = draw.uniform(140.0, 165.0);
+    const double lateral = -45.0 + 18.0 * (band[ks] + draw.uniform(0.0, 1.0));
+    const double half = draw.uniform(35.0, 65.0);
+    const Vec2 u(std::cos(ray[ks]), std::sin(ray[ks]));
+    const Vec2 n(-u.y(), u.x());
+    const Vec2 tip = Vec2(kAxleX, kAxleY) + reach[ks] * u + lateral * n;
+    const Vec2 c = tip + half * u;
+    Obstacle d{{tip, c + half * n, c + half * u, c - half * n}};
+    obstacles.push_back(turned(d, tip.x(), tip.y(), draw.uniform(-0.25, 0.25)));
+  }
+  run.scene = openRoom(std::move(obstacles));
+  // Front and back in turn, so a run that ends early (stuck) has met tips with both.
+  std::vector<ApproachDriver::Approach> approaches;
+  for (int k = 0; k < kTips; ++k) {
+    for (const double dir : {1.0, -1.0}) {
+      const std::size_t ks = static_cast<std::size_t>(k);
+      ApproachDriver::Approach a;
+      a.dir = dir;
+      a.heading = ray[ks] + (dir > 0 ? 0.0 : std::numbers::pi) + draw.uniform(-0.1, 0.1);
+      a.v = draw.uniform(10.0, 40.0);
+      a.maxTravel = reach[ks] - (dir > 0 ? kFront : kBack) - kDome + 30.0;
+      pushAndWiggle(a.push, draw, dir * a.v * 0.4, draw.integer(50, 100));
+      approaches.push_back(std::move(a));
     }
   }
-  run.driver = std::make_unique<ScriptDriver>(std::move(legs));
-  run.kind = "tip";
+  run.driver = std::make_unique<ApproachDriver>(std::move(approaches));
+  run.kind = "tips";
+  run.options.maxSteps = 6000;
   return run;
 }
 
@@ -180,8 +308,14 @@ PlannedRun reverse(Draw& draw, int corner) {
     walls.push_back(side > 0 ? rect(bx - 60, sy, kAxleX + 20, sy + 60)
                              : rect(bx - 60, sy - 60, kAxleX + 20, sy));
   }
+  // With a corner, the back wall is turned so that its end at the side wall is the nearer one:
+  // the corner group is then what backs into it, pressed on both walls. Turned the other way,
+  // or by less than about 0.03 rad, the middle of the back met the wall first in 5 of 10 such runs
+  // and the corner group never felt the corner.
+  const double turn =
+      corner == 0 ? draw.uniform(-0.1, 0.1) : (corner > 0 ? -1.0 : 1.0) * draw.uniform(0.03, 0.1);
   PlannedRun run;
-  run.scene = openRoom({turned(walls[0], bx, kAxleY, draw.uniform(-0.1, 0.1))});
+  run.scene = openRoom({turned(walls[0], bx, kAxleY, turn)});
   for (std::size_t i = 1; i < walls.size(); ++i)
     run.scene.obstacles.push_back(walls[i]);
   std::vector<Leg> legs;
@@ -310,8 +444,7 @@ PlannedRun planTrainingRun(std::uint64_t seed, std::size_t index) {
       run = insideCorner(draw, round % 2 == 0);
       break;
     case 4:
-      run = tip(draw, round % 2 == 0 ? 40.0 : -40.0, round % 2 == 0 ? -40.0 : 40.0);
-      break;
+      return tips(draw, round);
     case 5:
       run = reverse(draw, std::array{1, -1, 0}[round % 3]);
       break;
@@ -322,8 +455,7 @@ PlannedRun planTrainingRun(std::uint64_t seed, std::size_t index) {
       run = wallEnd(draw, true, round);
       break;
     case 8:
-      run = tip(draw, 0.0, 0.0);
-      break;
+      return tips(draw, round + 2);
     default:
       run = sideTips(draw);
       break;

@@ -9,14 +9,17 @@
 //                 the walls' ends coming in)
 //   inside-corner the robot pushes into a concave corner ahead at an angle, wiggling, then backs
 //                 off; repeated (front Wall and Corner, corner groups Corner, sides Wall)
-//   tip           convex tips (squares turned 45 degrees) ahead and behind at opposite corners,
-//                 sides swapped in turn, pushed and rolled over (Corner on the corner groups)
+//   tips          five convex tips (squares turned 45 degrees) round the start, each off its ray
+//                 by its own lateral offset (stratified over -45..45): the robot turns in place to
+//                 each, drives in front first, pushes, comes back; then the same with the back
+//                 (Corner on every front and back group, at every place along them)
 //   reverse       the robot backs into a concave corner behind it (left, right) or a plain wall, in
-//                 turn (back Wall and Corner, rear corners)
+//                 turn; the back wall is turned so its end at the side wall is the nearer (back
+//                 Wall and Corner, rear corners Corner on both walls)
 //   pocket        a dead-end pocket whose sides press the side domes: in to the end, push, back
 //                 out (DeadPath on F, FLC, FRC, L, R)
 //   slow wall-end the wall-end corridor narrower, at speeds 5..15 (more corner-group contact)
-//   middle tip    tips ahead and behind on the robot's axis (Corner on F and B)
+//   tips          a second run of the kind above (its own offsets)
 //   side tip      rows of tips along both sides, driven past and back (Corner on the side and
 //                 corner groups)
 // Start poses, speeds, angles, gaps and sizes are drawn from the seed; the corridor and pocket

@@ -1,5 +1,7 @@
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <memory>
 #include <mutex>
 #include <string>
@@ -60,6 +62,46 @@ TEST(TrainingPlan, ThePocketRunShowsDeadPathInFrontAndSideGroups) {
   EXPECT_EQ(stats.classSteps[static_cast<std::size_t>(groupIndex(SensorGroup::Back))]
                             [static_cast<std::size_t>(ContactClass::DeadPath)],
             0);
+}
+
+// A tips run meets five tips round the start with the front and then with the back, each at its
+// own lateral offset: every approach ends in contact, and between approaches the robot comes back
+// to the start, so the tips' reach (140 units and more) stays clear of a turn in place.
+TEST(TrainingPlan, TipsRunsMeetEveryTipWithTheFrontAndTheBack) {
+  for (std::size_t index : {4u, 8u}) {
+    ASSERT_EQ(planTrainingRun(1, index).kind, "tips");
+    const RunData run = simulatePlanned(1, index);
+    int episodes = 0;
+    bool touching = false;
+    double farthest = 0.0;
+    for (std::size_t k = 0; k < run.stepCount(); ++k) {
+      bool any = false;
+      for (int d = 0; d < kSensorCount; ++d)
+        any = any || run.normal(k, d) > 0.0;
+      episodes += any && !touching;
+      touching = any;
+      if (run.v[k] == 0.0 && run.omega[k] != 0.0) {  // turning in place
+        const double dx = run.x[k] - run.x[0], dy = run.y[k] - run.y[0];
+        farthest = std::max(farthest, std::hypot(dx, dy));
+      }
+    }
+    // Ten approaches; a push with wiggles may lift off and touch again.
+    EXPECT_GE(episodes, 10) << index;
+    // Turns in place happen near the start: 140 units of reach less 126 swept leave 14.
+    EXPECT_LT(farthest, 14.0) << index;
+  }
+}
+
+// The reverse runs with a corner behind turn the back wall so that its end at the side wall is
+// the nearer: the corner group backs into the concave corner, both its domes pressed.
+TEST(TrainingPlan, ReverseRunsWithACornerPressTheCornerGroupOnBothWalls) {
+  const RunData run = simulatePlanned(1, 5);  // the first reverse run: corner on the left
+  int both = 0;
+  for (std::size_t k = 0; k < run.stepCount(); ++k) {
+    both += run.truthAt(k, SensorGroup::RearLeftCorner) == ContactClass::Corner &&
+            run.normal(k, 20) > 0.0 && run.normal(k, 21) > 0.0;
+  }
+  EXPECT_GT(both, 30);
 }
 
 // The corpus recipe at N = 40: every group has at least 1,000 contact steps of each class it
