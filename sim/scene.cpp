@@ -3,6 +3,8 @@
 #include <cmath>
 #include <nlohmann/json.hpp>
 
+#include "sim/polygon_check.h"
+
 namespace tactile::sim {
 namespace {
 
@@ -48,31 +50,11 @@ std::string validatePolygon(const std::vector<Vec2>& poly, std::size_t index,
     }
   }
   // Non-adjacent edges must not touch; adjacent edges may only share their common vertex.
-  for (std::size_t i = 0; i < n; ++i) {
-    const Vec2& a = poly[i];
-    const Vec2& b2 = poly[(i + 1) % n];
-    for (std::size_t j = i + 1; j < n; ++j) {
-      const Vec2& c = poly[j];
-      const Vec2& d = poly[(j + 1) % n];
-      const bool adjacent = (j == i + 1) || (i == 0 && j == n - 1);
-      bool bad = false;
-      if (adjacent) {
-        // Shared vertex is allowed; overlapping (folding back) is not.
-        const Vec2& shared = (j == i + 1) ? b2 : a;
-        const Vec2& other1 = (j == i + 1) ? a : b2;
-        const Vec2& other2 = (j == i + 1) ? d : c;
-        const Vec2 u = other1 - shared;
-        const Vec2 w = other2 - shared;
-        bad = cross2(u, w) == 0.0 && u.dot(w) > 0.0;
-      } else {
-        bad = segmentsIntersect(a, b2, c, d);
-      }
-      if (bad) {
-        return label + ": edge from vertex " + std::to_string(i) + " to vertex " +
-               std::to_string((i + 1) % n) + " crosses edge from vertex " + std::to_string(j) +
-               " to vertex " + std::to_string((j + 1) % n) + " (self-intersecting polygon)";
-      }
-    }
+  if (const std::optional<EdgePair> contact = polygonSelfContact(poly)) {
+    const auto [i, j] = *contact;
+    return label + ": edge from vertex " + std::to_string(i) + " to vertex " +
+           std::to_string((i + 1) % n) + " crosses edge from vertex " + std::to_string(j) +
+           " to vertex " + std::to_string((j + 1) % n) + " (self-intersecting polygon)";
   }
   double area2 = 0.0;
   for (std::size_t v = 0; v < n; ++v)
@@ -82,6 +64,51 @@ std::string validatePolygon(const std::vector<Vec2>& poly, std::size_t index,
 }
 
 }  // namespace
+
+std::string sceneNameProblem(std::string_view name) {
+  if (name.empty()) return "a scene name must not be empty";
+  if (name.size() > kMaxSceneNameBytes) {
+    return "a scene name has at most " + std::to_string(kMaxSceneNameBytes) + " bytes, found " +
+           std::to_string(name.size());
+  }
+  for (std::size_t i = 0; i < name.size();) {
+    const auto c = static_cast<unsigned char>(name[i]);
+    if (c < 0x20 || c == 0x7f) {
+      return "a scene name may hold no control character (a line break, a tab, ...), found byte " +
+             std::to_string(c) + " at byte " + std::to_string(i);
+    }
+    if (c == ',') return "a scene name may hold no comma";
+    // Well-formed UTF-8 (RFC 3629): the sequence length from the lead byte, continuation bytes
+    // 10xxxxxx, no overlong forms, no surrogates, nothing above U+10FFFF.
+    std::size_t length = 1;
+    unsigned char low = 0x80;
+    unsigned char high = 0xbf;
+    if (c >= 0xc2 && c <= 0xdf) {
+      length = 2;
+    } else if (c >= 0xe0 && c <= 0xef) {
+      length = 3;
+      if (c == 0xe0) low = 0xa0;
+      if (c == 0xed) high = 0x9f;
+    } else if (c >= 0xf0 && c <= 0xf4) {
+      length = 4;
+      if (c == 0xf0) low = 0x90;
+      if (c == 0xf4) high = 0x8f;
+    } else if (c >= 0x80) {
+      return "a scene name must be UTF-8 text, found an invalid byte at byte " + std::to_string(i);
+    }
+    for (std::size_t k = 1; k < length; ++k) {
+      const auto next = i + k < name.size() ? static_cast<unsigned char>(name[i + k]) : 0;
+      const unsigned char lo = k == 1 ? low : 0x80;
+      const unsigned char hi = k == 1 ? high : 0xbf;
+      if (next < lo || next > hi) {
+        return "a scene name must be UTF-8 text, found an invalid byte at byte " +
+               std::to_string(i + k);
+      }
+    }
+    i += length;
+  }
+  return {};
+}
 
 namespace {
 
@@ -129,6 +156,9 @@ Result<Scene> parseSceneJson(std::string_view text, std::string_view sourceName)
     const json& name = member(doc, "name", "");
     if (!name.is_string()) throw SchemaError{"\"name\" must be a string"};
     scene.name = name.get<std::string>();
+    if (std::string problem = sceneNameProblem(scene.name); !problem.empty()) {
+      throw SchemaError{"\"name\": " + problem};
+    }
     const json& bounds = member(doc, "bounds", "");
     if (!bounds.is_array() || bounds.size() != 4) {
       throw SchemaError{"\"bounds\" must be [xmin, ymin, xmax, ymax]"};

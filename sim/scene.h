@@ -44,6 +44,12 @@ Result<Scene> parseSceneJson(std::string_view text, std::string_view sourceName)
 // "obstacle 3: edge from vertex 1 to vertex 2 crosses edge from vertex 4 to vertex 5".
 Status validateSceneGeometry(const Scene& scene);
 
+// Scene names follow the product's one name rule (docs/file-formats.md#scene): non-empty, at most
+// kMaxSceneNameBytes bytes of well-formed UTF-8, no control character (so no line break), no
+// comma. Returns the problem, or "" for a good name. parseSceneJson applies it to "name".
+inline constexpr std::size_t kMaxSceneNameBytes = 200;
+std::string sceneNameProblem(std::string_view name);
+
 // Scene as JSON text (the format parseSceneJson reads).
 std::string sceneToJson(const Scene& scene);
 

@@ -105,7 +105,17 @@ Status RunDatabase::renameRun(std::string_view name, const std::string& newName)
                         "' already exists (imported from " + taken.columnText(0) + ")");
     }
     taken.reset();
-    impl_->statement("UPDATE runs SET name = ? WHERE id = ?").bind(1, newName).bind(2, id).run();
+    // The checksum covers the name; a row that did not match before still does not after.
+    impl_
+        ->statement(
+            "UPDATE runs SET name = ?1, crc = CASE WHEN crc IS tactile_run_crc(id, name, "
+            "step_count, "
+            "has_truth, metadata, extra_columns) THEN tactile_run_crc(id, ?1, step_count, "
+            "has_truth, "
+            "metadata, extra_columns) END WHERE id = ?2")
+        .bind(1, newName)
+        .bind(2, id)
+        .run();
     transaction.commit();
   });
 }

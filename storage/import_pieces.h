@@ -19,6 +19,8 @@
 namespace tactile::storage::importing {
 
 inline constexpr std::size_t kDefaultChunkBytes = std::size_t{4} << 20;
+// The largest scene file import reads beside a run (docs/file-formats.md#run-file).
+inline constexpr std::uint64_t kMaxSceneFileBytes = std::uint64_t{16} << 20;
 
 // What the writer needs of a file before its steps; made off the writer thread.
 struct FileHead {
@@ -63,6 +65,13 @@ void describeText(FileHead& head, const RunCsvChunks& chunks, const SceneResolve
 // The given name, else `PREFIX_<stem>` (or the stem without a prefix); docs/storage.md#import.
 std::string runName(const ImportOptions& options, const std::filesystem::path& file);
 ImportOutcome cancelledOutcome(const std::filesystem::path& file);
+
+// Writes the steps rows of one chunk of run `runId` (steps chunk.firstStep, ...) with their
+// checksums, inside the caller's transaction. Every writer of step rows goes through here, so
+// every row carries its checksum (docs/storage.md#checksums). `failAfterSteps` (>= 0) injects a
+// failure at that step, for tests.
+void writeStepChunk(RunDatabase::Impl& impl, std::int64_t runId, const StepChunk& chunk,
+                    bool hasTruth, std::int64_t failAfterSteps = -1);
 
 // The SQL writer: stores one run in its own transaction: the run row, then the steps chunk by
 // chunk as `takeChunk(i)` hands them over, then the summary blocks. A chunk with an error, or any

@@ -13,6 +13,12 @@
 #include <thread>
 #include <unordered_set>
 
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <cerrno>
+
 #include "base/file_text.h"
 #include "run/builtin_scenes.h"
 #include "run/run_csv.h"
@@ -101,6 +107,61 @@ std::string validateRun(const RunData& run) {
 
 namespace {
 
+// A run file's `scene` value that is not a built-in name must be the name of a plain file in the
+// run file's own folder (docs/file-formats.md#run-file): no folder part (so no absolute path and
+// no `..`), not a symbolic link, a regular file (never a FIFO or a device, which could hang or
+// never end), at most kMaxSceneFileBytes. The file is opened without following links and without
+// blocking, and checked on the open descriptor, so it cannot be swapped in between.
+std::optional<std::string> readSceneBeside(const std::string& value,
+                                           const std::filesystem::path& baseDir,
+                                           std::string& problem) {
+  if (value == "." || value == ".." || value.find_first_of("/\\") != std::string::npos ||
+      value.find('\0') != std::string::npos) {
+    problem =
+        "is neither a built-in scene nor a file name in the run file's folder (a path "
+        "with a folder part, absolute or with '..', is not read)";
+    return std::nullopt;
+  }
+  const std::filesystem::path path = baseDir / value;
+  const int fd = ::open(path.c_str(), O_RDONLY | O_NOFOLLOW | O_NONBLOCK | O_CLOEXEC);
+  if (fd < 0) {
+    const int error = errno;
+    problem = error == ELOOP ? "names a symbolic link (" + path.string() + "), which is not read"
+                             : "is neither a built-in scene nor a readable file (" + path.string() +
+                                   ": " + std::strerror(error) + ")";
+    return std::nullopt;
+  }
+  struct Closer {
+    int fd;
+    ~Closer() { ::close(fd); }
+  } closer{fd};
+  struct stat info {};
+  if (::fstat(fd, &info) != 0 || !S_ISREG(info.st_mode)) {
+    problem = "names " + path.string() + ", which is not a regular file";
+    return std::nullopt;
+  }
+  if (static_cast<std::uint64_t>(info.st_size) > kMaxSceneFileBytes) {
+    problem = "names " + path.string() + " of " + std::to_string(info.st_size) +
+              " bytes, more than the " + std::to_string(kMaxSceneFileBytes) +
+              " a scene file may have";
+    return std::nullopt;
+  }
+  std::string text;
+  text.resize(static_cast<std::size_t>(info.st_size));
+  std::size_t got = 0;
+  while (got < text.size()) {
+    const ssize_t n = ::read(fd, text.data() + got, text.size() - got);
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) break;
+    got += static_cast<std::size_t>(n);
+  }
+  if (got != text.size()) {
+    problem = "names " + path.string() + ", which could not be read whole";
+    return std::nullopt;
+  }
+  return text;
+}
+
 void resolveScene(FileHead& head, const std::filesystem::path& baseDir,
                   const SceneResolver& resolver) {
   const std::string* scene = head.header.meta("scene");
@@ -112,16 +173,14 @@ void resolveScene(FileHead& head, const std::filesystem::path& baseDir,
   } else if (std::optional<std::string> resolved = resolver ? resolver(*scene) : std::nullopt) {
     json = std::move(*resolved);
   } else {
-    std::filesystem::path scenePath(*scene);
-    if (scenePath.is_relative()) scenePath = baseDir / scenePath;
-    Result<std::string> read = readFileText(scenePath);
-    if (!read) {
-      head.warnings.push_back("scene '" + *scene +
-                              "' is neither a built-in scene nor a readable file (" +
-                              scenePath.string() + "); the run is stored without its scene");
+    std::string problem;
+    std::optional<std::string> text = readSceneBeside(*scene, baseDir, problem);
+    if (!text) {
+      head.warnings.push_back("scene '" + *scene + "' " + problem +
+                              "; the run is stored without its scene");
       return;
     }
-    json = std::move(read.value());
+    json = std::move(*text);
   }
   const nlohmann::json parsed = nlohmann::json::parse(json, nullptr, false);
   if (parsed.is_discarded() || !parsed.is_object()) {

@@ -14,6 +14,7 @@
 
 #include "storage/database_impl.h"
 #include "storage/schema.h"
+#include "storage/step_checksum.h"
 
 namespace tactile::storage {
 
@@ -48,6 +49,7 @@ enum class FileKind { Absent, Empty, NotSqlite, Foreign, NoSchema, Tactile, Unkn
 struct Probe {
   FileKind kind = FileKind::Unknown;
   std::uint32_t applicationId = 0;
+  std::uint32_t userVersion = 0;
 };
 
 std::uint32_t bigEndian32(const unsigned char* p) {
@@ -92,12 +94,16 @@ Probe probeFile(const std::filesystem::path& path) {
   probe.applicationId = bigEndian32(header + 68);
   const std::uint32_t userVersion = bigEndian32(header + 60);
   const std::uint32_t schemaCookie = bigEndian32(header + 40);
+  // The application id is the identity: every Tactile database has carried it since its first
+  // schema (set in the migration's transaction, with user_version). Only a blank SQLite file (no
+  // id, no version, no schema) may become one; anything else belongs to someone else.
+  probe.userVersion = userVersion;
   if (probe.applicationId == static_cast<std::uint32_t>(db::kApplicationId)) {
     probe.kind = FileKind::Tactile;
-  } else if (probe.applicationId != 0) {
+  } else if (probe.applicationId == 0 && userVersion == 0 && schemaCookie == 0) {
+    probe.kind = FileKind::NoSchema;
+  } else {
     probe.kind = FileKind::Foreign;
-  } else if (userVersion == 0) {
-    probe.kind = schemaCookie == 0 ? FileKind::NoSchema : FileKind::Foreign;
   }
   return probe;
 }
@@ -108,6 +114,19 @@ std::string hex32(std::uint32_t value) {
   return text;
 }
 
+// One line for an SQLite file that is not ours (docs/storage.md#opening).
+std::string foreignMessage(std::uint32_t applicationId, std::uint32_t userVersion) {
+  if (applicationId != 0) {
+    return "an SQLite database of another application (application_id " + hex32(applicationId) +
+           "), not a Tactile database; left unchanged";
+  }
+  if (userVersion != 0) {
+    return "an SQLite database without the Tactile application id (user_version " +
+           std::to_string(userVersion) + "), not a Tactile database; left unchanged";
+  }
+  return "holds tables but no Tactile application id; not a Tactile database; left unchanged";
+}
+
 // The same identity checks through SQLite, before anything is written (for files whose -wal holds
 // content the header above could not judge). Throws DbError naming the file.
 void checkIdentity(db::Connection& c, const std::string& name, bool mayInitialise) {
@@ -115,17 +134,11 @@ void checkIdentity(db::Connection& c, const std::string& name, bool mayInitialis
   const auto applicationId = identity.applicationId;
   const auto version = identity.version;
   const auto objects = identity.objects;
-  if (applicationId != 0 && applicationId != db::kApplicationId) {
-    throw db::DbError(name, "an SQLite database of another application (application_id " +
-                                hex32(static_cast<std::uint32_t>(applicationId)) +
-                                "), not a Tactile database; left unchanged");
+  if (applicationId != db::kApplicationId && (applicationId != 0 || version != 0 || objects != 0)) {
+    throw db::DbError(name, foreignMessage(static_cast<std::uint32_t>(applicationId),
+                                           static_cast<std::uint32_t>(version)));
   }
-  if (version == 0 && objects != 0) {
-    throw db::DbError(name,
-                      "holds tables but no Tactile schema version; not a Tactile database; left "
-                      "unchanged");
-  }
-  if (version == 0 && objects == 0 && !mayInitialise) {
+  if (applicationId == 0 && !mayInitialise) {
     throw db::DbError(name,
                       "an SQLite database without the Tactile schema; not a Tactile "
                       "database (only a creating verb such as `tactile db create` makes one)");
@@ -163,6 +176,25 @@ std::string switchToWal(db::Connection& c, const std::string& name) {
 
 }  // namespace
 
+namespace {
+
+// A creating open that failed (a full disk, a file-size limit) removes the file it made, so no
+// 0-byte "database" stays behind; only while the file is still empty and no write-ahead log holds
+// anything (so a database another process created at the same moment is never touched).
+void removeFailedCreation(const std::filesystem::path& path) {
+  std::error_code ec;
+  const auto bytes = std::filesystem::file_size(path, ec);
+  if (ec || bytes != 0) return;
+  const auto walBytes = std::filesystem::file_size(path.string() + "-wal", ec);
+  if (!ec && walBytes != 0) return;
+  for (const char* suffix : {"-wal", "-shm", "-journal"}) {
+    std::filesystem::remove(path.string() + suffix, ec);
+  }
+  std::filesystem::remove(path, ec);
+}
+
+}  // namespace
+
 Result<std::unique_ptr<RunDatabase>> RunDatabase::open(const std::filesystem::path& path,
                                                        OpenMode mode) {
   OpenOptions options;
@@ -176,6 +208,19 @@ Result<std::unique_ptr<RunDatabase>> RunDatabase::open(const std::filesystem::pa
   const std::string name = path.string();
   OpenMode mode = options.mode;
   if (mode == OpenMode::Create && !options.create) mode = OpenMode::ReadWrite;
+  const bool inMemoryPath = path.empty() || path == ":memory:";
+  std::error_code absentError;
+  const bool wasAbsent = mode == OpenMode::Create && !inMemoryPath &&
+                         !std::filesystem::exists(path, absentError) && !absentError;
+  R result = openFile(path, options, mode, name);
+  if (!result.ok() && wasAbsent) removeFailedCreation(path);
+  return result;
+}
+
+Result<std::unique_ptr<RunDatabase>> RunDatabase::openFile(const std::filesystem::path& path,
+                                                           const OpenOptions& options,
+                                                           OpenMode mode, const std::string& name) {
+  using R = Result<std::unique_ptr<RunDatabase>>;
   try {
     const bool inMemory = path.empty() || path == ":memory:";
     auto impl = std::make_unique<Impl>();
@@ -197,12 +242,7 @@ Result<std::unique_ptr<RunDatabase>> RunDatabase::open(const std::filesystem::pa
         case FileKind::NotSqlite:
           return R(Error(name, "not a Tactile database (not an SQLite file); left unchanged"));
         case FileKind::Foreign:
-          return R(Error(name, probe.applicationId != 0
-                                   ? "an SQLite database of another application (application_id " +
-                                         hex32(probe.applicationId) +
-                                         "), not a Tactile database; left unchanged"
-                                   : "holds tables but no Tactile schema version; not a Tactile "
-                                     "database; left unchanged"));
+          return R(Error(name, foreignMessage(probe.applicationId, probe.userVersion)));
         case FileKind::NoSchema:  // maybe being created this moment: SQLite's snapshot decides
         case FileKind::Tactile:
         case FileKind::Unknown:
@@ -230,6 +270,7 @@ Result<std::unique_ptr<RunDatabase>> RunDatabase::open(const std::filesystem::pa
         checkIdentity(impl->connection, name, false);
       }
       db::Connection& c = impl->connection;
+      registerChecksumFunctions(c);
       c.exec("PRAGMA foreign_keys = ON");
       c.exec("PRAGMA temp_store = MEMORY");
       c.exec("PRAGMA cache_size = -" + std::to_string(options.cacheKiB));
@@ -276,7 +317,20 @@ Result<std::unique_ptr<RunDatabase>> RunDatabase::open(const std::filesystem::pa
     c.exec("PRAGMA mmap_size = " + std::to_string(options.mmapBytes));
     const db::MigrationReport report = db::migrate(c, impl->path);
     impl->backup = report.backupPath;
-    return R(std::unique_ptr<RunDatabase>(new RunDatabase(std::move(impl))));
+    std::unique_ptr<RunDatabase> database(new RunDatabase(std::move(impl)));
+    if (options.refuseDamaged && !inMemory) {
+      const IntegrityReport check = database->check();
+      if (!check.ok) {
+        std::int64_t count = 0;
+        for (const IntegrityProblemKind& kind : check.kinds)
+          count += kind.count;
+        return R(Error(name, "damaged (`tactile db check` finds " + std::to_string(count) +
+                                 (count == 1 ? " problem" : " problems") +
+                                 (check.problems.empty() ? "" : ", first: " + check.problems[0]) +
+                                 "); nothing is written into it"));
+      }
+    }
+    return R(std::move(database));
   } catch (const db::DbError& e) {
     return R(Error(e.file.empty() ? name : e.file, e.what()));
   } catch (const std::exception& e) {
@@ -400,6 +454,47 @@ void addProblem(IntegrityReport& report, const std::string& kind, const std::str
   }
 }
 
+// Every run, steps and summary block row against its checksum (docs/storage.md#checksums).
+void checkChecksums(db::Connection& c, IntegrityReport& report) {
+  const auto runName = [](const db::Statement& s) {
+    return s.columnIsNull(0) ? std::string("(missing run)") : "'" + s.columnText(0) + "'";
+  };
+  {
+    db::Statement s(c,
+                    "SELECT name, id FROM runs WHERE crc IS NOT "
+                    "tactile_run_crc(id, name, step_count, has_truth, metadata, extra_columns)");
+    while (s.step()) {
+      addProblem(report, "checksum",
+                 "run " + runName(s) + " (id " + std::to_string(s.columnInt(1)) +
+                     "): its row (name, step count, metadata) does not match its checksum");
+    }
+  }
+  {
+    db::Statement s(c,
+                    "SELECT runs.name, steps.run_id, steps.step FROM steps LEFT JOIN runs ON "
+                    "runs.id = steps.run_id WHERE steps.crc IS NOT tactile_step_crc(steps.run_id, "
+                    "steps.step, steps.x, steps.y, steps.theta, steps.v, steps.omega, "
+                    "steps.blocked, steps.sensors, steps.extra, steps.truth)");
+    while (s.step()) {
+      addProblem(report, "checksum",
+                 "run " + runName(s) + " (id " + std::to_string(s.columnInt(1)) + ") step " +
+                     std::to_string(s.columnInt(2)) + ": stored data does not match its checksum");
+    }
+  }
+  {
+    db::Statement s(c,
+                    "SELECT runs.name, b.run_id, b.level, b.block FROM step_blocks AS b LEFT JOIN "
+                    "runs ON runs.id = b.run_id WHERE b.crc IS NOT tactile_block_crc(b.run_id, "
+                    "b.level, b.block, b.minmax)");
+    while (s.step()) {
+      addProblem(report, "checksum",
+                 "run " + runName(s) + " (id " + std::to_string(s.columnInt(1)) +
+                     ") summary block " + std::to_string(s.columnInt(3)) + " of level " +
+                     std::to_string(s.columnInt(2)) + ": does not match its checksum");
+    }
+  }
+}
+
 }  // namespace
 
 IntegrityReport RunDatabase::check() {
@@ -437,6 +532,7 @@ IntegrityReport RunDatabase::check() {
                  "runs declare " + std::to_string(report.steps) +
                      " steps but the steps table holds " + std::to_string(storedSteps));
     }
+    if (report.schemaVersion >= 5) checkChecksums(c, report);
     report.ok = report.kinds.empty() && report.schemaVersion == db::kSchemaVersion;
   } catch (const db::DbError& e) {
     report.ok = false;

@@ -196,7 +196,8 @@ inline constexpr std::size_t kIntegrityCasesKept = 10;
 struct IntegrityReport {
   bool ok = false;
   int schemaVersion = 0;
-  // integrity_check and foreign_key_check findings: the first kIntegrityCasesKept of each kind
+  // integrity_check, foreign_key_check and checksum findings: the first kIntegrityCasesKept of
+  // each kind
   // (`kinds` has every count).
   std::vector<std::string> problems;
   std::vector<IntegrityProblemKind> kinds;
@@ -226,6 +227,9 @@ struct OpenOptions {
   // the process's resident memory while they are read, so a program that keeps running (the
   // workbench) may choose 0 and read through the page cache alone.
   std::int64_t mmapBytes = std::int64_t{1} << 30;
+  // A writable open runs check() first and refuses a database it finds damaged, so nothing is
+  // written into one (docs/storage.md#checksums). Costs one pass over the file.
+  bool refuseDamaged = true;
 };
 
 class RunDatabase {
@@ -386,6 +390,10 @@ class RunDatabase {
 
  private:
   explicit RunDatabase(std::unique_ptr<Impl> impl);
+  // open() without the clean-up of a failed creation.
+  static Result<std::unique_ptr<RunDatabase>> openFile(const std::filesystem::path& path,
+                                                       const OpenOptions& options, OpenMode mode,
+                                                       const std::string& name);
   std::unique_ptr<Impl> impl_;
 };
 

@@ -5,25 +5,74 @@
 #include "run/run_csv.h"
 #include "storage/database_impl.h"
 #include "storage/run_codec.h"
+#include "storage/step_checksum.h"
 
 namespace tactile::storage {
 namespace {
 
 struct RunHeader {
+  std::string name;
   std::int64_t stepCount = 0;
   bool hasTruth = false;
   std::vector<std::pair<std::string, std::string>> metadata;
   std::vector<std::string> extraColumns;
 };
 
+// The error for stored data that does not match its checksum (docs/storage.md#checksums).
+db::DbError damaged(const RunDatabase::Impl& impl, const std::string& runName, std::int64_t runId,
+                    const std::string& what) {
+  return db::DbError(impl.path.string(),
+                     "run '" + runName + "' (id " + std::to_string(runId) +
+                         ") is damaged: " + what +
+                         " does not match its checksum; nothing of it is read (`tactile db "
+                         "check` lists the damage)");
+}
+
+// The steps columns every read selects, in this order, so that each row can be checked.
+constexpr const char* kStepColumns =
+    "step, x, y, theta, v, omega, blocked, sensors, extra, truth, crc";
+
+// Throws unless the steps row under `s` (kStepColumns) matches its stored checksum.
+void verifyStepRow(const RunDatabase::Impl& impl, const db::Statement& s, const RunHeader& header,
+                   std::int64_t runId) {
+  StepRow row;
+  row.runId = runId;
+  row.step = s.columnInt(0);
+  row.x = s.columnDouble(1);
+  row.y = s.columnDouble(2);
+  row.theta = s.columnDouble(3);
+  row.v = s.columnDouble(4);
+  row.omega = s.columnDouble(5);
+  row.blocked = s.columnInt(6);
+  row.sensors = s.columnBlob(7);
+  row.sensorBytes = s.columnBytes(7);
+  if (!s.columnIsNull(8)) {
+    row.extra = s.columnBlob(8);
+    row.extraBytes = s.columnBytes(8);
+    if (row.extra == nullptr) row.extra = "";
+  }
+  row.hasTruth = !s.columnIsNull(9);
+  row.truth = s.columnInt(9);
+  if (s.columnIsNull(10) || s.columnInt(10) != stepChecksum(row)) {
+    throw damaged(impl, header.name, runId, "step " + std::to_string(row.step));
+  }
+}
+
 RunHeader readHeader(RunDatabase::Impl& impl, std::int64_t runId) {
   db::Statement& s = impl.statement(
-      "SELECT step_count, has_truth, metadata, extra_columns FROM runs WHERE id = ?");
+      "SELECT step_count, has_truth, metadata, extra_columns, name, crc FROM runs WHERE id = ?");
   s.bind(1, runId);
   if (!s.step()) throw db::DbError("no run with id " + std::to_string(runId));
   RunHeader header;
   header.stepCount = s.columnInt(0);
   header.hasTruth = s.columnInt(1) != 0;
+  header.name = s.columnText(4);
+  if (s.columnIsNull(5) ||
+      s.columnInt(5) != runChecksum(runId, header.name, header.stepCount, header.hasTruth,
+                                    s.columnBlob(2), s.columnBytes(2), s.columnBlob(3),
+                                    s.columnBytes(3))) {
+    throw damaged(impl, header.name, runId, "the run's row (name, step count, metadata)");
+  }
   std::vector<std::string> pairs;
   if (!decodeStrings(s.columnBlob(2), s.columnBytes(2), pairs) || pairs.size() % 2 != 0 ||
       !decodeStrings(s.columnBlob(3), s.columnBytes(3), header.extraColumns)) {
@@ -72,12 +121,14 @@ RunWindow readWindow(RunDatabase::Impl& impl, std::int64_t runId, std::int64_t f
   if (!run.extraColumns.empty()) run.extraValues.reserve(n * run.extraColumns.size());
   if (header.hasTruth) run.truth.resize(n * kGroupCount);
 
-  db::Statement& s = impl.statement(
-      "SELECT step, x, y, theta, v, omega, blocked, sensors, extra, truth FROM steps "
-      "WHERE run_id = ? AND step >= ? AND step < ? ORDER BY step");
+  static const std::string sql = std::string("SELECT ") + kStepColumns +
+                                 " FROM steps WHERE run_id = ? AND step >= ? AND step < ? "
+                                 "ORDER BY step";
+  db::Statement& s = impl.statement(sql.c_str());
   s.bind(1, runId).bind(2, firstStep).bind(3, end);
   std::size_t row = 0;
   while (s.step()) {
+    verifyStepRow(impl, s, header, runId);
     readMotion(s, runId, firstStep, row, n, run);
     if (!decodeValues(s.columnBlob(7), static_cast<std::size_t>(s.columnBytes(7)), kValuesPerStep,
                       run.sensors.data() + row * kValuesPerStep)) {
@@ -111,17 +162,18 @@ RunTrack readTrack(RunDatabase::Impl& impl, std::int64_t runId) {
     column->resize(n);
   track.blocked.resize(n);
   if (header.hasTruth) track.truth.resize(n * kGroupCount);
-  // The sensors blob is never named, so SQLite never decodes it; the rows still have to be
-  // walked, which bounds the speed (docs/storage.md#reading).
-  db::Statement& s = impl.statement(
-      "SELECT step, x, y, theta, v, omega, blocked, truth FROM steps WHERE run_id = ? ORDER BY "
-      "step");
+  // The sensors blob is never decoded, only checksummed with the rest of the row
+  // (docs/storage.md#checksums); walking the rows bounds the speed (docs/storage.md#reading).
+  static const std::string sql =
+      std::string("SELECT ") + kStepColumns + " FROM steps WHERE run_id = ? ORDER BY step";
+  db::Statement& s = impl.statement(sql.c_str());
   s.bind(1, runId);
   std::size_t row = 0;
   while (s.step()) {
+    verifyStepRow(impl, s, header, runId);
     readMotion(s, runId, 0, row, n, track);
-    if (header.hasTruth && (s.columnIsNull(7) ||
-                            !unpackTruth(s.columnInt(7), track.truth.data() + row * kGroupCount))) {
+    if (header.hasTruth && (s.columnIsNull(9) ||
+                            !unpackTruth(s.columnInt(9), track.truth.data() + row * kGroupCount))) {
       throw db::DbError("step " + std::to_string(row) + " of run " + std::to_string(runId) +
                         " has missing or malformed truth");
     }
@@ -175,7 +227,8 @@ std::vector<Piece> decompose(std::int64_t first, std::int64_t last, std::int64_t
 RunSummary readSummary(RunDatabase::Impl& impl, std::int64_t runId, std::int64_t firstStep,
                        std::int64_t lastStep, int bucketCount) {
   if (bucketCount <= 0) throw db::DbError("a summary needs at least one bucket");
-  const std::int64_t runSteps = impl.runStepCount(runId);
+  const RunHeader header = readHeader(impl, runId);
+  const std::int64_t runSteps = header.stepCount;
   RunSummary summary;
   if (lastStep < 0 || lastStep >= runSteps) lastStep = runSteps - 1;
   firstStep = std::max<std::int64_t>(0, firstStep);
@@ -223,14 +276,16 @@ RunSummary readSummary(RunDatabase::Impl& impl, std::int64_t runId, std::int64_t
     const int level = pieces[i].level;
     std::size_t k = i;
     if (level < 0) {
-      db::Statement& s = impl.statement(
-          "SELECT step, sensors FROM steps WHERE run_id = ? AND step >= ? AND step <= ? "
-          "ORDER BY step");
+      static const std::string sql = std::string("SELECT ") + kStepColumns +
+                                     " FROM steps WHERE run_id = ? AND step >= ? AND step <= ? "
+                                     "ORDER BY step";
+      db::Statement& s = impl.statement(sql.c_str());
       s.bind(1, runId).bind(2, pieces[i].first).bind(3, pieces[j].last);
       while (s.step() && k <= j) {
+        verifyStepRow(impl, s, header, runId);
         double row[kValuesPerStep];
         if (s.columnInt(0) != pieces[k].first ||
-            !decodeValues(s.columnBlob(1), static_cast<std::size_t>(s.columnBytes(1)),
+            !decodeValues(s.columnBlob(7), static_cast<std::size_t>(s.columnBytes(7)),
                           kValuesPerStep, row)) {
           throw db::DbError("steps of run " + std::to_string(runId) + " are inconsistent");
         }
@@ -240,11 +295,18 @@ RunSummary readSummary(RunDatabase::Impl& impl, std::int64_t runId, std::int64_t
       s.reset();
     } else {
       db::Statement& s = impl.statement(
-          "SELECT block, minmax FROM step_blocks WHERE run_id = ? AND level = ? AND block >= ? "
-          "AND block <= ? ORDER BY block");
+          "SELECT block, minmax, crc FROM step_blocks WHERE run_id = ? AND level = ? AND "
+          "block >= ? AND block <= ? ORDER BY block");
       s.bind(1, runId).bind(2, level).bind(3, pieces[i].index).bind(4, pieces[j].index);
       double values[kSummaryValues];
       while (s.step() && k <= j) {
+        if (s.columnIsNull(2) ||
+            s.columnInt(2) !=
+                blockChecksum(runId, level, s.columnInt(0), s.columnBlob(1), s.columnBytes(1))) {
+          throw damaged(impl, header.name, runId,
+                        "summary block " + std::to_string(s.columnInt(0)) + " of level " +
+                            std::to_string(level));
+        }
         if (s.columnInt(0) != pieces[k].index ||
             !decodeValues(s.columnBlob(1), static_cast<std::size_t>(s.columnBytes(1)),
                           kSummaryValues, values)) {

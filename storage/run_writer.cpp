@@ -2,8 +2,57 @@
 #include <string>
 
 #include "storage/import_pieces.h"
+#include "storage/step_checksum.h"
 
 namespace tactile::storage::importing {
+
+void writeStepChunk(RunDatabase::Impl& impl, std::int64_t runId, const StepChunk& chunk,
+                    bool hasTruth, std::int64_t failAfterSteps) {
+  db::Statement& step = impl.statement(
+      "INSERT INTO steps(run_id, step, x, y, theta, v, omega, blocked, sensors, extra, truth, crc) "
+      "VALUES(?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?)");
+  const RunData& rows = chunk.rows;
+  const bool hasExtra = !chunk.extraBlobs.empty();
+  step.bind(1, runId);
+  if (!hasExtra) step.bindNull(10);
+  if (!hasTruth) step.bindNull(11);
+  StepRow row;
+  row.runId = runId;
+  row.hasTruth = hasTruth;
+  const std::size_t n = rows.stepCount();
+  for (std::size_t i = 0; i < n; ++i) {
+    row.step = static_cast<std::int64_t>(chunk.firstStep + i);
+    if (row.step == failAfterSteps) {
+      throw db::DbError("injected failure after " + std::to_string(row.step) + " steps");
+    }
+    row.x = rows.x[i];
+    row.y = rows.y[i];
+    row.theta = rows.theta[i];
+    row.v = rows.v[i];
+    row.omega = rows.omega[i];
+    row.blocked = static_cast<std::int64_t>(rows.blocked[i]);
+    row.sensors = chunk.sensors.data(i);
+    row.sensorBytes = chunk.sensors.bytes(i);
+    if (hasExtra) {
+      row.extra = chunk.extraBlobs[i].data();
+      row.extraBytes = chunk.extraBlobs[i].size();
+    }
+    if (hasTruth) row.truth = chunk.packedTruth[i];
+    step.bind(2, row.step)
+        .bind(3, row.x)
+        .bind(4, row.y)
+        .bind(5, row.theta)
+        .bind(6, row.v)
+        .bind(7, row.omega)
+        .bind(8, row.blocked)
+        .bindBlob(9, row.sensors, row.sensorBytes);
+    if (hasExtra) step.bindBlob(10, row.extra, row.extraBytes);
+    if (hasTruth) step.bind(11, row.truth);
+    step.bind(12, static_cast<std::int64_t>(stepChecksum(row)));
+    step.step();
+  }
+  step.reset();
+}
 
 // Writes one run in its own transaction: the run row, then the steps chunk by chunk as
 // `takeChunk(i)` hands them over, then the summary blocks. A chunk with an error, or any failure,
@@ -121,13 +170,6 @@ ImportOutcome writeRun(RunDatabase::Impl& impl, FileHead& head,
         .run();
     const std::int64_t runId = impl.connection.lastInsertRowId();
 
-    db::Statement& step = impl.statement(
-        "INSERT INTO steps(run_id, step, x, y, theta, v, omega, blocked, sensors, extra, truth) "
-        "VALUES(?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?)");
-    step.bind(1, runId);
-    const bool hasExtra = !header.extraColumns.empty();
-    if (!hasExtra) step.bindNull(10);
-    if (!head.hasTruth) step.bindNull(11);
     SummaryBuilder summary;
     std::int64_t steps = 0;
     for (std::size_t c = 0; c < head.chunkCount; ++c) {
@@ -136,28 +178,12 @@ ImportOutcome writeRun(RunDatabase::Impl& impl, FileHead& head,
         outcome.message = std::move(chunk.error);
         return outcome;  // rolls back
       }
-      const RunData& rows = chunk.rows;
-      const std::size_t n = rows.stepCount();
+      const std::size_t n = chunk.rows.stepCount();
       if (n > 0 && static_cast<std::int64_t>(chunk.firstStep) != steps) {
         throw db::DbError("steps out of order at step " + std::to_string(chunk.firstStep));
       }
-      for (std::size_t i = 0; i < n; ++i, ++steps) {
-        if (steps == failAfterSteps) {
-          throw db::DbError("injected failure after " + std::to_string(steps) + " steps");
-        }
-        step.bind(2, steps)
-            .bind(3, rows.x[i])
-            .bind(4, rows.y[i])
-            .bind(5, rows.theta[i])
-            .bind(6, rows.v[i])
-            .bind(7, rows.omega[i])
-            .bind(8, static_cast<std::int64_t>(rows.blocked[i]))
-            .bindBlob(9, chunk.sensors.data(i), chunk.sensors.bytes(i));
-        if (hasExtra) step.bindBlob(10, chunk.extraBlobs[i].data(), chunk.extraBlobs[i].size());
-        if (head.hasTruth) step.bind(11, chunk.packedTruth[i]);
-        step.step();
-      }
-      step.reset();
+      writeStepChunk(impl, runId, chunk, head.hasTruth, failAfterSteps);
+      steps += static_cast<std::int64_t>(n);
       if (n > 0) summary.merge(chunk.summary);
     }
     if (steps == 0 && !head.noStepsError.empty()) {
@@ -166,8 +192,8 @@ ImportOutcome writeRun(RunDatabase::Impl& impl, FileHead& head,
     }
 
     const std::vector<EncodedBlobs> levels = encodeSummaryBlocks(std::move(summary).finish());
-    db::Statement& block =
-        impl.statement("INSERT INTO step_blocks(run_id, level, block, minmax) VALUES(?, ?, ?, ?)");
+    db::Statement& block = impl.statement(
+        "INSERT INTO step_blocks(run_id, level, block, minmax, crc) VALUES(?, ?, ?, ?, ?)");
     block.bind(1, runId);
     for (std::size_t level = 0; level < levels.size(); ++level) {
       const EncodedBlobs& blobs = levels[level];
@@ -175,13 +201,20 @@ ImportOutcome writeRun(RunDatabase::Impl& impl, FileHead& head,
       for (std::size_t b = 0; b < blobs.size(); ++b) {
         block.bind(3, static_cast<std::int64_t>(b))
             .bindBlob(4, blobs.data(b), blobs.bytes(b))
+            .bind(5, static_cast<std::int64_t>(blockChecksum(
+                         runId, static_cast<std::int64_t>(level), static_cast<std::int64_t>(b),
+                         blobs.data(b), blobs.bytes(b))))
             .step();
       }
     }
     block.reset();
-    impl.statement("UPDATE runs SET step_count = ? WHERE id = ?")
+    impl.statement("UPDATE runs SET step_count = ?, crc = ? WHERE id = ?")
         .bind(1, steps)
-        .bind(2, runId)
+        .bind(2, static_cast<std::int64_t>(
+                     runChecksum(runId, head.name, steps, head.hasTruth, head.metadataBlob.data(),
+                                 head.metadataBlob.size(), head.extraColumnsBlob.data(),
+                                 head.extraColumnsBlob.size())))
+        .bind(3, runId)
         .run();
     transaction.commit();
     outcome.status = ImportStatus::Imported;

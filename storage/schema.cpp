@@ -1,5 +1,7 @@
 #include "storage/schema.h"
 
+#include "storage/step_checksum.h"
+
 #include <array>
 #include <system_error>
 
@@ -161,11 +163,25 @@ CREATE VIEW step_truth AS SELECT run_id, step,
 FROM steps WHERE truth IS NOT NULL;
 )sql";
 
-constexpr std::array<Migration, 4> kMigrations{{
+// Checksums of the stored run data (storage/step_checksum.h): a CRC-32 per steps row, per summary
+// block and per run row, computed here for the rows already stored (by the SQL functions the
+// connection registers; a file that was damaged before this migration is taken as it is).
+constexpr std::string_view kVersion5 = R"sql(
+ALTER TABLE runs ADD COLUMN crc INTEGER;
+ALTER TABLE steps ADD COLUMN crc INTEGER;
+ALTER TABLE step_blocks ADD COLUMN crc INTEGER;
+UPDATE runs SET crc = tactile_run_crc(id, name, step_count, has_truth, metadata, extra_columns);
+UPDATE steps SET crc = tactile_step_crc(run_id, step, x, y, theta, v, omega, blocked, sensors,
+                                        extra, truth);
+UPDATE step_blocks SET crc = tactile_block_crc(run_id, level, block, minmax);
+)sql";
+
+constexpr std::array<Migration, 5> kMigrations{{
     {1, "runs, steps, truth, step summaries, scenes", kVersion1},
     {2, "label sets and segments", kVersion2},
     {3, "models, sweeps and sweep cells", kVersion3},
     {4, "truth packed into the steps, sparse sensors and summary blobs", kVersion4},
+    {5, "checksums of every run, step and summary block row", kVersion5},
 }};
 static_assert(kMigrations.back().version == kSchemaVersion);
 
@@ -212,11 +228,12 @@ void checkMigratable(const Identity& identity, const std::string& name) {
                             std::to_string(kSchemaVersion) +
                             " that this program understands; use a newer tactile");
   }
-  if (identity.applicationId != 0 && identity.applicationId != kApplicationId) {
-    throw DbError(name, "an SQLite database of another application, not a Tactile database");
-  }
-  if (version == 0 && identity.objects != 0) {
-    throw DbError(name, "holds tables but no Tactile schema version; not a Tactile database");
+  // The application id is the identity; only a blank file (no id, version or schema) becomes one.
+  if (identity.applicationId != kApplicationId &&
+      (identity.applicationId != 0 || version != 0 || identity.objects != 0)) {
+    throw DbError(name,
+                  "an SQLite database without the Tactile application id, not a Tactile "
+                  "database");
   }
 }
 
@@ -225,6 +242,7 @@ void checkMigratable(const Identity& identity, const std::string& name) {
 MigrationReport migrate(Connection& connection, const std::filesystem::path& dbPath,
                         int targetVersion) {
   MigrationReport report;
+  registerChecksumFunctions(connection);
   const Identity before = readIdentity(connection);
   report.fromVersion = before.version;
   report.toVersion = report.fromVersion;

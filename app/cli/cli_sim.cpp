@@ -218,7 +218,24 @@ int runSimulate(const SimulateArgs& a) {
   }
 
   std::shared_ptr<const World> world = loadWorld(a.scene);
-  const std::string label = sceneLabel(a.scene, *world);
+  std::string label = sceneLabel(a.scene, *world);
+  if (!a.scene.starts_with("random:") && !builtinSceneJson(a.scene)) {
+    // A scene from a file is written beside its runs as STEM.scene.json and the runs name that
+    // file, so that import stores them with their walls (and a file whose scene is called like a
+    // built-in one keeps its own geometry).
+    const std::filesystem::path dir =
+        batch ? std::filesystem::path(a.outDir) : std::filesystem::path(a.out).parent_path();
+    const std::string stem = batch ? a.prefix : std::filesystem::path(a.out).stem().string();
+    label = stem + ".scene.json";
+    if (std::string problem = sceneNameProblem(label); !problem.empty()) {
+      throw UsageError("the scene file written beside the runs would be named '" + label +
+                       "': " + problem);
+    }
+    std::error_code ec;
+    if (batch) std::filesystem::create_directories(dir, ec);
+    const Status written = writeFileAtomically(dir / label, sceneToJson(world->scene()));
+    if (!written) throw std::runtime_error(written.errorText());
+  }
   RunOptions options;
   options.maxSteps = static_cast<std::size_t>(a.steps);
   options.seed = a.seed;

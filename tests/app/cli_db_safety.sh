@@ -82,6 +82,23 @@ for f in foreign.db foreign-wal.db other-app.db text.db; do
   refused "$f" "$T" db create --db "$f"
   refused "$f" "$T" export-run --db "$f" --run run_0000 --out out.csv
 done
+# A user_version without the Tactile application id is another program's file, whatever the verb:
+# one line on stderr, the bytes unchanged, no backup and no WAL switch.
+sqlite3 versioned.db "PRAGMA user_version = 2; CREATE TABLE notes(x); INSERT INTO notes VALUES('keep');"
+sqlite3 versioned-bare.db "PRAGMA user_version = 4;"
+for f in versioned.db versioned-bare.db; do
+  sum=$(sha256sum < "$f")
+  for verb in "import --db $f runs" "db check --db $f" "db create --db $f" \
+              "runs rename --db $f a b" "runs delete --db $f a" "runs list --db $f" \
+              "labels list --db $f" "autolabel --db $f --all --set s" \
+              "export-run --db $f --run a --out out.csv"; do
+    # shellcheck disable=SC2086
+    refused "$f" "$T" $verb
+    [ "$(wc -l < refused.err)" -eq 1 ] || fail "$verb on $f: not one line: $(cat refused.err)"
+    [ "$(sha256sum < "$f")" = "$sum" ] || fail "$verb changed $f"
+  done
+  ! ls "$f".*bak > /dev/null 2>&1 || fail "a backup of $f was made"
+done
 # An empty file: refused unless a creating verb is given it.
 : > empty.db
 refused empty.db "$T" db check --db empty.db
@@ -247,7 +264,7 @@ EOF
     fail "round $round: $(cat imp$round.*.err)"
   fi
   "$T" db check --db "$db" > "check$round.out" || fail "round $round check: $(cat "check$round.out")"
-  grep -q "ok, schema version 4, $files runs, $((files * 200)) steps" "check$round.out" ||
+  grep -q "ok, schema version 5, $files runs, $((files * 200)) steps" "check$round.out" ||
     fail "round $round: $(cat "check$round.out")"
   round=$((round + 1))
 done

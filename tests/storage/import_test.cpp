@@ -1,5 +1,7 @@
 #include <gtest/gtest.h>
 
+#include <sys/stat.h>
+
 #include <algorithm>
 #include <fstream>
 
@@ -303,20 +305,72 @@ TEST(Import, BuiltinSceneIsStoredOnce) {
   EXPECT_TRUE(db->findRun("a")->sceneStored);
 }
 
-TEST(Import, SceneFileRelativeToTheRunFile) {
+TEST(Import, SceneFileBesideTheRunFile) {
   TempDir dir;
-  std::filesystem::create_directories(dir / "scenes");
   const std::string sceneText =
       R"({"name":"corridor","bounds":[0,0,10,10],"obstacles":[],"start":{"x":1,"y":1,"theta":0},"goal":{"x":9,"y":9}})";
-  writeText(dir / "scenes" / "corridor.json", sceneText);
+  writeText(dir / "corridor.json", sceneText);
   RunData run = makeRun(8, false);
-  run.setMeta("scene", "scenes/corridor.json");
+  run.setMeta("scene", "corridor.json");
   ASSERT_TRUE(writeRunCsv(run, dir / "c.csv").ok());
   auto db = test::openDb(":memory:");
   auto outcomes = db->importFiles({dir / "c.csv"});
   ASSERT_EQ(outcomes[0].status, ImportStatus::Imported) << outcomes[0].message;
   EXPECT_TRUE(outcomes[0].warnings.empty());
   EXPECT_EQ(db->sceneJson(outcomes[0].runId).value(), sceneText);
+}
+
+// Regression: the `scene` value was read as any path (absolute, `..`, /dev/zero, a FIFO). Only a
+// plain regular file in the run file's own folder is read; anything else is a warning and the run
+// is stored without its scene, at once (a FIFO does not hang, a device is not read).
+TEST(Import, SceneValueIsNeverAPathOutsideTheRunFilesFolder) {
+  TempDir dir;
+  const std::string sceneText =
+      R"({"name":"corridor","bounds":[0,0,10,10],"obstacles":[],"start":{"x":1,"y":1,"theta":0},"goal":{"x":9,"y":9}})";
+  std::filesystem::create_directories(dir / "runs" / "sub");
+  writeText(dir / "outside.json", sceneText);
+  writeText(dir / "runs" / "sub" / "inner.json", sceneText);
+  ASSERT_EQ(::mkfifo((dir / "runs" / "pipe.json").c_str(), 0600), 0);
+  std::filesystem::create_symlink(dir / "outside.json", dir / "runs" / "link.json");
+  {
+    // Larger than the cap (sparse: no disk used).
+    std::ofstream big(dir / "runs" / "big.json");
+    big << "{";
+  }
+  std::filesystem::resize_file(dir / "runs" / "big.json", (std::uint64_t{16} << 20) + 1);
+  const std::vector<std::pair<std::string, std::string>> refused = {
+      {(dir / "outside.json").string(), "folder part"},
+      {"../outside.json", "folder part"},
+      {"sub/inner.json", "folder part"},
+      {"/dev/zero", "folder part"},
+      {"..", "folder part"},
+      {"pipe.json", "not a regular file"},
+      {"link.json", "symbolic link"},
+      {"big.json", "more than the"},
+      {"absent.json", "No such file"},
+  };
+  auto db = test::openDb(":memory:");
+  for (std::size_t i = 0; i < refused.size(); ++i) {
+    RunData run = makeRun(8, false, static_cast<unsigned>(100 + i));
+    run.setMeta("scene", refused[i].first);
+    const auto file = dir / "runs" / ("r" + std::to_string(i) + ".csv");
+    ASSERT_TRUE(writeRunCsv(run, file).ok());
+    const auto outcomes = db->importFiles({file});
+    ASSERT_EQ(outcomes[0].status, ImportStatus::Imported) << outcomes[0].message;
+    ASSERT_EQ(outcomes[0].warnings.size(), 1u) << refused[i].first;
+    EXPECT_NE(outcomes[0].warnings[0].find(refused[i].second), std::string::npos)
+        << outcomes[0].warnings[0];
+    EXPECT_FALSE(db->sceneJson(outcomes[0].runId)->has_value()) << refused[i].first;
+  }
+  // The same file beside the run is read.
+  writeText(dir / "runs" / "beside.json", sceneText);
+  RunData run = makeRun(8, false, 99);
+  run.setMeta("scene", "beside.json");
+  ASSERT_TRUE(writeRunCsv(run, dir / "runs" / "ok.csv").ok());
+  const auto ok = db->importFiles({dir / "runs" / "ok.csv"});
+  ASSERT_EQ(ok[0].status, ImportStatus::Imported) << ok[0].message;
+  EXPECT_TRUE(ok[0].warnings.empty());
+  EXPECT_EQ(db->sceneJson(ok[0].runId).value(), sceneText);
 }
 
 TEST(Import, UnresolvableSceneIsAWarningNotAFailure) {

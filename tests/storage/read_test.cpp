@@ -348,8 +348,10 @@ TEST(ReadSnapshot, AFailedReadDoesNotPinTheConnectionToAnOldSnapshot) {
               SQLITE_OK);
     sqlite3_close(raw);
   }
-  auto b = test::openDb(path.string());
-  ASSERT_NE(b, nullptr);
+  // Read-only: a writable open refuses the damaged database (docs/storage.md#checksums).
+  auto opened = RunDatabase::open(path, OpenMode::ReadOnly);
+  ASSERT_TRUE(opened.ok()) << opened.errorText();
+  auto& b = opened.value();
   EXPECT_FALSE(b->loadWindow(outcome.runId, 0, 5).ok());  // malformed metadata
   ASSERT_TRUE(a->createLabelSet("new").ok());             // written by the other connection
   EXPECT_TRUE(b->findLabelSet("new").ok());               // and seen at once

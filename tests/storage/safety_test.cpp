@@ -175,6 +175,28 @@ TEST(ForeignFile, AnotherProgramsSqliteFileIsLeftByteForByte) {
   expectRefusedUnchanged(app, "another application");
 }
 
+// Regression: a file with a user_version but another program's schema (no application id) was
+// switched to WAL and got a .v2.bak beside it, with a multi-line SQL error.
+TEST(ForeignFile, AUserVersionWithoutTheApplicationIdIsNotOurs) {
+  TempDir dir;
+  const fs::path versioned = dir / "versioned.db";
+  sqliteExec(versioned, "PRAGMA user_version = 2; CREATE TABLE notes(x);");
+  expectRefusedUnchanged(versioned, "without the Tactile application id (user_version 2)");
+  const fs::path bare = dir / "bare.db";
+  sqliteExec(bare, "PRAGMA user_version = 4;");  // the current version, no tables, no id
+  expectRefusedUnchanged(bare, "not a Tactile database");
+  for (const fs::path& path : {versioned, bare}) {
+    for (OpenMode mode : {OpenMode::Create, OpenMode::ReadWrite, OpenMode::ReadOnly}) {
+      auto db = RunDatabase::open(path, mode);
+      ASSERT_FALSE(db.ok());
+      EXPECT_EQ(db.errorText().find('\n'), std::string::npos) << db.errorText();
+    }
+    for (const auto& entry : fs::directory_iterator(dir.path())) {
+      EXPECT_EQ(entry.path().string().find(".bak"), std::string::npos) << entry.path();
+    }
+  }
+}
+
 TEST(ForeignFile, NonSqliteFileIsRefusedNamingIt) {
   TempDir dir;
   const fs::path path = dir / "text.db";
