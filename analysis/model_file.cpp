@@ -4,6 +4,8 @@
 #include <set>
 
 #include "base/file_text.h"
+#include "base/text_rules.h"
+#include "run/json_text.h"
 #include "run/run_csv.h"
 
 namespace tactile::analysis {
@@ -252,15 +254,6 @@ GroupModel modelOf(const json& v, const std::string& path) {
   return model;
 }
 
-// 1-based line of a byte offset, for JSON syntax errors.
-std::size_t lineOfOffset(std::string_view text, std::size_t offset) {
-  std::size_t line = 1;
-  for (std::size_t i = 0; i < offset && i < text.size(); ++i) {
-    if (text[i] == '\n') ++line;
-  }
-  return line;
-}
-
 }  // namespace
 
 const GroupModel* ModelBundle::find(SensorGroup group) const {
@@ -344,7 +337,7 @@ Result<ModelBundle> modelsFromJson(const json& value, std::string_view fileName)
            "expected \"tactile-model\" or \"tactile-model-bundle\", found \"" + format + "\"");
     }
   } catch (const ModelError& e) {
-    return Error(std::string(fileName), e.path + ": " + e.message);
+    return Error(std::string(fileName), shownText(e.path + ": " + e.message, 400));
   } catch (const json::exception& e) {
     return Error(std::string(fileName), e.what());
   }
@@ -352,14 +345,13 @@ Result<ModelBundle> modelsFromJson(const json& value, std::string_view fileName)
 }
 
 Result<ModelBundle> parseModelJson(std::string_view text, std::string_view fileName) {
-  json value;
-  try {
-    value = json::parse(text.begin(), text.end());
-  } catch (const json::parse_error& e) {
-    return Error(std::string(fileName), lineOfOffset(text, e.byte == 0 ? 0 : e.byte - 1), 0,
-                 std::string("invalid JSON: ") + e.what());
+  Result<json> value = parseJsonText(text, fileName);
+  if (!value) {
+    Error error = value.error();
+    error.message = "invalid JSON: " + error.message;
+    return error;
   }
-  return modelsFromJson(value, fileName);
+  return modelsFromJson(value.value(), fileName);
 }
 
 Result<ModelBundle> readModelFile(const std::filesystem::path& path) {
@@ -369,11 +361,11 @@ Result<ModelBundle> readModelFile(const std::filesystem::path& path) {
 }
 
 Status writeModelFile(const std::filesystem::path& path, const GroupModel& model) {
-  return writeFileAtomically(path, modelToJson(model).dump(1) + "\n");
+  return writeFileAtomically(path, dumpJson(modelToJson(model), 1) + "\n");
 }
 
 Status writeModelBundleFile(const std::filesystem::path& path, const ModelBundle& bundle) {
-  return writeFileAtomically(path, bundleToJson(bundle).dump(1) + "\n");
+  return writeFileAtomically(path, dumpJson(bundleToJson(bundle), 1) + "\n");
 }
 
 }  // namespace tactile::analysis

@@ -70,14 +70,20 @@ Result<std::string> readFileText(const std::filesystem::path& path) {
   std::string text;
   std::error_code ec;
   const auto size = std::filesystem::file_size(path, ec);
-  text.clear();
-  if (!ec) text.resize(size);
-  std::size_t got = ec ? 0 : std::fread(text.data(), 1, text.size(), f);
-  // Files that grow while read, or report no size (pipes), are read to the end.
-  char buffer[65536];
-  text.resize(got);
-  while (std::size_t n = std::fread(buffer, 1, sizeof buffer, f))
-    text.append(buffer, n);
+  try {
+    if (!ec) text.resize(size);
+    std::size_t got = ec ? 0 : std::fread(text.data(), 1, text.size(), f);
+    // Files that grow while read, or report no size (pipes), are read to the end.
+    char buffer[65536];
+    text.resize(got);
+    while (std::size_t n = std::fread(buffer, 1, sizeof buffer, f))
+      text.append(buffer, n);
+  } catch (const std::exception&) {  // std::bad_alloc, std::length_error
+    const std::size_t got = text.size();
+    std::fclose(f);
+    return Error(path.string(), "too large to read into memory (out of memory after " +
+                                    std::to_string(got) + " bytes)");
+  }
   const bool failed = std::ferror(f) != 0;
   std::fclose(f);
   if (failed) return Error(path.string(), "read error");

@@ -27,6 +27,14 @@ inline bool parseInteger(std::string_view text, std::int64_t& out) {
   return ec == std::errc() && ptr == end;
 }
 
+// A count or step number: an integer literal of digits only, no sign, no leading zero ("0" is the
+// only literal that starts with 0), that fits an int64.
+inline bool parseCount(std::string_view text, std::int64_t& out) {
+  if (text.empty() || text[0] < '0' || text[0] > '9') return false;
+  if (text[0] == '0' && text.size() > 1) return false;
+  return parseInteger(text, out);
+}
+
 // Splits "a,b,c" into finite doubles; false unless exactly `count` of them.
 inline bool parseDoubleList(std::string_view text, std::size_t count, std::vector<double>& out) {
   out.clear();

@@ -2,10 +2,12 @@
 
 #include <algorithm>
 #include <array>
-
-#include <nlohmann/json.hpp>
+#include <cstdint>
+#include <limits>
 
 #include "base/text_parse.h"
+#include "base/text_rules.h"
+#include "run/json_text.h"
 
 namespace tactile {
 namespace {
@@ -25,19 +27,22 @@ std::vector<std::string_view> splitComma(std::string_view line) {
 std::string fillRecord(LabelRecord& record, std::string_view group, std::string_view first,
                        std::string_view last, std::string_view cls) {
   if (record.run.empty()) return "empty run name";
+  if (Status name = checkName(record.run, "run"); !name) return name.error().message;
   const auto g = parseSensorGroup(group);
-  if (!g)
-    return "unknown group '" + std::string(group) + "' (expected F, FLC, L, RLC, B, RRC, R, FRC)";
-  record.group = *g;
-  if (!parseInteger(first, record.firstStep) || record.firstStep < 0) {
-    return "first_step '" + std::string(first) + "' is not a step number";
+  if (!g) {
+    return "unknown group '" + shownText(group, 40) + "' (expected F, FLC, L, RLC, B, RRC, R, FRC)";
   }
-  if (!parseInteger(last, record.lastStep) || record.lastStep < record.firstStep) {
-    return "last_step '" + std::string(last) + "' is not a step number >= first_step";
+  record.group = *g;
+  if (!parseCount(first, record.firstStep)) {
+    return "first_step '" + shownText(first, 40) +
+           "' is not a step number (digits only: no sign, no leading zero)";
+  }
+  if (!parseCount(last, record.lastStep) || record.lastStep < record.firstStep) {
+    return "last_step '" + shownText(last, 40) + "' is not a step number >= first_step";
   }
   const auto c = parseContactClass(cls);
   if (!c) {
-    return "unknown class '" + std::string(cls) +
+    return "unknown class '" + shownText(cls, 40) +
            "' (expected NoContact, Wall, Corner, LeavingWall or DeadPath)";
   }
   record.cls = *c;
@@ -53,9 +58,10 @@ bool isChecksum(std::string_view text) {
 // Checks one provenance entry and adds it; returns an error text or empty.
 std::string addProvenance(std::vector<LabelRunProvenance>& runs, LabelRunProvenance entry) {
   if (entry.name.empty()) return "provenance without a run name";
+  if (Status name = checkName(entry.name, "run"); !name) return name.error().message;
   if (entry.steps < 0) return "run '" + entry.name + "': step count must not be negative";
   if (!isChecksum(entry.checksum)) {
-    return "run '" + entry.name + "': checksum '" + entry.checksum +
+    return "run '" + entry.name + "': checksum '" + shownText(entry.checksum, 40) +
            "' is not 16 lower-case hex digits";
   }
   for (const LabelRunProvenance& other : runs) {
@@ -80,8 +86,9 @@ std::string parseProvenanceLine(std::string_view line, LabelRunProvenance& entry
     return std::string(kExpected);
   }
   entry.name = std::string(rest);
-  if (!parseInteger(tail[1], entry.steps)) {
-    return "run '" + entry.name + "': step count '" + std::string(tail[1]) + "' is not a number";
+  if (!parseCount(tail[1], entry.steps)) {
+    return "run '" + shownText(entry.name, 60) + "': step count '" + shownText(tail[1], 40) +
+           "' is not a number (digits only: no sign, no leading zero)";
   }
   entry.checksum = std::string(tail[3]);
   return {};
@@ -132,14 +139,14 @@ Result<LabelFile> parseLabelCsv(std::string_view text, std::string_view fileName
         const auto it = std::find(kNames.begin(), kNames.end(), names[i]);
         if (it == kNames.end()) {
           return fail(lineNo, "column " + std::to_string(i + 1) + ": unknown column '" +
-                                  std::string(names[i]) +
+                                  shownText(names[i], 40) +
                                   "' (expected run, group, first_step, last_step, class and "
                                   "optionally annotator)");
         }
         int& slot = position[it - kNames.begin()];
         if (slot >= 0) {
           return fail(lineNo, "column " + std::to_string(i + 1) + ": duplicate column '" +
-                                  std::string(names[i]) + "'");
+                                  shownText(names[i], 40) + "'");
         }
         slot = static_cast<int>(i);
       }
@@ -169,7 +176,14 @@ Result<LabelFile> parseLabelCsv(std::string_view text, std::string_view fileName
         !error.empty()) {
       return fail(lineNo, error);
     }
-    if (position[5] >= 0) record.annotator = std::string(fields[position[5]]);
+    if (position[5] >= 0) {
+      record.annotator = std::string(fields[position[5]]);
+      if (!record.annotator.empty()) {
+        if (Status name = checkName(record.annotator, "annotator"); !name) {
+          return fail(lineNo, name.error().message);
+        }
+      }
+    }
     result.records.push_back(std::move(record));
   }
   if (header && lineNo == 0) return fail(1, "empty file (expected a header)");
@@ -180,17 +194,16 @@ Result<LabelFile> parseLabelCsv(std::string_view text, std::string_view fileName
 Result<LabelFile> parseLabelJson(std::string_view text, std::string_view fileName) {
   LabelFile result;
   const std::string name(fileName);
-  nlohmann::json doc = nlohmann::json::parse(text, nullptr, false);
-  if (doc.is_discarded()) {
-    return Error(name, "not valid JSON");
-  }
+  Result<nlohmann::json> parsed = parseJsonText(text, fileName);
+  if (!parsed) return parsed.error();
+  const nlohmann::json& doc = parsed.value();
   const nlohmann::json* segments = &doc;
   if (doc.is_object()) {
     if (doc.contains("format") && doc["format"] != "tactile-labels") {
       return Error(name, "format is not \"tactile-labels\"");
     }
     if (doc.contains("version") && doc["version"] != 1) {
-      return Error(name, "unsupported label file version " + doc["version"].dump());
+      return Error(name, "unsupported label file version " + dumpJson(doc["version"]));
     }
     if (!doc.contains("segments")) {
       return Error(name, "missing \"segments\"");
@@ -210,6 +223,10 @@ Result<LabelFile> parseLabelJson(std::string_view text, std::string_view fileNam
             !item.contains("steps") || !item["steps"].is_number_integer() ||
             !item.contains("checksum") || !item["checksum"].is_string()) {
           error = "expected {\"name\": text, \"steps\": integer, \"checksum\": text}";
+        } else if (item["steps"].is_number_unsigned() &&
+                   item["steps"].get<std::uint64_t>() >
+                       static_cast<std::uint64_t>(std::numeric_limits<std::int64_t>::max())) {
+          error = "step count " + dumpJson(item["steps"]) + " is too large";
         } else {
           entry.name = item["name"].get<std::string>();
           entry.steps = item["steps"].get<std::int64_t>();
@@ -243,6 +260,12 @@ Result<LabelFile> parseLabelJson(std::string_view text, std::string_view fileNam
       if (!item.contains(key) || !item[key].is_number_integer()) {
         return fail(std::string("missing integer field \"") + key + "\"");
       }
+      // Beyond int64 (e.g. 18446744073709551615) is no step number; shown as written.
+      if (item[key].is_number_unsigned() &&
+          item[key].get<std::uint64_t>() >
+              static_cast<std::uint64_t>(std::numeric_limits<std::int64_t>::max())) {
+        return fail(std::string(key) + " " + dumpJson(item[key]) + " is not a step number");
+      }
     }
     LabelRecord record;
     record.line = index;
@@ -257,6 +280,11 @@ Result<LabelFile> parseLabelJson(std::string_view text, std::string_view fileNam
     if (item.contains("annotator")) {
       if (!item["annotator"].is_string()) return fail("\"annotator\" is not text");
       record.annotator = item["annotator"].get<std::string>();
+      if (!record.annotator.empty()) {
+        if (Status annotator = checkName(record.annotator, "annotator"); !annotator) {
+          return fail(annotator.error().message);
+        }
+      }
     }
     result.records.push_back(std::move(record));
   }
@@ -310,7 +338,7 @@ std::string formatLabelJson(const std::vector<LabelRecord>& records, std::string
     doc["runs"] = std::move(list);
   }
   doc["segments"] = std::move(segments);
-  return doc.dump(1) + "\n";
+  return dumpJson(doc, 1) + "\n";
 }
 
 }  // namespace tactile

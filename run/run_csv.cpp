@@ -16,6 +16,7 @@
 
 #include "base/file_text.h"
 #include "base/text_parse.h"
+#include "base/text_rules.h"
 
 namespace tactile {
 namespace {
@@ -84,69 +85,6 @@ bool classifyColumn(std::string_view name, Column& out) {
   return false;
 }
 
-// Offset of the first byte of `text` that does not belong to well-formed UTF-8 (RFC 3629: no
-// overlong forms, no surrogates, nothing above U+10FFFF), or npos when it is all valid. Only text
-// fields go through here (metadata, the header, x_ values); numbers are parsed strictly instead.
-std::size_t invalidUtf8At(std::string_view text) {
-  const auto* s = reinterpret_cast<const unsigned char*>(text.data());
-  const std::size_t n = text.size();
-  std::size_t i = 0;
-  while (i < n) {
-    // ASCII runs, eight bytes at a time.
-    while (i + 8 <= n) {
-      std::uint64_t word;
-      std::memcpy(&word, s + i, 8);
-      if ((word & 0x8080808080808080ULL) != 0) break;
-      i += 8;
-    }
-    if (i >= n) break;
-    const unsigned char c = s[i];
-    if (c < 0x80) {
-      ++i;
-      continue;
-    }
-    std::size_t length = 0;
-    unsigned char low = 0x80;
-    unsigned char high = 0xBF;
-    if (c >= 0xC2 && c <= 0xDF) {
-      length = 2;
-    } else if (c >= 0xE0 && c <= 0xEF) {
-      length = 3;
-      if (c == 0xE0) low = 0xA0;   // overlong
-      if (c == 0xED) high = 0x9F;  // surrogates
-    } else if (c >= 0xF0 && c <= 0xF4) {
-      length = 4;
-      if (c == 0xF0) low = 0x90;   // overlong
-      if (c == 0xF4) high = 0x8F;  // above U+10FFFF
-    } else {
-      return i;
-    }
-    if (i + length > n) return i;
-    if (s[i + 1] < low || s[i + 1] > high) return i;
-    for (std::size_t k = 2; k < length; ++k) {
-      if (s[i + k] < 0x80 || s[i + k] > 0xBF) return i;
-    }
-    i += length;
-  }
-  return std::string_view::npos;
-}
-
-// `text` with every byte that is not part of well-formed UTF-8 written as "\xHH", for messages.
-std::string escapedUtf8(std::string_view text) {
-  std::string out;
-  while (!text.empty()) {
-    const std::size_t bad = invalidUtf8At(text);
-    out.append(text.substr(0, bad));
-    if (bad == std::string_view::npos) break;
-    char hex[8];
-    std::snprintf(hex, sizeof hex, "\\x%02X",
-                  static_cast<unsigned>(static_cast<unsigned char>(text[bad])));
-    out += hex;
-    text.remove_prefix(bad + 1);
-  }
-  return out;
-}
-
 // "expected UTF-8 text in WHAT, found an invalid byte 0xHH at byte K OF".
 std::string utf8Message(std::string_view what, std::string_view text, std::size_t at,
                         std::string_view of = "of the field") {
@@ -157,12 +95,46 @@ std::string utf8Message(std::string_view what, std::string_view text, std::size_
          " at byte " + std::to_string(at + 1) + " " + std::string(of);
 }
 
+// The name of the first control character in `text` ("a form feed (U+000C) at byte 2"), or empty.
+std::string controlCharacterIn(std::string_view text) {
+  for (std::size_t i = 0; i < text.size(); ++i) {
+    const auto c = static_cast<unsigned char>(text[i]);
+    if (c >= 0x20 && c != 0x7F) continue;
+    const char* name = "a control character";
+    switch (c) {
+      case 0x00:
+        name = "a NUL byte";
+        break;
+      case '\t':
+        name = "a tab";
+        break;
+      case '\v':
+        name = "a vertical tab";
+        break;
+      case '\f':
+        name = "a form feed";
+        break;
+      case '\r':
+        name = "a carriage return";
+        break;
+      default:
+        break;
+    }
+    char code[16];
+    std::snprintf(code, sizeof code, " (U+%04X)", static_cast<unsigned>(c));
+    return std::string(name) + code + " at byte " + std::to_string(i + 1);
+  }
+  return {};
+}
+
+// The field in quotes for a message: control characters and bytes that are not UTF-8 as \xHH, and
+// the first control character named, so a form feed is never shown as nothing.
 std::string shown(std::string_view text) {
   constexpr std::size_t kMaxShown = 40;
-  std::string out = "'";
-  out.append(text.substr(0, kMaxShown));
-  if (text.size() > kMaxShown) out += "...";
-  out += "'";
+  std::string out = "'" + shownText(text, kMaxShown) + "'";
+  if (std::string control = controlCharacterIn(text); !control.empty()) {
+    out += " (holds " + control + ")";
+  }
   return out;
 }
 
@@ -367,7 +339,7 @@ class Parser {
       const int position = static_cast<int>(columns_.size());
       Column column{ColumnKind::Extra, 0, std::string(name)};
       if (const std::size_t bad = invalidUtf8At(name); bad != std::string_view::npos) {
-        columns_.push_back(Column{ColumnKind::Extra, 0, escapedUtf8(name)});
+        columns_.push_back(Column{ColumnKind::Extra, 0, shownText(name, 40)});
         return setError(headerLine_, utf8Message("the column name", name, bad), position);
       }
       if (name.empty()) {
@@ -577,10 +549,38 @@ class Parser {
         (ec != std::errc() && ec != std::errc::result_out_of_range)) {
       return numberError(lineNo, c, field, "a number");
     }
-    if (ec == std::errc::result_out_of_range || !std::isfinite(out)) {
+    if (ec == std::errc::result_out_of_range) {
+      if (underflows(field)) {
+        return setError(lineNo,
+                        "expected a number a double can hold, found " + shown(field) +
+                            ": it underflows (nonzero, but closer to zero than the smallest "
+                            "double, about 4.9e-324; write 0 for zero)",
+                        c);
+      }
+      return setError(lineNo,
+                      "expected a finite number, found " + shown(field) +
+                          ": it overflows (larger in magnitude than the largest double, about "
+                          "1.8e308)",
+                      c);
+    }
+    if (!std::isfinite(out)) {
       return numberError(lineNo, c, field, "a finite number (no NaN or infinity)");
     }
     return true;
+  }
+
+  // For a number literal std::from_chars found out of range for a double: true when it is too
+  // close to zero rather than too large.
+  static bool underflows(std::string_view field) {
+    long double wide = 0.0L;
+    const char* end = field.data() + field.size();
+    const auto [ptr, ec] = std::from_chars(field.data(), end, wide, std::chars_format::general);
+    if (ec == std::errc() && ptr == end) return std::fabs(wide) < 1.0L;
+    // Beyond even a long double: the sign of the exponent decides, else the integer digits.
+    const std::size_t e = field.find_first_of("eE");
+    if (e != std::string_view::npos && e + 1 < field.size()) return field[e + 1] == '-';
+    const std::string_view mantissa = field.substr(field.starts_with('-') ? 1 : 0);
+    return mantissa.substr(0, mantissa.find('.')).find_first_not_of('0') == std::string_view::npos;
   }
 
   bool parseField(const Column& column, std::string_view field, std::size_t lineNo, int c,
@@ -614,7 +614,10 @@ class Parser {
             pose[static_cast<std::size_t>(column.kind) - static_cast<std::size_t>(ColumnKind::X)]);
       case ColumnKind::Step: {
         std::int64_t value = -1;
-        if (!parseInteger(field, value)) return numberError(lineNo, c, field, "an integer step");
+        if (!parseCount(field, value)) {
+          return numberError(lineNo, c, field,
+                             "an integer step (digits only: no sign, no leading zero)");
+        }
         if (value != static_cast<std::int64_t>(step)) {
           return setError(lineNo,
                           "expected step " + std::to_string(step) +
@@ -624,9 +627,9 @@ class Parser {
         return true;
       }
       case ColumnKind::Blocked:
-        if (!parseInteger(field, blocked) || (blocked != 0 && blocked != 1)) {
-          return numberError(lineNo, c, field, "0 or 1");
-        }
+        // Exactly "0" or "1": an integer literal, no sign, no leading zero.
+        if (field != "0" && field != "1") return numberError(lineNo, c, field, "0 or 1");
+        blocked = field[0] - '0';
         return true;
       case ColumnKind::Truth: {
         const std::optional<ContactClass> cls = parseContactClass(field);

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <nlohmann/json.hpp>
 
+#include "run/json_text.h"
 #include "sim/polygon_check.h"
 
 namespace tactile::sim {
@@ -144,12 +145,13 @@ Status validateSceneGeometry(const Scene& scene) {
 
 Result<Scene> parseSceneJson(std::string_view text, std::string_view sourceName) {
   const std::string source(sourceName);
-  json doc;
-  try {
-    doc = json::parse(text.begin(), text.end());
-  } catch (const json::parse_error& e) {
-    return Error(source, std::string("not valid JSON (") + e.what() + ")");
+  Result<json> parsed = parseJsonText(text, sourceName);
+  if (!parsed) {
+    Error error = parsed.error();
+    error.message = "not valid JSON: " + error.message;
+    return error;
   }
+  const json& doc = parsed.value();
   Scene scene;
   try {
     if (!doc.is_object()) throw SchemaError{"the scene must be a JSON object"};
@@ -216,7 +218,7 @@ std::string sceneToJson(const Scene& scene) {
   doc["obstacles"] = obstacles;
   doc["start"] = {{"x", scene.start.x}, {"y", scene.start.y}, {"theta", scene.start.theta}};
   doc["goal"] = {{"x", scene.goal.x()}, {"y", scene.goal.y()}};
-  return doc.dump(1) + "\n";
+  return dumpJson(doc, 1) + "\n";
 }
 
 }  // namespace tactile::sim

@@ -24,16 +24,6 @@ Result<T> aboutDatabase(const std::filesystem::path& db, Fn&& fn) {
   }
 }
 
-// Names end up in label files (unquoted CSV fields, one line each), so they hold no comma or line
-// break; docs/file-formats.md#label-file.
-void checkNewName(const std::string& name, const char* what) {
-  if (name.empty()) throw db::DbError(std::string("a ") + what + " needs a name");
-  if (name.find_first_of(",\r\n") != std::string::npos) {
-    throw db::DbError(std::string("a ") + what + " name must not hold a comma or line break: '" +
-                      name + "'");
-  }
-}
-
 std::string quotedList(const std::vector<std::string>& names) {
   std::string out;
   for (const std::string& name : names)
@@ -95,7 +85,7 @@ Result<std::vector<RunCatalogEntry>> RunDatabase::runCatalog() {
 Status RunDatabase::renameRun(std::string_view name, const std::string& newName) {
   const ResetStatements reset{*impl_};
   return aboutDatabase<void>(impl_->path, [&] {
-    checkNewName(newName, "run");
+    requireName(newName, "run");
     db::Transaction transaction(impl_->connection);
     const std::int64_t id = impl_->runIdByName(name);  // "no run named 'X'"
     db::Statement& taken = impl_->statement("SELECT source_file FROM runs WHERE name = ?");
@@ -169,7 +159,7 @@ Result<std::vector<LabelSetCatalogEntry>> RunDatabase::labelSetCatalog() {
 Status RunDatabase::renameLabelSetNamed(std::string_view name, const std::string& newName) {
   const ResetStatements reset{*impl_};
   return aboutDatabase<void>(impl_->path, [&] {
-    checkNewName(newName, "label set");
+    requireName(newName, "label set");
     db::Transaction transaction(impl_->connection);
     const std::int64_t id = impl_->labelSetIdByName(name);
     if (id == 0) throw db::DbError("no label set named '" + std::string(name) + "'");

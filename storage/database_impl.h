@@ -5,6 +5,7 @@
 #include <string>
 #include <unordered_map>
 
+#include "base/text_rules.h"
 #include "storage/run_database.h"
 #include "storage/sqlite_db.h"
 
@@ -63,6 +64,13 @@ class ResetStatements {
  private:
   RunDatabase::Impl& impl_;
 };
+
+// The name rule (base/text_rules.h) at the storage boundary, so that every way a name enters
+// (CLI, GUI, workspace) meets it: throws DbError with the rule's message. `what` is "run",
+// "label set", "model", "sweep" or "annotator".
+inline void requireName(std::string_view name, std::string_view what) {
+  if (Status ok = checkName(name, what); !ok) throw db::DbError(ok.error().message);
+}
 
 // Runs one public call: `fn`, with any exception turned into a failed Result / Status (a DbError
 // from SQLite names its database in Error::file, docs/storage.md#errors), then the statements

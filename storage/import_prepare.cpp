@@ -20,6 +20,7 @@
 #include <cerrno>
 
 #include "base/file_text.h"
+#include "base/text_rules.h"
 #include "run/builtin_scenes.h"
 #include "run/run_csv.h"
 #include "storage/import_pieces.h"
@@ -267,8 +268,11 @@ void describeText(FileHead& head, const RunCsvChunks& chunks, const SceneResolve
 // The given name, else `PREFIX_<stem>` (or the stem without a prefix); docs/storage.md#import.
 std::string runName(const ImportOptions& options, const std::filesystem::path& file) {
   if (!options.name.empty()) return options.name;
-  if (options.namePrefix.empty()) return file.stem().string();
-  return options.namePrefix + "_" + file.stem().string();
+  // A stem's commas and control characters become '_' (the name rule, base/text_rules.h); the
+  // rule itself is checked when the run is written.
+  const std::string stem = nameFromFileStem(file.stem().string());
+  if (options.namePrefix.empty()) return stem;
+  return options.namePrefix + "_" + stem;
 }
 
 ImportOutcome cancelledOutcome(const std::filesystem::path& file) {

@@ -31,7 +31,7 @@ std::int64_t RunDatabase::Impl::labelSetIdByName(std::string_view name) {
 }
 
 std::int64_t RunDatabase::Impl::ensureLabelSet(const std::string& name) {
-  if (name.empty()) throw db::DbError("a label set needs a name");
+  requireName(name, "label set");
   if (const std::int64_t id = labelSetIdByName(name); id != 0) return id;
   const std::string now = utcNow();
   statement("INSERT INTO label_sets(name, created_at) VALUES(?, ?)")
@@ -44,6 +44,7 @@ std::int64_t RunDatabase::Impl::ensureLabelSet(const std::string& name) {
 std::int64_t RunDatabase::Impl::insertSegmentNewestWins(std::int64_t setId,
                                                         const LabelSegment& segment,
                                                         std::int64_t keepId) {
+  if (!segment.annotator.empty()) requireName(segment.annotator, "annotator");
   std::int64_t runId = segment.runId;
   if (runId == 0) runId = runIdByName(segment.run);
   const std::int64_t steps = runStepCount(runId);
@@ -152,7 +153,8 @@ Result<LabelSetInfo> RunDatabase::findLabelSet(std::string_view name) {
 Result<std::int64_t> RunDatabase::createLabelSet(const std::string& name,
                                                  const std::string& annotator) {
   return guarded<std::int64_t>(*impl_, [&] {
-    if (name.empty()) throw db::DbError("a label set needs a name");
+    requireName(name, "label set");
+    if (!annotator.empty()) requireName(annotator, "annotator");
     db::Transaction transaction(impl_->connection);
     if (impl_->labelSetIdByName(name) != 0) {
       throw db::DbError("a label set named '" + name + "' already exists");
@@ -171,7 +173,7 @@ Result<std::int64_t> RunDatabase::createLabelSet(const std::string& name,
 
 Status RunDatabase::renameLabelSet(std::int64_t setId, const std::string& newName) {
   return guardedStatus(*impl_, [&] {
-    if (newName.empty()) throw db::DbError("a label set needs a name");
+    requireName(newName, "label set");
     db::Transaction transaction(impl_->connection);
     const std::int64_t existing = impl_->labelSetIdByName(newName);
     if (existing != 0 && existing != setId) {
@@ -190,7 +192,7 @@ Status RunDatabase::renameLabelSet(std::int64_t setId, const std::string& newNam
 
 Result<std::int64_t> RunDatabase::copyLabelSet(std::int64_t setId, const std::string& newName) {
   return guarded<std::int64_t>(*impl_, [&] {
-    if (newName.empty()) throw db::DbError("a label set needs a name");
+    requireName(newName, "label set");
     db::Transaction transaction(impl_->connection);
     if (impl_->labelSetIdByName(newName) != 0) {
       throw db::DbError("a label set named '" + newName + "' already exists");

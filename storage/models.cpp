@@ -79,6 +79,7 @@ Result<std::int64_t> RunDatabase::addModel(const std::string& name, const std::s
                                            const std::string& trainedOnJson,
                                            const std::string& metricsJson) {
   return guarded<std::int64_t>(*impl_, [&] {
+    requireName(name, "model");
     db::Transaction transaction(impl_->connection);
     db::Statement& exists = impl_->statement("SELECT 1 FROM models WHERE name = ?");
     exists.bind(1, name);
@@ -107,6 +108,7 @@ Result<std::int64_t> RunDatabase::addModel(const std::string& name, const std::s
 Result<std::int64_t> RunDatabase::createSweep(const std::string& name,
                                               const std::string& configurationJson) {
   return guarded<std::int64_t>(*impl_, [&] {
+    requireName(name, "sweep");
     db::Transaction transaction(impl_->connection);
     impl_->statement("INSERT INTO sweeps(name, configuration, created_at) VALUES(?, ?, ?)")
         .bind(1, name)

@@ -282,6 +282,11 @@ Result<std::unique_ptr<RunDatabase>> RunDatabase::openFile(const std::filesystem
                                  " that this program understands; use a newer tactile"));
       }
       if (version < db::kSchemaVersion) {
+        // Advise the migrating verb only when the migration would work.
+        if (auto problem = db::migrationProblem(c)) {
+          return R(Error(name, "schema version " + std::to_string(version) + ", but " + *problem +
+                                   "; the file is damaged"));
+        }
         return R(Error(name, "schema version " + std::to_string(version) +
                                  ", older than this program's " +
                                  std::to_string(db::kSchemaVersion) +
@@ -550,6 +555,7 @@ Result<std::int64_t> RunDatabase::saveModel(const std::string& name, const std::
                                             const std::string& trainedOnJson,
                                             const std::string& metricsJson) {
   return guarded<std::int64_t>(*impl_, [&] {
+    requireName(name, "model");
     db::Transaction transaction(impl_->connection);
     const std::string now = utcNow();
     db::Statement& s = impl_->statement(
@@ -582,6 +588,7 @@ Result<std::int64_t> RunDatabase::saveSweep(
     const std::string& name, const std::string& configurationJson,
     const std::vector<std::pair<std::string, std::string>>& cells) {
   return guarded<std::int64_t>(*impl_, [&] {
+    requireName(name, "sweep");
     db::Transaction transaction(impl_->connection);
     const std::string now = utcNow();
     impl_->statement("INSERT INTO sweeps(name, configuration, created_at) VALUES(?, ?, ?)")

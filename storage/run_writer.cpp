@@ -68,6 +68,11 @@ ImportOutcome writeRun(RunDatabase::Impl& impl, FileHead& head,
     outcome.message = std::move(head.error);
     return outcome;
   }
+  if (Status name = checkName(head.name, "run"); !name) {
+    outcome.message = head.file + ": " + name.error().message +
+                      "; give the run a name with --name (or the file another name)";
+    return outcome;
+  }
   const RunData& header = head.header;
   try {
     // The steps and block rows reference the run row written in this same transaction, so their

@@ -2,7 +2,9 @@
 
 #include "storage/step_checksum.h"
 
+#include <algorithm>
 #include <array>
+#include <optional>
 #include <system_error>
 
 namespace tactile::storage::db {
@@ -239,6 +241,41 @@ void checkMigratable(const Identity& identity, const std::string& name) {
 
 }  // namespace
 
+std::optional<std::string> migrationProblem(Connection& connection, int targetVersion) {
+  const int version = schemaVersion(connection);
+  if (version <= 0 || version >= targetVersion) return std::nullopt;
+  // The schema alone (no rows), copied into a private in-memory database: tables first, then
+  // what refers to them.
+  Connection trial = Connection::open(":memory:", true);
+  for (const char* type : {"table", "index", "view", "trigger"}) {
+    Statement objects(connection,
+                      "SELECT sql FROM sqlite_schema WHERE type = ? AND sql IS NOT NULL AND "
+                      "name NOT LIKE 'sqlite_%' ORDER BY rowid");
+    objects.bind(1, std::string_view(type));
+    while (objects.step()) {
+      try {
+        trial.exec(objects.columnText(0));
+      } catch (const DbError& e) {
+        return std::string("its schema cannot be read back (") + e.what() + ")";
+      }
+    }
+  }
+  for (const Migration& migration : kMigrations) {
+    if (migration.version <= version || migration.version > targetVersion) continue;
+    try {
+      trial.exec(migration.sql);
+    } catch (const DbError& e) {
+      // SQLite's reason only, without the statement text the error carries after it.
+      std::string reason = e.what();
+      reason = reason.substr(0, std::min(reason.find(" (in:"), reason.find('\n')));
+      return "its tables do not match schema version " + std::to_string(version) +
+             " (the migration to schema version " + std::to_string(migration.version) +
+             " would fail: " + reason + ")";
+    }
+  }
+  return std::nullopt;
+}
+
 MigrationReport migrate(Connection& connection, const std::filesystem::path& dbPath,
                         int targetVersion) {
   MigrationReport report;
@@ -249,6 +286,12 @@ MigrationReport migrate(Connection& connection, const std::filesystem::path& dbP
   const std::string name = dbPath.string();
   checkMigratable(before, name);
   if (report.fromVersion >= targetVersion) return report;
+  // A user_version that does not match the tables (a damaged header) is refused before any
+  // backup or change, rather than failing halfway through.
+  if (auto problem = migrationProblem(connection, targetVersion)) {
+    throw DbError(name, "schema version " + std::to_string(report.fromVersion) + ", but " +
+                            *problem + "; the file is damaged and is left unchanged");
+  }
 
   const bool inMemory = name.empty() || name == ":memory:";
   if (report.fromVersion > 0 && !inMemory) {

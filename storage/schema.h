@@ -5,6 +5,7 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <optional>
 #include <span>
 #include <string>
 #include <string_view>
@@ -47,6 +48,13 @@ struct Identity {
   std::int64_t objects = 0;  // rows of sqlite_schema
 };
 Identity readIdentity(Connection& connection);
+
+// Why migrating this database from its user_version to `targetVersion` would fail, found by
+// running the migrations on a copy of its schema (no rows) in memory; nullopt when it would work
+// or nothing needs doing. Reads only. A damaged user_version (tables of another version) shows
+// here.
+std::optional<std::string> migrationProblem(Connection& connection,
+                                            int targetVersion = kSchemaVersion);
 
 // Brings the database to `targetVersion` (the newest by default; lower targets exist for tests
 // that need an old database). A database newer than kSchemaVersion, or one that belongs to

@@ -7,6 +7,7 @@
 #include <utility>
 
 #include "analysis/metrics.h"
+#include "run/json_text.h"
 
 #ifndef TACTILE_VERSION
 #define TACTILE_VERSION "unknown"
@@ -501,8 +502,8 @@ Result<TrainOutcome> Workspace::train(const TrainRequest& request, const Progres
       if (!taken.count(name)) break;
     }
   }
-  auto id = db_->addModel(name, analysis::bundleToJson(outcome.bundle).dump(), provenance.dump(),
-                          metrics.dump());
+  auto id = db_->addModel(name, dumpJson(analysis::bundleToJson(outcome.bundle)),
+                          dumpJson(provenance), dumpJson(metrics));
   if (!id) return id.error();
   outcome.modelName = name;
   outcome.modelId = id.value();
@@ -539,7 +540,7 @@ Result<SweepOutcome> Workspace::sweep(
   configuration["state"] = "running";
   configuration["program_version"] = programVersion();
   const std::string name = request.name.empty() ? request.labelSet + " sweep" : request.name;
-  auto sweepId = db_->createSweep(name, configuration.dump());
+  auto sweepId = db_->createSweep(name, dumpJson(configuration));
   if (!sweepId) return sweepId.error();
 
   Error storeError;
@@ -555,7 +556,7 @@ Result<SweepOutcome> Workspace::sweep(
                      {"order", cellJson["order"]}, {"covariance", cellJson["covariance"]},
                      {"floor", cellJson["floor"]}, {"features", cellJson["features"]},
                      {"seed", cellJson["seed"]}};
-    auto stored = db_->addSweepCell(sweepId.value(), settings.dump(), cellJson.dump());
+    auto stored = db_->addSweepCell(sweepId.value(), dumpJson(settings), dumpJson(cellJson));
     if (!stored && !storeFailed) {
       storeFailed = true;
       storeError = stored.error();
@@ -578,7 +579,7 @@ Result<SweepOutcome> Workspace::sweep(
   final["test_runs"] = configuration["test_runs"];
   final["state"] = storeFailed ? "failed" : outcome.result.cancelled ? "cancelled" : "finished";
   final["program_version"] = programVersion();
-  if (Status s = db_->updateSweep(sweepId.value(), final.dump()); !s) return s.error();
+  if (Status s = db_->updateSweep(sweepId.value(), dumpJson(final)); !s) return s.error();
   if (storeFailed) return storeError;
   return outcome;
 }

@@ -12,6 +12,8 @@
 
 #include "analysis/model_file.h"
 #include "analysis/report.h"
+#include "base/text_rules.h"
+#include "run/json_text.h"
 #include "workspace/workspace.h"
 
 namespace tactile::workspace {
@@ -49,15 +51,16 @@ Status Workspace::exportModel(std::string_view name, const std::filesystem::path
 Result<std::string> Workspace::importModel(const std::filesystem::path& file, std::string name) {
   const Result<analysis::ModelBundle> read = analysis::readModelFile(file);
   if (!read) return read.error();
-  if (name.empty()) name = file.stem().string();
+  // A stem's commas and control characters become '_'; the name rule is checked on storing.
+  if (name.empty()) name = nameFromFileStem(file.stem().string());
   json metrics = json::object();
   for (const analysis::GroupModel& m : read->models)
     metrics[std::string(groupInfo(m.group).shortName)] = m.metrics;
   json trainedOn = read->models.empty() ? json::object() : read->models.front().trainedOn;
   if (!trainedOn.is_object()) trainedOn = json::object();
   trainedOn["imported_from"] = file.string();
-  auto id = db_->addModel(name, analysis::bundleToJson(read.value()).dump(), trainedOn.dump(),
-                          metrics.dump());
+  auto id = db_->addModel(name, dumpJson(analysis::bundleToJson(read.value())), dumpJson(trainedOn),
+                          dumpJson(metrics));
   if (!id) return id.error();
   return name;
 }

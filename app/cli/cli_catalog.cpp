@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "app/cli/cli_common.h"
+#include "run/json_text.h"
 #include "storage/run_database.h"
 
 namespace tactile::cli {
@@ -16,7 +17,7 @@ void registerCatalogVerbs(CLI::App& app);
 namespace {
 
 void printJson(const nlohmann::json& doc) {
-  std::printf("%s\n", doc.dump().c_str());
+  std::printf("%s\n", dumpJson(doc).c_str());
 }
 
 std::string joined(const std::vector<std::string>& names) {
@@ -133,6 +134,7 @@ int runLabelsDelete(const std::string& dbPath, const std::vector<std::string>& n
 
 int runLabelsImport(const std::string& dbPath, const std::string& set, const std::string& file,
                     bool json) {
+  requireValidName(set, "--set", "label set");
   auto db = openDatabaseOrCreate(dbPath);
   auto count = db->importLabels(set, file);
   if (!count) throw std::runtime_error(count.errorText());

@@ -2,7 +2,10 @@
 
 #include <cstdio>
 #include <exception>
+#include <new>
 #include <string>
+
+#include "base/text_rules.h"
 
 namespace tactile::cli {
 namespace {
@@ -22,6 +25,26 @@ void printWarning(std::string_view message) {
                message.data());
 }
 
+void requireValidName(const std::string& value, std::string_view option, std::string_view what) {
+  if (Status ok = checkName(value, what); !ok) {
+    throw UsageError(std::string(option) + ": " + ok.error().message);
+  }
+}
+
+std::vector<std::string> splitNames(const std::vector<std::string>& given) {
+  std::vector<std::string> names;
+  for (const std::string& item : given) {
+    std::size_t start = 0;
+    while (true) {
+      const std::size_t comma = item.find(',', start);
+      names.push_back(item.substr(start, comma == std::string::npos ? comma : comma - start));
+      if (comma == std::string::npos) break;
+      start = comma + 1;
+    }
+  }
+  return names;
+}
+
 void setAction(CLI::App* command, std::function<int()> fn) {
   command->callback([fn = std::move(fn)] {
     try {
@@ -29,6 +52,9 @@ void setAction(CLI::App* command, std::function<int()> fn) {
     } catch (const UsageError& e) {
       printError(e.what());
       gExitCode = kExitUsage;
+    } catch (const std::bad_alloc&) {
+      printError("out of memory: the input is too large for this machine's memory");
+      gExitCode = kExitFailure;
     } catch (const std::exception& e) {
       printError(e.what());
       gExitCode = kExitFailure;

@@ -7,6 +7,7 @@
 #include <memory>
 #include <string>
 #include <string_view>
+#include <vector>
 
 namespace tactile::storage {
 class RunDatabase;
@@ -30,6 +31,15 @@ void printWarning(std::string_view message);
 struct UsageError : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
+
+// The name rule (base/text_rules.h) for a name given on the command line: a UsageError naming
+// the option ("--name: a run name must ...") when `value` breaks it. `what` is "run", "label set",
+// "model", "sweep" or "annotator".
+void requireValidName(const std::string& value, std::string_view option, std::string_view what);
+
+// Names given as `A B` or `A,B` (or both), split at commas: no valid name holds one. Only for
+// names; file paths are never split.
+std::vector<std::string> splitNames(const std::vector<std::string>& given);
 
 // Makes `fn` the action of a parsed subcommand. Its return value becomes the exit status; a
 // UsageError exits 2, any other exception prints `tactile: error:` and exits 1.

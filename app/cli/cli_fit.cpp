@@ -14,6 +14,7 @@
 #include "app/cli/cli_classifier_options.h"
 #include "app/cli/cli_common.h"
 #include "base/file_text.h"
+#include "run/json_text.h"
 #include "run/run_csv.h"
 
 namespace tactile::cli {
@@ -148,7 +149,7 @@ int runFit(const FitArgs& f, const ClassifierArgs& a) {
     j["likelihood_drop_per_class"] = e.fit.likelihoodDrop;
     j["models_fitted"] = e.fit.model.models().size() + e.fit.model.restModels().size();
     j["warnings"] = e.fit.warnings;
-    std::printf("%s\n", j.dump().c_str());
+    std::printf("%s\n", dumpJson(j).c_str());
     return kExitOk;
   }
   if (gaussian)
@@ -297,7 +298,7 @@ int runBenchLearn(const BenchArgs& b, const ClassifierArgs& a) {
     j["classes"] = b.classes;
     j["kernel_isa"] = kernelIsa();
     j["cells"] = cells;
-    std::printf("%s\n", j.dump().c_str());
+    std::printf("%s\n", dumpJson(j).c_str());
   }
   return kExitOk;
 }

@@ -22,6 +22,7 @@
 #include "app/cli/cli_classifier_options.h"
 #include "app/cli/cli_common.h"
 #include "base/file_text.h"
+#include "run/json_text.h"
 #include "run/label_file.h"
 #include "run/run_csv.h"
 #include "storage/run_database.h"  // storage::checksumHex, the run-file checksum of label files
@@ -257,6 +258,7 @@ void checkOutput(const std::string& path) {
 int runTrainDb(const TrainArgs& a, const analysis::GroupSettings& settings,
                const std::vector<SensorGroup>& groups) {
   if (a.set.empty()) throw UsageError("--db needs --set SET (the label set to train on)");
+  if (!a.name.empty()) requireValidName(a.name, "--name", "model");
   if (!a.runs.empty() || !a.labels.empty() || a.holdout > 0.0) {
     throw UsageError(
         "--runs, --labels and --holdout are for run files; with --db use "
@@ -269,7 +271,7 @@ int runTrainDb(const TrainArgs& a, const analysis::GroupSettings& settings,
   workspace::TrainRequest request;
   request.labelSet = a.set;
   request.trainRuns = a.trainRuns;
-  request.testRuns = a.testRuns;
+  request.testRuns = splitNames(a.testRuns);
   request.split = *split;
   request.groups = groups;
   request.settings = settings;
@@ -315,7 +317,7 @@ int runTrainDb(const TrainArgs& a, const analysis::GroupSettings& settings,
              {"train_runs", o.trainRuns},     {"test_runs", o.testRuns}, {"split", a.split},
              {"evaluated_on", o.evaluatedOn}, {"groups", groupsJson}};
     if (!a.out.empty()) doc["out"] = a.out;
-    std::cout << doc.dump() << "\n";
+    std::cout << dumpJson(doc) << "\n";
   } else {
     std::printf("stored model '%s' (%zu group model(s)) in %s; scored on %s\n", o.modelName.c_str(),
                 o.bundle.models.size(), a.db.c_str(), o.evaluatedOn.c_str());
@@ -487,7 +489,7 @@ int runTrain(const TrainArgs& a) {
   const Status written = analysis::writeModelBundleFile(a.out, bundle);
   if (!written) throw std::runtime_error(written.errorText());
   if (a.json) {
-    std::cout << json{{"out", a.out}, {"evaluated_on", evaluatedOn}, {"groups", summary}}.dump()
+    std::cout << dumpJson(json{{"out", a.out}, {"evaluated_on", evaluatedOn}, {"groups", summary}})
               << "\n";
   } else {
     std::printf("wrote %zu group model(s) to %s (scores on %s)\n", bundle.models.size(),
@@ -546,6 +548,7 @@ ProgressFn sweepProgress(bool show) {
 
 int runSweepDb(const SweepArgs& a, const analysis::SweepGrid& grid) {
   if (a.set.empty()) throw UsageError("--db needs --set SET (the label set to sweep on)");
+  if (!a.name.empty()) requireValidName(a.name, "--name", "sweep");
   if (!a.runs.empty() || !a.labels.empty()) {
     throw UsageError(
         "--runs and --labels are for run files; with --db use --train-runs and "
@@ -559,7 +562,7 @@ int runSweepDb(const SweepArgs& a, const analysis::SweepGrid& grid) {
   workspace::SweepRequest request;
   request.labelSet = a.set;
   request.trainRuns = a.trainRuns;
-  request.testRuns = a.testRuns;
+  request.testRuns = splitNames(a.testRuns);
   request.grid = grid;
   request.name = a.name;
   request.threads = a.threads;
@@ -567,17 +570,16 @@ int runSweepDb(const SweepArgs& a, const analysis::SweepGrid& grid) {
   if (!outcome) throw std::runtime_error(a.db + ": " + outcome.errorText());
   const analysis::SweepResult& result = outcome->result;
   json doc = analysis::sweepToJson(result);
-  if (!a.out.empty()) writeText(a.out, doc.dump(1) + "\n");
+  if (!a.out.empty()) writeText(a.out, dumpJson(doc, 1) + "\n");
   std::size_t ok = 0;
   for (const auto& c : result.cells)
     ok += c.ok ? 1 : 0;
   if (a.json) {
-    std::cout << json{{"sweep", outcome->sweepId},
-                      {"cells", doc["cells"]},
-                      {"fitted", ok},
-                      {"threads", result.threads},
-                      {"wall_s", result.wallSeconds}}
-                     .dump()
+    std::cout << dumpJson(json{{"sweep", outcome->sweepId},
+                               {"cells", doc["cells"]},
+                               {"fitted", ok},
+                               {"threads", result.threads},
+                               {"wall_s", result.wallSeconds}})
               << "\n";
   } else {
     std::printf("sweep %lld: %zu cells (%zu fitted) in %.2f s on %d threads, stored in %s\n",
@@ -649,18 +651,17 @@ int runSweepVerb(const SweepArgs& a) {
   doc["test_runs"] = loadedTest.paths;
   doc["labels"] = a.labels.empty() ? "truth columns" : a.labels;
   doc["holdout"] = a.testRuns.empty() ? a.holdout : 0.0;
-  writeText(a.out, doc.dump(1) + "\n");
+  writeText(a.out, dumpJson(doc, 1) + "\n");
   std::size_t ok = 0;
   for (const auto& c : result.cells)
     ok += c.ok ? 1 : 0;
   if (a.json) {
-    std::cout << json{{"out", a.out},
-                      {"cells", result.cells.size()},
-                      {"fitted", ok},
-                      {"threads", result.threads},
-                      {"wall_s", result.wallSeconds},
-                      {"warnings", warnings}}
-                     .dump()
+    std::cout << dumpJson(json{{"out", a.out},
+                               {"cells", result.cells.size()},
+                               {"fitted", ok},
+                               {"threads", result.threads},
+                               {"wall_s", result.wallSeconds},
+                               {"warnings", warnings}})
               << "\n";
   } else {
     std::printf("sweep: %zu cells (%zu fitted) in %.2f s on %d threads -> %s\n",
@@ -714,11 +715,10 @@ int runReportDb(const ReportArgs& a) {
     if (!written) throw std::runtime_error(written.errorText());
   }
   if (a.json) {
-    std::cout << json{{"sweep", a.sweep},
-                      {"cells", sweep->cells.size()},
-                      {"format", format},
-                      {"out", a.out}}
-                     .dump()
+    std::cout << dumpJson(json{{"sweep", a.sweep},
+                               {"cells", sweep->cells.size()},
+                               {"format", format},
+                               {"out", a.out}})
               << "\n";
   }
   return kExitOk;
@@ -781,7 +781,8 @@ int runReport(const ReportArgs& r) {
       const Status written = analysis::writeSweepReport(sweep.value(), style, r.out, configuration);
       if (!written) throw std::runtime_error(written.errorText());
     }
-    if (r.json) std::cout << json{{"file", path}, {"kind", "sweep"}, {"out", r.out}}.dump() << "\n";
+    if (r.json)
+      std::cout << dumpJson(json{{"file", path}, {"kind", "sweep"}, {"out", r.out}}) << "\n";
     return kExitOk;
   }
   if (format == analysis::kModelFormat || format == analysis::kModelBundleFormat) {
@@ -789,7 +790,8 @@ int runReport(const ReportArgs& r) {
     const Result<analysis::ModelBundle> models = analysis::modelsFromJson(value, path);
     if (!models) throw std::runtime_error(models.errorText());
     writeText(r.out, analysis::modelReport(value, style));
-    if (r.json) std::cout << json{{"file", path}, {"kind", "model"}, {"out", r.out}}.dump() << "\n";
+    if (r.json)
+      std::cout << dumpJson(json{{"file", path}, {"kind", "model"}, {"out", r.out}}) << "\n";
     return kExitOk;
   }
   throw std::runtime_error(path + ": not a sweep or model file (format '" + format + "')");
@@ -862,12 +864,12 @@ int printClassification(const ClassifyArgs& a, const analysis::RunClassification
       gj[std::string(info.shortName)] = std::move(g);
     }
     doc["groups"] = std::move(gj);
-    const std::string text = doc.dump() + "\n";
+    const std::string text = dumpJson(doc) + "\n";
     if (a.out.empty()) {
       std::fwrite(text.data(), 1, text.size(), stdout);
     } else {
       writeText(a.out, text);
-      std::cout << json{{"out", a.out}, {"steps", steps}}.dump() << "\n";
+      std::cout << dumpJson(json{{"out", a.out}, {"steps", steps}}) << "\n";
     }
     return kExitOk;
   }
@@ -889,9 +891,8 @@ int printClassification(const ClassifyArgs& a, const analysis::RunClassification
         if (go.model == nullptr || go.noContactRule[t]) continue;
         for (std::size_t k = 0; k < go.model->classes.size(); ++k) {
           if (static_cast<int>(go.model->classes[k]) == c) {
-            csv +=
-                json(go.logLikelihoods(static_cast<Eigen::Index>(t), static_cast<Eigen::Index>(k)))
-                    .dump();
+            csv += dumpJson(json(
+                go.logLikelihoods(static_cast<Eigen::Index>(t), static_cast<Eigen::Index>(k))));
           }
         }
       }
@@ -956,13 +957,14 @@ void registerLearnVerbs(CLI::App& app, CLI::App& /*bench*/) {
     cmd->add_option("--min-rows", args->minRows,
                     "Groups with fewer labelled contact rows are skipped (with --db)")
         ->capture_default_str();
-    cmd->add_option("--runs", args->runs, "Run CSV files to train on")->delimiter(',');
+    cmd->add_option("--runs", args->runs,
+                    "Run CSV files to train on (A B; a path is never split at a comma)");
     cmd->add_option("--labels", args->labels,
                     "Label CSV (run,group,first_step,last_step,class[,annotator]); its run column "
                     "matches a run's path, file name or stem");
     cmd->add_option("--test-runs", args->testRuns,
-                    "Runs to score the models on (stored run names with --db, else run files)")
-        ->delimiter(',');
+                    "Runs to score the models on (stored run names with --db, A B or A,B; else "
+                    "run files, A B)");
     cmd->add_option("--holdout", args->holdout,
                     "Run files: score on the last fraction of each run's steps instead (0 = score "
                     "on the training data)")
@@ -1004,12 +1006,11 @@ void registerLearnVerbs(CLI::App& app, CLI::App& /*bench*/) {
     cmd->add_option("--train-runs", args->trainRuns, "Stored runs to train on (with --db)")
         ->delimiter(',');
     cmd->add_option("--name", args->name, "Name of the stored sweep (with --db)");
-    cmd->add_option("--runs", args->runs, "Run CSV files")->delimiter(',');
+    cmd->add_option("--runs", args->runs, "Run CSV files (A B; a path is never split at a comma)");
     cmd->add_option("--labels", args->labels, "Label CSV (default: the runs' truth columns)");
     cmd->add_option("--test-runs", args->testRuns,
-                    "Score on these runs (stored run names with --db; run files otherwise, "
-                    "instead of a holdout)")
-        ->delimiter(',');
+                    "Score on these runs (stored run names with --db, A B or A,B; run files "
+                    "otherwise, A B, instead of a holdout)");
     cmd->add_option("--holdout", args->holdout, "Last fraction of each run's steps held out")
         ->capture_default_str();
     cmd->add_option("--groups", args->groups, "Groups (default all)")->delimiter(',');

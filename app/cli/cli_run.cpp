@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "app/cli/cli_common.h"
+#include "run/json_text.h"
 #include "run/run_csv.h"
 #include "run/synthetic_run.h"
 
@@ -80,7 +81,7 @@ int benchIo(std::size_t steps, int repeats, bool json) {
                         {"format_mb_s_wall", mb / median(formatWall)},
                         {"write_file_mb_s_wall", mb / median(writeWall)}};
   if (json) {
-    std::cout << out.dump() << '\n';
+    std::cout << dumpJson(out) << '\n';
     return kExitOk;
   }
   std::printf("run file: %zu steps, %.1f MB of CSV, median of %d repeats\n", steps, mb, repeats);

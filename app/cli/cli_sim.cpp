@@ -18,6 +18,7 @@
 #include "app/cli/cli_common.h"
 #include "base/file_text.h"
 #include "run/builtin_scenes.h"
+#include "run/json_text.h"
 #include "run/run_csv.h"
 #include "sim/recorder.h"
 #include "sim/scene_source.h"
@@ -179,7 +180,7 @@ int runPlan(const SimulateArgs& a) {
     j["seconds"] = seconds;
     j["class_steps"] = classStepsJson(stats);
     j["truth"] = truthQualityJson(stats);
-    std::printf("%s\n", j.dump().c_str());
+    std::printf("%s\n", dumpJson(j).c_str());
   } else {
     std::ostringstream o;
     for (const auto& [k, v] : kinds)
@@ -193,6 +194,7 @@ int runPlan(const SimulateArgs& a) {
 }
 
 int runSimulate(const SimulateArgs& a) {
+  if (!a.prefix.empty()) requireValidName(a.prefix, "--prefix", "run");
   if (!a.plan.empty()) return runPlan(a);
   if (a.scene.empty()) throw UsageError("give --scene (or --plan training)");
   if (a.steps <= 0) throw UsageError("--steps must be at least 1, got " + std::to_string(a.steps));
@@ -323,7 +325,7 @@ int runSimulate(const SimulateArgs& a) {
     j["files"] = files;
     j["class_steps"] = classStepsJson(stats);
     j["truth"] = truthQualityJson(stats);
-    std::printf("%s\n", j.dump().c_str());
+    std::printf("%s\n", dumpJson(j).c_str());
   } else {
     std::ostringstream o;
     for (const auto& [k, v] : outcomes)
@@ -447,7 +449,7 @@ int runBench(const BenchArgs& a) {
     j["brute_steps"] = a.bruteSteps;
     j["repeats"] = a.repeats;
     j["rows"] = rows;
-    std::printf("%s\n", j.dump().c_str());
+    std::printf("%s\n", dumpJson(j).c_str());
   }
   return kExitOk;
 }

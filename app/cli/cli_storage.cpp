@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "app/cli/cli_common.h"
+#include "run/json_text.h"
 #include "run/run_csv.h"
 #include "sim/scene_source.h"
 #include "storage/run_database.h"
@@ -65,7 +66,7 @@ std::unique_ptr<RunDatabase> openDatabaseOrCreate(const std::string& path) {
 namespace {
 
 void printJson(const nlohmann::json& doc) {
-  std::printf("%s\n", doc.dump().c_str());
+  std::printf("%s\n", dumpJson(doc).c_str());
 }
 
 // Files as given; a folder stands for the *.csv files in it (sorted, not recursive).
@@ -108,9 +109,8 @@ int runImport(const ImportArgs& a) {
     throw UsageError("--name needs exactly one file, got " + std::to_string(files.size()));
   }
   if (!a.name.empty() && !a.prefix.empty()) throw UsageError("give --name or --prefix, not both");
-  if (a.prefix.find_first_of(",\r\n") != std::string::npos) {
-    throw UsageError("--prefix must not hold a comma or line break");
-  }
+  if (!a.name.empty()) requireValidName(a.name, "--name", "run");
+  if (!a.prefix.empty()) requireValidName(a.prefix, "--prefix", "run");
   auto db = openDatabaseOrCreate(a.db);
   storage::ImportOptions options;
   options.name = a.name;
@@ -188,6 +188,7 @@ int runExport(const std::string& dbPath, const std::string& runName, const std::
 int runAutolabel(const std::string& dbPath, const std::string& runName, bool all,
                  const std::string& set, bool json) {
   if (all == !runName.empty()) throw UsageError("give exactly one of --run NAME or --all");
+  requireValidName(set, "--set", "label set");
   auto db = openDatabaseOrCreate(dbPath);
   std::vector<storage::RunInfo> runs;
   if (all) {
@@ -201,6 +202,7 @@ int runAutolabel(const std::string& dbPath, const std::string& runName, bool all
   }
   nlohmann::json labelled = nlohmann::json::array();
   int failures = 0;
+  std::vector<std::string> printed;
   for (const auto& run : runs) {
     if (all && !run.hasTruth) {
       printWarning("run '" + run.name + "' has no truth columns; not labelled");
@@ -208,7 +210,13 @@ int runAutolabel(const std::string& dbPath, const std::string& runName, bool all
     }
     auto count = db->autolabel(run.id, set);
     if (!count) {
-      printError(databaseError(dbPath, count.error()));
+      // One line per distinct error: a failure of the database (not of this run) would otherwise
+      // repeat for every run.
+      const std::string message = databaseError(dbPath, count.error());
+      if (std::find(printed.begin(), printed.end(), message) == printed.end()) {
+        printError(message);
+        printed.push_back(message);
+      }
       ++failures;
       continue;
     }
@@ -502,10 +510,9 @@ void registerStorageVerbs(CLI::App& app, CLI::App& bench) {
     CLI::App* cmd = app.add_subcommand("import", "Import run CSV files into a database");
     cmd->add_option("--db", args->db, "Database file (created when absent)")->required();
     cmd->add_option("files", args->files,
-                    "Run files, or folders of *.csv run files (A B or A,B). A name already "
-                    "stored with other content fails that file only")
-        ->required()
-        ->delimiter(',');
+                    "Run files, or folders of *.csv run files (A B; a path is never split at a "
+                    "comma). A name already stored with other content fails that file only")
+        ->required();
     cmd->add_option("--name", args->name, "Run name (one file only; default: the file's stem)");
     cmd->add_option("--prefix", args->prefix,
                     "Name runs P_<stem> (e.g. --prefix room1: room1_run_0000), so batches with "

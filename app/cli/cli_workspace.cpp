@@ -14,6 +14,7 @@
 #include "analysis/model_file.h"
 #include "app/cli/cli_common.h"
 #include "base/file_text.h"
+#include "run/json_text.h"
 #include "storage/run_database.h"
 #include "workspace/workspace.h"
 
@@ -57,7 +58,7 @@ int modelsList(const Common& c) {
     list.push_back(std::move(entry));
   }
   if (c.json) {
-    std::cout << json{{"models", list}}.dump() << "\n";
+    std::cout << dumpJson(json{{"models", list}}) << "\n";
     return kExitOk;
   }
   std::printf("%-24s %5s  %-20s  %-16s %s\n", "name", "id", "created", "label set", "groups");
@@ -81,7 +82,7 @@ int modelsExport(const Common& c, const std::string& name, const std::string& ou
   if (!written) throw std::runtime_error(c.db + ": " + written.errorText());
   const std::size_t groups = ws.loadModel(name).value().models.size();
   if (c.json) {
-    std::cout << json{{"model", name}, {"out", out}, {"groups", groups}}.dump() << "\n";
+    std::cout << dumpJson(json{{"model", name}, {"out", out}, {"groups", groups}}) << "\n";
   } else {
     std::printf("wrote model '%s' (%zu group model(s)) to %s\n", name.c_str(), groups, out.c_str());
   }
@@ -89,13 +90,15 @@ int modelsExport(const Common& c, const std::string& name, const std::string& ou
 }
 
 int modelsImport(const Common& c, const std::string& file, const std::string& name) {
+  if (!name.empty()) requireValidName(name, "--name", "model");
   workspace::Workspace ws(openDatabaseOrCreate(c.db));
   const Result<std::string> stored = ws.importModel(file, name);
   if (!stored) throw std::runtime_error(stored.errorText());
   const std::size_t groups = ws.loadModel(stored.value()).value().models.size();
   auto id = ws.database().modelInfo(stored.value());
   if (c.json) {
-    std::cout << json{{"model", stored.value()}, {"id", id ? id->id : 0}, {"groups", groups}}.dump()
+    std::cout << dumpJson(
+                     json{{"model", stored.value()}, {"id", id ? id->id : 0}, {"groups", groups}})
               << "\n";
   } else {
     std::printf("stored model '%s' from %s\n", stored.value().c_str(), file.c_str());
@@ -105,6 +108,7 @@ int modelsImport(const Common& c, const std::string& file, const std::string& na
 
 int modelsFromSweep(const Common& c, std::int64_t sweepId, std::size_t cell,
                     const std::string& name, const std::string& out) {
+  if (!name.empty()) requireValidName(name, "--name", "model");
   if (!out.empty()) {
     const Status writable = checkWritable(out);
     if (!writable) throw std::runtime_error(writable.errorText());
@@ -128,7 +132,7 @@ int modelsFromSweep(const Common& c, std::int64_t sweepId, std::size_t cell,
                    {"samples_train", g.samplesTrain},
                    {"samples_test", g.samplesTest}};
     if (!out.empty()) report["out"] = out;
-    std::cout << report.dump() << "\n";
+    std::cout << dumpJson(report) << "\n";
   } else {
     std::printf(
         "stored model '%s' (group %s, balanced accuracy %.1f %% on the sweep's test runs)\n",
@@ -147,7 +151,7 @@ int modelsDelete(const Common& c, std::vector<std::string> names) {
   const Status deleted = db->deleteModels(names);
   if (!deleted) throw std::runtime_error(c.db + ": " + deleted.errorText());
   if (c.json) {
-    std::cout << json{{"deleted", names}}.dump() << "\n";
+    std::cout << dumpJson(json{{"deleted", names}}) << "\n";
   } else {
     std::printf("deleted %zu model(s)\n", names.size());
   }
@@ -169,7 +173,7 @@ int sweepsList(const Common& c) {
     list.push_back(std::move(entry));
   }
   if (c.json) {
-    std::cout << json{{"sweeps", list}}.dump() << "\n";
+    std::cout << dumpJson(json{{"sweeps", list}}) << "\n";
     return kExitOk;
   }
   std::printf("%5s  %-24s %-20s %6s  %-10s %s\n", "id", "name", "created", "cells", "state",
@@ -191,7 +195,7 @@ int sweepsDelete(const Common& c, std::vector<std::int64_t> ids) {
   const Status deleted = db->deleteSweeps(ids);
   if (!deleted) throw std::runtime_error(c.db + ": " + deleted.errorText());
   if (c.json) {
-    std::cout << json{{"deleted", ids}}.dump() << "\n";
+    std::cout << dumpJson(json{{"deleted", ids}}) << "\n";
   } else {
     std::printf("deleted %zu sweep(s) with their cells\n", ids.size());
   }

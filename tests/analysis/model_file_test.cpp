@@ -12,6 +12,7 @@
 
 #include "analysis/model_file.h"
 #include "analysis/training.h"
+#include "run/json_text.h"
 #include "tests/analysis/learn_test_data.h"
 
 namespace tactile::analysis {
@@ -275,6 +276,27 @@ TEST(ModelFileValidation, MissingFileIsError) {
   const Result<ModelBundle> r = readModelFile("/nonexistent/dir/model.json");
   EXPECT_FALSE(r.ok());
   EXPECT_NE(r.errorText().find("/nonexistent/dir/model.json"), std::string::npos);
+}
+
+// Regression: a number too large for a double (1e400) escaped the reader as a bare nlohmann
+// exception, without the file's name.
+TEST(ModelFileHostile, NumberOverflowNamesFileLineAndColumn) {
+  std::string text =
+      dumpJson(modelToJson(trainedModel(ClassifierMethod::Gaussian, CovarianceForm::NodalFull)), 1);
+  const std::size_t at = text.find("\"variance_floor\": ");
+  ASSERT_NE(at, std::string::npos);
+  const std::size_t value = at + std::string("\"variance_floor\": ").size();
+  text.replace(value, text.find_first_of(",\n", value) - value, "1e400");
+  std::size_t line = 1;
+  for (std::size_t i = 0; i < value; ++i)
+    line += text[i] == '\n';
+  const auto r = parseModelJson(text, "big.json");
+  ASSERT_FALSE(r.ok());
+  EXPECT_EQ(r.error().file, "big.json");
+  EXPECT_EQ(r.error().line, line) << r.errorText();
+  EXPECT_GT(r.error().column, 0u);
+  EXPECT_NE(r.errorText().find("overflow"), std::string::npos) << r.errorText();
+  EXPECT_NE(r.errorText().find("1e400"), std::string::npos) << r.errorText();
 }
 
 }  // namespace

@@ -161,5 +161,72 @@ TEST(LabelFile, MalformedJsonProvenanceIsAnError) {
   EXPECT_EQ(r.error().file, "l.json");
 }
 
+// Regression: a JSON first_step of 2^64-1 was read as -1 and reported as "'-1' is not a step".
+TEST(LabelFileHostile, HugeJsonStepIsShownAsWritten) {
+  const std::string text =
+      R"({"segments":[{"run":"r","group":"F","first_step":18446744073709551615,)"
+      R"("last_step":3,"class":"Wall"}]})";
+  const auto r = parseLabelJson(text, "l.json");
+  ASSERT_FALSE(r.ok());
+  EXPECT_EQ(r.error().file, "l.json");
+  EXPECT_NE(r.errorText().find("18446744073709551615"), std::string::npos) << r.errorText();
+  EXPECT_EQ(r.errorText().find("-1"), std::string::npos) << r.errorText();
+}
+
+// Regression: a Latin-1 annotator entered the database and later broke every --json writer.
+TEST(LabelFileHostile, AnnotatorsAndRunNamesFollowTheNameRule) {
+  auto csv = parseLabelCsv("run,group,first_step,last_step,class,annotator\nr,F,0,1,Wall,Jos\xE9\n",
+                           "l.csv");
+  ASSERT_FALSE(csv.ok());
+  EXPECT_EQ(csv.error().line, 2u);
+  EXPECT_NE(csv.errorText().find("annotator"), std::string::npos) << csv.errorText();
+  EXPECT_NE(csv.errorText().find("UTF-8"), std::string::npos) << csv.errorText();
+  csv = parseLabelCsv("run,group,first_step,last_step,class\nr\x01,F,0,1,Wall\n", "l.csv");
+  ASSERT_FALSE(csv.ok());
+  EXPECT_EQ(csv.error().line, 2u);
+  EXPECT_NE(csv.errorText().find("control character"), std::string::npos) << csv.errorText();
+  // JSON strings may hold commas and line breaks; names may not.
+  auto json = parseLabelJson(
+      R"([{"run":"r","group":"F","first_step":0,"last_step":1,"class":"Wall","annotator":"a\nb"}])",
+      "l.json");
+  ASSERT_FALSE(json.ok());
+  EXPECT_NE(json.errorText().find("segment 1"), std::string::npos) << json.errorText();
+  json = parseLabelJson(
+      R"([{"run":"a,b","group":"F","first_step":0,"last_step":1,"class":"Wall"}])", "l.json");
+  ASSERT_FALSE(json.ok());
+  EXPECT_NE(json.errorText().find("comma"), std::string::npos) << json.errorText();
+  // A valid multi-byte annotator is kept.
+  csv = parseLabelCsv("run,group,first_step,last_step,class,annotator\nr,F,0,1,Wall,Jos\xC3\xA9\n",
+                      "l.csv");
+  ASSERT_TRUE(csv.ok()) << csv.errorText();
+  EXPECT_EQ(csv->records[0].annotator, "Jos\xC3\xA9");
+}
+
+TEST(LabelFileHostile, StepsAreIntegerLiteralsWithoutSignOrLeadingZero) {
+  for (const char* bad : {"-0", "00", "01", "+1"}) {
+    SCOPED_TRACE(bad);
+    const auto r = parseLabelCsv(
+        std::string("run,group,first_step,last_step,class\nr,F,") + bad + ",3,Wall\n", "l.csv");
+    ASSERT_FALSE(r.ok());
+    EXPECT_EQ(r.error().line, 2u);
+  }
+}
+
+// JSON syntax errors name the line and column; number overflow too.
+TEST(LabelFileHostile, JsonErrorsNameLineAndColumn) {
+  auto r = parseLabelJson("{\n \"segments\": [\n  {\"run\": 1e400}]}", "l.json");
+  ASSERT_FALSE(r.ok());
+  EXPECT_EQ(r.error().file, "l.json");
+  EXPECT_EQ(r.error().line, 3u);
+  EXPECT_NE(r.errorText().find("overflow"), std::string::npos) << r.errorText();
+  r = parseLabelJson("[\n\n  {\"run\": \"x\",}]", "l.json");
+  ASSERT_FALSE(r.ok());
+  EXPECT_EQ(r.error().line, 3u) << r.errorText();
+  EXPECT_GT(r.error().column, 0u);
+  r = parseLabelJson(std::string(100000, '['), "deep.json");
+  ASSERT_FALSE(r.ok());
+  EXPECT_NE(r.errorText().find("nested deeper"), std::string::npos) << r.errorText();
+}
+
 }  // namespace
 }  // namespace tactile

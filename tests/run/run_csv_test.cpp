@@ -559,3 +559,59 @@ TEST(RunCsvUtf8, InvalidTextFieldNamesLineAndColumnAlsoInChunks) {
 
 }  // namespace
 }  // namespace tactile
+
+namespace tactile {
+namespace {
+
+// Regression: `step` and `blocked` took any std::from_chars integer, so "-0", "01", "00" and "001"
+// imported. They are integer literals: digits only, no sign, no leading zero.
+TEST(Errors, StepAndBlockedAreIntegerLiteralsWithoutSignOrLeadingZero) {
+  for (const char* bad : {"00", "01", "001", "-0", "-1", "+1", "1.0", "0x1", " 0", "0 "}) {
+    SCOPED_TRACE(bad);
+    expectError(replaceField(validText(), kRow0 + 1, 7, bad), kRow0 + 1, "blocked", "0 or 1");
+  }
+  for (const char* bad : {"-0", "00", "01", "001", "+0"}) {
+    SCOPED_TRACE(bad);
+    // Row 0 carries step 0: "-0" and "00" have the right value but not the right spelling.
+    const Error e = expectError(replaceField(validText(), kRow0, 1, bad), kRow0, "step",
+                                "no sign, no leading zero");
+    EXPECT_EQ(e.column, 1u);
+  }
+  const Error e =
+      expectError(replaceField(validText(), kRow0 + 1, 1, "01"), kRow0 + 1, "step", "found '01'");
+  EXPECT_EQ(e.column, 1u);
+  // The plain literals still parse.
+  RunCsvResult ok = parseRunCsv(replaceField(validText(), kRow0 + 1, 7, "1"), "ok.csv");
+  ASSERT_TRUE(ok.ok()) << ok.errorText();
+  EXPECT_TRUE(ok.value().blocked[1]);
+}
+
+// Regression: 1e-400 was reported as "expected a finite number (no NaN or infinity)".
+TEST(Errors, UnderflowAndOverflowAreNamed) {
+  for (const char* tiny : {"1e-400", "-2e-324", "0.1e-9999"}) {
+    SCOPED_TRACE(tiny);
+    expectError(replaceField(validText(), kRow0, 2, tiny), kRow0, "x", "underflows");
+  }
+  for (const char* huge : {"1e400", "-1e309", "1e99999"}) {
+    SCOPED_TRACE(huge);
+    const Error e = expectError(replaceField(validText(), kRow0, 2, huge), kRow0, "x", "overflows");
+    EXPECT_EQ(e.message.find("underflows"), std::string::npos) << e.message;
+  }
+  // A subnormal is a finite double and reads back exactly.
+  RunCsvResult ok = parseRunCsv(replaceField(validText(), kRow0, 2, "4.9e-324"), "ok.csv");
+  ASSERT_TRUE(ok.ok()) << ok.errorText();
+  EXPECT_EQ(ok.value().x[0], std::numeric_limits<double>::denorm_min());
+}
+
+// Regression: a form feed after a number was shown raw ("found '0'" on a terminal).
+TEST(Errors, ControlCharactersAreShownAndNamed) {
+  Error e = expectError(replaceField(validText(), kRow0, 8, "0\f"), kRow0, "n0", "'0\\x0C'");
+  EXPECT_NE(e.message.find("form feed (U+000C) at byte 2"), std::string::npos) << e.message;
+  e = expectError(replaceField(validText(), kRow0, 2, "\t1"), kRow0, "x", "a tab (U+0009)");
+  e = expectError(replaceField(validText(), kRow0, 7, std::string("1\0", 2)), kRow0, "blocked",
+                  "a NUL byte");
+  e = expectError(replaceField(validText(), kRow0, 3, "1\xE9"), kRow0, "y", "'1\\xE9'");
+}
+
+}  // namespace
+}  // namespace tactile

@@ -206,5 +206,17 @@ TEST(Procedural, JsonRoundTripIsExact) {
   EXPECT_EQ(sceneToJson(r.value()), sceneToJson(s));
 }
 
+// Regression: 1e400 in a scene threw out of the reader without the file's name.
+TEST(SceneHostile, NumberOverflowNamesFileAndLine) {
+  const std::string text =
+      "{\"name\": \"s\",\n \"bounds\": [0, 0, 1e400, 100],\n \"obstacles\": [],\n"
+      " \"start\": {\"x\": 1, \"y\": 1, \"theta\": 0},\n \"goal\": {\"x\": 2, \"y\": 2}}\n";
+  const auto r = parseSceneJson(text, "big.json");
+  ASSERT_FALSE(r.ok());
+  EXPECT_EQ(r.error().file, "big.json");
+  EXPECT_EQ(r.error().line, 2u) << r.errorText();
+  EXPECT_NE(r.errorText().find("overflow"), std::string::npos) << r.errorText();
+}
+
 }  // namespace
 }  // namespace tactile::sim
