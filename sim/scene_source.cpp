@@ -9,6 +9,7 @@
 #include "base/text_parse.h"
 #include "run/builtin_scenes.h"
 #include "run/run_csv.h"
+#include "sim/office_scene.h"
 #include "sim/recorder.h"
 #include "sim/simulator.h"
 
@@ -114,6 +115,7 @@ namespace {
 struct SceneSpec {
   std::optional<std::string> usageProblem;
   bool procedural = false;
+  bool office = false;
   std::int64_t obstacles = 0;
   std::int64_t seed = 0;
   bool builtin = false;
@@ -122,13 +124,22 @@ struct SceneSpec {
 
 SceneSpec classifySpec(std::string_view spec) {
   SceneSpec out;
+  if (spec.starts_with("random:office:")) {
+    if (!parseInteger(spec.substr(14), out.seed) || out.seed < 0) {
+      out.usageProblem = "scene '" + std::string(spec) +
+                         "': expected random:office:SEED with an integer SEED >= 0";
+    }
+    out.office = true;
+    return out;
+  }
   if (spec.starts_with("random:")) {
     std::string_view rest = spec.substr(7);
     const std::size_t colon = rest.find(':');
     if (colon == std::string_view::npos || !parseInteger(rest.substr(0, colon), out.obstacles) ||
         !parseInteger(rest.substr(colon + 1), out.seed) || out.seed < 0) {
       out.usageProblem = "scene '" + std::string(spec) +
-                         "': expected random:N:SEED with integers N >= 0 and SEED >= 0";
+                         "': expected random:N:SEED with integers N >= 0 and SEED >= 0, "
+                         "or random:office:SEED";
     } else if (out.obstacles < 0 ||
                static_cast<std::size_t>(out.obstacles) > kMaxProceduralObstacles) {
       out.usageProblem = "scene '" + std::string(spec) + "': N must be between 0 and " +
@@ -150,7 +161,7 @@ SceneSpec classifySpec(std::string_view spec) {
   for (const std::string& n : builtinSceneNames())
     names += (names.empty() ? "" : ", ") + n;
   out.usageProblem = "unknown scene '" + std::string(spec) + "' (built-in scenes: " + names +
-                     "; or a .json file, or random:N:SEED)";
+                     "; or a .json file, random:N:SEED or random:office:SEED)";
   return out;
 }
 
@@ -164,7 +175,13 @@ Result<Scene> loadScene(std::string_view spec, const RobotGeometry& geometry) {
   const SceneSpec kind = classifySpec(spec);
   if (kind.usageProblem) return Error(*kind.usageProblem);
   Result<Scene> result = Error("");
-  if (kind.procedural) {
+  if (kind.office) {
+    Scene office = generateOfficeScene(static_cast<std::uint64_t>(kind.seed)).scene;
+    if (Status valid = validateSceneGeometry(office); !valid) {
+      return Error(std::string(spec), valid.error().message);
+    }
+    result = std::move(office);
+  } else if (kind.procedural) {
     result = generateProceduralScene(static_cast<std::size_t>(kind.obstacles),
                                      static_cast<std::uint64_t>(kind.seed));
   } else if (kind.builtin) {

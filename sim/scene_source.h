@@ -29,13 +29,14 @@ Status checkStartPose(const Scene& scene, const RobotGeometry& geometry = {});
 // too.
 std::optional<std::string> sceneSpecError(std::string_view spec);
 
-// Resolves what the user typed: "random:N:SEED", a built-in scene name, or a path to a JSON file
+// Resolves what the user typed: "random:N:SEED", "random:office:SEED" (generateOfficeScene in
+// sim/office_scene.h), a built-in scene name, or a path to a JSON file
 // (anything containing '/' or ending in ".json"). Validates everything, the start pose included.
 Result<Scene> loadScene(std::string_view spec, const RobotGeometry& geometry = {});
 
-// The JSON of a procedural scene (`random:N:SEED`), generated again, so that an importer can
-// store the scene of a run recorded in one; nullopt for anything else (built-in names and files
-// are resolved by storage itself).
+// The JSON of a procedural scene (`random:N:SEED`, `random:office:SEED`), generated again, so that
+// an importer can store the scene of a run recorded in one; nullopt for anything else (built-in
+// names and files are resolved by storage itself).
 std::optional<std::string> proceduralSceneJson(const std::string& spec);
 
 }  // namespace tactile::sim
