@@ -10,7 +10,7 @@ TACTILE_PACKAGES=(
   libqcustomplot-dev libqcustomplot2.1-qt6
   libeigen3-dev libsqlite3-dev sqlite3 nlohmann-json3-dev libcli11-dev
   libgtest-dev libgmock-dev libbenchmark-dev
-  xvfb xauth
+  xvfb xauth fonts-noto-cjk qt6-translations-l10n
 )
 
 tactile_missing_packages() {

@@ -5,770 +5,786 @@
     <name>ContactClass</name>
     <message>
         <source>No contact</source>
-        <translation type="unfinished"></translation>
+        <translation>Kein Kontakt</translation>
     </message>
     <message>
         <source>Wall</source>
-        <translation type="unfinished"></translation>
+        <translation>Wand</translation>
     </message>
     <message>
         <source>Corner</source>
-        <translation type="unfinished"></translation>
+        <translation>Ecke</translation>
     </message>
     <message>
         <source>Leaving wall</source>
-        <translation type="unfinished"></translation>
+        <translation>Wand verlassen</translation>
     </message>
     <message>
         <source>Dead path</source>
-        <translation type="unfinished"></translation>
+        <translation>Sackgasse</translation>
     </message>
 </context>
 <context>
     <name>QObject</name>
     <message>
         <source>none</source>
-        <translation type="unfinished"></translation>
+        <translation>keins</translation>
     </message>
 </context>
 <context>
     <name>main</name>
     <message>
         <source>Tactile Workbench: tactile-navigation research desktop</source>
-        <translation type="unfinished"></translation>
+        <translation>Tactile Workbench: Arbeitsplatz für die Forschung zur taktilen Navigation</translation>
     </message>
     <message>
         <source>Open the run database DB (default: the last one used).</source>
-        <translation type="unfinished"></translation>
+        <translation>Die Laufdatenbank DB öffnen (Vorgabe: die zuletzt benutzte).</translation>
     </message>
     <message>
         <source>Open the run named NAME.</source>
-        <translation type="unfinished"></translation>
+        <translation>Den Lauf namens NAME öffnen.</translation>
     </message>
     <message>
         <source>Put the cursor on step K.</source>
-        <translation type="unfinished"></translation>
+        <translation>Den Cursor auf Schritt K setzen.</translation>
     </message>
     <message>
         <source>--step needs a step number, got &apos;%1&apos;</source>
-        <translation type="unfinished"></translation>
+        <translation>--step braucht eine Schrittnummer, erhalten: „%1“</translation>
     </message>
     <message>
         <source>--run needs --db</source>
-        <translation type="unfinished"></translation>
+        <translation>--run braucht --db</translation>
     </message>
     <message>
         <source>%1: no such database</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: Datenbank nicht gefunden</translation>
     </message>
     <message>
         <source>Render the window (or with --sweep the results window) at 1600x1000 to the PNG file FILE, then quit.</source>
-        <translation type="unfinished"></translation>
+        <translation>Das Fenster (mit --sweep das Ergebnisfenster) in 1600x1000 als PNG-Datei FILE speichern, dann beenden.</translation>
     </message>
     <message>
         <source>Open the results of the stored sweep ID (needs --db).</source>
-        <translation type="unfinished"></translation>
+        <translation>Die Ergebnisse des gespeicherten Sweeps ID öffnen (braucht --db).</translation>
     </message>
     <message>
         <source>Show the stored model NAME&apos;s predictions under the labels (needs --run).</source>
-        <translation type="unfinished"></translation>
+        <translation>Die Vorhersagen des gespeicherten Modells NAME unter den Labels zeigen (braucht --run).</translation>
     </message>
     <message>
         <source>--sweep needs --db</source>
-        <translation type="unfinished"></translation>
+        <translation>--sweep braucht --db</translation>
     </message>
     <message>
         <source>--model needs --run</source>
-        <translation type="unfinished"></translation>
+        <translation>--model braucht --run</translation>
     </message>
     <message>
         <source>--sweep needs a sweep id, got &apos;%1&apos;</source>
-        <translation type="unfinished"></translation>
+        <translation>--sweep braucht eine Sweep-ID, erhalten: „%1“</translation>
     </message>
 </context>
 <context>
     <name>tactile::gui::LabelModel</name>
     <message>
         <source>Label steps %1-%2 as %3</source>
-        <translation type="unfinished"></translation>
+        <translation>Schritte %1–%2 als %3 labeln</translation>
     </message>
     <message>
         <source>Move %1 segment to steps %2-%3</source>
-        <translation type="unfinished"></translation>
+        <translation>%1-Segment auf Schritte %2–%3 verschieben</translation>
     </message>
     <message>
         <source>Delete segment</source>
-        <translation type="unfinished"></translation>
+        <translation>Segment löschen</translation>
     </message>
 </context>
 <context>
     <name>tactile::gui::LabelPanelView</name>
     <message>
         <source>Label set</source>
-        <translation type="unfinished"></translation>
+        <translation>Labelsatz</translation>
     </message>
     <message>
         <source>The label set being edited; choose another to open it</source>
-        <translation type="unfinished"></translation>
+        <translation>Der bearbeitete Labelsatz; einen anderen wählen, um ihn zu öffnen</translation>
     </message>
     <message>
         <source>New...</source>
-        <translation type="unfinished"></translation>
+        <translation>Neu...</translation>
     </message>
     <message>
         <source>Save As...</source>
-        <translation type="unfinished"></translation>
+        <translation>Speichern unter...</translation>
     </message>
     <message>
         <source>Import...</source>
-        <translation type="unfinished"></translation>
+        <translation>Importieren...</translation>
     </message>
     <message>
         <source>Export...</source>
-        <translation type="unfinished"></translation>
+        <translation>Exportieren...</translation>
     </message>
     <message>
         <source>Apply to</source>
-        <translation type="unfinished"></translation>
+        <translation>Anwenden auf</translation>
     </message>
     <message>
         <source>Selected group</source>
-        <translation type="unfinished"></translation>
+        <translation>Gewählte Gruppe</translation>
     </message>
     <message>
         <source>Checked groups</source>
-        <translation type="unfinished"></translation>
+        <translation>Angehakte Gruppen</translation>
     </message>
     <message>
         <source>Groups in contact</source>
-        <translation type="unfinished"></translation>
+        <translation>Gruppen mit Kontakt</translation>
     </message>
     <message>
         <source>Label the %1 group (with &quot;Checked groups&quot;)</source>
-        <translation type="unfinished"></translation>
+        <translation>Die Gruppe %1 labeln (mit „Angehakte Gruppen“)</translation>
     </message>
     <message>
         <source>Classes (keys 1-5)</source>
-        <translation type="unfinished"></translation>
+        <translation>Klassen (Tasten 1–5)</translation>
     </message>
     <message>
         <source>Label the selected steps as %1 (key %2)</source>
-        <translation type="unfinished"></translation>
+        <translation>Die gewählten Schritte als %1 labeln (Taste %2)</translation>
     </message>
     <message>
         <source>At the cursor</source>
-        <translation type="unfinished"></translation>
+        <translation>Am Cursor</translation>
     </message>
     <message>
         <source>Delete segment (Del)</source>
-        <translation type="unfinished"></translation>
+        <translation>Segment löschen (Entf)</translation>
     </message>
     <message>
         <source>Selection:</source>
-        <translation type="unfinished"></translation>
+        <translation>Auswahl:</translation>
     </message>
     <message>
         <source>Segment:</source>
-        <translation type="unfinished"></translation>
+        <translation>Segment:</translation>
     </message>
     <message>
         <source>Group</source>
-        <translation type="unfinished"></translation>
+        <translation>Gruppe</translation>
     </message>
     <message>
         <source>Agree</source>
-        <translation type="unfinished"></translation>
+        <translation>Übereinst.</translation>
     </message>
     <message>
         <source>Kappa</source>
-        <translation type="unfinished"></translation>
+        <translation>Kappa</translation>
     </message>
     <message>
         <source>Labels against the run&apos;s truth, over the labelled steps</source>
-        <translation type="unfinished"></translation>
+        <translation>Labels im Vergleich zur Ground Truth des Laufs, über die gelabelten Schritte</translation>
     </message>
     <message>
         <source>Agreement with truth</source>
-        <translation type="unfinished"></translation>
+        <translation>Übereinstimmung mit der Ground Truth</translation>
     </message>
     <message>
         <source>Open a run first.</source>
-        <translation type="unfinished"></translation>
+        <translation>Zuerst einen Lauf öffnen.</translation>
     </message>
     <message>
         <source>Create or open a label set first.</source>
-        <translation type="unfinished"></translation>
+        <translation>Zuerst einen Labelsatz anlegen oder öffnen.</translation>
     </message>
     <message>
         <source>No group to label: check a group or change the mode.</source>
-        <translation type="unfinished"></translation>
+        <translation>Keine Gruppe zum Labeln: eine Gruppe anhaken oder den Modus wechseln.</translation>
     </message>
     <message numerus="yes">
         <source>Labelled steps %1-%2 as %3 in %n group(s)</source>
-        <translation type="unfinished">
-            <numerusform></numerusform>
-            <numerusform></numerusform>
+        <translation>
+            <numerusform>Schritte %1–%2 in %n Gruppe als %3 gelabelt</numerusform>
+            <numerusform>Schritte %1–%2 in %n Gruppen als %3 gelabelt</numerusform>
         </translation>
     </message>
     <message>
         <source>No segment of the selected group under the cursor.</source>
-        <translation type="unfinished"></translation>
+        <translation>Kein Segment der gewählten Gruppe unter dem Cursor.</translation>
     </message>
     <message>
         <source>(no label set)</source>
-        <translation type="unfinished"></translation>
+        <translation>(kein Labelsatz)</translation>
     </message>
     <message>
         <source>New label set</source>
-        <translation type="unfinished"></translation>
+        <translation>Neuer Labelsatz</translation>
     </message>
     <message>
         <source>Name:</source>
-        <translation type="unfinished"></translation>
+        <translation>Name:</translation>
     </message>
     <message>
         <source>No label set is open.</source>
-        <translation type="unfinished"></translation>
+        <translation>Kein Labelsatz geöffnet.</translation>
     </message>
     <message>
         <source>Save label set as</source>
-        <translation type="unfinished"></translation>
+        <translation>Labelsatz speichern unter</translation>
     </message>
     <message>
         <source>Name of the copy:</source>
-        <translation type="unfinished"></translation>
+        <translation>Name der Kopie:</translation>
     </message>
     <message>
         <source> copy</source>
-        <translation type="unfinished"></translation>
+        <translation> Kopie</translation>
     </message>
     <message>
         <source>Import labels</source>
-        <translation type="unfinished"></translation>
+        <translation>Labels importieren</translation>
     </message>
     <message>
         <source>Label files (*.csv *.json);;All files (*)</source>
-        <translation type="unfinished"></translation>
+        <translation>Label-Dateien (*.csv *.json);;Alle Dateien (*)</translation>
     </message>
     <message numerus="yes">
         <source>Imported %n segment(s)</source>
-        <translation type="unfinished">
-            <numerusform></numerusform>
-            <numerusform></numerusform>
+        <translation>
+            <numerusform>%n Segment importiert</numerusform>
+            <numerusform>%n Segmente importiert</numerusform>
         </translation>
     </message>
     <message>
         <source>Export labels</source>
-        <translation type="unfinished"></translation>
+        <translation>Labels exportieren</translation>
     </message>
     <message>
         <source>CSV (*.csv);;JSON (*.json)</source>
-        <translation type="unfinished"></translation>
+        <translation>CSV (*.csv);;JSON (*.json)</translation>
     </message>
     <message>
         <source>Exported %1 to %2</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 nach %2 exportiert</translation>
     </message>
     <message numerus="yes">
         <source>steps %1-%2 (%n step(s))</source>
-        <translation type="unfinished">
-            <numerusform></numerusform>
-            <numerusform></numerusform>
+        <translation>
+            <numerusform>Schritte %1–%2 (%n Schritt)</numerusform>
+            <numerusform>Schritte %1–%2 (%n Schritte)</numerusform>
         </translation>
     </message>
     <message>
         <source>none (an edit labels the current step)</source>
-        <translation type="unfinished"></translation>
+        <translation>keine (eine Änderung labelt den aktuellen Schritt)</translation>
     </message>
     <message>
         <source>%1: unlabelled</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: ohne Label</translation>
     </message>
     <message>
         <source>%1: %2, steps %3-%4</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: %2, Schritte %3–%4</translation>
     </message>
 </context>
 <context>
     <name>tactile::gui::MainWindow</name>
     <message>
         <source>Runs</source>
-        <translation type="unfinished"></translation>
+        <translation>Läufe</translation>
     </message>
     <message>
         <source>Route</source>
-        <translation type="unfinished"></translation>
+        <translation>Route</translation>
     </message>
     <message>
         <source>Labels</source>
-        <translation type="unfinished"></translation>
+        <translation>Labels</translation>
     </message>
     <message>
         <source>Steps</source>
-        <translation type="unfinished"></translation>
+        <translation>Schritte</translation>
     </message>
     <message>
         <source>&amp;File</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Datei</translation>
     </message>
     <message>
         <source>&amp;Open Database...</source>
-        <translation type="unfinished"></translation>
+        <translation>Datenbank ö&amp;ffnen...</translation>
     </message>
     <message>
         <source>&amp;New Database...</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Neue Datenbank...</translation>
     </message>
     <message>
         <source>Open &amp;Recent</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Zuletzt geöffnet</translation>
     </message>
     <message>
         <source>&amp;Import Runs...</source>
-        <translation type="unfinished"></translation>
+        <translation>Läufe &amp;importieren...</translation>
     </message>
     <message>
         <source>Ctrl+I</source>
-        <translation type="unfinished"></translation>
+        <translation>Ctrl+I</translation>
     </message>
     <message>
         <source>Export &amp;Labels...</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Labels exportieren...</translation>
     </message>
     <message>
         <source>&amp;Quit</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Beenden</translation>
     </message>
     <message>
         <source>&amp;Edit</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Bearbeiten</translation>
     </message>
     <message>
         <source>&amp;Undo</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Rückgängig</translation>
     </message>
     <message>
         <source>&amp;Redo</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Wiederholen</translation>
     </message>
     <message>
         <source>Label as %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Als %1 labeln</translation>
     </message>
     <message>
         <source>&amp;Delete Segment</source>
-        <translation type="unfinished"></translation>
+        <translation>Segment &amp;löschen</translation>
     </message>
     <message>
         <source>Move Segment Start Left</source>
-        <translation type="unfinished"></translation>
+        <translation>Segmentanfang nach links</translation>
     </message>
     <message>
         <source>Alt+Shift+Left</source>
-        <translation type="unfinished"></translation>
+        <translation>Alt+Shift+Left</translation>
     </message>
     <message>
         <source>Move Segment Start Right</source>
-        <translation type="unfinished"></translation>
+        <translation>Segmentanfang nach rechts</translation>
     </message>
     <message>
         <source>Alt+Shift+Right</source>
-        <translation type="unfinished"></translation>
+        <translation>Alt+Shift+Right</translation>
     </message>
     <message>
         <source>Move Segment End Left</source>
-        <translation type="unfinished"></translation>
+        <translation>Segmentende nach links</translation>
     </message>
     <message>
         <source>Alt+Left</source>
-        <translation type="unfinished"></translation>
+        <translation>Alt+Left</translation>
     </message>
     <message>
         <source>Move Segment End Right</source>
-        <translation type="unfinished"></translation>
+        <translation>Segmentende nach rechts</translation>
     </message>
     <message>
         <source>Alt+Right</source>
-        <translation type="unfinished"></translation>
+        <translation>Alt+Right</translation>
     </message>
     <message>
         <source>Clear Selection</source>
-        <translation type="unfinished"></translation>
+        <translation>Auswahl aufheben</translation>
     </message>
     <message>
         <source>&amp;Go</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Gehe zu</translation>
     </message>
     <message>
         <source>Next Step</source>
-        <translation type="unfinished"></translation>
+        <translation>Nächster Schritt</translation>
     </message>
     <message>
         <source>Previous Step</source>
-        <translation type="unfinished"></translation>
+        <translation>Vorheriger Schritt</translation>
     </message>
     <message>
         <source>Forward 10 Steps</source>
-        <translation type="unfinished"></translation>
+        <translation>10 Schritte vor</translation>
     </message>
     <message>
         <source>Back 10 Steps</source>
-        <translation type="unfinished"></translation>
+        <translation>10 Schritte zurück</translation>
     </message>
     <message>
         <source>Forward 100 Steps</source>
-        <translation type="unfinished"></translation>
+        <translation>100 Schritte vor</translation>
     </message>
     <message>
         <source>Back 100 Steps</source>
-        <translation type="unfinished"></translation>
+        <translation>100 Schritte zurück</translation>
     </message>
     <message>
         <source>Forward One Screen</source>
-        <translation type="unfinished"></translation>
+        <translation>Eine Bildschirmbreite vor</translation>
     </message>
     <message>
         <source>Back One Screen</source>
-        <translation type="unfinished"></translation>
+        <translation>Eine Bildschirmbreite zurück</translation>
     </message>
     <message>
         <source>First Step</source>
-        <translation type="unfinished"></translation>
+        <translation>Erster Schritt</translation>
     </message>
     <message>
         <source>Last Step</source>
-        <translation type="unfinished"></translation>
+        <translation>Letzter Schritt</translation>
     </message>
     <message>
         <source>Play / Pause</source>
-        <translation type="unfinished"></translation>
+        <translation>Abspielen / Pause</translation>
     </message>
     <message>
         <source>&amp;View</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Ansicht</translation>
     </message>
     <message>
         <source>Robot Close-up / Whole Scene</source>
-        <translation type="unfinished"></translation>
+        <translation>Roboter-Nahansicht / ganze Szene</translation>
     </message>
     <message>
         <source>Colour Route by Label</source>
-        <translation type="unfinished"></translation>
+        <translation>Route nach Label einfärben</translation>
     </message>
     <message>
         <source>Heatmap: Normal</source>
-        <translation type="unfinished"></translation>
+        <translation>Heatmap: Normalkraft</translation>
     </message>
     <message>
         <source>Heatmap: Shear</source>
-        <translation type="unfinished"></translation>
+        <translation>Heatmap: Scherkraft</translation>
     </message>
     <message>
         <source>Heatmap: Magnitude</source>
-        <translation type="unfinished"></translation>
+        <translation>Heatmap: Betrag</translation>
     </message>
     <message>
         <source>Zoom to Whole Run</source>
-        <translation type="unfinished"></translation>
+        <translation>Ganzen Lauf zeigen</translation>
     </message>
     <message>
         <source>Ctrl+0</source>
-        <translation type="unfinished"></translation>
+        <translation>Ctrl+0</translation>
     </message>
     <message>
         <source>&amp;Help</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Hilfe</translation>
     </message>
     <message>
         <source>&amp;About Tactile Workbench</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Über Tactile Workbench</translation>
     </message>
     <message>
         <source>Opened %1</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 geöffnet</translation>
     </message>
     <message>
         <source>Open or create a database before importing runs.</source>
-        <translation type="unfinished"></translation>
+        <translation>Vor dem Import von Läufen eine Datenbank öffnen oder anlegen.</translation>
     </message>
     <message numerus="yes">
         <source>Importing %n run file(s)...</source>
-        <translation type="unfinished">
-            <numerusform></numerusform>
-            <numerusform></numerusform>
+        <translation>
+            <numerusform>%n Laufdatei wird importiert...</numerusform>
+            <numerusform>%n Laufdateien werden importiert...</numerusform>
         </translation>
     </message>
     <message>
         <source>Cancel</source>
-        <translation type="unfinished"></translation>
+        <translation>Abbrechen</translation>
     </message>
     <message numerus="yes">
         <source>Imported %n run(s)</source>
-        <translation type="unfinished">
-            <numerusform></numerusform>
-            <numerusform></numerusform>
+        <translation>
+            <numerusform>%n Lauf importiert</numerusform>
+            <numerusform>%n Läufe importiert</numerusform>
         </translation>
     </message>
     <message>
         <source>; cancelled</source>
-        <translation type="unfinished"></translation>
+        <translation>; abgebrochen</translation>
     </message>
     <message numerus="yes">
         <source>; %n file(s) not imported: </source>
-        <translation type="unfinished">
-            <numerusform></numerusform>
-            <numerusform></numerusform>
+        <translation>
+            <numerusform>; %n Datei nicht importiert: </numerusform>
+            <numerusform>; %n Dateien nicht importiert: </numerusform>
         </translation>
     </message>
     <message>
         <source>New database</source>
-        <translation type="unfinished"></translation>
+        <translation>Neue Datenbank</translation>
     </message>
     <message>
         <source>Tactile databases (*.db);;All files (*)</source>
-        <translation type="unfinished"></translation>
+        <translation>Tactile-Datenbanken (*.db);;Alle Dateien (*)</translation>
     </message>
     <message>
         <source>Open database</source>
-        <translation type="unfinished"></translation>
+        <translation>Datenbank öffnen</translation>
     </message>
     <message>
         <source>Tactile databases (*.db *.sqlite);;All files (*)</source>
-        <translation type="unfinished"></translation>
+        <translation>Tactile-Datenbanken (*.db *.sqlite);;Alle Dateien (*)</translation>
     </message>
     <message>
         <source>Import runs</source>
-        <translation type="unfinished"></translation>
+        <translation>Läufe importieren</translation>
     </message>
     <message>
         <source>Run files (*.csv);;All files (*)</source>
-        <translation type="unfinished"></translation>
+        <translation>Laufdateien (*.csv);;Alle Dateien (*)</translation>
     </message>
     <message>
         <source>Error: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Fehler: %1</translation>
     </message>
     <message>
         <source>Tactile Workbench</source>
-        <translation type="unfinished"></translation>
+        <translation>Tactile Workbench</translation>
     </message>
     <message>
         <source>Step %1 of %2</source>
-        <translation type="unfinished"></translation>
+        <translation>Schritt %1 von %2</translation>
     </message>
     <message>
         <source>  |  selected %1-%2</source>
-        <translation type="unfinished"></translation>
+        <translation>  |  ausgewählt %1–%2</translation>
     </message>
     <message>
         <source>No run open</source>
-        <translation type="unfinished"></translation>
+        <translation>Kein Lauf geöffnet</translation>
     </message>
     <message>
         <source>No database open</source>
-        <translation type="unfinished"></translation>
+        <translation>Keine Datenbank geöffnet</translation>
     </message>
     <message>
         <source>Label set: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Labelsatz: %1</translation>
     </message>
     <message>
         <source>No label set</source>
-        <translation type="unfinished"></translation>
+        <translation>Kein Labelsatz</translation>
     </message>
     <message>
         <source>About Tactile Workbench</source>
-        <translation type="unfinished"></translation>
+        <translation>Über Tactile Workbench</translation>
     </message>
     <message>
         <source>Tactile Workbench %1
 Research workbench for tactile-based mobile-robot navigation.</source>
-        <translation type="unfinished"></translation>
+        <translation>Tactile Workbench %1
+Forschungsumgebung für die taktile Navigation mobiler Roboter.</translation>
     </message>
     <message>
         <source>&amp;Learn</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Lernen</translation>
     </message>
     <message>
         <source>&amp;Train and Sweep...</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Trainieren und Sweep...</translation>
     </message>
     <message>
         <source>Ctrl+T</source>
-        <translation type="unfinished"></translation>
+        <translation>Ctrl+T</translation>
     </message>
     <message>
         <source>Open &amp;Sweep Results...</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Sweep-Ergebnisse öffnen...</translation>
     </message>
     <message>
         <source>&amp;Export Model...</source>
-        <translation type="unfinished"></translation>
+        <translation>Modell &amp;exportieren...</translation>
     </message>
     <message>
         <source>&amp;Import Model...</source>
-        <translation type="unfinished"></translation>
+        <translation>Modell &amp;importieren...</translation>
     </message>
     <message>
         <source>Quit</source>
-        <translation type="unfinished"></translation>
+        <translation>Beenden</translation>
     </message>
     <message>
         <source>A sweep or training is running. Cancel it and quit? Finished sweep cells stay stored.</source>
-        <translation type="unfinished"></translation>
+        <translation>Ein Sweep oder Training läuft. Abbrechen und beenden? Fertige Sweep-Zellen bleiben gespeichert.</translation>
     </message>
     <message>
         <source>Model &apos;%1&apos; stored</source>
-        <translation type="unfinished"></translation>
+        <translation>Modell „%1“ gespeichert</translation>
     </message>
     <message>
         <source>Open a database first</source>
-        <translation type="unfinished"></translation>
+        <translation>Zuerst eine Datenbank öffnen</translation>
     </message>
     <message>
         <source>The database has no sweep yet: Learn &gt; Train and Sweep</source>
-        <translation type="unfinished"></translation>
+        <translation>Die Datenbank hat noch keinen Sweep: Lernen &gt; Trainieren und Sweep</translation>
     </message>
     <message>
         <source>%1: %2 (%3 cells, %4)</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: %2 (%3 Zellen, %4)</translation>
     </message>
     <message>
         <source>Open Sweep Results</source>
-        <translation type="unfinished"></translation>
+        <translation>Sweep-Ergebnisse öffnen</translation>
     </message>
     <message>
         <source>Sweep:</source>
-        <translation type="unfinished"></translation>
+        <translation>Sweep:</translation>
     </message>
     <message>
         <source>The database has no model yet</source>
-        <translation type="unfinished"></translation>
+        <translation>Die Datenbank hat noch kein Modell</translation>
     </message>
     <message>
         <source>Export Model</source>
-        <translation type="unfinished"></translation>
+        <translation>Modell exportieren</translation>
     </message>
     <message>
         <source>Model:</source>
-        <translation type="unfinished"></translation>
+        <translation>Modell:</translation>
     </message>
     <message>
         <source>Model files (*.json)</source>
-        <translation type="unfinished"></translation>
+        <translation>Modelldateien (*.json)</translation>
     </message>
     <message>
         <source>Model &apos;%1&apos; written to %2</source>
-        <translation type="unfinished"></translation>
+        <translation>Modell „%1“ nach %2 geschrieben</translation>
     </message>
     <message>
         <source>Import Model</source>
-        <translation type="unfinished"></translation>
+        <translation>Modell importieren</translation>
     </message>
     <message>
         <source>Store as:</source>
-        <translation type="unfinished"></translation>
+        <translation>Speichern als:</translation>
     </message>
     <message>
         <source>Model &apos;%1&apos; stored from %2</source>
-        <translation type="unfinished"></translation>
+        <translation>Modell „%1“ aus %2 gespeichert</translation>
     </message>
     <message>
         <source>Predictions: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Vorhersagen: %1</translation>
     </message>
     <message numerus="yes">
         <source>Predictions shown: %n step(s) disagree with the labels (N: next)</source>
-        <translation type="unfinished">
-            <numerusform></numerusform>
-            <numerusform></numerusform>
+        <translation>
+            <numerusform>Vorhersagen angezeigt: %n Schritt weicht von den Labels ab (N: nächster)</numerusform>
+            <numerusform>Vorhersagen angezeigt: %n Schritte weichen von den Labels ab (N: nächster)</numerusform>
         </translation>
     </message>
     <message>
         <source>Show &amp;Predictions...</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Vorhersagen anzeigen...</translation>
     </message>
     <message>
         <source>Ctrl+P</source>
-        <translation type="unfinished"></translation>
+        <translation>Ctrl+P</translation>
     </message>
     <message>
         <source>&amp;Hide Predictions</source>
-        <translation type="unfinished"></translation>
+        <translation>Vorhersagen &amp;ausblenden</translation>
     </message>
     <message>
         <source>&amp;Next Disagreement</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Nächste Abweichung</translation>
     </message>
     <message>
         <source>Pre&amp;vious Disagreement</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Vorherige Abweichung</translation>
     </message>
     <message>
         <source>Open a run first</source>
-        <translation type="unfinished"></translation>
+        <translation>Zuerst einen Lauf öffnen</translation>
     </message>
     <message>
         <source>The database has no model yet: Learn &gt; Train and Sweep</source>
-        <translation type="unfinished"></translation>
+        <translation>Die Datenbank hat noch kein Modell: Lernen &gt; Trainieren und Sweep</translation>
     </message>
     <message>
         <source>No predictions shown: Learn &gt; Show Predictions</source>
-        <translation type="unfinished"></translation>
+        <translation>Keine Vorhersagen angezeigt: Lernen &gt; Vorhersagen anzeigen</translation>
     </message>
     <message>
         <source>The model agrees with the labels everywhere</source>
-        <translation type="unfinished"></translation>
+        <translation>Das Modell stimmt überall mit den Labels überein</translation>
     </message>
     <message>
         <source>Step %1, group %2: the model says %3 (%4 %), the label %5</source>
-        <translation type="unfinished"></translation>
+        <translation>Schritt %1, Gruppe %2: das Modell sagt %3 (%4 %), das Label %5</translation>
+    </message>
+    <message>
+        <source>Importing runs...</source>
+        <translation>Läufe werden importiert...</translation>
+    </message>
+    <message>
+        <source>Not a run file, folder or database: %1</source>
+        <translation>Weder Laufdatei noch Ordner noch Datenbank: %1</translation>
+    </message>
+    <message numerus="yes">
+        <source>Drop one database at a time (%n dropped).</source>
+        <translation>
+            <numerusform>Bitte nur eine Datenbank auf einmal ablegen (%n abgelegt).</numerusform>
+            <numerusform>Bitte nur eine Datenbank auf einmal ablegen (%n abgelegt).</numerusform>
+        </translation>
     </message>
 </context>
 <context>
     <name>tactile::gui::ModelPickerDialog</name>
     <message>
         <source>Show Predictions</source>
-        <translation type="unfinished"></translation>
+        <translation>Vorhersagen anzeigen</translation>
     </message>
     <message>
         <source>A model per group</source>
-        <translation type="unfinished"></translation>
+        <translation>Ein Modell je Gruppe</translation>
     </message>
     <message>
         <source>Model:</source>
-        <translation type="unfinished"></translation>
+        <translation>Modell:</translation>
     </message>
     <message>
         <source>The timeline shows each group&apos;s predicted class under its labels, pale where the model is unsure, and marks where it disagrees with the labels (N: next disagreement).</source>
-        <translation type="unfinished"></translation>
+        <translation>Die Zeitleiste zeigt die vorhergesagte Klasse jeder Gruppe unter ihren Labels, blass, wo das Modell unsicher ist, und markiert Abweichungen von den Labels (N: nächste Abweichung).</translation>
     </message>
 </context>
 <context>
     <name>tactile::gui::RouteView</name>
     <message>
         <source>%1 units to the goal</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 Einheiten bis zum Ziel</translation>
     </message>
     <message>
         <source>No run open</source>
-        <translation type="unfinished"></translation>
+        <translation>Kein Lauf geöffnet</translation>
     </message>
     <message>
         <source>Whole scene (M: close-up)</source>
-        <translation type="unfinished"></translation>
+        <translation>Ganze Szene (M: Nahansicht)</translation>
     </message>
     <message>
         <source>Close-up (M: whole scene)</source>
-        <translation type="unfinished"></translation>
+        <translation>Nahansicht (M: ganze Szene)</translation>
     </message>
     <message>
         <source>hole %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Lücke %1</translation>
     </message>
     <message>
         <source>hole %1 wide</source>
-        <translation type="unfinished"></translation>
+        <translation>Lücke %1 breit</translation>
     </message>
 </context>
 <context>
@@ -776,707 +792,708 @@ Research workbench for tactile-based mobile-robot navigation.</source>
     <message>
         <source>%1
 imported from %2</source>
-        <translation type="unfinished"></translation>
+        <translation>%1
+importiert aus %2</translation>
     </message>
     <message>
         <source>Run</source>
-        <translation type="unfinished"></translation>
+        <translation>Lauf</translation>
     </message>
     <message>
         <source>Scene</source>
-        <translation type="unfinished"></translation>
+        <translation>Szene</translation>
     </message>
     <message>
         <source>Subject</source>
-        <translation type="unfinished"></translation>
+        <translation>Proband</translation>
     </message>
     <message>
         <source>Steps</source>
-        <translation type="unfinished"></translation>
+        <translation>Schritte</translation>
     </message>
     <message>
         <source>Outcome</source>
-        <translation type="unfinished"></translation>
+        <translation>Ergebnis</translation>
     </message>
     <message>
         <source>Labelled</source>
-        <translation type="unfinished"></translation>
+        <translation>Gelabelt</translation>
     </message>
 </context>
 <context>
     <name>tactile::gui::RunListView</name>
     <message>
         <source>Filter runs by name, scene, subject or outcome</source>
-        <translation type="unfinished"></translation>
+        <translation>Läufe nach Name, Szene, Proband oder Ergebnis filtern</translation>
     </message>
 </context>
 <context>
     <name>tactile::gui::StepControlsView</name>
     <message>
         <source>Previous step (Left)</source>
-        <translation type="unfinished"></translation>
+        <translation>Vorheriger Schritt (Links)</translation>
     </message>
     <message>
         <source>Current step</source>
-        <translation type="unfinished"></translation>
+        <translation>Aktueller Schritt</translation>
     </message>
     <message>
         <source>Next step (Right)</source>
-        <translation type="unfinished"></translation>
+        <translation>Nächster Schritt (Rechts)</translation>
     </message>
     <message>
         <source>Scrub through the run</source>
-        <translation type="unfinished"></translation>
+        <translation>Durch den Lauf fahren</translation>
     </message>
     <message>
         <source>Play or pause (Space)</source>
-        <translation type="unfinished"></translation>
+        <translation>Abspielen oder anhalten (Leertaste)</translation>
     </message>
     <message>
         <source>Playing speed</source>
-        <translation type="unfinished"></translation>
+        <translation>Abspielgeschwindigkeit</translation>
     </message>
     <message>
         <source>%1 steps/s</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 Schritte/s</translation>
     </message>
     <message>
         <source>of %1</source>
-        <translation type="unfinished"></translation>
+        <translation>von %1</translation>
     </message>
 </context>
 <context>
     <name>tactile::gui::SweepCellsModel</name>
     <message>
         <source>yes</source>
-        <translation type="unfinished"></translation>
+        <translation>ja</translation>
     </message>
     <message>
         <source>no</source>
-        <translation type="unfinished"></translation>
+        <translation>nein</translation>
     </message>
     <message>
         <source>fitted</source>
-        <translation type="unfinished"></translation>
+        <translation>angepasst</translation>
     </message>
     <message>
         <source>no model: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>kein Modell: %1</translation>
     </message>
     <message>
         <source>Group</source>
-        <translation type="unfinished"></translation>
+        <translation>Gruppe</translation>
     </message>
     <message>
         <source>Method</source>
-        <translation type="unfinished"></translation>
+        <translation>Verfahren</translation>
     </message>
     <message>
         <source>Covariance</source>
-        <translation type="unfinished"></translation>
+        <translation>Kovarianz</translation>
     </message>
     <message>
         <source>Order</source>
-        <translation type="unfinished"></translation>
+        <translation>Ordnung</translation>
     </message>
     <message>
         <source>Floor</source>
-        <translation type="unfinished"></translation>
+        <translation>Untergrenze</translation>
     </message>
     <message>
         <source>Features</source>
-        <translation type="unfinished"></translation>
+        <translation>Merkmale</translation>
     </message>
     <message>
         <source>Seed</source>
-        <translation type="unfinished"></translation>
+        <translation>Seed</translation>
     </message>
     <message>
         <source>Iterations</source>
-        <translation type="unfinished"></translation>
+        <translation>Iterationen</translation>
     </message>
     <message>
         <source>Converged</source>
-        <translation type="unfinished"></translation>
+        <translation>Konvergiert</translation>
     </message>
     <message>
         <source>Accuracy %</source>
-        <translation type="unfinished"></translation>
+        <translation>Genauigkeit %</translation>
     </message>
     <message>
         <source>Balanced %</source>
-        <translation type="unfinished"></translation>
+        <translation>Balanciert %</translation>
     </message>
     <message>
         <source>Macro-F1</source>
-        <translation type="unfinished"></translation>
+        <translation>Makro-F1</translation>
     </message>
     <message>
         <source>Held-out loglik</source>
-        <translation type="unfinished"></translation>
+        <translation>Log-Likelihood (Testdaten)</translation>
     </message>
     <message>
         <source>Status</source>
-        <translation type="unfinished"></translation>
+        <translation>Status</translation>
     </message>
     <message>
         <source>Fit ms</source>
-        <translation type="unfinished"></translation>
+        <translation>Anpassung ms</translation>
     </message>
     <message>
         <source>Predict ms</source>
-        <translation type="unfinished"></translation>
+        <translation>Vorhersage ms</translation>
     </message>
 </context>
 <context>
     <name>tactile::gui::SweepPlot</name>
     <message>
         <source>Export PNG...</source>
-        <translation type="unfinished"></translation>
+        <translation>Als PNG exportieren...</translation>
     </message>
     <message>
         <source>Export PDF...</source>
-        <translation type="unfinished"></translation>
+        <translation>Als PDF exportieren...</translation>
     </message>
     <message>
         <source>Export PNG</source>
-        <translation type="unfinished"></translation>
+        <translation>Als PNG exportieren</translation>
     </message>
     <message>
         <source>PNG images (*.png)</source>
-        <translation type="unfinished"></translation>
+        <translation>PNG-Bilder (*.png)</translation>
     </message>
     <message>
         <source>Cannot write %1</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 kann nicht geschrieben werden</translation>
     </message>
     <message>
         <source>Export PDF</source>
-        <translation type="unfinished"></translation>
+        <translation>Als PDF exportieren</translation>
     </message>
     <message>
         <source>PDF files (*.pdf)</source>
-        <translation type="unfinished"></translation>
+        <translation>PDF-Dateien (*.pdf)</translation>
     </message>
     <message>
         <source>Variance floor</source>
-        <translation type="unfinished"></translation>
+        <translation>Varianzuntergrenze</translation>
     </message>
     <message>
         <source>Model order</source>
-        <translation type="unfinished"></translation>
+        <translation>Modellordnung</translation>
     </message>
     <message>
         <source>Correct rate per class (%)</source>
-        <translation type="unfinished"></translation>
+        <translation>Trefferquote je Klasse (%)</translation>
     </message>
     <message>
         <source>Fit + predict time (s)</source>
-        <translation type="unfinished"></translation>
+        <translation>Zeit für Anpassung + Vorhersage (s)</translation>
     </message>
     <message>
         <source>Error: 100 - balanced accuracy (%)</source>
-        <translation type="unfinished"></translation>
+        <translation>Fehler: 100 − balancierte Genauigkeit (%)</translation>
     </message>
     <message>
         <source>group %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Gruppe %1</translation>
     </message>
     <message>
         <source>Pareto front (%1)</source>
-        <translation type="unfinished"></translation>
+        <translation>Pareto-Front (%1)</translation>
     </message>
     <message>
         <source>No cells with a model yet.</source>
-        <translation type="unfinished"></translation>
+        <translation>Noch keine Zellen mit Modell.</translation>
     </message>
     <message>
         <source>No cells with a model scored on test rows.</source>
-        <translation type="unfinished"></translation>
+        <translation>Keine Zellen mit Modell auf Testzeilen bewertet.</translation>
     </message>
 </context>
 <context>
     <name>tactile::gui::SweepResultsView</name>
     <message>
         <source>No sweep</source>
-        <translation type="unfinished"></translation>
+        <translation>Kein Sweep</translation>
     </message>
     <message>
         <source>All groups</source>
-        <translation type="unfinished"></translation>
+        <translation>Alle Gruppen</translation>
     </message>
     <message>
         <source>Group:</source>
-        <translation type="unfinished"></translation>
+        <translation>Gruppe:</translation>
     </message>
     <message>
         <source>Confusion</source>
-        <translation type="unfinished"></translation>
+        <translation>Konfusionsmatrix</translation>
     </message>
     <message>
         <source>Class rates</source>
-        <translation type="unfinished"></translation>
+        <translation>Klassenraten</translation>
     </message>
     <message>
         <source>Rate vs floor</source>
-        <translation type="unfinished"></translation>
+        <translation>Rate vs. Untergrenze</translation>
     </message>
     <message>
         <source>Rate vs order</source>
-        <translation type="unfinished"></translation>
+        <translation>Rate vs. Ordnung</translation>
     </message>
     <message>
         <source>Time vs error</source>
-        <translation type="unfinished"></translation>
+        <translation>Zeit vs. Fehler</translation>
     </message>
     <message>
         <source>Contact patterns</source>
-        <translation type="unfinished"></translation>
+        <translation>Kontaktmuster</translation>
     </message>
     <message>
         <source>Sweep %1: %2 cells, %3 with a model</source>
-        <translation type="unfinished"></translation>
+        <translation>Sweep %1: %2 Zellen, %3 mit Modell</translation>
     </message>
     <message>
         <source>(cancelled: the finished cells)</source>
-        <translation type="unfinished"></translation>
+        <translation>(abgebrochen: die fertigen Zellen)</translation>
     </message>
     <message>
         <source>No cell has a model yet.</source>
-        <translation type="unfinished"></translation>
+        <translation>Noch keine Zelle hat ein Modell.</translation>
     </message>
     <message>
         <source>No cells yet.</source>
-        <translation type="unfinished"></translation>
+        <translation>Noch keine Zellen.</translation>
     </message>
     <message>
         <source>Select a cell.</source>
-        <translation type="unfinished"></translation>
+        <translation>Eine Zelle auswählen.</translation>
     </message>
     <message>
         <source>Cell %1: %2</source>
-        <translation type="unfinished"></translation>
+        <translation>Zelle %1: %2</translation>
     </message>
     <message>
         <source>This cell has no model: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Diese Zelle hat kein Modell: %1</translation>
     </message>
     <message>
         <source>Confusion (counts)</source>
-        <translation type="unfinished"></translation>
+        <translation>Konfusionsmatrix (Anzahl)</translation>
     </message>
     <message>
         <source>Confusion (row percent)</source>
-        <translation type="unfinished"></translation>
+        <translation>Konfusionsmatrix (Zeilenprozent)</translation>
     </message>
     <message>
         <source>Per-class correct rate of this cell (%)</source>
-        <translation type="unfinished"></translation>
+        <translation>Trefferquote je Klasse dieser Zelle (%)</translation>
     </message>
     <message>
         <source>No contact patterns were kept for this cell.</source>
-        <translation type="unfinished"></translation>
+        <translation>Für diese Zelle wurden keine Kontaktmuster aufbewahrt.</translation>
     </message>
     <message>
         <source>each group&apos;s best cell</source>
-        <translation type="unfinished"></translation>
+        <translation>beste Zelle jeder Gruppe</translation>
     </message>
     <message>
         <source>This cell was not scored: the test runs have no labelled rows of its group.</source>
-        <translation type="unfinished"></translation>
+        <translation>Diese Zelle wurde nicht bewertet: Die Testläufe haben keine gelabelten Zeilen ihrer Gruppe.</translation>
     </message>
     <message>
         <source>this cell</source>
-        <translation type="unfinished"></translation>
+        <translation>diese Zelle</translation>
     </message>
     <message>
         <source>Group %1, GMM %2, order %3, variance floor %4, %5 features, seed %6</source>
-        <translation type="unfinished"></translation>
+        <translation>Gruppe %1, GMM %2, Ordnung %3, Varianzuntergrenze %4, %5 Merkmale, Seed %6</translation>
     </message>
     <message>
         <source>Group %1, %2, variance floor %3, %4 features, seed %5</source>
-        <translation type="unfinished"></translation>
+        <translation>Gruppe %1, %2, Varianzuntergrenze %3, %4 Merkmale, Seed %5</translation>
     </message>
 </context>
 <context>
     <name>tactile::gui::SweepResultsWindow</name>
     <message>
         <source>Sweep</source>
-        <translation type="unfinished"></translation>
+        <translation>Sweep</translation>
     </message>
     <message>
         <source>Export Report...</source>
-        <translation type="unfinished"></translation>
+        <translation>Bericht exportieren...</translation>
     </message>
     <message>
         <source>Store Model of Cell</source>
-        <translation type="unfinished"></translation>
+        <translation>Modell der Zelle speichern</translation>
     </message>
     <message>
         <source>Store Model</source>
-        <translation type="unfinished"></translation>
+        <translation>Modell speichern</translation>
     </message>
     <message>
         <source>Name (empty: automatic):</source>
-        <translation type="unfinished"></translation>
+        <translation>Name (leer: automatisch):</translation>
     </message>
     <message>
         <source>Export Model of Cell...</source>
-        <translation type="unfinished"></translation>
+        <translation>Modell der Zelle exportieren...</translation>
     </message>
     <message>
         <source>Sweep %1: %2 (%3)</source>
-        <translation type="unfinished"></translation>
+        <translation>Sweep %1: %2 (%3)</translation>
     </message>
     <message>
         <source>Export Report</source>
-        <translation type="unfinished"></translation>
+        <translation>Bericht exportieren</translation>
     </message>
     <message>
         <source>HTML report (*.html);;Markdown report (*.md);;CSV tables (*.csv);;Text (*.txt)</source>
-        <translation type="unfinished"></translation>
+        <translation>HTML-Bericht (*.html);;Markdown-Bericht (*.md);;CSV-Tabellen (*.csv);;Text (*.txt)</translation>
     </message>
     <message>
         <source>Report written to %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Bericht nach %1 geschrieben</translation>
     </message>
     <message>
         <source>Select a cell first.</source>
-        <translation type="unfinished"></translation>
+        <translation>Zuerst eine Zelle auswählen.</translation>
     </message>
     <message>
         <source>That cell has no model: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Diese Zelle hat kein Modell: %1</translation>
     </message>
     <message>
         <source>Training the cell&apos;s model...</source>
-        <translation type="unfinished"></translation>
+        <translation>Das Modell der Zelle wird trainiert...</translation>
     </message>
     <message>
         <source>Export Model</source>
-        <translation type="unfinished"></translation>
+        <translation>Modell exportieren</translation>
     </message>
     <message>
         <source>Model files (*.json)</source>
-        <translation type="unfinished"></translation>
+        <translation>Modelldateien (*.json)</translation>
     </message>
     <message>
         <source>cancelled</source>
-        <translation type="unfinished"></translation>
+        <translation>abgebrochen</translation>
     </message>
     <message>
         <source>Model of Cell</source>
-        <translation type="unfinished"></translation>
+        <translation>Modell der Zelle</translation>
     </message>
     <message>
         <source>No model was stored: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Kein Modell gespeichert: %1</translation>
     </message>
     <message>
         <source>Model &apos;%1&apos; stored.</source>
-        <translation type="unfinished"></translation>
+        <translation>Modell „%1“ gespeichert.</translation>
     </message>
     <message>
         <source>Written to %1.</source>
-        <translation type="unfinished"></translation>
+        <translation>Nach %1 geschrieben.</translation>
     </message>
 </context>
 <context>
     <name>tactile::gui::TableView</name>
     <message>
         <source>Export CSV...</source>
-        <translation type="unfinished"></translation>
+        <translation>Als CSV exportieren...</translation>
     </message>
     <message>
         <source>Export CSV</source>
-        <translation type="unfinished"></translation>
+        <translation>Als CSV exportieren</translation>
     </message>
     <message>
         <source>CSV files (*.csv)</source>
-        <translation type="unfinished"></translation>
+        <translation>CSV-Dateien (*.csv)</translation>
     </message>
 </context>
 <context>
     <name>tactile::gui::TimelineView</name>
     <message>
         <source>Step</source>
-        <translation type="unfinished"></translation>
+        <translation>Schritt</translation>
     </message>
     <message>
         <source>heading</source>
-        <translation type="unfinished"></translation>
+        <translation>Kurs</translation>
     </message>
     <message>
         <source>L</source>
-        <translation type="unfinished"></translation>
+        <translation>L</translation>
     </message>
     <message>
         <source>R</source>
-        <translation type="unfinished"></translation>
+        <translation>R</translation>
     </message>
     <message>
         <source>F</source>
-        <translation type="unfinished"></translation>
+        <translation>V</translation>
     </message>
     <message>
         <source>B</source>
-        <translation type="unfinished"></translation>
+        <translation>Z</translation>
     </message>
     <message>
         <source>blocked</source>
-        <translation type="unfinished"></translation>
+        <translation>blockiert</translation>
     </message>
     <message>
         <source>%1 truth</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 Ground Truth</translation>
     </message>
     <message>
         <source>Normal</source>
-        <translation type="unfinished"></translation>
+        <translation>Normalkraft</translation>
     </message>
     <message>
         <source>Shear</source>
-        <translation type="unfinished"></translation>
+        <translation>Scherkraft</translation>
     </message>
     <message>
         <source>Magnitude</source>
-        <translation type="unfinished"></translation>
+        <translation>Betrag</translation>
     </message>
     <message>
         <source>%1 model</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 Modell</translation>
     </message>
     <message>
         <source>%1 ≠ label</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 ≠ Label</translation>
     </message>
     <message>
         <source>holes</source>
-        <translation type="unfinished"></translation>
+        <translation>Lücken</translation>
     </message>
     <message>
         <source>step %1, %2 side: hole %3 units wide between domes %4 and %5</source>
-        <translation type="unfinished"></translation>
+        <translation>Schritt %1, Seite %2: Lücke von %3 Einheiten zwischen den Kuppeln %4 und %5</translation>
     </message>
     <message>
         <source>step %1, %2: the model says %3 (%4 %)</source>
-        <translation type="unfinished"></translation>
+        <translation>Schritt %1, %2: das Modell sagt %3 (%4 %)</translation>
     </message>
     <message>
         <source>, the label %1</source>
-        <translation type="unfinished"></translation>
+        <translation>, das Label %1</translation>
     </message>
 </context>
 <context>
     <name>tactile::gui::TrainingDialog</name>
     <message>
         <source>Train and sweep</source>
-        <translation type="unfinished"></translation>
+        <translation>Trainieren und Sweep</translation>
     </message>
     <message>
         <source>Label set:</source>
-        <translation type="unfinished"></translation>
+        <translation>Labelsatz:</translation>
     </message>
     <message>
         <source>Run</source>
-        <translation type="unfinished"></translation>
+        <translation>Lauf</translation>
     </message>
     <message>
         <source>Steps</source>
-        <translation type="unfinished"></translation>
+        <translation>Schritte</translation>
     </message>
     <message>
         <source>Train</source>
-        <translation type="unfinished"></translation>
+        <translation>Training</translation>
     </message>
     <message>
         <source>Test</source>
-        <translation type="unfinished"></translation>
+        <translation>Test</translation>
     </message>
     <message>
         <source>Runs:</source>
-        <translation type="unfinished"></translation>
+        <translation>Läufe:</translation>
     </message>
     <message>
         <source>Score on the test runs</source>
-        <translation type="unfinished"></translation>
+        <translation>Auf den Testläufen bewerten</translation>
     </message>
     <message>
         <source>Leave one run out (training only)</source>
-        <translation type="unfinished"></translation>
+        <translation>Je einen Lauf auslassen (nur Training)</translation>
     </message>
     <message>
         <source>Split:</source>
-        <translation type="unfinished"></translation>
+        <translation>Aufteilung:</translation>
     </message>
     <message>
         <source>Groups:</source>
-        <translation type="unfinished"></translation>
+        <translation>Gruppen:</translation>
     </message>
     <message>
         <source>Gaussian</source>
-        <translation type="unfinished"></translation>
+        <translation>Gauß</translation>
     </message>
     <message>
         <source>GMM</source>
-        <translation type="unfinished"></translation>
+        <translation>GMM</translation>
     </message>
     <message>
         <source>Methods:</source>
-        <translation type="unfinished"></translation>
+        <translation>Verfahren:</translation>
     </message>
     <message>
         <source>Model orders (components per class), comma-separated</source>
-        <translation type="unfinished"></translation>
+        <translation>Modellordnungen (Komponenten je Klasse), durch Kommas getrennt</translation>
     </message>
     <message>
         <source>Orders:</source>
-        <translation type="unfinished"></translation>
+        <translation>Ordnungen:</translation>
     </message>
     <message>
         <source>Covariance:</source>
-        <translation type="unfinished"></translation>
+        <translation>Kovarianz:</translation>
     </message>
     <message>
         <source>Variance floors, comma-separated</source>
-        <translation type="unfinished"></translation>
+        <translation>Varianzuntergrenzen, durch Kommas getrennt</translation>
     </message>
     <message>
         <source>Variance floors:</source>
-        <translation type="unfinished"></translation>
+        <translation>Varianzuntergrenzen:</translation>
     </message>
     <message>
         <source>Features:</source>
-        <translation type="unfinished"></translation>
+        <translation>Merkmale:</translation>
     </message>
     <message>
         <source>Seeds:</source>
-        <translation type="unfinished"></translation>
+        <translation>Seeds:</translation>
     </message>
     <message>
         <source>automatic</source>
-        <translation type="unfinished"></translation>
+        <translation>automatisch</translation>
     </message>
     <message>
         <source>Name:</source>
-        <translation type="unfinished"></translation>
+        <translation>Name:</translation>
     </message>
     <message>
         <source>all cores</source>
-        <translation type="unfinished"></translation>
+        <translation>alle Kerne</translation>
     </message>
     <message>
         <source>Threads:</source>
-        <translation type="unfinished"></translation>
+        <translation>Threads:</translation>
     </message>
     <message>
         <source>Run sweep</source>
-        <translation type="unfinished"></translation>
+        <translation>Sweep starten</translation>
     </message>
     <message>
         <source>Train model</source>
-        <translation type="unfinished"></translation>
+        <translation>Modell trainieren</translation>
     </message>
     <message>
         <source>Cancel</source>
-        <translation type="unfinished"></translation>
+        <translation>Abbrechen</translation>
     </message>
     <message>
         <source>Close</source>
-        <translation type="unfinished"></translation>
+        <translation>Schließen</translation>
     </message>
     <message>
         <source>Choose the runs and the grid, then run a sweep or train a model.</source>
-        <translation type="unfinished"></translation>
+        <translation>Läufe und Raster wählen, dann einen Sweep starten oder ein Modell trainieren.</translation>
     </message>
     <message>
         <source>Orders</source>
-        <translation type="unfinished"></translation>
+        <translation>Ordnungen</translation>
     </message>
     <message>
         <source>Variance floors</source>
-        <translation type="unfinished"></translation>
+        <translation>Varianzuntergrenzen</translation>
     </message>
     <message>
         <source>Seeds</source>
-        <translation type="unfinished"></translation>
+        <translation>Seeds</translation>
     </message>
     <message numerus="yes">
         <source>Sweep of %n cell(s) started.</source>
-        <translation type="unfinished">
-            <numerusform></numerusform>
-            <numerusform></numerusform>
+        <translation>
+            <numerusform>Sweep mit %n Zelle gestartet.</numerusform>
+            <numerusform>Sweep mit %n Zellen gestartet.</numerusform>
         </translation>
     </message>
     <message>
         <source>Training started.</source>
-        <translation type="unfinished"></translation>
+        <translation>Training gestartet.</translation>
     </message>
     <message>
         <source>Cancelling: running fits stop after their current iteration...</source>
-        <translation type="unfinished"></translation>
+        <translation>Abbruch: Laufende Anpassungen enden nach ihrer aktuellen Iteration...</translation>
     </message>
     <message>
         <source>%1 of %2 done, about %3 left</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 von %2 fertig, noch etwa %3</translation>
     </message>
     <message>
         <source>%1 of %2 done</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 von %2 fertig</translation>
     </message>
     <message>
         <source>The sweep failed: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Der Sweep ist fehlgeschlagen: %1</translation>
     </message>
     <message numerus="yes">
         <source>Sweep %1 cancelled after %2 s; its %n finished cell(s) are stored.</source>
-        <translation type="unfinished">
-            <numerusform></numerusform>
-            <numerusform></numerusform>
+        <translation>
+            <numerusform>Sweep %1 nach %2 s abgebrochen; seine %n fertige Zelle ist gespeichert.</numerusform>
+            <numerusform>Sweep %1 nach %2 s abgebrochen; seine %n fertigen Zellen sind gespeichert.</numerusform>
         </translation>
     </message>
     <message numerus="yes">
         <source>Sweep %1 finished: %n cell(s) in %2 s.</source>
-        <translation type="unfinished">
-            <numerusform></numerusform>
-            <numerusform></numerusform>
+        <translation>
+            <numerusform>Sweep %1 fertig: %n Zelle in %2 s.</numerusform>
+            <numerusform>Sweep %1 fertig: %n Zellen in %2 s.</numerusform>
         </translation>
     </message>
     <message>
         <source>%1: balanced accuracy %2 %</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: balancierte Genauigkeit %2 %</translation>
     </message>
     <message>
         <source>%1: skipped (%2)</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: übersprungen (%2)</translation>
     </message>
     <message>
         <source>Model &apos;%1&apos; stored (%2 s). %3</source>
-        <translation type="unfinished"></translation>
+        <translation>Modell „%1“ gespeichert (%2 s). %3</translation>
     </message>
     <message>
         <source>Training cancelled; nothing was stored.</source>
-        <translation type="unfinished"></translation>
+        <translation>Training abgebrochen; nichts wurde gespeichert.</translation>
     </message>
     <message>
         <source>Training failed: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Training fehlgeschlagen: %1</translation>
     </message>
     <message>
         <source>each group&apos;s default settings</source>
-        <translation type="unfinished"></translation>
+        <translation>Standardeinstellungen jeder Gruppe</translation>
     </message>
     <message>
         <source>Train model uses each group&apos;s default order, covariance, floor and features, as tactile train does; unticked, the first value of every list above</source>
-        <translation type="unfinished"></translation>
+        <translation>„Modell trainieren“ nimmt wie tactile train Ordnung, Kovarianz, Untergrenze und Merkmale aus den Vorgaben jeder Gruppe; ohne Haken den ersten Wert jeder Liste oben</translation>
     </message>
     <message>
         <source>Train model with:</source>
-        <translation type="unfinished"></translation>
+        <translation>Modell trainieren mit:</translation>
     </message>
     <message>
         <source>Train one model per group and store it in the database</source>
-        <translation type="unfinished"></translation>
+        <translation>Ein Modell je Gruppe trainieren und in der Datenbank speichern</translation>
     </message>
 </context>
 </TS>

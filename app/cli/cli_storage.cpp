@@ -21,6 +21,7 @@
 #include "sim/scene_source.h"
 #include "storage/run_database.h"
 #include "storage/synthetic_run.h"
+#include "workspace/run_inputs.h"
 
 namespace tactile::cli {
 namespace {
@@ -69,27 +70,13 @@ void printJson(const nlohmann::json& doc) {
   std::printf("%s\n", dumpJson(doc).c_str());
 }
 
-// Files as given; a folder stands for the *.csv files in it (sorted, not recursive).
+// Files as given; a folder stands for the *.csv files in it (workspace/run_inputs.h).
 std::vector<fs::path> expandInputs(const std::vector<std::string>& inputs) {
-  std::vector<fs::path> files;
-  for (const std::string& input : inputs) {
-    std::error_code ec;
-    if (fs::is_directory(input, ec)) {
-      std::vector<fs::path> inFolder;
-      for (const auto& entry : fs::directory_iterator(input, ec)) {
-        if (entry.is_regular_file() && entry.path().extension() == ".csv") {
-          inFolder.push_back(entry.path());
-        }
-      }
-      if (ec) throw std::runtime_error(input + ": cannot list folder: " + ec.message());
-      std::sort(inFolder.begin(), inFolder.end());
-      if (inFolder.empty()) printWarning(input + ": no .csv files in this folder");
-      files.insert(files.end(), inFolder.begin(), inFolder.end());
-    } else {
-      files.emplace_back(input);
-    }
-  }
-  return files;
+  auto expanded = workspace::expandRunInputs({inputs.begin(), inputs.end()});
+  if (!expanded) throw std::runtime_error(expanded.errorText());
+  for (const std::string& warning : expanded->warnings)
+    printWarning(warning);
+  return std::move(expanded->files);
 }
 
 // ---- import ----------------------------------------------------------------------------------

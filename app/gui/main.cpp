@@ -2,13 +2,14 @@
 #include <QApplication>
 #include <QCommandLineParser>
 #include <QFileInfo>
+#include <QIcon>
 #include <QSettings>
 #include <QTimer>
-#include <QTranslator>
 
 #include <cstdio>
 
 #include "app/gui/common/settings_keys.h"
+#include "app/gui/common/ui_language.h"
 #include "app/gui/learning/sweep_results_window.h"
 #include "app/gui/main_window.h"
 #include "app/gui/runs/run_session_model.h"
@@ -27,12 +28,13 @@ int main(int argc, char** argv) {
   QApplication::setOrganizationName(QStringLiteral("TactileWorkbench"));
   QApplication::setApplicationName(QStringLiteral("tactile-workbench"));
   QApplication::setApplicationVersion(QStringLiteral(TACTILE_VERSION));
+  // The installed desktop entry and icon (share/applications, share/icons/hicolor).
+  QGuiApplication::setDesktopFileName(QStringLiteral("tactile-workbench"));
+  QApplication::setWindowIcon(QIcon::fromTheme(QStringLiteral("tactile-workbench")));
 
-  // The user's language where a translation is embedded (German so far), English otherwise.
-  QTranslator translator;
-  if (translator.load(QLocale(), QStringLiteral("tactile_workbench"), QStringLiteral("_"),
-                      QStringLiteral(":/i18n")))
-    QApplication::installTranslator(&translator);
+  // The Preferences language or the system's, where a translation exists; English otherwise.
+  // Numbers follow the interface language.
+  tactile::gui::installUiLanguage(app);
 
   QCommandLineParser parser;
   parser.setApplicationDescription(

@@ -47,11 +47,6 @@ namespace {
 
 constexpr int kPageCacheKiB = 16 * 1024;
 
-bool isDatabaseFile(const QString& path) {
-  const QString suffix = QFileInfo(path).suffix().toLower();
-  return suffix == "db" || suffix == "sqlite" || suffix == "sqlite3" || suffix == "tactile";
-}
-
 }  // namespace
 
 MainWindow::MainWindow(QWidget* parent)
@@ -362,15 +357,19 @@ void MainWindow::importRuns(const QStringList& files) {
   if (!workspace_) return showError(tr("Open or create a database before importing runs."));
   if (files.isEmpty()) return;
   auto* bridge = new ProgressBridge(this);
-  auto* dialog = new QProgressDialog(
-      tr("Importing %n run file(s)...", nullptr, static_cast<int>(files.size())), tr("Cancel"), 0,
-      static_cast<int>(files.size()), this);
+  // The range is set by the first progress report: folders are expanded on the worker thread.
+  auto* dialog = new QProgressDialog(tr("Importing runs..."), tr("Cancel"), 0, 0, this);
   dialog->setObjectName(QStringLiteral("importProgress"));
   dialog->setWindowModality(Qt::WindowModal);
   dialog->setMinimumDuration(0);
   dialog->setValue(0);
-  connect(bridge, &ProgressBridge::progressed, dialog,
-          [dialog](qint64 done, qint64) { dialog->setValue(static_cast<int>(done)); });
+  connect(bridge, &ProgressBridge::progressed, dialog, [dialog](qint64 done, qint64 total) {
+    if (total > 0 && dialog->maximum() != total) {
+      dialog->setMaximum(static_cast<int>(total));
+      dialog->setLabelText(tr("Importing %n run file(s)...", nullptr, static_cast<int>(total)));
+    }
+    dialog->setValue(static_cast<int>(done));
+  });
   connect(dialog, &QProgressDialog::canceled, bridge, &ProgressBridge::cancel);
   auto* watcher = new QFutureWatcher<ImportSummary>(this);
   connect(watcher, &QFutureWatcher<ImportSummary>::finished, this, [this, watcher, bridge, dialog] {
@@ -384,7 +383,8 @@ void MainWindow::importRuns(const QStringList& files) {
     if (!listed) showError(QString::fromStdString(listed.errorText()));
     QString text = tr("Imported %n run(s)", nullptr, result.imported());
     if (bridge->cancelled()) text += tr("; cancelled");
-    const QStringList problems = result.problems();
+    QStringList problems = result.problems();
+    problems << result.warnings;
     if (!problems.isEmpty()) {
       showError(text +
                 tr("; %n file(s) not imported: ", nullptr, static_cast<int>(problems.size())) +
@@ -424,27 +424,39 @@ void MainWindow::chooseRunFiles() {
   importRuns(files);
 }
 
+namespace {
+
+QStringList localPaths(const QMimeData* mime) {
+  QStringList paths;
+  for (const QUrl& url : mime->urls())
+    if (url.isLocalFile()) paths << url.toLocalFile();
+  return paths;
+}
+
+}  // namespace
+
 void MainWindow::dragEnterEvent(QDragEnterEvent* event) {
-  if (event->mimeData()->hasUrls()) event->acceptProposedAction();
+  const DroppedPaths dropped = sortDroppedPaths(localPaths(event->mimeData()));
+  if (!dropped.databases.isEmpty() || !dropped.runInputs.isEmpty()) event->acceptProposedAction();
 }
 
 void MainWindow::dropEvent(QDropEvent* event) {
-  QStringList runs;
-  for (const QUrl& url : event->mimeData()->urls()) {
-    if (!url.isLocalFile()) continue;
-    const QString path = url.toLocalFile();
-    if (isDatabaseFile(path)) {
-      Status s = openDatabase(path);
-      if (!s) showError(QString::fromStdString(s.errorText()));
-      event->acceptProposedAction();
-      return;
-    }
-    runs << path;
+  const DroppedPaths dropped = sortDroppedPaths(localPaths(event->mimeData()));
+  if (dropped.databases.isEmpty() && dropped.runInputs.isEmpty()) {
+    if (!dropped.ignored.isEmpty())
+      showError(tr("Not a run file, folder or database: %1").arg(dropped.ignored.join(", ")));
+    return;
   }
-  if (!runs.isEmpty()) {
-    event->acceptProposedAction();
-    importRuns(runs);
+  event->acceptProposedAction();
+  // A database dropped with run files opens first; the runs go into it.
+  if (dropped.databases.size() > 1)
+    return showError(tr("Drop one database at a time (%n dropped).", nullptr,
+                        static_cast<int>(dropped.databases.size())));
+  if (!dropped.databases.isEmpty()) {
+    Status s = openDatabase(dropped.databases.front());
+    if (!s) return showError(QString::fromStdString(s.errorText()));
   }
+  if (!dropped.runInputs.isEmpty()) importRuns(dropped.runInputs);
 }
 
 void MainWindow::showError(const QString& message) {

@@ -2,6 +2,7 @@
 // key stores a segment at once, undo takes it out of the database, and the window comes back as
 // it was left (database, run, step, label set, docks, view settings).
 #include <QAction>
+#include <QDir>
 #include <QDockWidget>
 #include <QFile>
 #include <QMenuBar>
@@ -13,6 +14,8 @@
 #include <QTemporaryDir>
 #include <QUndoStack>
 #include <QtTest>
+
+#include <memory>
 
 #include "app/gui/labels/label_model.h"
 #include "app/gui/labels/label_panel_view.h"
@@ -310,6 +313,79 @@ class MainWindowTest : public QObject {
     drop(csv);
     QTRY_COMPARE_WITH_TIMEOUT(window.runList()->table()->model()->rowCount(), 2, 10000);
     QVERIFY(fx.workspace->database().findRun("dropped").ok());
+  }
+
+  void droppingAFolderImportsItsCsvFilesAndADatabaseWithRunsOpensItFirst() {
+    GuiFixture fx(120);
+    auto run = fx.workspace->loadRun(fx.runName);
+    QVERIFY(run.ok());
+    // A folder with two run files and a file that is not one (ignored by the folder rule).
+    QDir(fx.dir.path()).mkpath(QStringLiteral("runs"));
+    const QString folder = fx.dir.filePath(QStringLiteral("runs"));
+    // Each file differs in its metadata, so none is skipped as a copy of another.
+    for (const char* name : {"folder_a", "folder_b"}) {
+      run->setMeta("subject", name);
+      QVERIFY(tactile::writeRunCsv(run.value(), (folder + "/" + name + ".csv").toStdString()).ok());
+    }
+    QFile notes(folder + QStringLiteral("/notes.txt"));
+    QVERIFY(notes.open(QIODevice::WriteOnly));
+    notes.write("not a run");
+    notes.close();
+    run->setMeta("subject", "single");
+    const QString single = fx.dir.filePath(QStringLiteral("single.csv"));
+    QVERIFY(tactile::writeRunCsv(run.value(), single.toStdString()).ok());
+
+    struct DropTarget : MainWindow {
+      using MainWindow::dragEnterEvent;
+      using MainWindow::dropEvent;
+    } window;
+    window.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&window));
+    auto mimeFor = [](const QStringList& files) {
+      auto* mime = new QMimeData;
+      QList<QUrl> urls;
+      for (const QString& f : files)
+        urls << QUrl::fromLocalFile(f);
+      mime->setUrls(urls);
+      return mime;
+    };
+    auto accepts = [&](const QStringList& files) {
+      std::unique_ptr<QMimeData> mime(mimeFor(files));
+      QDragEnterEvent event(QPoint(100, 100), Qt::CopyAction, mime.get(), Qt::LeftButton,
+                            Qt::NoModifier);
+      event.setAccepted(false);
+      window.dragEnterEvent(&event);
+      return event.isAccepted();
+    };
+    auto drop = [&](const QStringList& files) {
+      std::unique_ptr<QMimeData> mime(mimeFor(files));
+      QDropEvent event(QPointF(100, 100), Qt::CopyAction, mime.get(), Qt::LeftButton,
+                       Qt::NoModifier);
+      window.dropEvent(&event);
+    };
+    // Only what the window can use is accepted while dragging.
+    QVERIFY(!accepts({folder + QStringLiteral("/notes.txt")}));
+    QVERIFY(accepts({folder}));
+    QVERIFY(accepts({QString::fromStdString(fx.dbPath)}));
+
+    // A database and a run file in one drop: the database opens and the run goes into it.
+    drop({single, QString::fromStdString(fx.dbPath)});
+    QCOMPARE(window.databasePath(),
+             QFileInfo(QString::fromStdString(fx.dbPath)).absoluteFilePath());
+    QTRY_COMPARE_WITH_TIMEOUT(window.runList()->table()->model()->rowCount(), 2, 10000);
+    QVERIFY(fx.workspace->database().findRun("single").ok());
+
+    // A folder: both of its run files, nothing else.
+    drop({folder});
+    QTRY_COMPARE_WITH_TIMEOUT(window.runList()->table()->model()->rowCount(), 4, 10000);
+    QVERIFY(fx.workspace->database().findRun("folder_a").ok());
+    QVERIFY(fx.workspace->database().findRun("folder_b").ok());
+    QVERIFY2(window.lastError().isEmpty(), qPrintable(window.lastError()));
+
+    // A file that is neither is reported and changes nothing.
+    drop({folder + QStringLiteral("/notes.txt")});
+    QVERIFY(window.lastError().contains(QStringLiteral("notes.txt")));
+    QCOMPARE(window.runList()->table()->model()->rowCount(), 4);
   }
 
   void badDatabaseIsAnErrorAndChangesNothing() {

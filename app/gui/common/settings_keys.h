@@ -14,6 +14,7 @@ inline constexpr QLatin1StringView kLastLabelSet{"labels/lastSet"};
 inline constexpr QLatin1StringView kLabelGroupsMode{"labels/groupsMode"};
 inline constexpr QLatin1StringView kPlaySpeed{"steps/playSpeed"};
 inline constexpr QLatin1StringView kRunFilter{"runs/filter"};
+inline constexpr QLatin1StringView kUiLanguage{"ui/language"};  // "" = the system's
 inline constexpr int kMaxRecentDatabases = 8;
 
 }  // namespace tactile::gui::settings_keys

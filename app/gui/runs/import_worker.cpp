@@ -1,11 +1,13 @@
 #include "app/gui/runs/import_worker.h"
 
+#include <QFileInfo>
 #include <QtConcurrent/QtConcurrentRun>
 
 #include <filesystem>
 
 #include "app/gui/common/progress_bridge.h"
 #include "sim/scene_source.h"
+#include "workspace/run_inputs.h"
 
 namespace tactile::gui {
 
@@ -32,6 +34,29 @@ QStringList ImportSummary::problems() const {
   return out;
 }
 
+bool isDatabaseFile(const QString& path) {
+  const QString suffix = QFileInfo(path).suffix().toLower();
+  return suffix == "db" || suffix == "sqlite" || suffix == "sqlite3" || suffix == "tactile";
+}
+
+DroppedPaths sortDroppedPaths(const QStringList& paths) {
+  DroppedPaths out;
+  for (const QString& path : paths) {
+    const QFileInfo info(path);
+    if (info.isDir())
+      out.runInputs << path;
+    else if (!info.isFile())
+      out.ignored << path;
+    else if (isDatabaseFile(path))
+      out.databases << path;
+    else if (info.suffix().compare(QLatin1String("csv"), Qt::CaseInsensitive) == 0)
+      out.runInputs << path;
+    else
+      out.ignored << path;
+  }
+  return out;
+}
+
 ImportSummary importRunFiles(const QString& databasePath, const QStringList& files,
                              ProgressBridge* bridge) {
   ImportSummary summary;
@@ -42,9 +67,17 @@ ImportSummary importRunFiles(const QString& databasePath, const QStringList& fil
     summary.error = QString::fromStdString(db.errorText());
     return summary;
   }
-  std::vector<std::filesystem::path> paths;
+  std::vector<std::filesystem::path> inputs;
   for (const QString& f : files)
-    paths.emplace_back(f.toStdString());
+    inputs.emplace_back(f.toStdString());
+  auto expanded = workspace::expandRunInputs(inputs);
+  if (!expanded) {
+    summary.error = QString::fromStdString(expanded.errorText());
+    return summary;
+  }
+  for (const std::string& w : expanded->warnings)
+    summary.warnings << QString::fromStdString(w);
+  const std::vector<std::filesystem::path>& paths = expanded->files;
   storage::ImportOptions options;
   options.sceneResolver = sim::proceduralSceneJson;
   summary.outcomes =

@@ -19,12 +19,24 @@ class ProgressBridge;
 
 struct ImportSummary {
   std::vector<storage::ImportOutcome> outcomes;
-  QString error;  // the database could not be opened
+  QString error;         // the database could not be opened, or a folder not listed
+  QStringList warnings;  // folders without run files
   int imported() const;
   int failed() const;
   // One line per failed or skipped file.
   QStringList problems() const;
 };
+
+// Run files and folders (a folder stands for its *.csv files, as for `tactile import`), and
+// database files, among paths the user dropped or chose. Paths that are neither (other
+// extensions, missing files) go to `ignored`.
+struct DroppedPaths {
+  QStringList databases;
+  QStringList runInputs;
+  QStringList ignored;
+};
+DroppedPaths sortDroppedPaths(const QStringList& paths);
+bool isDatabaseFile(const QString& path);
 
 // Runs the import; `bridge` (owned by the caller, in the GUI thread) gets progress and cancel.
 ImportSummary importRunFiles(const QString& databasePath, const QStringList& files,

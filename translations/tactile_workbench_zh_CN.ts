@@ -1,0 +1,1488 @@
+<?xml version="1.0" encoding="utf-8"?>
+<!DOCTYPE TS>
+<TS version="2.1" language="zh_CN">
+<context>
+    <name>ContactClass</name>
+    <message>
+        <source>No contact</source>
+        <translation>无接触</translation>
+    </message>
+    <message>
+        <source>Wall</source>
+        <translation>墙</translation>
+    </message>
+    <message>
+        <source>Corner</source>
+        <translation>墙角</translation>
+    </message>
+    <message>
+        <source>Leaving wall</source>
+        <translation>离开墙</translation>
+    </message>
+    <message>
+        <source>Dead path</source>
+        <translation>死路</translation>
+    </message>
+</context>
+<context>
+    <name>QObject</name>
+    <message>
+        <source>none</source>
+        <translation>无</translation>
+    </message>
+</context>
+<context>
+    <name>main</name>
+    <message>
+        <source>Tactile Workbench: tactile-navigation research desktop</source>
+        <translation>触觉工作台：触觉导航研究桌面程序</translation>
+    </message>
+    <message>
+        <source>Open the run database DB (default: the last one used).</source>
+        <translation>打开运行数据库 DB（默认：上次使用的数据库）。</translation>
+    </message>
+    <message>
+        <source>Open the run named NAME.</source>
+        <translation>打开名为 NAME 的运行。</translation>
+    </message>
+    <message>
+        <source>Put the cursor on step K.</source>
+        <translation>将光标置于第 K 步。</translation>
+    </message>
+    <message>
+        <source>Render the window (or with --sweep the results window) at 1600x1000 to the PNG file FILE, then quit.</source>
+        <translation>将窗口（使用 --sweep 时为结果窗口）以 1600x1000 渲染为 PNG 文件 FILE，然后退出。</translation>
+    </message>
+    <message>
+        <source>Open the results of the stored sweep ID (needs --db).</source>
+        <translation>打开已保存的扫描 ID 的结果（需要 --db）。</translation>
+    </message>
+    <message>
+        <source>Show the stored model NAME&apos;s predictions under the labels (needs --run).</source>
+        <translation>在标签下方显示已保存模型 NAME 的预测（需要 --run）。</translation>
+    </message>
+    <message>
+        <source>--step needs a step number, got &apos;%1&apos;</source>
+        <translation>--step 需要一个步数，收到的是“%1”</translation>
+    </message>
+    <message>
+        <source>--run needs --db</source>
+        <translation>--run 需要 --db</translation>
+    </message>
+    <message>
+        <source>--sweep needs --db</source>
+        <translation>--sweep 需要 --db</translation>
+    </message>
+    <message>
+        <source>--model needs --run</source>
+        <translation>--model 需要 --run</translation>
+    </message>
+    <message>
+        <source>--sweep needs a sweep id, got &apos;%1&apos;</source>
+        <translation>--sweep 需要一个扫描 ID，收到的是“%1”</translation>
+    </message>
+    <message>
+        <source>%1: no such database</source>
+        <translation>%1：没有此数据库</translation>
+    </message>
+</context>
+<context>
+    <name>tactile::gui::LabelModel</name>
+    <message>
+        <source>Label steps %1-%2 as %3</source>
+        <translation>将第 %1–%2 步标注为%3</translation>
+    </message>
+    <message>
+        <source>Move %1 segment to steps %2-%3</source>
+        <translation>将%1片段移至第 %2–%3 步</translation>
+    </message>
+    <message>
+        <source>Delete segment</source>
+        <translation>删除片段</translation>
+    </message>
+</context>
+<context>
+    <name>tactile::gui::LabelPanelView</name>
+    <message>
+        <source>Label set</source>
+        <translation>标签集</translation>
+    </message>
+    <message>
+        <source>The label set being edited; choose another to open it</source>
+        <translation>正在编辑的标签集；选择另一个即可打开</translation>
+    </message>
+    <message>
+        <source>New...</source>
+        <translation>新建...</translation>
+    </message>
+    <message>
+        <source>Save As...</source>
+        <translation>另存为...</translation>
+    </message>
+    <message>
+        <source>Import...</source>
+        <translation>导入...</translation>
+    </message>
+    <message>
+        <source>Export...</source>
+        <translation>导出...</translation>
+    </message>
+    <message>
+        <source>Apply to</source>
+        <translation>应用于</translation>
+    </message>
+    <message>
+        <source>Selected group</source>
+        <translation>选中的组</translation>
+    </message>
+    <message>
+        <source>Checked groups</source>
+        <translation>勾选的组</translation>
+    </message>
+    <message>
+        <source>Groups in contact</source>
+        <translation>有接触的组</translation>
+    </message>
+    <message>
+        <source>Label the %1 group (with &quot;Checked groups&quot;)</source>
+        <translation>标注 %1 组（配合“勾选的组”）</translation>
+    </message>
+    <message>
+        <source>Classes (keys 1-5)</source>
+        <translation>类别（按键 1–5）</translation>
+    </message>
+    <message>
+        <source>Label the selected steps as %1 (key %2)</source>
+        <translation>将选中的步标注为%1（按键 %2）</translation>
+    </message>
+    <message>
+        <source>At the cursor</source>
+        <translation>光标处</translation>
+    </message>
+    <message>
+        <source>Delete segment (Del)</source>
+        <translation>删除片段（Del）</translation>
+    </message>
+    <message>
+        <source>Selection:</source>
+        <translation>选区：</translation>
+    </message>
+    <message>
+        <source>Segment:</source>
+        <translation>片段：</translation>
+    </message>
+    <message>
+        <source>Group</source>
+        <translation>组</translation>
+    </message>
+    <message>
+        <source>Agree</source>
+        <translation>一致率</translation>
+    </message>
+    <message>
+        <source>Kappa</source>
+        <translation>Kappa</translation>
+    </message>
+    <message>
+        <source>Labels against the run&apos;s truth, over the labelled steps</source>
+        <translation>标签与该运行真值的对比，仅统计已标注的步</translation>
+    </message>
+    <message>
+        <source>Agreement with truth</source>
+        <translation>与真值的一致性</translation>
+    </message>
+    <message>
+        <source>Open a run first.</source>
+        <translation>请先打开一个运行。</translation>
+    </message>
+    <message>
+        <source>Create or open a label set first.</source>
+        <translation>请先新建或打开一个标签集。</translation>
+    </message>
+    <message>
+        <source>No group to label: check a group or change the mode.</source>
+        <translation>没有可标注的组：请勾选一个组或更改模式。</translation>
+    </message>
+    <message numerus="yes">
+        <source>Labelled steps %1-%2 as %3 in %n group(s)</source>
+        <translation>
+            <numerusform>已在 %n 个组中将第 %1–%2 步标注为%3</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>No segment of the selected group under the cursor.</source>
+        <translation>光标处没有选中组的片段。</translation>
+    </message>
+    <message>
+        <source>(no label set)</source>
+        <translation>（无标签集）</translation>
+    </message>
+    <message>
+        <source>New label set</source>
+        <translation>新建标签集</translation>
+    </message>
+    <message>
+        <source>Name:</source>
+        <translation>名称：</translation>
+    </message>
+    <message>
+        <source>No label set is open.</source>
+        <translation>没有打开的标签集。</translation>
+    </message>
+    <message>
+        <source>Save label set as</source>
+        <translation>标签集另存为</translation>
+    </message>
+    <message>
+        <source>Name of the copy:</source>
+        <translation>副本名称：</translation>
+    </message>
+    <message>
+        <source> copy</source>
+        <translation> 副本</translation>
+    </message>
+    <message>
+        <source>Import labels</source>
+        <translation>导入标签</translation>
+    </message>
+    <message>
+        <source>Label files (*.csv *.json);;All files (*)</source>
+        <translation>标签文件 (*.csv *.json);;所有文件 (*)</translation>
+    </message>
+    <message numerus="yes">
+        <source>Imported %n segment(s)</source>
+        <translation>
+            <numerusform>已导入 %n 个片段</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Export labels</source>
+        <translation>导出标签</translation>
+    </message>
+    <message>
+        <source>CSV (*.csv);;JSON (*.json)</source>
+        <translation>CSV (*.csv);;JSON (*.json)</translation>
+    </message>
+    <message>
+        <source>Exported %1 to %2</source>
+        <translation>已将 %1 导出到 %2</translation>
+    </message>
+    <message numerus="yes">
+        <source>steps %1-%2 (%n step(s))</source>
+        <translation>
+            <numerusform>第 %1–%2 步（共 %n 步）</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>none (an edit labels the current step)</source>
+        <translation>无（编辑将标注当前步）</translation>
+    </message>
+    <message>
+        <source>%1: unlabelled</source>
+        <translation>%1：未标注</translation>
+    </message>
+    <message>
+        <source>%1: %2, steps %3-%4</source>
+        <translation>%1：%2，第 %3–%4 步</translation>
+    </message>
+</context>
+<context>
+    <name>tactile::gui::MainWindow</name>
+    <message>
+        <source>Predictions: %1</source>
+        <translation>预测：%1</translation>
+    </message>
+    <message numerus="yes">
+        <source>Predictions shown: %n step(s) disagree with the labels (N: next)</source>
+        <translation>
+            <numerusform>已显示预测：%n 步与标签不一致（N：下一处）</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Runs</source>
+        <translation>运行</translation>
+    </message>
+    <message>
+        <source>Route</source>
+        <translation>路线</translation>
+    </message>
+    <message>
+        <source>Labels</source>
+        <translation>标签</translation>
+    </message>
+    <message>
+        <source>Steps</source>
+        <translation>步</translation>
+    </message>
+    <message>
+        <source>&amp;File</source>
+        <translation>文件(&amp;F)</translation>
+    </message>
+    <message>
+        <source>&amp;Open Database...</source>
+        <translation>打开数据库(&amp;O)...</translation>
+    </message>
+    <message>
+        <source>&amp;New Database...</source>
+        <translation>新建数据库(&amp;N)...</translation>
+    </message>
+    <message>
+        <source>Open &amp;Recent</source>
+        <translation>最近打开(&amp;R)</translation>
+    </message>
+    <message>
+        <source>&amp;Import Runs...</source>
+        <translation>导入运行(&amp;I)...</translation>
+    </message>
+    <message>
+        <source>Ctrl+I</source>
+        <translation>Ctrl+I</translation>
+    </message>
+    <message>
+        <source>Export &amp;Labels...</source>
+        <translation>导出标签(&amp;L)...</translation>
+    </message>
+    <message>
+        <source>&amp;Quit</source>
+        <translation>退出(&amp;Q)</translation>
+    </message>
+    <message>
+        <source>&amp;Edit</source>
+        <translation>编辑(&amp;E)</translation>
+    </message>
+    <message>
+        <source>&amp;Undo</source>
+        <translation>撤销(&amp;U)</translation>
+    </message>
+    <message>
+        <source>&amp;Redo</source>
+        <translation>重做(&amp;R)</translation>
+    </message>
+    <message>
+        <source>Label as %1</source>
+        <translation>标注为%1</translation>
+    </message>
+    <message>
+        <source>&amp;Delete Segment</source>
+        <translation>删除片段(&amp;D)</translation>
+    </message>
+    <message>
+        <source>Move Segment Start Left</source>
+        <translation>片段起点左移</translation>
+    </message>
+    <message>
+        <source>Alt+Shift+Left</source>
+        <translation>Alt+Shift+Left</translation>
+    </message>
+    <message>
+        <source>Move Segment Start Right</source>
+        <translation>片段起点右移</translation>
+    </message>
+    <message>
+        <source>Alt+Shift+Right</source>
+        <translation>Alt+Shift+Right</translation>
+    </message>
+    <message>
+        <source>Move Segment End Left</source>
+        <translation>片段终点左移</translation>
+    </message>
+    <message>
+        <source>Alt+Left</source>
+        <translation>Alt+Left</translation>
+    </message>
+    <message>
+        <source>Move Segment End Right</source>
+        <translation>片段终点右移</translation>
+    </message>
+    <message>
+        <source>Alt+Right</source>
+        <translation>Alt+Right</translation>
+    </message>
+    <message>
+        <source>Clear Selection</source>
+        <translation>清除选区</translation>
+    </message>
+    <message>
+        <source>&amp;Go</source>
+        <translation>转到(&amp;G)</translation>
+    </message>
+    <message>
+        <source>Next Step</source>
+        <translation>下一步</translation>
+    </message>
+    <message>
+        <source>Previous Step</source>
+        <translation>上一步</translation>
+    </message>
+    <message>
+        <source>Forward 10 Steps</source>
+        <translation>前进 10 步</translation>
+    </message>
+    <message>
+        <source>Back 10 Steps</source>
+        <translation>后退 10 步</translation>
+    </message>
+    <message>
+        <source>Forward 100 Steps</source>
+        <translation>前进 100 步</translation>
+    </message>
+    <message>
+        <source>Back 100 Steps</source>
+        <translation>后退 100 步</translation>
+    </message>
+    <message>
+        <source>Forward One Screen</source>
+        <translation>前进一屏</translation>
+    </message>
+    <message>
+        <source>Back One Screen</source>
+        <translation>后退一屏</translation>
+    </message>
+    <message>
+        <source>First Step</source>
+        <translation>第一步</translation>
+    </message>
+    <message>
+        <source>Last Step</source>
+        <translation>最后一步</translation>
+    </message>
+    <message>
+        <source>Play / Pause</source>
+        <translation>播放 / 暂停</translation>
+    </message>
+    <message>
+        <source>&amp;View</source>
+        <translation>视图(&amp;V)</translation>
+    </message>
+    <message>
+        <source>Robot Close-up / Whole Scene</source>
+        <translation>机器人特写 / 整个场景</translation>
+    </message>
+    <message>
+        <source>Colour Route by Label</source>
+        <translation>按标签为路线着色</translation>
+    </message>
+    <message>
+        <source>Heatmap: Normal</source>
+        <translation>热图：法向力</translation>
+    </message>
+    <message>
+        <source>Heatmap: Shear</source>
+        <translation>热图：剪切力</translation>
+    </message>
+    <message>
+        <source>Heatmap: Magnitude</source>
+        <translation>热图：合力大小</translation>
+    </message>
+    <message>
+        <source>Zoom to Whole Run</source>
+        <translation>缩放至整个运行</translation>
+    </message>
+    <message>
+        <source>Ctrl+0</source>
+        <translation>Ctrl+0</translation>
+    </message>
+    <message>
+        <source>&amp;Learn</source>
+        <translation>学习(&amp;L)</translation>
+    </message>
+    <message>
+        <source>&amp;Train and Sweep...</source>
+        <translation>训练与扫描(&amp;T)...</translation>
+    </message>
+    <message>
+        <source>Ctrl+T</source>
+        <translation>Ctrl+T</translation>
+    </message>
+    <message>
+        <source>Open &amp;Sweep Results...</source>
+        <translation>打开扫描结果(&amp;S)...</translation>
+    </message>
+    <message>
+        <source>Show &amp;Predictions...</source>
+        <translation>显示预测(&amp;P)...</translation>
+    </message>
+    <message>
+        <source>Ctrl+P</source>
+        <translation>Ctrl+P</translation>
+    </message>
+    <message>
+        <source>&amp;Hide Predictions</source>
+        <translation>隐藏预测(&amp;H)</translation>
+    </message>
+    <message>
+        <source>&amp;Next Disagreement</source>
+        <translation>下一处不一致(&amp;N)</translation>
+    </message>
+    <message>
+        <source>Pre&amp;vious Disagreement</source>
+        <translation>上一处不一致(&amp;V)</translation>
+    </message>
+    <message>
+        <source>&amp;Export Model...</source>
+        <translation>导出模型(&amp;E)...</translation>
+    </message>
+    <message>
+        <source>&amp;Import Model...</source>
+        <translation>导入模型(&amp;I)...</translation>
+    </message>
+    <message>
+        <source>&amp;Help</source>
+        <translation>帮助(&amp;H)</translation>
+    </message>
+    <message>
+        <source>&amp;About Tactile Workbench</source>
+        <translation>关于触觉工作台(&amp;A)</translation>
+    </message>
+    <message>
+        <source>Opened %1</source>
+        <translation>已打开 %1</translation>
+    </message>
+    <message>
+        <source>Open or create a database before importing runs.</source>
+        <translation>导入运行前请先打开或新建数据库。</translation>
+    </message>
+    <message>
+        <source>Importing runs...</source>
+        <translation>正在导入运行...</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>取消</translation>
+    </message>
+    <message numerus="yes">
+        <source>Importing %n run file(s)...</source>
+        <translation>
+            <numerusform>正在导入 %n 个运行文件...</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>Imported %n run(s)</source>
+        <translation>
+            <numerusform>已导入 %n 个运行</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>; cancelled</source>
+        <translation>；已取消</translation>
+    </message>
+    <message numerus="yes">
+        <source>; %n file(s) not imported: </source>
+        <translation>
+            <numerusform>；%n 个文件未导入：</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>New database</source>
+        <translation>新建数据库</translation>
+    </message>
+    <message>
+        <source>Tactile databases (*.db);;All files (*)</source>
+        <translation>触觉数据库 (*.db);;所有文件 (*)</translation>
+    </message>
+    <message>
+        <source>Open database</source>
+        <translation>打开数据库</translation>
+    </message>
+    <message>
+        <source>Tactile databases (*.db *.sqlite);;All files (*)</source>
+        <translation>触觉数据库 (*.db *.sqlite);;所有文件 (*)</translation>
+    </message>
+    <message>
+        <source>Import runs</source>
+        <translation>导入运行</translation>
+    </message>
+    <message>
+        <source>Run files (*.csv);;All files (*)</source>
+        <translation>运行文件 (*.csv);;所有文件 (*)</translation>
+    </message>
+    <message>
+        <source>Not a run file, folder or database: %1</source>
+        <translation>不是运行文件、文件夹或数据库：%1</translation>
+    </message>
+    <message numerus="yes">
+        <source>Drop one database at a time (%n dropped).</source>
+        <translation>
+            <numerusform>一次只能拖放一个数据库（拖放了 %n 个）。</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Error: %1</source>
+        <translation>错误：%1</translation>
+    </message>
+    <message>
+        <source>Tactile Workbench</source>
+        <translation>触觉工作台</translation>
+    </message>
+    <message>
+        <source>Step %1 of %2</source>
+        <translation>第 %1 步，共 %2 步</translation>
+    </message>
+    <message>
+        <source>  |  selected %1-%2</source>
+        <translation>  |  已选 %1–%2</translation>
+    </message>
+    <message>
+        <source>No run open</source>
+        <translation>未打开运行</translation>
+    </message>
+    <message>
+        <source>No database open</source>
+        <translation>未打开数据库</translation>
+    </message>
+    <message>
+        <source>Label set: %1</source>
+        <translation>标签集：%1</translation>
+    </message>
+    <message>
+        <source>No label set</source>
+        <translation>无标签集</translation>
+    </message>
+    <message>
+        <source>About Tactile Workbench</source>
+        <translation>关于触觉工作台</translation>
+    </message>
+    <message>
+        <source>Tactile Workbench %1
+Research workbench for tactile-based mobile-robot navigation.</source>
+        <translation>触觉工作台 %1
+基于触觉的移动机器人导航研究平台。</translation>
+    </message>
+    <message>
+        <source>Quit</source>
+        <translation>退出</translation>
+    </message>
+    <message>
+        <source>A sweep or training is running. Cancel it and quit? Finished sweep cells stay stored.</source>
+        <translation>扫描或训练正在进行。要取消并退出吗？已完成的扫描单元会保留。</translation>
+    </message>
+    <message>
+        <source>Model &apos;%1&apos; stored</source>
+        <translation>模型“%1”已保存</translation>
+    </message>
+    <message>
+        <source>Open a database first</source>
+        <translation>请先打开数据库</translation>
+    </message>
+    <message>
+        <source>The database has no sweep yet: Learn &gt; Train and Sweep</source>
+        <translation>数据库中还没有扫描：学习 &gt; 训练与扫描</translation>
+    </message>
+    <message>
+        <source>%1: %2 (%3 cells, %4)</source>
+        <translation>%1：%2（%3 个单元，%4）</translation>
+    </message>
+    <message>
+        <source>Open Sweep Results</source>
+        <translation>打开扫描结果</translation>
+    </message>
+    <message>
+        <source>Sweep:</source>
+        <translation>扫描：</translation>
+    </message>
+    <message>
+        <source>The database has no model yet</source>
+        <translation>数据库中还没有模型</translation>
+    </message>
+    <message>
+        <source>Export Model</source>
+        <translation>导出模型</translation>
+    </message>
+    <message>
+        <source>Model:</source>
+        <translation>模型：</translation>
+    </message>
+    <message>
+        <source>Model files (*.json)</source>
+        <translation>模型文件 (*.json)</translation>
+    </message>
+    <message>
+        <source>Model &apos;%1&apos; written to %2</source>
+        <translation>模型“%1”已写入 %2</translation>
+    </message>
+    <message>
+        <source>Open a run first</source>
+        <translation>请先打开一个运行</translation>
+    </message>
+    <message>
+        <source>The database has no model yet: Learn &gt; Train and Sweep</source>
+        <translation>数据库中还没有模型：学习 &gt; 训练与扫描</translation>
+    </message>
+    <message>
+        <source>No predictions shown: Learn &gt; Show Predictions</source>
+        <translation>未显示预测：学习 &gt; 显示预测</translation>
+    </message>
+    <message>
+        <source>The model agrees with the labels everywhere</source>
+        <translation>模型与标签处处一致</translation>
+    </message>
+    <message>
+        <source>Step %1, group %2: the model says %3 (%4 %), the label %5</source>
+        <translation>第 %1 步，%2 组：模型判为%3（%4 %），标签为%5</translation>
+    </message>
+    <message>
+        <source>Import Model</source>
+        <translation>导入模型</translation>
+    </message>
+    <message>
+        <source>Store as:</source>
+        <translation>保存为：</translation>
+    </message>
+    <message>
+        <source>Model &apos;%1&apos; stored from %2</source>
+        <translation>已从 %2 保存模型“%1”</translation>
+    </message>
+</context>
+<context>
+    <name>tactile::gui::ModelPickerDialog</name>
+    <message>
+        <source>Show Predictions</source>
+        <translation>显示预测</translation>
+    </message>
+    <message>
+        <source>A model per group</source>
+        <translation>每组一个模型</translation>
+    </message>
+    <message>
+        <source>Model:</source>
+        <translation>模型：</translation>
+    </message>
+    <message>
+        <source>The timeline shows each group&apos;s predicted class under its labels, pale where the model is unsure, and marks where it disagrees with the labels (N: next disagreement).</source>
+        <translation>时间轴在每组标签下方显示预测类别，模型不确定处颜色较浅，并标出与标签不一致之处（N：下一处不一致）。</translation>
+    </message>
+</context>
+<context>
+    <name>tactile::gui::RouteView</name>
+    <message>
+        <source>hole %1</source>
+        <translation>缺口 %1</translation>
+    </message>
+    <message>
+        <source>hole %1 wide</source>
+        <translation>缺口宽 %1</translation>
+    </message>
+    <message>
+        <source>%1 units to the goal</source>
+        <translation>距目标 %1 单位</translation>
+    </message>
+    <message>
+        <source>No run open</source>
+        <translation>未打开运行</translation>
+    </message>
+    <message>
+        <source>Whole scene (M: close-up)</source>
+        <translation>整个场景（M：特写）</translation>
+    </message>
+    <message>
+        <source>Close-up (M: whole scene)</source>
+        <translation>特写（M：整个场景）</translation>
+    </message>
+</context>
+<context>
+    <name>tactile::gui::RunListModel</name>
+    <message>
+        <source>%1
+imported from %2</source>
+        <translation>%1
+导入自 %2</translation>
+    </message>
+    <message>
+        <source>Run</source>
+        <translation>运行</translation>
+    </message>
+    <message>
+        <source>Scene</source>
+        <translation>场景</translation>
+    </message>
+    <message>
+        <source>Subject</source>
+        <translation>受试者</translation>
+    </message>
+    <message>
+        <source>Steps</source>
+        <translation>步</translation>
+    </message>
+    <message>
+        <source>Outcome</source>
+        <translation>结果</translation>
+    </message>
+    <message>
+        <source>Labelled</source>
+        <translation>已标注</translation>
+    </message>
+</context>
+<context>
+    <name>tactile::gui::RunListView</name>
+    <message>
+        <source>Filter runs by name, scene, subject or outcome</source>
+        <translation>按名称、场景、受试者或结果筛选运行</translation>
+    </message>
+</context>
+<context>
+    <name>tactile::gui::StepControlsView</name>
+    <message>
+        <source>Previous step (Left)</source>
+        <translation>上一步（左方向键）</translation>
+    </message>
+    <message>
+        <source>Current step</source>
+        <translation>当前步</translation>
+    </message>
+    <message>
+        <source>Next step (Right)</source>
+        <translation>下一步（右方向键）</translation>
+    </message>
+    <message>
+        <source>Scrub through the run</source>
+        <translation>拖动浏览运行</translation>
+    </message>
+    <message>
+        <source>Play or pause (Space)</source>
+        <translation>播放或暂停（空格键）</translation>
+    </message>
+    <message>
+        <source>Playing speed</source>
+        <translation>播放速度</translation>
+    </message>
+    <message>
+        <source>%1 steps/s</source>
+        <translation>%1 步/秒</translation>
+    </message>
+    <message>
+        <source>of %1</source>
+        <translation>/ %1</translation>
+    </message>
+</context>
+<context>
+    <name>tactile::gui::SweepCellsModel</name>
+    <message>
+        <source>yes</source>
+        <translation>是</translation>
+    </message>
+    <message>
+        <source>no</source>
+        <translation>否</translation>
+    </message>
+    <message>
+        <source>fitted</source>
+        <translation>已拟合</translation>
+    </message>
+    <message>
+        <source>no model: %1</source>
+        <translation>无模型：%1</translation>
+    </message>
+    <message>
+        <source>Group</source>
+        <translation>组</translation>
+    </message>
+    <message>
+        <source>Method</source>
+        <translation>方法</translation>
+    </message>
+    <message>
+        <source>Covariance</source>
+        <translation>协方差</translation>
+    </message>
+    <message>
+        <source>Order</source>
+        <translation>阶数</translation>
+    </message>
+    <message>
+        <source>Floor</source>
+        <translation>下限</translation>
+    </message>
+    <message>
+        <source>Features</source>
+        <translation>特征</translation>
+    </message>
+    <message>
+        <source>Seed</source>
+        <translation>随机种子</translation>
+    </message>
+    <message>
+        <source>Fit ms</source>
+        <translation>拟合 ms</translation>
+    </message>
+    <message>
+        <source>Predict ms</source>
+        <translation>预测 ms</translation>
+    </message>
+    <message>
+        <source>Iterations</source>
+        <translation>迭代次数</translation>
+    </message>
+    <message>
+        <source>Converged</source>
+        <translation>已收敛</translation>
+    </message>
+    <message>
+        <source>Accuracy %</source>
+        <translation>准确率 %</translation>
+    </message>
+    <message>
+        <source>Balanced %</source>
+        <translation>平衡准确率 %</translation>
+    </message>
+    <message>
+        <source>Macro-F1</source>
+        <translation>宏 F1</translation>
+    </message>
+    <message>
+        <source>Held-out loglik</source>
+        <translation>留出集对数似然</translation>
+    </message>
+    <message>
+        <source>Status</source>
+        <translation>状态</translation>
+    </message>
+</context>
+<context>
+    <name>tactile::gui::SweepPlot</name>
+    <message>
+        <source>Export PNG...</source>
+        <translation>导出 PNG...</translation>
+    </message>
+    <message>
+        <source>Export PDF...</source>
+        <translation>导出 PDF...</translation>
+    </message>
+    <message>
+        <source>Export PNG</source>
+        <translation>导出 PNG</translation>
+    </message>
+    <message>
+        <source>PNG images (*.png)</source>
+        <translation>PNG 图像 (*.png)</translation>
+    </message>
+    <message>
+        <source>Cannot write %1</source>
+        <translation>无法写入 %1</translation>
+    </message>
+    <message>
+        <source>Export PDF</source>
+        <translation>导出 PDF</translation>
+    </message>
+    <message>
+        <source>PDF files (*.pdf)</source>
+        <translation>PDF 文件 (*.pdf)</translation>
+    </message>
+    <message>
+        <source>No cells with a model yet.</source>
+        <translation>还没有带模型的单元。</translation>
+    </message>
+    <message>
+        <source>Variance floor</source>
+        <translation>方差下限</translation>
+    </message>
+    <message>
+        <source>Model order</source>
+        <translation>模型阶数</translation>
+    </message>
+    <message>
+        <source>Correct rate per class (%)</source>
+        <translation>各类别正确率 (%)</translation>
+    </message>
+    <message>
+        <source>Fit + predict time (s)</source>
+        <translation>拟合 + 预测时间 (s)</translation>
+    </message>
+    <message>
+        <source>Error: 100 - balanced accuracy (%)</source>
+        <translation>误差：100 − 平衡准确率 (%)</translation>
+    </message>
+    <message>
+        <source>group %1</source>
+        <translation>%1 组</translation>
+    </message>
+    <message>
+        <source>Pareto front (%1)</source>
+        <translation>帕累托前沿（%1）</translation>
+    </message>
+    <message>
+        <source>No cells with a model scored on test rows.</source>
+        <translation>没有在测试行上评分的带模型单元。</translation>
+    </message>
+</context>
+<context>
+    <name>tactile::gui::SweepResultsView</name>
+    <message>
+        <source>Group %1, GMM %2, order %3, variance floor %4, %5 features, seed %6</source>
+        <translation>%1 组，GMM %2，阶数 %3，方差下限 %4，%5 个特征，随机种子 %6</translation>
+    </message>
+    <message>
+        <source>Group %1, %2, variance floor %3, %4 features, seed %5</source>
+        <translation>%1 组，%2，方差下限 %3，%4 个特征，随机种子 %5</translation>
+    </message>
+    <message>
+        <source>No sweep</source>
+        <translation>无扫描</translation>
+    </message>
+    <message>
+        <source>All groups</source>
+        <translation>所有组</translation>
+    </message>
+    <message>
+        <source>Group:</source>
+        <translation>组：</translation>
+    </message>
+    <message>
+        <source>Confusion</source>
+        <translation>混淆矩阵</translation>
+    </message>
+    <message>
+        <source>Class rates</source>
+        <translation>类别比率</translation>
+    </message>
+    <message>
+        <source>Rate vs floor</source>
+        <translation>比率与下限</translation>
+    </message>
+    <message>
+        <source>Rate vs order</source>
+        <translation>比率与阶数</translation>
+    </message>
+    <message>
+        <source>Time vs error</source>
+        <translation>时间与误差</translation>
+    </message>
+    <message>
+        <source>Contact patterns</source>
+        <translation>接触模式</translation>
+    </message>
+    <message>
+        <source>Sweep %1: %2 cells, %3 with a model</source>
+        <translation>扫描 %1：%2 个单元，%3 个带模型</translation>
+    </message>
+    <message>
+        <source>(cancelled: the finished cells)</source>
+        <translation>（已取消：仅已完成的单元）</translation>
+    </message>
+    <message>
+        <source>No cell has a model yet.</source>
+        <translation>还没有单元带模型。</translation>
+    </message>
+    <message>
+        <source>each group&apos;s best cell</source>
+        <translation>每组最佳单元</translation>
+    </message>
+    <message>
+        <source>No cells yet.</source>
+        <translation>还没有单元。</translation>
+    </message>
+    <message>
+        <source>Select a cell.</source>
+        <translation>请选择一个单元。</translation>
+    </message>
+    <message>
+        <source>Cell %1: %2</source>
+        <translation>单元 %1：%2</translation>
+    </message>
+    <message>
+        <source>This cell has no model: %1</source>
+        <translation>此单元没有模型：%1</translation>
+    </message>
+    <message>
+        <source>This cell was not scored: the test runs have no labelled rows of its group.</source>
+        <translation>此单元未评分：测试运行中没有其所属组的已标注行。</translation>
+    </message>
+    <message>
+        <source>Confusion (counts)</source>
+        <translation>混淆矩阵（计数）</translation>
+    </message>
+    <message>
+        <source>Confusion (row percent)</source>
+        <translation>混淆矩阵（行百分比）</translation>
+    </message>
+    <message>
+        <source>this cell</source>
+        <translation>此单元</translation>
+    </message>
+    <message>
+        <source>Per-class correct rate of this cell (%)</source>
+        <translation>此单元各类别正确率 (%)</translation>
+    </message>
+    <message>
+        <source>No contact patterns were kept for this cell.</source>
+        <translation>此单元未保留接触模式。</translation>
+    </message>
+</context>
+<context>
+    <name>tactile::gui::SweepResultsWindow</name>
+    <message>
+        <source>Sweep</source>
+        <translation>扫描</translation>
+    </message>
+    <message>
+        <source>Export Report...</source>
+        <translation>导出报告...</translation>
+    </message>
+    <message>
+        <source>Store Model of Cell</source>
+        <translation>保存单元的模型</translation>
+    </message>
+    <message>
+        <source>Store Model</source>
+        <translation>保存模型</translation>
+    </message>
+    <message>
+        <source>Name (empty: automatic):</source>
+        <translation>名称（留空：自动）：</translation>
+    </message>
+    <message>
+        <source>Export Model of Cell...</source>
+        <translation>导出单元的模型...</translation>
+    </message>
+    <message>
+        <source>Sweep %1: %2 (%3)</source>
+        <translation>扫描 %1：%2（%3）</translation>
+    </message>
+    <message>
+        <source>Export Report</source>
+        <translation>导出报告</translation>
+    </message>
+    <message>
+        <source>HTML report (*.html);;Markdown report (*.md);;CSV tables (*.csv);;Text (*.txt)</source>
+        <translation>HTML 报告 (*.html);;Markdown 报告 (*.md);;CSV 表格 (*.csv);;文本 (*.txt)</translation>
+    </message>
+    <message>
+        <source>Report written to %1</source>
+        <translation>报告已写入 %1</translation>
+    </message>
+    <message>
+        <source>Select a cell first.</source>
+        <translation>请先选择一个单元。</translation>
+    </message>
+    <message>
+        <source>That cell has no model: %1</source>
+        <translation>该单元没有模型：%1</translation>
+    </message>
+    <message>
+        <source>Training the cell&apos;s model...</source>
+        <translation>正在训练该单元的模型...</translation>
+    </message>
+    <message>
+        <source>Export Model</source>
+        <translation>导出模型</translation>
+    </message>
+    <message>
+        <source>Model files (*.json)</source>
+        <translation>模型文件 (*.json)</translation>
+    </message>
+    <message>
+        <source>cancelled</source>
+        <translation>已取消</translation>
+    </message>
+    <message>
+        <source>Model of Cell</source>
+        <translation>单元的模型</translation>
+    </message>
+    <message>
+        <source>No model was stored: %1</source>
+        <translation>未保存模型：%1</translation>
+    </message>
+    <message>
+        <source>Model &apos;%1&apos; stored.</source>
+        <translation>模型“%1”已保存。</translation>
+    </message>
+    <message>
+        <source>Written to %1.</source>
+        <translation>已写入 %1。</translation>
+    </message>
+</context>
+<context>
+    <name>tactile::gui::TableView</name>
+    <message>
+        <source>Export CSV...</source>
+        <translation>导出 CSV...</translation>
+    </message>
+    <message>
+        <source>Export CSV</source>
+        <translation>导出 CSV</translation>
+    </message>
+    <message>
+        <source>CSV files (*.csv)</source>
+        <translation>CSV 文件 (*.csv)</translation>
+    </message>
+</context>
+<context>
+    <name>tactile::gui::TimelineView</name>
+    <message>
+        <source>Step</source>
+        <translation>步</translation>
+    </message>
+    <message>
+        <source>heading</source>
+        <translation>航向</translation>
+    </message>
+    <message>
+        <source>L</source>
+        <translation>左</translation>
+    </message>
+    <message>
+        <source>R</source>
+        <translation>右</translation>
+    </message>
+    <message>
+        <source>F</source>
+        <translation>前</translation>
+    </message>
+    <message>
+        <source>B</source>
+        <translation>后</translation>
+    </message>
+    <message>
+        <source>blocked</source>
+        <translation>受阻</translation>
+    </message>
+    <message>
+        <source>%1 truth</source>
+        <translation>%1 真值</translation>
+    </message>
+    <message>
+        <source>%1 model</source>
+        <translation>%1 模型</translation>
+    </message>
+    <message>
+        <source>%1 ≠ label</source>
+        <translation>%1 ≠ 标签</translation>
+    </message>
+    <message>
+        <source>holes</source>
+        <translation>缺口</translation>
+    </message>
+    <message>
+        <source>step %1, %2 side: hole %3 units wide between domes %4 and %5</source>
+        <translation>第 %1 步，%2 侧：触点 %4 与 %5 之间有宽 %3 单位的缺口</translation>
+    </message>
+    <message>
+        <source>step %1, %2: the model says %3 (%4 %)</source>
+        <translation>第 %1 步，%2：模型判为%3（%4 %）</translation>
+    </message>
+    <message>
+        <source>, the label %1</source>
+        <translation>，标签为%1</translation>
+    </message>
+    <message>
+        <source>Normal</source>
+        <translation>法向力</translation>
+    </message>
+    <message>
+        <source>Shear</source>
+        <translation>剪切力</translation>
+    </message>
+    <message>
+        <source>Magnitude</source>
+        <translation>合力大小</translation>
+    </message>
+</context>
+<context>
+    <name>tactile::gui::TrainingDialog</name>
+    <message>
+        <source>Train and sweep</source>
+        <translation>训练与扫描</translation>
+    </message>
+    <message>
+        <source>Label set:</source>
+        <translation>标签集：</translation>
+    </message>
+    <message>
+        <source>Run</source>
+        <translation>运行</translation>
+    </message>
+    <message>
+        <source>Steps</source>
+        <translation>步</translation>
+    </message>
+    <message>
+        <source>Train</source>
+        <translation>训练</translation>
+    </message>
+    <message>
+        <source>Test</source>
+        <translation>测试</translation>
+    </message>
+    <message>
+        <source>Runs:</source>
+        <translation>运行：</translation>
+    </message>
+    <message>
+        <source>Score on the test runs</source>
+        <translation>在测试运行上评分</translation>
+    </message>
+    <message>
+        <source>Leave one run out (training only)</source>
+        <translation>留一运行交叉验证（仅训练运行）</translation>
+    </message>
+    <message>
+        <source>Split:</source>
+        <translation>划分：</translation>
+    </message>
+    <message>
+        <source>Groups:</source>
+        <translation>组：</translation>
+    </message>
+    <message>
+        <source>Gaussian</source>
+        <translation>高斯</translation>
+    </message>
+    <message>
+        <source>GMM</source>
+        <translation>GMM</translation>
+    </message>
+    <message>
+        <source>Methods:</source>
+        <translation>方法：</translation>
+    </message>
+    <message>
+        <source>Model orders (components per class), comma-separated</source>
+        <translation>模型阶数（每类的分量数），以逗号分隔</translation>
+    </message>
+    <message>
+        <source>Orders:</source>
+        <translation>阶数：</translation>
+    </message>
+    <message>
+        <source>Covariance:</source>
+        <translation>协方差：</translation>
+    </message>
+    <message>
+        <source>Variance floors, comma-separated</source>
+        <translation>方差下限，以逗号分隔</translation>
+    </message>
+    <message>
+        <source>Variance floors:</source>
+        <translation>方差下限：</translation>
+    </message>
+    <message>
+        <source>Features:</source>
+        <translation>特征：</translation>
+    </message>
+    <message>
+        <source>Seeds:</source>
+        <translation>随机种子：</translation>
+    </message>
+    <message>
+        <source>automatic</source>
+        <translation>自动</translation>
+    </message>
+    <message>
+        <source>Name:</source>
+        <translation>名称：</translation>
+    </message>
+    <message>
+        <source>all cores</source>
+        <translation>所有核心</translation>
+    </message>
+    <message>
+        <source>Threads:</source>
+        <translation>线程：</translation>
+    </message>
+    <message>
+        <source>each group&apos;s default settings</source>
+        <translation>每组的默认设置</translation>
+    </message>
+    <message>
+        <source>Train model uses each group&apos;s default order, covariance, floor and features, as tactile train does; unticked, the first value of every list above</source>
+        <translation>“训练模型”与 tactile train 一样使用每组默认的阶数、协方差、下限和特征；取消勾选时使用上方每个列表的第一个值</translation>
+    </message>
+    <message>
+        <source>Train model with:</source>
+        <translation>训练模型时使用：</translation>
+    </message>
+    <message>
+        <source>Run sweep</source>
+        <translation>运行扫描</translation>
+    </message>
+    <message>
+        <source>Train model</source>
+        <translation>训练模型</translation>
+    </message>
+    <message>
+        <source>Train one model per group and store it in the database</source>
+        <translation>为每组训练一个模型并保存到数据库</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>取消</translation>
+    </message>
+    <message>
+        <source>Close</source>
+        <translation>关闭</translation>
+    </message>
+    <message>
+        <source>Choose the runs and the grid, then run a sweep or train a model.</source>
+        <translation>选择运行和参数网格，然后运行扫描或训练模型。</translation>
+    </message>
+    <message>
+        <source>Orders</source>
+        <translation>阶数</translation>
+    </message>
+    <message>
+        <source>Variance floors</source>
+        <translation>方差下限</translation>
+    </message>
+    <message>
+        <source>Seeds</source>
+        <translation>随机种子</translation>
+    </message>
+    <message numerus="yes">
+        <source>Sweep of %n cell(s) started.</source>
+        <translation>
+            <numerusform>已开始 %n 个单元的扫描。</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Training started.</source>
+        <translation>训练已开始。</translation>
+    </message>
+    <message>
+        <source>Cancelling: running fits stop after their current iteration...</source>
+        <translation>正在取消：进行中的拟合将在当前迭代后停止...</translation>
+    </message>
+    <message>
+        <source>%1 of %2 done, about %3 left</source>
+        <translation>已完成 %1 / %2，约剩 %3</translation>
+    </message>
+    <message>
+        <source>%1 of %2 done</source>
+        <translation>已完成 %1 / %2</translation>
+    </message>
+    <message>
+        <source>The sweep failed: %1</source>
+        <translation>扫描失败：%1</translation>
+    </message>
+    <message numerus="yes">
+        <source>Sweep %1 cancelled after %2 s; its %n finished cell(s) are stored.</source>
+        <translation>
+            <numerusform>扫描 %1 在 %2 秒后取消；已完成的 %n 个单元已保存。</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>Sweep %1 finished: %n cell(s) in %2 s.</source>
+        <translation>
+            <numerusform>扫描 %1 完成：%n 个单元，用时 %2 秒。</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>%1: balanced accuracy %2 %</source>
+        <translation>%1：平衡准确率 %2 %</translation>
+    </message>
+    <message>
+        <source>%1: skipped (%2)</source>
+        <translation>%1：已跳过（%2）</translation>
+    </message>
+    <message>
+        <source>Model &apos;%1&apos; stored (%2 s). %3</source>
+        <translation>模型“%1”已保存（%2 秒）。%3</translation>
+    </message>
+    <message>
+        <source>Training cancelled; nothing was stored.</source>
+        <translation>训练已取消；未保存任何内容。</translation>
+    </message>
+    <message>
+        <source>Training failed: %1</source>
+        <translation>训练失败：%1</translation>
+    </message>
+</context>
+</TS>
