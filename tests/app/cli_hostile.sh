@@ -151,6 +151,14 @@ status=0
 [ "$status" -ne 0 ] || fail "a scene with 1e400 simulated"
 grep -q "s.json:1: .*overflow" scene.err || fail "scene overflow: $(cat scene.err)"
 
+# ---- running out of memory on a scene is an error naming the file, not "std::bad_alloc" ----
+status=0
+(ulimit -v 400000 && "$T" simulate --scene /dev/zero --steps 10 --out z.csv --quiet) 2> oom.err ||
+  status=$?
+[ "$status" -eq 1 ] || fail "scene /dev/zero: exit $status: $(cat oom.err)"
+grep -q "tactile: error: /dev/zero: " oom.err || fail "scene /dev/zero: $(cat oom.err)"
+if grep -q "bad_alloc" oom.err; then fail "scene /dev/zero: $(cat oom.err)"; fi
+
 # ---- a damaged user_version: no advice to run a verb that then fails ----
 "$T" import --db old.db sim/run_0000.csv > /dev/null
 python3 -c 'import sqlite3,sys; c=sqlite3.connect(sys.argv[1]); c.execute("pragma user_version=3"); c.commit()' old.db
