@@ -3,6 +3,7 @@
 #include <cmath>
 #include <nlohmann/json.hpp>
 
+#include "base/text_rules.h"
 #include "run/json_text.h"
 #include "sim/polygon_check.h"
 
@@ -67,47 +68,8 @@ std::string validatePolygon(const std::vector<Vec2>& poly, std::size_t index,
 }  // namespace
 
 std::string sceneNameProblem(std::string_view name) {
-  if (name.empty()) return "a scene name must not be empty";
-  if (name.size() > kMaxSceneNameBytes) {
-    return "a scene name has at most " + std::to_string(kMaxSceneNameBytes) + " bytes, found " +
-           std::to_string(name.size());
-  }
-  for (std::size_t i = 0; i < name.size();) {
-    const auto c = static_cast<unsigned char>(name[i]);
-    if (c < 0x20 || c == 0x7f) {
-      return "a scene name may hold no control character (a line break, a tab, ...), found byte " +
-             std::to_string(c) + " at byte " + std::to_string(i);
-    }
-    if (c == ',') return "a scene name may hold no comma";
-    // Well-formed UTF-8 (RFC 3629): the sequence length from the lead byte, continuation bytes
-    // 10xxxxxx, no overlong forms, no surrogates, nothing above U+10FFFF.
-    std::size_t length = 1;
-    unsigned char low = 0x80;
-    unsigned char high = 0xbf;
-    if (c >= 0xc2 && c <= 0xdf) {
-      length = 2;
-    } else if (c >= 0xe0 && c <= 0xef) {
-      length = 3;
-      if (c == 0xe0) low = 0xa0;
-      if (c == 0xed) high = 0x9f;
-    } else if (c >= 0xf0 && c <= 0xf4) {
-      length = 4;
-      if (c == 0xf0) low = 0x90;
-      if (c == 0xf4) high = 0x8f;
-    } else if (c >= 0x80) {
-      return "a scene name must be UTF-8 text, found an invalid byte at byte " + std::to_string(i);
-    }
-    for (std::size_t k = 1; k < length; ++k) {
-      const auto next = i + k < name.size() ? static_cast<unsigned char>(name[i + k]) : 0;
-      const unsigned char lo = k == 1 ? low : 0x80;
-      const unsigned char hi = k == 1 ? high : 0xbf;
-      if (next < lo || next > hi) {
-        return "a scene name must be UTF-8 text, found an invalid byte at byte " +
-               std::to_string(i + k);
-      }
-    }
-    i += length;
-  }
+  // Scenes follow the one name rule of runs, label sets, models, sweeps and annotators.
+  if (std::optional<std::string> problem = nameProblem(name)) return "a scene name " + *problem;
   return {};
 }
 

@@ -732,6 +732,10 @@ Research workbench for tactile-based mobile-robot navigation.</source>
         <source>Model &apos;%1&apos; stored from %2</source>
         <translation>已从 %2 保存模型“%1”</translation>
     </message>
+    <message>
+        <source>Navigator</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>tactile::gui::ModelPickerDialog</name>
@@ -750,6 +754,44 @@ Research workbench for tactile-based mobile-robot navigation.</source>
     <message>
         <source>The timeline shows each group&apos;s predicted class under its labels, pale where the model is unsure, and marks where it disagrees with the labels (N: next disagreement).</source>
         <translation>时间轴在每组标签下方显示预测类别，模型不确定处颜色较浅，并标出与标签不一致之处（N：下一处不一致）。</translation>
+    </message>
+</context>
+<context>
+    <name>tactile::gui::NavigatorPanelView</name>
+    <message>
+        <source>This run has no navigator columns. Runs written by &apos;tactile navigate&apos; have them.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Command set:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Current control mode:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Status:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Status-%1:</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>tactile::gui::NavigatorStripView</name>
+    <message>
+        <source>strategy</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>status</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>step %1: %2</source>
+        <translation type="unfinished"></translation>
     </message>
 </context>
 <context>
