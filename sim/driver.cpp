@@ -164,11 +164,29 @@ WallFollowDriver::Touch WallFollowDriver::readTouch(
   return t;
 }
 
-WallFollowDriver::WallFollowDriver(std::uint64_t seed) : rng_(seed) {
+WallFollowDriver::WallFollowDriver(std::uint64_t seed) : WallFollowDriver(seed, Options{}) {}
+
+WallFollowDriver::WallFollowDriver(std::uint64_t seed, Options options)
+    : options_(std::move(options)), rng_(seed), switchesLeft_(options_.sideSwitches) {
   cruise_ = 30.0 + 30.0 * unit(rng_);
   wallSide_ = unit(rng_) < 0.5 ? -1.0 : 1.0;
   turn_ = kSlightTurnMin + (kSlightTurnMax - kSlightTurnMin) * unit(rng_);
 }
+
+namespace {
+
+WallFollowDriver::Options bugOptions() {
+  WallFollowDriver::Options o;
+  o.name = "bug";
+  o.giveUpSteps = BugDriver::kGiveUpSteps;
+  o.sidePerObstacle = true;
+  o.sideSwitches = 1;
+  return o;
+}
+
+}  // namespace
+
+BugDriver::BugDriver(std::uint64_t seed) : WallFollowDriver(seed, bugOptions()) {}
 
 std::optional<RunOutcome> WallFollowDriver::finished() const {
   if (unreachable_) return RunOutcome::Unreachable;
@@ -178,6 +196,10 @@ std::optional<RunOutcome> WallFollowDriver::finished() const {
 
 void WallFollowDriver::startFollowing(double goalDistance) {
   mode_ = Mode::Follow;
+  if (options_.sidePerObstacle) {
+    wallSide_ = unit(rng_) < 0.5 ? -1.0 : 1.0;
+    switchesLeft_ = options_.sideSwitches;
+  }
   hitPointSet_ = false;
   hitDistance_ = goalDistance;
   farFromHitUnits_ = 0.0;
@@ -225,7 +247,7 @@ Command WallFollowDriver::next(const Observation& obs) {
   if (!contacted_) {
     contacted_ =
         obs.blocked || std::any_of(values.begin(), values.end(), [](double x) { return x != 0.0; });
-  } else if (++stepsSinceContact_ >= kGiveUpSteps) {
+  } else if (++stepsSinceContact_ >= options_.giveUpSteps) {
     gaveUp_ = true;
     return {};
   }
@@ -236,8 +258,17 @@ Command WallFollowDriver::next(const Observation& obs) {
     const double fromHit = (pos - hitPoint_).norm();
     farFromHitUnits_ = std::max(farFromHitUnits_, fromHit);
     if (farFromHitUnits_ > kHitDepartUnits && fromHit < kHitReturnUnits) {
-      unreachable_ = true;
-      return {};
+      if (switchesLeft_ <= 0) {
+        unreachable_ = true;
+        return {};
+      }
+      // Follow the obstacle the other way round from here: the robot turns away from the wall
+      // it now has on the other side, and the hit point is taken again once it touches.
+      --switchesLeft_;
+      wallSide_ = -wallSide_;
+      hitPointSet_ = false;
+      farFromHitUnits_ = 0.0;
+      followSteps_ = 0;
     }
   }
 
@@ -354,11 +385,12 @@ Command RandomDriver::next(const Observation& obs) {
 }
 
 std::vector<std::string> autonomousDriverNames() {
-  return {"random", "wall-follow"};
+  return {"bug", "random", "wall-follow"};
 }
 
 std::unique_ptr<Driver> makeDriver(std::string_view name, std::uint64_t seed) {
   if (name == "wall-follow") return std::make_unique<WallFollowDriver>(seed);
+  if (name == "bug") return std::make_unique<BugDriver>(seed);
   if (name == "random") return std::make_unique<RandomDriver>(seed);
   if (name == "manual") return std::make_unique<ManualDriver>();
   return nullptr;

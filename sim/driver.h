@@ -99,8 +99,20 @@ class WallFollowDriver : public Driver {
   static constexpr double kHitReturnUnits = 40.0;
   static constexpr double kHitDepartUnits = 100.0;
 
+  // What varies between this driver and its Bug-2 variant (BugDriver).
+  struct Options {
+    std::string name = "wall-follow";
+    std::size_t giveUpSteps = kGiveUpSteps;
+    // Draw the followed side again at every new obstacle (else once per run).
+    bool sidePerObstacle = false;
+    // Back at the hit point: follow the obstacle the other way round this many times before
+    // ending the run as unreachable.
+    int sideSwitches = 0;
+  };
+
   explicit WallFollowDriver(std::uint64_t seed);
-  std::string name() const override { return "wall-follow"; }
+  WallFollowDriver(std::uint64_t seed, Options options);
+  std::string name() const override { return options_.name; }
   Command next(const Observation& obs) override;
   bool gaveUp() const override { return gaveUp_; }
   bool unreachable() const { return unreachable_; }
@@ -117,7 +129,9 @@ class WallFollowDriver : public Driver {
   Command backOffThenArc(const Observation& obs);
   void startFollowing(double goalDistance);
 
+  Options options_;
   std::mt19937_64 rng_;
+  int switchesLeft_ = 0;
   double cruise_ = 40.0;    // units/s
   double turn_ = 0.12;      // rad/s of a slight follow-wall turn
   double wallSide_ = -1.0;  // -1: wall on the right (turn left to avoid), +1: wall on the left
@@ -141,6 +155,19 @@ class WallFollowDriver : public Driver {
   bool unreachable_ = false;
 };
 
+// Bug-2 for collecting data in generated maps: heads for the goal; at each obstacle follows it by
+// touch (the wall follower above) on a side drawn from the seed for that obstacle; leaves it on
+// the start-goal line where it is closer to the goal than where it met the obstacle, with a clear
+// front. Back at the point where it met the obstacle, it follows it the other way round once;
+// back there again, the run ends `unreachable`. Gives up kGiveUpSteps steps after the first
+// contact. It steers by the pose it is given (the simulator's): a data-collection driver, not a
+// navigator.
+class BugDriver : public WallFollowDriver {
+ public:
+  static constexpr std::size_t kGiveUpSteps = 12000;
+  explicit BugDriver(std::uint64_t seed);
+};
+
 // Bounded random walk: holds a random (v, omega) in [-20, 60] x [-1, 1] for 5..30 steps; after a
 // blocked step it backs off for a few steps.
 class RandomDriver : public Driver {
@@ -157,7 +184,7 @@ class RandomDriver : public Driver {
 };
 
 // Names accepted by makeDriver (for the CLI).
-std::vector<std::string> autonomousDriverNames();  // "random", "wall-follow"
+std::vector<std::string> autonomousDriverNames();  // "bug", "random", "wall-follow"
 // A driver by name, or nullptr for an unknown name.
 std::unique_ptr<Driver> makeDriver(std::string_view name, std::uint64_t seed);
 

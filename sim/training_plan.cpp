@@ -7,6 +7,7 @@
 #include <random>
 
 #include "run/builtin_scenes.h"
+#include "sim/office_scene.h"
 #include "sim/scene_source.h"
 
 namespace tactile::sim {
@@ -437,6 +438,21 @@ PlannedRun planTrainingRun(std::uint64_t seed, std::size_t index) {
       run.kind = kind == 0 ? "wall-follow" : "cluttered";
       return run;
     }
+    case 10:
+    case 11: {
+      // Driving in a generated office map: the Bug-2 driver or the wall follower heads for the
+      // map's goal, meeting walls, door jambs, bumps and furniture on the way. Map seeds stay
+      // below kFirstBenchmarkSceneSeed, which benchmarks keep for themselves.
+      run.sceneName = "random:office:" + std::to_string(draw.next() % kFirstBenchmarkSceneSeed);
+      auto loaded = loadScene(run.sceneName);
+      if (loaded) run.scene = std::move(loaded.value());
+      const std::uint64_t driverSeed = draw.next();
+      run.driver = makeDriver(kind == 10 ? "bug" : "wall-follow", driverSeed);
+      run.options.seed = driverSeed;
+      run.options.maxSteps = 4000;
+      run.kind = kind == 10 ? "office bug" : "office wall-follow";
+      return run;
+    }
     case 2:
       run = wallEnd(draw, false, round);
       break;
@@ -456,7 +472,7 @@ PlannedRun planTrainingRun(std::uint64_t seed, std::size_t index) {
       break;
     case 8:
       return tips(draw, round + 2);
-    default:
+    default:  // 9
       run = sideTips(draw);
       break;
   }

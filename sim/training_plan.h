@@ -22,6 +22,8 @@
 //   tips          a second run of the kind above (its own offsets)
 //   side tip      rows of tips along both sides, driven past and back (Corner on the side and
 //                 corner groups)
+//   office bug    the Bug-2 driver in a generated office map (random:office:SEED), to its goal
+//   office wall-follow  the wall follower in another generated office map
 // Start poses, speeds, angles, gaps and sizes are drawn from the seed; the corridor and pocket
 // widths are stratified over a kind's runs, so that a few runs cover their whole range.
 #pragma once
@@ -46,7 +48,7 @@ struct PlannedRun {
   RunOptions options;
 };
 
-inline constexpr int kTrainingPlanKinds = 10;
+inline constexpr int kTrainingPlanKinds = 12;
 
 // Run `index` of the plan with `seed`; the same (seed, index) always gives the same run.
 PlannedRun planTrainingRun(std::uint64_t seed, std::size_t index);

@@ -206,8 +206,8 @@ int runSimulate(const SimulateArgs& a) {
     throw UsageError("--runs must be between 1 and " + std::to_string(kMaxRunsPerBatch));
   }
   if (!(a.dt > 0.0 && a.dt <= 1.0)) throw UsageError("--dt must be in (0, 1] seconds");
-  if (a.driver != "wall-follow" && a.driver != "random") {
-    throw UsageError("--driver must be wall-follow or random, got '" + a.driver + "'");
+  if (a.driver != "wall-follow" && a.driver != "random" && a.driver != "bug") {
+    throw UsageError("--driver must be wall-follow, bug or random, got '" + a.driver + "'");
   }
   const bool batch = !a.outDir.empty();
   if (batch == !a.out.empty()) throw UsageError("give exactly one of --out FILE or --out-dir DIR");
@@ -461,11 +461,13 @@ void registerSimVerbs(CLI::App& app, CLI::App& bench) {
   CLI::App* sim =
       app.add_subcommand("simulate", "Drive the simulated robot through a scene and record runs");
   sim->add_option("--scene", args->scene,
-                  "Built-in scene name, scene JSON file, or random:N:SEED (procedural)");
+                  "Built-in scene name, scene JSON file, random:N:SEED (procedural) or "
+                  "random:office:SEED (generated office map)");
   sim->add_option("--plan", args->plan,
                   "training: N runs from the standard training recipe (needs --out-dir; scenes "
                   "and drivers come from the recipe, docs/sim.md#training-corpus)");
-  sim->add_option("--driver", args->driver, "wall-follow (Bug-2 explorer) or random");
+  sim->add_option("--driver", args->driver,
+                  "wall-follow (Bug-2 explorer), bug (Bug-2, side per obstacle) or random");
   sim->add_option("--steps", args->steps, "Maximum steps per run (1..1000000)");
   sim->add_option("--seed", args->seed, "Seed; run i of a batch uses SEED+i");
   sim->add_option("--out", args->out, "Output run file (single run)");

@@ -1,5 +1,6 @@
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <initializer_list>
 
 #include "run/run_csv.h"
@@ -211,6 +212,67 @@ TEST(WallFollowRun, ARobotThatKeepsBeingBlockedGivesUpInsteadOfTimingOut) {
   for (std::uint8_t b : r->run.blocked)
     blocked += b;
   EXPECT_GT(blocked, r->run.stepCount() / 10);
+}
+
+TEST(BugDriver, IsSelectableByName) {
+  const auto names = autonomousDriverNames();
+  EXPECT_NE(std::find(names.begin(), names.end(), "bug"), names.end());
+  const std::unique_ptr<Driver> d = makeDriver("bug", 3);
+  ASSERT_NE(d, nullptr);
+  EXPECT_EQ(d->name(), "bug");
+}
+
+// A wall across the middle of the room with the start-goal line through it; the wall ends 300
+// units short of the top and bottom bounds, so following it either way leads round it.
+TEST(BugRun, GoesRoundAWallToTheGoal) {
+  Scene s;
+  s.name = "wall";
+  s.bounds = {0, 0, 1600, 1600};
+  s.obstacles = {test::box(780, 300, 820, 1300)};
+  s.start = {300, 800, 0};
+  s.goal = Vec2(1300, 800);
+  const auto world = std::make_shared<const World>(s);
+  for (std::uint64_t seed = 1; seed <= 6; ++seed) {
+    RunOptions options;
+    options.maxSteps = 6000;
+    options.seed = seed;
+    options.driver = "bug";
+    RunResult r = simulateRun(world, "wall", options);
+    ASSERT_TRUE(r.ok()) << r.errorText();
+    EXPECT_EQ(r->outcome, RunOutcome::Success) << "seed " << seed;
+    EXPECT_EQ(*r->run.meta("driver"), "bug");
+    // It touched the wall on the way.
+    std::size_t touching = 0;
+    for (std::size_t k = 0; k < r->run.stepCount(); ++k) {
+      for (int d = 0; d < kSensorCount; ++d) {
+        if (r->run.normal(k, d) > 0.0) {
+          ++touching;
+          break;
+        }
+      }
+    }
+    EXPECT_GT(touching, 50u) << "seed " << seed;
+  }
+}
+
+// In the split room the Bug driver walks round the room once on one side, once on the other,
+// then ends unreachable: later than the wall follower with the same seed, never by the step limit.
+TEST(BugRun, AClosedRoomIsWalkedRoundBothWaysThenUnreachable) {
+  const auto world = std::make_shared<const World>(splitRoom());
+  for (std::uint64_t seed = 1; seed <= 4; ++seed) {
+    RunOptions options;
+    options.maxSteps = 20000;
+    options.seed = seed;
+    options.driver = "bug";
+    RunResult bug = simulateRun(world, "split", options);
+    ASSERT_TRUE(bug.ok()) << bug.errorText();
+    EXPECT_EQ(bug->outcome, RunOutcome::Unreachable) << "seed " << seed;
+    options.driver = "wall-follow";
+    RunResult follower = simulateRun(world, "split", options);
+    ASSERT_TRUE(follower.ok()) << follower.errorText();
+    ASSERT_EQ(follower->outcome, RunOutcome::Unreachable) << "seed " << seed;
+    EXPECT_GT(bug->run.stepCount(), follower->run.stepCount() * 3 / 2) << "seed " << seed;
+  }
 }
 
 }  // namespace

@@ -4,9 +4,11 @@
 #include <cmath>
 #include <memory>
 #include <mutex>
+#include <set>
 #include <string>
 
 #include "run/builtin_scenes.h"
+#include "sim/office_scene.h"
 #include "sim/recorder.h"
 #include "sim/scene_source.h"
 #include "sim/training_plan.h"
@@ -46,6 +48,30 @@ TEST(TrainingPlan, KindsComeInTurn) {
   EXPECT_EQ(planTrainingRun(1, 0).sceneName, "room1");
   EXPECT_TRUE(planTrainingRun(1, 1).sceneName.starts_with("random:"));
   EXPECT_TRUE(planTrainingRun(1, 2).sceneName.empty());
+}
+
+TEST(TrainingPlan, OfficeRunsDriveInGeneratedOfficesWithSeedsBelowTheBenchmarkRange) {
+  EXPECT_EQ(planTrainingRun(1, 10).kind, "office bug");
+  EXPECT_EQ(planTrainingRun(1, 11).kind, "office wall-follow");
+  std::set<std::string> scenes;
+  for (std::uint64_t seed : {1ull, 2ull, 99ull}) {
+    for (std::size_t index = 0; index < 120; ++index) {
+      const PlannedRun run = planTrainingRun(seed, index);
+      if (!run.sceneName.starts_with("random:")) continue;
+      // The scene seed: the last number of random:N:SEED or random:office:SEED.
+      const std::uint64_t sceneSeed =
+          std::stoull(run.sceneName.substr(run.sceneName.rfind(':') + 1));
+      EXPECT_LT(sceneSeed, kFirstBenchmarkSceneSeed) << run.sceneName;
+      if (run.kind.starts_with("office")) {
+        ASSERT_TRUE(run.sceneName.starts_with("random:office:")) << run.sceneName;
+        EXPECT_EQ(run.driver->name(), run.kind == "office bug" ? "bug" : "wall-follow");
+        EXPECT_EQ(sceneToJson(run.scene), sceneToJson(generateOfficeScene(sceneSeed).scene));
+        scenes.insert(run.sceneName);
+      }
+    }
+  }
+  // Every office run of these plans has a map of its own.
+  EXPECT_EQ(scenes.size(), 3u * 20u);
 }
 
 TEST(TrainingPlan, ThePocketRunShowsDeadPathInFrontAndSideGroups) {
