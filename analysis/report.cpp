@@ -285,7 +285,7 @@ Table confusionTable(const ConfusionMatrix& confusion, bool percent, const std::
 Table oneVsRestRateTable(
     const std::vector<std::pair<SensorGroup, std::vector<BinaryConfusion>>>& groups) {
   Table t;
-  t.title = "One-vs-rest correct rates, % (thesis table 4.19)";
+  t.title = "Precision per class, one-vs-rest, % (the correct rate of thesis table 4.19)";
   // Columns for every class that has a classifier in some group, in ContactClass order.
   std::vector<ContactClass> classes;
   for (int c = 0; c < kContactClassCount; ++c) {
@@ -304,7 +304,8 @@ Table oneVsRestRateTable(
     t.header.push_back("No " + std::string(contactClassName(c)));
   }
   for (const auto& [group, binaries] : groups) {
-    std::vector<std::string> row{std::string(groupInfo(group).longName)};
+    // Groups by their short names, as every other table names them.
+    std::vector<std::string> row{std::string(groupInfo(group).shortName)};
     for (ContactClass c : classes) {
       auto it = std::find_if(binaries.begin(), binaries.end(),
                              [c](const BinaryConfusion& b) { return b.positive == c; });
@@ -726,9 +727,8 @@ std::string sweepReport(const SweepResult& sweep, TableStyle style,
     rates.emplace_back(std::string(groupInfo(r->cell.group).shortName), r->metrics);
   }
   if (!rates.empty()) {
-    out += classRateTable(rates, "Per-class correct rate of each group's best cell (%)")
-               .render(style) +
-           sep;
+    out +=
+        classRateTable(rates, "Recall per class of each group's best cell, %").render(style) + sep;
     std::vector<std::pair<SensorGroup, std::vector<BinaryConfusion>>> oneVsRest;
     for (const SweepCellResult* r : best)
       oneVsRest.emplace_back(r->cell.group, binaryConfusions(r->confusion, r->classes));
@@ -844,7 +844,7 @@ std::string modelReport(const json& value, TableStyle style) {
   }
   out += settings.render(style) + sep;
   if (!rateRows.empty()) {
-    out += classRateTable(rateRows, "Per-class correct rate (recall, %)").render(style) + sep;
+    out += classRateTable(rateRows, "Recall per class, %").render(style) + sep;
   }
   if (!ovr.empty()) out += oneVsRestRateTable(ovr).render(style) + sep;
   out += details;

@@ -41,13 +41,13 @@ struct Table {
 // Confusion matrix, rows = true class, columns = predicted class; counts or row percent.
 Table confusionTable(const ConfusionMatrix& confusion, bool percent, const std::string& title);
 
-// Thesis table 4.19: per group, for each class c the one-vs-rest correct rates "c" and "No c"
-// (correct identifications over all predictions of that label); empty cells where a class has
-// no classifier in that group.
+// Thesis table 4.19: per group (short name), for each class c the one-vs-rest correct rates "c"
+// and "No c", which are precisions (correct identifications over all predictions of that label);
+// empty cells where a class has no classifier in that group.
 Table oneVsRestRateTable(
     const std::vector<std::pair<SensorGroup, std::vector<BinaryConfusion>>>& groups);
 
-// Multi-class per-class correct rate (recall, percent) per row label, as in thesis table 4.31.
+// Multi-class recall per class (percent) per row label, as in thesis table 4.31.
 Table classRateTable(const std::vector<std::pair<std::string, Metrics>>& rows,
                      const std::string& title);
 

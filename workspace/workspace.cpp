@@ -4,6 +4,7 @@
 #include <array>
 #include <limits>
 #include <set>
+#include <sstream>
 #include <utility>
 
 #include "analysis/metrics.h"
@@ -152,10 +153,41 @@ Result<std::vector<std::pair<std::int64_t, double>>> Workspace::labelCoverage(st
   return out;
 }
 
+namespace {
+
+// Per group: the agreeing share, kappa and the chance agreement of a confusion (rows one rater,
+// columns the other).
+std::vector<GroupAgreement> agreementOf(
+    const std::array<analysis::ConfusionMatrix, kGroupCount>& confusion) {
+  std::vector<GroupAgreement> out;
+  for (const GroupInfo& info : kSensorGroups) {
+    const analysis::ConfusionMatrix& c =
+        confusion[static_cast<std::size_t>(groupIndex(info.group))];
+    GroupAgreement a;
+    a.group = info.group;
+    a.comparedSteps = static_cast<std::int64_t>(c.total());
+    double chance = 0.0;
+    for (int i = 0; i < kContactClassCount; ++i) {
+      const auto cls = static_cast<ContactClass>(i);
+      a.agreeingSteps += static_cast<std::int64_t>(c.count(cls, cls));
+      chance += static_cast<double>(c.trueCount(cls)) * static_cast<double>(c.predictedCount(cls));
+    }
+    if (a.comparedSteps > 0) {
+      const auto n = static_cast<double>(a.comparedSteps);
+      a.percent = 100.0 * static_cast<double>(a.agreeingSteps) / n;
+      a.chancePercent = 100.0 * chance / (n * n);
+    }
+    a.kappa = analysis::cohensKappa(c);
+    out.push_back(a);
+  }
+  return out;
+}
+
+}  // namespace
+
 std::vector<GroupAgreement> truthAgreement(const storage::RunTrack& track,
                                            const std::vector<storage::LabelSegment>& segments) {
-  std::vector<GroupAgreement> out;
-  if (!track.hasTruth()) return out;
+  if (!track.hasTruth()) return {};
   std::array<analysis::ConfusionMatrix, kGroupCount> confusion;
   const auto steps = static_cast<std::int64_t>(track.stepCount());
   for (const storage::LabelSegment& s : segments) {
@@ -167,23 +199,93 @@ std::vector<GroupAgreement> truthAgreement(const storage::RunTrack& track,
           track.truthAt(static_cast<std::size_t>(k), s.group), s.cls);
     }
   }
-  for (const GroupInfo& info : kSensorGroups) {
-    const analysis::ConfusionMatrix& c =
-        confusion[static_cast<std::size_t>(groupIndex(info.group))];
-    GroupAgreement a;
-    a.group = info.group;
-    a.comparedSteps = static_cast<std::int64_t>(c.total());
-    for (int i = 0; i < kContactClassCount; ++i) {
-      const auto cls = static_cast<ContactClass>(i);
-      a.agreeingSteps += static_cast<std::int64_t>(c.count(cls, cls));
-    }
-    if (a.comparedSteps > 0)
-      a.percent =
-          100.0 * static_cast<double>(a.agreeingSteps) / static_cast<double>(a.comparedSteps);
-    a.kappa = analysis::cohensKappa(c);
-    out.push_back(a);
+  return agreementOf(confusion);
+}
+
+std::vector<GroupAgreement> labelAgreement(std::int64_t stepCount,
+                                           const std::vector<storage::LabelSegment>& first,
+                                           const std::vector<storage::LabelSegment>& second) {
+  // Each group's classes per step from the first set (-1: unlabelled), then the second set's
+  // segments read against them.
+  constexpr std::int8_t kNone = -1;
+  const std::int64_t steps = std::max<std::int64_t>(0, stepCount);
+  std::array<std::vector<std::int8_t>, kGroupCount> byStep;
+  for (auto& v : byStep)
+    v.assign(static_cast<std::size_t>(steps), kNone);
+  for (const storage::LabelSegment& s : first) {
+    auto& v = byStep[static_cast<std::size_t>(groupIndex(s.group))];
+    for (std::int64_t k = std::max<std::int64_t>(0, s.firstStep);
+         k <= std::min(steps - 1, s.lastStep); ++k)
+      v[static_cast<std::size_t>(k)] = static_cast<std::int8_t>(s.cls);
   }
-  return out;
+  std::array<analysis::ConfusionMatrix, kGroupCount> confusion;
+  for (const storage::LabelSegment& s : second) {
+    const auto g = static_cast<std::size_t>(groupIndex(s.group));
+    for (std::int64_t k = std::max<std::int64_t>(0, s.firstStep);
+         k <= std::min(steps - 1, s.lastStep); ++k) {
+      const std::int8_t c = byStep[g][static_cast<std::size_t>(k)];
+      if (c != kNone) confusion[g].add(static_cast<ContactClass>(c), s.cls);
+    }
+  }
+  return agreementOf(confusion);
+}
+
+std::string defaultSweepName(const std::string& labelSet, const analysis::SweepGrid& grid) {
+  auto number = [](double v) {
+    std::ostringstream out;
+    out << v;
+    return out.str();
+  };
+  // Values sorted and unique; a list of several numbers reads "first-last".
+  auto numbers = [&](std::vector<double> v) {
+    std::sort(v.begin(), v.end());
+    v.erase(std::unique(v.begin(), v.end()), v.end());
+    return std::make_pair(v.size(), v.size() > 1 ? number(v.front()) + "-" + number(v.back())
+                                                 : (v.empty() ? std::string() : number(v[0])));
+  };
+  auto names = [](const auto& values, auto name) {
+    std::vector<std::string> out;
+    for (const auto& v : values) {
+      const std::string n(name(v));
+      if (std::find(out.begin(), out.end(), n) == out.end()) out.push_back(n);
+    }
+    std::string joined;
+    for (const std::string& n : out)
+      joined += (joined.empty() ? "" : "/") + n;
+    return std::make_pair(out.size(), joined);
+  };
+  const bool gmm = std::find(grid.methods.begin(), grid.methods.end(),
+                             analysis::ClassifierMethod::Gmm) != grid.methods.end();
+  std::vector<std::pair<std::size_t, std::string>> parts;
+  parts.emplace_back(names(grid.methods, analysis::classifierMethodName));
+  parts.back().second = "method " + parts.back().second;
+  if (gmm) {
+    parts.emplace_back(numbers(std::vector<double>(grid.orders.begin(), grid.orders.end())));
+    parts.back().second = "order " + parts.back().second;
+    parts.emplace_back(names(grid.forms, analysis::covarianceFormName));
+    parts.back().second = "covariance " + parts.back().second;
+  }
+  parts.emplace_back(numbers(grid.varianceFloors));
+  parts.back().second = "floor " + parts.back().second;
+  parts.emplace_back(names(grid.features, analysis::featureKindName));
+  parts.back().second = "features " + parts.back().second;
+  parts.emplace_back(numbers(std::vector<double>(grid.seeds.begin(), grid.seeds.end())));
+  parts.back().second = "seed " + parts.back().second;
+  std::string varied;
+  for (const auto& [count, text] : parts)
+    if (count > 1) varied += (varied.empty() ? "" : " x ") + text;
+  if (varied.empty()) {  // one cell: its settings
+    for (const auto& [count, text] : parts)
+      if (count == 1) varied += (varied.empty() ? "" : ", ") + text;
+  }
+  std::string name = labelSet + ": " + varied;
+  if (!grid.groups.empty() && grid.groups.size() < static_cast<std::size_t>(kGroupCount)) {
+    name += " (";
+    for (std::size_t i = 0; i < grid.groups.size(); ++i)
+      name += (i > 0 ? "," : "") + std::string(groupInfo(grid.groups[i]).shortName);
+    name += ")";
+  }
+  return name;
 }
 
 // ---- label edits -------------------------------------------------------------------------------
@@ -539,7 +641,8 @@ Result<SweepOutcome> Workspace::sweep(
   configuration["test_runs"] = runsJson(test->infos);
   configuration["state"] = "running";
   configuration["program_version"] = programVersion();
-  const std::string name = request.name.empty() ? request.labelSet + " sweep" : request.name;
+  const std::string name =
+      request.name.empty() ? defaultSweepName(request.labelSet, request.grid) : request.name;
   auto sweepId = db_->createSweep(name, dumpJson(configuration));
   if (!sweepId) return sweepId.error();
 

@@ -89,9 +89,13 @@ struct SweepRequest {
   std::vector<std::string> trainRuns;
   std::vector<std::string> testRuns;
   analysis::SweepGrid grid;
-  std::string name;  // empty: "<label set> sweep"
+  std::string name;  // empty: defaultSweepName(labelSet, grid)
   int threads = 0;
 };
+// A sweep's name from what it sweeps: the label set, then each setting with more than one value
+// ("truth: order 1-16 x floor 0.01-0.1 x covariance nodal-full/nodal-diag"), or the one cell's
+// settings when nothing varies; groups are named when not all eight.
+std::string defaultSweepName(const std::string& labelSet, const analysis::SweepGrid& grid);
 
 struct SweepOutcome {
   std::int64_t sweepId = 0;
@@ -116,11 +120,21 @@ struct GroupAgreement {
   std::int64_t agreeingSteps = 0;
   std::optional<double> percent;  // 100 * agreeing / compared; nullopt with nothing compared
   std::optional<double> kappa;    // Cohen's kappa (analysis::cohensKappa)
+  // The agreement expected by chance from the two raters' class shares, in percent:
+  // 100 * sum over classes of (share in one) * (share in the other). Kappa is
+  // (agree - chance) / (100 - chance): a high agreement with a chance near it gives a kappa near
+  // 0, and a chance of 100 (one class throughout on both sides) leaves kappa undefined.
+  std::optional<double> chancePercent;
 };
 // Per group in group order; `segments` are one run's label segments of any groups (not
 // overlapping within a group). Empty when the track has no truth.
 std::vector<GroupAgreement> truthAgreement(const storage::RunTrack& track,
                                            const std::vector<storage::LabelSegment>& segments);
+// Two label sets of one run against each other (annotator against annotator), per group in group
+// order, over the steps of [0, stepCount) that both label.
+std::vector<GroupAgreement> labelAgreement(std::int64_t stepCount,
+                                           const std::vector<storage::LabelSegment>& first,
+                                           const std::vector<storage::LabelSegment>& second);
 
 class Workspace {
  public:

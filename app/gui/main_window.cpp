@@ -1,9 +1,12 @@
 #include "app/gui/main_window.h"
 
+#include <QAbstractSpinBox>
 #include <QAction>
 #include <QActionGroup>
 #include <QApplication>
 #include <QCloseEvent>
+#include <QComboBox>
+#include <QDialogButtonBox>
 #include <QDockWidget>
 #include <QDragEnterEvent>
 #include <QFileDialog>
@@ -11,12 +14,17 @@
 #include <QFutureWatcher>
 #include <QInputDialog>
 #include <QLabel>
+#include <QLineEdit>
 #include <QMenuBar>
 #include <QMessageBox>
 #include <QMimeData>
+#include <QPlainTextEdit>
 #include <QProgressDialog>
 #include <QSettings>
 #include <QStatusBar>
+#include <QTextBrowser>
+#include <QTextEdit>
+#include <QTimer>
 #include <QToolBar>
 #include <QUndoStack>
 #include <QVBoxLayout>
@@ -24,6 +32,7 @@
 #include "app/gui/common/plot_style.h"
 #include "app/gui/common/progress_bridge.h"
 #include "app/gui/common/settings_keys.h"
+#include "app/gui/common/shortcuts.h"
 #include "app/gui/labels/label_model.h"
 #include "app/gui/labels/label_panel_view.h"
 #include "app/gui/learning/model_picker_dialog.h"
@@ -31,6 +40,7 @@
 #include "app/gui/learning/sweep_results_window.h"
 #include "app/gui/learning/sweep_worker.h"
 #include "app/gui/learning/training_dialog.h"
+#include "app/gui/preferences_dialog.h"
 #include "app/gui/runs/import_worker.h"
 #include "app/gui/runs/navigator_track_model.h"
 #include "app/gui/runs/navigator_view.h"
@@ -50,6 +60,19 @@ namespace {
 
 constexpr int kPageCacheKiB = 16 * 1024;
 
+constexpr int kSaveDelayMs = 400;  // quiet time before changed settings are written
+
+// A field the user types text into: it keeps every key while it has the focus.
+bool isTextField(const QObject* o) {
+  if (qobject_cast<const QLineEdit*>(o) != nullptr ||
+      qobject_cast<const QAbstractSpinBox*>(o) != nullptr ||
+      qobject_cast<const QTextEdit*>(o) != nullptr ||
+      qobject_cast<const QPlainTextEdit*>(o) != nullptr)
+    return true;
+  const auto* combo = qobject_cast<const QComboBox*>(o);
+  return combo != nullptr && combo->isEditable();
+}
+
 }  // namespace
 
 MainWindow::MainWindow(QWidget* parent)
@@ -64,8 +87,25 @@ MainWindow::MainWindow(QWidget* parent)
   createActions();
   resize(1400, 900);
   restoreSettings();
+  applyPreferences();
   updateTitle();
   updateStatus();
+  // The timelines take the keyboard focus, not the first text field of the docks: the step and
+  // class keys work at once.
+  timeline_->setFocusPolicy(Qt::StrongFocus);
+  timeline_->setFocus(Qt::OtherFocusReason);
+  qApp->installEventFilter(this);
+
+  saveTimer_ = new QTimer(this);
+  saveTimer_->setSingleShot(true);
+  saveTimer_->setInterval(kSaveDelayMs);
+  connect(saveTimer_, &QTimer::timeout, this, [this] { saveSettings(); });
+  connect(session_, &RunSession::currentStepChanged, this, &MainWindow::scheduleSave);
+  connect(timeline_, &TimelineView::visibleRangeChanged, this, &MainWindow::scheduleSave);
+  connect(route_, &RouteView::viewSettingsChanged, this, &MainWindow::scheduleSave);
+  connect(labelPanel_, &LabelPanelView::settingsChanged, this, &MainWindow::scheduleSave);
+  connect(steps_, &StepControlsView::speedChanged, this, &MainWindow::scheduleSave);
+  connect(runList_, &RunListView::filterChanged, this, &MainWindow::scheduleSave);
 
   connect(session_, &RunSession::errorOccurred, this, &MainWindow::showError);
   connect(labels_, &LabelModel::errorOccurred, this, &MainWindow::showError);
@@ -93,6 +133,7 @@ MainWindow::MainWindow(QWidget* parent)
 }
 
 MainWindow::~MainWindow() {
+  qApp->removeEventFilter(this);
   // Views hold pointers into the workspace through the session and the label model.
   session_->setWorkspace(nullptr);
   labels_->setWorkspace(nullptr);
@@ -159,102 +200,200 @@ void MainWindow::createViews() {
   statusBar()->addPermanentWidget(setLabel_);
 }
 
+void MainWindow::bindShortcut(QAction* action, const QString& id) {
+  const ShortcutEntry entry = shortcutEntry(id);
+  Q_ASSERT(!entry.keys.isEmpty());
+  action->setObjectName(id);
+  action->setShortcuts(entry.keys);
+  for (const QKeySequence& k : entry.keys)
+    actionOfKey_.insert(k, action);
+  if (entry.global) {
+    action->setAutoRepeat(true);
+    globalKeys_ << entry.keys;
+  }
+}
+
+bool MainWindow::eventFilter(QObject* watched, QEvent* event) {
+  if (event->type() != QEvent::ShortcutOverride && event->type() != QEvent::KeyPress)
+    return QMainWindow::eventFilter(watched, event);
+  auto* widget = qobject_cast<QWidget*>(watched);
+  if (widget == nullptr || widget->window() != this)
+    return QMainWindow::eventFilter(watched, event);
+  auto* key = static_cast<QKeyEvent*>(event);
+  const bool escape = key->key() == Qt::Key_Escape && key->modifiers() == Qt::NoModifier;
+  if (isTextField(widget)) {
+    // Escape leaves the field (back to the timelines) instead of clearing the selection.
+    if (!escape) return QMainWindow::eventFilter(watched, event);
+    if (event->type() == QEvent::ShortcutOverride) {
+      event->accept();
+    } else {
+      timeline_->setFocus(Qt::ShortcutFocusReason);
+    }
+    return true;
+  }
+  // Any other focused widget (a table, a slider, a button) would take the arrow or digit keys for
+  // itself: the window's step, class and undo shortcuts come first.
+  const QKeySequence pressed(key->keyCombination());
+  if (event->type() == QEvent::ShortcutOverride && globalKeys_.contains(pressed)) {
+    event->ignore();
+    return true;
+  }
+  // A bound key that reaches a widget as a plain key press found no shortcut: the window is not
+  // the active one (a session without a window manager), so Qt matched none. The key still does
+  // what the table says.
+  if (event->type() == QEvent::KeyPress && !isActiveWindow()) {
+    if (QAction* action = actionOfKey_.value(pressed); action != nullptr && action->isEnabled()) {
+      action->trigger();
+      return true;
+    }
+  }
+  return QMainWindow::eventFilter(watched, event);
+}
+
+void MainWindow::showEvent(QShowEvent* event) {
+  QMainWindow::showEvent(event);
+  // Nothing is being typed yet: a text field that got the focus by default gives it back.
+  if (QWidget* f = focusWidget(); f == nullptr || isTextField(f))
+    timeline_->setFocus(Qt::OtherFocusReason);
+}
+
+void MainWindow::scheduleSave() {
+  if (saveTimer_ != nullptr) saveTimer_->start();
+}
+
+void MainWindow::applyPreferences() {
+  QSettings settings;
+  labels_->setAnnotator(settings.value(keys::kAnnotator).toString().trimmed().toStdString());
+  timeline_->setRowHeight(
+      settings.value(keys::kTimelineRowHeight, PreferencesDialog::kDefaultRowHeight).toInt());
+}
+
+void MainWindow::showKeyboardShortcuts() {
+  auto* dialog = findChild<QDialog*>(QStringLiteral("shortcutsDialog"));
+  if (dialog == nullptr) {
+    dialog = new QDialog(this);
+    dialog->setObjectName(QStringLiteral("shortcutsDialog"));
+    dialog->setWindowTitle(tr("Keyboard Shortcuts"));
+    auto* text = new QTextBrowser(dialog);
+    text->setObjectName(QStringLiteral("shortcutsText"));
+    text->setHtml(shortcutTableHtml());
+    auto* buttons = new QDialogButtonBox(QDialogButtonBox::Close, dialog);
+    connect(buttons, &QDialogButtonBox::rejected, dialog, &QDialog::close);
+    auto* layout = new QVBoxLayout(dialog);
+    layout->addWidget(text);
+    layout->addWidget(buttons);
+    dialog->resize(560, 640);
+  }
+  dialog->show();
+  dialog->raise();
+  dialog->activateWindow();
+}
+
+void MainWindow::showPreferences() {
+  auto* dialog = findChild<PreferencesDialog*>();
+  if (dialog == nullptr) {
+    dialog = new PreferencesDialog(this);
+    connect(dialog, &QDialog::accepted, this, [this, dialog] {
+      dialog->save();
+      applyPreferences();
+      showMessage(tr("Preferences saved"));
+    });
+  }
+  dialog->load();
+  dialog->show();
+  dialog->raise();
+  dialog->activateWindow();
+}
+
 void MainWindow::createActions() {
+  // Every key comes from the one shortcut table (common/shortcuts.h) that Help lists.
   // ---- File ----
   QMenu* file = menuBar()->addMenu(tr("&File"));
-  QAction* open = file->addAction(tr("&Open Database..."), this, [this] { chooseDatabase(false); });
-  open->setShortcut(QKeySequence::Open);
+  bindShortcut(file->addAction(tr("&Open Database..."), this, [this] { chooseDatabase(false); }),
+               QStringLiteral("openDatabase"));
   file->addAction(tr("&New Database..."), this, [this] { chooseDatabase(true); });
   recentMenu_ = file->addMenu(tr("Open &Recent"));
   file->addSeparator();
-  QAction* import = file->addAction(tr("&Import Runs..."), this, &MainWindow::chooseRunFiles);
-  import->setShortcut(QKeySequence(tr("Ctrl+I")));
+  bindShortcut(file->addAction(tr("&Import Runs..."), this, &MainWindow::chooseRunFiles),
+               QStringLiteral("importRuns"));
   file->addAction(tr("Export &Labels..."), labelPanel_, &LabelPanelView::exportLabels);
   file->addSeparator();
-  QAction* quit = file->addAction(tr("&Quit"), this, &QWidget::close);
-  quit->setShortcut(QKeySequence::Quit);
+  QAction* prefs = file->addAction(tr("&Preferences..."), this, &MainWindow::showPreferences);
+  prefs->setMenuRole(QAction::PreferencesRole);
+  bindShortcut(prefs, QStringLiteral("preferences"));
+  file->addSeparator();
+  bindShortcut(file->addAction(tr("&Quit"), this, &QWidget::close), QStringLiteral("quit"));
   rebuildRecentMenu();
 
   // ---- Edit ----
   QMenu* edit = menuBar()->addMenu(tr("&Edit"));
   QAction* undo = labels_->undoStack()->createUndoAction(this, tr("&Undo"));
-  undo->setShortcut(QKeySequence::Undo);
+  bindShortcut(undo, QStringLiteral("undo"));
   QAction* redo = labels_->undoStack()->createRedoAction(this, tr("&Redo"));
-  // Both conventions, whatever the platform theme lists first.
-  QList<QKeySequence> redoKeys = QKeySequence::keyBindings(QKeySequence::Redo);
-  for (const QKeySequence& key :
-       {QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_Z), QKeySequence(Qt::CTRL | Qt::Key_Y)})
-    if (!redoKeys.contains(key)) redoKeys << key;
-  redo->setShortcuts(redoKeys);
+  bindShortcut(redo, QStringLiteral("redo"));
   edit->addAction(undo);
   edit->addAction(redo);
   edit->addSeparator();
   for (int i = 0; i < kContactClassCount; ++i) {
     const auto cls = static_cast<ContactClass>(i);
-    QAction* a = edit->addAction(tr("Label as %1").arg(i + 1), labelPanel_,
+    QAction* a = edit->addAction(tr("Label as %1").arg(className(cls)), labelPanel_,
                                  [this, cls] { labelPanel_->applyClass(cls); });
-    a->setShortcut(QKeySequence(Qt::Key_1 + i));
-    a->setObjectName(QStringLiteral("labelAs%1").arg(i + 1));
+    bindShortcut(a, QStringLiteral("labelAs%1").arg(i + 1));
   }
-  QAction* del =
-      edit->addAction(tr("&Delete Segment"), labelPanel_, &LabelPanelView::deleteAtCursor);
-  del->setShortcut(QKeySequence::Delete);
-  edit->addAction(tr("Move Segment Start Left"), this,
-                  [this] { labelPanel_->nudgeEdge(false, -1); })
-      ->setShortcut(QKeySequence(tr("Alt+Shift+Left")));
-  edit->addAction(tr("Move Segment Start Right"), this,
-                  [this] { labelPanel_->nudgeEdge(false, 1); })
-      ->setShortcut(QKeySequence(tr("Alt+Shift+Right")));
-  edit->addAction(tr("Move Segment End Left"), this, [this] { labelPanel_->nudgeEdge(true, -1); })
-      ->setShortcut(QKeySequence(tr("Alt+Left")));
-  edit->addAction(tr("Move Segment End Right"), this, [this] { labelPanel_->nudgeEdge(true, 1); })
-      ->setShortcut(QKeySequence(tr("Alt+Right")));
-  edit->addAction(tr("Clear Selection"), session_, &RunSession::clearSelection)
-      ->setShortcut(QKeySequence(Qt::Key_Escape));
+  bindShortcut(edit->addAction(tr("&Delete Segment"), labelPanel_, &LabelPanelView::deleteAtCursor),
+               QStringLiteral("deleteSegment"));
+  bindShortcut(edit->addAction(tr("Move Segment Start Left"), this,
+                               [this] { labelPanel_->nudgeEdge(false, -1); }),
+               QStringLiteral("moveStartLeft"));
+  bindShortcut(edit->addAction(tr("Move Segment Start Right"), this,
+                               [this] { labelPanel_->nudgeEdge(false, 1); }),
+               QStringLiteral("moveStartRight"));
+  bindShortcut(edit->addAction(tr("Move Segment End Left"), this,
+                               [this] { labelPanel_->nudgeEdge(true, -1); }),
+               QStringLiteral("moveEndLeft"));
+  bindShortcut(edit->addAction(tr("Move Segment End Right"), this,
+                               [this] { labelPanel_->nudgeEdge(true, 1); }),
+               QStringLiteral("moveEndRight"));
+  bindShortcut(edit->addAction(tr("Clear Selection"), session_, &RunSession::clearSelection),
+               QStringLiteral("clearSelection"));
 
   // ---- Go: stepping is exact, one key press is one step whatever the run's length ----
   QMenu* go = menuBar()->addMenu(tr("&Go"));
   struct StepKey {
     QString text;
-    QKeySequence key;
+    QString id;
     std::int64_t delta;
   };
   const StepKey stepKeys[] = {
-      {tr("Next Step"), QKeySequence(Qt::Key_Right), 1},
-      {tr("Previous Step"), QKeySequence(Qt::Key_Left), -1},
-      {tr("Forward 10 Steps"), QKeySequence(Qt::SHIFT | Qt::Key_Right), 10},
-      {tr("Back 10 Steps"), QKeySequence(Qt::SHIFT | Qt::Key_Left), -10},
-      {tr("Forward 100 Steps"), QKeySequence(Qt::CTRL | Qt::Key_Right), 100},
-      {tr("Back 100 Steps"), QKeySequence(Qt::CTRL | Qt::Key_Left), -100},
+      {tr("Next Step"), QStringLiteral("nextStep"), 1},
+      {tr("Previous Step"), QStringLiteral("previousStep"), -1},
+      {tr("Forward 10 Steps"), QStringLiteral("forward10"), 10},
+      {tr("Back 10 Steps"), QStringLiteral("back10"), -10},
+      {tr("Forward 100 Steps"), QStringLiteral("forward100"), 100},
+      {tr("Back 100 Steps"), QStringLiteral("back100"), -100},
   };
-  for (const StepKey& k : stepKeys) {
-    QAction* a = go->addAction(k.text, this, [this, d = k.delta] { stepBy(d); });
-    a->setShortcut(k.key);
-    a->setAutoRepeat(true);
-  }
-  go->addAction(tr("Forward One Screen"), this, [this] {
-      stepByScreen(1);
-    })->setShortcut(QKeySequence(Qt::Key_PageDown));
-  go->addAction(tr("Back One Screen"), this, [this] {
-      stepByScreen(-1);
-    })->setShortcut(QKeySequence(Qt::Key_PageUp));
-  go->addAction(tr("First Step"), this, [this] {
-      session_->setCurrentStep(0);
-    })->setShortcut(QKeySequence(Qt::Key_Home));
-  go->addAction(tr("Last Step"), this, [this] {
-      session_->setCurrentStep(session_->stepCount());
-    })->setShortcut(QKeySequence(Qt::Key_End));
-  QAction* play = go->addAction(tr("Play / Pause"), steps_, &StepControlsView::togglePlaying);
-  play->setShortcut(QKeySequence(Qt::Key_Space));
+  for (const StepKey& k : stepKeys)
+    bindShortcut(go->addAction(k.text, this, [this, d = k.delta] { stepBy(d); }), k.id);
+  bindShortcut(go->addAction(tr("Forward One Screen"), this, [this] { stepByScreen(1); }),
+               QStringLiteral("forwardScreen"));
+  bindShortcut(go->addAction(tr("Back One Screen"), this, [this] { stepByScreen(-1); }),
+               QStringLiteral("backScreen"));
+  bindShortcut(go->addAction(tr("First Step"), this, [this] { session_->setCurrentStep(0); }),
+               QStringLiteral("firstStep"));
+  bindShortcut(go->addAction(tr("Last Step"), this,
+                             [this] { session_->setCurrentStep(session_->stepCount()); }),
+               QStringLiteral("lastStep"));
+  bindShortcut(go->addAction(tr("Play / Pause"), steps_, &StepControlsView::togglePlaying),
+               QStringLiteral("playPause"));
 
   // ---- View ----
   viewMenu_ = menuBar()->addMenu(tr("&View"));
   for (QDockWidget* d : findChildren<QDockWidget*>())
     viewMenu_->addAction(d->toggleViewAction());
   viewMenu_->addSeparator();
-  QAction* closeUp = viewMenu_->addAction(tr("Robot Close-up / Whole Scene"), this,
-                                          [this] { route_->setWholeScene(!route_->wholeScene()); });
-  closeUp->setShortcut(QKeySequence(Qt::Key_M));
+  bindShortcut(viewMenu_->addAction(tr("Robot Close-up / Whole Scene"), this,
+                                    [this] { route_->setWholeScene(!route_->wholeScene()); }),
+               QStringLiteral("closeUp"));
   QAction* byLabel = viewMenu_->addAction(tr("Colour Route by Label"));
   byLabel->setCheckable(true);
   connect(byLabel, &QAction::toggled, this, [this](bool on) {
@@ -277,27 +416,34 @@ void MainWindow::createActions() {
     a->setChecked(timeline_->channel() == channel);
     channels->addAction(a);
   }
-  viewMenu_->addAction(tr("Zoom to Whole Run"), timeline_, &TimelineView::showWholeRun)
-      ->setShortcut(QKeySequence(tr("Ctrl+0")));
+  bindShortcut(
+      viewMenu_->addAction(tr("Zoom to Whole Run"), timeline_, &TimelineView::showWholeRun),
+      QStringLiteral("zoomWholeRun"));
 
   // ---- Learn ----
   QMenu* learn = menuBar()->addMenu(tr("&Learn"));
-  learn->addAction(tr("&Train and Sweep..."), this, &MainWindow::showTrainingDialog)
-      ->setShortcut(QKeySequence(tr("Ctrl+T")));
+  bindShortcut(learn->addAction(tr("&Train and Sweep..."), this, &MainWindow::showTrainingDialog),
+               QStringLiteral("trainAndSweep"));
   learn->addAction(tr("Open &Sweep Results..."), this, &MainWindow::chooseSweep);
   learn->addSeparator();
-  learn->addAction(tr("Show &Predictions..."), this, &MainWindow::choosePredictionModels)
-      ->setShortcut(QKeySequence(tr("Ctrl+P")));
+  bindShortcut(
+      learn->addAction(tr("Show &Predictions..."), this, &MainWindow::choosePredictionModels),
+      QStringLiteral("showPredictions"));
   learn->addAction(tr("&Hide Predictions"), this, [this] { predictions_->clear(); });
-  learn->addAction(tr("&Next Disagreement"), this, [this] { jumpToDisagreement(true); })
-      ->setShortcut(QKeySequence(Qt::Key_N));
-  learn->addAction(tr("Pre&vious Disagreement"), this, [this] { jumpToDisagreement(false); })
-      ->setShortcut(QKeySequence(Qt::SHIFT | Qt::Key_N));
+  bindShortcut(
+      learn->addAction(tr("&Next Disagreement"), this, [this] { jumpToDisagreement(true); }),
+      QStringLiteral("nextDisagreement"));
+  bindShortcut(
+      learn->addAction(tr("Pre&vious Disagreement"), this, [this] { jumpToDisagreement(false); }),
+      QStringLiteral("previousDisagreement"));
   learn->addSeparator();
   learn->addAction(tr("&Export Model..."), this, &MainWindow::chooseModelToExport);
   learn->addAction(tr("&Import Model..."), this, &MainWindow::chooseModelToImport);
 
   QMenu* help = menuBar()->addMenu(tr("&Help"));
+  bindShortcut(help->addAction(tr("&Keyboard Shortcuts"), this, &MainWindow::showKeyboardShortcuts),
+               QStringLiteral("keyboardShortcuts"));
+  help->addSeparator();
   help->addAction(tr("&About Tactile Workbench"), this, &MainWindow::showAbout);
 }
 
@@ -494,7 +640,9 @@ void MainWindow::updateTitle() {
 
 void MainWindow::updateStatus() {
   if (session_->isOpen()) {
-    QString text = tr("Step %1 of %2").arg(session_->currentStep()).arg(session_->stepCount() - 1);
+    QString text = tr("Step %1 of %2 steps")
+                       .arg(QLocale().toString(static_cast<qlonglong>(session_->currentStep())),
+                            QLocale().toString(static_cast<qlonglong>(session_->stepCount())));
     if (const auto sel = session_->selection())
       text += tr("  |  selected %1-%2").arg(sel->first).arg(sel->last);
     stepLabel_->setText(text);
@@ -597,6 +745,7 @@ TrainingDialog* MainWindow::trainingDialog() {
 }
 
 void MainWindow::showTrainingDialog() {
+  const bool fresh = training_ == nullptr;
   TrainingDialog* dialog = trainingDialog();
   if (dialog == nullptr) {
     showError(tr("Open a database first"));
@@ -604,7 +753,9 @@ void MainWindow::showTrainingDialog() {
   }
   if (!dialog->worker()->isRunning()) {
     dialog->reload();
-    if (!labels_->setName().empty())
+    // The labels dock's set is only the first choice: a set chosen in the dialog stays, as its
+    // grid does.
+    if (fresh && !labels_->setName().empty())
       dialog->setLabelSet(QString::fromStdString(labels_->setName()));
   }
   dialog->show();

@@ -3,6 +3,9 @@
 // stepping and labelling, and every view setting kept in QSettings.
 #pragma once
 
+#include <QHash>
+#include <QKeySequence>
+#include <QList>
 #include <QMainWindow>
 
 #include <array>
@@ -15,6 +18,7 @@
 
 class QAction;
 class QDockWidget;
+class QTimer;
 class QLabel;
 class QMenu;
 
@@ -78,17 +82,30 @@ class MainWindow : public QMainWindow {
   // N / Shift+N: the cursor to the next / previous step where the model disagrees with a label.
   void jumpToDisagreement(bool forward);
 
-  // Saves window and view settings now (also done on close).
+  // Saves window and view settings now (also done on close, and shortly after any of them
+  // changes, so a killed session keeps them).
   void saveSettings() const;
+  // Saves the settings after a short quiet time (many changes in a row make one write).
+  void scheduleSave();
+  // Applies the preferences stored in QSettings (annotator, timeline row height).
+  void applyPreferences();
+  // Help > Keyboard Shortcuts and File > Preferences (modeless; null until first shown).
+  void showKeyboardShortcuts();
+  void showPreferences();
 
  protected:
   void closeEvent(QCloseEvent* event) override;
+  void showEvent(QShowEvent* event) override;
+  // Keeps the step, class and undo keys working whatever has the focus, except a text field being
+  // typed in; Escape leaves a text field.
+  bool eventFilter(QObject* watched, QEvent* event) override;
   void dragEnterEvent(QDragEnterEvent* event) override;
   void dropEvent(QDropEvent* event) override;
 
  private:
   void createViews();
   void createActions();
+  void bindShortcut(QAction* action, const QString& id);
   void restoreSettings();
   void showError(const QString& message);
   void showMessage(const QString& message);
@@ -126,6 +143,9 @@ class MainWindow : public QMainWindow {
   TrainingDialog* training_ = nullptr;
   SweepResultsWindow* results_ = nullptr;
   PredictionModel* predictions_ = nullptr;
+  QTimer* saveTimer_ = nullptr;
+  QList<QKeySequence> globalKeys_;  // keys a focused widget other than a text field cannot take
+  QHash<QKeySequence, QAction*> actionOfKey_;  // every bound key
 };
 
 }  // namespace tactile::gui

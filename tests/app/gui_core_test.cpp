@@ -233,6 +233,75 @@ class GuiCoreTest : public QObject {
     QVERIFY(*worse.kappa < 0.9);
   }
 
+  // Two annotators' sets against each other, with the chance agreement that explains a kappa.
+  void labelSetAgreementHasItsChance() {
+    using tactile::storage::LabelSegment;
+    auto seg = [](SensorGroup g, std::int64_t first, std::int64_t last, ContactClass c) {
+      LabelSegment s;
+      s.group = g;
+      s.firstStep = first;
+      s.lastStep = last;
+      s.cls = c;
+      return s;
+    };
+    // F: one says Wall on 0..9; the other Wall on 0..4, Corner on 5..9 and labels 10..19 alone.
+    const std::vector<LabelSegment> one{seg(SensorGroup::Front, 0, 9, ContactClass::Wall),
+                                        seg(SensorGroup::Back, 0, 99, ContactClass::NoContact)};
+    const std::vector<LabelSegment> other{seg(SensorGroup::Front, 0, 4, ContactClass::Wall),
+                                          seg(SensorGroup::Front, 5, 9, ContactClass::Corner),
+                                          seg(SensorGroup::Front, 10, 19, ContactClass::Wall),
+                                          seg(SensorGroup::Back, 50, 149, ContactClass::NoContact)};
+    const auto rows = tactile::workspace::labelAgreement(120, one, other);
+    QCOMPARE(rows.size(), std::size_t{8});
+    const auto& f = rows[static_cast<std::size_t>(tactile::groupIndex(SensorGroup::Front))];
+    QCOMPARE(f.comparedSteps, 10);  // only the steps both label
+    QCOMPARE(f.agreeingSteps, 5);
+    QCOMPARE(*f.percent, 50.0);
+    // Chance: one says Wall always, the other half the time: 1 * 0.5.
+    QCOMPARE(*f.chancePercent, 50.0);
+    QVERIFY(std::abs(*f.kappa) < 1e-12);  // no better than chance
+    // B: both NoContact on 50..99 (clipped to the run's 120 steps on the other side): full
+    // agreement, chance 100 %, kappa undefined.
+    const auto& b = rows[static_cast<std::size_t>(tactile::groupIndex(SensorGroup::Back))];
+    QCOMPARE(b.comparedSteps, 50);
+    QCOMPARE(*b.percent, 100.0);
+    QCOMPARE(*b.chancePercent, 100.0);
+    QVERIFY(!b.kappa.has_value());
+    QVERIFY(!rows[static_cast<std::size_t>(tactile::groupIndex(SensorGroup::Left))].percent);
+    // The truth agreement reports its chance the same way.
+    GuiFixture fx(300);
+    RunSession session;
+    session.setWorkspace(fx.workspace.get());
+    QVERIFY(session.open(fx.runName).ok());
+    std::vector<LabelSegment> labels{seg(SensorGroup::Right, 0, 299, ContactClass::NoContact)};
+    const auto truth = tactile::workspace::truthAgreement(session.track(), labels);
+    const auto& r = truth[static_cast<std::size_t>(tactile::groupIndex(SensorGroup::Right))];
+    std::int64_t noContact = 0;
+    for (std::size_t k = 0; k < 300; ++k)
+      noContact += session.track().truthAt(k, SensorGroup::Right) == ContactClass::NoContact;
+    // The labels say NoContact throughout, so chance is the truth's NoContact share.
+    QCOMPARE(*r.chancePercent, 100.0 * static_cast<double>(noContact) / 300.0);
+    QCOMPARE(*r.percent, *r.chancePercent);
+  }
+
+  // Sweeps named by what they sweep, not all "<set> sweep".
+  void sweepNamesSayWhatWasSwept() {
+    tactile::analysis::SweepGrid g;
+    g.orders = {1, 4, 16};
+    g.forms = {tactile::analysis::CovarianceForm::NodalFull};
+    g.varianceFloors = {0.03, 0.01};
+    g.groups = {SensorGroup::Front, SensorGroup::Left};
+    const std::string a = tactile::workspace::defaultSweepName("truth", g);
+    QCOMPARE(QString::fromStdString(a),
+             QStringLiteral("truth: order 1-16 x floor 0.01-0.03 (F,L)"));
+    g.orders = {4};
+    g.varianceFloors = {0.01};
+    g.groups = {};
+    const std::string b = tactile::workspace::defaultSweepName("truth", g);
+    QVERIFY2(b != a && QString::fromStdString(b).contains(QStringLiteral("order 4")), b.c_str());
+    QVERIFY(QString::fromStdString(b).contains(QStringLiteral("floor 0.01")));
+  }
+
   void runListShowsCoverageOfTheSet() {
     GuiFixture fx(200);
     auto set = fx.workspace->database().createLabelSet("cov");

@@ -88,6 +88,7 @@ class PredictionTest : public QObject {
   void predictionsEqualTheCoreClassification();
   void disagreementsAreWherePredictionAndLabelDiffer();
   void nextDisagreementWrapsAround();
+  void nLandsOnTheNextDisagreeingStretch();
   void holesMatchTheSideScan();
   void timelineAndRouteShowPredictions();
   void mainWindowShowsAModelAndKeyNJumps();
@@ -211,6 +212,55 @@ void PredictionTest::nextDisagreementWrapsAround() {
   QCOMPARE(predictions.previousDisagreement(a, std::nullopt), std::optional<std::int64_t>(b));
   QCOMPARE(predictions.nextDisagreement(0, SensorGroup::Back), std::optional<std::int64_t>(a));
   QVERIFY(!predictions.nextDisagreement(0, SensorGroup::Front));
+}
+
+// Regression: N moved one step at a time through a stretch of disagreement (hundreds of presses
+// to cross one).
+void PredictionTest::nLandsOnTheNextDisagreeingStretch() {
+  Reviewed r("mine", true);
+  // Long labelled stretches a no-contact rule and a one-component model surely contradict.
+  QVERIFY(r.labels.label({SensorGroup::Back}, 100, 299, ContactClass::DeadPath).ok());
+  QVERIFY(r.labels.label({SensorGroup::Front}, 500, 599, ContactClass::DeadPath).ok());
+  QVERIFY(r.labels.label({SensorGroup::Left}, 550, 650, ContactClass::DeadPath).ok());
+  const PredictionModel& pm = *r.predictions;
+  const std::int64_t n = pm.stepCount();
+  auto any = [&](std::int64_t t) {
+    for (const GroupInfo& g : kSensorGroups)
+      if (pm.group(g.group).disagrees[static_cast<std::size_t>(t)]) return true;
+    return false;
+  };
+  // The stretches, by their definition: a disagreeing step after one that does not disagree.
+  std::vector<std::int64_t> starts;
+  std::int64_t disagreeing = 0;
+  for (std::int64_t t = 0; t < n; ++t) {
+    disagreeing += any(t) ? 1 : 0;
+    if (any(t) && (t == 0 || !any(t - 1))) starts.push_back(t);
+  }
+  QVERIFY(starts.size() >= 2);
+  QVERIFY2(static_cast<std::int64_t>(starts.size()) * 4 < disagreeing,
+           "stretches are far fewer than disagreeing steps");
+  const std::size_t k = starts.size();
+  for (std::size_t i = 0; i < k; ++i) {
+    std::int64_t end = starts[i];
+    while (end + 1 < n && any(end + 1))
+      ++end;
+    const std::int64_t next = starts[(i + 1) % k];
+    const std::int64_t previous = starts[(i + k - 1) % k];
+    // From the first step, the middle or the last step of a stretch: the next one's first step.
+    for (std::int64_t from : {starts[i], (starts[i] + end) / 2, end})
+      QCOMPARE(pm.nextDisagreement(from, std::nullopt), std::optional(next));
+    // Back from the next stretch's start lands on this one's; from inside this one, on the one
+    // before.
+    QCOMPARE(pm.previousDisagreement(next, std::nullopt), std::optional(starts[i]));
+    QCOMPARE(pm.previousDisagreement(end, std::nullopt), std::optional(previous));
+  }
+  // Between two stretches: N and Shift+N land on their starts.
+  if (starts[1] > starts[0] + 1) {
+    std::int64_t gap = starts[1] - 1;
+    QVERIFY(!any(gap));
+    QCOMPARE(pm.nextDisagreement(gap, std::nullopt), std::optional(starts[1]));
+    QCOMPARE(pm.previousDisagreement(gap, std::nullopt), std::optional(starts[0]));
+  }
 }
 
 void PredictionTest::holesMatchTheSideScan() {

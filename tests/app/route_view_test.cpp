@@ -178,6 +178,22 @@ class RouteViewTest : public QObject {
     }
   }
 
+  // Regression: the "Whole scene" badge stayed while the view was zoomed in.
+  void badgeSaysWhenZoomed() {
+    OpenRun r;
+    QVERIFY(r.open(r.fx.runName));
+    QVERIFY(r.view->badgeText().startsWith(QStringLiteral("Whole scene")));
+    sendWheel(r.view.get(), QPointF(300, 300), 480);
+    QVERIFY2(r.view->badgeText().startsWith(QStringLiteral("Zoomed 2.0x")),
+             qPrintable(r.view->badgeText()));
+    QTest::mouseDClick(r.view.get(), Qt::LeftButton, {}, QPoint(300, 300));
+    QVERIFY(r.view->badgeText().startsWith(QStringLiteral("Whole scene")));
+    r.view->setWholeScene(false);
+    QVERIFY(r.view->badgeText().startsWith(QStringLiteral("Close-up (")));
+    sendWheel(r.view.get(), QPointF(300, 300), -480);
+    QVERIFY(r.view->badgeText().startsWith(QStringLiteral("Close-up zoomed 0.5x")));
+  }
+
   void settingsRoundTrip() {
     OpenRun r;
     QVERIFY(r.open(r.fx.runName));

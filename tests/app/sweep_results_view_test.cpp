@@ -116,6 +116,7 @@ class SweepResultsViewTest : public QObject {
   void exportsWriteTheReportCsvAndImages();
   void tableViewSortsNumbersAsNumbers();
   void failedCellShowsItsReason();
+  void plotsZoomHoverAndKeepTickLabelsApart();
   void emptyAndCancelledSweeps();
 };
 
@@ -314,6 +315,56 @@ void SweepResultsViewTest::cellsStreamInWithoutARedrawEach() {
   QCOMPARE(hidden.timeErrorPlot()->pointCount(), static_cast<int>(sweep.cells.size()));
 }
 
+// Regression: swept floors 0.004 and 0.005 printed as "0.0040.005"; the ring of a point at 0 was
+// cut in half; the figures neither zoomed nor told a point's values.
+void SweepResultsViewTest::plotsZoomHoverAndKeepTickLabelsApart() {
+  SweepPlot plot;
+  plot.resize(520, 320);
+  plot.show();
+  QVERIFY(QTest::qWaitForWindowExposed(&plot));
+  analysis::RateSeries s;
+  s.label = "F gmm nodal-diag order 1";
+  s.x = {0.003, 0.004, 0.005, 0.01, 0.1, 1.0};
+  s.mean = {0, 60, 70, 80, 90, 100};
+  s.min = s.mean;
+  s.max = s.mean;
+  s.cells = {0, 1, 2, 3, 4, 5};
+  plot.showRates({s}, analysis::SweptVariable::Floor);
+  plot.plot()->replot();
+  QCPAxis* x = plot.plot()->xAxis;
+  const QVector<double> ticks = x->tickVector();
+  const QVector<QString> labels = x->tickVectorLabels();
+  QVERIFY(ticks.size() >= 3);
+  QVERIFY(ticks.size() < 6);  // the close ones do not all fit at this width
+  const QFontMetrics metrics(x->tickLabelFont());
+  for (qsizetype i = 1; i < ticks.size(); ++i) {
+    const double gap = x->coordToPixel(ticks[i]) - x->coordToPixel(ticks[i - 1]);
+    const double needed =
+        (metrics.horizontalAdvance(labels[i]) + metrics.horizontalAdvance(labels[i - 1])) / 2.0;
+    QVERIFY2(gap >= needed, qPrintable(labels[i - 1] + QStringLiteral(" / ") + labels[i]));
+  }
+  // The ring around a point at 0 % is drawn whole, outside the axes if need be.
+  plot.markCell(0);
+  QCOMPARE(plot.markGraph()->dataCount(), 1);
+  QVERIFY(plot.markRing()->visible());
+  QVERIFY(!plot.markRing()->clipToAxisRect());
+  QCOMPARE(plot.markRing()->position->value(), 0.0);
+  // Hovering a point tells its values and cell.
+  const QPoint point(qRound(x->coordToPixel(0.01)), qRound(plot.plot()->yAxis->coordToPixel(80)));
+  const QString tip = plot.tipAt(plot.plot()->mapTo(&plot, point));
+  QVERIFY2(tip.contains(QStringLiteral("cell 3")) && tip.contains(QStringLiteral("80.0")),
+           qPrintable(tip));
+  QVERIFY(plot.tipAt(QPoint(2, 2)).isEmpty());
+  // The wheel zooms, a double click shows it all again.
+  QVERIFY(plot.plot()->interactions().testFlag(QCP::iRangeZoom));
+  QVERIFY(plot.plot()->interactions().testFlag(QCP::iRangeDrag));
+  const QCPRange before = plot.plot()->yAxis->range();
+  plot.plot()->yAxis->scaleRange(0.5);
+  QVERIFY(plot.plot()->yAxis->range().size() < before.size());
+  plot.resetView();
+  QCOMPARE(plot.plot()->yAxis->range().size(), before.size());
+}
+
 void SweepResultsViewTest::figuresDrawTheCoreSeriesAndFront() {
   const analysis::SweepResult& sweep = sweepOnce();
   SweepResultsView view;
@@ -333,8 +384,7 @@ void SweepResultsViewTest::figuresDrawTheCoreSeriesAndFront() {
   QCOMPARE(view.rateOrderPlot()->plot()->xAxis->scaleType(), QCPAxis::stLogarithmic);
   QCOMPARE(view.rateFloorPlot()->plot()->xAxis->label(), QStringLiteral("Variance floor"));
   QCOMPARE(view.rateOrderPlot()->plot()->xAxis->label(), QStringLiteral("Model order"));
-  QCOMPARE(view.rateFloorPlot()->plot()->yAxis->label(),
-           QStringLiteral("Correct rate per class (%)"));
+  QCOMPARE(view.rateFloorPlot()->plot()->yAxis->label(), QStringLiteral("Recall per class (%)"));
   QVERIFY(view.rateFloorPlot()->plot()->legend->visible());
   // Every series has its error bars (min..max about the mean).
   int bars = 0;

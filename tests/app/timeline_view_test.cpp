@@ -222,6 +222,87 @@ class TimelineViewTest : public QObject {
     QVERIFY(std::abs(heat->data()->keyRange().upper - 200) < 1.0);
   }
 
+  // The row-height preference gives every label row that many pixels.
+  void rowHeightSetsTheLabelRows() {
+    Bench b(true, {1200, 900});
+    for (int h : {12, 26}) {
+      b.view->setRowHeight(h);
+      settle();
+      QCOMPARE(b.view->rowHeight(), h);
+      for (SensorGroup g : {SensorGroup::Front, SensorGroup::FrontRightCorner})
+        QVERIFY2(std::abs(b.view->labelStripRect(g).height() - h) <= 1,
+                 qPrintable(QString::number(b.view->labelStripRect(g).height())));
+    }
+  }
+
+  // Regression: the selection was shaded in the grey of NoContact, and the selected group was not
+  // marked.
+  void selectionAndSelectedGroupStandOut() {
+    Bench b;
+    QVERIFY(b.labels.label({SensorGroup::Front}, 100, 400, ContactClass::NoContact));
+    b.session.setSelection(200, 300);
+    b.session.setSelectedGroup(SensorGroup::Back);
+    const QRect front = b.view->labelStripRect(SensorGroup::Front);
+    const QColor grey = tactile::gui::classColor(ContactClass::NoContact);
+    QVERIFY(near(b.pixel(150, front.center().y()), grey));
+    const QColor selected = b.pixel(250, front.center().y());
+    QVERIFY2(!near(selected, grey, 20),
+             qPrintable(selected.name()));             // not a shade of the class's grey
+    QVERIFY(selected.blue() > selected.green() + 20);  // violet
+    // The selected group's rows are outlined in black; another group's are not.
+    auto darkest = [&](SensorGroup g) {
+      const QImage image = b.view->grab().toImage();
+      const int top = b.view->labelStripRect(g).top();
+      const int x = int(std::lround(b.view->stepToX(50)));
+      int best = 255;
+      for (int y = top - 2; y <= top + 1; ++y)
+        best = std::min(best, qGray(image.pixel(x, y)));
+      return best;
+    };
+    settle();
+    QVERIFY(darkest(SensorGroup::Back) < 60);
+    QVERIFY(darkest(SensorGroup::Right) > 100);
+  }
+
+  // Hovering tells the value under the pointer: the sensor's value in the heatmap, the heading and
+  // the command of the step in their strips.
+  void hoverTellsTheValues() {
+    Bench b;
+    b.view->setVisibleRange({0, 99});  // more than a pixel per step: a column is one step
+    settle();
+    // The step with the largest normal value among the first hundred, and its sensor.
+    std::int64_t step = 0;
+    int sensor = 0;
+    double value = -1;
+    for (std::int64_t k = 0; k < 100; ++k) {
+      b.session.setCurrentStep(k);
+      for (int s = 0; s < tactile::kSensorCount; ++s) {
+        const double n = b.session.currentSensors()[std::size_t(2 * s)];
+        if (n > value) {
+          value = n;
+          step = k;
+          sensor = s;
+        }
+      }
+    }
+    const QRect heat = b.view->heatmapRect();
+    const double rowHeight = heat.height() / double(tactile::kSensorCount);
+    const QPoint at(int(std::lround(b.view->stepToX(step))),
+                    int(heat.top() + (sensor + 0.5) * rowHeight));
+    const QString tip = b.view->trackTipAt(at);
+    QVERIFY2(tip.contains(QStringLiteral("step %1,").arg(step)) &&
+                 tip.contains(QStringLiteral("sensor %1 ").arg(sensor)) &&
+                 tip.contains(QStringLiteral("normal %1").arg(value, 0, 'f', 2)),
+             qPrintable(tip + QStringLiteral(" / want %1 %2 %3").arg(step).arg(sensor).arg(value)));
+    const double theta = b.session.track().theta[std::size_t(step)];
+    const QString head = b.view->trackTipAt(QPoint(at.x(), b.view->headingRect().center().y()));
+    QVERIFY2(head.contains(QStringLiteral("heading %1").arg(theta * 180.0 / M_PI, 0, 'f', 1)),
+             qPrintable(head));
+    QVERIFY(
+        b.view->trackTipAt(QPoint(at.x(), b.view->labelStripRect(SensorGroup::Front).center().y()))
+            .isEmpty());
+  }
+
   void screenshotShowsHeadingCursorAndLabels() {
     Bench b;
     QVERIFY(b.labels.label({SensorGroup::Front, SensorGroup::Left}, 40, 180, ContactClass::Wall));

@@ -12,6 +12,7 @@
 #include <QPushButton>
 #include <QSignalSpy>
 #include <QTableView>
+#include <QTableWidget>
 #include <QTemporaryDir>
 #include <QtTest>
 
@@ -122,7 +123,16 @@ void TrainingDialogTest::sweepShowsProgressAndStreamsSortedCells() {
   QVERIFY(!button(dialog, "runSweep")->isEnabled());
   QVERIFY(button(dialog, "cancel")->isEnabled());
   QCOMPARE(dialog.progressBar()->maximum(), 8);
+  QVERIFY(!dialog.formEditable());  // the grid is locked while it runs
   QVERIFY(finished.wait(120000));
+  QVERIFY(dialog.formEditable());
+  // The stored sweep is named by what it swept, and the plan now estimates from its times.
+  auto sweeps = f.workspace->sweeps();
+  QVERIFY(sweeps.ok() && !sweeps->empty());
+  QVERIFY2(QString::fromStdString(sweeps->back().name).contains(QStringLiteral("order 1-2")),
+           sweeps->back().name.c_str());
+  QVERIFY2(dialog.planLabel()->text().contains(QStringLiteral("about")),
+           qPrintable(dialog.planLabel()->text()));
 
   QCOMPARE(cells.count(), 8);
   QCOMPARE(dialog.cellsModel()->rowCount(), 8);
@@ -266,9 +276,19 @@ void TrainingDialogTest::badGridIsReportedAndNothingStarts() {
   dialog.startSweep();
   QVERIFY(!dialog.worker()->isRunning());
   QVERIFY(dialog.statusLabel()->text().contains(QStringLiteral("negative")));
+  QVERIFY(dialog.planLabel()->text().contains(QStringLiteral("negative")));
   auto sweeps = f.workspace->sweeps();
   QVERIFY(sweeps.ok());
   QVERIFY(sweeps->empty());
+  // Once the form is fixed the message goes, and the plan counts the cells before any start.
+  dialog.setGrid(QStringLiteral("1, 2"), QStringLiteral("0.1"), QStringLiteral("1"));
+  QVERIFY2(!dialog.statusLabel()->text().contains(QStringLiteral("negative")),
+           qPrintable(dialog.statusLabel()->text()));
+  auto request = dialog.sweepRequest();
+  QVERIFY(request.ok());
+  const auto cells = analysis::expandGrid(request->grid).size();
+  QVERIFY2(dialog.planLabel()->text().startsWith(QStringLiteral("%1 cell").arg(cells)),
+           qPrintable(dialog.planLabel()->text()));
 }
 
 void TrainingDialogTest::trainStoresAModel() {
@@ -284,6 +304,9 @@ void TrainingDialogTest::trainStoresAModel() {
   QTest::mouseClick(button(dialog, "trainModel"), Qt::LeftButton);
   QVERIFY(finished.wait(120000));
   QCOMPARE(trained.count(), 1);
+  // The new result is shown: a row per group trained, not the cells of an earlier sweep.
+  QCOMPARE(dialog.trainResultView()->rowCount(), 2);
+  QVERIFY(dialog.trainResultView()->isVisibleTo(&dialog));
   const QString name = trained.first().at(0).toString();
   auto bundle = f.workspace->loadModel(name.toStdString());
   QVERIFY2(bundle.ok(), bundle.ok() ? "" : bundle.errorText().c_str());

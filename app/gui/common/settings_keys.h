@@ -14,7 +14,12 @@ inline constexpr QLatin1StringView kLastLabelSet{"labels/lastSet"};
 inline constexpr QLatin1StringView kLabelGroupsMode{"labels/groupsMode"};
 inline constexpr QLatin1StringView kPlaySpeed{"steps/playSpeed"};
 inline constexpr QLatin1StringView kRunFilter{"runs/filter"};
-inline constexpr QLatin1StringView kUiLanguage{"ui/language"};  // "" = the system's
+// Preferences. The interface language: "" follows the system locale, else "en", "de" or "zh_CN"
+// (read once at start). The annotator's name is stored on every label segment the GUI writes.
+inline constexpr QLatin1StringView kLanguage{"ui/language"};
+inline constexpr QLatin1StringView kAnnotator{"labels/annotator"};
+// Height in pixels of one label, truth or model row of the timelines.
+inline constexpr QLatin1StringView kTimelineRowHeight{"timelineView/rowHeight"};
 inline constexpr int kMaxRecentDatabases = 8;
 
 }  // namespace tactile::gui::settings_keys

@@ -79,7 +79,7 @@ bool loadWorkbenchTranslation(QTranslator& translator, const QString& language) 
 }
 
 QString installUiLanguage(QCoreApplication& app) {
-  const QString setting = QSettings().value(settings_keys::kUiLanguage).toString();
+  const QString setting = QSettings().value(settings_keys::kLanguage).toString();
   const QString language =
       chooseUiLanguage(setting, QLocale::system().uiLanguages(), availableTranslations());
   QLocale::setDefault(uiLocale(language));

@@ -45,7 +45,7 @@ Status LabelModel::openSet(const std::string& name) {
 
 Status LabelModel::createSet(const std::string& name) {
   if (workspace_ == nullptr) return Error("no database is open");
-  auto id = workspace_->database().createLabelSet(name);
+  auto id = workspace_->database().createLabelSet(name, annotator_);
   if (!id) return id.error();
   return setCurrentSet(id.value(), name);
 }
@@ -120,6 +120,7 @@ Status LabelModel::label(const std::vector<SensorGroup>& groups, std::int64_t fi
     segment.firstStep = first;
     segment.lastStep = last;
     segment.cls = cls;
+    segment.annotator = annotator_;
     const std::int64_t set = setId_;
     workspace::Workspace* ws = workspace_;
     auto* command = new LabelEditCommand(this, text, [ws, set, segment, failed] {
@@ -149,6 +150,7 @@ Status LabelModel::moveSegment(std::int64_t segmentId, std::int64_t first, std::
   storage::LabelSegment moved = *found;
   moved.firstStep = first;
   moved.lastStep = last;
+  moved.annotator = annotator_;  // whoever moved an edge vouches for the segment now
   const std::int64_t set = setId_;
   workspace::Workspace* ws = workspace_;
   auto failed = std::make_shared<std::optional<Error>>();

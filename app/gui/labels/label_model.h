@@ -43,6 +43,10 @@ class LabelModel : public QObject {
   const std::string& setName() const { return setName_; }
   // Opens an existing set by name.
   Status openSet(const std::string& name);
+  // The annotator's name (Preferences) stored on every segment written from here on, and on a
+  // set created here; empty for none.
+  void setAnnotator(const std::string& name) { annotator_ = name; }
+  const std::string& annotator() const { return annotator_; }
   // Creates an empty set and opens it.
   Status createSet(const std::string& name);
   // Copies the current set under a new name and opens the copy ("Save As").
@@ -92,6 +96,7 @@ class LabelModel : public QObject {
   std::string setName_;
   std::int64_t runId_ = 0;
   std::string runName_;
+  std::string annotator_;
   std::int64_t stepCount_ = 0;
   std::array<std::vector<storage::LabelSegment>, kGroupCount> segments_;
   QUndoStack* undo_ = nullptr;

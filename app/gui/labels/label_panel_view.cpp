@@ -7,6 +7,7 @@
 #include <QFormLayout>
 #include <QGridLayout>
 #include <QGroupBox>
+#include <QHBoxLayout>
 #include <QHeaderView>
 #include <QInputDialog>
 #include <QLabel>
@@ -73,6 +74,9 @@ LabelPanelView::LabelPanelView(RunSession* session, LabelModel* labels, QWidget*
     groupLayout->addWidget(r, i, 0, 1, 4);
   }
   mode_->button(0)->setChecked(true);
+  connect(mode_, &QButtonGroup::idToggled, this, [this](int, bool on) {
+    if (on) emit settingsChanged();
+  });
   for (const GroupInfo& info : kSensorGroups) {
     const int g = groupIndex(info.group);
     auto* c = new QCheckBox(groupName(info.group), groupBox);
@@ -81,6 +85,7 @@ LabelPanelView::LabelPanelView(RunSession* session, LabelModel* labels, QWidget*
                       .arg(QString::fromLatin1(info.longName.data(),
                                                static_cast<qsizetype>(info.longName.size()))));
     checks_[static_cast<std::size_t>(g)] = c;
+    connect(c, &QCheckBox::toggled, this, &LabelPanelView::settingsChanged);
     groupLayout->addWidget(c, 3 + g / 4, g % 4);
   }
   layout->addWidget(groupBox);
@@ -119,17 +124,32 @@ LabelPanelView::LabelPanelView(RunSession* session, LabelModel* labels, QWidget*
   infoLayout->addRow(del);
   layout->addWidget(info);
 
-  // ---- agreement with truth ----
-  agreement_ = new QTableWidget(kGroupCount, 3, this);
+  // ---- agreement with truth or with another label set ----
+  agreementWith_ = new QComboBox(this);
+  agreementWith_->setObjectName(QStringLiteral("agreementWith"));
+  agreementWith_->setToolTip(
+      tr("Compare the labels with the run's truth or with another label set (another annotator)"));
+  agreement_ = new QTableWidget(kGroupCount, 4, this);
   agreement_->setObjectName(QStringLiteral("truthAgreement"));
-  agreement_->setHorizontalHeaderLabels({tr("Group"), tr("Agree"), tr("Kappa")});
+  agreement_->setHorizontalHeaderLabels({tr("Group"), tr("Agree"), tr("Chance"), tr("Kappa")});
+  agreement_->horizontalHeaderItem(1)->setToolTip(
+      tr("Share of the steps both sides label on which they give the same class"));
+  agreement_->horizontalHeaderItem(2)->setToolTip(
+      tr("Agreement expected by chance from each side's class shares"));
+  agreement_->horizontalHeaderItem(3)->setToolTip(
+      tr("Cohen's kappa = (agree - chance) / (100 % - chance): 0 when the agreement is no better "
+         "than chance, 1 when perfect; '-' when chance is 100 % (one class throughout)"));
   agreement_->verticalHeader()->hide();
   agreement_->verticalHeader()->setDefaultSectionSize(fontMetrics().height() + 4);
+  agreement_->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
   agreement_->horizontalHeader()->setStretchLastSection(true);
   agreement_->setEditTriggers(QAbstractItemView::NoEditTriggers);
-  agreement_->setToolTip(tr("Labels against the run's truth, over the labelled steps"));
-  layout->addWidget(new QLabel(tr("Agreement with truth"), this));
+  auto* withRow = new QHBoxLayout;
+  withRow->addWidget(new QLabel(tr("Agreement with"), this));
+  withRow->addWidget(agreementWith_, 1);
+  layout->addLayout(withRow);
   layout->addWidget(agreement_, 1);
+  connect(agreementWith_, &QComboBox::activated, this, &LabelPanelView::refreshAgreement);
 
   connect(labels_, &LabelModel::labelSetChanged, this, &LabelPanelView::refreshSets);
   connect(labels_, &LabelModel::labelsChanged, this, [this] {
@@ -144,6 +164,14 @@ LabelPanelView::LabelPanelView(RunSession* session, LabelModel* labels, QWidget*
   refreshSets();
   refreshCursorInfo();
   refreshAgreement();
+}
+
+std::vector<SensorGroup> LabelPanelView::checkedGroups() const {
+  std::vector<SensorGroup> out;
+  for (const GroupInfo& info : kSensorGroups)
+    if (checks_[static_cast<std::size_t>(groupIndex(info.group))]->isChecked())
+      out.push_back(info.group);
+  return out;
 }
 
 LabelPanelView::GroupsMode LabelPanelView::groupsMode() const {
@@ -246,6 +274,19 @@ void LabelPanelView::refreshSets() {
   }
   sets_->setCurrentIndex(sets_->findText(QString::fromStdString(labels_->setName())));
   sets_->setPlaceholderText(tr("(no label set)"));
+  // The comparison keeps its choice while that set exists and is not the one being edited.
+  const QString with = agreementWith_->currentData().toString();
+  {
+    const QSignalBlocker blockWith(agreementWith_);
+    agreementWith_->clear();
+    agreementWith_->addItem(tr("truth"), QString());
+    for (int i = 0; i < sets_->count(); ++i) {
+      if (sets_->itemText(i).toStdString() != labels_->setName())
+        agreementWith_->addItem(tr("label set %1").arg(sets_->itemText(i)), sets_->itemText(i));
+    }
+    agreementWith_->setCurrentIndex(std::max(0, agreementWith_->findData(with)));
+  }
+  refreshAgreement();
 }
 
 void LabelPanelView::openSetAt(int index) {
@@ -322,22 +363,51 @@ void LabelPanelView::refreshAgreement() {
     const auto& list = labels_->segments(info.group);
     all.insert(all.end(), list.begin(), list.end());
   }
-  const std::vector<workspace::GroupAgreement> rows =
-      session_->isOpen() ? workspace::truthAgreement(session_->track(), all)
-                         : std::vector<workspace::GroupAgreement>{};
+  std::vector<workspace::GroupAgreement> rows;
+  const QString other = agreementWith_->currentData().toString();
+  workspace::Workspace* ws = labels_->workspace();
+  if (session_->isOpen() && other.isEmpty()) {
+    rows = workspace::truthAgreement(session_->track(), all);
+  } else if (session_->isOpen() && ws != nullptr) {
+    // Rows are the other set, columns this one.
+    auto set = ws->database().findLabelSet(other.toStdString());
+    auto theirs = set ? ws->database().segments(set->id, session_->info().id)
+                      : Result<std::vector<storage::LabelSegment>>(set.error());
+    if (theirs) rows = workspace::labelAgreement(session_->stepCount(), theirs.value(), all);
+  }
   agreement_->setEnabled(!rows.empty());
   for (const GroupInfo& info : kSensorGroups) {
     const int r = groupIndex(info.group);
     QString agree = QStringLiteral("-");
+    QString chance = QStringLiteral("-");
     QString kappa = QStringLiteral("-");
+    QString why;
     if (static_cast<std::size_t>(r) < rows.size()) {
       const workspace::GroupAgreement& a = rows[static_cast<std::size_t>(r)];
       if (a.percent) agree = QStringLiteral("%1 %").arg(*a.percent, 0, 'f', 1);
+      if (a.chancePercent) chance = QStringLiteral("%1 %").arg(*a.chancePercent, 0, 'f', 1);
       if (a.kappa) kappa = QString::number(*a.kappa, 'f', 3);
+      if (a.comparedSteps == 0) {
+        why = tr("No step is labelled on both sides");
+      } else if (!a.kappa) {
+        why =
+            tr("Undefined: both sides use one and the same class on all %n step(s), so chance "
+               "agreement is 100 %",
+               nullptr, static_cast<int>(a.comparedSteps));
+      } else {
+        why = tr("%1 of %2 steps agree (%3); by chance %4 would: kappa = (%3 - %4) / (100 % - %4) "
+                 "= %5")
+                  .arg(a.agreeingSteps)
+                  .arg(a.comparedSteps)
+                  .arg(agree, chance, kappa);
+      }
     }
     agreement_->setItem(r, 0, new QTableWidgetItem(groupName(info.group)));
     agreement_->setItem(r, 1, new QTableWidgetItem(agree));
-    agreement_->setItem(r, 2, new QTableWidgetItem(kappa));
+    agreement_->setItem(r, 2, new QTableWidgetItem(chance));
+    agreement_->setItem(r, 3, new QTableWidgetItem(kappa));
+    for (int c = 0; c < 4; ++c)
+      agreement_->item(r, c)->setToolTip(why);
   }
 }
 

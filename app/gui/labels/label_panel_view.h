@@ -35,6 +35,7 @@ class LabelPanelView : public QWidget {
   GroupsMode groupsMode() const;
   void setGroupsMode(GroupsMode mode);
   void setGroupChecked(SensorGroup group, bool checked);
+  std::vector<SensorGroup> checkedGroups() const;
   // The groups an edit over [first, last] applies to under the current mode.
   std::vector<SensorGroup> groupsFor(std::int64_t first, std::int64_t last) const;
 
@@ -58,6 +59,8 @@ class LabelPanelView : public QWidget {
  signals:
   void errorOccurred(const QString& message);
   void statusMessage(const QString& message);
+  // The "Apply to" mode or a group's check changed.
+  void settingsChanged();
 
  private:
   void openSetAt(int index);
@@ -73,6 +76,7 @@ class LabelPanelView : public QWidget {
   QLabel* range_;
   QLabel* atCursor_;
   QTableWidget* agreement_;
+  QComboBox* agreementWith_;  // "truth" (empty data) or another label set's name
 };
 
 }  // namespace tactile::gui

@@ -247,12 +247,18 @@ bool disagreesAt(const std::array<GroupPrediction, kGroupCount>& groups, std::in
 
 }  // namespace
 
+// A stretch is a maximal run of consecutive disagreeing steps; it starts at t when t disagrees
+// and t - 1 does not (or t is the first step).
+bool PredictionModel::startsStretch(std::int64_t t, std::optional<SensorGroup> group) const {
+  return disagreesAt(groups_, t, group) && (t == 0 || !disagreesAt(groups_, t - 1, group));
+}
+
 std::optional<std::int64_t> PredictionModel::nextDisagreement(
     std::int64_t from, std::optional<SensorGroup> group) const {
   if (steps_ <= 0) return std::nullopt;
   for (std::int64_t k = 1; k <= steps_; ++k) {
     const std::int64_t t = ((from + k) % steps_ + steps_) % steps_;
-    if (disagreesAt(groups_, t, group)) return t;
+    if (startsStretch(t, group)) return t;
   }
   return std::nullopt;
 }
@@ -260,9 +266,14 @@ std::optional<std::int64_t> PredictionModel::nextDisagreement(
 std::optional<std::int64_t> PredictionModel::previousDisagreement(
     std::int64_t from, std::optional<SensorGroup> group) const {
   if (steps_ <= 0) return std::nullopt;
+  // From inside a stretch (past its first step), the previous one is the stretch before it, as N
+  // from inside a stretch skips the rest of it.
+  from = std::clamp<std::int64_t>(from, 0, steps_ - 1);
+  while (from > 0 && disagreesAt(groups_, from, group) && disagreesAt(groups_, from - 1, group))
+    --from;
   for (std::int64_t k = 1; k <= steps_; ++k) {
     const std::int64_t t = ((from - k) % steps_ + steps_) % steps_;
-    if (disagreesAt(groups_, t, group)) return t;
+    if (startsStretch(t, group)) return t;
   }
   return std::nullopt;
 }

@@ -86,8 +86,10 @@ class PredictionModel : public QObject {
   // Holes at one step (sorted by step, so this is a range lookup).
   std::vector<HoleMark> holesAt(std::int64_t step) const;
 
-  // The next (or previous) step after `from` where the prediction disagrees with the labels, in
-  // `group` or in any group; wraps around the run. nullopt when there is none.
+  // The first step of the next (or previous) stretch of consecutive steps where the prediction
+  // disagrees with the labels, in `group` or in any group; wraps around the run. From inside a
+  // stretch, next skips the rest of it and previous goes to the stretch before it. nullopt when
+  // nothing disagrees.
   std::optional<std::int64_t> nextDisagreement(std::int64_t from,
                                                std::optional<SensorGroup> group) const;
   std::optional<std::int64_t> previousDisagreement(std::int64_t from,
@@ -103,6 +105,7 @@ class PredictionModel : public QObject {
   struct Result;
   void accept(std::shared_ptr<Result> result);
   void updateDisagreements();
+  bool startsStretch(std::int64_t t, std::optional<SensorGroup> group) const;
 
   LabelModel* labels_;
   QFuture<void> future_;

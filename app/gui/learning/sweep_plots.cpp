@@ -5,6 +5,7 @@
 #include <QHBoxLayout>
 #include <QMessageBox>
 #include <QPushButton>
+#include <QToolTip>
 #include <QVBoxLayout>
 
 #include <algorithm>
@@ -15,11 +16,12 @@ namespace tactile::gui {
 
 namespace {
 
-const QColor kSeriesColours[] = {QColor(0x1f, 0x77, 0xb4), QColor(0xd6, 0x27, 0x28),
-                                 QColor(0x2c, 0xa0, 0x2c), QColor(0xff, 0x7f, 0x0e),
-                                 QColor(0x94, 0x67, 0xbd), QColor(0x8c, 0x56, 0x4b),
-                                 QColor(0xe3, 0x77, 0xc2), QColor(0x17, 0xbe, 0xcf),
-                                 QColor(0x7f, 0x7f, 0x7f), QColor(0xbc, 0xbd, 0x22)};
+// Okabe and Ito's palette (yellow darkened to show on white): its hues stay apart for readers
+// with any common colour-vision deficiency, and no red sits beside a green.
+const QColor kSeriesColours[] = {QColor(0x00, 0x72, 0xb2), QColor(0xe6, 0x9f, 0x00),
+                                 QColor(0x00, 0x9e, 0x73), QColor(0xcc, 0x79, 0xa7),
+                                 QColor(0x56, 0xb4, 0xe9), QColor(0xd5, 0x5e, 0x00),
+                                 QColor(0xb8, 0xa9, 0x00), QColor(0x00, 0x00, 0x00)};
 constexpr int kColourCount = sizeof kSeriesColours / sizeof kSeriesColours[0];
 const QCPScatterStyle::ScatterShape kShapes[] = {QCPScatterStyle::ssCircle,
                                                  QCPScatterStyle::ssSquare,
@@ -32,6 +34,38 @@ const QCPScatterStyle::ScatterShape kShapes[] = {QCPScatterStyle::ssCircle,
 constexpr int kShapeCount = sizeof kShapes / sizeof kShapes[0];
 // More series than this leave the legend out (it would be taller than the figure).
 constexpr int kMaxLegendEntries = 24;
+
+// Text ticks at given values, of which it keeps only those whose labels do not run into the
+// previous kept one at the axis's current length (swept values like 0.004 and 0.005 sit close on
+// a log axis).
+class SparseTextTicker : public QCPAxisTickerText {
+ public:
+  explicit SparseTextTicker(QCPAxis* axis) : axis_(axis) {}
+  void generate(const QCPRange& range, const QLocale& locale, QChar formatChar, int precision,
+                QVector<double>& ticks, QVector<double>* subTicks,
+                QVector<QString>* tickLabels) override {
+    QCPAxisTickerText::generate(range, locale, formatChar, precision, ticks, subTicks, tickLabels);
+    if (tickLabels == nullptr || tickLabels->size() != ticks.size()) return;
+    const QFontMetrics metrics(axis_->tickLabelFont());
+    QVector<double> keptTicks;
+    QVector<QString> keptLabels;
+    double lastRight = -HUGE_VAL;
+    for (qsizetype i = 0; i < ticks.size(); ++i) {
+      const double half = metrics.horizontalAdvance(tickLabels->at(i)) / 2.0;
+      const double x = axis_->coordToPixel(ticks[i]);
+      if (x - half < lastRight + kLabelGapPixels) continue;
+      lastRight = x + half;
+      keptTicks << ticks[i];
+      keptLabels << tickLabels->at(i);
+    }
+    ticks = keptTicks;
+    *tickLabels = keptLabels;
+  }
+
+ private:
+  static constexpr double kLabelGapPixels = 8.0;
+  QCPAxis* axis_;
+};
 
 void useLogAxis(QCPAxis* axis) {
   axis->setScaleType(QCPAxis::stLogarithmic);
@@ -91,7 +125,26 @@ SweepPlot::SweepPlot(QWidget* parent) : QWidget(parent) {
   empty_->position->setCoords(0.5, 0.5);
   empty_->setPositionAlignment(Qt::AlignCenter);
   empty_->setColor(QColor(0x60, 0x60, 0x60));
+  ring_ = new QCPItemTracer(plot_);
+  ring_->setClipToAxisRect(false);
+  ring_->setStyle(QCPItemTracer::tsCircle);
+  ring_->setSize(17);
+  ring_->setPen(QPen(QColor(0xff, 0xc4, 0x00), 3));
+  ring_->setBrush(Qt::NoBrush);
+  ring_->setVisible(false);
   connect(plot_, &QCustomPlot::plottableClick, this, &SweepPlot::onPlottableClick);
+  // The wheel zooms about the pointer, a drag pans, a double click shows everything again, and
+  // hovering a point tells its values.
+  plot_->setInteractions(QCP::iRangeDrag | QCP::iRangeZoom);
+  plot_->setMouseTracking(true);
+  connect(plot_, &QCustomPlot::mouseMove, this, [this](QMouseEvent* event) {
+    const QString tip = pointTip(event->position());
+    if (tip.isEmpty())
+      QToolTip::hideText();
+    else
+      QToolTip::showText(plot_->mapToGlobal(event->position().toPoint()), tip, plot_);
+  });
+  connect(plot_, &QCustomPlot::mouseDoubleClick, this, [this] { resetView(); });
   auto* png = new QPushButton(tr("Export PNG..."));
   png->setObjectName(QStringLiteral("exportPng"));
   auto* pdf = new QPushButton(tr("Export PDF..."));
@@ -116,7 +169,7 @@ SweepPlot::SweepPlot(QWidget* parent) : QWidget(parent) {
   layout->setContentsMargins(0, 0, 0, 0);
   layout->addWidget(plot_, 1);
   layout->addLayout(buttons);
-  finish(tr("No cells with a model yet."));
+  finish(tr("No fitted cells yet."));
 }
 
 void SweepPlot::clear() {
@@ -134,9 +187,12 @@ void SweepPlot::clear() {
 void SweepPlot::finish(const QString& emptyText) {
   mark_ = plot_->addGraph();
   mark_->setLineStyle(QCPGraph::lsNone);
-  mark_->setScatterStyle(QCPScatterStyle(QCPScatterStyle::ssCircle,
-                                         QPen(QColor(0xff, 0xc4, 0x00), 3), Qt::NoBrush, 17));
+  // The graph holds the marked point; the ring drawn is an item, which unlike a graph may reach
+  // past the axes, so a ring on a point at 0 or 100 is drawn whole.
+  mark_->setScatterStyle(QCPScatterStyle(QCPScatterStyle::ssNone));
   mark_->removeFromLegend();
+  homeX_ = {plot_->xAxis->range().lower, plot_->xAxis->range().upper};
+  homeY_ = {plot_->yAxis->range().lower, plot_->yAxis->range().upper};
   const bool legend = seriesCount_ > 0 && plot_->legend->itemCount() <= kMaxLegendEntries;
   if (!legend) plot_->legend->clearItems();
   plot_->legend->setVisible(legend);
@@ -168,7 +224,7 @@ void SweepPlot::showRates(const std::vector<analysis::RateSeries>& series,
   }
   plot_->xAxis->setLabel(variable == analysis::SweptVariable::Floor ? tr("Variance floor")
                                                                     : tr("Model order"));
-  plot_->yAxis->setLabel(tr("Correct rate per class (%)"));
+  plot_->yAxis->setLabel(tr("Recall per class (%)"));
   std::sort(xs.begin(), xs.end());
   xs.erase(std::unique(xs.begin(), xs.end()), xs.end());
 
@@ -242,7 +298,7 @@ void SweepPlot::showRates(const std::vector<analysis::RateSeries>& series,
     pointCount_ += static_cast<int>(keys.size());
     ++seriesCount_;
   }
-  QSharedPointer<QCPAxisTickerText> ticks(new QCPAxisTickerText);
+  QSharedPointer<SparseTextTicker> ticks(new SparseTextTicker(plot_->xAxis));
   for (double x : xs)
     ticks->addTick(x, QString::number(x, 'g', 4));
   plot_->xAxis->setTicker(ticks);
@@ -250,7 +306,7 @@ void SweepPlot::showRates(const std::vector<analysis::RateSeries>& series,
   if (log && xs.size() > 1) range = QCPRange(xs.front() / 1.6, xs.back() * 1.6);
   plot_->xAxis->setRange(range);
   plot_->yAxis->setRange(0, 105);
-  finish(tr("No cells with a model yet."));
+  finish(tr("No fitted cells yet."));
 }
 
 void SweepPlot::showTimeError(const analysis::SweepResult& sweep,
@@ -321,15 +377,19 @@ void SweepPlot::showTimeError(const analysis::SweepResult& sweep,
   }
   plot_->xAxis->setRange(paddedRange(times, true));
   plot_->yAxis->setRange(0, 105);
-  finish(tr("No cells with a model scored on test rows."));
+  finish(tr("No fitted cells scored on test rows."));
 }
 
 void SweepPlot::markCell(int cellIndex) {
   marked_ = cellIndex;
   if (mark_ == nullptr) return;
   mark_->data()->clear();
-  if (const auto it = pointOf_.find(cellIndex); it != pointOf_.end())
+  ring_->setVisible(false);
+  if (const auto it = pointOf_.find(cellIndex); it != pointOf_.end()) {
     mark_->addData(it->second.x(), it->second.y());
+    ring_->position->setCoords(it->second.x(), it->second.y());
+    ring_->setVisible(true);
+  }
   plot_->replot(QCustomPlot::rpQueuedReplot);
 }
 
@@ -339,6 +399,44 @@ void SweepPlot::onPlottableClick(QCPAbstractPlottable* plottable, int dataIndex,
     return;
   const int cell = it->second[static_cast<std::size_t>(dataIndex)];
   if (cell >= 0) emit cellClicked(cell);
+}
+
+void SweepPlot::resetView() {
+  plot_->xAxis->setRange(homeX_.first, homeX_.second);
+  plot_->yAxis->setRange(homeY_.first, homeY_.second);
+  plot_->replot(QCustomPlot::rpQueuedReplot);
+}
+
+QString SweepPlot::pointTip(QPointF pos) const {
+  constexpr double kReachPixels = 8.0;
+  double best = kReachPixels;
+  QString tip;
+  for (const auto& [plottable, cells] : cellsOf_) {
+    const auto* graph = qobject_cast<const QCPGraph*>(plottable);
+    if (graph == nullptr || graph == front_) continue;
+    const auto data = graph->data();
+    for (int i = 0; i < data->size(); ++i) {
+      const QCPGraphData& d = *(data->constBegin() + i);
+      const double dx = plot_->xAxis->coordToPixel(d.key) - pos.x();
+      const double dy = plot_->yAxis->coordToPixel(d.value) - pos.y();
+      const double distance = std::hypot(dx, dy);
+      if (distance > best) continue;
+      best = distance;
+      const int cell = i < static_cast<int>(cells.size()) ? cells[static_cast<std::size_t>(i)] : -1;
+      tip = tr("%1\n%2: %3\n%4: %5%6")
+                .arg(graph->name())
+                .arg(plot_->xAxis->label())
+                .arg(d.key, 0, 'g', 4)
+                .arg(plot_->yAxis->label())
+                .arg(d.value, 0, 'f', 1)
+                .arg(cell >= 0 ? tr("\ncell %1 (click to select)").arg(cell) : QString());
+    }
+  }
+  return tip;
+}
+
+QString SweepPlot::tipAt(QPoint pos) const {
+  return pointTip(QPointF(plot_->mapFrom(this, pos)));
 }
 
 bool SweepPlot::exportPng(const QString& path) {

@@ -9,6 +9,7 @@
 
 #include <map>
 #include <optional>
+#include <utility>
 #include <vector>
 
 #include "analysis/report.h"
@@ -18,6 +19,7 @@ class QCustomPlot;
 class QCPAbstractPlottable;
 class QCPGraph;
 class QCPItemText;
+class QCPItemTracer;
 class QMouseEvent;
 
 namespace tactile::gui {
@@ -45,8 +47,15 @@ class SweepPlot : public QWidget {
   QCPGraph* frontGraph() const { return front_; }
   // The ring around the marked cell: empty when none is marked.
   QCPGraph* markGraph() const { return mark_; }
+  // The ring drawn there (visible only with a marked cell; never clipped at the axes).
+  QCPItemTracer* markRing() const { return ring_; }
   // Shown over an empty figure (no cells with a model), else empty.
   QString emptyMessage() const;
+
+  // The values of the point within a few pixels of `pos` (this widget's coordinates), else empty.
+  QString tipAt(QPoint pos) const;
+  // Back to the whole figure after a zoom or pan (also a double click).
+  void resetView();
 
   bool exportPng(const QString& path);
   bool exportPdf(const QString& path);
@@ -58,15 +67,19 @@ class SweepPlot : public QWidget {
   void clear();
   void finish(const QString& emptyText);
   void onPlottableClick(QCPAbstractPlottable* plottable, int dataIndex, QMouseEvent* event);
+  QString pointTip(QPointF plotPos) const;
 
   QCustomPlot* plot_ = nullptr;
   QCPGraph* front_ = nullptr;
   QCPGraph* mark_ = nullptr;
   QCPItemText* empty_ = nullptr;
+  QCPItemTracer* ring_ = nullptr;
   int seriesCount_ = 0;
   int frontCount_ = 0;
   int pointCount_ = 0;
   int marked_ = -1;
+  std::pair<double, double> homeX_{0, 1};  // the axis ranges the figure was drawn with
+  std::pair<double, double> homeY_{0, 1};
   // Points of each graph, by data index: the cell they stand for.
   std::map<const QCPAbstractPlottable*, std::vector<int>> cellsOf_;
   // Where each drawn cell's point is (plot coordinates).

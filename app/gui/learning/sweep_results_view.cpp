@@ -57,7 +57,8 @@ std::optional<QColor> confusionColour(const analysis::ConfusionMatrix& m, int ro
   const double share = m.percent(t, p).value_or(0.0) / 100.0;
   if (share <= 0.0) return std::nullopt;
   const int alpha = static_cast<int>(40 + 180 * share);
-  return t == p ? QColor(46, 160, 67, alpha) : QColor(214, 39, 40, alpha);
+  // Blue and orange (Okabe-Ito), told apart by colour-blind readers, unlike green and red.
+  return t == p ? QColor(0, 114, 178, alpha) : QColor(230, 159, 0, alpha);
 }
 
 QString describe(const analysis::SweepCell& c) {
@@ -306,11 +307,16 @@ void SweepResultsView::refreshTitle() {
     title_->setText(tr("No sweep"));
     return;
   }
-  std::size_t ok = 0;
+  std::size_t fitted = 0;
   for (const analysis::SweepCellResult& r : sweep_.cells)
-    ok += r.ok ? 1 : 0;
-  QString text =
-      tr("Sweep %1: %2 cells, %3 with a model").arg(sweepId_).arg(sweep_.cells.size()).arg(ok);
+    fitted += r.ok ? 1 : 0;
+  // A sweep fits and scores its cells and keeps their numbers; it stores no model.
+  QString text = tr("Sweep %1: %2 cells, %3 fitted, %4 failed; no model is stored (Store Model "
+                    "of Cell stores one)")
+                     .arg(sweepId_)
+                     .arg(sweep_.cells.size())
+                     .arg(fitted)
+                     .arg(sweep_.cells.size() - fitted);
   if (sweep_.cancelled) text += QLatin1Char(' ') + tr("(cancelled: the finished cells)");
   title_->setText(text);
 }
@@ -342,10 +348,10 @@ void SweepResultsView::refreshFigures() {
     groups.emplace_back(r.cell.group, analysis::binaryConfusions(r.confusion, r.classes));
   }
   if (groups.empty()) {
-    oneVsRest_->setMessage(tr("No cell has a model yet."));
+    oneVsRest_->setMessage(tr("No cell is fitted yet."));
   } else {
     analysis::Table t = analysis::oneVsRestRateTable(groups);
-    t.title += " - " + tr("each group's best cell").toStdString();
+    t.title = tr("Precision per class, one-vs-rest, % - each group's best cell").toStdString();
     oneVsRest_->setTable(t);
   }
   figuresStale_ = false;
@@ -362,7 +368,7 @@ void SweepResultsView::refreshCellDetails() {
   cellTitle_->setText(tr("Cell %1: %2").arg(selected_).arg(describe(r.cell)));
   QString why;
   if (!r.ok) {
-    why = tr("This cell has no model: %1").arg(QString::fromStdString(r.reason));
+    why = tr("This cell could not be fitted: %1").arg(QString::fromStdString(r.reason));
   } else if (r.confusion.total() == 0) {
     why = tr("This cell was not scored: the test runs have no labelled rows of its group.");
   }
@@ -380,11 +386,15 @@ void SweepResultsView::refreshCellDetails() {
                      [&m](int row, int column) { return confusionColour(m, row, column); });
   analysis::Table own =
       analysis::oneVsRestRateTable({{r.cell.group, analysis::binaryConfusions(m, r.classes)}});
-  own.title += " - " + tr("this cell").toStdString();
+  own.title = tr("Precision per class, one-vs-rest (of the steps predicted a class, the share "
+                 "that are it; thesis table 4.19's correct rate), % - this cell")
+                  .toStdString();
   cellOneVsRest_->setTable(own);
   rates_->setTable(
       analysis::classRateTable({{std::string(groupInfo(r.cell.group).shortName), r.metrics}},
-                               tr("Per-class correct rate of this cell (%)").toStdString()));
+                               tr("Recall per class of this cell (of the steps of a class, the "
+                                  "share predicted as it), %")
+                                   .toStdString()));
   if (r.patterns.rows.empty()) {
     patterns_->setMessage(tr("No contact patterns were kept for this cell."));
   } else {

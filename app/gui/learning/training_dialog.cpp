@@ -15,8 +15,10 @@
 #include <QSortFilterProxyModel>
 #include <QSpinBox>
 #include <QSplitter>
+#include <QStackedWidget>
 #include <QTableView>
 #include <QTableWidget>
+#include <QThread>
 #include <QVBoxLayout>
 
 #include <algorithm>
@@ -87,6 +89,7 @@ TrainingDialog::~TrainingDialog() = default;
 
 void TrainingDialog::buildUi() {
   auto* settings = new QWidget;
+  form_ = settings;
   auto* form = new QFormLayout(settings);
 
   labelSet_ = new QComboBox;
@@ -189,6 +192,21 @@ void TrainingDialog::buildUi() {
          "tactile train does; unticked, the first value of every list above"));
   form->addRow(tr("Train model with:"), groupDefaults_);
 
+  plan_ = new QLabel;
+  plan_->setObjectName(QStringLiteral("plan"));
+  plan_->setWordWrap(true);
+  form->addRow(tr("Plan:"), plan_);
+  // The plan follows every edit, and an error shown for a bad form goes once it is fixed.
+  for (QLineEdit* e : {orders_, floors_, seeds_})
+    connect(e, &QLineEdit::textChanged, this, &TrainingDialog::refreshPlan);
+  for (const std::vector<QCheckBox*>* list : {&groups_, &forms_, &features_})
+    for (QCheckBox* box : *list)
+      connect(box, &QCheckBox::toggled, this, &TrainingDialog::refreshPlan);
+  for (QCheckBox* box : {gaussian_, gmm_})
+    connect(box, &QCheckBox::toggled, this, &TrainingDialog::refreshPlan);
+  connect(threads_, &QSpinBox::valueChanged, this, &TrainingDialog::refreshPlan);
+  connect(runs_, &QTableWidget::itemChanged, this, &TrainingDialog::refreshPlan);
+
   sweepButton_ = new QPushButton(tr("Run sweep"));
   sweepButton_->setObjectName(QStringLiteral("runSweep"));
   sweepButton_->setDefault(true);
@@ -236,7 +254,19 @@ void TrainingDialog::buildUi() {
   resultsLayout->setContentsMargins(0, 0, 0, 0);
   resultsLayout->addWidget(progress_);
   resultsLayout->addWidget(status_);
-  resultsLayout->addWidget(cellsView_, 1);
+  trainResult_ = new QTableWidget(0, 6);
+  trainResult_->setObjectName(QStringLiteral("trainResult"));
+  trainResult_->setHorizontalHeaderLabels({tr("Group"), tr("Balanced accuracy %"), tr("Accuracy %"),
+                                           tr("Training samples"), tr("Test samples"),
+                                           tr("Fit s")});
+  trainResult_->verticalHeader()->hide();
+  trainResult_->setEditTriggers(QAbstractItemView::NoEditTriggers);
+  trainResult_->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
+  trainResult_->horizontalHeader()->setStretchLastSection(true);
+  resultStack_ = new QStackedWidget;
+  resultStack_->addWidget(cellsView_);
+  resultStack_->addWidget(trainResult_);
+  resultsLayout->addWidget(resultStack_, 1);
 
   auto* splitter = new QSplitter(Qt::Vertical);
   splitter->addWidget(settings);
@@ -261,6 +291,65 @@ void TrainingDialog::reload() {
   const int keep = labelSet_->findText(current);
   if (keep >= 0) labelSet_->setCurrentIndex(keep);
   fillRuns();
+  refreshTiming();
+}
+
+void TrainingDialog::refreshTiming() {
+  // The time of a cell as the newest stored sweep measured it, for the plan's estimate.
+  secondsPerCell_ = -1;
+  timedSweep_ = 0;
+  if (auto sweeps = workspace_.sweeps(); sweeps && !sweeps->empty()) {
+    for (auto it = sweeps->rbegin(); it != sweeps->rend() && timedSweep_ == 0; ++it) {
+      auto stored = workspace_.loadSweep(it->id);
+      if (!stored) continue;
+      double total = 0;
+      int timed = 0;
+      for (const analysis::SweepCellResult& c : stored->cells) {
+        if (!c.ok || !std::isfinite(c.fitSeconds + c.predictSeconds)) continue;
+        total += c.fitSeconds + c.predictSeconds;
+        ++timed;
+      }
+      if (timed > 0) {
+        secondsPerCell_ = total / timed;
+        timedSweep_ = it->id;
+      }
+    }
+  }
+  refreshPlan();
+}
+
+void TrainingDialog::refreshPlan() {
+  auto g = grid();
+  if (!g) {
+    plan_->setText(QStringLiteral("<span style=\"color:#b00020\">%1</span>")
+                       .arg(QString::fromStdString(g.errorText()).toHtmlEscaped()));
+    return;
+  }
+  const auto cells = static_cast<qint64>(analysis::expandGrid(g.value()).size());
+  QString text = tr("%n cell(s)", nullptr, static_cast<int>(cells));
+  if (secondsPerCell_ >= 0) {
+    const int threads = threads_->value() > 0 ? threads_->value() : QThread::idealThreadCount();
+    const double seconds =
+        secondsPerCell_ * static_cast<double>(cells) / std::max(1, std::min<int>(threads, cells));
+    text += tr(", about %1 (%2 s a cell as in sweep %3, on %n thread(s))", nullptr, threads)
+                .arg(duration(seconds))
+                .arg(secondsPerCell_, 0, 'f', 2)
+                .arg(timedSweep_);
+  } else {
+    text +=
+        tr("; the time left shows once the first cells finish (no sweep is stored yet to "
+           "estimate from)");
+  }
+  plan_->setText(text);
+  // A validation error in the status goes once the form is valid again.
+  if (statusIsError_ && !worker_->isRunning() && sweepRequest()) {
+    statusIsError_ = false;
+    status_->setText(tr("Ready."));
+  }
+}
+
+bool TrainingDialog::formEditable() const {
+  return form_->isEnabled();
 }
 
 void TrainingDialog::setLabelSet(const QString& name) {
@@ -444,11 +533,12 @@ void TrainingDialog::setBusy(bool busy) {
   sweepButton_->setEnabled(!busy);
   trainButton_->setEnabled(!busy);
   cancelButton_->setEnabled(busy);
-  labelSet_->setEnabled(!busy);
-  runs_->setEnabled(!busy);
+  // The whole form is locked while a job runs: what is shown is what runs.
+  form_->setEnabled(!busy);
 }
 
 void TrainingDialog::showError(const QString& message) {
+  statusIsError_ = true;
   status_->setText(
       QStringLiteral("<span style=\"color:#b00020\">%1</span>").arg(message.toHtmlEscaped()));
 }
@@ -461,6 +551,8 @@ void TrainingDialog::startSweep() {
   }
   const std::size_t total = analysis::expandGrid(request->grid).size();
   cells_->clear();
+  statusIsError_ = false;
+  resultStack_->setCurrentWidget(cellsView_);
   if (!worker_->startSweep(databasePath_, request.value())) return;
   setBusy(true);
   progress_->setRange(0, static_cast<int>(total));
@@ -475,6 +567,9 @@ void TrainingDialog::startTrain() {
     return;
   }
   if (!worker_->startTrain(databasePath_, request.value())) return;
+  statusIsError_ = false;
+  trainResult_->setRowCount(0);
+  resultStack_->setCurrentWidget(trainResult_);
   setBusy(true);
   progress_->setRange(0, 0);
   status_->setText(tr("Training started."));
@@ -517,7 +612,10 @@ void TrainingDialog::onFinished(const LearningJobResult& result) {
               .arg(result.sweepId)
               .arg(result.seconds, 0, 'f', 1));
     }
-    if (result.sweepId > 0 && result.cells > 0) emit sweepStored(result.sweepId);
+    if (result.sweepId > 0 && result.cells > 0) {
+      refreshTiming();  // the new sweep's cell times make the next estimate
+      emit sweepStored(result.sweepId);
+    }
   } else {
     if (result.ok) {
       QStringList lines;
@@ -535,6 +633,7 @@ void TrainingDialog::onFinished(const LearningJobResult& result) {
                            .arg(result.modelName)
                            .arg(result.seconds, 0, 'f', 1)
                            .arg(lines.join(QStringLiteral("; "))));
+      showTrainResult(result);
       emit modelTrained(result.modelName);
     } else if (result.cancelled) {
       progress_->setRange(0, 1);
@@ -545,6 +644,32 @@ void TrainingDialog::onFinished(const LearningJobResult& result) {
     }
   }
   emit jobFinished();
+}
+
+void TrainingDialog::showTrainResult(const LearningJobResult& result) {
+  trainResult_->setRowCount(0);
+  auto cell = [](const QString& text) {
+    auto* item = new QTableWidgetItem(text);
+    item->setTextAlignment(Qt::AlignRight | Qt::AlignVCenter);
+    return item;
+  };
+  for (const workspace::GroupTrainReport& g : result.groups) {
+    const int row = trainResult_->rowCount();
+    trainResult_->insertRow(row);
+    trainResult_->setItem(row, 0, new QTableWidgetItem(qs(groupInfo(g.group).shortName)));
+    if (!g.trained) {
+      trainResult_->setItem(
+          row, 1,
+          new QTableWidgetItem(tr("skipped: %1").arg(QString::fromStdString(g.skippedBecause))));
+      continue;
+    }
+    trainResult_->setItem(row, 1, cell(QString::number(100.0 * g.balancedAccuracy, 'f', 1)));
+    trainResult_->setItem(row, 2, cell(QString::number(100.0 * g.accuracy, 'f', 1)));
+    trainResult_->setItem(row, 3, cell(QString::number(g.samplesTrain)));
+    trainResult_->setItem(row, 4, cell(QString::number(g.samplesTest)));
+    trainResult_->setItem(row, 5, cell(QString::number(g.fitSeconds, 'f', 2)));
+  }
+  resultStack_->setCurrentWidget(trainResult_);
 }
 
 }  // namespace tactile::gui

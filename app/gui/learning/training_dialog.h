@@ -22,6 +22,7 @@ class QProgressBar;
 class QPushButton;
 class QSortFilterProxyModel;
 class QSpinBox;
+class QStackedWidget;
 class QTableView;
 class QTableWidget;
 
@@ -60,6 +61,13 @@ class TrainingDialog : public QDialog {
   QProgressBar* progressBar() const { return progress_; }
   QLabel* statusLabel() const { return status_; }
   QTableView* cellsView() const { return cellsView_; }
+  // The plan under the form: the number of cells and the time they should take, or what is
+  // wrong with the form; follows every edit.
+  QLabel* planLabel() const { return plan_; }
+  // A training's result: one row per group (shown instead of the cells after Train model).
+  QTableWidget* trainResultView() const { return trainResult_; }
+  // Whether the form (set, runs, grid) can be edited: not while a job runs.
+  bool formEditable() const;
 
  public slots:
   void startSweep();
@@ -82,6 +90,9 @@ class TrainingDialog : public QDialog {
   std::vector<std::string> runsWithRole(RunRole role) const;
   Result<analysis::SweepGrid> grid() const;
   void showError(const QString& message);
+  void refreshPlan();
+  void refreshTiming();
+  void showTrainResult(const LearningJobResult& result);
 
   workspace::Workspace& workspace_;
   QString databasePath_;
@@ -109,6 +120,13 @@ class TrainingDialog : public QDialog {
   QProgressBar* progress_ = nullptr;
   QLabel* status_ = nullptr;
   QTableView* cellsView_ = nullptr;
+  QWidget* form_ = nullptr;
+  QLabel* plan_ = nullptr;
+  bool statusIsError_ = false;  // the status shows a validation or job error
+  double secondsPerCell_ = -1;  // mean time of a cell in the newest stored sweep (-1: none)
+  qint64 timedSweep_ = 0;       // that sweep
+  QStackedWidget* resultStack_ = nullptr;
+  QTableWidget* trainResult_ = nullptr;
 };
 
 }  // namespace tactile::gui

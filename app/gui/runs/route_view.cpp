@@ -9,7 +9,9 @@
 #include <QWheelEvent>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <optional>
 #include <utility>
 #include <vector>
 
@@ -97,6 +99,27 @@ void drawBadge(QPainter& p, const QRect& area, const QString& text, bool bottom)
   p.drawRoundedRect(box, 4, 4);
   p.setPen(QColor(30, 30, 30));
   p.drawText(box, Qt::AlignCenter, text);
+}
+
+// Where a label of `size` goes next to the point `at`: the first of four places around it that
+// lies inside `area` and overlaps no label already placed (then it is added to `placed`);
+// nullopt when every place is taken, so the label is left out rather than drawn over another.
+std::optional<QRectF> placeLabel(QPointF at, QSizeF size, const QRectF& area,
+                                 std::vector<QRectF>& placed) {
+  const std::array<QPointF, 4> corners{
+      QPointF(at.x() + 6, at.y() - 4 - size.height()), QPointF(at.x() + 6, at.y() + 4),
+      QPointF(at.x() - 6 - size.width(), at.y() - 4 - size.height()),
+      QPointF(at.x() - 6 - size.width(), at.y() + 4)};
+  for (const QPointF& c : corners) {
+    const QRectF r(c, size);
+    if (!area.contains(r)) continue;
+    if (std::any_of(placed.begin(), placed.end(),
+                    [&r](const QRectF& other) { return other.intersects(r); }))
+      continue;
+    placed.push_back(r);
+    return r;
+  }
+  return std::nullopt;
 }
 
 }  // namespace
@@ -379,6 +402,11 @@ struct RouteView::Impl {
     small.setPointSizeF(small.pointSizeF() * 0.8);
     p.setFont(small);
     int drawn = 0;
+    const QFontMetricsF metrics(small);
+    // Labels stay inside the view, clear of the badges at the top and bottom and of each other.
+    const QRectF area =
+        QRectF(q->rect()).adjusted(2, metrics.height() + 16, -2, -(metrics.height() + 16));
+    std::vector<QRectF> placed;
     for (std::size_t i = 0; i < holes.size() && drawn < kMaxHoleMarks; ++i) {
       // The first step of a run of steps with a hole on the same side.
       bool continues = false;
@@ -391,7 +419,9 @@ struct RouteView::Impl {
       p.setPen(QPen(QColor(20, 20, 20), 1.5));
       p.setBrush(QColor(255, 200, 0));
       p.drawRect(QRectF(at.x() - 3.5, at.y() - 3.5, 7, 7));
-      p.drawText(at + QPointF(6, -4), RouteView::tr("hole %1").arg(holes[i].widthUnits, 0, 'f', 1));
+      const QString text = RouteView::tr("hole %1").arg(holes[i].widthUnits, 0, 'f', 1);
+      if (const auto box = placeLabel(at, metrics.size(0, text), area, placed))
+        p.drawText(*box, Qt::AlignLeft | Qt::AlignVCenter, text);
       ++drawn;
     }
     const Pose2d pose = poseAt(session->currentStep());
@@ -406,8 +436,10 @@ struct RouteView::Impl {
       p.setPen(QPen(QColor(255, 140, 0), 3.0, Qt::DashLine, Qt::RoundCap));
       p.drawLine(pa, pb);
       p.setPen(QColor(20, 20, 20));
-      p.drawText((pa + pb) / 2 + QPointF(6, 12),
-                 RouteView::tr("hole %1 wide").arg(h.widthUnits, 0, 'f', 1));
+      const QString text = RouteView::tr("hole %1 wide").arg(h.widthUnits, 0, 'f', 1);
+      if (const auto box = placeLabel((pa + pb) / 2, metrics.size(0, text),
+                                      QRectF(q->rect()).adjusted(2, 2, -2, -2), placed))
+        p.drawText(*box, Qt::AlignLeft | Qt::AlignVCenter, text);
     }
   }
 
@@ -514,6 +546,15 @@ void RouteView::setColourMode(ColourMode mode) {
   emit viewSettingsChanged();
 }
 
+QString RouteView::badgeText() const {
+  // Zoomed or panned, the view no longer shows what the mode's name says.
+  const bool moved = d_->zoom != 1.0 || !d_->pan.isNull();
+  if (!moved) return d_->whole ? tr("Whole scene (M: close-up)") : tr("Close-up (M: whole scene)");
+  const QString zoom = QString::number(d_->zoom, 'f', d_->zoom < 10 ? 1 : 0);
+  return d_->whole ? tr("Zoomed %1x (double click: whole scene)").arg(zoom)
+                   : tr("Close-up zoomed %1x (double click: close-up)").arg(zoom);
+}
+
 bool RouteView::wholeScene() const {
   return d_->whole;
 }
@@ -606,8 +647,7 @@ void RouteView::paintEvent(QPaintEvent*) {
   d_->drawRobot(p, xf);
   d_->drawHoles(p, xf);
   p.setRenderHint(QPainter::Antialiasing, false);
-  drawBadge(p, rect(),
-            d_->whole ? tr("Whole scene (M: close-up)") : tr("Close-up (M: whole scene)"), false);
+  drawBadge(p, rect(), badgeText(), false);
 }
 
 void RouteView::mousePressEvent(QMouseEvent* event) {

@@ -34,6 +34,8 @@ class RouteView : public QWidget {
   void setColourMode(ColourMode mode);
   // Whole scene (true) or the close-up following the robot (false).
   bool wholeScene() const;
+  // The badge at the top: the mode, or the zoom once zoomed or panned.
+  QString badgeText() const;
   void setWholeScene(bool whole);
 
   void saveSettings(QSettings& settings) const;

@@ -42,8 +42,10 @@ RunListView::RunListView(RunListModel* model, QWidget* parent) : QWidget(parent)
   layout->addWidget(table_);
 
   // Spaces around what was typed or pasted are never part of a run's name.
-  connect(filter_, &QLineEdit::textChanged, this,
-          [this](const QString& text) { proxy_->setFilterFixedString(text.trimmed()); });
+  connect(filter_, &QLineEdit::textChanged, this, [this](const QString& text) {
+    proxy_->setFilterFixedString(text.trimmed());
+    emit filterChanged(text);
+  });
   auto choose = [this](const QModelIndex& index) {
     if (!index.isValid()) return;
     const QModelIndex source = proxy_->mapToSource(index);

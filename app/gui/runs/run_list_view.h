@@ -28,6 +28,7 @@ class RunListView : public QWidget {
 
  signals:
   void runChosen(const QString& name);
+  void filterChanged(const QString& text);
 
  private:
   RunListModel* model_;

@@ -90,6 +90,7 @@ StepControlsView::StepControlsView(RunSession* session, QWidget* parent)
     }
   });
   connect(play_, &QToolButton::toggled, this, &StepControlsView::setPlaying);
+  connect(speed_, &QComboBox::currentIndexChanged, this, [this] { emit speedChanged(speed()); });
   connect(session_, &RunSession::runOpened, this, &StepControlsView::syncToRun);
   connect(session_, &RunSession::currentStepChanged, this, &StepControlsView::showStep);
   syncToRun();
@@ -141,7 +142,12 @@ void StepControlsView::syncToRun() {
     spin_->setRange(0, toInt(last));
     slider_->setRange(0, std::min(toInt(last), 1'000'000));
   }
-  total_->setText(tr("of %1").arg(QLocale().toString(static_cast<qlonglong>(last))));
+  // Counted as the runs list counts: the number of steps. Steps are numbered from 0, so the last
+  // one is that number minus one.
+  const std::int64_t count = open ? session_->stepCount() : 0;
+  total_->setText(tr("of %1 steps").arg(QLocale().toString(static_cast<qlonglong>(count))));
+  total_->setToolTip(
+      tr("Steps are numbered from 0 to %1").arg(QLocale().toString(static_cast<qlonglong>(last))));
   showStep(session_->currentStep());
 }
 

@@ -32,6 +32,9 @@ class StepControlsView : public QWidget {
   void setPlaying(bool play);
   void togglePlaying() { setPlaying(!playing()); }
 
+ signals:
+  void speedChanged(int stepsPerSecond);
+
  private:
   void syncToRun();
   void showStep(std::int64_t step);

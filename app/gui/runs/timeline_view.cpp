@@ -175,7 +175,11 @@ struct TimelineView::Impl {
   QCPLayer* cursorLayer = nullptr;
   std::vector<QCPItemLine*> cursors;
   std::vector<QCPItemRect*> bands;
+  // The selected group: outlined in the heatmap (its sensor rows) and in the label rows.
+  QCPItemRect* groupHeatMark = nullptr;
+  QCPItemRect* groupLabelMark = nullptr;
   QCPItemRect* edgePreview = nullptr;
+  int rowHeight = 16;  // pixels per label, truth or model row
   std::vector<QCPItemStraightLine*> labelSeparators;
 
   Channel channel = Channel::Normal;
@@ -223,6 +227,9 @@ struct TimelineView::Impl {
   // Over a model row: the predicted class and its posterior; over the holes row: the holes with
   // their widths. Empty elsewhere.
   QString predictionTip(QPointF pos) const;
+  // Over the heatmap: the sensor and its value; over the heading or command strip: the step's
+  // heading or command. Empty elsewhere.
+  QString trackTip(QPointF pos) const;
   // A label-rect row's rectangle in the widget's coordinates.
   QRect rowRect(int row) const {
     const QCPAxis* y = labelRect->axis(QCPAxis::atLeft);
@@ -281,8 +288,8 @@ void TimelineView::Impl::build() {
       syncing = false;
     });
   }
-  headRect->setMinimumSize(50, 10);  // axis rects default to at least 50 px high
-  cmdRect->setMinimumSize(50, 30);
+  headRect->setMinimumSize(50, 10);     // axis rects default to at least 50 px high
+  cmdRect->setMinimumSize(50, 5 * 11);  // five lanes, each as tall as its name
   labelRect->axis(QCPAxis::atBottom)->setLabel(TimelineView::tr("Step"));
   labelRect->axis(QCPAxis::atBottom)->setNumberFormat(QStringLiteral("f"));
   labelRect->axis(QCPAxis::atBottom)->setNumberPrecision(0);
@@ -334,10 +341,21 @@ void TimelineView::Impl::build() {
   }
   setRowNames(heatRect, at, names, kSensorCount);
   setRowNames(headRect, {0.0}, {TimelineView::tr("heading")}, 1);
-  setRowNames(cmdRect, {0, 1, 2, 3, 4},
-              {TimelineView::tr("L"), TimelineView::tr("R"), TimelineView::tr("F"),
-               TimelineView::tr("B"), TimelineView::tr("blocked")},
-              kLaneCount);
+  setRowNames(
+      cmdRect, {0, 1, 2, 3, 4},
+      {TimelineView::tr("turn left"), TimelineView::tr("turn right"), TimelineView::tr("forward"),
+       TimelineView::tr("backward"), TimelineView::tr("blocked")},
+      kLaneCount);
+  // Legends of the two strips, beside them where the heatmap has its colour bar.
+  auto legend = [&](int row, const QString& text) {
+    auto* t = new QCPTextElement(plot, text, small);
+    t->setTextFlags(Qt::AlignLeft | Qt::AlignVCenter);
+    grid->addElement(row, 1, t);
+    return t;
+  };
+  legend(1, TimelineView::tr("blue: facing +x\nred: facing \u2212x"))
+      ->setTextColor(QColor(60, 60, 60));
+  legend(2, TimelineView::tr("red: command\ngrey: blocked"))->setTextColor(QColor(60, 60, 60));
   for (int lane = 1; lane < kLaneCount; ++lane)
     rowSeparator(plot, cmdRect, lane - 0.5, QColor(225, 225, 225));
 
@@ -353,8 +371,9 @@ void TimelineView::Impl::build() {
     band->setClipAxisRect(r);
     spanRect(band->topLeft, r);
     spanRect(band->bottomRight, r);
-    band->setPen(QPen(QColor(40, 40, 40, 170), 1));
-    band->setBrush(QColor(40, 40, 40, 55));
+    // Violet: no class colour, and not the grey of NoContact.
+    band->setPen(QPen(QColor(120, 30, 170, 200), 1));
+    band->setBrush(QColor(150, 60, 210, 60));
     band->setVisible(false);
     bands.push_back(band);
     auto* line = new QCPItemLine(plot);
@@ -365,6 +384,22 @@ void TimelineView::Impl::build() {
     line->setPen(QPen(QColor(20, 20, 20), 2));
     cursors.push_back(line);
   }
+  auto groupMark = [&](QCPAxisRect* r) {
+    auto* mark = new QCPItemRect(plot);
+    mark->setLayer(cursorLayer);
+    mark->setClipAxisRect(r);
+    for (QCPItemPosition* p : {mark->topLeft, mark->bottomRight}) {
+      p->setAxes(r->axis(QCPAxis::atBottom), r->axis(QCPAxis::atLeft));
+      p->setAxisRect(r);
+      p->setTypeX(QCPItemPosition::ptAxisRectRatio);
+      p->setTypeY(QCPItemPosition::ptPlotCoords);
+    }
+    mark->setPen(QPen(QColor(20, 20, 20), 2));
+    mark->setBrush(Qt::NoBrush);
+    return mark;
+  };
+  groupHeatMark = groupMark(heatRect);
+  groupLabelMark = groupMark(labelRect);
   edgePreview = new QCPItemRect(plot);
   edgePreview->setLayer(cursorLayer);
   edgePreview->setClipAxisRect(labelRect);
@@ -409,8 +444,14 @@ void TimelineView::Impl::configureLabelRows() {
     const double y = labelRow(SensorGroup(g)) - 0.5;
     labelSeparators.push_back(rowSeparator(plot, labelRect, y, QColor(150, 150, 150)));
   }
-  // Heights roughly in proportion to rows; the label rect also carries the step axis.
-  plot->plotLayout()->setRowStretchFactors({44.0, 2.2, 8.0, rows * 1.6 + 7.0});
+  // Label rows have the chosen height; the heatmap takes what is left (at least 88 px, two per
+  // sensor), so the window asks for enough height to show every row.
+  const int labelHeight = rows * rowHeight;
+  labelRect->setMinimumSize(50, labelHeight);
+  labelRect->setMaximumSize(QWIDGETSIZE_MAX, labelHeight);
+  heatRect->setMinimumSize(50, 2 * kSensorCount);
+  plot->plotLayout()->setRowStretchFactors({44.0, 2.2, 8.0, 1.0});
+  plot->setMinimumHeight(labelHeight + 2 * kSensorCount + 10 + 55 + 90);
 }
 
 QString TimelineView::Impl::predictionTip(QPointF pos) const {
@@ -446,6 +487,70 @@ QString TimelineView::Impl::predictionTip(QPointF pos) const {
     return tip;
   }
   return {};
+}
+
+QString TimelineView::Impl::trackTip(QPointF pos) const {
+  if (steps() == 0) return {};
+  const QPoint p = pos.toPoint();
+  const std::int64_t step = stepAtPixel(pos.x());
+  const auto at = static_cast<std::size_t>(step);
+  const storage::RunTrack& t = session->track();
+  if (heatRect->rect().contains(p)) {
+    const auto sensor = static_cast<int>(std::clamp<long long>(
+        std::llround(heatRect->axis(QCPAxis::atLeft)->pixelToCoord(pos.y())), 0, kSensorCount - 1));
+    const GroupInfo& g = groupInfo(groupOfSensor(sensor));
+    const Columns cols(range, heatRect->width());
+    const int c = cols.columnOf(step);
+    const double value = heat->data()->data(xAxis()->pixelToCoord(pos.x()), sensor);
+    const std::array<QString, 3> names{TimelineView::tr("normal"), TimelineView::tr("shear"),
+                                       TimelineView::tr("magnitude")};
+    const QString steps = cols.firstStep(c) == cols.lastStep(c)
+                              ? TimelineView::tr("step %1").arg(cols.firstStep(c))
+                              : TimelineView::tr("steps %1-%2 (largest)")
+                                    .arg(cols.firstStep(c))
+                                    .arg(cols.lastStep(c));
+    return TimelineView::tr("%1, sensor %2 (%3 %4): %5 %6")
+        .arg(steps)
+        .arg(sensor)
+        .arg(QString::fromUtf8(g.shortName.data(), static_cast<qsizetype>(g.shortName.size())))
+        .arg(sensor - g.firstSensor + 1)
+        .arg(names[static_cast<std::size_t>(channel)])
+        .arg(value, 0, 'f', 2);
+  }
+  if (at >= t.stepCount()) return {};
+  if (headRect->rect().contains(p)) {
+    const double degrees = t.theta[at] * 180.0 / std::numbers::pi;
+    return TimelineView::tr("step %1: heading %2\u00b0 (%3)")
+        .arg(step)
+        .arg(degrees, 0, 'f', 1)
+        .arg(std::cos(t.theta[at]) >= 0.0 ? TimelineView::tr("blue: facing +x")
+                                          : TimelineView::tr("red: facing \u2212x"));
+  }
+  if (cmdRect->rect().contains(p)) {
+    return TimelineView::tr("step %1: v %2, omega %3%4")
+        .arg(step)
+        .arg(t.v[at], 0, 'f', 2)
+        .arg(t.omega[at], 0, 'f', 3)
+        .arg(t.blocked[at] != 0 ? TimelineView::tr(", blocked") : QString());
+  }
+  return {};
+}
+
+QString TimelineView::trackTipAt(QPoint widgetPos) const {
+  return d_->trackTip(d_->plot->mapFrom(this, widgetPos));
+}
+
+void TimelineView::setRowHeight(int pixels) {
+  pixels = std::clamp(pixels, 4, 100);
+  if (pixels == d_->rowHeight) return;
+  d_->rowHeight = pixels;
+  d_->configureLabelRows();
+  d_->updateOverlay();
+  d_->queueReplot();
+}
+
+int TimelineView::rowHeight() const {
+  return d_->rowHeight;
 }
 
 QString TimelineView::predictionTipAt(QPoint widgetPos) const {
@@ -646,6 +751,13 @@ void TimelineView::Impl::updateOverlay() {
     line->end->setCoords(step, 1.0);
     line->setVisible(steps() > 0);
   }
+  const GroupInfo& g = groupInfo(session->selectedGroup());
+  groupHeatMark->topLeft->setCoords(0.0, g.firstSensor - 0.5);
+  groupHeatMark->bottomRight->setCoords(1.0, g.firstSensor + g.sensorCount - 0.5);
+  groupLabelMark->topLeft->setCoords(0.0, labelRow(g.group) - 0.5);
+  groupLabelMark->bottomRight->setCoords(1.0, labelRow(g.group) + rowsPerGroup() - 0.5);
+  groupHeatMark->setVisible(steps() > 0);
+  groupLabelMark->setVisible(steps() > 0);
   const std::optional<StepRange> sel = session->selection();
   for (QCPItemRect* band : bands) {
     band->setVisible(sel.has_value() && steps() > 0);
@@ -792,6 +904,10 @@ TimelineView::TimelineView(RunSession* session, LabelModel* labels, QWidget* par
       // Keep the zoom, bring the cursor to the middle.
       setVisibleRange(d_->fitted(step - d_->range.size() / 2, d_->range.size()));
     }
+    d_->updateOverlay();
+    d_->replotOverlay();
+  });
+  connect(session, &RunSession::selectedGroupChanged, this, [this] {
     d_->updateOverlay();
     d_->replotOverlay();
   });
@@ -946,7 +1062,8 @@ bool TimelineView::eventFilter(QObject* watched, QEvent* event) {
       const double dx = pos.x() - d.pressPos.x();
       if (d.drag == Impl::Drag::None) {
         d.plot->setCursor(d.grabEdge(pos) ? Qt::SizeHorCursor : Qt::ArrowCursor);
-        const QString tip = d.predictionTip(pos);
+        QString tip = d.predictionTip(pos);
+        if (tip.isEmpty()) tip = d.trackTip(pos);
         if (tip.isEmpty())
           QToolTip::hideText();
         else

@@ -64,6 +64,12 @@ class TimelineView : public QWidget {
   // The tooltip shown at a point (widget coordinates) of a model row (class and posterior) or of
   // the holes row (each hole's width); empty elsewhere.
   QString predictionTipAt(QPoint widgetPos) const;
+  // The tooltip over the heatmap (sensor and value), the heading strip or the command strip.
+  QString trackTipAt(QPoint widgetPos) const;
+
+  // Height in pixels of each label, truth and model row (Preferences).
+  void setRowHeight(int pixels);
+  int rowHeight() const;
 
   // Draws a model's predictions under the label strips (null: none); follows its changes.
   void setPredictions(const PredictionModel* predictions);
