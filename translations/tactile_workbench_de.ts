@@ -724,6 +724,10 @@ Research workbench for tactile-based mobile-robot navigation.</source>
         <source>Step %1, group %2: the model says %3 (%4 %), the label %5</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <source>Navigator</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>tactile::gui::ModelPickerDialog</name>
@@ -741,6 +745,44 @@ Research workbench for tactile-based mobile-robot navigation.</source>
     </message>
     <message>
         <source>The timeline shows each group&apos;s predicted class under its labels, pale where the model is unsure, and marks where it disagrees with the labels (N: next disagreement).</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>tactile::gui::NavigatorPanelView</name>
+    <message>
+        <source>This run has no navigator columns. Runs written by &apos;tactile navigate&apos; have them.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Command set:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Current control mode:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Status:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Status-%1:</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>tactile::gui::NavigatorStripView</name>
+    <message>
+        <source>strategy</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>status</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>step %1: %2</source>
         <translation type="unfinished"></translation>
     </message>
 </context>
