@@ -744,6 +744,10 @@ Forschungsumgebung für die taktile Navigation mobiler Roboter.</translation>
         <source>Navigator</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <source>Navigator</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>tactile::gui::ModelPickerDialog</name>
@@ -762,6 +766,44 @@ Forschungsumgebung für die taktile Navigation mobiler Roboter.</translation>
     <message>
         <source>The timeline shows each group&apos;s predicted class under its labels, pale where the model is unsure, and marks where it disagrees with the labels (N: next disagreement).</source>
         <translation>Die Zeitleiste zeigt die vorhergesagte Klasse jeder Gruppe unter ihren Labels, blass, wo das Modell unsicher ist, und markiert Abweichungen von den Labels (N: nächste Abweichung).</translation>
+    </message>
+</context>
+<context>
+    <name>tactile::gui::NavigatorPanelView</name>
+    <message>
+        <source>This run has no navigator columns. Runs written by &apos;tactile navigate&apos; have them.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Command set:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Current control mode:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Status:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Status-%1:</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>tactile::gui::NavigatorStripView</name>
+    <message>
+        <source>strategy</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>status</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>step %1: %2</source>
+        <translation type="unfinished"></translation>
     </message>
 </context>
 <context>
