@@ -64,6 +64,13 @@ void describeText(FileHead& head, const RunCsvChunks& chunks, const SceneResolve
 std::string runName(const ImportOptions& options, const std::filesystem::path& file);
 ImportOutcome cancelledOutcome(const std::filesystem::path& file);
 
+// Writes the steps of one chunk as rows of run `runId` inside the caller's transaction; `steps` is
+// the run's next step number (the chunk must start there) and is advanced past the chunk. The one
+// writer of step rows: import and runs recorded step by step (run_recording.cpp) both use it.
+// Throws db::DbError; throws after `failAfterSteps` steps of the run (a test hook; -1: never).
+void writeStepChunk(RunDatabase::Impl& impl, std::int64_t runId, const StepChunk& chunk,
+                    bool hasExtra, bool hasTruth, std::int64_t& steps, std::int64_t failAfterSteps);
+
 // The SQL writer: stores one run in its own transaction: the run row, then the steps chunk by
 // chunk as `takeChunk(i)` hands them over, then the summary blocks. A chunk with an error, or any
 // failure, rolls everything back.

@@ -5,6 +5,41 @@
 
 namespace tactile::storage::importing {
 
+// Writes the steps of one chunk as rows of run `runId`; `steps` is the run's next step number and
+// is advanced past the chunk. Throws db::DbError (the caller's transaction rolls back).
+void writeStepChunk(RunDatabase::Impl& impl, std::int64_t runId, const StepChunk& chunk,
+                    bool hasExtra, bool hasTruth, std::int64_t& steps,
+                    std::int64_t failAfterSteps) {
+  db::Statement& step = impl.statement(
+      "INSERT INTO steps(run_id, step, x, y, theta, v, omega, blocked, sensors, extra, truth) "
+      "VALUES(?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?)");
+  step.bind(1, runId);
+  if (!hasExtra) step.bindNull(10);
+  if (!hasTruth) step.bindNull(11);
+  const RunData& rows = chunk.rows;
+  const std::size_t n = rows.stepCount();
+  if (n > 0 && static_cast<std::int64_t>(chunk.firstStep) != steps) {
+    throw db::DbError("steps out of order at step " + std::to_string(chunk.firstStep));
+  }
+  for (std::size_t i = 0; i < n; ++i, ++steps) {
+    if (steps == failAfterSteps) {
+      throw db::DbError("injected failure after " + std::to_string(steps) + " steps");
+    }
+    step.bind(2, steps)
+        .bind(3, rows.x[i])
+        .bind(4, rows.y[i])
+        .bind(5, rows.theta[i])
+        .bind(6, rows.v[i])
+        .bind(7, rows.omega[i])
+        .bind(8, static_cast<std::int64_t>(rows.blocked[i]))
+        .bindBlob(9, chunk.sensors.data(i), chunk.sensors.bytes(i));
+    if (hasExtra) step.bindBlob(10, chunk.extraBlobs[i].data(), chunk.extraBlobs[i].size());
+    if (hasTruth) step.bind(11, chunk.packedTruth[i]);
+    step.step();
+  }
+  step.reset();
+}
+
 // Writes one run in its own transaction: the run row, then the steps chunk by chunk as
 // `takeChunk(i)` hands them over, then the summary blocks. A chunk with an error, or any failure,
 // rolls everything back.
@@ -121,13 +156,7 @@ ImportOutcome writeRun(RunDatabase::Impl& impl, FileHead& head,
         .run();
     const std::int64_t runId = impl.connection.lastInsertRowId();
 
-    db::Statement& step = impl.statement(
-        "INSERT INTO steps(run_id, step, x, y, theta, v, omega, blocked, sensors, extra, truth) "
-        "VALUES(?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?)");
-    step.bind(1, runId);
     const bool hasExtra = !header.extraColumns.empty();
-    if (!hasExtra) step.bindNull(10);
-    if (!head.hasTruth) step.bindNull(11);
     SummaryBuilder summary;
     std::int64_t steps = 0;
     for (std::size_t c = 0; c < head.chunkCount; ++c) {
@@ -136,28 +165,8 @@ ImportOutcome writeRun(RunDatabase::Impl& impl, FileHead& head,
         outcome.message = std::move(chunk.error);
         return outcome;  // rolls back
       }
-      const RunData& rows = chunk.rows;
-      const std::size_t n = rows.stepCount();
-      if (n > 0 && static_cast<std::int64_t>(chunk.firstStep) != steps) {
-        throw db::DbError("steps out of order at step " + std::to_string(chunk.firstStep));
-      }
-      for (std::size_t i = 0; i < n; ++i, ++steps) {
-        if (steps == failAfterSteps) {
-          throw db::DbError("injected failure after " + std::to_string(steps) + " steps");
-        }
-        step.bind(2, steps)
-            .bind(3, rows.x[i])
-            .bind(4, rows.y[i])
-            .bind(5, rows.theta[i])
-            .bind(6, rows.v[i])
-            .bind(7, rows.omega[i])
-            .bind(8, static_cast<std::int64_t>(rows.blocked[i]))
-            .bindBlob(9, chunk.sensors.data(i), chunk.sensors.bytes(i));
-        if (hasExtra) step.bindBlob(10, chunk.extraBlobs[i].data(), chunk.extraBlobs[i].size());
-        if (head.hasTruth) step.bind(11, chunk.packedTruth[i]);
-        step.step();
-      }
-      step.reset();
+      const std::size_t n = chunk.rows.stepCount();
+      writeStepChunk(impl, runId, chunk, hasExtra, head.hasTruth, steps, failAfterSteps);
       if (n > 0) summary.merge(chunk.summary);
     }
     if (steps == 0 && !head.noStepsError.empty()) {
