@@ -53,8 +53,11 @@ bool groupIsZero(const RunData& run, std::size_t step, SensorGroup group) {
 
 void groupFeatures(const RunData& run, std::size_t step, SensorGroup group, FeatureKind kind,
                    double* out) {
+  groupFeatures(run.stepSensors(step), group, kind, out);
+}
+
+void groupFeatures(const double* values, SensorGroup group, FeatureKind kind, double* out) {
   const GroupInfo& info = groupInfo(group);
-  const double* values = run.stepSensors(step);
   for (int i = 0; i < info.sensorCount; ++i) {
     const int sensor = info.firstSensor + i;
     const double n = values[normalOffset(sensor)];

@@ -50,6 +50,8 @@ bool groupIsZero(const RunData& run, std::size_t step, SensorGroup group);
 // Writes the group's feature vector at `step` into out[0 .. featureDimension).
 void groupFeatures(const RunData& run, std::size_t step, SensorGroup group, FeatureKind kind,
                    double* out);
+// The same from one step's kValuesPerStep values (n0, s0, ..., n43, s43): what a navigator sees.
+void groupFeatures(const double* stepValues, SensorGroup group, FeatureKind kind, double* out);
 
 // All steps of one run for one group: one row per step, and the no-contact flag of each step.
 struct GroupSteps {

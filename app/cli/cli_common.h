@@ -57,5 +57,7 @@ void registerSimVerbs(CLI::App& app, CLI::App& bench);
 void registerLearnVerbs(CLI::App& app, CLI::App& bench);
 void registerFitVerbs(CLI::App& app, CLI::App& bench);
 void registerStorageVerbs(CLI::App& app, CLI::App& bench);
+// `navigate` (cli_nav.cpp), registered by registerSimVerbs.
+void registerNavigateVerb(CLI::App& app);
 
 }  // namespace tactile::cli

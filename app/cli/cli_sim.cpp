@@ -1,4 +1,4 @@
-// Simulator verbs: simulate, navigate (planned), bench sim.
+// Simulator verbs: simulate, bench sim (navigate lives in cli_nav.cpp).
 #include <unistd.h>
 
 #include <chrono>
@@ -520,7 +520,7 @@ void registerSimVerbs(CLI::App& app, CLI::App& bench) {
   sim->add_flag("--quiet", args->quiet, "No progress on stderr");
   setAction(sim, [args] { return runSimulate(*args); });
 
-  addPlannedVerb(app, "navigate", "Navigate a scene by touch with trained models");
+  registerNavigateVerb(app);  // cli_nav.cpp
 
   auto bargs = std::make_shared<BenchArgs>();
   CLI::App* b = bench.add_subcommand("sim", "Simulator steps per second against obstacle count");

@@ -19,6 +19,7 @@
 #include <QStatusBar>
 #include <QToolBar>
 #include <QUndoStack>
+#include <QVBoxLayout>
 
 #include "app/gui/common/plot_style.h"
 #include "app/gui/common/progress_bridge.h"
@@ -31,6 +32,8 @@
 #include "app/gui/learning/sweep_worker.h"
 #include "app/gui/learning/training_dialog.h"
 #include "app/gui/runs/import_worker.h"
+#include "app/gui/runs/navigator_track_model.h"
+#include "app/gui/runs/navigator_view.h"
 #include "app/gui/runs/route_view.h"
 #include "app/gui/runs/run_list_model.h"
 #include "app/gui/runs/run_list_view.h"
@@ -102,7 +105,15 @@ MainWindow::~MainWindow() {
 
 void MainWindow::createViews() {
   timeline_ = new TimelineView(session_, labels_, this);
-  setCentralWidget(timeline_);
+  // The timelines, with the navigator's strips under them for runs of `tactile navigate`.
+  auto* navTrack = new NavigatorTrackModel(session_, this);
+  auto* centre = new QWidget(this);
+  auto* column = new QVBoxLayout(centre);
+  column->setContentsMargins(0, 0, 0, 0);
+  column->setSpacing(0);
+  column->addWidget(timeline_, 1);
+  column->addWidget(new NavigatorStripView(session_, navTrack, timeline_, centre));
+  setCentralWidget(centre);
 
   auto dock = [this](const QString& title, const QString& name, QWidget* content,
                      Qt::DockWidgetArea area) {
@@ -133,6 +144,11 @@ void MainWindow::createViews() {
       dock(tr("Route"), QStringLiteral("routeDock"), route_, Qt::LeftDockWidgetArea);
   QDockWidget* labels =
       dock(tr("Labels"), QStringLiteral("labelsDock"), labelPanel_, Qt::RightDockWidgetArea);
+  QDockWidget* navigator =
+      dock(tr("Navigator"), QStringLiteral("navigatorDock"),
+           new NavigatorPanelView(session_, navTrack, this), Qt::RightDockWidgetArea);
+  tabifyDockWidget(labels, navigator);
+  labels->raise();
   splitDockWidget(runs, route, Qt::Vertical);
   resizeDocks({runs, route}, {260, 560}, Qt::Vertical);
   resizeDocks({runs, labels}, {500, 300}, Qt::Horizontal);

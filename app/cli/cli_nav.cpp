@@ -1,0 +1,303 @@
+// The navigator's verb: navigate (seeded runs on one scene, or the office-map benchmark).
+#include <algorithm>
+#include <atomic>
+#include <charconv>
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <memory>
+#include <mutex>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "analysis/model_file.h"
+#include "app/cli/cli_common.h"
+#include "base/file_text.h"
+#include "nav/benchmark.h"
+#include "nav/navigate.h"
+#include "run/builtin_scenes.h"
+#include "run/run_csv.h"
+#include "sim/scene_source.h"
+#include "storage/run_database.h"
+#include "workspace/workspace.h"
+
+namespace tactile::cli {
+namespace {
+
+using nlohmann::json;
+
+struct NavigateArgs {
+  std::string scene;
+  std::string model;
+  std::string db;
+  std::string status = "model";
+  std::string seeds = "1";
+  std::int64_t maxSteps = 6000;
+  std::string outDir;
+  unsigned threads = 0;
+  std::int64_t benchmark = 0;
+  std::uint64_t seed = 1;
+  bool json = false;
+  bool quiet = false;
+};
+
+// "A-B", "A" or "A,B,C" (each part a number or a range); at most 100,000 seeds.
+std::vector<std::uint64_t> parseSeeds(const std::string& text) {
+  std::vector<std::uint64_t> out;
+  const auto number = [&](std::string_view part) {
+    std::uint64_t v = 0;
+    const auto [end, ec] = std::from_chars(part.data(), part.data() + part.size(), v);
+    if (ec != std::errc() || end != part.data() + part.size() || part.empty())
+      throw UsageError("--seeds: '" + std::string(part) + "' is not a seed (use A-B or A,B,C)");
+    return v;
+  };
+  std::string_view rest = text;
+  while (true) {
+    const std::size_t comma = rest.find(',');
+    const std::string_view part = rest.substr(0, comma);
+    const std::size_t dash = part.find('-');
+    if (dash == std::string_view::npos) {
+      out.push_back(number(part));
+    } else {
+      const std::uint64_t a = number(part.substr(0, dash));
+      const std::uint64_t b = number(part.substr(dash + 1));
+      if (b < a) throw UsageError("--seeds: range " + std::string(part) + " runs backwards");
+      if (b - a >= 100'000) throw UsageError("--seeds: at most 100000 seeds");
+      for (std::uint64_t s = a; s <= b; ++s)
+        out.push_back(s);
+    }
+    if (out.size() > 100'000) throw UsageError("--seeds: at most 100000 seeds");
+    if (comma == std::string_view::npos) break;
+    rest = rest.substr(comma + 1);
+  }
+  return out;
+}
+
+std::shared_ptr<const analysis::ModelBundle> loadModels(const NavigateArgs& a) {
+  if (a.model.empty())
+    throw UsageError("--status model needs --model FILE (or a stored NAME with --db)");
+  if (!a.db.empty()) {
+    workspace::Workspace ws(openDatabaseForRead(a.db));
+    auto m = ws.loadModel(a.model);
+    if (!m) throw std::runtime_error(a.db + ": " + m.errorText());
+    return std::make_shared<const analysis::ModelBundle>(std::move(m.value()));
+  }
+  auto m = analysis::readModelFile(a.model);
+  if (!m) throw std::runtime_error(m.errorText());
+  return std::make_shared<const analysis::ModelBundle>(std::move(m.value()));
+}
+
+unsigned threadCount(unsigned requested, std::size_t jobs) {
+  unsigned t = requested == 0 ? std::max(1u, std::thread::hardware_concurrency()) : requested;
+  return static_cast<unsigned>(std::min<std::size_t>({t, 256u, std::max<std::size_t>(jobs, 1)}));
+}
+
+int runBenchmark(const NavigateArgs& a) {
+  if (!a.scene.empty()) throw UsageError("give --scene or --benchmark, not both");
+  if (a.benchmark < 1 || a.benchmark > 100'000)
+    throw UsageError("--benchmark must be between 1 and 100000 maps");
+  nav::BenchmarkOptions options;
+  options.maps = static_cast<std::size_t>(a.benchmark);
+  options.seed = a.seed;
+  options.maxSteps = static_cast<std::size_t>(a.maxSteps);
+  options.threads = a.threads;
+  options.models = loadModels(a);
+  ProgressFn progress;
+  if (!a.quiet) {
+    progress = [](std::size_t done, std::size_t total) {
+      std::fprintf(stderr, "\rnavigate: %zu/%zu runs", done, total);
+      if (done == total) std::fprintf(stderr, "\n");
+      return true;
+    };
+  }
+  auto result = nav::runMapBenchmark(options, progress);
+  if (!result) throw std::runtime_error(result.errorText());
+  const nav::BenchmarkResult& r = result.value();
+  if (a.json) {
+    json j;
+    j["maps"] = r.maps;
+    j["seed"] = a.seed;
+    j["max_steps"] = a.maxSteps;
+    j["unreachable_maps"] = r.mapsWithoutPath;
+    for (const nav::SourceSummary& s : r.sources) {
+      j[std::string(nav::statusSourceName(s.source))] = {
+          {"runs", s.runs},
+          {"success_rate", s.successRate},
+          {"median_path_ratio", s.medianPathRatio},
+          {"p90_path_ratio", s.p90PathRatio},
+          {"median_steps", s.medianSteps},
+          {"outcomes",
+           {{"success", s.successes}, {"unreachable", s.unreachable}, {"timeout", s.timeouts}}},
+          {"seconds", s.seconds}};
+    }
+    j["seconds"] = r.seconds;
+    std::printf("%s\n", j.dump().c_str());
+  } else {
+    std::printf("%zu generated maps (seed %llu), %lld steps at most per run\n", r.maps,
+                static_cast<unsigned long long>(a.seed), static_cast<long long>(a.maxSteps));
+    std::printf("%-8s %8s %10s %12s %10s %12s %10s\n", "status", "success", "unreachable",
+                "path/A* med", "p90", "median steps", "run time");
+    for (const nav::SourceSummary& s : r.sources) {
+      std::printf("%-8s %7.1f%% %10zu %12.2f %10.2f %12.0f %9.1fs\n",
+                  std::string(nav::statusSourceName(s.source)).c_str(), 100.0 * s.successRate,
+                  s.unreachable, s.medianPathRatio, s.p90PathRatio, s.medianSteps, s.seconds);
+    }
+    std::printf("total %.1f s\n", r.seconds);
+  }
+  return kExitOk;
+}
+
+int runNavigate(const NavigateArgs& a) {
+  if (a.maxSteps < 1 || static_cast<std::uint64_t>(a.maxSteps) > 1'000'000)
+    throw UsageError("--max-steps must be between 1 and 1000000");
+  const auto source = nav::parseStatusSource(a.status);
+  if (!source) throw UsageError("--status must be model, truth or bumper, got '" + a.status + "'");
+  if (a.benchmark != 0) return runBenchmark(a);
+  if (a.scene.empty()) throw UsageError("give --scene (or --benchmark N)");
+  if (auto problem = sim::sceneSpecError(a.scene)) throw UsageError(*problem);
+  const std::vector<std::uint64_t> seeds = parseSeeds(a.seeds);
+  nav::NavigatorConfig config;
+  config.source = *source;
+  if (*source == nav::StatusSource::Model) config.models = loadModels(a);
+  Result<sim::Scene> loaded = sim::loadScene(a.scene);
+  if (!loaded) throw std::runtime_error(loaded.errorText());
+  const bool builtin = a.scene.starts_with("random:") || builtinSceneJson(a.scene).has_value();
+  std::string label = builtin ? a.scene : loaded->name;
+  std::filesystem::path dir(a.outDir);
+  if (!a.outDir.empty()) {
+    std::error_code ec;
+    std::filesystem::create_directories(dir, ec);
+    if (ec) throw std::runtime_error(a.outDir + ": cannot create directory: " + ec.message());
+    if (!builtin) {
+      // The run names its scene by a file beside it, so an import finds it.
+      label = std::filesystem::path(a.scene).filename().string();
+      const Status written = writeFileAtomically(dir / label, sim::sceneToJson(loaded.value()));
+      if (!written) throw std::runtime_error(written.errorText());
+    }
+  }
+  auto world = std::make_shared<const sim::World>(std::move(loaded.value()));
+
+  struct Row {
+    nav::NavigateResult result;
+    std::string error;
+    std::string file;
+  };
+  std::vector<Row> rows(seeds.size());
+  std::atomic<std::size_t> next{0};
+  std::atomic<std::size_t> done{0};
+  std::mutex mutex;
+  const auto t0 = std::chrono::steady_clock::now();
+  const auto worker = [&] {
+    while (true) {
+      const std::size_t i = next.fetch_add(1);
+      if (i >= seeds.size()) return;
+      nav::NavigateOptions options;
+      options.maxSteps = static_cast<std::size_t>(a.maxSteps);
+      options.seed = seeds[i];
+      const Pose2d start = nav::drawStart(world, seeds[i]);
+      auto r = nav::navigate(world, label, start, world->scene().goal, config, options,
+                             !a.outDir.empty());
+      Row& row = rows[i];
+      if (!r) {
+        row.error = "seed " + std::to_string(seeds[i]) + ": " + r.errorText();
+      } else {
+        row.result = std::move(r.value());
+        if (!a.outDir.empty()) {
+          char name[64];
+          std::snprintf(name, sizeof name, "navigate_%s_%04llu.csv", a.status.c_str(),
+                        static_cast<unsigned long long>(seeds[i]));
+          row.file = (dir / name).string();
+          const Status written = writeRunCsv(row.result.run, row.file);
+          if (!written) row.error = written.errorText();
+          row.result.run = RunData();  // written: free the memory
+        }
+      }
+      const std::size_t n = ++done;
+      if (!a.quiet) {
+        std::lock_guard lock(mutex);
+        std::fprintf(stderr, "\rnavigate: %zu/%zu runs", n, seeds.size());
+        if (n == seeds.size()) std::fprintf(stderr, "\n");
+      }
+    }
+  };
+  std::vector<std::thread> pool;
+  const unsigned threads = threadCount(a.threads, seeds.size());
+  for (unsigned t = 1; t < threads; ++t)
+    pool.emplace_back(worker);
+  worker();
+  for (std::thread& t : pool)
+    t.join();
+  const double seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  for (const Row& row : rows)
+    if (!row.error.empty()) throw std::runtime_error(row.error);
+
+  std::size_t successes = 0;
+  for (const Row& row : rows)
+    successes += row.result.outcome == RunOutcome::Success ? 1 : 0;
+  const double rate = static_cast<double>(successes) / static_cast<double>(rows.size());
+  if (a.json) {
+    json runs = json::array();
+    for (std::size_t i = 0; i < rows.size(); ++i) {
+      const nav::NavigateResult& r = rows[i].result;
+      json one{{"seed", seeds[i]},
+               {"outcome", runOutcomeName(r.outcome)},
+               {"steps", r.steps},
+               {"path_length", r.pathLengthUnits},
+               {"blocked_steps", r.blockedSteps}};
+      if (!rows[i].file.empty()) one["file"] = rows[i].file;
+      runs.push_back(std::move(one));
+    }
+    json j{{"scene", label},
+           {"status", a.status},
+           {"success_rate", rate},
+           {"runs", runs},
+           {"seconds", seconds}};
+    std::printf("%s\n", j.dump().c_str());
+  } else {
+    std::printf("%6s  %-11s %7s %12s %8s\n", "seed", "outcome", "steps", "path length", "blocked");
+    for (std::size_t i = 0; i < rows.size(); ++i) {
+      const nav::NavigateResult& r = rows[i].result;
+      std::printf("%6llu  %-11s %7zu %12.1f %8zu\n", static_cast<unsigned long long>(seeds[i]),
+                  std::string(runOutcomeName(r.outcome)).c_str(), r.steps, r.pathLengthUnits,
+                  r.blockedSteps);
+    }
+    std::printf("success rate %.1f%% (%zu of %zu) on %s with %s status in %.1f s\n", 100.0 * rate,
+                successes, rows.size(), label.c_str(), a.status.c_str(), seconds);
+    if (!a.outDir.empty()) std::printf("wrote %zu runs to %s\n", rows.size(), a.outDir.c_str());
+  }
+  return kExitOk;
+}
+
+}  // namespace
+
+void registerNavigateVerb(CLI::App& app) {
+  auto args = std::make_shared<NavigateArgs>();
+  CLI::App* cmd = app.add_subcommand(
+      "navigate",
+      "Navigate a scene by touch: the chapter-5 navigator with trained models, the simulator's "
+      "truth or a bumper Bug2; or benchmark all three on generated office maps");
+  cmd->add_option("--scene", args->scene, "Built-in scene name, scene JSON file, or random:N:SEED");
+  cmd->add_option("--model", args->model,
+                  "Model bundle JSON, or a stored model's name with --db (needed by --status "
+                  "model and --benchmark)");
+  cmd->add_option("--db", args->db, "Database holding the model named by --model");
+  cmd->add_option("--status", args->status,
+                  "Status source: model (trained models, online decision), truth (the "
+                  "simulator's ground truth) or bumper (Bug2 with the skin as a bumper)");
+  cmd->add_option("--seeds", args->seeds, "Seeds of the start poses: A-B, A or A,B,C (default 1)");
+  cmd->add_option("--max-steps", args->maxSteps, "Step budget per run (then `timeout`)");
+  cmd->add_option("--out-dir", args->outDir,
+                  "Write each run as navigate_STATUS_SEED.csv here (importable)");
+  cmd->add_option("--threads", args->threads, "Worker threads (0 = all cores)");
+  cmd->add_option("--benchmark", args->benchmark,
+                  "Benchmark the three status sources on N generated office maps");
+  cmd->add_option("--seed", args->seed, "First map seed of --benchmark");
+  cmd->add_flag("--json", args->json, "Print one JSON object on stdout");
+  cmd->add_flag("--quiet", args->quiet, "No progress on stderr");
+  setAction(cmd, [args] { return runNavigate(*args); });
+}
+
+}  // namespace tactile::cli

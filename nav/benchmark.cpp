@@ -1,0 +1,188 @@
+#include "nav/benchmark.h"
+
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <cmath>
+#include <mutex>
+#include <numbers>
+#include <random>
+#include <thread>
+
+#include "nav/astar.h"
+#include "nav/navigate.h"
+#include "nav/office_map.h"
+#include "sim/simulator.h"
+
+namespace tactile::nav {
+namespace {
+
+double unit(std::mt19937_64& rng) {
+  return static_cast<double>(rng() >> 11) * 0x1.0p-53;
+}
+
+// Grid and robot size of the A* reference.
+constexpr double kGridUnits = 10.0;
+constexpr double kRobotHalfWidthUnits = 46.0;  // 40 + a dome radius
+
+}  // namespace
+
+double quantile(std::vector<double> values, double p) {
+  if (values.empty()) return 0.0;
+  std::sort(values.begin(), values.end());
+  const double pos = std::clamp(p, 0.0, 1.0) * static_cast<double>(values.size() - 1);
+  const auto lo = static_cast<std::size_t>(std::floor(pos));
+  const std::size_t hi = std::min(lo + 1, values.size() - 1);
+  return values[lo] + (pos - static_cast<double>(lo)) * (values[hi] - values[lo]);
+}
+
+Result<MapCase> benchmarkCase(std::uint64_t seed) {
+  OfficeMap office = generateOfficeMap(seed);
+  MapCase c;
+  c.world = std::make_shared<const sim::World>(std::move(office.scene));
+  const GridMap grid = inflatedGrid(*c.world, kGridUnits, kRobotHalfWidthUnits);
+  sim::Simulator probe(c.world);
+  std::mt19937_64 rng(seed ^ 0xD1B54A32D192ED03ull);
+  const auto freePoint = [&](const OfficeRoom& room) -> std::optional<Vec2> {
+    for (int i = 0; i < 200; ++i) {
+      const Vec2 p(room.x0 + 100.0 + (room.x1 - room.x0 - 200.0) * unit(rng),
+                   room.y0 + 100.0 + (room.y1 - room.y0 - 200.0) * unit(rng));
+      const int col = static_cast<int>((p.x() - grid.x0) / grid.cellUnits);
+      const int row = static_cast<int>((p.y() - grid.y0) / grid.cellUnits);
+      if (!grid.isBlocked(col, row)) return p;
+    }
+    return std::nullopt;
+  };
+  const std::size_t rooms = office.rooms.size();
+  for (int attempt = 0; attempt < 200; ++attempt) {
+    const std::size_t a = static_cast<std::size_t>(rng() % rooms);
+    std::size_t b = static_cast<std::size_t>(rng() % rooms);
+    if (rooms > 1 && b == a) b = (a + 1 + rng() % (rooms - 1)) % rooms;
+    const auto s = freePoint(office.rooms[a]);
+    const auto g = freePoint(office.rooms[b]);
+    if (!s || !g) continue;
+    const double theta = 2.0 * std::numbers::pi * unit(rng) - std::numbers::pi;
+    // The pose is the rear axle; the body's centre (35 ahead) was checked on the grid.
+    const Pose2d start{s->x() - 35.0 * std::cos(theta), s->y() - 35.0 * std::sin(theta), theta};
+    if (probe.isBlocked(start)) continue;
+    const auto length = shortestPathUnits(grid, *s, *g);
+    if (!length) continue;
+    c.start = start;
+    c.goal = *g;
+    c.astarUnits = *length;
+    return c;
+  }
+  return Error("map seed " + std::to_string(seed) + ": no start and goal joined by a path");
+}
+
+Result<BenchmarkResult> runMapBenchmark(const BenchmarkOptions& options,
+                                        const ProgressFn& progress) {
+  const auto t0 = std::chrono::steady_clock::now();
+  std::vector<StatusSource> sources;
+  if (options.models) sources.push_back(StatusSource::Model);
+  sources.push_back(StatusSource::Truth);
+  sources.push_back(StatusSource::Bumper);
+  const std::size_t maps = options.maps;
+  const std::size_t jobs = maps * sources.size();
+  struct Outcome {
+    RunOutcome outcome = RunOutcome::Unknown;
+    double ratio = 0.0;
+    double steps = 0.0;
+    double seconds = 0.0;
+  };
+  std::vector<Outcome> results(jobs);
+  std::vector<std::optional<MapCase>> cases(maps);
+  std::vector<std::once_flag> made(maps);
+  std::string firstError;
+  std::mutex mutex;
+  std::atomic<std::size_t> next{0};
+  std::atomic<std::size_t> done{0};
+  std::atomic<bool> stop{false};
+  const auto worker = [&] {
+    while (!stop) {
+      const std::size_t j = next.fetch_add(1);
+      if (j >= jobs) return;
+      const std::size_t m = j / sources.size();
+      std::call_once(made[m], [&] {
+        auto c = benchmarkCase(options.seed + m);
+        if (c) {
+          cases[m] = std::move(c.value());
+        } else {
+          std::lock_guard lock(mutex);
+          if (firstError.empty()) firstError = c.errorText();
+          stop = true;
+        }
+      });
+      if (!cases[m]) return;
+      const MapCase& mc = *cases[m];
+      NavigatorConfig config;
+      config.source = sources[j % sources.size()];
+      config.models = options.models;
+      NavigateOptions no;
+      no.maxSteps = options.maxSteps;
+      no.seed = options.seed + m;
+      const auto r0 = std::chrono::steady_clock::now();
+      auto r = navigate(mc.world, "office", mc.start, mc.goal, config, no, false);
+      if (!r) {
+        std::lock_guard lock(mutex);
+        if (firstError.empty()) firstError = r.errorText();
+        stop = true;
+        return;
+      }
+      Outcome& o = results[j];
+      o.outcome = r->outcome;
+      o.ratio = r->pathLengthUnits / mc.astarUnits;
+      o.steps = static_cast<double>(r->steps);
+      o.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - r0).count();
+      const std::size_t n = ++done;
+      if (progress) {
+        std::lock_guard lock(mutex);
+        if (!progress(n, jobs)) stop = true;
+      }
+    }
+  };
+  unsigned threads =
+      options.threads == 0 ? std::max(1u, std::thread::hardware_concurrency()) : options.threads;
+  threads =
+      static_cast<unsigned>(std::min<std::size_t>({threads, 256u, std::max<std::size_t>(jobs, 1)}));
+  std::vector<std::thread> pool;
+  for (unsigned t = 1; t < threads; ++t)
+    pool.emplace_back(worker);
+  worker();
+  for (std::thread& t : pool)
+    t.join();
+  if (!firstError.empty()) return Error(firstError);
+  if (done < jobs) return Error("cancelled");
+
+  BenchmarkResult out;
+  out.maps = maps;
+  for (std::size_t s = 0; s < sources.size(); ++s) {
+    SourceSummary sum;
+    sum.source = sources[s];
+    std::vector<double> ratios;
+    std::vector<double> steps;
+    for (std::size_t m = 0; m < maps; ++m) {
+      const Outcome& o = results[m * sources.size() + s];
+      ++sum.runs;
+      sum.seconds += o.seconds;
+      if (o.outcome == RunOutcome::Success) {
+        ++sum.successes;
+        ratios.push_back(o.ratio);
+        steps.push_back(o.steps);
+      } else if (o.outcome == RunOutcome::Unreachable) {
+        ++sum.unreachable;
+      } else {
+        ++sum.timeouts;
+      }
+    }
+    sum.successRate = sum.runs ? static_cast<double>(sum.successes) / sum.runs : 0.0;
+    sum.medianPathRatio = quantile(ratios, 0.5);
+    sum.p90PathRatio = quantile(ratios, 0.9);
+    sum.medianSteps = quantile(steps, 0.5);
+    out.sources.push_back(sum);
+  }
+  out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  return out;
+}
+
+}  // namespace tactile::nav

@@ -1,0 +1,876 @@
+#include "nav/navigator.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <numbers>
+
+#include "analysis/hole_detection.h"
+#include "nav/contact_status.h"
+#include "nav/hole_memory.h"
+#include "sim/robot.h"
+
+namespace tactile::nav {
+namespace {
+
+constexpr double kPi = std::numbers::pi;
+
+// A group reads as touching above this normal value (the filtered values decay through small
+// values after a release).
+constexpr double kTouching = 0.2;
+// Check Contact / U Turn: back off this far from what is ahead before turning in place (the front
+// corners sweep 115 units round the rear axle).
+constexpr double kBackOffUnits = 25.0;
+// Check Contact: after the front is clear, turn on by this "slight angle" before moving on.
+constexpr double kCheckExtraTurn = 0.3;
+// Check Contact: moving on this far without the side finding the wall ends the episode.
+constexpr double kCheckLostUnits = 200.0;
+// Check Contact: a side touching this many steps counts as followed even while its status is
+// still undecided (a model may keep a side in a rare class).
+constexpr int kCheckMaxSideSteps = 25;
+// Go Straight: after the whole side has lost the wall, go on this far looking for its next
+// fragment (a hole narrower than this is measured); beyond it the wall has ended.
+constexpr double kGapProbeUnits = 170.0;
+// Rounding a wall's end: the turn rate toward the wall (an arc of about 40 units at 0.6 cruise).
+constexpr double kRoundTurnFraction = 0.9;
+// Move Through Wall: the approach point lies this far from the wall, where turning in place to
+// face the hole clears it; the hole is passed once the rear axle is this far beyond the wall.
+constexpr double kApproachUnits = 150.0;
+constexpr double kThroughUnits = 150.0;
+// Leaving a wall toward the goal: the goal lies away from the wall (cosine of the angle between
+// the goal direction and the direction into the wall below this) and this much closer than where
+// the wall was hit.
+constexpr double kLeaveCosine = -0.2;
+constexpr double kLeaveGainUnits = 20.0;
+// Circling: back within kReturnUnits of where following started after being kDepartUnits away.
+constexpr double kDepartUnits = 250.0;
+constexpr double kReturnUnits = 70.0;
+// Blocked this many steps in a row: the escape moves are tried in turn.
+constexpr int kEscapeAfter = 3;
+
+constexpr std::array<std::string_view, kStrategyCount> kTitles{
+    "Go Straight",       "Head to Destination", "Check Contact", "Follow Wall",
+    "Move through Wall", "Right U Turn",        "Left U Turn"};
+constexpr std::array<std::string_view, kStrategyCount> kKeys{
+    "GoStraight",      "HeadToDestination", "CheckContact", "FollowWall",
+    "MoveThroughWall", "RightUTurn",        "LeftUTurn"};
+constexpr std::array<std::string_view, 3> kSourceNames{"model", "truth", "bumper"};
+constexpr std::array<std::string_view, 7> kKindNames{"NoContact", "Wall", "Corner",   "LeavingWall",
+                                                     "DeadPath",  "Hole", "Undecided"};
+
+Vec2 toVec(const Vec2d& v) {
+  return Vec2(v.x, v.y);
+}
+
+double normalOf(const std::array<double, kValuesPerStep>& values, int sensor) {
+  return values[static_cast<std::size_t>(normalOffset(sensor))];
+}
+
+double groupMax(const std::array<double, kValuesPerStep>& values, SensorGroup g) {
+  return sim::groupMaxNormal(values, g);
+}
+
+}  // namespace
+
+std::string_view strategyTitle(Strategy s) {
+  return kTitles[static_cast<std::size_t>(s)];
+}
+std::string_view strategyKey(Strategy s) {
+  return kKeys[static_cast<std::size_t>(s)];
+}
+std::optional<Strategy> parseStrategyKey(std::string_view key) {
+  for (std::size_t i = 0; i < kKeys.size(); ++i)
+    if (kKeys[i] == key) return static_cast<Strategy>(i);
+  return std::nullopt;
+}
+std::string_view statusSourceName(StatusSource s) {
+  return kSourceNames[static_cast<std::size_t>(s)];
+}
+std::optional<StatusSource> parseStatusSource(std::string_view name) {
+  for (std::size_t i = 0; i < kSourceNames.size(); ++i)
+    if (kSourceNames[i] == name) return static_cast<StatusSource>(i);
+  return std::nullopt;
+}
+
+ContactStatus ContactStatus::of(ContactClass c) {
+  return ContactStatus{static_cast<StatusKind>(c), 0.0};
+}
+
+std::string statusText(const ContactStatus& s) {
+  if (s.kind == StatusKind::Hole) {
+    const double w = std::isfinite(s.holeWidthUnits) ? std::round(s.holeWidthUnits) : 0.0;
+    char buf[48];
+    std::snprintf(buf, sizeof buf, "Hole(%.0f)", w == 0.0 ? 0.0 : w);
+    return buf;
+  }
+  return std::string(kKindNames[static_cast<std::size_t>(s.kind)]);
+}
+
+std::optional<ContactStatus> parseStatusText(std::string_view text) {
+  for (std::size_t i = 0; i < kKindNames.size(); ++i) {
+    if (i == static_cast<std::size_t>(StatusKind::Hole)) continue;
+    if (kKindNames[i] == text) return ContactStatus{static_cast<StatusKind>(i), 0.0};
+  }
+  if (text.size() > 6 && text.starts_with("Hole(") && text.ends_with(")")) {
+    const std::string_view digits = text.substr(5, text.size() - 6);
+    double w = 0.0;
+    for (char c : digits) {
+      if (c < '0' || c > '9') return std::nullopt;
+      w = 10.0 * w + (c - '0');
+    }
+    return ContactStatus{StatusKind::Hole, w};
+  }
+  return std::nullopt;
+}
+
+Observation observe(const sim::Simulator& simulator, std::size_t step, const Pose2d& start,
+                    const Vec2& goal) {
+  Observation o;
+  o.step = step;
+  o.dtSeconds = simulator.config().dtSeconds;
+  o.pose = simulator.pose();
+  o.start = start;
+  o.goal = goal;
+  o.blocked = simulator.blocked();
+  o.values = &simulator.sensors();
+  o.truth = &simulator.truth();
+  return o;
+}
+
+struct Navigator::Impl {
+  // Phases inside a strategy.
+  enum class Phase { None, Back, Turn, Forward, Approach, Face, Enter };
+
+  NavigatorConfig cfg;
+  std::unique_ptr<StatusEstimator> estimator;
+  std::array<DomePlacement, kSensorCount> domes;
+
+  // What the robot knows.
+  bool initialised = false;
+  Pose2d odo;
+  Vec2 goal = Vec2::Zero();
+  Command last;
+  double dt = 0.1;
+  std::size_t stepIndex = 0;
+
+  // What it shows.
+  Strategy strategy = Strategy::HeadToDestination;
+  std::array<ContactStatus, kGroupCount> status{};
+  ContactStatus integrated;
+  HoleMemory memory;
+  std::optional<RunOutcome> finished;
+  bool arrived = false;
+
+  // The wall episode: from a hit while heading for the goal until the robot leaves it.
+  int wall = -1;
+  bool wallOnLeft = true;
+  Vec2 hitPoint = Vec2::Zero();
+  double hitGoalDistance = 0.0;
+  double farFromHit = 0.0;
+  bool following = false;  // the hit point counts from the first Follow Wall step
+
+  // Phase state.
+  Phase phase = Phase::None;
+  int phaseSteps = 0;
+  double phaseUnits = 0.0;  // distance covered in the phase (odometry)
+  double turned = 0.0;      // radians turned in the phase (odometry, signed)
+  bool frontCleared = false;
+  int sideSteps = 0;
+
+  // Gap tracking along the followed side.
+  bool sideWasTouching = false;
+  bool sideLost = false;
+  Vec2 gapStart = Vec2::Zero();
+  Vec2 lastRearTouch = Vec2::Zero();
+  double lostUnits = 0.0;
+  bool rounding = false;
+  double roundTurned = 0.0;
+
+  // Move Through Wall.
+  std::optional<std::size_t> target;
+  Vec2 holeCentre = Vec2::Zero();
+  Vec2 inward = Vec2::UnitX();
+  int failSteps = 0;
+
+  // Escape from blocked steps.
+  int blockedStreak = 0;
+  int escapeIndex = 0;
+  int escapeSteps = 0;
+  Command escape;
+
+  // Bug2 (bumper source).
+  Vec2 startPoint = Vec2::Zero();
+
+  const std::array<double, kValuesPerStep>* values = nullptr;
+
+  double cruise() const { return cfg.cruiseUnitsPerSecond; }
+  Vec2 position() const { return Vec2(odo.x, odo.y); }
+  // +1 turns away from the followed wall (counter-clockwise when it is on the right).
+  double away() const { return wallOnLeft ? -1.0 : 1.0; }
+
+  void integrate(bool blocked) {
+    if (blocked) return;  // a cancelled step: the pose stays (as far as the robot knows)
+    const double theta = odo.theta;
+    odo = sim::integratePose(odo, last.v, last.omega, dt);
+    odo.theta = sim::wrapAngle(odo.theta);
+    phaseUnits += std::abs(last.v) * dt;
+    turned += sim::wrapAngle(odo.theta - theta);
+    if (sideLost) lostUnits += std::abs(last.v) * dt;
+    if (rounding) roundTurned += std::abs(sim::wrapAngle(odo.theta - theta));
+  }
+
+  Vec2 domeWorld(int sensor) const {
+    return sim::bodyToWorld(odo, toVec(domes[static_cast<std::size_t>(sensor)].centre));
+  }
+
+  // Side groups of the followed side, and its near front corner / far front corner.
+  SensorGroup sideGroup() const { return wallOnLeft ? SensorGroup::Left : SensorGroup::Right; }
+  double sideMax() const {
+    using G = SensorGroup;
+    return wallOnLeft
+               ? std::max({groupMax(*values, G::Left), groupMax(*values, G::FrontLeftCorner),
+                           groupMax(*values, G::RearLeftCorner)})
+               : std::max({groupMax(*values, G::Right), groupMax(*values, G::FrontRightCorner),
+                           groupMax(*values, G::RearRightCorner)});
+  }
+  // The front face and the far front corner (the near one touches while following).
+  double aheadMax() const {
+    using G = SensorGroup;
+    return std::max(groupMax(*values, G::Front),
+                    groupMax(*values, wallOnLeft ? G::FrontRightCorner : G::FrontLeftCorner));
+  }
+  double frontMax() const {
+    using G = SensorGroup;
+    return std::max({groupMax(*values, G::Front), groupMax(*values, G::FrontLeftCorner),
+                     groupMax(*values, G::FrontRightCorner)});
+  }
+  double backMax() const {
+    using G = SensorGroup;
+    return std::max({groupMax(*values, G::Back), groupMax(*values, G::RearLeftCorner),
+                     groupMax(*values, G::RearRightCorner)});
+  }
+  ContactStatus groupStatus(SensorGroup g) const {
+    return status[static_cast<std::size_t>(groupIndex(g))];
+  }
+
+  void setStrategy(Strategy s, Phase p = Phase::None) {
+    strategy = s;
+    phase = p;
+    phaseSteps = 0;
+    phaseUnits = 0.0;
+    turned = 0.0;
+    frontCleared = false;
+    sideSteps = 0;
+    failSteps = 0;
+  }
+
+  // ---- status -------------------------------------------------------------------------------
+
+  void updateStatus(const Observation& obs) {
+    const GroupClasses& classes = estimator->update(*obs.values, obs.truth);
+    for (std::size_t g = 0; g < kGroupCount; ++g) {
+      status[g] =
+          classes[g] ? ContactStatus::of(*classes[g]) : ContactStatus{StatusKind::Undecided, 0.0};
+    }
+    // Holes on the long sides (thesis 4.5): two fragments of contact with free domes between.
+    std::array<bool, kSensorCount> contact{};
+    for (int s = 0; s < kSensorCount; ++s)
+      contact[static_cast<std::size_t>(s)] = normalOf(*obs.values, s) > 0.0;
+    for (const analysis::SideRange& side : analysis::kSides) {
+      const bool left = side.firstSensor == analysis::kSides[1].firstSensor;
+      const bool right = side.firstSensor == analysis::kSides[3].firstSensor;
+      if (!left && !right) continue;
+      const analysis::HoleScan scan =
+          analysis::scanSide(contact, side.firstSensor, side.count, domes);
+      if (scan.holes.empty()) continue;
+      // The widest opening of the side; its width between the two bounding domes less one dome
+      // slot (the domes next to the opening may sit a radius beyond its edges).
+      const analysis::Hole* best = &scan.holes.front();
+      for (const analysis::Hole& h : scan.holes)
+        if (h.widthUnits > best->widthUnits) best = &h;
+      const double width = 0.5 * (best->widthUnits + best->freeSpanUnits);
+      status[static_cast<std::size_t>(groupIndex(left ? SensorGroup::Left : SensorGroup::Right))] =
+          ContactStatus{StatusKind::Hole, width};
+      if (wall >= 0 && (strategy == Strategy::FollowWall || strategy == Strategy::GoStraight) &&
+          left == wallOnLeft) {
+        const Vec2 centre =
+            0.5 * (domeWorld(best->lastSensorBefore) + domeWorld(best->firstSensorAfter));
+        memory.observe(width, odo, centre, left, stepIndex, wall);
+      }
+    }
+    // The rear-most dome of the followed side on the wall: where an opening starts once the whole
+    // side has lost the wall.
+    const int first = wallOnLeft ? 21 : 30;
+    const int stepDir = wallOnLeft ? -1 : 1;
+    for (int i = 0, s = first; i < 14; ++i, s += stepDir) {
+      if (normalOf(*obs.values, s) > 0.0) {
+        lastRearTouch = domeWorld(s);
+        break;
+      }
+    }
+    integrated = integratedOf();
+  }
+
+  // The robot's status as the panel shows it: the followed side while following; otherwise the
+  // most telling group (a hole, then a dead path, corner, leaving wall, wall).
+  ContactStatus integratedOf() const {
+    if (strategy == Strategy::FollowWall || strategy == Strategy::GoStraight) {
+      const ContactStatus s = groupStatus(sideGroup());
+      if (s.kind != StatusKind::NoContact) return s;
+    }
+    static constexpr std::array<StatusKind, 6> kOrder{StatusKind::Hole,   StatusKind::DeadPath,
+                                                      StatusKind::Corner, StatusKind::LeavingWall,
+                                                      StatusKind::Wall,   StatusKind::Undecided};
+    for (StatusKind k : kOrder) {
+      ContactStatus found{StatusKind::NoContact, 0.0};
+      for (const ContactStatus& s : status)
+        if (s.kind == k && (k != StatusKind::Hole || s.holeWidthUnits > found.holeWidthUnits))
+          found = s;
+      if (found.kind == k) return found;
+    }
+    return {};
+  }
+
+  // ---- motion primitives ----------------------------------------------------------------------
+
+  Command headTo(const Vec2& target) const {
+    const Vec2 d = target - position();
+    const double err = sim::wrapAngle(std::atan2(d.y(), d.x()) - odo.theta);
+    const double turn = cfg.turnRadiansPerSecond;
+    if (std::abs(err) > 0.3) return {0.0, err > 0 ? turn : -turn};
+    return {cruise(), std::clamp(1.5 * err, -turn, turn)};
+  }
+
+  // Escape moves tried in turn after several blocked steps, each held a few steps: back, turn
+  // either way, forward.
+  Command nextEscape() {
+    static constexpr std::array<std::array<double, 2>, 6> kMoves{
+        {{-0.5, 0.0}, {0.0, 0.6}, {-0.4, -0.6}, {0.6, 0.0}, {0.0, -0.6}, {-0.4, 0.6}}};
+    const auto& m = kMoves[static_cast<std::size_t>(escapeIndex++) % kMoves.size()];
+    // Turns are mirrored so the first turn goes away from the followed wall.
+    escape = {m[0] * cruise(), m[1] * away() * cfg.turnRadiansPerSecond / 0.8 * 0.8};
+    escapeSteps = 4;
+    return escape;
+  }
+
+  // ---- episodes -------------------------------------------------------------------------------
+
+  void startEpisode() {
+    ++wall;
+    using G = SensorGroup;
+    // The wall goes on the side that touched first: front-left contact means turning right.
+    double left = groupMax(*values, G::FrontLeftCorner) + groupMax(*values, G::Left);
+    double right = groupMax(*values, G::FrontRightCorner) + groupMax(*values, G::Right);
+    for (int s = 0; s < 8; ++s)
+      (s < 4 ? right : left) += normalOf(*values, s);
+    if (left == right) {
+      const Vec2 g = goal - position();
+      const double err = sim::wrapAngle(std::atan2(g.y(), g.x()) - odo.theta);
+      wallOnLeft = err < 0.0;  // turn toward the goal's side
+    } else {
+      wallOnLeft = left > right;
+    }
+    following = false;
+    farFromHit = 0.0;
+    hitGoalDistance = (goal - position()).norm();
+    sideLost = false;
+    rounding = false;
+    sideWasTouching = false;
+    setStrategy(Strategy::CheckContact, Phase::Back);
+  }
+
+  void beginFollowing() {
+    if (!following) {
+      following = true;
+      hitPoint = position();
+      farFromHit = 0.0;
+    }
+    sideLost = false;
+    rounding = false;
+    setStrategy(Strategy::FollowWall);
+  }
+
+  // The goal lies away from the followed wall and closer than where the wall was hit.
+  bool mayLeave() const {
+    const Vec2 g = goal - position();
+    const double d = g.norm();
+    if (d <= 0.0 || d > hitGoalDistance - kLeaveGainUnits) return false;
+    const Vec2 into = wallOnLeft ? Vec2(-std::sin(odo.theta), std::cos(odo.theta))
+                                 : Vec2(std::sin(odo.theta), -std::cos(odo.theta));
+    return g.dot(into) / d < kLeaveCosine && aheadMax() <= kTouching;
+  }
+
+  // Back where following started, having been away: the obstacle was walked round.
+  bool circled() {
+    if (!following) return false;
+    const double d = (position() - hitPoint).norm();
+    farFromHit = std::max(farFromHit, d);
+    return farFromHit > kDepartUnits && d < kReturnUnits;
+  }
+
+  // The wall is exhausted: go for the widest passable hole left, or give up.
+  Command wallExhausted(bool needUTurn) {
+    if (auto h = memory.widestPassable(cfg.passableWidthUnits, -1)) {
+      beginHole(*h);
+      if (needUTurn)
+        setStrategy(wallOnLeft ? Strategy::RightUTurn : Strategy::LeftUTurn, Phase::Back);
+      return {};
+    }
+    finished = RunOutcome::Unreachable;
+    return {};
+  }
+
+  void beginHole(std::size_t index) {
+    target = index;
+    const RememberedHole& h = memory.holes()[index];
+    holeCentre = h.centre;
+    inward = h.onLeft ? Vec2(-std::sin(h.pose.theta), std::cos(h.pose.theta))
+                      : Vec2(std::sin(h.pose.theta), -std::cos(h.pose.theta));
+    setStrategy(Strategy::MoveThroughWall, Phase::Approach);
+  }
+
+  void failHole() {
+    if (target) memory.markTried(*target);
+    target.reset();
+    setStrategy(Strategy::CheckContact, Phase::Back);
+  }
+
+  // ---- strategies -----------------------------------------------------------------------------
+
+  Command headToDestination() {
+    if (frontMax() > kTouching || blockedStreak > 0) {
+      startEpisode();
+      return checkContact();
+    }
+    Command c = headTo(goal);
+    // A side brushing something while the way ahead is free: ease away from it.
+    const double l = std::max(groupMax(*values, SensorGroup::Left),
+                              groupMax(*values, SensorGroup::RearLeftCorner));
+    const double r = std::max(groupMax(*values, SensorGroup::Right),
+                              groupMax(*values, SensorGroup::RearRightCorner));
+    if (c.v > 0.0 && l > kTouching && r <= kTouching) c.omega = -cfg.slightTurnRadiansPerSecond;
+    if (c.v > 0.0 && r > kTouching && l <= kTouching) c.omega = cfg.slightTurnRadiansPerSecond;
+    return c;
+  }
+
+  // Thesis 5.2 (3): back off what is ahead, turn away by a slight angle past a clear front, move
+  // on arcing gently toward the wall until the side follows it (status Wall or Corner).
+  Command checkContact() {
+    ++phaseSteps;
+    switch (phase) {
+      case Phase::Back:
+      case Phase::None:
+        if (phase == Phase::None) setStrategy(Strategy::CheckContact, Phase::Back);
+        if (phaseUnits < kBackOffUnits && backMax() <= kTouching && blockedStreak < 2 &&
+            phaseSteps < 12 && (frontMax() > 0.5 || phaseUnits < 0.4 * kBackOffUnits)) {
+          return {-0.5 * cruise(), 0.0};
+        }
+        setStrategy(Strategy::CheckContact, Phase::Turn);
+        [[fallthrough]];
+      case Phase::Turn: {
+        if (blockedStreak >= 2) {
+          setStrategy(Strategy::CheckContact, Phase::Back);
+          return {-0.5 * cruise(), 0.0};
+        }
+        if (!frontCleared && aheadMax() <= 0.0 && frontMax() <= kTouching) {
+          frontCleared = true;
+          turned = 0.0;
+        }
+        if (frontCleared && std::abs(turned) >= kCheckExtraTurn) {
+          setStrategy(Strategy::CheckContact, Phase::Forward);
+        } else {
+          if (phaseSteps > 120) {  // turned round without clearing: a pocket
+            setStrategy(Strategy::CheckContact, Phase::Forward);
+          }
+          return {0.0, away() * cfg.turnRadiansPerSecond};
+        }
+        [[fallthrough]];
+      }
+      case Phase::Forward: {
+        if (aheadMax() > kTouching || blockedStreak >= 2) {
+          setStrategy(Strategy::CheckContact, Phase::Back);
+          return {-0.5 * cruise(), 0.0};
+        }
+        const double side = sideMax();
+        if (side > 0.0) {
+          ++sideSteps;
+          const StatusKind k = groupStatus(sideGroup()).kind;
+          if (k == StatusKind::Wall || k == StatusKind::Corner || k == StatusKind::Hole ||
+              sideSteps >= kCheckMaxSideSteps) {
+            beginFollowing();
+            return followWall();
+          }
+        }
+        if (phaseUnits > kCheckLostUnits) {
+          // Nothing found beside: the obstacle was small; head for the goal again.
+          setStrategy(Strategy::HeadToDestination);
+          return headTo(goal);
+        }
+        return {0.6 * cruise(), -away() * 2.0 * cfg.slightTurnRadiansPerSecond};
+      }
+      default:
+        break;
+    }
+    setStrategy(Strategy::CheckContact, Phase::Back);
+    return {};
+  }
+
+  // Thesis 5.2 (4): keep the side on the wall with the 4 / 3 / 0.5 / 2 rule.
+  Command followWall() {
+    if (circled()) return wallExhausted(false);
+    if (mayLeave()) {
+      setStrategy(Strategy::HeadToDestination);
+      return headTo(goal);
+    }
+    const StatusKind front = groupStatus(SensorGroup::Front).kind;
+    if (aheadMax() > kTouching || front == StatusKind::DeadPath) {
+      // The end of this wall: a wall ahead. With a passable hole behind, go back to the widest
+      // one (thesis 5.3.2); else turn along the next wall.
+      if (memory.widestPassable(cfg.passableWidthUnits, wall)) return wallExhausted(true);
+      setStrategy(Strategy::CheckContact, Phase::Back);
+      return checkContact();
+    }
+    if (blockedStreak > 0) return {0.0, away() * 0.5 * cfg.turnRadiansPerSecond};
+    const double side = sideMax();
+    const StatusKind s = groupStatus(sideGroup()).kind;
+    if (side <= 0.0 || s == StatusKind::LeavingWall) {
+      setStrategy(Strategy::GoStraight);
+      return goStraight();
+    }
+    switch (sim::followWallAction(*values, !wallOnLeft)) {
+      case sim::FollowAction::Away:
+        return {0.7 * cruise(), away() * cfg.slightTurnRadiansPerSecond};
+      case sim::FollowAction::Toward:
+        return {0.8 * cruise(), -away() * cfg.slightTurnRadiansPerSecond};
+      case sim::FollowAction::Straight:
+        break;
+    }
+    return {cruise(), 0.0};
+  }
+
+  // Thesis 5.2 (1), used to cross what the side has lost (a hole, a door) while checking the
+  // wall; the width of the opening is measured by odometry from the last dome on the wall before
+  // it to the first dome on the wall after it.
+  Command goStraight() {
+    if (circled()) return wallExhausted(false);
+    if (mayLeave()) {
+      setStrategy(Strategy::HeadToDestination);
+      return headTo(goal);
+    }
+    if (aheadMax() > kTouching) {
+      if (memory.widestPassable(cfg.passableWidthUnits, wall)) return wallExhausted(true);
+      setStrategy(Strategy::CheckContact, Phase::Back);
+      return checkContact();
+    }
+    const double side = sideMax();
+    if (side > 0.0 && sideLost) {
+      // The next fragment: the opening between the last contact and this one.
+      const int first = wallOnLeft ? 8 : 43;
+      const int step = wallOnLeft ? 1 : -1;
+      for (int i = 0, s = first; i < 14; ++i, s += step) {
+        if (normalOf(*values, s) > 0.0) {
+          const Vec2 end = domeWorld(s);
+          memory.observe((end - gapStart).norm(), odo, 0.5 * (end + gapStart), wallOnLeft,
+                         stepIndex, wall);
+          break;
+        }
+      }
+      sideLost = false;
+      rounding = false;
+    }
+    if (side > 0.0) {
+      if (groupStatus(sideGroup()).kind != StatusKind::LeavingWall) {
+        beginFollowing();
+        return followWall();
+      }
+      return {cruise(), 0.0};
+    }
+    if (!sideLost) {
+      sideLost = true;
+      lostUnits = 0.0;
+      gapStart = lastRearTouch;
+    }
+    if (lostUnits > kGapProbeUnits || rounding) {
+      // The wall has ended (or turned away): round its end, as a wall follower does.
+      if (!rounding) {
+        rounding = true;
+        roundTurned = 0.0;
+      }
+      if (roundTurned > 2.0 * kPi) {
+        setStrategy(Strategy::HeadToDestination);
+        return headTo(goal);
+      }
+      return {0.6 * cruise(), -away() * kRoundTurnFraction * cfg.turnRadiansPerSecond};
+    }
+    return {cruise(), 0.0};
+  }
+
+  // Thesis 5.2 (6): turn 180 degrees away from the wall, after backing off what is ahead.
+  Command uTurn() {
+    ++phaseSteps;
+    if (phase == Phase::Back) {
+      if (phaseUnits < kBackOffUnits && backMax() <= kTouching && blockedStreak < 2 &&
+          phaseSteps < 12) {
+        return {-0.5 * cruise(), 0.0};
+      }
+      phase = Phase::Turn;
+      turned = 0.0;
+    }
+    if (std::abs(turned) >= kPi - 0.05 || phaseSteps > 200) {
+      if (target) {
+        const std::size_t t = *target;
+        beginHole(t);
+        return moveThroughWall();
+      }
+      setStrategy(Strategy::CheckContact, Phase::Forward);
+      return {};
+    }
+    const double dir = strategy == Strategy::RightUTurn ? -1.0 : 1.0;
+    if (blockedStreak >= 2) return {(phaseSteps / 4) % 2 ? 0.3 * cruise() : -0.3 * cruise(), 0.0};
+    return {0.0, dir * cfg.turnRadiansPerSecond};
+  }
+
+  // Thesis 5.2 (5): go to a point in front of the remembered hole, face it, move through.
+  Command moveThroughWall() {
+    ++phaseSteps;
+    const Vec2 approach = holeCentre - kApproachUnits * inward;
+    const Vec2 through = holeCentre + kThroughUnits * inward;
+    if (blockedStreak >= 3 ||
+        (phase != Phase::Enter && groupMax(*values, SensorGroup::Front) > 1.0)) {
+      if (++failSteps > 3 || phase == Phase::Enter) {
+        failHole();
+        return checkContact();
+      }
+    }
+    if (phase == Phase::Approach) {
+      if ((approach - position()).norm() < 12.0 || phaseSteps > 800) {
+        phase = Phase::Face;
+      } else {
+        Command c = headTo(approach);
+        const double l = std::max(groupMax(*values, SensorGroup::Left),
+                                  groupMax(*values, SensorGroup::FrontLeftCorner));
+        const double r = std::max(groupMax(*values, SensorGroup::Right),
+                                  groupMax(*values, SensorGroup::FrontRightCorner));
+        if (l > kTouching && r <= kTouching) c = {0.5 * cruise(), -cfg.turnRadiansPerSecond * 0.5};
+        if (r > kTouching && l <= kTouching) c = {0.5 * cruise(), cfg.turnRadiansPerSecond * 0.5};
+        return c;
+      }
+    }
+    if (phase == Phase::Face) {
+      const Vec2 d = through - position();
+      const double err = sim::wrapAngle(std::atan2(d.y(), d.x()) - odo.theta);
+      if (std::abs(err) > 0.04)
+        return {0.0, err > 0 ? cfg.turnRadiansPerSecond : -cfg.turnRadiansPerSecond};
+      phase = Phase::Enter;
+      phaseUnits = 0.0;
+    }
+    // Enter: straight through, easing away from a jamb a front corner or a side touches.
+    if ((position() - holeCentre).dot(inward) > kThroughUnits - 30.0) {
+      if (target) memory.markTried(*target);
+      target.reset();
+      following = false;
+      setStrategy(Strategy::HeadToDestination);
+      return headTo(goal);
+    }
+    if (groupMax(*values, SensorGroup::Front) > 1.5 ||
+        phaseUnits > 3.0 * kThroughUnits + kApproachUnits) {
+      failHole();
+      return checkContact();
+    }
+    using G = SensorGroup;
+    const double l = std::max(groupMax(*values, G::FrontLeftCorner), groupMax(*values, G::Left));
+    const double r = std::max(groupMax(*values, G::FrontRightCorner), groupMax(*values, G::Right));
+    const Vec2 d = through - position();
+    const double err = sim::wrapAngle(std::atan2(d.y(), d.x()) - odo.theta);
+    double omega = std::clamp(err, -0.3, 0.3);
+    if (l > kTouching && l > r) omega = -0.4;
+    if (r > kTouching && r > l) omega = 0.4;
+    return {0.5 * cruise(), omega};
+  }
+
+  // ---- Bug2 with a binary bumper ----------------------------------------------------------------
+
+  Command bug2() {
+    const bool front = frontMax() > 0.0;
+    const bool side = sideMax() > 0.0;
+    if (strategy == Strategy::HeadToDestination) {
+      if (!front && blockedStreak == 0) return headTo(goal);
+      ++wall;
+      wallOnLeft = false;  // left-hand rule: keep the obstacle on the right, turn left
+      hitGoalDistance = (goal - position()).norm();
+      hitPoint = position();
+      following = true;
+      farFromHit = 0.0;
+      setStrategy(Strategy::CheckContact, Phase::Back);
+    }
+    if (circled()) {
+      finished = RunOutcome::Unreachable;
+      return {};
+    }
+    // Leave on the start-goal line, closer than the hit point, the front free.
+    const Vec2 line = goal - startPoint;
+    const double len = line.norm();
+    const Vec2 p = position();
+    const double off = len > 0.0 ? std::abs(sim::cross2(line, p - startPoint)) / len : 0.0;
+    if (strategy == Strategy::FollowWall && off < 15.0 &&
+        (goal - p).norm() < hitGoalDistance - kLeaveGainUnits && !front) {
+      setStrategy(Strategy::HeadToDestination);
+      return headTo(goal);
+    }
+    if (strategy == Strategy::CheckContact) {
+      ++phaseSteps;
+      if (phase == Phase::Back) {
+        if (phaseSteps <= 3 && !(backMax() > 0.0)) return {-0.5 * cruise(), 0.0};
+        phase = Phase::Turn;
+      }
+      if (front || blockedStreak > 0) return {0.0, away() * cfg.turnRadiansPerSecond};
+      setStrategy(Strategy::FollowWall);
+    }
+    if (front || blockedStreak > 0) {
+      setStrategy(Strategy::CheckContact, Phase::Back);
+      return {-0.5 * cruise(), 0.0};
+    }
+    // Binary bumper following: touching -> veer away, free -> arc back toward the wall.
+    if (side) return {0.8 * cruise(), away() * 2.0 * cfg.slightTurnRadiansPerSecond};
+    return {0.6 * cruise(), -away() * kRoundTurnFraction * cfg.turnRadiansPerSecond};
+  }
+
+  // ---- one step
+  // -----------------------------------------------------------------------------------
+
+  Command step(const Observation& obs) {
+    values = obs.values;
+    if (!initialised) {
+      initialised = true;
+      odo = obs.start;
+      dt = obs.dtSeconds;
+      // The goal as the robot knows it: its offset from the start (thesis ch. 5: direction and
+      // distance to the destination).
+      goal = obs.goal;
+      startPoint = Vec2(obs.start.x, obs.start.y);
+    } else {
+      integrate(obs.blocked);
+    }
+    stepIndex = obs.step;
+    blockedStreak = obs.blocked ? blockedStreak + 1 : 0;
+    updateStatus(obs);
+    if (finished || arrived) return last = Command{};
+    if ((goal - position()).norm() < cfg.arriveRadiusUnits) {
+      arrived = true;
+      return last = Command{};
+    }
+    Command c = choose();
+    if (finished) c = {};
+    integrated = integratedOf();
+    return last = c;
+  }
+
+  Command choose() {
+    if (cfg.source == StatusSource::Bumper) {
+      if (blockedStreak >= kEscapeAfter + 2 || escapeSteps > 0) return escapeMove();
+      return bug2();
+    }
+    if (blockedStreak >= kEscapeAfter + 3 || escapeSteps > 0) return escapeMove();
+    switch (strategy) {
+      case Strategy::HeadToDestination:
+        return headToDestination();
+      case Strategy::CheckContact:
+        return checkContact();
+      case Strategy::FollowWall:
+        return followWall();
+      case Strategy::GoStraight:
+        return goStraight();
+      case Strategy::RightUTurn:
+      case Strategy::LeftUTurn:
+        return uTurn();
+      case Strategy::MoveThroughWall:
+        return moveThroughWall();
+    }
+    return {};
+  }
+
+  Command escapeMove() {
+    if (escapeSteps > 0 && blockedStreak == 0) {
+      --escapeSteps;
+      return escape;
+    }
+    if (escapeSteps > 0 && blockedStreak > 0) escapeSteps = 0;
+    if (blockedStreak >= kEscapeAfter) return nextEscape();
+    escapeSteps = 0;
+    return {};
+  }
+};
+
+Result<std::unique_ptr<Navigator>> Navigator::create(NavigatorConfig config) {
+  auto impl = std::make_unique<Impl>();
+  switch (config.source) {
+    case StatusSource::Model: {
+      if (!config.models || config.models->models.empty())
+        return Error("the model status source needs a trained model bundle");
+      bool side = false;
+      for (const analysis::GroupModel& m : config.models->models)
+        side = side || m.group == SensorGroup::Left || m.group == SensorGroup::Right;
+      if (!side) return Error("the model bundle has no model for the left or right side");
+      impl->estimator =
+          std::make_unique<ModelStatusEstimator>(config.models, config.stayProbability);
+      break;
+    }
+    case StatusSource::Truth:
+      impl->estimator = std::make_unique<TruthStatusEstimator>();
+      break;
+    case StatusSource::Bumper:
+      impl->estimator = std::make_unique<BumperStatusEstimator>();
+      break;
+  }
+  if (!(config.cruiseUnitsPerSecond > 0.0) || !(config.turnRadiansPerSecond > 0.0))
+    return Error("speeds must be positive");
+  impl->domes = domePlacements(config.geometry);
+  impl->cfg = std::move(config);
+  return std::unique_ptr<Navigator>(new Navigator(std::move(impl)));
+}
+
+Navigator::Navigator(std::unique_ptr<Impl> impl) : impl_(std::move(impl)) {}
+Navigator::~Navigator() = default;
+
+Command Navigator::step(const Observation& observation) {
+  return impl_->step(observation);
+}
+
+std::string Navigator::name() const {
+  return impl_->cfg.source == StatusSource::Bumper
+             ? std::string("bug2-bumper")
+             : "navigator-" + std::string(statusSourceName(impl_->cfg.source));
+}
+
+Command Navigator::next(const sim::Observation& observation) {
+  Observation o;
+  static_cast<sim::Observation&>(o) = observation;
+  return impl_->step(o);
+}
+
+std::optional<RunOutcome> Navigator::finished() const {
+  return impl_->finished;
+}
+const NavigatorConfig& Navigator::config() const {
+  return impl_->cfg;
+}
+Strategy Navigator::strategy() const {
+  return impl_->strategy;
+}
+const std::array<ContactStatus, kGroupCount>& Navigator::groupStatus() const {
+  return impl_->status;
+}
+ContactStatus Navigator::integratedStatus() const {
+  return impl_->integrated;
+}
+const std::vector<RememberedHole>& Navigator::holes() const {
+  return impl_->memory.holes();
+}
+const Pose2d& Navigator::odometry() const {
+  return impl_->odo;
+}
+bool Navigator::arrived() const {
+  return impl_->arrived;
+}
+
+}  // namespace tactile::nav

@@ -1,0 +1,132 @@
+// Whole navigation runs in small hand-made scenes: the goal reached round an obstacle and through
+// a hole, an enclosed goal ending as unreachable, a too-narrow gap never forced, determinism.
+#include <gtest/gtest.h>
+
+#include "nav/navigate.h"
+#include "run/run_csv.h"
+#include "sim/scene.h"
+#include "sim/scene_source.h"
+
+namespace tactile::nav {
+namespace {
+
+sim::Obstacle box(double x0, double y0, double x1, double y1) {
+  return sim::Obstacle{{Vec2(x0, y0), Vec2(x1, y0), Vec2(x1, y1), Vec2(x0, y1)}};
+}
+
+std::shared_ptr<const sim::World> worldOf(std::vector<sim::Obstacle> obstacles, double width = 1400,
+                                          double height = 900) {
+  sim::Scene s;
+  s.name = "test";
+  s.bounds = {0, 0, width, height};
+  s.obstacles = std::move(obstacles);
+  s.start = {200, 450, 0};
+  s.goal = Vec2(width - 200, 450);
+  return std::make_shared<const sim::World>(std::move(s));
+}
+
+// A wall across the scene at x = 700..720 with openings [y0, y1).
+std::vector<sim::Obstacle> wallWithOpenings(std::vector<std::pair<double, double>> openings,
+                                            double height = 900) {
+  std::vector<sim::Obstacle> out;
+  double y = 0.0;
+  for (const auto& [y0, y1] : openings) {
+    if (y0 > y) out.push_back(box(700, y, 720, y0));
+    y = y1;
+  }
+  if (y < height) out.push_back(box(700, y, 720, height));
+  return out;
+}
+
+NavigateResult run(const std::shared_ptr<const sim::World>& world, StatusSource source,
+                   Pose2d start, std::size_t maxSteps = 8000) {
+  NavigatorConfig config;
+  config.source = source;
+  NavigateOptions options;
+  options.maxSteps = maxSteps;
+  auto r = navigate(world, "test", start, world->scene().goal, config, options);
+  EXPECT_TRUE(r.ok()) << (r.ok() ? "" : r.errorText());
+  return std::move(r.value());
+}
+
+TEST(Navigate, TinySceneReachesTheGoalRoundABox) {
+  const auto world = worldOf({box(600, 330, 700, 570)});
+  for (StatusSource source : {StatusSource::Truth, StatusSource::Bumper}) {
+    for (double y : {400.0, 450.0, 500.0}) {
+      const NavigateResult r = run(world, source, {200, y, 0});
+      EXPECT_EQ(r.outcome, RunOutcome::Success)
+          << statusSourceName(source) << " from y " << y << ": " << runOutcomeName(r.outcome)
+          << " after " << r.steps << " steps";
+      EXPECT_GT(r.pathLengthUnits, 900.0);
+      EXPECT_EQ(r.run.stepCount(), r.steps);
+    }
+  }
+}
+
+TEST(Navigate, EnclosedGoalEndsUnreachable) {
+  // The goal inside a closed ring of four walls.
+  const auto world = worldOf({box(950, 250, 1250, 270), box(950, 630, 1250, 650),
+                              box(950, 270, 970, 630), box(1230, 270, 1250, 630)});
+  for (StatusSource source : {StatusSource::Truth, StatusSource::Bumper}) {
+    const NavigateResult r = run(world, source, {200, 450, 0}, 20000);
+    EXPECT_EQ(r.outcome, RunOutcome::Unreachable)
+        << statusSourceName(source) << ": " << runOutcomeName(r.outcome) << " after " << r.steps;
+    EXPECT_EQ(*r.run.meta("outcome"), "unreachable");
+  }
+}
+
+TEST(Navigate, WallWithOnlyANarrowGapIsUnreachable) {
+  const auto world = worldOf(wallWithOpenings({{400, 490}}));
+  for (double y : {300.0, 600.0}) {
+    const NavigateResult r = run(world, StatusSource::Truth, {250, y, 0}, 20000);
+    EXPECT_EQ(r.outcome, RunOutcome::Unreachable) << "from y " << y << " after " << r.steps;
+  }
+}
+
+TEST(Navigate, HoleWiderThanTheRobotIsPassed) {
+  const auto world = worldOf(wallWithOpenings({{400, 520}}));
+  for (double y : {200.0, 450.0, 700.0}) {
+    const NavigateResult r = run(world, StatusSource::Truth, {250, y, 0});
+    EXPECT_EQ(r.outcome, RunOutcome::Success) << "from y " << y << " after " << r.steps;
+  }
+}
+
+TEST(Navigate, RunsAreDeterministicAndCarryTheNavigatorColumns) {
+  const auto world = worldOf({box(600, 330, 700, 570)});
+  const NavigateResult a = run(world, StatusSource::Truth, {200, 420, 0.1});
+  const NavigateResult b = run(world, StatusSource::Truth, {200, 420, 0.1});
+  EXPECT_TRUE(a.run == b.run);
+  ASSERT_EQ(a.run.extraColumns.size(), 2u + kGroupCount);
+  EXPECT_EQ(a.run.extraColumns[0], "x_strategy");
+  EXPECT_EQ(a.run.extraColumns[1], "x_status");
+  EXPECT_EQ(a.run.extraColumns[2], "x_status_F");
+  EXPECT_EQ(a.run.extraValues.size(), a.run.stepCount() * a.run.extraColumns.size());
+  // Every strategy cell reads back; the first step heads for the goal.
+  for (std::size_t k = 0; k < a.run.stepCount(); ++k)
+    EXPECT_TRUE(parseStrategyKey(a.run.extraValues[k * a.run.extraColumns.size()]));
+  EXPECT_EQ(a.run.extraValues[0], "HeadToDestination");
+  // And the run file round-trips through the one reader.
+  const std::string text = formatRunCsv(a.run);
+  auto back = parseRunCsv(text, "nav.csv");
+  ASSERT_TRUE(back.ok()) << back.errorText();
+  EXPECT_TRUE(back.value() == a.run);
+}
+
+TEST(Navigate, DrawStartIsDeterministicAndFree) {
+  auto loaded = sim::loadScene("chapter5");
+  ASSERT_TRUE(loaded.ok());
+  const auto world = std::make_shared<const sim::World>(std::move(loaded.value()));
+  for (std::uint64_t seed = 1; seed <= 20; ++seed) {
+    const Pose2d a = drawStart(world, seed);
+    const Pose2d b = drawStart(world, seed);
+    EXPECT_EQ(a.x, b.x);
+    EXPECT_EQ(a.theta, b.theta);
+    EXPECT_LT(a.x, 1000.0 - 200.0);  // the start's side of the wall
+    sim::Simulator probe(world);
+    EXPECT_FALSE(probe.isBlocked(a));
+  }
+  EXPECT_NE(drawStart(world, 1).y, drawStart(world, 2).y);
+}
+
+}  // namespace
+}  // namespace tactile::nav
