@@ -40,6 +40,7 @@
 #include "app/gui/runs/run_session_model.h"
 #include "app/gui/runs/step_controls_view.h"
 #include "app/gui/runs/timeline_view.h"
+#include "app/gui/sim/sim_window.h"
 #include "workspace/workspace.h"
 
 namespace tactile::gui {
@@ -175,6 +176,9 @@ void MainWindow::createActions() {
   QAction* import = file->addAction(tr("&Import Runs..."), this, &MainWindow::chooseRunFiles);
   import->setShortcut(QKeySequence(tr("Ctrl+I")));
   file->addAction(tr("Export &Labels..."), labelPanel_, &LabelPanelView::exportLabels);
+  file->addSeparator();
+  file->addAction(tr("New &Simulation..."), this, [this] { openSimulator(); })
+      ->setShortcut(QKeySequence(tr("Ctrl+Shift+N")));
   file->addSeparator();
   QAction* quit = file->addAction(tr("&Quit"), this, &QWidget::close);
   quit->setShortcut(QKeySequence::Quit);
@@ -743,6 +747,28 @@ void MainWindow::chooseModelToImport() {
   auto stored = workspace_->importModel(path.toStdString(), name.trimmed().toStdString());
   if (!stored) return showError(QString::fromStdString(stored.errorText()));
   showMessage(tr("Model '%1' stored from %2").arg(QString::fromStdString(stored.value()), path));
+}
+
+}  // namespace tactile::gui
+
+namespace tactile::gui {
+
+SimWindow* MainWindow::openSimulator(const QString& scene) {
+  // One simulator window on the open database (or an in-memory one without a database); it
+  // has its own connection, so it lives on if this window opens another database.
+  auto* window = new SimWindow(dbPath_, this);  // a window of its own, deleted with this one
+  window->setAttribute(Qt::WA_DeleteOnClose);
+  if (!scene.isEmpty()) window->setScene(scene);
+  connect(window, &SimWindow::openRunRequested, this, [this](const QString& name) {
+    if (workspace_) (void)runModel_->reload(workspace_.get(), labels_->setId());
+    const Status opened = openRun(name);
+    if (!opened) showError(QString::fromStdString(opened.errorText()));
+    show();
+    raise();
+    activateWindow();
+  });
+  window->show();
+  return window;
 }
 
 }  // namespace tactile::gui
