@@ -736,8 +736,12 @@ void TrainingDialog::showTrainResult(const LearningJobResult& result) {
           new QTableWidgetItem(tr("skipped: %1").arg(QString::fromStdString(g.skippedBecause))));
       continue;
     }
-    trainResult_->setItem(row, 1, cell(QString::number(100.0 * g.balancedAccuracy, 'f', 1)));
-    trainResult_->setItem(row, 2, cell(QString::number(100.0 * g.accuracy, 'f', 1)));
+    // A group without test rows has no score: "no test data", never 0.
+    auto percent = [](const std::optional<double>& rate) {
+      return rate ? QString::number(100.0 * *rate, 'f', 1) : tr("no test data");
+    };
+    trainResult_->setItem(row, 1, cell(percent(g.balancedAccuracy)));
+    trainResult_->setItem(row, 2, cell(percent(g.accuracy)));
     trainResult_->setItem(row, 3, cell(QString::number(g.samplesTrain)));
     trainResult_->setItem(row, 4, cell(QString::number(g.samplesTest)));
     trainResult_->setItem(row, 5, cell(QString::number(g.fitSeconds, 'f', 2)));
