@@ -32,6 +32,157 @@
     </message>
 </context>
 <context>
+    <name>Shortcuts</name>
+    <message>
+        <source>File</source>
+        <translation>Datei</translation>
+    </message>
+    <message>
+        <source>Edit</source>
+        <translation>Bearbeiten</translation>
+    </message>
+    <message>
+        <source>Go</source>
+        <translation>Gehe zu</translation>
+    </message>
+    <message>
+        <source>View</source>
+        <translation>Ansicht</translation>
+    </message>
+    <message>
+        <source>Learn</source>
+        <translation>Lernen</translation>
+    </message>
+    <message>
+        <source>Help</source>
+        <translation>Hilfe</translation>
+    </message>
+    <message>
+        <source>Open a database</source>
+        <translation>Eine Datenbank öffnen</translation>
+    </message>
+    <message>
+        <source>Import run files</source>
+        <translation>Laufdateien importieren</translation>
+    </message>
+    <message>
+        <source>Preferences</source>
+        <translation>Einstellungen</translation>
+    </message>
+    <message>
+        <source>Quit</source>
+        <translation>Beenden</translation>
+    </message>
+    <message>
+        <source>Undo the last label edit</source>
+        <translation>Die letzte Label-Änderung rückgängig machen</translation>
+    </message>
+    <message>
+        <source>Redo</source>
+        <translation>Wiederholen</translation>
+    </message>
+    <message>
+        <source>Label as %1</source>
+        <translation>Als %1 labeln</translation>
+    </message>
+    <message>
+        <source>Delete the segments under the cursor</source>
+        <translation>Die Segmente unter dem Cursor löschen</translation>
+    </message>
+    <message>
+        <source>Move the segment&apos;s start one step left</source>
+        <translation>Den Segmentanfang einen Schritt nach links verschieben</translation>
+    </message>
+    <message>
+        <source>Move the segment&apos;s start one step right</source>
+        <translation>Den Segmentanfang einen Schritt nach rechts verschieben</translation>
+    </message>
+    <message>
+        <source>Move the segment&apos;s end one step left</source>
+        <translation>Das Segmentende einen Schritt nach links verschieben</translation>
+    </message>
+    <message>
+        <source>Move the segment&apos;s end one step right</source>
+        <translation>Das Segmentende einen Schritt nach rechts verschieben</translation>
+    </message>
+    <message>
+        <source>Clear the selection (in a text field: leave the field)</source>
+        <translation>Die Auswahl aufheben (in einem Textfeld: das Feld verlassen)</translation>
+    </message>
+    <message>
+        <source>Next step</source>
+        <translation>Nächster Schritt</translation>
+    </message>
+    <message>
+        <source>Previous step</source>
+        <translation>Vorheriger Schritt</translation>
+    </message>
+    <message>
+        <source>Forward 10 steps</source>
+        <translation>10 Schritte vor</translation>
+    </message>
+    <message>
+        <source>Back 10 steps</source>
+        <translation>10 Schritte zurück</translation>
+    </message>
+    <message>
+        <source>Forward 100 steps</source>
+        <translation>100 Schritte vor</translation>
+    </message>
+    <message>
+        <source>Back 100 steps</source>
+        <translation>100 Schritte zurück</translation>
+    </message>
+    <message>
+        <source>Forward one screen</source>
+        <translation>Eine Bildschirmbreite vor</translation>
+    </message>
+    <message>
+        <source>Back one screen</source>
+        <translation>Eine Bildschirmbreite zurück</translation>
+    </message>
+    <message>
+        <source>First step</source>
+        <translation>Erster Schritt</translation>
+    </message>
+    <message>
+        <source>Last step</source>
+        <translation>Letzter Schritt</translation>
+    </message>
+    <message>
+        <source>Play or pause</source>
+        <translation>Abspielen oder anhalten</translation>
+    </message>
+    <message>
+        <source>Route: robot close-up or whole scene</source>
+        <translation>Route: Roboter-Nahansicht oder ganze Szene</translation>
+    </message>
+    <message>
+        <source>Zoom the timelines out to the whole run</source>
+        <translation>Die Zeitleisten auf den ganzen Lauf herauszoomen</translation>
+    </message>
+    <message>
+        <source>Train and sweep</source>
+        <translation>Trainieren und Sweep</translation>
+    </message>
+    <message>
+        <source>Show a model&apos;s predictions</source>
+        <translation>Die Vorhersagen eines Modells anzeigen</translation>
+    </message>
+    <message>
+        <source>Next stretch where the model disagrees with the labels</source>
+        <translation>Nächster Abschnitt, in dem das Modell von den Labels abweicht</translation>
+    </message>
+    <message>
+        <source>Previous stretch where the model disagrees with the labels</source>
+        <translation>Vorheriger Abschnitt, in dem das Modell von den Labels abweicht</translation>
+    </message>
+    <message>
+        <source>This list of keyboard shortcuts</source>
+        <translation>Diese Liste der Tastenkürzel</translation>
+    </message>
+</context>
+<context>
     <name>main</name>
     <message>
         <source>Tactile Workbench: tactile-navigation research desktop</source>
@@ -184,14 +335,6 @@
         <translation>Kappa</translation>
     </message>
     <message>
-        <source>Labels against the run&apos;s truth, over the labelled steps</source>
-        <translation>Labels im Vergleich zur Ground Truth des Laufs, über die gelabelten Schritte</translation>
-    </message>
-    <message>
-        <source>Agreement with truth</source>
-        <translation>Übereinstimmung mit der Ground Truth</translation>
-    </message>
-    <message>
         <source>Open a run first.</source>
         <translation>Zuerst einen Lauf öffnen.</translation>
     </message>
@@ -288,6 +431,53 @@
         <source>%1: %2, steps %3-%4</source>
         <translation>%1: %2, Schritte %3–%4</translation>
     </message>
+    <message>
+        <source>Compare the labels with the run&apos;s truth or with another label set (another annotator)</source>
+        <translation>Die Labels mit der Ground Truth des Laufs oder mit einem anderen Labelsatz (eines anderen Annotators) vergleichen</translation>
+    </message>
+    <message>
+        <source>Chance</source>
+        <translation>Zufall</translation>
+    </message>
+    <message>
+        <source>Share of the steps both sides label on which they give the same class</source>
+        <translation>Anteil der von beiden Seiten gelabelten Schritte, auf denen beide dieselbe Klasse vergeben</translation>
+    </message>
+    <message>
+        <source>Agreement expected by chance from each side&apos;s class shares</source>
+        <translation>Aus den Klassenanteilen beider Seiten zufällig zu erwartende Übereinstimmung</translation>
+    </message>
+    <message>
+        <source>Cohen&apos;s kappa = (agree - chance) / (100 % - chance): 0 when the agreement is no better than chance, 1 when perfect; &apos;-&apos; when chance is 100 % (one class throughout)</source>
+        <translation>Cohens Kappa = (Übereinst. − Zufall) / (100 % − Zufall): 0, wenn die Übereinstimmung nicht besser als Zufall ist, 1 bei vollständiger Übereinstimmung; „-“, wenn der Zufall 100 % beträgt (durchgehend eine Klasse)</translation>
+    </message>
+    <message>
+        <source>Agreement with</source>
+        <translation>Übereinstimmung mit</translation>
+    </message>
+    <message>
+        <source>truth</source>
+        <translation>Ground Truth</translation>
+    </message>
+    <message>
+        <source>label set %1</source>
+        <translation>Labelsatz %1</translation>
+    </message>
+    <message>
+        <source>No step is labelled on both sides</source>
+        <translation>Kein Schritt ist auf beiden Seiten gelabelt</translation>
+    </message>
+    <message numerus="yes">
+        <source>Undefined: both sides use one and the same class on all %n step(s), so chance agreement is 100 %</source>
+        <translation>
+            <numerusform>Undefiniert: Beide Seiten vergeben auf %n Schritt ein und dieselbe Klasse, die zufällige Übereinstimmung ist also 100 %</numerusform>
+            <numerusform>Undefiniert: Beide Seiten vergeben auf allen %n Schritten ein und dieselbe Klasse, die zufällige Übereinstimmung ist also 100 %</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>%1 of %2 steps agree (%3); by chance %4 would: kappa = (%3 - %4) / (100 % - %4) = %5</source>
+        <translation>%1 von %2 Schritten stimmen überein (%3); zufällig wären es %4: Kappa = (%3 − %4) / (100 % − %4) = %5</translation>
+    </message>
 </context>
 <context>
     <name>tactile::gui::MainWindow</name>
@@ -328,10 +518,6 @@
         <translation>Läufe &amp;importieren...</translation>
     </message>
     <message>
-        <source>Ctrl+I</source>
-        <translation>Ctrl+I</translation>
-    </message>
-    <message>
         <source>Export &amp;Labels...</source>
         <translation>&amp;Labels exportieren...</translation>
     </message>
@@ -364,32 +550,16 @@
         <translation>Segmentanfang nach links</translation>
     </message>
     <message>
-        <source>Alt+Shift+Left</source>
-        <translation>Alt+Shift+Left</translation>
-    </message>
-    <message>
         <source>Move Segment Start Right</source>
         <translation>Segmentanfang nach rechts</translation>
-    </message>
-    <message>
-        <source>Alt+Shift+Right</source>
-        <translation>Alt+Shift+Right</translation>
     </message>
     <message>
         <source>Move Segment End Left</source>
         <translation>Segmentende nach links</translation>
     </message>
     <message>
-        <source>Alt+Left</source>
-        <translation>Alt+Left</translation>
-    </message>
-    <message>
         <source>Move Segment End Right</source>
         <translation>Segmentende nach rechts</translation>
-    </message>
-    <message>
-        <source>Alt+Right</source>
-        <translation>Alt+Right</translation>
     </message>
     <message>
         <source>Clear Selection</source>
@@ -472,10 +642,6 @@
         <translation>Ganzen Lauf zeigen</translation>
     </message>
     <message>
-        <source>Ctrl+0</source>
-        <translation>Ctrl+0</translation>
-    </message>
-    <message>
         <source>&amp;Help</source>
         <translation>&amp;Hilfe</translation>
     </message>
@@ -553,10 +719,6 @@
         <translation>Tactile Workbench</translation>
     </message>
     <message>
-        <source>Step %1 of %2</source>
-        <translation>Schritt %1 von %2</translation>
-    </message>
-    <message>
         <source>  |  selected %1-%2</source>
         <translation>  |  ausgewählt %1–%2</translation>
     </message>
@@ -593,10 +755,6 @@ Forschungsumgebung für die taktile Navigation mobiler Roboter.</translation>
     <message>
         <source>&amp;Train and Sweep...</source>
         <translation>&amp;Trainieren und Sweep...</translation>
-    </message>
-    <message>
-        <source>Ctrl+T</source>
-        <translation>Ctrl+T</translation>
     </message>
     <message>
         <source>Open &amp;Sweep Results...</source>
@@ -690,10 +848,6 @@ Forschungsumgebung für die taktile Navigation mobiler Roboter.</translation>
         <translation>&amp;Vorhersagen anzeigen...</translation>
     </message>
     <message>
-        <source>Ctrl+P</source>
-        <translation>Ctrl+P</translation>
-    </message>
-    <message>
         <source>&amp;Hide Predictions</source>
         <translation>Vorhersagen &amp;ausblenden</translation>
     </message>
@@ -742,7 +896,27 @@ Forschungsumgebung für die taktile Navigation mobiler Roboter.</translation>
     </message>
     <message>
         <source>Navigator</source>
-        <translation type="unfinished"></translation>
+        <translation>Navigator</translation>
+    </message>
+    <message>
+        <source>Keyboard Shortcuts</source>
+        <translation>Tastenkürzel</translation>
+    </message>
+    <message>
+        <source>Preferences saved</source>
+        <translation>Einstellungen gespeichert</translation>
+    </message>
+    <message>
+        <source>&amp;Preferences...</source>
+        <translation>&amp;Einstellungen...</translation>
+    </message>
+    <message>
+        <source>&amp;Keyboard Shortcuts</source>
+        <translation>&amp;Tastenkürzel</translation>
+    </message>
+    <message>
+        <source>Step %1 of %2 steps</source>
+        <translation>Schritt %1 von %2 Schritten</translation>
     </message>
 </context>
 <context>
@@ -768,38 +942,81 @@ Forschungsumgebung für die taktile Navigation mobiler Roboter.</translation>
     <name>tactile::gui::NavigatorPanelView</name>
     <message>
         <source>This run has no navigator columns. Runs written by &apos;tactile navigate&apos; have them.</source>
-        <translation type="unfinished"></translation>
+        <translation>Dieser Lauf hat keine Navigator-Spalten. Von „tactile navigate“ geschriebene Läufe haben sie.</translation>
     </message>
     <message>
         <source>Command set:</source>
-        <translation type="unfinished"></translation>
+        <translation>Befehlssatz:</translation>
     </message>
     <message>
         <source>Current control mode:</source>
-        <translation type="unfinished"></translation>
+        <translation>Aktueller Steuermodus:</translation>
     </message>
     <message>
         <source>Status:</source>
-        <translation type="unfinished"></translation>
+        <translation>Status:</translation>
     </message>
     <message>
         <source>Status-%1:</source>
-        <translation type="unfinished"></translation>
+        <translation>Status-%1:</translation>
     </message>
 </context>
 <context>
     <name>tactile::gui::NavigatorStripView</name>
     <message>
         <source>strategy</source>
-        <translation type="unfinished"></translation>
+        <translation>Strategie</translation>
     </message>
     <message>
         <source>status</source>
-        <translation type="unfinished"></translation>
+        <translation>Status</translation>
     </message>
     <message>
         <source>step %1: %2</source>
-        <translation type="unfinished"></translation>
+        <translation>Schritt %1: %2</translation>
+    </message>
+</context>
+<context>
+    <name>tactile::gui::PreferencesDialog</name>
+    <message>
+        <source>Preferences</source>
+        <translation>Einstellungen</translation>
+    </message>
+    <message>
+        <source>Follow the system</source>
+        <translation>Systemsprache</translation>
+    </message>
+    <message>
+        <source>e.g. your initials</source>
+        <translation>z. B. Ihre Initialen</translation>
+    </message>
+    <message>
+        <source>Stored with every label segment you write and in label exports (annotator column)</source>
+        <translation>Wird mit jedem Label-Segment, das Sie schreiben, und in Label-Exporten gespeichert (Spalte annotator)</translation>
+    </message>
+    <message>
+        <source> px</source>
+        <translation> px</translation>
+    </message>
+    <message>
+        <source>Height of each label, truth and model row in the timelines</source>
+        <translation>Höhe jeder Label-, Ground-Truth- und Modellzeile in den Zeitleisten</translation>
+    </message>
+    <message>
+        <source>&amp;Language:</source>
+        <translation>&amp;Sprache:</translation>
+    </message>
+    <message>
+        <source>A new language applies at the next start.</source>
+        <translation>Eine neue Sprache gilt ab dem nächsten Start.</translation>
+    </message>
+    <message>
+        <source>&amp;Annotator:</source>
+        <translation>&amp;Annotator:</translation>
+    </message>
+    <message>
+        <source>Timeline &amp;row height:</source>
+        <translation>&amp;Zeilenhöhe der Zeitleisten:</translation>
     </message>
 </context>
 <context>
@@ -827,6 +1044,14 @@ Forschungsumgebung für die taktile Navigation mobiler Roboter.</translation>
     <message>
         <source>hole %1 wide</source>
         <translation>Lücke %1 breit</translation>
+    </message>
+    <message>
+        <source>Zoomed %1x (double click: whole scene)</source>
+        <translation>Zoom %1x (Doppelklick: ganze Szene)</translation>
+    </message>
+    <message>
+        <source>Close-up zoomed %1x (double click: close-up)</source>
+        <translation>Nahansicht, Zoom %1x (Doppelklick: Nahansicht)</translation>
     </message>
 </context>
 <context>
@@ -900,8 +1125,12 @@ importiert aus %2</translation>
         <translation>%1 Schritte/s</translation>
     </message>
     <message>
-        <source>of %1</source>
-        <translation>von %1</translation>
+        <source>of %1 steps</source>
+        <translation>von %1 Schritten</translation>
+    </message>
+    <message>
+        <source>Steps are numbered from 0 to %1</source>
+        <translation>Die Schritte sind von 0 bis %1 nummeriert</translation>
     </message>
 </context>
 <context>
@@ -1026,10 +1255,6 @@ importiert aus %2</translation>
         <translation>Modellordnung</translation>
     </message>
     <message>
-        <source>Correct rate per class (%)</source>
-        <translation>Trefferquote je Klasse (%)</translation>
-    </message>
-    <message>
         <source>Fit + predict time (s)</source>
         <translation>Zeit für Anpassung + Vorhersage (s)</translation>
     </message>
@@ -1046,12 +1271,30 @@ importiert aus %2</translation>
         <translation>Pareto-Front (%1)</translation>
     </message>
     <message>
-        <source>No cells with a model yet.</source>
-        <translation>Noch keine Zellen mit Modell.</translation>
+        <source>No fitted cells yet.</source>
+        <translation>Noch keine angepassten Zellen.</translation>
     </message>
     <message>
-        <source>No cells with a model scored on test rows.</source>
-        <translation>Keine Zellen mit Modell auf Testzeilen bewertet.</translation>
+        <source>Recall per class (%)</source>
+        <translation>Trefferquote je Klasse (%)</translation>
+    </message>
+    <message>
+        <source>No fitted cells scored on test rows.</source>
+        <translation>Keine angepasste Zelle wurde auf Testzeilen bewertet.</translation>
+    </message>
+    <message>
+        <source>%1
+%2: %3
+%4: %5%6</source>
+        <translation>%1
+%2: %3
+%4: %5%6</translation>
+    </message>
+    <message>
+        <source>
+cell %1 (click to select)</source>
+        <translation>
+Zelle %1 (zum Auswählen klicken)</translation>
     </message>
 </context>
 <context>
@@ -1093,16 +1336,8 @@ importiert aus %2</translation>
         <translation>Kontaktmuster</translation>
     </message>
     <message>
-        <source>Sweep %1: %2 cells, %3 with a model</source>
-        <translation>Sweep %1: %2 Zellen, %3 mit Modell</translation>
-    </message>
-    <message>
         <source>(cancelled: the finished cells)</source>
         <translation>(abgebrochen: die fertigen Zellen)</translation>
-    </message>
-    <message>
-        <source>No cell has a model yet.</source>
-        <translation>Noch keine Zelle hat ein Modell.</translation>
     </message>
     <message>
         <source>No cells yet.</source>
@@ -1117,10 +1352,6 @@ importiert aus %2</translation>
         <translation>Zelle %1: %2</translation>
     </message>
     <message>
-        <source>This cell has no model: %1</source>
-        <translation>Diese Zelle hat kein Modell: %1</translation>
-    </message>
-    <message>
         <source>Confusion (counts)</source>
         <translation>Konfusionsmatrix (Anzahl)</translation>
     </message>
@@ -1129,24 +1360,12 @@ importiert aus %2</translation>
         <translation>Konfusionsmatrix (Zeilenprozent)</translation>
     </message>
     <message>
-        <source>Per-class correct rate of this cell (%)</source>
-        <translation>Trefferquote je Klasse dieser Zelle (%)</translation>
-    </message>
-    <message>
         <source>No contact patterns were kept for this cell.</source>
         <translation>Für diese Zelle wurden keine Kontaktmuster aufbewahrt.</translation>
     </message>
     <message>
-        <source>each group&apos;s best cell</source>
-        <translation>beste Zelle jeder Gruppe</translation>
-    </message>
-    <message>
         <source>This cell was not scored: the test runs have no labelled rows of its group.</source>
         <translation>Diese Zelle wurde nicht bewertet: Die Testläufe haben keine gelabelten Zeilen ihrer Gruppe.</translation>
-    </message>
-    <message>
-        <source>this cell</source>
-        <translation>diese Zelle</translation>
     </message>
     <message>
         <source>Group %1, GMM %2, order %3, variance floor %4, %5 features, seed %6</source>
@@ -1155,6 +1374,30 @@ importiert aus %2</translation>
     <message>
         <source>Group %1, %2, variance floor %3, %4 features, seed %5</source>
         <translation>Gruppe %1, %2, Varianzuntergrenze %3, %4 Merkmale, Seed %5</translation>
+    </message>
+    <message>
+        <source>Sweep %1: %2 cells, %3 fitted, %4 failed; no model is stored (Store Model of Cell stores one)</source>
+        <translation>Sweep %1: %2 Zellen, %3 angepasst, %4 fehlgeschlagen; kein Modell gespeichert („Modell der Zelle speichern“ speichert eines)</translation>
+    </message>
+    <message>
+        <source>No cell is fitted yet.</source>
+        <translation>Noch keine Zelle angepasst.</translation>
+    </message>
+    <message>
+        <source>Precision per class, one-vs-rest, % - each group&apos;s best cell</source>
+        <translation>Präzision je Klasse, One-vs-Rest, % – beste Zelle jeder Gruppe</translation>
+    </message>
+    <message>
+        <source>This cell could not be fitted: %1</source>
+        <translation>Diese Zelle konnte nicht angepasst werden: %1</translation>
+    </message>
+    <message>
+        <source>Precision per class, one-vs-rest (of the steps predicted a class, the share that are it; thesis table 4.19&apos;s correct rate), % - this cell</source>
+        <translation>Präzision je Klasse, One-vs-Rest (von den als eine Klasse vorhergesagten Schritten der Anteil, der wirklich zu ihr gehört; die Korrektrate aus Tabelle 4.19 der Arbeit), % – diese Zelle</translation>
+    </message>
+    <message>
+        <source>Recall per class of this cell (of the steps of a class, the share predicted as it), %</source>
+        <translation>Trefferquote je Klasse dieser Zelle (von den Schritten einer Klasse der Anteil, der als diese Klasse vorhergesagt wird), %</translation>
     </message>
 </context>
 <context>
@@ -1266,22 +1509,6 @@ importiert aus %2</translation>
         <translation>Kurs</translation>
     </message>
     <message>
-        <source>L</source>
-        <translation>L</translation>
-    </message>
-    <message>
-        <source>R</source>
-        <translation>R</translation>
-    </message>
-    <message>
-        <source>F</source>
-        <translation>V</translation>
-    </message>
-    <message>
-        <source>B</source>
-        <translation>Z</translation>
-    </message>
-    <message>
         <source>blocked</source>
         <translation>blockiert</translation>
     </message>
@@ -1324,6 +1551,78 @@ importiert aus %2</translation>
     <message>
         <source>, the label %1</source>
         <translation>, das Label %1</translation>
+    </message>
+    <message>
+        <source>turn left</source>
+        <translation>links drehen</translation>
+    </message>
+    <message>
+        <source>turn right</source>
+        <translation>rechts drehen</translation>
+    </message>
+    <message>
+        <source>forward</source>
+        <translation>vorwärts</translation>
+    </message>
+    <message>
+        <source>backward</source>
+        <translation>rückwärts</translation>
+    </message>
+    <message>
+        <source>blue: facing +x
+red: facing −x</source>
+        <translation>blau: Richtung +x
+rot: Richtung −x</translation>
+    </message>
+    <message>
+        <source>red: command
+grey: blocked</source>
+        <translation>rot: Befehl
+grau: blockiert</translation>
+    </message>
+    <message>
+        <source>normal</source>
+        <translation>Normalkraft</translation>
+    </message>
+    <message>
+        <source>shear</source>
+        <translation>Scherkraft</translation>
+    </message>
+    <message>
+        <source>magnitude</source>
+        <translation>Betrag</translation>
+    </message>
+    <message>
+        <source>step %1</source>
+        <translation>Schritt %1</translation>
+    </message>
+    <message>
+        <source>steps %1-%2 (largest)</source>
+        <translation>Schritte %1–%2 (größter Wert)</translation>
+    </message>
+    <message>
+        <source>%1, sensor %2 (%3 %4): %5 %6</source>
+        <translation>%1, Sensor %2 (%3 %4): %5 %6</translation>
+    </message>
+    <message>
+        <source>step %1: heading %2° (%3)</source>
+        <translation>Schritt %1: Kurs %2° (%3)</translation>
+    </message>
+    <message>
+        <source>blue: facing +x</source>
+        <translation>blau: Richtung +x</translation>
+    </message>
+    <message>
+        <source>red: facing −x</source>
+        <translation>rot: Richtung −x</translation>
+    </message>
+    <message>
+        <source>step %1: v %2, omega %3%4</source>
+        <translation>Schritt %1: v %2, omega %3%4</translation>
+    </message>
+    <message>
+        <source>, blocked</source>
+        <translation>, blockiert</translation>
     </message>
 </context>
 <context>
@@ -1536,6 +1835,60 @@ importiert aus %2</translation>
     <message>
         <source>Train one model per group and store it in the database</source>
         <translation>Ein Modell je Gruppe trainieren und in der Datenbank speichern</translation>
+    </message>
+    <message>
+        <source>Plan:</source>
+        <translation>Plan:</translation>
+    </message>
+    <message>
+        <source>Group</source>
+        <translation>Gruppe</translation>
+    </message>
+    <message>
+        <source>Balanced accuracy %</source>
+        <translation>Balancierte Genauigkeit %</translation>
+    </message>
+    <message>
+        <source>Accuracy %</source>
+        <translation>Genauigkeit %</translation>
+    </message>
+    <message>
+        <source>Training samples</source>
+        <translation>Trainingsbeispiele</translation>
+    </message>
+    <message>
+        <source>Test samples</source>
+        <translation>Testbeispiele</translation>
+    </message>
+    <message>
+        <source>Fit s</source>
+        <translation>Anpassung s</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n cell(s)</source>
+        <translation>
+            <numerusform>%n Zelle</numerusform>
+            <numerusform>%n Zellen</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>, about %1 (%2 s a cell as in sweep %3, on %n thread(s))</source>
+        <translation>
+            <numerusform>, etwa %1 (%2 s je Zelle wie in Sweep %3, mit %n Thread)</numerusform>
+            <numerusform>, etwa %1 (%2 s je Zelle wie in Sweep %3, mit %n Threads)</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>; the time left shows once the first cells finish (no sweep is stored yet to estimate from)</source>
+        <translation>; die Restzeit erscheint, sobald die ersten Zellen fertig sind (noch kein gespeicherter Sweep, aus dem sie sich schätzen ließe)</translation>
+    </message>
+    <message>
+        <source>Ready.</source>
+        <translation>Bereit.</translation>
+    </message>
+    <message>
+        <source>skipped: %1</source>
+        <translation>übersprungen: %1</translation>
     </message>
 </context>
 </TS>

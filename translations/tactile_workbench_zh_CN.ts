@@ -32,6 +32,157 @@
     </message>
 </context>
 <context>
+    <name>Shortcuts</name>
+    <message>
+        <source>File</source>
+        <translation>文件</translation>
+    </message>
+    <message>
+        <source>Edit</source>
+        <translation>编辑</translation>
+    </message>
+    <message>
+        <source>Go</source>
+        <translation>转到</translation>
+    </message>
+    <message>
+        <source>View</source>
+        <translation>视图</translation>
+    </message>
+    <message>
+        <source>Learn</source>
+        <translation>学习</translation>
+    </message>
+    <message>
+        <source>Help</source>
+        <translation>帮助</translation>
+    </message>
+    <message>
+        <source>Open a database</source>
+        <translation>打开数据库</translation>
+    </message>
+    <message>
+        <source>Import run files</source>
+        <translation>导入运行文件</translation>
+    </message>
+    <message>
+        <source>Preferences</source>
+        <translation>首选项</translation>
+    </message>
+    <message>
+        <source>Quit</source>
+        <translation>退出</translation>
+    </message>
+    <message>
+        <source>Undo the last label edit</source>
+        <translation>撤销上一次标签编辑</translation>
+    </message>
+    <message>
+        <source>Redo</source>
+        <translation>重做</translation>
+    </message>
+    <message>
+        <source>Label as %1</source>
+        <translation>标注为%1</translation>
+    </message>
+    <message>
+        <source>Delete the segments under the cursor</source>
+        <translation>删除光标处的片段</translation>
+    </message>
+    <message>
+        <source>Move the segment&apos;s start one step left</source>
+        <translation>将片段起点左移一步</translation>
+    </message>
+    <message>
+        <source>Move the segment&apos;s start one step right</source>
+        <translation>将片段起点右移一步</translation>
+    </message>
+    <message>
+        <source>Move the segment&apos;s end one step left</source>
+        <translation>将片段终点左移一步</translation>
+    </message>
+    <message>
+        <source>Move the segment&apos;s end one step right</source>
+        <translation>将片段终点右移一步</translation>
+    </message>
+    <message>
+        <source>Clear the selection (in a text field: leave the field)</source>
+        <translation>清除选区（在文本框中：离开文本框）</translation>
+    </message>
+    <message>
+        <source>Next step</source>
+        <translation>下一步</translation>
+    </message>
+    <message>
+        <source>Previous step</source>
+        <translation>上一步</translation>
+    </message>
+    <message>
+        <source>Forward 10 steps</source>
+        <translation>前进 10 步</translation>
+    </message>
+    <message>
+        <source>Back 10 steps</source>
+        <translation>后退 10 步</translation>
+    </message>
+    <message>
+        <source>Forward 100 steps</source>
+        <translation>前进 100 步</translation>
+    </message>
+    <message>
+        <source>Back 100 steps</source>
+        <translation>后退 100 步</translation>
+    </message>
+    <message>
+        <source>Forward one screen</source>
+        <translation>前进一屏</translation>
+    </message>
+    <message>
+        <source>Back one screen</source>
+        <translation>后退一屏</translation>
+    </message>
+    <message>
+        <source>First step</source>
+        <translation>第一步</translation>
+    </message>
+    <message>
+        <source>Last step</source>
+        <translation>最后一步</translation>
+    </message>
+    <message>
+        <source>Play or pause</source>
+        <translation>播放或暂停</translation>
+    </message>
+    <message>
+        <source>Route: robot close-up or whole scene</source>
+        <translation>路线：机器人特写或整个场景</translation>
+    </message>
+    <message>
+        <source>Zoom the timelines out to the whole run</source>
+        <translation>将时间轴缩放至整个运行</translation>
+    </message>
+    <message>
+        <source>Train and sweep</source>
+        <translation>训练与扫描</translation>
+    </message>
+    <message>
+        <source>Show a model&apos;s predictions</source>
+        <translation>显示模型的预测</translation>
+    </message>
+    <message>
+        <source>Next stretch where the model disagrees with the labels</source>
+        <translation>下一处模型与标签不一致的区段</translation>
+    </message>
+    <message>
+        <source>Previous stretch where the model disagrees with the labels</source>
+        <translation>上一处模型与标签不一致的区段</translation>
+    </message>
+    <message>
+        <source>This list of keyboard shortcuts</source>
+        <translation>本快捷键列表</translation>
+    </message>
+</context>
+<context>
     <name>main</name>
     <message>
         <source>Tactile Workbench: tactile-navigation research desktop</source>
@@ -184,14 +335,6 @@
         <translation>Kappa</translation>
     </message>
     <message>
-        <source>Labels against the run&apos;s truth, over the labelled steps</source>
-        <translation>标签与该运行真值的对比，仅统计已标注的步</translation>
-    </message>
-    <message>
-        <source>Agreement with truth</source>
-        <translation>与真值的一致性</translation>
-    </message>
-    <message>
         <source>Open a run first.</source>
         <translation>请先打开一个运行。</translation>
     </message>
@@ -285,6 +428,52 @@
         <source>%1: %2, steps %3-%4</source>
         <translation>%1：%2，第 %3–%4 步</translation>
     </message>
+    <message>
+        <source>Compare the labels with the run&apos;s truth or with another label set (another annotator)</source>
+        <translation>将标签与运行的真值或另一个标签集（另一位标注者）进行比较</translation>
+    </message>
+    <message>
+        <source>Chance</source>
+        <translation>偶然一致率</translation>
+    </message>
+    <message>
+        <source>Share of the steps both sides label on which they give the same class</source>
+        <translation>在双方都已标注的步中，双方给出相同类别的比例</translation>
+    </message>
+    <message>
+        <source>Agreement expected by chance from each side&apos;s class shares</source>
+        <translation>根据双方各自的类别占比，偶然情况下预期的一致率</translation>
+    </message>
+    <message>
+        <source>Cohen&apos;s kappa = (agree - chance) / (100 % - chance): 0 when the agreement is no better than chance, 1 when perfect; &apos;-&apos; when chance is 100 % (one class throughout)</source>
+        <translation>Cohen&apos;s kappa = (一致率 − 偶然一致率) / (100 % − 偶然一致率)：一致程度不优于偶然时为 0，完全一致时为 1；偶然一致率为 100 %（始终只有一个类别）时显示“-”</translation>
+    </message>
+    <message>
+        <source>Agreement with</source>
+        <translation>比较对象</translation>
+    </message>
+    <message>
+        <source>truth</source>
+        <translation>真值</translation>
+    </message>
+    <message>
+        <source>label set %1</source>
+        <translation>标签集 %1</translation>
+    </message>
+    <message>
+        <source>No step is labelled on both sides</source>
+        <translation>没有双方都已标注的步</translation>
+    </message>
+    <message numerus="yes">
+        <source>Undefined: both sides use one and the same class on all %n step(s), so chance agreement is 100 %</source>
+        <translation>
+            <numerusform>未定义：双方在全部 %n 步上都使用同一个类别，因此偶然一致率为 100 %</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>%1 of %2 steps agree (%3); by chance %4 would: kappa = (%3 - %4) / (100 % - %4) = %5</source>
+        <translation>%2 步中有 %1 步一致（%3）；偶然一致率为 %4：kappa = (%3 − %4) / (100 % − %4) = %5</translation>
+    </message>
 </context>
 <context>
     <name>tactile::gui::MainWindow</name>
@@ -335,10 +524,6 @@
         <translation>导入运行(&amp;I)...</translation>
     </message>
     <message>
-        <source>Ctrl+I</source>
-        <translation>Ctrl+I</translation>
-    </message>
-    <message>
         <source>Export &amp;Labels...</source>
         <translation>导出标签(&amp;L)...</translation>
     </message>
@@ -371,32 +556,16 @@
         <translation>片段起点左移</translation>
     </message>
     <message>
-        <source>Alt+Shift+Left</source>
-        <translation>Alt+Shift+Left</translation>
-    </message>
-    <message>
         <source>Move Segment Start Right</source>
         <translation>片段起点右移</translation>
-    </message>
-    <message>
-        <source>Alt+Shift+Right</source>
-        <translation>Alt+Shift+Right</translation>
     </message>
     <message>
         <source>Move Segment End Left</source>
         <translation>片段终点左移</translation>
     </message>
     <message>
-        <source>Alt+Left</source>
-        <translation>Alt+Left</translation>
-    </message>
-    <message>
         <source>Move Segment End Right</source>
         <translation>片段终点右移</translation>
-    </message>
-    <message>
-        <source>Alt+Right</source>
-        <translation>Alt+Right</translation>
     </message>
     <message>
         <source>Clear Selection</source>
@@ -479,10 +648,6 @@
         <translation>缩放至整个运行</translation>
     </message>
     <message>
-        <source>Ctrl+0</source>
-        <translation>Ctrl+0</translation>
-    </message>
-    <message>
         <source>&amp;Learn</source>
         <translation>学习(&amp;L)</translation>
     </message>
@@ -491,20 +656,12 @@
         <translation>训练与扫描(&amp;T)...</translation>
     </message>
     <message>
-        <source>Ctrl+T</source>
-        <translation>Ctrl+T</translation>
-    </message>
-    <message>
         <source>Open &amp;Sweep Results...</source>
         <translation>打开扫描结果(&amp;S)...</translation>
     </message>
     <message>
         <source>Show &amp;Predictions...</source>
         <translation>显示预测(&amp;P)...</translation>
-    </message>
-    <message>
-        <source>Ctrl+P</source>
-        <translation>Ctrl+P</translation>
     </message>
     <message>
         <source>&amp;Hide Predictions</source>
@@ -613,10 +770,6 @@
     <message>
         <source>Tactile Workbench</source>
         <translation>触觉工作台</translation>
-    </message>
-    <message>
-        <source>Step %1 of %2</source>
-        <translation>第 %1 步，共 %2 步</translation>
     </message>
     <message>
         <source>  |  selected %1-%2</source>
@@ -734,7 +887,27 @@ Research workbench for tactile-based mobile-robot navigation.</source>
     </message>
     <message>
         <source>Navigator</source>
-        <translation type="unfinished"></translation>
+        <translation>导航器</translation>
+    </message>
+    <message>
+        <source>Keyboard Shortcuts</source>
+        <translation>键盘快捷键</translation>
+    </message>
+    <message>
+        <source>Preferences saved</source>
+        <translation>首选项已保存</translation>
+    </message>
+    <message>
+        <source>&amp;Preferences...</source>
+        <translation>首选项(&amp;P)...</translation>
+    </message>
+    <message>
+        <source>&amp;Keyboard Shortcuts</source>
+        <translation>键盘快捷键(&amp;K)</translation>
+    </message>
+    <message>
+        <source>Step %1 of %2 steps</source>
+        <translation>第 %1 步，共 %2 步</translation>
     </message>
 </context>
 <context>
@@ -760,38 +933,81 @@ Research workbench for tactile-based mobile-robot navigation.</source>
     <name>tactile::gui::NavigatorPanelView</name>
     <message>
         <source>This run has no navigator columns. Runs written by &apos;tactile navigate&apos; have them.</source>
-        <translation type="unfinished"></translation>
+        <translation>此运行没有导航器列。由“tactile navigate”写入的运行才有这些列。</translation>
     </message>
     <message>
         <source>Command set:</source>
-        <translation type="unfinished"></translation>
+        <translation>指令集：</translation>
     </message>
     <message>
         <source>Current control mode:</source>
-        <translation type="unfinished"></translation>
+        <translation>当前控制模式：</translation>
     </message>
     <message>
         <source>Status:</source>
-        <translation type="unfinished"></translation>
+        <translation>状态：</translation>
     </message>
     <message>
         <source>Status-%1:</source>
-        <translation type="unfinished"></translation>
+        <translation>状态-%1：</translation>
     </message>
 </context>
 <context>
     <name>tactile::gui::NavigatorStripView</name>
     <message>
         <source>strategy</source>
-        <translation type="unfinished"></translation>
+        <translation>策略</translation>
     </message>
     <message>
         <source>status</source>
-        <translation type="unfinished"></translation>
+        <translation>状态</translation>
     </message>
     <message>
         <source>step %1: %2</source>
-        <translation type="unfinished"></translation>
+        <translation>第 %1 步：%2</translation>
+    </message>
+</context>
+<context>
+    <name>tactile::gui::PreferencesDialog</name>
+    <message>
+        <source>Preferences</source>
+        <translation>首选项</translation>
+    </message>
+    <message>
+        <source>Follow the system</source>
+        <translation>跟随系统</translation>
+    </message>
+    <message>
+        <source>e.g. your initials</source>
+        <translation>例如您的姓名缩写</translation>
+    </message>
+    <message>
+        <source>Stored with every label segment you write and in label exports (annotator column)</source>
+        <translation>随您写入的每个标签片段一起保存，也写入标签导出文件（annotator 列）</translation>
+    </message>
+    <message>
+        <source> px</source>
+        <translation> px</translation>
+    </message>
+    <message>
+        <source>Height of each label, truth and model row in the timelines</source>
+        <translation>时间轴中每个标签行、真值行和模型行的高度</translation>
+    </message>
+    <message>
+        <source>&amp;Language:</source>
+        <translation>语言(&amp;L)：</translation>
+    </message>
+    <message>
+        <source>A new language applies at the next start.</source>
+        <translation>新语言将在下次启动时生效。</translation>
+    </message>
+    <message>
+        <source>&amp;Annotator:</source>
+        <translation>标注者(&amp;A)：</translation>
+    </message>
+    <message>
+        <source>Timeline &amp;row height:</source>
+        <translation>时间轴行高(&amp;R)：</translation>
     </message>
 </context>
 <context>
@@ -819,6 +1035,14 @@ Research workbench for tactile-based mobile-robot navigation.</source>
     <message>
         <source>Close-up (M: whole scene)</source>
         <translation>特写（M：整个场景）</translation>
+    </message>
+    <message>
+        <source>Zoomed %1x (double click: whole scene)</source>
+        <translation>缩放 %1 倍（双击：整个场景）</translation>
+    </message>
+    <message>
+        <source>Close-up zoomed %1x (double click: close-up)</source>
+        <translation>特写，缩放 %1 倍（双击：特写）</translation>
     </message>
 </context>
 <context>
@@ -892,8 +1116,12 @@ imported from %2</source>
         <translation>%1 步/秒</translation>
     </message>
     <message>
-        <source>of %1</source>
-        <translation>/ %1</translation>
+        <source>of %1 steps</source>
+        <translation>共 %1 步</translation>
+    </message>
+    <message>
+        <source>Steps are numbered from 0 to %1</source>
+        <translation>步的编号从 0 到 %1</translation>
     </message>
 </context>
 <context>
@@ -1010,20 +1238,12 @@ imported from %2</source>
         <translation>PDF 文件 (*.pdf)</translation>
     </message>
     <message>
-        <source>No cells with a model yet.</source>
-        <translation>还没有带模型的单元。</translation>
-    </message>
-    <message>
         <source>Variance floor</source>
         <translation>方差下限</translation>
     </message>
     <message>
         <source>Model order</source>
         <translation>模型阶数</translation>
-    </message>
-    <message>
-        <source>Correct rate per class (%)</source>
-        <translation>各类别正确率 (%)</translation>
     </message>
     <message>
         <source>Fit + predict time (s)</source>
@@ -1042,8 +1262,30 @@ imported from %2</source>
         <translation>帕累托前沿（%1）</translation>
     </message>
     <message>
-        <source>No cells with a model scored on test rows.</source>
-        <translation>没有在测试行上评分的带模型单元。</translation>
+        <source>No fitted cells yet.</source>
+        <translation>还没有已拟合的单元。</translation>
+    </message>
+    <message>
+        <source>Recall per class (%)</source>
+        <translation>各类别召回率 (%)</translation>
+    </message>
+    <message>
+        <source>No fitted cells scored on test rows.</source>
+        <translation>没有在测试行上评分的已拟合单元。</translation>
+    </message>
+    <message>
+        <source>%1
+%2: %3
+%4: %5%6</source>
+        <translation>%1
+%2：%3
+%4：%5%6</translation>
+    </message>
+    <message>
+        <source>
+cell %1 (click to select)</source>
+        <translation>
+单元 %1（单击以选择）</translation>
     </message>
 </context>
 <context>
@@ -1093,20 +1335,8 @@ imported from %2</source>
         <translation>接触模式</translation>
     </message>
     <message>
-        <source>Sweep %1: %2 cells, %3 with a model</source>
-        <translation>扫描 %1：%2 个单元，%3 个带模型</translation>
-    </message>
-    <message>
         <source>(cancelled: the finished cells)</source>
         <translation>（已取消：仅已完成的单元）</translation>
-    </message>
-    <message>
-        <source>No cell has a model yet.</source>
-        <translation>还没有单元带模型。</translation>
-    </message>
-    <message>
-        <source>each group&apos;s best cell</source>
-        <translation>每组最佳单元</translation>
     </message>
     <message>
         <source>No cells yet.</source>
@@ -1121,10 +1351,6 @@ imported from %2</source>
         <translation>单元 %1：%2</translation>
     </message>
     <message>
-        <source>This cell has no model: %1</source>
-        <translation>此单元没有模型：%1</translation>
-    </message>
-    <message>
         <source>This cell was not scored: the test runs have no labelled rows of its group.</source>
         <translation>此单元未评分：测试运行中没有其所属组的已标注行。</translation>
     </message>
@@ -1137,16 +1363,32 @@ imported from %2</source>
         <translation>混淆矩阵（行百分比）</translation>
     </message>
     <message>
-        <source>this cell</source>
-        <translation>此单元</translation>
-    </message>
-    <message>
-        <source>Per-class correct rate of this cell (%)</source>
-        <translation>此单元各类别正确率 (%)</translation>
-    </message>
-    <message>
         <source>No contact patterns were kept for this cell.</source>
         <translation>此单元未保留接触模式。</translation>
+    </message>
+    <message>
+        <source>Sweep %1: %2 cells, %3 fitted, %4 failed; no model is stored (Store Model of Cell stores one)</source>
+        <translation>扫描 %1：%2 个单元，%3 个已拟合，%4 个失败；未保存模型（“保存单元的模型”可保存一个）</translation>
+    </message>
+    <message>
+        <source>No cell is fitted yet.</source>
+        <translation>还没有单元完成拟合。</translation>
+    </message>
+    <message>
+        <source>Precision per class, one-vs-rest, % - each group&apos;s best cell</source>
+        <translation>各类别精确率（一对其余），% – 每组的最佳单元</translation>
+    </message>
+    <message>
+        <source>This cell could not be fitted: %1</source>
+        <translation>此单元无法拟合：%1</translation>
+    </message>
+    <message>
+        <source>Precision per class, one-vs-rest (of the steps predicted a class, the share that are it; thesis table 4.19&apos;s correct rate), % - this cell</source>
+        <translation>各类别精确率（一对其余；预测为某类别的步中实际属于该类别的比例，即论文表 4.19 中的正确率），% – 本单元</translation>
+    </message>
+    <message>
+        <source>Recall per class of this cell (of the steps of a class, the share predicted as it), %</source>
+        <translation>本单元各类别召回率（某类别的步中被预测为该类别的比例），%</translation>
     </message>
 </context>
 <context>
@@ -1258,22 +1500,6 @@ imported from %2</source>
         <translation>航向</translation>
     </message>
     <message>
-        <source>L</source>
-        <translation>左</translation>
-    </message>
-    <message>
-        <source>R</source>
-        <translation>右</translation>
-    </message>
-    <message>
-        <source>F</source>
-        <translation>前</translation>
-    </message>
-    <message>
-        <source>B</source>
-        <translation>后</translation>
-    </message>
-    <message>
         <source>blocked</source>
         <translation>受阻</translation>
     </message>
@@ -1316,6 +1542,78 @@ imported from %2</source>
     <message>
         <source>Magnitude</source>
         <translation>合力大小</translation>
+    </message>
+    <message>
+        <source>turn left</source>
+        <translation>左转</translation>
+    </message>
+    <message>
+        <source>turn right</source>
+        <translation>右转</translation>
+    </message>
+    <message>
+        <source>forward</source>
+        <translation>前进</translation>
+    </message>
+    <message>
+        <source>backward</source>
+        <translation>后退</translation>
+    </message>
+    <message>
+        <source>blue: facing +x
+red: facing −x</source>
+        <translation>蓝色：朝向 +x
+红色：朝向 −x</translation>
+    </message>
+    <message>
+        <source>red: command
+grey: blocked</source>
+        <translation>红色：指令
+灰色：受阻</translation>
+    </message>
+    <message>
+        <source>normal</source>
+        <translation>法向力</translation>
+    </message>
+    <message>
+        <source>shear</source>
+        <translation>剪切力</translation>
+    </message>
+    <message>
+        <source>magnitude</source>
+        <translation>合力大小</translation>
+    </message>
+    <message>
+        <source>step %1</source>
+        <translation>第 %1 步</translation>
+    </message>
+    <message>
+        <source>steps %1-%2 (largest)</source>
+        <translation>第 %1–%2 步（最大值）</translation>
+    </message>
+    <message>
+        <source>%1, sensor %2 (%3 %4): %5 %6</source>
+        <translation>%1，传感器 %2（%3 %4）：%5 %6</translation>
+    </message>
+    <message>
+        <source>step %1: heading %2° (%3)</source>
+        <translation>第 %1 步：航向 %2°（%3）</translation>
+    </message>
+    <message>
+        <source>blue: facing +x</source>
+        <translation>蓝色：朝向 +x</translation>
+    </message>
+    <message>
+        <source>red: facing −x</source>
+        <translation>红色：朝向 −x</translation>
+    </message>
+    <message>
+        <source>step %1: v %2, omega %3%4</source>
+        <translation>第 %1 步：v %2，omega %3%4</translation>
+    </message>
+    <message>
+        <source>, blocked</source>
+        <translation>，受阻</translation>
     </message>
 </context>
 <context>
@@ -1525,6 +1823,58 @@ imported from %2</source>
     <message>
         <source>Training failed: %1</source>
         <translation>训练失败：%1</translation>
+    </message>
+    <message>
+        <source>Plan:</source>
+        <translation>计划：</translation>
+    </message>
+    <message>
+        <source>Group</source>
+        <translation>组</translation>
+    </message>
+    <message>
+        <source>Balanced accuracy %</source>
+        <translation>平衡准确率 %</translation>
+    </message>
+    <message>
+        <source>Accuracy %</source>
+        <translation>准确率 %</translation>
+    </message>
+    <message>
+        <source>Training samples</source>
+        <translation>训练样本数</translation>
+    </message>
+    <message>
+        <source>Test samples</source>
+        <translation>测试样本数</translation>
+    </message>
+    <message>
+        <source>Fit s</source>
+        <translation>拟合 s</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n cell(s)</source>
+        <translation>
+            <numerusform>%n 个单元</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>, about %1 (%2 s a cell as in sweep %3, on %n thread(s))</source>
+        <translation>
+            <numerusform>，约 %1（按扫描 %3 中每个单元 %2 秒计，使用 %n 个线程）</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>; the time left shows once the first cells finish (no sweep is stored yet to estimate from)</source>
+        <translation>；首批单元完成后将显示剩余时间（尚无已保存的扫描可供估算）</translation>
+    </message>
+    <message>
+        <source>Ready.</source>
+        <translation>就绪。</translation>
+    </message>
+    <message>
+        <source>skipped: %1</source>
+        <translation>已跳过：%1</translation>
     </message>
 </context>
 </TS>
