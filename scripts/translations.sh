@@ -21,11 +21,14 @@ if [ -z "$lupdate" ]; then
   exit 1
 fi
 
+# TACTILE_TS_DIR=DIR updates copies in DIR instead of translations/ (the test of the .ts files
+# being current uses it).
+ts_dir=${TACTILE_TS_DIR:-$root/translations}
 ts_files=()
 if [ $# -eq 0 ]; then
-  ts_files=("$root"/translations/tactile_workbench_*.ts)
+  ts_files=("$ts_dir"/tactile_workbench_*.ts)
 else
-  for lang in "$@"; do ts_files+=("$root/translations/tactile_workbench_$lang.ts"); done
+  for lang in "$@"; do ts_files+=("$ts_dir/tactile_workbench_$lang.ts"); done
 fi
 
 # Every C++ source of the workbench (the CLI has no translated text). Without line numbers, so a
