@@ -24,7 +24,7 @@ class PreferencesDialog : public QDialog {
 
   // The language codes offered, "" first (follow the system).
   static QStringList languageCodes();
-  static constexpr int kDefaultRowHeight = 14;
+  static constexpr int kDefaultRowHeight = 16;
   static constexpr int kMinRowHeight = 8;
   static constexpr int kMaxRowHeight = 48;
 
