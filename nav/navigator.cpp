@@ -23,14 +23,23 @@ constexpr double kTouching = 0.2;
 constexpr double kBackOffUnits = 25.0;
 // Check Contact: after the front is clear, turn on by this "slight angle" before moving on.
 constexpr double kCheckExtraTurn = 0.3;
+// A concave corner (the followed side pressed above kPressedSide when something is ahead): back
+// off kCornerBackUnits, then arc away on a radius of kCornerArcRadiusUnits through at most
+// kCornerArcRadians.
+constexpr double kPressedSide = 1.0;
+constexpr double kCornerBackUnits = 90.0;
+constexpr double kCornerArcRadiusUnits = 100.0;
+constexpr double kCornerArcRadians = 1.2;
 // Check Contact: moving on this far without the side finding the wall ends the episode.
-constexpr double kCheckLostUnits = 200.0;
+constexpr double kCheckLostUnits = 250.0;
+// Check Contact: move straight this far before arcing toward the wall.
+constexpr double kCheckStraightUnits = 60.0;
 // Check Contact: a side touching this many steps counts as followed even while its status is
 // still undecided (a model may keep a side in a rare class).
 constexpr int kCheckMaxSideSteps = 25;
 // Go Straight: after the whole side has lost the wall, go on this far looking for its next
 // fragment (a hole narrower than this is measured); beyond it the wall has ended.
-constexpr double kGapProbeUnits = 170.0;
+constexpr double kGapProbeUnits = 10.0;
 // Rounding a wall's end: the turn rate toward the wall (an arc of about 40 units at 0.6 cruise).
 constexpr double kRoundTurnFraction = 0.9;
 // Move Through Wall: the approach point lies this far from the wall, where turning in place to
@@ -47,6 +56,10 @@ constexpr double kDepartUnits = 250.0;
 constexpr double kReturnUnits = 70.0;
 // Blocked this many steps in a row: the escape moves are tried in turn.
 constexpr int kEscapeAfter = 3;
+// Check Contact gives up after this many steps in a row.
+constexpr int kCheckBudgetSteps = 300;
+// Bug2's bumper following: the arc back toward an obstacle no longer touched.
+constexpr double kBumperArcUnits = 90.0;
 
 constexpr std::array<std::string_view, kStrategyCount> kTitles{
     "Go Straight",       "Head to Destination", "Check Contact", "Follow Wall",
@@ -175,6 +188,9 @@ struct Navigator::Impl {
   double phaseUnits = 0.0;  // distance covered in the phase (odometry)
   double turned = 0.0;      // radians turned in the phase (odometry, signed)
   bool frontCleared = false;
+  bool pressedSide = false;
+  Strategy previousStrategy = Strategy::HeadToDestination;
+  int sameStrategySteps = 0;
   int sideSteps = 0;
 
   // Gap tracking along the followed side.
@@ -412,6 +428,8 @@ struct Navigator::Impl {
   Command wallExhausted(bool needUTurn) {
     if (auto h = memory.widestPassable(cfg.passableWidthUnits, -1)) {
       beginHole(*h);
+      // Back along the wall: following it again later starts a new circuit from there.
+      following = false;
       if (needUTurn)
         setStrategy(wallOnLeft ? Strategy::RightUTurn : Strategy::LeftUTurn, Phase::Back);
       return {};
@@ -461,8 +479,13 @@ struct Navigator::Impl {
       case Phase::Back:
       case Phase::None:
         if (phase == Phase::None) setStrategy(Strategy::CheckContact, Phase::Back);
-        if (phaseUnits < kBackOffUnits && backMax() <= kTouching && blockedStreak < 2 &&
-            phaseSteps < 12 && (frontMax() > 0.5 || phaseUnits < 0.4 * kBackOffUnits)) {
+        if (phaseSteps == 1) pressedSide = sideMax() > kPressedSide;
+        // Back off straight: a little from a wall met head-on, further from a concave corner
+        // (the side pressed), where turning in place would swing the rear corner into the side.
+        if (phaseUnits < (pressedSide ? kCornerBackUnits : kBackOffUnits) &&
+            groupMax(*values, SensorGroup::Back) <= kTouching && blockedStreak < 2 &&
+            phaseSteps < 40 &&
+            (pressedSide || frontMax() > 0.5 || phaseUnits < 0.4 * kBackOffUnits)) {
           return {-0.5 * cruise(), 0.0};
         }
         setStrategy(Strategy::CheckContact, Phase::Turn);
@@ -470,17 +493,27 @@ struct Navigator::Impl {
       case Phase::Turn: {
         if (blockedStreak >= 2) {
           setStrategy(Strategy::CheckContact, Phase::Back);
+          pressedSide = true;
           return {-0.5 * cruise(), 0.0};
         }
         if (!frontCleared && aheadMax() <= 0.0 && frontMax() <= kTouching) {
           frontCleared = true;
           turned = 0.0;
         }
-        if (frontCleared && std::abs(turned) >= kCheckExtraTurn) {
+        if ((frontCleared && std::abs(turned) >= kCheckExtraTurn) ||
+            (pressedSide && std::abs(turned) >= kCornerArcRadians)) {
           setStrategy(Strategy::CheckContact, Phase::Forward);
         } else {
           if (phaseSteps > 120) {  // turned round without clearing: a pocket
             setStrategy(Strategy::CheckContact, Phase::Forward);
+          }
+          // Beside a pressed side: an arc away (the rear corner swings out about a unit).
+          if (pressedSide) {
+            if (aheadMax() > kTouching) {
+              setStrategy(Strategy::CheckContact, Phase::Back);
+              return {-0.5 * cruise(), 0.0};
+            }
+            return {0.6 * cruise(), away() * 0.6 * cruise() / kCornerArcRadiusUnits};
           }
           return {0.0, away() * cfg.turnRadiansPerSecond};
         }
@@ -506,6 +539,9 @@ struct Navigator::Impl {
           setStrategy(Strategy::HeadToDestination);
           return headTo(goal);
         }
+        // Straight first (thesis: move straight, turn a slight angle when stopped); then arc
+        // gently toward the wall side to find it.
+        if (phaseUnits < kCheckStraightUnits) return {0.6 * cruise(), 0.0};
         return {0.6 * cruise(), -away() * 2.0 * cfg.slightTurnRadiansPerSecond};
       }
       default:
@@ -563,7 +599,8 @@ struct Navigator::Impl {
       return checkContact();
     }
     const double side = sideMax();
-    if (side > 0.0 && sideLost) {
+    // Re-contact after rounding a wall's end is the next face, not the far side of an opening.
+    if (side > 0.0 && sideLost && !rounding) {
       // The next fragment: the opening between the last contact and this one.
       const int first = wallOnLeft ? 8 : 43;
       const int step = wallOnLeft ? 1 : -1;
@@ -608,15 +645,25 @@ struct Navigator::Impl {
   // Thesis 5.2 (6): turn 180 degrees away from the wall, after backing off what is ahead.
   Command uTurn() {
     ++phaseSteps;
+    const double dir = strategy == Strategy::RightUTurn ? -1.0 : 1.0;
     if (phase == Phase::Back) {
-      if (phaseUnits < kBackOffUnits && backMax() <= kTouching && blockedStreak < 2 &&
-          phaseSteps < 12) {
+      // Back off along the wall, then arc away from it before spinning: in place beside the wall
+      // the rear corner would swing into it.
+      if (phaseUnits < kCornerBackUnits && groupMax(*values, SensorGroup::Back) <= kTouching &&
+          blockedStreak < 2 && phaseSteps < 40) {
         return {-0.5 * cruise(), 0.0};
       }
-      phase = Phase::Turn;
+      phase = Phase::Forward;
       turned = 0.0;
     }
-    if (std::abs(turned) >= kPi - 0.05 || phaseSteps > 200) {
+    if (phase == Phase::Forward) {
+      if (std::abs(turned) < 0.6 && aheadMax() <= kTouching && blockedStreak < 2 &&
+          phaseSteps < 80) {
+        return {0.6 * cruise(), dir * 0.6 * cruise() / kCornerArcRadiusUnits};
+      }
+      phase = Phase::Turn;
+    }
+    if (std::abs(turned) >= kPi - 0.05 || phaseSteps > 250) {
       if (target) {
         const std::size_t t = *target;
         beginHole(t);
@@ -625,7 +672,6 @@ struct Navigator::Impl {
       setStrategy(Strategy::CheckContact, Phase::Forward);
       return {};
     }
-    const double dir = strategy == Strategy::RightUTurn ? -1.0 : 1.0;
     if (blockedStreak >= 2) return {(phaseSteps / 4) % 2 ? 0.3 * cruise() : -0.3 * cruise(), 0.0};
     return {0.0, dir * cfg.turnRadiansPerSecond};
   }
@@ -723,16 +769,33 @@ struct Navigator::Impl {
         if (phaseSteps <= 3 && !(backMax() > 0.0)) return {-0.5 * cruise(), 0.0};
         phase = Phase::Turn;
       }
-      if (front || blockedStreak > 0) return {0.0, away() * cfg.turnRadiansPerSecond};
+      if (phase == Phase::Turn) {
+        phase = Phase::Forward;
+        turned = 0.0;
+      }
+      // Turn away until nothing ahead touches and the obstacle lies along the side.
+      if (front || blockedStreak > 0 || (std::abs(turned) < 1.0 && !side))
+        return {0.0, away() * cfg.turnRadiansPerSecond};
       setStrategy(Strategy::FollowWall);
+      roundTurned = 0.0;
     }
     if (front || blockedStreak > 0) {
       setStrategy(Strategy::CheckContact, Phase::Back);
       return {-0.5 * cruise(), 0.0};
     }
     // Binary bumper following: touching -> veer away, free -> arc back toward the wall.
-    if (side) return {0.8 * cruise(), away() * 2.0 * cfg.slightTurnRadiansPerSecond};
-    return {0.6 * cruise(), -away() * kRoundTurnFraction * cfg.turnRadiansPerSecond};
+    if (side) {
+      roundTurned = 0.0;
+      return {0.8 * cruise(), away() * 2.0 * cfg.slightTurnRadiansPerSecond};
+    }
+    // Nothing beside: arc back toward the obstacle on a radius of kBumperArcUnits; a full circle
+    // without meeting it again: it is lost, head for the goal.
+    roundTurned += std::abs(0.6 * cruise() / kBumperArcUnits) * dt;
+    if (roundTurned > 2.0 * kPi) {
+      setStrategy(Strategy::HeadToDestination);
+      return headTo(goal);
+    }
+    return {0.6 * cruise(), -away() * 0.6 * cruise() / kBumperArcUnits};
   }
 
   // ---- one step
@@ -758,6 +821,17 @@ struct Navigator::Impl {
     if ((goal - position()).norm() < cfg.arriveRadiusUnits) {
       arrived = true;
       return last = Command{};
+    }
+    // A Check Contact that has not settled in kCheckBudgetSteps (a pocket it keeps backing out
+    // of): leave it and head for the goal again; the next contact starts a new check.
+    sameStrategySteps = strategy == previousStrategy ? sameStrategySteps + 1 : 0;
+    previousStrategy = strategy;
+    if (strategy == Strategy::CheckContact && sameStrategySteps > kCheckBudgetSteps &&
+        cfg.source != StatusSource::Bumper) {
+      setStrategy(Strategy::HeadToDestination);
+      sameStrategySteps = 0;
+      escapeSteps = 0;
+      return last = nextEscape();
     }
     Command c = choose();
     if (finished) c = {};

@@ -918,6 +918,10 @@ Forschungsumgebung für die taktile Navigation mobiler Roboter.</translation>
         <source>Step %1 of %2 steps</source>
         <translation>Schritt %1 von %2 Schritten</translation>
     </message>
+    <message>
+        <source>Navigator</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>tactile::gui::ModelPickerDialog</name>
@@ -1017,6 +1021,44 @@ Forschungsumgebung für die taktile Navigation mobiler Roboter.</translation>
     <message>
         <source>Timeline &amp;row height:</source>
         <translation>&amp;Zeilenhöhe der Zeitleisten:</translation>
+    </message>
+</context>
+<context>
+    <name>tactile::gui::NavigatorPanelView</name>
+    <message>
+        <source>This run has no navigator columns. Runs written by &apos;tactile navigate&apos; have them.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Command set:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Current control mode:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Status:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Status-%1:</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>tactile::gui::NavigatorStripView</name>
+    <message>
+        <source>strategy</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>status</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>step %1: %2</source>
+        <translation type="unfinished"></translation>
     </message>
 </context>
 <context>

@@ -50,6 +50,7 @@
 #include "app/gui/runs/run_session_model.h"
 #include "app/gui/runs/step_controls_view.h"
 #include "app/gui/runs/timeline_view.h"
+#include "app/gui/user_guide_window.h"
 #include "workspace/workspace.h"
 
 namespace tactile::gui {
@@ -268,6 +269,14 @@ void MainWindow::applyPreferences() {
       settings.value(keys::kTimelineRowHeight, PreferencesDialog::kDefaultRowHeight).toInt());
 }
 
+void MainWindow::showUserGuide() {
+  auto* window = findChild<UserGuideWindow*>();
+  if (window == nullptr) window = new UserGuideWindow(this);
+  window->show();
+  window->raise();
+  window->activateWindow();
+}
+
 void MainWindow::showKeyboardShortcuts() {
   auto* dialog = findChild<QDialog*>(QStringLiteral("shortcutsDialog"));
   if (dialog == nullptr) {
@@ -443,6 +452,7 @@ void MainWindow::createActions() {
   QMenu* help = menuBar()->addMenu(tr("&Help"));
   bindShortcut(help->addAction(tr("&Keyboard Shortcuts"), this, &MainWindow::showKeyboardShortcuts),
                QStringLiteral("keyboardShortcuts"));
+  help->addAction(tr("&User Guide"), this, &MainWindow::showUserGuide);
   help->addSeparator();
   help->addAction(tr("&About Tactile Workbench"), this, &MainWindow::showAbout);
 }

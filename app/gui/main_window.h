@@ -92,6 +92,8 @@ class MainWindow : public QMainWindow {
   // Help > Keyboard Shortcuts and File > Preferences (modeless; null until first shown).
   void showKeyboardShortcuts();
   void showPreferences();
+  // Help > User Guide (modeless; made on first use).
+  void showUserGuide();
 
  protected:
   void closeEvent(QCloseEvent* event) override;

@@ -1,0 +1,43 @@
+#!/bin/sh
+# `tactile navigate`: seeded runs on the chapter-5 scene (byte-identical for the same seeds, with
+# any thread count), the JSON contract, run files that import with the navigator's columns, and
+# usage errors.
+. "$(dirname "$0")/cli_test_lib.sh"
+
+"$T" navigate --scene chapter5 --status truth --seeds 1-3 --max-steps 3000 --out-dir "$W/a" \
+  --threads 2 --json --quiet >"$W/a.json" || fail "navigate failed"
+python3 - "$W/a.json" <<'PY' || fail "navigate JSON"
+import json, sys
+j = json.load(open(sys.argv[1]))
+runs = j["runs"]
+assert [r["seed"] for r in runs] == [1, 2, 3], runs
+for r in runs:
+    assert r["outcome"] in ("success", "unreachable", "timeout"), r
+    assert r["steps"] >= 1 and r["path_length"] > 0 and r["blocked_steps"] >= 0, r
+ok = sum(r["outcome"] == "success" for r in runs)
+assert abs(j["success_rate"] - ok / 3) < 1e-12, j
+PY
+"$T" navigate --scene chapter5 --status truth --seeds 1-3 --max-steps 3000 --out-dir "$W/b" \
+  --threads 1 --quiet >"$W/b.txt" || fail "second navigate failed"
+for f in "$W"/a/*.csv; do
+  cmp -s "$f" "$W/b/$(basename "$f")" || fail "$(basename "$f") differs between two runs"
+done
+grep -q "success rate" "$W/b.txt" || fail "no success rate line"
+head -c 2000 "$W/a/navigate_truth_0001.csv" | grep -q "x_strategy" || fail "no x_strategy column"
+"$T" import --db "$W/n.db" "$W/a" >/dev/null || fail "import failed"
+cols=$(sqlite3 "$W/n.db" "SELECT count(*) FROM runs")
+[ "$cols" = 3 ] || fail "imported $cols of 3 runs"
+
+# Usage errors exit 2; a model source without a model too.
+set +e
+"$T" navigate --scene chapter5 --status truth --seeds 5-2 >/dev/null 2>&1
+[ $? = 2 ] || fail "backwards --seeds is not a usage error"
+"$T" navigate --scene chapter5 --status sideways >/dev/null 2>&1
+[ $? = 2 ] || fail "unknown --status is not a usage error"
+"$T" navigate --scene chapter5 >/dev/null 2>&1
+[ $? = 2 ] || fail "model status without --model is not a usage error"
+"$T" navigate --scene chapter5 --model "$W/missing.json" >/dev/null 2>"$W/err.txt"
+[ $? = 1 ] || fail "a missing model file is not a failure"
+grep -q "missing.json" "$W/err.txt" || fail "the error does not name the model file"
+
+echo "ok: navigate"
