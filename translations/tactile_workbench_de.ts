@@ -919,8 +919,8 @@ Forschungsumgebung für die taktile Navigation mobiler Roboter.</translation>
         <translation>Schritt %1 von %2 Schritten</translation>
     </message>
     <message>
-        <source>Navigator</source>
-        <translation type="unfinished"></translation>
+        <source>&amp;User Guide</source>
+        <translation>&amp;Benutzerhandbuch</translation>
     </message>
 </context>
 <context>
@@ -1021,44 +1021,6 @@ Forschungsumgebung für die taktile Navigation mobiler Roboter.</translation>
     <message>
         <source>Timeline &amp;row height:</source>
         <translation>&amp;Zeilenhöhe der Zeitleisten:</translation>
-    </message>
-</context>
-<context>
-    <name>tactile::gui::NavigatorPanelView</name>
-    <message>
-        <source>This run has no navigator columns. Runs written by &apos;tactile navigate&apos; have them.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Command set:</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Current control mode:</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Status:</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Status-%1:</source>
-        <translation type="unfinished"></translation>
-    </message>
-</context>
-<context>
-    <name>tactile::gui::NavigatorStripView</name>
-    <message>
-        <source>strategy</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>status</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>step %1: %2</source>
-        <translation type="unfinished"></translation>
     </message>
 </context>
 <context>
@@ -1931,6 +1893,13 @@ grau: blockiert</translation>
     <message>
         <source>skipped: %1</source>
         <translation>übersprungen: %1</translation>
+    </message>
+</context>
+<context>
+    <name>tactile::gui::UserGuideWindow</name>
+    <message>
+        <source>User Guide</source>
+        <translation>Benutzerhandbuch</translation>
     </message>
 </context>
 </TS>

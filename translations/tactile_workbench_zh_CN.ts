@@ -909,6 +909,10 @@ Research workbench for tactile-based mobile-robot navigation.</source>
         <source>Step %1 of %2 steps</source>
         <translation>第 %1 步，共 %2 步</translation>
     </message>
+    <message>
+        <source>&amp;User Guide</source>
+        <translation>用户指南(&amp;U)</translation>
+    </message>
 </context>
 <context>
     <name>tactile::gui::ModelPickerDialog</name>
@@ -1875,6 +1879,13 @@ grey: blocked</source>
     <message>
         <source>skipped: %1</source>
         <translation>已跳过：%1</translation>
+    </message>
+</context>
+<context>
+    <name>tactile::gui::UserGuideWindow</name>
+    <message>
+        <source>User Guide</source>
+        <translation>用户指南</translation>
     </message>
 </context>
 </TS>
