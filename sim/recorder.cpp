@@ -42,52 +42,100 @@ RunResult simulateRun(std::shared_ptr<const World> world, std::string_view scene
   return simulateRunWith(std::move(world), sceneName, *driver, options, progress);
 }
 
-RunResult simulateRunWith(std::shared_ptr<const World> world, std::string_view sceneName,
-                          Driver& driver, const RunOptions& options, const ProgressFn& progress) {
+RunLoop::RunLoop(std::shared_ptr<const World> world, std::string_view sceneName,
+                 std::string_view subject, const RunOptions& options)
+    : world_(world),
+      options_(options),
+      sim_(world, options.config),
+      // Reserve for typical runs only: a run that ends early should not hold memory for maxSteps.
+      recorder_(sim_, sceneName, subject, std::min<std::size_t>(options.maxSteps, 1u << 16)) {
+  obs_.dtSeconds = options.config.dtSeconds;
+  obs_.start = sim_.pose();
+  obs_.goal = world->scene().goal;
+  obs_.values = &sim_.sensors();
+  centreOffset_ = 0.5 * (options.config.geometry.frontX() + options.config.geometry.backX());
+  if (options.maxSteps == 0) ended_ = RunOutcome::Timeout;
+}
+
+Result<std::unique_ptr<RunLoop>> RunLoop::start(std::shared_ptr<const World> world,
+                                                std::string_view sceneName,
+                                                std::string_view subject,
+                                                const RunOptions& options) {
   if (options.maxSteps > kMaxStepsPerRun) {
     return Error("at most " + std::to_string(kMaxStepsPerRun) + " steps per run");
   }
-  Simulator sim(world, options.config);
-  if (sim.isBlocked(world->scene().start)) return Error("the start pose overlaps an obstacle");
+  {
+    Simulator probe(world, options.config);
+    if (probe.isBlocked(world->scene().start)) return Error("the start pose overlaps an obstacle");
+  }
+  return std::unique_ptr<RunLoop>(new RunLoop(std::move(world), sceneName, subject, options));
+}
+
+const Observation& RunLoop::observation() {
+  obs_.step = sim_.stepIndex();
+  obs_.pose = sim_.pose();
+  obs_.blocked = sim_.blocked();
+  return obs_;
+}
+
+double RunLoop::goalDistance() const {
+  const Vec2 centre = bodyToWorld(sim_.pose(), Vec2(centreOffset_, 0.0));
+  return (centre - world_->scene().goal).norm();
+}
+
+std::optional<RunOutcome> RunLoop::step(Driver& driver) {
+  if (ended_) return ended_;
+  const Command command = driver.next(observation());
+  return afterStep(command, &driver);
+}
+
+std::optional<RunOutcome> RunLoop::step(const Command& command) {
+  if (ended_) return ended_;
+  return afterStep(command, nullptr);
+}
+
+std::optional<RunOutcome> RunLoop::afterStep(const Command& command, const Driver* driver) {
+  sim_.step(command.v, command.omega);
+  recorder_.record(sim_, command);
+  if (options_.stopAtGoal && goalDistance() < options_.goalRadiusUnits) {
+    ended_ = RunOutcome::Success;
+  } else if (options_.stopAtGoal && driver != nullptr) {
+    if (const std::optional<RunOutcome> finished = driver->finished()) ended_ = *finished;
+  }
+  if (!ended_ && recorder_.run().stepCount() >= options_.maxSteps) ended_ = RunOutcome::Timeout;
+  if (ended_) recorder_.setOutcome(*ended_);
+  return ended_;
+}
+
+void RunLoop::end(RunOutcome outcome) {
+  if (ended_) return;
+  ended_ = outcome;
+  recorder_.setOutcome(outcome);
+}
+
+RunData RunLoop::take() {
+  recorder_.setOutcome(ended_.value_or(RunOutcome::Unknown));
+  return recorder_.take();
+}
+
+RunResult simulateRunWith(std::shared_ptr<const World> world, std::string_view sceneName,
+                          Driver& driver, const RunOptions& options, const ProgressFn& progress) {
   const std::string name = driver.name();
-  // Reserve for typical runs only: a run that ends early should not hold memory for maxSteps.
-  Recorder recorder(sim, sceneName, name, std::min<std::size_t>(options.maxSteps, 1u << 16));
-  recorder.setMeta("driver", name);
-  recorder.setMeta("seed", std::to_string(options.seed));
-  Observation obs;
-  obs.dtSeconds = options.config.dtSeconds;
-  obs.start = sim.pose();
-  obs.goal = world->scene().goal;
-  obs.values = &sim.sensors();
-  const double centreOffset =
-      0.5 * (options.config.geometry.frontX() + options.config.geometry.backX());
-  RunOutcome outcome = RunOutcome::Timeout;
-  for (std::size_t k = 0; k < options.maxSteps; ++k) {
-    obs.step = k;
-    obs.pose = sim.pose();
-    obs.blocked = sim.blocked();
-    const Command command = driver.next(obs);
-    sim.step(command.v, command.omega);
-    recorder.record(sim, command);
-    const Vec2 centre = bodyToWorld(sim.pose(), Vec2(centreOffset, 0.0));
-    if (options.stopAtGoal && (centre - world->scene().goal).norm() < options.goalRadiusUnits) {
-      outcome = RunOutcome::Success;
-      break;
-    }
-    if (options.stopAtGoal) {
-      if (const std::optional<RunOutcome> ended = driver.finished()) {
-        outcome = *ended;
-        break;
-      }
-    }
-    if (progress && (k & 1023) == 1023 && !progress(k + 1, options.maxSteps)) {
+  Result<std::unique_ptr<RunLoop>> started =
+      RunLoop::start(std::move(world), sceneName, name, options);
+  if (!started) return started.error();
+  RunLoop& loop = *started.value();
+  loop.recorder().setMeta("driver", name);
+  loop.recorder().setMeta("seed", std::to_string(options.seed));
+  for (std::size_t k = 0; !loop.ended(); ++k) {
+    loop.step(driver);
+    if (!loop.ended() && progress && (k & 1023) == 1023 && !progress(k + 1, options.maxSteps)) {
       return Error("cancelled");
     }
   }
-  recorder.setOutcome(outcome);
   SimulatedRun result;
-  result.outcome = outcome;
-  result.run = recorder.take();
+  result.outcome = *loop.outcome();
+  result.run = loop.take();
   return result;
 }
 

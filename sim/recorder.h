@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <functional>
 #include <memory>
+#include <optional>
 #include <string>
 
 #include "base/error.h"
@@ -74,6 +75,51 @@ RunResult simulateRun(std::shared_ptr<const World> world, std::string_view scene
 RunResult simulateRunWith(std::shared_ptr<const World> world, std::string_view sceneName,
                           Driver& driver, const RunOptions& options,
                           const ProgressFn& progress = {});
+
+// The run loop of simulateRunWith one step at a time, for callers that step at their own pace (the
+// workbench's simulator window): the same observation, stepping, recording and ending rules, so a
+// run stepped here equals simulateRunWith's with the same driver commands.
+class RunLoop {
+ public:
+  // Fails when the scene's start pose is blocked.
+  static Result<std::unique_ptr<RunLoop>> start(std::shared_ptr<const World> world,
+                                                std::string_view sceneName,
+                                                std::string_view subject,
+                                                const RunOptions& options);
+  // Asks the driver, steps, records. Returns the outcome once the run has ended (goal reached,
+  // the driver finished, or maxSteps taken); after that step() does nothing and returns it again.
+  std::optional<RunOutcome> step(Driver& driver);
+  // Steps one given command (a driver that is asked nothing: manual driving).
+  std::optional<RunOutcome> step(const Command& command);
+  // Ends the run now with `outcome` (e.g. the person gave up); no-op once ended.
+  void end(RunOutcome outcome);
+
+  bool ended() const { return ended_.has_value(); }
+  std::optional<RunOutcome> outcome() const { return ended_; }
+  const Simulator& simulator() const { return sim_; }
+  const Recorder& recorder() const { return recorder_; }
+  Recorder& recorder() { return recorder_; }
+  const RunOptions& options() const { return options_; }
+  // What the driver sees before the next step.
+  const Observation& observation();
+  // Distance of the body centre to the goal.
+  double goalDistance() const;
+  // The run with its outcome set and truth smoothed over the whole run; the loop is spent.
+  RunData take();
+
+ private:
+  RunLoop(std::shared_ptr<const World> world, std::string_view sceneName, std::string_view subject,
+          const RunOptions& options);
+  std::optional<RunOutcome> afterStep(const Command& command, const Driver* driver);
+
+  std::shared_ptr<const World> world_;
+  RunOptions options_;
+  Simulator sim_;
+  Recorder recorder_;
+  Observation obs_;
+  double centreOffset_ = 0.0;
+  std::optional<RunOutcome> ended_;
+};
 
 // Batch: run i uses seed options.seed + i. Runs are spread over `threads` workers (0 = all
 // cores, at most 256); `sink(i, result)` is called from worker threads (once per run, any order)

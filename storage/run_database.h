@@ -272,6 +272,24 @@ class RunDatabase {
                           const std::string& sourceFile = {},
                           const SceneResolver& sceneResolver = {});
 
+  // ---- runs stored while they are recorded (storage/run_recording.cpp, docs/storage.md#recording)
+  // Every call is one committed transaction, so a recorder that dies keeps a readable run with the
+  // steps appended so far (outcome as in its header, usually `unknown`).
+  // Creates the run `name` with no steps: metadata and x_ column names from `header` (its steps are
+  // ignored), the scene resolved as on import; `withTruth`: its steps will carry truth. The name
+  // must be free, non-empty and hold no comma or line break. Returns the run id.
+  Result<std::int64_t> beginRun(const std::string& name, const RunData& header, bool withTruth,
+                                const SceneResolver& sceneResolver = {});
+  // Appends steps [firstStep, run.stepCount()) of `run`; firstStep must be the number of steps
+  // stored so far. Writes them through the import's step writer with their summary blocks (the
+  // run reads back by window and summary at once) and the new step count.
+  Status appendSteps(std::int64_t runId, const RunData& run, std::size_t firstStep);
+  // Completes the run: `run` holds every step (those not stored yet are appended). Its metadata
+  // replaces the stored one (outcome and subject columns too), stored truth that differs from
+  // `run`'s (e.g. smoothed at the end) is replaced, and the checksum becomes that of its CSV text,
+  // as importRun would store it.
+  Status finishRun(std::int64_t runId, const RunData& run);
+
   Result<std::vector<RunInfo>> listRuns();
   Result<RunInfo> findRun(std::string_view name);
   Result<RunInfo> runInfo(std::int64_t runId);

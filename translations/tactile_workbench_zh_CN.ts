@@ -181,6 +181,61 @@
         <source>This list of keyboard shortcuts</source>
         <translation>本快捷键列表</translation>
     </message>
+    <message>
+        <source>New simulation window</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>SimKeys</name>
+    <message>
+        <source>Faster forward by a large step (+20 units/s)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Slower (or backward) by a large step (-20 units/s)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Faster forward by a small step (+5 units/s)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Slower (or backward) by a small step (-5 units/s)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Turn left by a large step (+0.2 rad/s)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Turn right by a large step (-0.2 rad/s)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Turn left by a small step (+0.05 rad/s)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Turn right by a small step (-0.05 rad/s)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Stop (v = 0, omega = 0)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Robot close-up / whole scene (close-up only in experiment mode)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Pause / go on</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>One step (while paused)</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>main</name>
@@ -235,6 +290,65 @@
     <message>
         <source>%1: no such database</source>
         <translation>%1：没有此数据库</translation>
+    </message>
+    <message>
+        <source>Open the simulator window on SCENE (a built-in scene, a scene JSON file or random:N:SEED); runs go into --db (or the last database).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>With --simulate: practice (default), experiment or autonomous.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>With --simulate: the subject&apos;s name.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>With --simulate --mode experiment: the seed of start and goal.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>With --simulate: start a run and replay the v, omega commands of the run file FILE, one a step.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>With --simulate: steps per second (default 10; 0 as fast as possible).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>With --simulate: show the data panel.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>With --simulate: show the whole scene where allowed.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>no stored model named &apos;%1&apos;</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>--mode must be practice, experiment or autonomous, got &apos;%1&apos;</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>--seed needs a positive number, got &apos;%1&apos;</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>--rate needs a number &gt;= 0, got &apos;%1&apos;</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>tactile::gui::ExperimentPanel</name>
+    <message>
+        <source>Status</source>
+        <translation type="unfinished">状态</translation>
+    </message>
+    <message>
+        <source>Strategies</source>
+        <translation type="unfinished"></translation>
     </message>
 </context>
 <context>
@@ -913,6 +1027,10 @@ Research workbench for tactile-based mobile-robot navigation.</source>
         <source>&amp;User Guide</source>
         <translation>用户指南(&amp;U)</translation>
     </message>
+    <message>
+        <source>New &amp;Simulation...</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>tactile::gui::ModelPickerDialog</name>
@@ -1087,6 +1205,339 @@ imported from %2</source>
     <message>
         <source>Filter runs by name, scene, subject or outcome</source>
         <translation>按名称、场景、受试者或结果筛选运行</translation>
+    </message>
+</context>
+<context>
+    <name>tactile::gui::SimSession</name>
+    <message>
+        <source>An experiment run needs the subject&apos;s name.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>A subject&apos;s name must be one line.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Autonomous mode needs a driver.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The step length must be in (0, 1] seconds.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The time limit must be positive.</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>tactile::gui::SimWindow</name>
+    <message>
+        <source>Run %1 ended: %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Tactile Simulator</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Practice</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Experiment</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Autonomous</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>needed in experiment mode</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source> s</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>as fast as possible</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source> steps/s</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Run</source>
+        <translation type="unfinished">运行</translation>
+    </message>
+    <message>
+        <source>Mode</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Scene</source>
+        <translation type="unfinished">场景</translation>
+    </message>
+    <message>
+        <source>Subject</source>
+        <translation type="unfinished">受试者</translation>
+    </message>
+    <message>
+        <source>Seed (start, goal)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Time limit</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Step rate</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Navigator model</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Start New Run</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Go</source>
+        <translation type="unfinished">转到</translation>
+    </message>
+    <message>
+        <source>Step</source>
+        <translation type="unfinished">步</translation>
+    </message>
+    <message>
+        <source>Give Up</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Data &gt;&gt;</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Open in Workbench</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Signal per group</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Experiment panel</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The run so far</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Bug2 bumper (no model)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;File</source>
+        <translation type="unfinished">文件(&amp;F)</translation>
+    </message>
+    <message>
+        <source>Built-in &amp;Scenes</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Open Scene &amp;File...</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Open Run in &amp;Workbench</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Save Run as &amp;CSV...</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Close</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Run</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Start &amp;New Run</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Go / Pause (P)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Step (N)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Give Up</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;View</source>
+        <translation type="unfinished">视图(&amp;V)</translation>
+    </message>
+    <message>
+        <source>Robot Close-up / Whole Scene (M)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Data Panel</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Help</source>
+        <translation type="unfinished">帮助(&amp;H)</translation>
+    </message>
+    <message>
+        <source>&amp;Briefing: Bug1 and Bug2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Keys</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Scene %1: press Start New Run</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Run %1 ready: drive with the arrow keys and W, A, S, D (Help &gt; Keys)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>(not stored)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The scene stays hidden in experiment mode</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>v %1 units/s   ω %2 rad/s</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Blocked: the last step was stopped</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Moving freely</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>No step yet</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>No run yet.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 mode, scene %2, step %3 (%4 s)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>, %1 s left</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>
+run %1, %2 steps stored</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>
+not stored (no database)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>
+outcome: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>
+paused: a drive key or Go starts the clock</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Pause</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Play</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Data &lt;&lt;</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Open Scene</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Scenes (*.json);;All files (*)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>No steps recorded yet.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Save Run</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Run files (*.csv)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Briefing: Bug1 and Bug2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&lt;p&gt;You drive the robot by touch: the close-up shows only the robot, which domes touch something, where it heads (blue) and where the goal lies (red), with the distance. Two classic strategies for a point robot that feels its way may help:&lt;/p&gt;&lt;p&gt;&lt;b&gt;Bug1&lt;/b&gt;&lt;br&gt;1. Head for the goal.&lt;br&gt;2. When you hit an obstacle, go all the way round it, keeping contact, and remember the point where you were closest to the goal.&lt;br&gt;3. Go back to that point, leave the obstacle there and head for the goal again.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Bug2&lt;/b&gt;&lt;br&gt;1. Head for the goal along the straight line from the start to the goal (the S-G line).&lt;br&gt;2. When an obstacle is in the way, follow its edge until you meet the S-G line again, closer to the goal than where you hit it.&lt;br&gt;3. Leave the obstacle there and go on along the line.&lt;/p&gt;&lt;p&gt;The robot is not a point: it is 140 long and 80 wide, it turns about its rear axle, and it loses contact easily when it follows an edge carelessly.&lt;/p&gt;</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Simulator Keys</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>tactile::gui::StatusPictureView</name>
+    <message>
+        <source>Choose a scene and a mode, then press Start.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 units to the goal</source>
+        <translation type="unfinished">距目标 %1 单位</translation>
+    </message>
+    <message>
+        <source>Whole scene (M: robot close-up)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Robot close-up (M: whole scene)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Robot close-up (scene hidden)</source>
+        <translation type="unfinished"></translation>
     </message>
 </context>
 <context>

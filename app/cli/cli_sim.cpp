@@ -33,6 +33,7 @@ using namespace tactile::sim;
 struct SimulateArgs {
   std::string scene;
   std::string plan;
+  std::string commands;  // a run file whose commands are replayed
   std::string driver = "wall-follow";
   std::int64_t steps = 5000;
   std::uint64_t seed = 1;
@@ -193,8 +194,63 @@ int runPlan(const SimulateArgs& a) {
   return kExitOk;
 }
 
+// `simulate --commands RUN.csv`: the run file's (v, omega) commands, one a step, from its start
+// pose to its goal (from its metadata; the scene's where absent), through the same run loop as
+// every other run. The run ends at the goal or after the last command (outcome timeout).
+int runReplay(const SimulateArgs& a) {
+  if (a.out.empty() || !a.outDir.empty() || a.runs != 1) {
+    throw UsageError("--commands records one run: give --out FILE (not --out-dir or --runs)");
+  }
+  if (!(a.dt > 0.0 && a.dt <= 1.0)) throw UsageError("--dt must be in (0, 1] seconds");
+  RunCsvResult source = readRunCsv(a.commands);
+  if (!source) throw std::runtime_error(source.errorText());
+  const RunData& commands = source.value();
+  std::shared_ptr<const World> world = loadWorld(a.scene);
+  const std::string label = sceneLabel(a.scene, *world);
+  Scene scene = world->scene();
+  if (const auto start = commands.start()) scene.start = *start;
+  if (const auto goal = commands.goal()) scene.goal = Vec2(goal->first, goal->second);
+  world = std::make_shared<const World>(std::move(scene));
+  std::vector<ScriptDriver::Leg> legs;
+  legs.reserve(commands.stepCount());
+  for (std::size_t k = 0; k < commands.stepCount(); ++k)
+    legs.push_back({Command{commands.v[k], commands.omega[k]}, 1});
+  ScriptDriver driver(std::move(legs));
+  RunOptions options;
+  options.maxSteps = commands.stepCount();
+  options.seed = a.seed;
+  options.config.dtSeconds = a.dt;
+  const auto t0 = std::chrono::steady_clock::now();
+  RunResult result = simulateRunWith(world, label, driver, options);
+  if (!result.ok()) throw std::runtime_error(a.commands + ": " + result.errorText());
+  const Status written = writeRunCsv(result->run, a.out);
+  if (!written) throw std::runtime_error(written.errorText());
+  const double seconds = secondsSince(t0);
+  const std::string outcome(runOutcomeName(result->outcome));
+  if (a.json) {
+    nlohmann::json j;
+    j["scene"] = label;
+    j["commands"] = a.commands;
+    j["steps"] = result->run.stepCount();
+    j["outcome"] = outcome;
+    j["seconds"] = seconds;
+    j["files"] = {a.out};
+    std::printf("%s\n", j.dump().c_str());
+  } else {
+    std::printf("replayed %zu of %zu command(s) of %s in %.3f s; outcome %s\nwrote %s\n",
+                result->run.stepCount(), commands.stepCount(), a.commands.c_str(), seconds,
+                outcome.c_str(), a.out.c_str());
+  }
+  return kExitOk;
+}
+
 int runSimulate(const SimulateArgs& a) {
   if (!a.prefix.empty()) requireValidName(a.prefix, "--prefix", "run");
+  if (!a.commands.empty()) {
+    if (!a.plan.empty()) throw UsageError("give --commands or --plan, not both");
+    if (a.scene.empty()) throw UsageError("--commands needs --scene");
+    return runReplay(a);
+  }
   if (!a.plan.empty()) return runPlan(a);
   if (a.scene.empty()) throw UsageError("give --scene (or --plan training)");
   if (a.steps <= 0) throw UsageError("--steps must be at least 1, got " + std::to_string(a.steps));
@@ -468,6 +524,9 @@ void registerSimVerbs(CLI::App& app, CLI::App& bench) {
                   "and drivers come from the recipe, docs/sim.md#training-corpus)");
   sim->add_option("--driver", args->driver,
                   "wall-follow (Bug-2 explorer), bug (Bug-2, side per obstacle) or random");
+  sim->add_option("--commands", args->commands,
+                  "Replay the v, omega commands of this run file, one a step, from its start "
+                  "pose to its goal (one run, --out; docs/cli.md#simulate)");
   sim->add_option("--steps", args->steps, "Maximum steps per run (1..1000000)");
   sim->add_option("--seed", args->seed, "Seed; run i of a batch uses SEED+i");
   sim->add_option("--out", args->out, "Output run file (single run)");

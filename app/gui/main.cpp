@@ -13,6 +13,8 @@
 #include "app/gui/learning/sweep_results_window.h"
 #include "app/gui/main_window.h"
 #include "app/gui/runs/run_session_model.h"
+#include "app/gui/sim/sim_window.h"
+#include "app/gui/sim/status_picture_view.h"
 
 namespace {
 
@@ -67,6 +69,48 @@ int main(int argc, char** argv) {
                               "Show the stored model NAME's predictions under the labels (needs "
                               "--run)."),
       QStringLiteral("NAME"));
+  // The simulator window (docs/workbench.md#simulator).
+  const QCommandLineOption simulateOption(
+      QStringLiteral("simulate"),
+      QApplication::translate("main",
+                              "Open the simulator window on SCENE (a built-in scene, a scene JSON "
+                              "file or random:N:SEED); runs go into --db (or the last database)."),
+      QStringLiteral("SCENE"));
+  const QCommandLineOption modeOption(
+      QStringLiteral("mode"),
+      QApplication::translate("main",
+                              "With --simulate: practice (default), experiment or autonomous."),
+      QStringLiteral("MODE"));
+  const QCommandLineOption subjectOption(
+      QStringLiteral("subject"),
+      QApplication::translate("main", "With --simulate: the subject's name."),
+      QStringLiteral("NAME"));
+  const QCommandLineOption seedOption(
+      QStringLiteral("seed"),
+      QApplication::translate("main",
+                              "With --simulate --mode experiment: the seed of start and goal."),
+      QStringLiteral("N"));
+  const QCommandLineOption commandsOption(
+      QStringLiteral("commands"),
+      QApplication::translate("main",
+                              "With --simulate: start a run and replay the v, omega commands of "
+                              "the run file FILE, one a step."),
+      QStringLiteral("FILE"));
+  const QCommandLineOption rateOption(
+      QStringLiteral("rate"),
+      QApplication::translate("main",
+                              "With --simulate: steps per second (default 10; 0 as fast as "
+                              "possible)."),
+      QStringLiteral("N"));
+  const QCommandLineOption dataOption(
+      QStringLiteral("data"),
+      QApplication::translate("main", "With --simulate: show the data panel."));
+  const QCommandLineOption wholeOption(
+      QStringLiteral("whole-scene"),
+      QApplication::translate("main", "With --simulate: show the whole scene where allowed."));
+  for (const QCommandLineOption* o : {&simulateOption, &modeOption, &subjectOption, &seedOption,
+                                      &commandsOption, &rateOption, &dataOption, &wholeOption})
+    parser.addOption(*o);
   parser.addOption(dbOption);
   parser.addOption(sweepOption);
   parser.addOption(modelOption);
@@ -85,7 +129,7 @@ int main(int argc, char** argv) {
     return fail(QApplication::translate("main", "--run needs --db"));
   if (parser.isSet(sweepOption) && !parser.isSet(dbOption))
     return fail(QApplication::translate("main", "--sweep needs --db"));
-  if (parser.isSet(modelOption) && !parser.isSet(runOption))
+  if (parser.isSet(modelOption) && !parser.isSet(runOption) && !parser.isSet(simulateOption))
     return fail(QApplication::translate("main", "--model needs --run"));
   bool sweepOk = true;
   const qlonglong sweepId =
@@ -118,9 +162,59 @@ int main(int argc, char** argv) {
     tactile::Status shown = window.showPredictions(parser.value(modelOption));
     if (!shown) return fail(QString::fromStdString(shown.errorText()));
   }
-  if (parser.isSet(stepOption)) window.session()->setCurrentStep(step);
-  window.show();
+  if (parser.isSet(stepOption) && !parser.isSet(simulateOption))
+    window.session()->setCurrentStep(step);
   QWidget* shot = &window;
+  tactile::gui::SimWindow* simWindow = nullptr;
+  if (parser.isSet(simulateOption)) {
+    simWindow = window.openSimulator(parser.value(simulateOption));
+    const QString mode = parser.value(modeOption);
+    if (mode == QStringLiteral("experiment")) {
+      simWindow->setMode(tactile::gui::SimMode::Experiment);
+    } else if (mode == QStringLiteral("autonomous")) {
+      simWindow->setMode(tactile::gui::SimMode::Autonomous);
+      if (parser.isSet(modelOption)) {
+        if (!simWindow->navigatorModels().contains(parser.value(modelOption)))
+          return fail(QApplication::translate("main", "no stored model named '%1'")
+                          .arg(parser.value(modelOption)));
+        simWindow->setNavigatorModel(parser.value(modelOption));
+      }
+    } else if (!mode.isEmpty() && mode != QStringLiteral("practice")) {
+      return fail(QApplication::translate(
+                      "main", "--mode must be practice, experiment or autonomous, got '%1'")
+                      .arg(mode));
+    }
+    simWindow->setSubject(parser.value(subjectOption));
+    if (parser.isSet(seedOption)) {
+      bool ok = true;
+      const int seed = parser.value(seedOption).toInt(&ok);
+      if (!ok || seed < 1)
+        return fail(QApplication::translate("main", "--seed needs a positive number, got '%1'")
+                        .arg(parser.value(seedOption)));
+      simWindow->setSeed(seed);
+    }
+    if (parser.isSet(rateOption)) {
+      bool ok = true;
+      const double rate = parser.value(rateOption).toDouble(&ok);
+      if (!ok || rate < 0)
+        return fail(QApplication::translate("main", "--rate needs a number >= 0, got '%1'")
+                        .arg(parser.value(rateOption)));
+      simWindow->setStepsPerSecond(rate);
+    }
+    const tactile::Status started = parser.isSet(commandsOption)
+                                        ? simWindow->replayCommands(parser.value(commandsOption))
+                                        : simWindow->startRun();
+    if (!started) return fail(QString::fromStdString(started.errorText()));
+    // --step K with --simulate: the run takes K steps at once (screenshots of a run under way).
+    if (parser.isSet(stepOption)) simWindow->session()->advance(static_cast<std::size_t>(step));
+    // Autonomous mode plays at once (Play pressed).
+    if (mode == QStringLiteral("autonomous")) simWindow->session()->setPaused(false);
+    if (parser.isSet(dataOption)) simWindow->setDataPanelShown(true);
+    if (parser.isSet(wholeOption)) simWindow->picture()->setWholeScene(true);
+    shot = simWindow;
+  } else {
+    window.show();
+  }
   if (parser.isSet(sweepOption)) {
     tactile::Status opened = window.openSweep(sweepId);
     if (!opened) return fail(QString::fromStdString(opened.errorText()));
@@ -131,8 +225,24 @@ int main(int argc, char** argv) {
     // Long enough for the queued replots of every view.
     // A sweep's results window is shot instead of the main window. Predictions are computed in
     // the background: wait for them as well.
-    QTimer::singleShot(600, &window, [&window, shot, path] {
+    QTimer::singleShot(600, &window, [&window, shot, path, simWindow] {
       window.waitForPredictions();
+      if (simWindow != nullptr) {
+        // A replay finishes first (it steps in slices between events), then the data panel
+        // reads the run.
+        while (simWindow->session()->scriptLeft() > 0 && !simWindow->session()->hasEnded() &&
+               !simWindow->session()->isPaused())
+          QCoreApplication::processEvents(QEventLoop::AllEvents, 50);
+        simWindow->refreshDataPanel();
+        QCoreApplication::processEvents();
+        shot->resize(1400, 900);
+        QCoreApplication::processEvents();
+        const bool saved = shot->grab().save(path);
+        if (!saved)
+          std::fprintf(stderr, "tactile-workbench: error: cannot save %s\n", qPrintable(path));
+        QApplication::exit(saved ? 0 : 1);
+        return;
+      }
       QCoreApplication::sendPostedEvents();
       QCoreApplication::processEvents();
       shot->resize(1600, 1000);

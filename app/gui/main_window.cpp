@@ -51,6 +51,7 @@
 #include "app/gui/runs/step_controls_view.h"
 #include "app/gui/runs/timeline_view.h"
 #include "app/gui/user_guide_window.h"
+#include "app/gui/sim/sim_window.h"
 #include "workspace/workspace.h"
 
 namespace tactile::gui {
@@ -326,6 +327,9 @@ void MainWindow::createActions() {
   bindShortcut(file->addAction(tr("&Import Runs..."), this, &MainWindow::chooseRunFiles),
                QStringLiteral("importRuns"));
   file->addAction(tr("Export &Labels..."), labelPanel_, &LabelPanelView::exportLabels);
+  file->addSeparator();
+  bindShortcut(file->addAction(tr("New &Simulation..."), this, [this] { openSimulator(); }),
+               QStringLiteral("newSimulation"));
   file->addSeparator();
   QAction* prefs = file->addAction(tr("&Preferences..."), this, &MainWindow::showPreferences);
   prefs->setMenuRole(QAction::PreferencesRole);
@@ -916,6 +920,28 @@ void MainWindow::chooseModelToImport() {
   auto stored = workspace_->importModel(path.toStdString(), name.trimmed().toStdString());
   if (!stored) return showError(QString::fromStdString(stored.errorText()));
   showMessage(tr("Model '%1' stored from %2").arg(QString::fromStdString(stored.value()), path));
+}
+
+}  // namespace tactile::gui
+
+namespace tactile::gui {
+
+SimWindow* MainWindow::openSimulator(const QString& scene) {
+  // One simulator window on the open database (or an in-memory one without a database); it
+  // has its own connection, so it lives on if this window opens another database.
+  auto* window = new SimWindow(dbPath_, this);  // a window of its own, deleted with this one
+  window->setAttribute(Qt::WA_DeleteOnClose);
+  if (!scene.isEmpty()) window->setScene(scene);
+  connect(window, &SimWindow::openRunRequested, this, [this](const QString& name) {
+    if (workspace_) (void)runModel_->reload(workspace_.get(), labels_->setId());
+    const Status opened = openRun(name);
+    if (!opened) showError(QString::fromStdString(opened.errorText()));
+    show();
+    raise();
+    activateWindow();
+  });
+  window->show();
+  return window;
 }
 
 }  // namespace tactile::gui

@@ -35,6 +35,7 @@ class RunListModel;
 class RunListView;
 class RunSession;
 class PredictionModel;
+class SimWindow;
 class StepControlsView;
 class SweepResultsWindow;
 class TrainingDialog;
@@ -81,6 +82,10 @@ class MainWindow : public QMainWindow {
   void waitForPredictions();
   // N / Shift+N: the cursor to the next / previous step where the model disagrees with a label.
   void jumpToDisagreement(bool forward);
+
+  // Opens a simulator window on this window's database (scene: a built-in name or a file; empty:
+  // the practice scene); "Open in Workbench" there opens the run here.
+  SimWindow* openSimulator(const QString& scene = {});
 
   // Saves window and view settings now (also done on close, and shortly after any of them
   // changes, so a killed session keeps them).

@@ -48,6 +48,8 @@ std::vector<ShortcutEntry> shortcutTable() {
        standard(QKeySequence::Open, Qt::CTRL | Qt::Key_O), false},
       {QStringLiteral("importRuns"), file, Shortcuts::tr("Import run files"),
        keys({Qt::CTRL | Qt::Key_I}), false},
+      {QStringLiteral("newSimulation"), file, Shortcuts::tr("New simulation window"),
+       keys({Qt::CTRL | Qt::SHIFT | Qt::Key_N}), false},
       {QStringLiteral("preferences"), file, Shortcuts::tr("Preferences"),
        keys({Qt::CTRL | Qt::Key_Comma}), false},
       {QStringLiteral("quit"), file, Shortcuts::tr("Quit"),

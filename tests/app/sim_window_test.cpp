@@ -1,0 +1,402 @@
+// The simulator window: the key table gives the documented commands, M switches the picture
+// (never to the scene in experiment mode), the collision light turns red on a blocked step, Give
+// Up records `gave-up`, a run driven in the window equals `tactile simulate` replaying its
+// commands, and a window killed mid-run leaves the steps so far in the database.
+#include <QLabel>
+#include <QMessageBox>
+#include <QProcess>
+#include <QPushButton>
+#include <QSignalSpy>
+#include <QTemporaryDir>
+#include <QtTest>
+
+#include <signal.h>
+
+#include <chrono>
+#include <thread>
+
+#include "app/gui/runs/run_session_model.h"
+#include "app/gui/sim/drive_keys.h"
+#include "app/gui/sim/experiment_panel.h"
+#include "app/gui/sim/sim_window.h"
+#include "app/gui/sim/status_picture_view.h"
+#include "run/run_csv.h"
+#include "sim/recorder.h"
+#include "sim/scene_source.h"
+#include "sim/simulator.h"
+#include "sim/start_goal.h"
+#include "sim/world.h"
+#include "tests/run_compare.h"
+#include "workspace/workspace.h"
+
+using namespace tactile;
+using tactile::gui::SimMode;
+using tactile::gui::SimWindow;
+
+namespace {
+
+std::unique_ptr<workspace::Workspace> openWorkspace(const QString& path) {
+  auto opened = workspace::Workspace::open(path.toStdString());
+  if (!opened) qFatal("%s", opened.errorText().c_str());
+  return std::move(opened.value());
+}
+
+// A run file whose only use is its commands: `steps` steps of (v, omega), sensors zero.
+void writeCommandFile(const QString& path, std::size_t steps, double v, double omega) {
+  RunData run;
+  run.metadata = {{"format", "tactile-run 1"}};
+  const std::array<double, kValuesPerStep> zeros{};
+  for (std::size_t k = 0; k < steps; ++k)
+    run.appendStep(0, 0, 0, v, omega, false, zeros.data(), nullptr);
+  const Status written = writeRunCsv(run, path.toStdString());
+  if (!written) qFatal("%s", written.errorText().c_str());
+}
+
+}  // namespace
+
+class SimWindowTest : public QObject {
+  Q_OBJECT
+
+ private slots:
+  void initTestCase() { QLocale::setDefault(QLocale::c()); }
+
+  void keysGiveTheDocumentedCommands() {
+    QTemporaryDir dir;
+    SimWindow window(dir.filePath(QStringLiteral("k.db")));
+    window.setStepsPerSecond(1);  // the clock stays out of the way
+    QVERIFY(window.startRun().ok());
+    gui::SimSession* s = window.session();
+    QVERIFY(s->isPaused());
+    // From (20, 0.1): every key's documented effect.
+    struct Case {
+      int key;
+      double v;
+      double omega;
+    };
+    const Case cases[] = {
+        {Qt::Key_Up, 40, 0.1}, {Qt::Key_Down, 0, 0.1},  {Qt::Key_W, 25, 0.1},
+        {Qt::Key_S, 15, 0.1},  {Qt::Key_Left, 20, 0.3}, {Qt::Key_Right, 20, -0.1},
+        {Qt::Key_A, 20, 0.15}, {Qt::Key_D, 20, 0.05},   {Qt::Key_Space, 0, 0},
+    };
+    for (const Case& c : cases) {
+      s->setCommand({20, 0.1});
+      const std::size_t before = s->stepCount();
+      QTest::keyClick(&window, static_cast<Qt::Key>(c.key));
+      QCOMPARE(s->command().v, c.v);
+      QCOMPARE(s->command().omega, c.omega);
+      // The key moved the robot at once (one step taken before the key event returned), and
+      // the table agrees.
+      QCOMPARE(s->stepCount(), before + 1);
+      const gui::SimKey* k = gui::simKeyFor(c.key);
+      QVERIFY(k != nullptr);
+      const sim::Command fromTable = gui::applyDriveAction(k->action, {20, 0.1});
+      QCOMPARE(fromTable.v, c.v);
+      QCOMPARE(fromTable.omega, c.omega);
+    }
+    QVERIFY(!s->isPaused());  // the first drive key started the clock
+    // Limits, and small steps that add back up to exactly zero.
+    s->setCommand({0, 0});
+    for (int i = 0; i < 10; ++i)
+      QTest::keyClick(&window, Qt::Key_Up);
+    QCOMPARE(s->command().v, gui::kMaxDriveSpeed);
+    for (int i = 0; i < 4; ++i)
+      QTest::keyClick(&window, Qt::Key_A);
+    QTest::keyClick(&window, Qt::Key_Right);
+    QCOMPARE(s->command().omega, 0.0);
+    // The command label shows it.
+    QVERIFY2(window.commandText().contains(QStringLiteral("120")),
+             qPrintable(window.commandText()));
+    // Every key of the table does something the window knows.
+    for (const gui::SimKey& k : gui::simKeys())
+      QVERIFY(window.handleKey(k.key));
+    QVERIFY(!window.handleKey(Qt::Key_F7));
+  }
+
+  void pauseAndStepKeys() {
+    QTemporaryDir dir;
+    SimWindow window(dir.filePath(QStringLiteral("p.db")));
+    window.setStepsPerSecond(1);
+    QVERIFY(window.startRun().ok());
+    gui::SimSession* s = window.session();
+    QTest::keyClick(&window, Qt::Key_W);  // starts the clock
+    QVERIFY(!s->isPaused());
+    QTest::keyClick(&window, Qt::Key_P);
+    QVERIFY(s->isPaused());
+    const std::size_t before = s->stepCount();
+    QTest::keyClick(&window, Qt::Key_Period);
+    QTest::keyClick(&window, Qt::Key_N);
+    QCOMPARE(s->stepCount(), before + 2);
+    QTest::keyClick(&window, Qt::Key_P);
+    QVERIFY(!s->isPaused());
+  }
+
+  void mTogglesTheViewExceptInExperimentMode() {
+    QTemporaryDir dir;
+    SimWindow window(dir.filePath(QStringLiteral("m.db")));
+    QVERIFY(window.startRun().ok());
+    QVERIFY(!window.picture()->wholeScene());
+    QTest::keyClick(&window, Qt::Key_M);
+    QVERIFY(window.picture()->wholeScene());
+    QTest::keyClick(&window, Qt::Key_M);
+    QVERIFY(!window.picture()->wholeScene());
+    // Practice in whole-scene view, then an experiment: the scene is hidden and stays hidden.
+    QTest::keyClick(&window, Qt::Key_M);
+    QVERIFY(window.picture()->wholeScene());
+    window.setMode(SimMode::Experiment);
+    window.setSubject(QStringLiteral("Ada"));
+    window.setScene(QStringLiteral("room1"));
+    QVERIFY(window.startRun().ok());
+    QVERIFY(!window.picture()->wholeScene());
+    QTest::keyClick(&window, Qt::Key_M);
+    QVERIFY(!window.picture()->wholeScene());
+    QVERIFY(!window.picture()->setWholeScene(true));
+  }
+
+  void collisionLightTurnsRedOnABlockedStep() {
+    QTemporaryDir dir;
+    SimWindow window(dir.filePath(QStringLiteral("c.db")));
+    window.setStepsPerSecond(1);
+    QVERIFY(window.startRun().ok());
+    QCOMPARE(window.light(), SimWindow::Light::Idle);
+    for (int i = 0; i < 4; ++i)
+      QTest::keyClick(&window, Qt::Key_Up);  // 80 units/s straight ahead
+    QCOMPARE(window.light(), SimWindow::Light::Moving);
+    auto* light = window.findChild<QLabel*>(QStringLiteral("collisionLight"));
+    QVERIFY(light != nullptr);
+    QVERIFY(light->styleSheet().contains(QStringLiteral("#20a040")));
+    window.session()->setPaused(true);
+    // Straight on until a step is blocked (the practice box or a wall).
+    int steps = 0;
+    while (!window.session()->simulator()->blocked() && steps < 3000) {
+      window.session()->stepOnce();
+      ++steps;
+    }
+    QVERIFY2(window.session()->simulator()->blocked(), "never blocked");
+    QCOMPARE(window.light(), SimWindow::Light::Blocked);
+    QVERIFY(light->styleSheet().contains(QStringLiteral("#d62020")));
+    // Backing off frees it again.
+    window.session()->setCommand({-40, 0});
+    window.session()->stepOnce();
+    window.session()->stepOnce();
+    QCOMPARE(window.light(), SimWindow::Light::Moving);
+  }
+
+  void giveUpRecordsGaveUpAndTheSubject() {
+    QTemporaryDir dir;
+    const QString db = dir.filePath(QStringLiteral("g.db"));
+    {
+      SimWindow window(db);
+      window.setStepsPerSecond(1);
+      window.setMode(SimMode::Experiment);
+      window.setScene(QStringLiteral("room1"));
+      QVERIFY(!window.startRun().ok());  // no subject yet
+      window.setSubject(QStringLiteral("Ada Lovelace"));
+      window.setSeed(5);
+      window.setTimeLimitSeconds(120);
+      QVERIFY(window.startRun().ok());
+      QTest::keyClick(&window, Qt::Key_Up);
+      window.session()->setPaused(true);
+      window.session()->advance(30);
+      auto* giveUp = window.findChild<QPushButton*>(QStringLiteral("giveUpButton"));
+      QVERIFY(giveUp != nullptr && giveUp->isEnabled());
+      QSignalSpy ended(window.session(), &gui::SimSession::runEnded);
+      QTest::mouseClick(giveUp, Qt::LeftButton);
+      QCOMPARE(ended.count(), 1);
+      QVERIFY(!giveUp->isEnabled());
+    }
+    auto ws = openWorkspace(db);
+    auto runs = ws->database().listRuns();
+    QVERIFY(runs.ok());
+    QCOMPARE(runs->size(), std::size_t{1});
+    const storage::RunInfo& info = runs->front();
+    QCOMPARE(info.outcome, std::string("gave-up"));
+    QCOMPARE(info.subject, std::string("Ada Lovelace"));
+    QCOMPARE(info.stepCount, std::int64_t{31});
+    auto run = ws->loadRun(info.name);
+    QVERIFY(run.ok());
+    QCOMPARE(*run->meta("mode"), std::string("experiment"));
+    QCOMPARE(*run->meta("seed"), std::string("5"));
+    QCOMPARE(*run->meta("time_limit"), std::string("120"));
+    QCOMPARE(*run->meta("outcome"), std::string("gave-up"));
+    // Start and goal are the ones drawn from seed 5, not the scene's.
+    auto scene = sim::loadScene("room1");
+    auto drawn = sim::drawStartGoal(scene.value(), 5);
+    QCOMPARE(run->start()->x, drawn->start.x);
+    QCOMPARE(run->goal()->first, drawn->goal.x());
+    QVERIFY(run->start()->x != scene->start.x);
+  }
+
+  void timeLimitEndsTheRunWithTimeout() {
+    QTemporaryDir dir;
+    SimWindow window(dir.filePath(QStringLiteral("t.db")));
+    window.setMode(SimMode::Experiment);
+    window.setSubject(QStringLiteral("Bo"));
+    window.setScene(QStringLiteral("room2"));
+    window.setTimeLimitSeconds(10);  // 100 steps of 0.1 s
+    QVERIFY(window.startRun().ok());
+    QCOMPARE(window.session()->advance(1000), std::size_t{100});
+    QCOMPARE(window.session()->outcome(), RunOutcome::Timeout);
+    auto info = window.session()->workspace()->database().findRun(
+        window.session()->runName().toStdString());
+    QVERIFY(info.ok());
+    QCOMPARE(info->outcome, std::string("timeout"));
+    QCOMPARE(info->stepCount, std::int64_t{100});
+  }
+
+  void recordedRunEqualsSimulateReplay() {
+    QTemporaryDir dir;
+    const QString db = dir.filePath(QStringLiteral("r.db"));
+    QString name;
+    {
+      SimWindow window(db);
+      window.setStepsPerSecond(1);
+      window.setMode(SimMode::Experiment);
+      window.setSubject(QStringLiteral("Cy"));
+      window.setSeed(9);
+      window.setScene(QStringLiteral("room3"));
+      QVERIFY(window.startRun().ok());
+      window.setDataPanelShown(true);
+      gui::SimSession* s = window.session();
+      s->setPaused(true);
+      // A drive with turns and contacts: keys change the command, steps in between.
+      const int keys[] = {Qt::Key_Up, Qt::Key_Up,    Qt::Key_Up,    Qt::Key_A,    Qt::Key_Left,
+                          Qt::Key_D,  Qt::Key_W,     Qt::Key_Right, Qt::Key_Down, Qt::Key_Up,
+                          Qt::Key_Up, Qt::Key_Space, Qt::Key_Down,  Qt::Key_Left};
+      for (int key : keys) {
+        s->setCommand(gui::applyDriveAction(gui::simKeyFor(key)->action, s->command()));
+        for (int i = 0; i < 60; ++i)
+          s->stepOnce();
+      }
+      name = s->runName();
+      // The data panel follows the run.
+      window.refreshDataPanel();
+      QCOMPARE(window.dataSession()->stepCount(), static_cast<std::int64_t>(s->storedSteps()));
+      window.giveUp();
+    }
+    auto ws = openWorkspace(db);
+    auto recorded = ws->loadRun(name.toStdString());
+    QVERIFY(recorded.ok());
+    QCOMPARE(recorded->stepCount(), std::size_t{14 * 60});
+    const QString exported = dir.filePath(QStringLiteral("recorded.csv"));
+    auto info = ws->database().findRun(name.toStdString());
+    QVERIFY(ws->database().exportRun(info->id, exported.toStdString()).ok());
+    const QString replayed = dir.filePath(QStringLiteral("replayed.csv"));
+    QProcess cli;
+    cli.start(QStringLiteral(TACTILE_CLI),
+              {QStringLiteral("simulate"), QStringLiteral("--scene"), QStringLiteral("room3"),
+               QStringLiteral("--commands"), exported, QStringLiteral("--out"), replayed});
+    QVERIFY(cli.waitForFinished(60000));
+    QVERIFY2(cli.exitCode() == 0, cli.readAllStandardError().constData());
+    auto replay = readRunCsv(replayed.toStdString());
+    QVERIFY2(replay.ok(), replay.ok() ? "" : replay.errorText().c_str());
+    QCOMPARE(replay->stepCount(), recorded->stepCount());
+    QVERIFY(test_support::bitEqual(replay->x, recorded->x));
+    QVERIFY(test_support::bitEqual(replay->y, recorded->y));
+    QVERIFY(test_support::bitEqual(replay->theta, recorded->theta));
+    QVERIFY(test_support::bitEqual(replay->v, recorded->v));
+    QVERIFY(test_support::bitEqual(replay->omega, recorded->omega));
+    QVERIFY(test_support::bitEqual(replay->sensors, recorded->sensors));
+    QVERIFY(replay->blocked == recorded->blocked);
+    QVERIFY(replay->truth == recorded->truth);
+    QCOMPARE(*replay->meta("start"), *recorded->meta("start"));
+    // The drive touched something, so the comparison covers contact values and blocked steps.
+    QVERIFY(std::count(recorded->blocked.begin(), recorded->blocked.end(), 1) > 0);
+  }
+
+  void killedWindowKeepsTheStepsSoFar() {
+    QTemporaryDir dir;
+    const QString db = dir.filePath(QStringLiteral("kill.db"));
+    const QString commands = dir.filePath(QStringLiteral("commands.csv"));
+    writeCommandFile(commands, 20000, 30, 0.25);
+    { auto ws = openWorkspace(db); }  // the database exists before the window opens it
+    QProcess child;
+    QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
+    env.insert(QStringLiteral("QT_QPA_PLATFORM"), QStringLiteral("offscreen"));
+    env.insert(QStringLiteral("HOME"), dir.path());  // its own settings
+    env.insert(QStringLiteral("XDG_CONFIG_HOME"), dir.filePath(QStringLiteral("config")));
+    child.setProcessEnvironment(env);
+    child.start(
+        QStringLiteral(TACTILE_WORKBENCH),
+        {QStringLiteral("--db"), db, QStringLiteral("--simulate"), QStringLiteral("practice"),
+         QStringLiteral("--commands"), commands, QStringLiteral("--rate"), QStringLiteral("100")});
+    QVERIFY(child.waitForStarted(10000));
+    auto ws = openWorkspace(db);
+    std::int64_t seen = 0;
+    for (int i = 0; i < 300 && seen < 60; ++i) {
+      std::this_thread::sleep_for(std::chrono::milliseconds(100));
+      auto runs = ws->database().listRuns();
+      if (runs.ok() && !runs->empty()) seen = runs->front().stepCount;
+    }
+    QVERIFY2(seen >= 60, "the window stored no steps");
+    QCOMPARE(::kill(static_cast<pid_t>(child.processId()), SIGKILL), 0);
+    QVERIFY(child.waitForFinished(10000));
+    QCOMPARE(child.exitStatus(), QProcess::CrashExit);
+
+    auto runs = ws->database().listRuns();
+    QVERIFY(runs.ok());
+    QCOMPARE(runs->size(), std::size_t{1});
+    const storage::RunInfo info = runs->front();
+    QVERIFY(info.stepCount >= seen);
+    QVERIFY(info.stepCount < 20000);  // killed mid-run
+    QCOMPARE(info.outcome, std::string("unknown"));
+    auto kept = ws->loadRun(info.name);
+    QVERIFY(kept.ok());
+    QCOMPARE(static_cast<std::int64_t>(kept->stepCount()), info.stepCount);
+    QVERIFY(ws->database().check().ok);
+    // The steps kept are the steps the simulator took: the same commands stepped here.
+    auto scene = sim::loadScene("practice");
+    sim::RunOptions options;
+    options.maxSteps = sim::kMaxStepsPerRun;
+    auto loop = sim::RunLoop::start(std::make_shared<const sim::World>(scene.value()), "practice",
+                                    "x", options);
+    for (std::size_t k = 0; k < kept->stepCount(); ++k)
+      loop.value()->step(sim::Command{30, 0.25});
+    const RunData& again = loop.value()->recorder().run();
+    QVERIFY(test_support::bitEqual(again.x, kept->x));
+    QVERIFY(test_support::bitEqual(again.sensors, kept->sensors));
+  }
+
+  void autonomousModeTheNavigatorDrivesWithItsPanelLive() {
+    QTemporaryDir dir;
+    SimWindow window(dir.filePath(QStringLiteral("a.db")));
+    window.setMode(SimMode::Autonomous);
+    window.setScene(QStringLiteral("chapter5"));
+    window.setNavigatorModel(QString());  // the Bug2 bumper baseline needs no model
+    QVERIFY(window.navigatorModels().contains(QString()));
+    QVERIFY(window.startRun().ok());
+    gui::SimSession* s = window.session();
+    QCOMPARE(window.experimentPanel()->markedStrategyRow(), -1);  // nothing before a step
+    const double x0 = s->simulator()->pose().x;
+    QCOMPARE(s->advance(200), std::size_t{200});
+    QVERIFY(s->simulator()->pose().x != x0);
+    const int row = window.experimentPanel()->markedStrategyRow();
+    QVERIFY(row >= 0 && row < 7);
+    QVERIFY(window.experimentPanel()->statusText(0) != QStringLiteral("-"));
+    // The recorded commands are the navigator's; drive keys do not touch them.
+    const sim::Command before = s->command();
+    QTest::keyClick(&window, Qt::Key_Up);
+    QCOMPARE(s->command().v, before.v);
+    QCOMPARE(s->stepCount(), std::size_t{200});
+    const RunData* run = s->run();
+    QCOMPARE(run->v.back(), before.v);
+    QCOMPARE(*run->meta("mode"), std::string("autonomous"));
+    window.giveUp();
+  }
+
+  void briefingAndKeysHelpListTheTable() {
+    SimWindow window(QString{});
+    QVERIFY(window.startRun().ok());  // in memory: runs are not stored but the window works
+    QVERIFY(window.session()->runName().startsWith(QStringLiteral("practice")));
+    QTimer::singleShot(200, [&] {
+      auto* box = window.findChild<QMessageBox*>(QStringLiteral("keysHelp"));
+      QVERIFY(box != nullptr);
+      for (const gui::SimKey& k : gui::simKeys())
+        QVERIFY2(box->text().contains(gui::simKeyDescription(k).toHtmlEscaped()), k.keyText);
+      box->accept();
+    });
+    window.showKeys();
+  }
+};
+
+QTEST_MAIN(SimWindowTest)
+#include "sim_window_test.moc"
