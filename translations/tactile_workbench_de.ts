@@ -183,58 +183,58 @@
     </message>
     <message>
         <source>New simulation window</source>
-        <translation type="unfinished"></translation>
+        <translation>Neues Simulatorfenster</translation>
     </message>
 </context>
 <context>
     <name>SimKeys</name>
     <message>
         <source>Faster forward by a large step (+20 units/s)</source>
-        <translation type="unfinished"></translation>
+        <translation>Vorwärts schneller, großer Schritt (+20 Einheiten/s)</translation>
     </message>
     <message>
         <source>Slower (or backward) by a large step (-20 units/s)</source>
-        <translation type="unfinished"></translation>
+        <translation>Langsamer (oder rückwärts), großer Schritt (-20 Einheiten/s)</translation>
     </message>
     <message>
         <source>Faster forward by a small step (+5 units/s)</source>
-        <translation type="unfinished"></translation>
+        <translation>Vorwärts schneller, kleiner Schritt (+5 Einheiten/s)</translation>
     </message>
     <message>
         <source>Slower (or backward) by a small step (-5 units/s)</source>
-        <translation type="unfinished"></translation>
+        <translation>Langsamer (oder rückwärts), kleiner Schritt (-5 Einheiten/s)</translation>
     </message>
     <message>
         <source>Turn left by a large step (+0.2 rad/s)</source>
-        <translation type="unfinished"></translation>
+        <translation>Nach links drehen, großer Schritt (+0.2 rad/s)</translation>
     </message>
     <message>
         <source>Turn right by a large step (-0.2 rad/s)</source>
-        <translation type="unfinished"></translation>
+        <translation>Nach rechts drehen, großer Schritt (-0.2 rad/s)</translation>
     </message>
     <message>
         <source>Turn left by a small step (+0.05 rad/s)</source>
-        <translation type="unfinished"></translation>
+        <translation>Nach links drehen, kleiner Schritt (+0.05 rad/s)</translation>
     </message>
     <message>
         <source>Turn right by a small step (-0.05 rad/s)</source>
-        <translation type="unfinished"></translation>
+        <translation>Nach rechts drehen, kleiner Schritt (-0.05 rad/s)</translation>
     </message>
     <message>
         <source>Stop (v = 0, omega = 0)</source>
-        <translation type="unfinished"></translation>
+        <translation>Anhalten (v = 0, omega = 0)</translation>
     </message>
     <message>
         <source>Robot close-up / whole scene (close-up only in experiment mode)</source>
-        <translation type="unfinished"></translation>
+        <translation>Roboter-Nahansicht / ganze Szene (im Experimentmodus nur Nahansicht)</translation>
     </message>
     <message>
         <source>Pause / go on</source>
-        <translation type="unfinished"></translation>
+        <translation>Pause / weiter</translation>
     </message>
     <message>
         <source>One step (while paused)</source>
-        <translation type="unfinished"></translation>
+        <translation>Ein Schritt (während der Pause)</translation>
     </message>
 </context>
 <context>
@@ -293,62 +293,62 @@
     </message>
     <message>
         <source>Open the simulator window on SCENE (a built-in scene, a scene JSON file or random:N:SEED); runs go into --db (or the last database).</source>
-        <translation type="unfinished"></translation>
+        <translation>Das Simulatorfenster mit der Szene SCENE öffnen (eine eingebaute Szene, eine Szenen-JSON-Datei oder random:N:SEED); Läufe gehen in --db (oder die zuletzt benutzte Datenbank).</translation>
     </message>
     <message>
         <source>With --simulate: practice (default), experiment or autonomous.</source>
-        <translation type="unfinished"></translation>
+        <translation>Mit --simulate: practice (Übung, Vorgabe), experiment (Experiment) oder autonomous (autonom).</translation>
     </message>
     <message>
         <source>With --simulate: the subject&apos;s name.</source>
-        <translation type="unfinished"></translation>
+        <translation>Mit --simulate: der Name des Probanden.</translation>
     </message>
     <message>
         <source>With --simulate --mode experiment: the seed of start and goal.</source>
-        <translation type="unfinished"></translation>
+        <translation>Mit --simulate --mode experiment: der Seed für Start und Ziel.</translation>
     </message>
     <message>
         <source>With --simulate: start a run and replay the v, omega commands of the run file FILE, one a step.</source>
-        <translation type="unfinished"></translation>
+        <translation>Mit --simulate: einen Lauf starten und die Befehle v, omega der Laufdatei FILE abspielen, einen je Schritt.</translation>
     </message>
     <message>
         <source>With --simulate: steps per second (default 10; 0 as fast as possible).</source>
-        <translation type="unfinished"></translation>
+        <translation>Mit --simulate: Schritte pro Sekunde (Vorgabe 10; 0 so schnell wie möglich).</translation>
     </message>
     <message>
         <source>With --simulate: show the data panel.</source>
-        <translation type="unfinished"></translation>
+        <translation>Mit --simulate: den Datenbereich anzeigen.</translation>
     </message>
     <message>
         <source>With --simulate: show the whole scene where allowed.</source>
-        <translation type="unfinished"></translation>
+        <translation>Mit --simulate: die ganze Szene zeigen, wo erlaubt.</translation>
     </message>
     <message>
         <source>no stored model named &apos;%1&apos;</source>
-        <translation type="unfinished"></translation>
+        <translation>kein gespeichertes Modell namens „%1“</translation>
     </message>
     <message>
         <source>--mode must be practice, experiment or autonomous, got &apos;%1&apos;</source>
-        <translation type="unfinished"></translation>
+        <translation>--mode muss practice, experiment oder autonomous sein, erhalten: „%1“</translation>
     </message>
     <message>
         <source>--seed needs a positive number, got &apos;%1&apos;</source>
-        <translation type="unfinished"></translation>
+        <translation>--seed braucht eine positive Zahl, erhalten: „%1“</translation>
     </message>
     <message>
         <source>--rate needs a number &gt;= 0, got &apos;%1&apos;</source>
-        <translation type="unfinished"></translation>
+        <translation>--rate braucht eine Zahl &gt;= 0, erhalten: „%1“</translation>
     </message>
 </context>
 <context>
     <name>tactile::gui::ExperimentPanel</name>
     <message>
         <source>Status</source>
-        <translation type="unfinished">Status</translation>
+        <translation>Status</translation>
     </message>
     <message>
         <source>Strategies</source>
-        <translation type="unfinished"></translation>
+        <translation>Strategien</translation>
     </message>
 </context>
 <context>
@@ -1038,7 +1038,7 @@ Forschungsumgebung für die taktile Navigation mobiler Roboter.</translation>
     </message>
     <message>
         <source>New &amp;Simulation...</source>
-        <translation type="unfinished"></translation>
+        <translation>Neue &amp;Simulation...</translation>
     </message>
 </context>
 <context>
@@ -1220,333 +1220,337 @@ importiert aus %2</translation>
     <name>tactile::gui::SimSession</name>
     <message>
         <source>An experiment run needs the subject&apos;s name.</source>
-        <translation type="unfinished"></translation>
+        <translation>Ein Experimentlauf braucht den Namen des Probanden.</translation>
     </message>
     <message>
         <source>A subject&apos;s name must be one line.</source>
-        <translation type="unfinished"></translation>
+        <translation>Der Name eines Probanden muss einzeilig sein.</translation>
     </message>
     <message>
         <source>Autonomous mode needs a driver.</source>
-        <translation type="unfinished"></translation>
+        <translation>Der autonome Modus braucht einen Fahrer.</translation>
     </message>
     <message>
         <source>The step length must be in (0, 1] seconds.</source>
-        <translation type="unfinished"></translation>
+        <translation>Die Schrittlänge muss in (0, 1] Sekunden liegen.</translation>
     </message>
     <message>
         <source>The time limit must be positive.</source>
-        <translation type="unfinished"></translation>
+        <translation>Das Zeitlimit muss positiv sein.</translation>
     </message>
 </context>
 <context>
     <name>tactile::gui::SimWindow</name>
     <message>
         <source>Run %1 ended: %2</source>
-        <translation type="unfinished"></translation>
+        <translation>Lauf %1 beendet: %2</translation>
     </message>
     <message>
         <source>Tactile Simulator</source>
-        <translation type="unfinished"></translation>
+        <translation>Taktiler Simulator</translation>
     </message>
     <message>
         <source>Practice</source>
-        <translation type="unfinished"></translation>
+        <translation>Übung</translation>
     </message>
     <message>
         <source>Experiment</source>
-        <translation type="unfinished"></translation>
+        <translation>Experiment</translation>
     </message>
     <message>
         <source>Autonomous</source>
-        <translation type="unfinished"></translation>
+        <translation>Autonom</translation>
     </message>
     <message>
         <source>needed in experiment mode</source>
-        <translation type="unfinished"></translation>
+        <translation>im Experimentmodus nötig</translation>
     </message>
     <message>
         <source> s</source>
-        <translation type="unfinished"></translation>
+        <translation> s</translation>
     </message>
     <message>
         <source>as fast as possible</source>
-        <translation type="unfinished"></translation>
+        <translation>so schnell wie möglich</translation>
     </message>
     <message>
         <source> steps/s</source>
-        <translation type="unfinished"></translation>
+        <translation> Schritte/s</translation>
     </message>
     <message>
         <source>Run</source>
-        <translation type="unfinished">Lauf</translation>
+        <translation>Lauf</translation>
     </message>
     <message>
         <source>Mode</source>
-        <translation type="unfinished"></translation>
+        <translation>Modus</translation>
     </message>
     <message>
         <source>Scene</source>
-        <translation type="unfinished">Szene</translation>
+        <translation>Szene</translation>
     </message>
     <message>
         <source>Subject</source>
-        <translation type="unfinished">Proband</translation>
+        <translation>Proband</translation>
     </message>
     <message>
         <source>Seed (start, goal)</source>
-        <translation type="unfinished"></translation>
+        <translation>Seed (Start, Ziel)</translation>
     </message>
     <message>
         <source>Time limit</source>
-        <translation type="unfinished"></translation>
+        <translation>Zeitlimit</translation>
     </message>
     <message>
         <source>Step rate</source>
-        <translation type="unfinished"></translation>
+        <translation>Schrittrate</translation>
     </message>
     <message>
         <source>Navigator model</source>
-        <translation type="unfinished"></translation>
+        <translation>Navigator-Modell</translation>
     </message>
     <message>
         <source>Start New Run</source>
-        <translation type="unfinished"></translation>
+        <translation>Neuen Lauf starten</translation>
     </message>
     <message>
         <source>Go</source>
-        <translation type="unfinished">Gehe zu</translation>
+        <translation>Los</translation>
     </message>
     <message>
         <source>Step</source>
-        <translation type="unfinished">Schritt</translation>
+        <translation>Schritt</translation>
     </message>
     <message>
         <source>Give Up</source>
-        <translation type="unfinished"></translation>
+        <translation>Aufgeben</translation>
     </message>
     <message>
         <source>Data &gt;&gt;</source>
-        <translation type="unfinished"></translation>
+        <translation>Daten &gt;&gt;</translation>
     </message>
     <message>
         <source>Open in Workbench</source>
-        <translation type="unfinished"></translation>
+        <translation>In der Workbench öffnen</translation>
     </message>
     <message>
         <source>Signal per group</source>
-        <translation type="unfinished"></translation>
+        <translation>Signal je Gruppe</translation>
     </message>
     <message>
         <source>Experiment panel</source>
-        <translation type="unfinished"></translation>
+        <translation>Experimentbereich</translation>
     </message>
     <message>
         <source>The run so far</source>
-        <translation type="unfinished"></translation>
+        <translation>Der bisherige Lauf</translation>
     </message>
     <message>
         <source>Bug2 bumper (no model)</source>
-        <translation type="unfinished"></translation>
+        <translation>Bug2 mit Stoßfänger (kein Modell)</translation>
     </message>
     <message>
         <source>&amp;File</source>
-        <translation type="unfinished">&amp;Datei</translation>
+        <translation>&amp;Datei</translation>
     </message>
     <message>
         <source>Built-in &amp;Scenes</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Eingebaute Szenen</translation>
     </message>
     <message>
         <source>Open Scene &amp;File...</source>
-        <translation type="unfinished"></translation>
+        <translation>Szenen&amp;datei öffnen...</translation>
     </message>
     <message>
         <source>Open Run in &amp;Workbench</source>
-        <translation type="unfinished"></translation>
+        <translation>Lauf in der &amp;Workbench öffnen</translation>
     </message>
     <message>
         <source>Save Run as &amp;CSV...</source>
-        <translation type="unfinished"></translation>
+        <translation>Lauf als &amp;CSV speichern...</translation>
     </message>
     <message>
         <source>&amp;Close</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Schließen</translation>
     </message>
     <message>
         <source>&amp;Run</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Lauf</translation>
     </message>
     <message>
         <source>Start &amp;New Run</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Neuen Lauf starten</translation>
     </message>
     <message>
         <source>&amp;Go / Pause (P)</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Los / Pause (P)</translation>
     </message>
     <message>
         <source>&amp;Step (N)</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Schritt (N)</translation>
     </message>
     <message>
         <source>&amp;Give Up</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Aufgeben</translation>
     </message>
     <message>
         <source>&amp;View</source>
-        <translation type="unfinished">&amp;Ansicht</translation>
+        <translation>&amp;Ansicht</translation>
     </message>
     <message>
         <source>Robot Close-up / Whole Scene (M)</source>
-        <translation type="unfinished"></translation>
+        <translation>Roboter-Nahansicht / ganze Szene (M)</translation>
     </message>
     <message>
         <source>&amp;Data Panel</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Datenbereich</translation>
     </message>
     <message>
         <source>&amp;Help</source>
-        <translation type="unfinished">&amp;Hilfe</translation>
+        <translation>&amp;Hilfe</translation>
     </message>
     <message>
         <source>&amp;Briefing: Bug1 and Bug2</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Einweisung: Bug1 und Bug2</translation>
     </message>
     <message>
         <source>&amp;Keys</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Tasten</translation>
     </message>
     <message>
         <source>Scene %1: press Start New Run</source>
-        <translation type="unfinished"></translation>
+        <translation>Szene %1: „Neuen Lauf starten“ drücken</translation>
     </message>
     <message>
         <source>Run %1 ready: drive with the arrow keys and W, A, S, D (Help &gt; Keys)</source>
-        <translation type="unfinished"></translation>
+        <translation>Lauf %1 bereit: mit den Pfeiltasten und W, A, S, D fahren (Hilfe &gt; Tasten)</translation>
     </message>
     <message>
         <source>(not stored)</source>
-        <translation type="unfinished"></translation>
+        <translation>(nicht gespeichert)</translation>
     </message>
     <message>
         <source>The scene stays hidden in experiment mode</source>
-        <translation type="unfinished"></translation>
+        <translation>Im Experimentmodus bleibt die Szene verborgen</translation>
     </message>
     <message>
         <source>v %1 units/s   ω %2 rad/s</source>
-        <translation type="unfinished"></translation>
+        <translation>v %1 Einheiten/s   ω %2 rad/s</translation>
     </message>
     <message>
         <source>Blocked: the last step was stopped</source>
-        <translation type="unfinished"></translation>
+        <translation>Blockiert: der letzte Schritt wurde gestoppt</translation>
     </message>
     <message>
         <source>Moving freely</source>
-        <translation type="unfinished"></translation>
+        <translation>Freie Fahrt</translation>
     </message>
     <message>
         <source>No step yet</source>
-        <translation type="unfinished"></translation>
+        <translation>Noch kein Schritt</translation>
     </message>
     <message>
         <source>No run yet.</source>
-        <translation type="unfinished"></translation>
+        <translation>Noch kein Lauf.</translation>
     </message>
     <message>
         <source>%1 mode, scene %2, step %3 (%4 s)</source>
-        <translation type="unfinished"></translation>
+        <translation>Modus %1, Szene %2, Schritt %3 (%4 s)</translation>
     </message>
     <message>
         <source>, %1 s left</source>
-        <translation type="unfinished"></translation>
+        <translation>, noch %1 s</translation>
     </message>
     <message>
         <source>
 run %1, %2 steps stored</source>
-        <translation type="unfinished"></translation>
+        <translation>
+Lauf %1, %2 Schritte gespeichert</translation>
     </message>
     <message>
         <source>
 not stored (no database)</source>
-        <translation type="unfinished"></translation>
+        <translation>
+nicht gespeichert (keine Datenbank)</translation>
     </message>
     <message>
         <source>
 outcome: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>
+Ergebnis: %1</translation>
     </message>
     <message>
         <source>
 paused: a drive key or Go starts the clock</source>
-        <translation type="unfinished"></translation>
+        <translation>
+pausiert: eine Fahrtaste oder „Los“ startet die Uhr</translation>
     </message>
     <message>
         <source>Pause</source>
-        <translation type="unfinished"></translation>
+        <translation>Pause</translation>
     </message>
     <message>
         <source>Play</source>
-        <translation type="unfinished"></translation>
+        <translation>Abspielen</translation>
     </message>
     <message>
         <source>Data &lt;&lt;</source>
-        <translation type="unfinished"></translation>
+        <translation>Daten &lt;&lt;</translation>
     </message>
     <message>
         <source>Open Scene</source>
-        <translation type="unfinished"></translation>
+        <translation>Szene öffnen</translation>
     </message>
     <message>
         <source>Scenes (*.json);;All files (*)</source>
-        <translation type="unfinished"></translation>
+        <translation>Szenen (*.json);;Alle Dateien (*)</translation>
     </message>
     <message>
         <source>No steps recorded yet.</source>
-        <translation type="unfinished"></translation>
+        <translation>Noch keine Schritte aufgezeichnet.</translation>
     </message>
     <message>
         <source>Save Run</source>
-        <translation type="unfinished"></translation>
+        <translation>Lauf speichern</translation>
     </message>
     <message>
         <source>Run files (*.csv)</source>
-        <translation type="unfinished"></translation>
+        <translation>Laufdateien (*.csv)</translation>
     </message>
     <message>
         <source>Briefing: Bug1 and Bug2</source>
-        <translation type="unfinished"></translation>
+        <translation>Einweisung: Bug1 und Bug2</translation>
     </message>
     <message>
         <source>&lt;p&gt;You drive the robot by touch: the close-up shows only the robot, which domes touch something, where it heads (blue) and where the goal lies (red), with the distance. Two classic strategies for a point robot that feels its way may help:&lt;/p&gt;&lt;p&gt;&lt;b&gt;Bug1&lt;/b&gt;&lt;br&gt;1. Head for the goal.&lt;br&gt;2. When you hit an obstacle, go all the way round it, keeping contact, and remember the point where you were closest to the goal.&lt;br&gt;3. Go back to that point, leave the obstacle there and head for the goal again.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Bug2&lt;/b&gt;&lt;br&gt;1. Head for the goal along the straight line from the start to the goal (the S-G line).&lt;br&gt;2. When an obstacle is in the way, follow its edge until you meet the S-G line again, closer to the goal than where you hit it.&lt;br&gt;3. Leave the obstacle there and go on along the line.&lt;/p&gt;&lt;p&gt;The robot is not a point: it is 140 long and 80 wide, it turns about its rear axle, and it loses contact easily when it follows an edge carelessly.&lt;/p&gt;</source>
-        <translation type="unfinished"></translation>
+        <translation>&lt;p&gt;Sie steuern den Roboter nach Gefühl: Die Nahansicht zeigt nur den Roboter, welche Kuppeln etwas berühren, wohin er fährt (blau) und wo das Ziel liegt (rot), mit der Entfernung. Zwei klassische Strategien für einen punktförmigen Roboter, der sich vortastet, können helfen:&lt;/p&gt;&lt;p&gt;&lt;b&gt;Bug1&lt;/b&gt;&lt;br&gt;1. Auf das Ziel zufahren.&lt;br&gt;2. Bei einem Hindernis einmal ganz um es herumfahren, dabei den Kontakt halten, und sich den Punkt merken, an dem man dem Ziel am nächsten war.&lt;br&gt;3. Zu diesem Punkt zurückfahren, das Hindernis dort verlassen und wieder auf das Ziel zufahren.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Bug2&lt;/b&gt;&lt;br&gt;1. Auf der Geraden vom Start zum Ziel (der S-Z-Linie) auf das Ziel zufahren.&lt;br&gt;2. Steht ein Hindernis im Weg, seinem Rand folgen, bis man die S-Z-Linie wieder trifft, näher am Ziel als dort, wo man auf das Hindernis stieß.&lt;br&gt;3. Das Hindernis dort verlassen und auf der Linie weiterfahren.&lt;/p&gt;&lt;p&gt;Der Roboter ist kein Punkt: Er ist 140 lang und 80 breit, dreht sich um seine Hinterachse und verliert leicht den Kontakt, wenn er einem Rand unachtsam folgt.&lt;/p&gt;</translation>
     </message>
     <message>
         <source>Simulator Keys</source>
-        <translation type="unfinished"></translation>
+        <translation>Tasten des Simulators</translation>
     </message>
 </context>
 <context>
     <name>tactile::gui::StatusPictureView</name>
     <message>
         <source>Choose a scene and a mode, then press Start.</source>
-        <translation type="unfinished"></translation>
+        <translation>Szene und Modus wählen, dann „Neuen Lauf starten“ drücken.</translation>
     </message>
     <message>
         <source>%1 units to the goal</source>
-        <translation type="unfinished">%1 Einheiten bis zum Ziel</translation>
+        <translation>%1 Einheiten bis zum Ziel</translation>
     </message>
     <message>
         <source>Whole scene (M: robot close-up)</source>
-        <translation type="unfinished"></translation>
+        <translation>Ganze Szene (M: Roboter-Nahansicht)</translation>
     </message>
     <message>
         <source>Robot close-up (M: whole scene)</source>
-        <translation type="unfinished"></translation>
+        <translation>Roboter-Nahansicht (M: ganze Szene)</translation>
     </message>
     <message>
         <source>Robot close-up (scene hidden)</source>
-        <translation type="unfinished"></translation>
+        <translation>Roboter-Nahansicht (Szene verborgen)</translation>
     </message>
 </context>
 <context>

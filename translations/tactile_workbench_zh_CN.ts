@@ -183,58 +183,58 @@
     </message>
     <message>
         <source>New simulation window</source>
-        <translation type="unfinished"></translation>
+        <translation>新建模拟器窗口</translation>
     </message>
 </context>
 <context>
     <name>SimKeys</name>
     <message>
         <source>Faster forward by a large step (+20 units/s)</source>
-        <translation type="unfinished"></translation>
+        <translation>向前加速，大步长（+20 单位/秒）</translation>
     </message>
     <message>
         <source>Slower (or backward) by a large step (-20 units/s)</source>
-        <translation type="unfinished"></translation>
+        <translation>减速（或后退），大步长（-20 单位/秒）</translation>
     </message>
     <message>
         <source>Faster forward by a small step (+5 units/s)</source>
-        <translation type="unfinished"></translation>
+        <translation>向前加速，小步长（+5 单位/秒）</translation>
     </message>
     <message>
         <source>Slower (or backward) by a small step (-5 units/s)</source>
-        <translation type="unfinished"></translation>
+        <translation>减速（或后退），小步长（-5 单位/秒）</translation>
     </message>
     <message>
         <source>Turn left by a large step (+0.2 rad/s)</source>
-        <translation type="unfinished"></translation>
+        <translation>左转，大步长（+0.2 rad/s）</translation>
     </message>
     <message>
         <source>Turn right by a large step (-0.2 rad/s)</source>
-        <translation type="unfinished"></translation>
+        <translation>右转，大步长（-0.2 rad/s）</translation>
     </message>
     <message>
         <source>Turn left by a small step (+0.05 rad/s)</source>
-        <translation type="unfinished"></translation>
+        <translation>左转，小步长（+0.05 rad/s）</translation>
     </message>
     <message>
         <source>Turn right by a small step (-0.05 rad/s)</source>
-        <translation type="unfinished"></translation>
+        <translation>右转，小步长（-0.05 rad/s）</translation>
     </message>
     <message>
         <source>Stop (v = 0, omega = 0)</source>
-        <translation type="unfinished"></translation>
+        <translation>停止（v = 0，omega = 0）</translation>
     </message>
     <message>
         <source>Robot close-up / whole scene (close-up only in experiment mode)</source>
-        <translation type="unfinished"></translation>
+        <translation>机器人特写 / 整个场景（实验模式下仅特写）</translation>
     </message>
     <message>
         <source>Pause / go on</source>
-        <translation type="unfinished"></translation>
+        <translation>暂停 / 继续</translation>
     </message>
     <message>
         <source>One step (while paused)</source>
-        <translation type="unfinished"></translation>
+        <translation>单步（暂停时）</translation>
     </message>
 </context>
 <context>
@@ -293,62 +293,62 @@
     </message>
     <message>
         <source>Open the simulator window on SCENE (a built-in scene, a scene JSON file or random:N:SEED); runs go into --db (or the last database).</source>
-        <translation type="unfinished"></translation>
+        <translation>在场景 SCENE（内置场景、场景 JSON 文件或 random:N:SEED）上打开模拟器窗口；运行保存到 --db（或上次使用的数据库）。</translation>
     </message>
     <message>
         <source>With --simulate: practice (default), experiment or autonomous.</source>
-        <translation type="unfinished"></translation>
+        <translation>与 --simulate 一起使用：practice（练习，默认）、experiment（实验）或 autonomous（自主）。</translation>
     </message>
     <message>
         <source>With --simulate: the subject&apos;s name.</source>
-        <translation type="unfinished"></translation>
+        <translation>与 --simulate 一起使用：受试者姓名。</translation>
     </message>
     <message>
         <source>With --simulate --mode experiment: the seed of start and goal.</source>
-        <translation type="unfinished"></translation>
+        <translation>与 --simulate --mode experiment 一起使用：起点和目标的随机种子。</translation>
     </message>
     <message>
         <source>With --simulate: start a run and replay the v, omega commands of the run file FILE, one a step.</source>
-        <translation type="unfinished"></translation>
+        <translation>与 --simulate 一起使用：开始一次运行，并逐步重放运行文件 FILE 中的 v、omega 指令，每步一条。</translation>
     </message>
     <message>
         <source>With --simulate: steps per second (default 10; 0 as fast as possible).</source>
-        <translation type="unfinished"></translation>
+        <translation>与 --simulate 一起使用：每秒步数（默认 10；0 表示尽可能快）。</translation>
     </message>
     <message>
         <source>With --simulate: show the data panel.</source>
-        <translation type="unfinished"></translation>
+        <translation>与 --simulate 一起使用：显示数据面板。</translation>
     </message>
     <message>
         <source>With --simulate: show the whole scene where allowed.</source>
-        <translation type="unfinished"></translation>
+        <translation>与 --simulate 一起使用：在允许时显示整个场景。</translation>
     </message>
     <message>
         <source>no stored model named &apos;%1&apos;</source>
-        <translation type="unfinished"></translation>
+        <translation>没有名为“%1”的已保存模型</translation>
     </message>
     <message>
         <source>--mode must be practice, experiment or autonomous, got &apos;%1&apos;</source>
-        <translation type="unfinished"></translation>
+        <translation>--mode 必须是 practice、experiment 或 autonomous，收到的是“%1”</translation>
     </message>
     <message>
         <source>--seed needs a positive number, got &apos;%1&apos;</source>
-        <translation type="unfinished"></translation>
+        <translation>--seed 需要一个正数，收到的是“%1”</translation>
     </message>
     <message>
         <source>--rate needs a number &gt;= 0, got &apos;%1&apos;</source>
-        <translation type="unfinished"></translation>
+        <translation>--rate 需要一个 &gt;= 0 的数，收到的是“%1”</translation>
     </message>
 </context>
 <context>
     <name>tactile::gui::ExperimentPanel</name>
     <message>
         <source>Status</source>
-        <translation type="unfinished">状态</translation>
+        <translation>状态</translation>
     </message>
     <message>
         <source>Strategies</source>
-        <translation type="unfinished"></translation>
+        <translation>策略</translation>
     </message>
 </context>
 <context>
@@ -1029,7 +1029,7 @@ Research workbench for tactile-based mobile-robot navigation.</source>
     </message>
     <message>
         <source>New &amp;Simulation...</source>
-        <translation type="unfinished"></translation>
+        <translation>新建模拟(&amp;S)...</translation>
     </message>
 </context>
 <context>
@@ -1211,333 +1211,337 @@ imported from %2</source>
     <name>tactile::gui::SimSession</name>
     <message>
         <source>An experiment run needs the subject&apos;s name.</source>
-        <translation type="unfinished"></translation>
+        <translation>实验运行需要受试者姓名。</translation>
     </message>
     <message>
         <source>A subject&apos;s name must be one line.</source>
-        <translation type="unfinished"></translation>
+        <translation>受试者姓名只能有一行。</translation>
     </message>
     <message>
         <source>Autonomous mode needs a driver.</source>
-        <translation type="unfinished"></translation>
+        <translation>自主模式需要一个驾驶程序。</translation>
     </message>
     <message>
         <source>The step length must be in (0, 1] seconds.</source>
-        <translation type="unfinished"></translation>
+        <translation>步长必须在 (0, 1] 秒之间。</translation>
     </message>
     <message>
         <source>The time limit must be positive.</source>
-        <translation type="unfinished"></translation>
+        <translation>时间限制必须为正数。</translation>
     </message>
 </context>
 <context>
     <name>tactile::gui::SimWindow</name>
     <message>
         <source>Run %1 ended: %2</source>
-        <translation type="unfinished"></translation>
+        <translation>运行 %1 已结束：%2</translation>
     </message>
     <message>
         <source>Tactile Simulator</source>
-        <translation type="unfinished"></translation>
+        <translation>触觉模拟器</translation>
     </message>
     <message>
         <source>Practice</source>
-        <translation type="unfinished"></translation>
+        <translation>练习</translation>
     </message>
     <message>
         <source>Experiment</source>
-        <translation type="unfinished"></translation>
+        <translation>实验</translation>
     </message>
     <message>
         <source>Autonomous</source>
-        <translation type="unfinished"></translation>
+        <translation>自主</translation>
     </message>
     <message>
         <source>needed in experiment mode</source>
-        <translation type="unfinished"></translation>
+        <translation>实验模式下必填</translation>
     </message>
     <message>
         <source> s</source>
-        <translation type="unfinished"></translation>
+        <translation> 秒</translation>
     </message>
     <message>
         <source>as fast as possible</source>
-        <translation type="unfinished"></translation>
+        <translation>尽可能快</translation>
     </message>
     <message>
         <source> steps/s</source>
-        <translation type="unfinished"></translation>
+        <translation> 步/秒</translation>
     </message>
     <message>
         <source>Run</source>
-        <translation type="unfinished">运行</translation>
+        <translation>运行</translation>
     </message>
     <message>
         <source>Mode</source>
-        <translation type="unfinished"></translation>
+        <translation>模式</translation>
     </message>
     <message>
         <source>Scene</source>
-        <translation type="unfinished">场景</translation>
+        <translation>场景</translation>
     </message>
     <message>
         <source>Subject</source>
-        <translation type="unfinished">受试者</translation>
+        <translation>受试者</translation>
     </message>
     <message>
         <source>Seed (start, goal)</source>
-        <translation type="unfinished"></translation>
+        <translation>随机种子（起点、目标）</translation>
     </message>
     <message>
         <source>Time limit</source>
-        <translation type="unfinished"></translation>
+        <translation>时间限制</translation>
     </message>
     <message>
         <source>Step rate</source>
-        <translation type="unfinished"></translation>
+        <translation>步速</translation>
     </message>
     <message>
         <source>Navigator model</source>
-        <translation type="unfinished"></translation>
+        <translation>导航器模型</translation>
     </message>
     <message>
         <source>Start New Run</source>
-        <translation type="unfinished"></translation>
+        <translation>开始新运行</translation>
     </message>
     <message>
         <source>Go</source>
-        <translation type="unfinished">转到</translation>
+        <translation>开始</translation>
     </message>
     <message>
         <source>Step</source>
-        <translation type="unfinished">步</translation>
+        <translation>单步</translation>
     </message>
     <message>
         <source>Give Up</source>
-        <translation type="unfinished"></translation>
+        <translation>放弃</translation>
     </message>
     <message>
         <source>Data &gt;&gt;</source>
-        <translation type="unfinished"></translation>
+        <translation>数据 &gt;&gt;</translation>
     </message>
     <message>
         <source>Open in Workbench</source>
-        <translation type="unfinished"></translation>
+        <translation>在工作台中打开</translation>
     </message>
     <message>
         <source>Signal per group</source>
-        <translation type="unfinished"></translation>
+        <translation>各组信号</translation>
     </message>
     <message>
         <source>Experiment panel</source>
-        <translation type="unfinished"></translation>
+        <translation>实验面板</translation>
     </message>
     <message>
         <source>The run so far</source>
-        <translation type="unfinished"></translation>
+        <translation>目前的运行</translation>
     </message>
     <message>
         <source>Bug2 bumper (no model)</source>
-        <translation type="unfinished"></translation>
+        <translation>Bug2 保险杠（无模型）</translation>
     </message>
     <message>
         <source>&amp;File</source>
-        <translation type="unfinished">文件(&amp;F)</translation>
+        <translation>文件(&amp;F)</translation>
     </message>
     <message>
         <source>Built-in &amp;Scenes</source>
-        <translation type="unfinished"></translation>
+        <translation>内置场景(&amp;S)</translation>
     </message>
     <message>
         <source>Open Scene &amp;File...</source>
-        <translation type="unfinished"></translation>
+        <translation>打开场景文件(&amp;F)...</translation>
     </message>
     <message>
         <source>Open Run in &amp;Workbench</source>
-        <translation type="unfinished"></translation>
+        <translation>在工作台中打开运行(&amp;W)</translation>
     </message>
     <message>
         <source>Save Run as &amp;CSV...</source>
-        <translation type="unfinished"></translation>
+        <translation>将运行保存为 CSV(&amp;C)...</translation>
     </message>
     <message>
         <source>&amp;Close</source>
-        <translation type="unfinished"></translation>
+        <translation>关闭(&amp;C)</translation>
     </message>
     <message>
         <source>&amp;Run</source>
-        <translation type="unfinished"></translation>
+        <translation>运行(&amp;R)</translation>
     </message>
     <message>
         <source>Start &amp;New Run</source>
-        <translation type="unfinished"></translation>
+        <translation>开始新运行(&amp;N)</translation>
     </message>
     <message>
         <source>&amp;Go / Pause (P)</source>
-        <translation type="unfinished"></translation>
+        <translation>开始 / 暂停（P）(&amp;G)</translation>
     </message>
     <message>
         <source>&amp;Step (N)</source>
-        <translation type="unfinished"></translation>
+        <translation>单步（N）(&amp;S)</translation>
     </message>
     <message>
         <source>&amp;Give Up</source>
-        <translation type="unfinished"></translation>
+        <translation>放弃(&amp;G)</translation>
     </message>
     <message>
         <source>&amp;View</source>
-        <translation type="unfinished">视图(&amp;V)</translation>
+        <translation>视图(&amp;V)</translation>
     </message>
     <message>
         <source>Robot Close-up / Whole Scene (M)</source>
-        <translation type="unfinished"></translation>
+        <translation>机器人特写 / 整个场景（M）</translation>
     </message>
     <message>
         <source>&amp;Data Panel</source>
-        <translation type="unfinished"></translation>
+        <translation>数据面板(&amp;D)</translation>
     </message>
     <message>
         <source>&amp;Help</source>
-        <translation type="unfinished">帮助(&amp;H)</translation>
+        <translation>帮助(&amp;H)</translation>
     </message>
     <message>
         <source>&amp;Briefing: Bug1 and Bug2</source>
-        <translation type="unfinished"></translation>
+        <translation>任务简介：Bug1 与 Bug2(&amp;B)</translation>
     </message>
     <message>
         <source>&amp;Keys</source>
-        <translation type="unfinished"></translation>
+        <translation>按键(&amp;K)</translation>
     </message>
     <message>
         <source>Scene %1: press Start New Run</source>
-        <translation type="unfinished"></translation>
+        <translation>场景 %1：请点击“开始新运行”</translation>
     </message>
     <message>
         <source>Run %1 ready: drive with the arrow keys and W, A, S, D (Help &gt; Keys)</source>
-        <translation type="unfinished"></translation>
+        <translation>运行 %1 已就绪：用方向键和 W、A、S、D 驾驶（帮助 &gt; 按键）</translation>
     </message>
     <message>
         <source>(not stored)</source>
-        <translation type="unfinished"></translation>
+        <translation>（未保存）</translation>
     </message>
     <message>
         <source>The scene stays hidden in experiment mode</source>
-        <translation type="unfinished"></translation>
+        <translation>实验模式下场景保持隐藏</translation>
     </message>
     <message>
         <source>v %1 units/s   ω %2 rad/s</source>
-        <translation type="unfinished"></translation>
+        <translation>v %1 单位/秒   ω %2 rad/s</translation>
     </message>
     <message>
         <source>Blocked: the last step was stopped</source>
-        <translation type="unfinished"></translation>
+        <translation>受阻：上一步被阻挡</translation>
     </message>
     <message>
         <source>Moving freely</source>
-        <translation type="unfinished"></translation>
+        <translation>自由移动</translation>
     </message>
     <message>
         <source>No step yet</source>
-        <translation type="unfinished"></translation>
+        <translation>还没有步</translation>
     </message>
     <message>
         <source>No run yet.</source>
-        <translation type="unfinished"></translation>
+        <translation>还没有运行。</translation>
     </message>
     <message>
         <source>%1 mode, scene %2, step %3 (%4 s)</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 模式，场景 %2，第 %3 步（%4 秒）</translation>
     </message>
     <message>
         <source>, %1 s left</source>
-        <translation type="unfinished"></translation>
+        <translation>，剩余 %1 秒</translation>
     </message>
     <message>
         <source>
 run %1, %2 steps stored</source>
-        <translation type="unfinished"></translation>
+        <translation>
+运行 %1，已保存 %2 步</translation>
     </message>
     <message>
         <source>
 not stored (no database)</source>
-        <translation type="unfinished"></translation>
+        <translation>
+未保存（无数据库）</translation>
     </message>
     <message>
         <source>
 outcome: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>
+结果：%1</translation>
     </message>
     <message>
         <source>
 paused: a drive key or Go starts the clock</source>
-        <translation type="unfinished"></translation>
+        <translation>
+已暂停：按驾驶键或“开始”即开始计时</translation>
     </message>
     <message>
         <source>Pause</source>
-        <translation type="unfinished"></translation>
+        <translation>暂停</translation>
     </message>
     <message>
         <source>Play</source>
-        <translation type="unfinished"></translation>
+        <translation>播放</translation>
     </message>
     <message>
         <source>Data &lt;&lt;</source>
-        <translation type="unfinished"></translation>
+        <translation>数据 &lt;&lt;</translation>
     </message>
     <message>
         <source>Open Scene</source>
-        <translation type="unfinished"></translation>
+        <translation>打开场景</translation>
     </message>
     <message>
         <source>Scenes (*.json);;All files (*)</source>
-        <translation type="unfinished"></translation>
+        <translation>场景 (*.json);;所有文件 (*)</translation>
     </message>
     <message>
         <source>No steps recorded yet.</source>
-        <translation type="unfinished"></translation>
+        <translation>还没有记录任何步。</translation>
     </message>
     <message>
         <source>Save Run</source>
-        <translation type="unfinished"></translation>
+        <translation>保存运行</translation>
     </message>
     <message>
         <source>Run files (*.csv)</source>
-        <translation type="unfinished"></translation>
+        <translation>运行文件 (*.csv)</translation>
     </message>
     <message>
         <source>Briefing: Bug1 and Bug2</source>
-        <translation type="unfinished"></translation>
+        <translation>任务简介：Bug1 与 Bug2</translation>
     </message>
     <message>
         <source>&lt;p&gt;You drive the robot by touch: the close-up shows only the robot, which domes touch something, where it heads (blue) and where the goal lies (red), with the distance. Two classic strategies for a point robot that feels its way may help:&lt;/p&gt;&lt;p&gt;&lt;b&gt;Bug1&lt;/b&gt;&lt;br&gt;1. Head for the goal.&lt;br&gt;2. When you hit an obstacle, go all the way round it, keeping contact, and remember the point where you were closest to the goal.&lt;br&gt;3. Go back to that point, leave the obstacle there and head for the goal again.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Bug2&lt;/b&gt;&lt;br&gt;1. Head for the goal along the straight line from the start to the goal (the S-G line).&lt;br&gt;2. When an obstacle is in the way, follow its edge until you meet the S-G line again, closer to the goal than where you hit it.&lt;br&gt;3. Leave the obstacle there and go on along the line.&lt;/p&gt;&lt;p&gt;The robot is not a point: it is 140 long and 80 wide, it turns about its rear axle, and it loses contact easily when it follows an edge carelessly.&lt;/p&gt;</source>
-        <translation type="unfinished"></translation>
+        <translation>&lt;p&gt;您通过触觉驾驶机器人：特写只显示机器人本身、哪些触点正在接触物体、它的朝向（蓝色）以及目标所在方向（红色）和距离。对于靠摸索前进的点状机器人，有两种经典策略可供参考：&lt;/p&gt;&lt;p&gt;&lt;b&gt;Bug1&lt;/b&gt;&lt;br&gt;1. 朝目标前进。&lt;br&gt;2. 碰到障碍物时，保持接触绕它完整走一圈，并记住离目标最近的那个点。&lt;br&gt;3. 回到该点，在那里离开障碍物，再次朝目标前进。&lt;/p&gt;&lt;p&gt;&lt;b&gt;Bug2&lt;/b&gt;&lt;br&gt;1. 沿起点到目标的直线（S-G 线）朝目标前进。&lt;br&gt;2. 遇到障碍物挡路时，沿其边缘行走，直到再次遇到 S-G 线，且该处比碰到障碍物的位置更接近目标。&lt;br&gt;3. 在那里离开障碍物，继续沿直线前进。&lt;/p&gt;&lt;p&gt;机器人不是一个点：它长 140、宽 80，绕后轴转向，沿边缘行走时稍不留神就会失去接触。&lt;/p&gt;</translation>
     </message>
     <message>
         <source>Simulator Keys</source>
-        <translation type="unfinished"></translation>
+        <translation>模拟器按键</translation>
     </message>
 </context>
 <context>
     <name>tactile::gui::StatusPictureView</name>
     <message>
         <source>Choose a scene and a mode, then press Start.</source>
-        <translation type="unfinished"></translation>
+        <translation>选择场景和模式，然后点击“开始新运行”。</translation>
     </message>
     <message>
         <source>%1 units to the goal</source>
-        <translation type="unfinished">距目标 %1 单位</translation>
+        <translation>距目标 %1 单位</translation>
     </message>
     <message>
         <source>Whole scene (M: robot close-up)</source>
-        <translation type="unfinished"></translation>
+        <translation>整个场景（M：机器人特写）</translation>
     </message>
     <message>
         <source>Robot close-up (M: whole scene)</source>
-        <translation type="unfinished"></translation>
+        <translation>机器人特写（M：整个场景）</translation>
     </message>
     <message>
         <source>Robot close-up (scene hidden)</source>
-        <translation type="unfinished"></translation>
+        <translation>机器人特写（场景隐藏）</translation>
     </message>
 </context>
 <context>
