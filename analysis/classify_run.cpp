@@ -27,16 +27,18 @@ std::string_view temporalRuleName(TemporalRule rule) {
   return "?";
 }
 
-std::string GroupClassification::className(std::size_t step) const {
+std::string GroupClassification::nameOf(const Decisions& decisions, std::size_t step) const {
   if (noContactRule[step]) return "NoContact";
-  if (!predicted[step]) return "";
-  return model->classifier.classNames()[static_cast<std::size_t>(*predicted[step])];
+  if (model == nullptr || step >= decisions.size() || !decisions[step]) return "";
+  return model->classifier.classNames()[static_cast<std::size_t>(*decisions[step])];
 }
 
-std::string GroupClassification::decidedName(std::size_t step) const {
-  if (noContactRule[step]) return "NoContact";
-  if (decided.empty() || !decided[step]) return "";
-  return model->classifier.classNames()[static_cast<std::size_t>(*decided[step])];
+std::string GroupClassification::className(std::size_t step) const {
+  return nameOf(decided, step);
+}
+
+std::string GroupClassification::stepClassName(std::size_t step) const {
+  return nameOf(predicted, step);
 }
 
 RunClassification classifyRun(const RunData& run, const ModelBundle& bundle,
@@ -71,24 +73,39 @@ RunClassification classifyRun(const RunData& run, const ModelBundle& bundle,
         go.predicted[static_cast<std::size_t>(contactRows[i])] = pred[i];
       }
     }
-    if (options.temporal != TemporalRule::None) {
-      StepLikelihoods sl{go.logLikelihoods, {}, go.model->classifier.logPriors()};
-      sl.observed.resize(steps);
-      for (std::size_t t = 0; t < steps; ++t)
-        sl.observed[t] = gs.isZero[t] ? 0 : 1;
-      switch (options.temporal) {
-        case TemporalRule::Count:
-          go.decided = consecutiveCountDecisions(sl, options.count);
-          break;
-        case TemporalRule::Sum:
-          go.decided = summedLogProbabilityDecisions(sl, options.threshold, options.window);
-          break;
-        case TemporalRule::Hmm:
-          go.decided = hmmForwardFilter(sl, options.stay).decisions;
-          break;
-        case TemporalRule::None:
-          break;
+    StepLikelihoods sl{go.logLikelihoods, {}, go.model->classifier.logPriors()};
+    sl.observed.resize(steps);
+    for (std::size_t t = 0; t < steps; ++t)
+      sl.observed[t] = gs.isZero[t] ? 0 : 1;
+    const TransitionModel& chain = go.model->transitions;
+    switch (options.temporal) {
+      case TemporalRule::Count:
+        go.decided = consecutiveCountDecisions(sl, options.count);
+        break;
+      case TemporalRule::Sum:
+        go.decided = summedLogProbabilityDecisions(sl, options.threshold, options.window);
+        break;
+      case TemporalRule::Hmm:
+        go.decided = hmmForwardFilter(sl, options.stay).decisions;
+        break;
+      case TemporalRule::None: {
+        DecisionMode mode = options.decision.value_or(go.model->decision);
+        if (chain.empty() || chain.classCount() != classes) mode = DecisionMode::Step;
+        go.decisionName = decisionModeName(mode);
+        if (mode == DecisionMode::Step) {
+          go.decided = go.predicted;
+        } else {
+          go.decided = decide(sl, chain, mode);
+        }
+        break;
       }
+    }
+    if (options.temporal != TemporalRule::None) {
+      go.decisionName = temporalRuleName(options.temporal);
+    }
+    if (options.allDecisions) {
+      go.online = decide(sl, chain, DecisionMode::Online);
+      go.offline = decide(sl, chain, DecisionMode::Offline);
     }
   }
   return out;

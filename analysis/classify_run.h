@@ -24,6 +24,11 @@ std::optional<TemporalRule> parseTemporalRule(std::string_view name);
 std::string_view temporalRuleName(TemporalRule rule);
 
 struct ClassifyOptions {
+  // The decision written as each step's class: nullopt = each model's default (online for a
+  // model with transitions, else step). Ignored when `temporal` names one of the older rules.
+  std::optional<DecisionMode> decision;
+  // Also fill GroupClassification::online and ::offline (the workbench's strip shows both).
+  bool allDecisions = false;
   TemporalRule temporal = TemporalRule::None;
   int count = 3;           // Count: consecutive steps required
   double threshold = 5.0;  // Sum: log-probability margin, nats
@@ -37,12 +42,20 @@ struct GroupClassification {
   std::vector<std::uint8_t> noContactRule;    // 1 where every value is zero (NoContact by rule)
   std::vector<std::optional<int>> predicted;  // class index into model->classes; contact steps
   Eigen::MatrixXd logLikelihoods;             // steps x classes; -inf on rule steps
-  Decisions decided;                          // temporal decision (empty when None)
+  Decisions decided;         // the chosen decision (steps entries when a model exists)
+  std::string decisionName;  // "step", "online", "offline", or the temporal rule's name
+  Decisions online;          // with allDecisions: the forward filter's decisions
+  Decisions offline;         // with allDecisions: forward-backward decisions
 
-  // The class name at a step: "NoContact" by rule, the predicted (or decided) class, or "" where
-  // no model could say.
+  // The class name at a step by the chosen decision: "NoContact" by rule, the decided class, or
+  // "" where no model could say.
   std::string className(std::size_t step) const;
-  std::string decidedName(std::size_t step) const;
+  // The per-step argmax (the decision without memory), same conventions.
+  std::string stepClassName(std::size_t step) const;
+  // Same as className (older name).
+  std::string decidedName(std::size_t step) const { return className(step); }
+  // The name of entry `step` of any decision list.
+  std::string nameOf(const Decisions& decisions, std::size_t step) const;
 };
 
 struct RunClassification {

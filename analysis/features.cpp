@@ -1,5 +1,6 @@
 #include "analysis/features.h"
 
+#include <algorithm>
 #include <cmath>
 #include <map>
 
@@ -17,6 +18,8 @@ std::string_view featureKindName(FeatureKind kind) {
       return "normal+shear";
     case FeatureKind::NormalShearTouch:
       return "normal+shear+touch";
+    case FeatureKind::Context:
+      return "normal+shear+touch+context";
   }
   return "normal";
 }
@@ -35,6 +38,8 @@ int featureDimension(SensorGroup group, FeatureKind kind) {
       return 2 * n;
     case FeatureKind::NormalShearTouch:
       return 2 * n + kTouchFlags;
+    case FeatureKind::Context:
+      return 3 * n + kTouchFlags + 3;
     case FeatureKind::Normal:
     case FeatureKind::Magnitude:
       break;
@@ -42,22 +47,39 @@ int featureDimension(SensorGroup group, FeatureKind kind) {
   return n;
 }
 
-bool groupIsZero(const RunData& run, std::size_t step, SensorGroup group) {
+bool groupIsZero(const double* stepValues, SensorGroup group) {
   const GroupInfo& info = groupInfo(group);
-  const double* values = run.stepSensors(step) + normalOffset(info.firstSensor);
+  const double* values = stepValues + normalOffset(info.firstSensor);
   for (int i = 0; i < 2 * info.sensorCount; ++i) {
     if (values[i] != 0.0) return false;
   }
   return true;
 }
 
-void groupFeatures(const RunData& run, std::size_t step, SensorGroup group, FeatureKind kind,
-                   double* out) {
-  groupFeatures(run.stepSensors(step), group, kind, out);
+bool groupIsZero(const RunData& run, std::size_t step, SensorGroup group) {
+  return groupIsZero(run.stepSensors(step), group);
 }
 
-void groupFeatures(const double* values, SensorGroup group, FeatureKind kind, double* out) {
+StepContext stepContextOf(const RunData& run, std::size_t step, SensorGroup group) {
+  StepContext c;
+  c.values = run.stepSensors(step);
+  c.laggedValues = step >= static_cast<std::size_t>(kContextLag)
+                       ? run.stepSensors(step - static_cast<std::size_t>(kContextLag))
+                       : nullptr;
+  c.v = step < run.v.size() ? run.v[step] : 0.0;
+  c.omega = step < run.omega.size() ? run.omega[step] : 0.0;
+  int touched = 0;
+  for (std::size_t s = step; s > 0 && touched < kContextCap; --s) {
+    if (groupIsZero(run, s - 1, group)) break;
+    ++touched;
+  }
+  c.contactSteps = touched;
+  return c;
+}
+
+void groupFeatures(const StepContext& context, SensorGroup group, FeatureKind kind, double* out) {
   const GroupInfo& info = groupInfo(group);
+  const double* values = context.values;
   for (int i = 0; i < info.sensorCount; ++i) {
     const int sensor = info.firstSensor + i;
     const double n = values[normalOffset(sensor)];
@@ -71,12 +93,13 @@ void groupFeatures(const double* values, SensorGroup group, FeatureKind kind, do
         break;
       case FeatureKind::NormalShear:
       case FeatureKind::NormalShearTouch:
+      case FeatureKind::Context:
         out[2 * i] = n;
         out[2 * i + 1] = s;
         break;
     }
   }
-  if (kind != FeatureKind::NormalShearTouch) return;
+  if (kind != FeatureKind::NormalShearTouch && kind != FeatureKind::Context) return;
   // Flags, not values: the dead-path rule asks whether F, L and R touch, not how hard, and a
   // pocket of another width presses them differently.
   double* flags = out + 2 * info.sensorCount;
@@ -89,6 +112,36 @@ void groupFeatures(const double* values, SensorGroup group, FeatureKind kind, do
       touches = values[normalOffset(other.firstSensor + i)] > 0.0;
     flags[c] = touches ? 1.0 : 0.0;
   }
+  if (kind != FeatureKind::Context) return;
+  double* extra = flags + kTouchFlags;
+  for (int i = 0; i < info.sensorCount; ++i) {
+    const int sensor = info.firstSensor + i;
+    const double before =
+        context.laggedValues != nullptr ? context.laggedValues[normalOffset(sensor)] : 0.0;
+    extra[i] = values[normalOffset(sensor)] - before;
+  }
+  extra[info.sensorCount] = context.v;
+  extra[info.sensorCount + 1] = context.omega;
+  extra[info.sensorCount + 2] =
+      static_cast<double>(std::min(context.contactSteps, kContextCap)) / kContextCap;
+}
+
+void groupFeatures(const RunData& run, std::size_t step, SensorGroup group, FeatureKind kind,
+                   double* out) {
+  if (kind != FeatureKind::Context) {
+    StepContext c;
+    c.values = run.stepSensors(step);
+    groupFeatures(c, group, kind, out);
+    return;
+  }
+  groupFeatures(stepContextOf(run, step, group), group, kind, out);
+}
+
+void groupFeatures(const double* stepValues, SensorGroup group, FeatureKind kind, double* out) {
+  // One step without its history: the context kind sees no earlier step (zeros) and no command.
+  StepContext c;
+  c.values = stepValues;
+  groupFeatures(c, group, kind, out);
 }
 
 GroupSteps extractGroupSteps(const RunData& run, SensorGroup group, FeatureKind kind) {

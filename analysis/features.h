@@ -29,24 +29,51 @@ enum class FeatureKind : std::uint8_t {
   // the left side, of the right side is above 0, else 0 (the groups whose joint touch makes a
   // dead path).
   NormalShearTouch,
+  // normal+shear+touch, then context from the steps before: per sensor the change of its n value
+  // over the last kContextLag steps (n_t - n_{t-k}, 0 before the run's first step), the commanded
+  // v and omega, and the steps since the group's contact began (0 at its first step), capped at
+  // kContextCap and divided by it.
+  Context,
 };
 inline constexpr int kTouchFlags = 3;
-inline constexpr std::array<FeatureKind, 4> kFeatureKinds{
+inline constexpr int kContextLag = 3;
+inline constexpr int kContextCap = 20;
+inline constexpr std::array<FeatureKind, 5> kFeatureKinds{
     FeatureKind::Normal, FeatureKind::Magnitude, FeatureKind::NormalShear,
-    FeatureKind::NormalShearTouch};
+    FeatureKind::NormalShearTouch, FeatureKind::Context};
 
-// "normal", "magnitude", "normal+shear", "normal+shear+touch".
+// "normal", "magnitude", "normal+shear", "normal+shear+touch", "normal+shear+touch+context".
 std::string_view featureKindName(FeatureKind kind);
 std::optional<FeatureKind> parseFeatureKind(std::string_view name);
 
 // Dimension D of a group's feature vector: sensorCount, 2 * sensorCount for normal+shear, plus
-// kTouchFlags with the touch flags.
+// kTouchFlags with the touch flags, plus sensorCount + 3 with the context.
 int featureDimension(SensorGroup group, FeatureKind kind);
 
 // True when every n and s value of the group is exactly zero at `step`: NoContact by rule, and no
 // model is evaluated for it.
 bool groupIsZero(const RunData& run, std::size_t step, SensorGroup group);
 
+// True when every n and s value of the group is zero in one step's kValuesPerStep values.
+bool groupIsZero(const double* stepValues, SensorGroup group);
+
+// What a feature vector is computed from at one step: the step's kValuesPerStep sensor values
+// and, for the context kind, the values kContextLag steps before (null before the run's first
+// step: zeros), the commanded v and omega, and how many steps the group has touched before this
+// one without a break (0 at the first step of contact).
+struct StepContext {
+  const double* values = nullptr;
+  const double* laggedValues = nullptr;
+  double v = 0.0;
+  double omega = 0.0;
+  int contactSteps = 0;
+};
+// The context of `step` of a run (steps since contact counted back at most kContextCap steps).
+StepContext stepContextOf(const RunData& run, std::size_t step, SensorGroup group);
+
+// Writes the group's feature vector into out[0 .. featureDimension): the one feature function;
+// the run form and the online decider both call it.
+void groupFeatures(const StepContext& context, SensorGroup group, FeatureKind kind, double* out);
 // Writes the group's feature vector at `step` into out[0 .. featureDimension).
 void groupFeatures(const RunData& run, std::size_t step, SensorGroup group, FeatureKind kind,
                    double* out);

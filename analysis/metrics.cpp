@@ -122,6 +122,18 @@ Metrics computeMetrics(const ConfusionMatrix& confusion) {
   return out;
 }
 
+std::optional<double> balancedAccuracyOver(const Metrics& metrics, std::size_t minSupport) {
+  double sum = 0.0;
+  int n = 0;
+  for (const ClassMetrics& c : metrics.perClass) {
+    if (c.support == 0 || c.support < minSupport || !c.recall) continue;
+    sum += *c.recall;
+    ++n;
+  }
+  if (n == 0) return std::nullopt;
+  return sum / n;
+}
+
 std::optional<double> BinaryConfusion::classRate() const {
   const std::size_t predicted = truePositive + falsePositive;
   if (predicted == 0) return std::nullopt;

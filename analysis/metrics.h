@@ -67,6 +67,13 @@ struct Metrics {
 
 Metrics computeMetrics(const ConfusionMatrix& confusion);
 
+// A class with fewer test steps than this is "too few": its rate is shown but marked, and it
+// never decides which setting is best (settable: --min-test-steps).
+inline constexpr std::size_t kMinTestSteps = 30;
+// Balanced accuracy over the classes with at least minSupport test steps only; nullopt when no
+// class has that many.
+std::optional<double> balancedAccuracyOver(const Metrics& metrics, std::size_t minSupport);
+
 // Cohen's kappa of two raters (rows one rater, columns the other): (po - pe) / (1 - pe), with po
 // the observed agreement and pe the agreement expected by chance from the row and column totals
 // (Cohen 1960). nullopt when there are no samples or when pe = 1 (both raters used one and the

@@ -7,13 +7,20 @@
 //    "variance_floor":0.03,"regularization":"floor|add","priors":[log P(c), ...],
 //    "components":{"Wall":{"weights":[...],"means":[[...],...],"covariances":[...]},...},
 //    "rest_components":{...}            (Gaussian one-vs-rest "rest" models, optional)
+//    "transitions":{"log_initial":[...],"log_matrix":[[...],...],"pseudo_count":1,
+//                   "initial_counts":[...],"counts":[[...],...]}   (version 2, optional)
+//    "decision":"step|online",           (version 2; default online with transitions, else step)
 //    "trained_on":{...},"metrics":{...}}
 // `covariances` lists K matrices (nodal forms) or one (grand forms); each is a list of D rows for
 // full forms, or a list of D variances for diagonal forms. `priors` are natural-log class priors in
 // `classes` order (optional on read: equal priors when absent).
 //
+// `transitions` is the group's HMM over `classes` (same order, natural logs; analysis/temporal.h),
+// `decision` how the model decides by default; it must be causal (step or online). Version-1 files
+// (no transitions) still read, with decision "step".
+//
 // A model bundle holds one model per group (what `tactile train` writes):
-//   {"format":"tactile-model-bundle","version":1,"models":[model, model, ...]}
+//   {"format":"tactile-model-bundle","version":2,"models":[model, model, ...]}
 // Readers accept either; a single model reads as a bundle of one.
 //
 // Doubles are written as the shortest text that reads back to the same bits (nlohmann_json's
@@ -31,6 +38,8 @@
 #include "analysis/classifier.h"
 #include "analysis/features.h"
 #include "analysis/gmm.h"
+#include "analysis/model_record.h"
+#include "analysis/temporal.h"
 #include "base/error.h"
 #include "run/contact_class.h"
 #include "run/sensor_layout.h"
@@ -39,7 +48,8 @@ namespace tactile::analysis {
 
 inline constexpr std::string_view kModelFormat = "tactile-model";
 inline constexpr std::string_view kModelBundleFormat = "tactile-model-bundle";
-inline constexpr int kModelVersion = 1;
+inline constexpr int kModelVersion = 2;
+inline constexpr int kOldestModelVersion = 1;
 
 // One group's trained classifier with the settings that made it.
 struct GroupModel {
@@ -50,8 +60,11 @@ struct GroupModel {
   CovarianceForm covariance = CovarianceForm::NodalDiag;
   double varianceFloor = 0.0;
   Regularization regularization = Regularization::Floor;
-  nlohmann::json trainedOn = nlohmann::json::object();  // free-form provenance
-  nlohmann::json metrics = nlohmann::json::object();    // free-form evaluation results
+  // The class chain (empty for a version-1 model) and the default decision (always causal).
+  TransitionModel transitions;
+  DecisionMode decision = DecisionMode::Step;
+  ModelProvenance provenance;  // the file's "trained_on"
+  ModelEvaluation evaluation;  // the file's "metrics"
 };
 
 struct ModelBundle {
@@ -60,6 +73,13 @@ struct ModelBundle {
 };
 
 nlohmann::json modelToJson(const GroupModel& model);
+// A model's "trained_on" and "metrics" objects (also stored beside a model in a database).
+nlohmann::json provenanceToJson(const GroupModel& model);
+nlohmann::json evaluationToJson(const GroupModel& model);
+// A bundle's provenance (the first model's, with every group's settings under "settings") and its
+// metrics by group name.
+nlohmann::json bundleProvenanceToJson(const ModelBundle& bundle);
+nlohmann::json bundleMetricsToJson(const ModelBundle& bundle);
 nlohmann::json bundleToJson(const ModelBundle& bundle);
 
 // Parses model or bundle text. fileName names the source in errors: "FILE: path.to.field: what is

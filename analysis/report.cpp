@@ -318,7 +318,7 @@ Table oneVsRestRateTable(
 }
 
 Table classRateTable(const std::vector<std::pair<std::string, Metrics>>& rows,
-                     const std::string& title) {
+                     const std::string& title, std::size_t minTestSteps) {
   Table t;
   t.title = title;
   std::vector<ContactClass> classes;
@@ -336,9 +336,25 @@ Table classRateTable(const std::vector<std::pair<std::string, Metrics>>& rows,
   t.header.insert(t.header.end(), {"accuracy", "balanced", "macro_f1"});
   for (const auto& [label, m] : rows) {
     std::vector<std::string> row{label};
-    for (ContactClass c : classes)
-      row.push_back(pct(m.recallOf(c)));
-    row.push_back(pct(m.accuracy));
+    if (m.total == 0) {
+      for (std::size_t i = 0; i < classes.size(); ++i)
+        row.push_back("");
+      row.insert(row.end(), {"no test data", "no test data", ""});
+      t.rows.push_back(std::move(row));
+      continue;
+    }
+    for (ContactClass c : classes) {
+      const auto it = std::find_if(m.perClass.begin(), m.perClass.end(),
+                                   [c](const ClassMetrics& k) { return k.label == c; });
+      if (it == m.perClass.end() || it->support == 0) {
+        row.emplace_back();
+        continue;
+      }
+      std::string cell = pct(it->recall) + " (" + std::to_string(it->support) + ")";
+      if (it->support < minTestSteps) cell += " too few";
+      row.push_back(std::move(cell));
+    }
+    row.push_back(pct(m.accuracy) + " (" + std::to_string(m.total) + ")");
     row.push_back(pct(m.balancedAccuracy));
     row.push_back(fixed(m.macroF1, 3));
     t.rows.push_back(std::move(row));
@@ -446,20 +462,25 @@ Table rateAgainstOrderTable(const SweepResult& sweep) {
   return spreadTable(sweep, SweptVariable::Order);
 }
 
-bool betterCell(const SweepCellResult& a, const SweepCellResult& b) {
-  if (a.metrics.balancedAccuracy != b.metrics.balancedAccuracy)
+bool betterCell(const SweepCellResult& a, const SweepCellResult& b, std::size_t minTestSteps) {
+  const std::optional<double> ra = balancedAccuracyOver(a.metrics, minTestSteps);
+  const std::optional<double> rb = balancedAccuracyOver(b.metrics, minTestSteps);
+  if (ra.has_value() != rb.has_value()) return ra.has_value();
+  if (ra && *ra != *rb) return *ra > *rb;
+  // Neither has a class with enough test steps: nothing better to go by than all of them.
+  if (!ra && a.metrics.balancedAccuracy != b.metrics.balancedAccuracy)
     return a.metrics.balancedAccuracy > b.metrics.balancedAccuracy;
   if (a.cell.order != b.cell.order) return a.cell.order < b.cell.order;
   return a.fitSeconds < b.fitSeconds;
 }
 
-std::vector<std::size_t> bestCells(const SweepResult& sweep) {
+std::vector<std::size_t> bestCells(const SweepResult& sweep, std::size_t minTestSteps) {
   std::map<int, std::size_t> best;
   for (std::size_t i = 0; i < sweep.cells.size(); ++i) {
     const SweepCellResult& r = sweep.cells[i];
     if (!r.ok) continue;
     const auto [it, inserted] = best.try_emplace(groupIndex(r.cell.group), i);
-    if (!inserted && betterCell(r, sweep.cells[it->second])) it->second = i;
+    if (!inserted && betterCell(r, sweep.cells[it->second], minTestSteps)) it->second = i;
   }
   std::vector<std::size_t> out;
   for (const auto& [g, i] : best)
@@ -767,14 +788,7 @@ Status writeSweepReport(const SweepResult& sweep, TableStyle style,
   return writeFileAtomically(out, sweepReport(sweep, style, options));
 }
 
-std::string modelReport(const json& value, TableStyle style) {
-  std::vector<json> models;
-  if (value.value("format", "") == "tactile-model-bundle" && value.contains("models")) {
-    for (const json& m : value["models"])
-      models.push_back(m);
-  } else {
-    models.push_back(value);
-  }
+std::string modelReport(const ModelBundle& bundle, TableStyle style, std::size_t minTestSteps) {
   const std::string sep = style == TableStyle::Text ? "\n" : "";
   std::string out;
   std::vector<std::pair<std::string, Metrics>> rateRows;
@@ -782,69 +796,88 @@ std::string modelReport(const json& value, TableStyle style) {
   std::string details;
   Table settings;
   settings.title = "Models";
-  settings.header = {"group",   "features", "method",     "covariance",
-                     "order",   "floor",    "dropped",    "regularization",
-                     "classes", "samples",  "accuracy_%", "balanced_%"};
-  for (const json& m : models) {
-    const std::string groupName = m.value("group", "?");
-    const auto group = parseSensorGroup(groupName);
-    const json metrics = m.value("metrics", json::object());
-    const json eval = metrics.value("evaluation", json::object());
+  settings.header = {"group",   "features", "method",  "covariance", "order",   "floor",
+                     "dropped", "classes",  "samples", "test",       "decision"};
+  Table decisions;
+  decisions.title = "Balanced accuracy by decision (%; test steps in brackets)";
+  decisions.header = {"group", "evaluated on", "test", "step", "online", "offline"};
+  Table scenes;
+  scenes.title = "Held-out scenes (balanced accuracy %, by the default decision)";
+  scenes.header = {"group", "scene", "test", "step", "online", "offline"};
+  auto rate = [](const ConfusionMatrix& c) {
+    return c.total() > 0 ? pct(computeMetrics(c).balancedAccuracy) : std::string("no test data");
+  };
+  for (const GroupModel& m : bundle.models) {
+    const std::string groupName(groupInfo(m.group).shortName);
+    const ModelEvaluation& e = m.evaluation;
     std::string classes;
-    for (const json& c : m.value("classes", json::array())) {
-      classes += (classes.empty() ? "" : " ") + c.get<std::string>();
-    }
+    for (const std::string& c : m.classifier.classNames())
+      classes += (classes.empty() ? "" : " ") + c;
     int order = 0;
-    if (m.contains("components") && m["components"].is_object() && !m["components"].empty()) {
-      order = static_cast<int>(m["components"].begin()->value("weights", json::array()).size());
-    }
-    ConfusionMatrix confusion;
-    const bool haveConfusion =
-        eval.contains("confusion") && confusionFromJson(eval["confusion"], confusion);
-    const Metrics met = computeMetrics(confusion);
-    // Components removed for lack of mass, summed over the classes (train writes them per class).
+    for (int c = 0; c < m.classifier.classCount(); ++c)
+      order = std::max(order, static_cast<int>(m.classifier.model(c).weights().size()));
     std::string dropped;
-    if (metrics.contains("dropped_components") && metrics["dropped_components"].is_object()) {
-      long sum = 0;
-      for (const auto& [name, count] : metrics["dropped_components"].items())
-        if (count.is_number_integer()) sum += count.get<long>();
+    if (!e.fit.empty()) {
+      int sum = 0;
+      for (const ClassFitRecord& f : e.fit)
+        sum += f.droppedComponents;
       dropped = std::to_string(sum);
     }
+    const DecisionMode d = m.transitions.empty() ? DecisionMode::Step : m.decision;
     settings.rows.push_back(
-        {groupName, m.value("features", ""), m.value("method", ""), m.value("covariance", ""),
-         std::to_string(order), floorText(m.value("variance_floor", 0.0)), dropped,
-         m.value("regularization", ""), classes, haveConfusion ? std::to_string(met.total) : "",
-         haveConfusion ? pct(met.accuracy) : "", haveConfusion ? pct(met.balancedAccuracy) : ""});
-    if (!haveConfusion || !group) continue;
-    const std::string on = metrics.value("evaluated_on", "evaluation data");
-    rateRows.emplace_back(groupInfo(*group).longName, met);
-    details += confusionTable(confusion, false,
-                              "Group " + groupName + ": confusion on " + on + " (counts)")
-                   .render(style) +
-               sep;
+        {groupName, std::string(featureKindName(m.features)),
+         std::string(classifierMethodName(m.classifier.method())),
+         std::string(covarianceFormName(m.covariance)), std::to_string(order),
+         floorText(m.varianceFloor), dropped, classes,
+         std::to_string(e.samplesTrain > 0 ? e.samplesTrain : m.provenance.samples),
+         e.scored() ? std::to_string(e.samplesTest()) : "no test data",
+         std::string(decisionModeName(d))});
+    decisions.rows.push_back({groupName, e.evaluatedOn, std::to_string(e.samplesTest()),
+                              rate(e.confusion(DecisionMode::Step)),
+                              rate(e.confusion(DecisionMode::Online)),
+                              rate(e.confusion(DecisionMode::Offline))});
+    for (const SceneScore& sc : e.scenes) {
+      scenes.rows.push_back({groupName, sc.scene, std::to_string(sc.byDecision[0].total()),
+                             rate(sc.byDecision[decisionIndex(DecisionMode::Step)]),
+                             rate(sc.byDecision[decisionIndex(DecisionMode::Online)]),
+                             rate(sc.byDecision[decisionIndex(DecisionMode::Offline)])});
+    }
+    if (!e.scenes.empty()) {
+      auto mean = [&](DecisionMode mode) {
+        const std::optional<double> v = meanSceneBalancedAccuracy(e.scenes, mode);
+        return v ? pct(*v) : std::string("no test data");
+      };
+      scenes.rows.push_back({groupName, "mean over scenes", "", mean(DecisionMode::Step),
+                             mean(DecisionMode::Online), mean(DecisionMode::Offline)});
+    }
+    const ConfusionMatrix& confusion = e.confusion(d);
+    rateRows.emplace_back(
+        std::string(groupInfo(m.group).longName) + " (" + std::string(decisionModeName(d)) + ")",
+        computeMetrics(confusion));
+    if (!e.scored()) continue;
+    const std::string on = e.evaluatedOn.empty() ? "evaluation data" : e.evaluatedOn;
+    const std::string what = " on " + on + ", " + std::string(decisionModeName(d)) + " decision";
+    details +=
+        confusionTable(confusion, false, "Group " + groupName + ": confusion" + what + " (counts)")
+            .render(style) +
+        sep;
     details += confusionTable(confusion, true,
-                              "Group " + groupName + ": confusion on " + on + " (row percent)")
+                              "Group " + groupName + ": confusion" + what + " (row percent)")
                    .render(style) +
                sep;
-    if (eval.contains("contact_patterns")) {
-      ContactPatternTable patterns;
-      if (patternsFromJson(eval["contact_patterns"], *group, patterns))
-        details += contactPatternTable(patterns).render(style) + sep;
-    }
-    if (eval.contains("one_vs_rest")) {
-      std::vector<BinaryConfusion> bins;
-      for (const json& b : eval["one_vs_rest"]) {
-        const auto c = parseContactClass(b.value("class", ""));
-        if (!c) continue;
-        bins.push_back({*c, b.value("tp", std::size_t{0}), b.value("fp", std::size_t{0}),
-                        b.value("fn", std::size_t{0}), b.value("tn", std::size_t{0})});
-      }
-      ovr.emplace_back(*group, std::move(bins));
-    }
+    if (!e.patterns.rows.empty()) details += contactPatternTable(e.patterns).render(style) + sep;
+    if (!e.oneVsRest.empty()) ovr.emplace_back(m.group, e.oneVsRest);
   }
   out += settings.render(style) + sep;
+  out += decisions.render(style) + sep;
+  if (!scenes.rows.empty()) out += scenes.render(style) + sep;
   if (!rateRows.empty()) {
-    out += classRateTable(rateRows, "Recall per class, %").render(style) + sep;
+    out += classRateTable(rateRows,
+                          "Recall per class, % (test steps in brackets; fewer than " +
+                              std::to_string(minTestSteps) + " marked too few)",
+                          minTestSteps)
+               .render(style) +
+           sep;
   }
   if (!ovr.empty()) out += oneVsRestRateTable(ovr).render(style) + sep;
   out += details;

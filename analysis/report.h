@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "analysis/metrics.h"
+#include "analysis/model_file.h"
 #include "analysis/sweep.h"
 #include "base/error.h"
 
@@ -47,9 +48,12 @@ Table confusionTable(const ConfusionMatrix& confusion, bool percent, const std::
 Table oneVsRestRateTable(
     const std::vector<std::pair<SensorGroup, std::vector<BinaryConfusion>>>& groups);
 
-// Multi-class recall per class (percent) per row label, as in thesis table 4.31.
+// Multi-class per-class correct rate (recall, percent) per row label, as in thesis table 4.31,
+// each with its test-step count beside it ("93.1 (412)"); a class with fewer than minTestSteps
+// test steps is marked "too few" ("50.0 (4) too few"). A row without test steps reads "no test
+// data".
 Table classRateTable(const std::vector<std::pair<std::string, Metrics>>& rows,
-                     const std::string& title);
+                     const std::string& title, std::size_t minTestSteps = kMinTestSteps);
 
 // Figures 4.13 / 4.14 as data: one series per fixed setting (group, features, method, form, the
 // other of order / floor, seed) with a point per value of the swept variable, ascending. Each
@@ -87,10 +91,15 @@ Table rateAgainstOrderTable(const SweepResult& sweep);
 
 // The better of two successful cells: higher balanced accuracy, then fewer components (order),
 // then a faster fit. The report, the CLI and the workbench pick best cells with this one rule.
-bool betterCell(const SweepCellResult& a, const SweepCellResult& b);
+// Balanced accuracy counts only classes with at least minTestSteps test steps ("too few" classes
+// never decide); a cell with no such class loses to any cell that has one (when neither has one,
+// balanced accuracy over all classes decides).
+bool betterCell(const SweepCellResult& a, const SweepCellResult& b,
+                std::size_t minTestSteps = kMinTestSteps);
 // Index into sweep.cells of each group's best successful cell (betterCell; the first of equals),
 // in group order; groups without one are left out.
-std::vector<std::size_t> bestCells(const SweepResult& sweep);
+std::vector<std::size_t> bestCells(const SweepResult& sweep,
+                                   std::size_t minTestSteps = kMinTestSteps);
 
 // The best cell per group (bestCells): settings and metrics.
 Table bestCellsTable(const SweepResult& sweep);
@@ -128,8 +137,11 @@ std::vector<SweepFigure> sweepFigures(const SweepResult& sweep);
 Status writeSweepReport(const SweepResult& sweep, TableStyle style,
                         const std::filesystem::path& out,
                         const nlohmann::json& configuration = nlohmann::json::object());
-// A model file's (or bundle's) stored evaluation ("metrics" of each model, as written by
-// `tactile train`): confusion in counts and percent, rates, contact patterns, one-vs-rest table.
-std::string modelReport(const nlohmann::json& modelOrBundle, TableStyle style);
+// A model bundle's stored evaluation (of models trained from run files or a database alike):
+// settings, test counts and balanced accuracy per decision mode, held-out scenes, confusion in
+// counts and percent, per-class rates with counts and "too few" marks, contact patterns,
+// one-vs-rest table. A group without test rows says "no test data".
+std::string modelReport(const ModelBundle& bundle, TableStyle style,
+                        std::size_t minTestSteps = kMinTestSteps);
 
 }  // namespace tactile::analysis

@@ -30,6 +30,7 @@ struct SharedGroupData {
   ClassSelection selection;
   std::vector<Eigen::MatrixXd> perClass;  // training rows of each modelled class
   std::vector<std::string> names;
+  TransitionModel chain;  // from the training rows' label sequences
 };
 
 std::vector<SensorGroup> groupsOf(const SweepGrid& grid) {
@@ -51,29 +52,38 @@ double cellCost(const SweepCell& cell, std::size_t rows, int dim) {
   return static_cast<double>(rows) * k * perComponent;
 }
 
-SweepCellResult runCell(const SweepCell& cell, const SweepGrid& grid, const SharedGroupData& data,
-                        const ProgressFn& keepGoing) {
+// Fits the classifier of `cells` (cells equal but for the decision) once and scores each decision.
+std::vector<SweepCellResult> runCells(const std::vector<SweepCell>& cells, const SweepGrid& grid,
+                                      const SharedGroupData& data, const ProgressFn& keepGoing) {
   SweepCellResult r;
-  r.cell = cell;
+  r.cell = cells.front();
   r.trainRows = data.train.size();
   r.testRows = data.test.size();
   r.classes = data.selection.modelled;
   r.unmodelled = data.selection.unmodelled;
+  auto each = [&cells](const SweepCellResult& base) {
+    std::vector<SweepCellResult> out;
+    for (const SweepCell& c : cells) {
+      out.push_back(base);
+      out.back().cell = c;
+    }
+    return out;
+  };
   if (data.train.size() == 0) {
     r.reason = "no labelled contact samples";
-    return r;
+    return each(r);
   }
   if (data.perClass.empty()) {
     r.reason = "no class has enough samples (at least max(2, D))";
-    return r;
+    return each(r);
   }
-  const ClassifierOptions options = cellClassifierOptions(grid, cell);
+  const ClassifierOptions options = cellClassifierOptions(grid, cells.front());
   const ClassifierFit fit = trainClassifier(data.perClass, data.names, options, keepGoing);
   r.fitSeconds = fit.fitSeconds;
   r.warnings = fit.warnings;
   if (!fit.ok) {
     r.reason = fit.reason;
-    return r;
+    return each(r);
   }
   r.converged = true;
   for (std::size_t c = 0; c < fit.iterations.size(); ++c) {
@@ -82,16 +92,26 @@ SweepCellResult runCell(const SweepCell& cell, const SweepGrid& grid, const Shar
     if (c < fit.converged.size() && !fit.converged[c]) r.converged = false;
     if (c < fit.droppedComponents.size()) r.droppedComponents += fit.droppedComponents[c];
   }
+  bool temporal = false;
+  for (const SweepCell& c : cells)
+    temporal = temporal || c.decision != DecisionMode::Step;
   const GroupEvaluation ev =
-      evaluateClassifier(fit.model, data.selection.modelled, data.test, &data.testPatterns);
+      evaluateClassifier(fit.model, data.selection.modelled, data.test, &data.testPatterns,
+                         temporal ? &data.chain : nullptr);
   r.patterns = ev.patterns;
-  r.predictSeconds = ev.predictSeconds;
-  r.confusion = ev.confusion;
-  r.metrics = ev.metrics;
   r.meanLogLikelihood = ev.meanLogLikelihood;
   r.negInfRows = ev.negInfRows;
   r.ok = true;
-  return r;
+  std::vector<SweepCellResult> out = each(r);
+  for (SweepCellResult& o : out) {
+    const DecisionMode mode = o.cell.decision;
+    o.confusion = ev.byDecision[decisionIndex(mode)];
+    o.metrics = computeMetrics(o.confusion);
+    // The per-step evaluation, plus (for online and offline) the time of both filters.
+    o.predictSeconds = ev.predictSeconds + (mode == DecisionMode::Step ? 0.0 : ev.decideSeconds);
+    if (mode != DecisionMode::Step) o.patterns = ContactPatternTable{r.cell.group, {}};
+  }
+  return out;
 }
 
 }  // namespace
@@ -115,6 +135,13 @@ ClassifierOptions cellClassifierOptions(const SweepGrid& grid, const SweepCell& 
   return options;
 }
 
+namespace {
+std::vector<DecisionMode> decisionsOf(const SweepGrid& grid) {
+  if (grid.decisions.empty()) return {DecisionMode::Step};
+  return grid.decisions;
+}
+}  // namespace
+
 std::vector<SweepCell> expandGrid(const SweepGrid& grid) {
   std::vector<SweepCell> cells;
   for (SensorGroup g : groupsOf(grid)) {
@@ -132,7 +159,8 @@ std::vector<SweepCell> expandGrid(const SweepGrid& grid) {
           for (int order : grid.orders) {
             for (double floor : grid.varianceFloors) {
               for (std::uint64_t seed : grid.seeds) {
-                cells.push_back({g, m, order, form, floor, f, seed});
+                for (DecisionMode d : decisionsOf(grid))
+                  cells.push_back({g, m, order, form, floor, f, seed, d});
               }
             }
           }
@@ -165,6 +193,8 @@ SweepResult runSweep(const std::vector<LabelledRun>& train, const std::vector<La
       d.perClass.push_back(d.train.rowsOf(c));
       d.names.emplace_back(contactClassName(c));
     }
+    d.chain = estimateTransitions(classSequences(d.train, d.selection.modelled),
+                                  static_cast<int>(d.selection.modelled.size()));
     SweepDataSummary s;
     s.group = cell.group;
     s.features = cell.features;
@@ -178,13 +208,30 @@ SweepResult runSweep(const std::vector<LabelledRun>& train, const std::vector<La
   }
   result.extractSeconds = secondsSince(wallStart);
 
-  // Expensive cells first; the slot of each result is its grid position.
-  std::vector<std::size_t> order(cells.size());
-  std::iota(order.begin(), order.end(), 0);
-  std::vector<double> cost(cells.size());
+  // Fit jobs: cells equal but for the decision share one fit (they are adjacent in grid order).
+  std::vector<std::vector<std::size_t>> jobs;
   for (std::size_t i = 0; i < cells.size(); ++i) {
-    const SharedGroupData& d = shared.at(dataKey(cells[i].group, cells[i].features));
-    cost[i] = cellCost(cells[i], d.train.size(), d.train.dimension());
+    SweepCell key = cells[i];
+    bool joined = false;
+    if (!jobs.empty()) {
+      SweepCell last = cells[jobs.back().front()];
+      last.decision = key.decision;
+      joined = last == key;
+    }
+    if (joined) {
+      jobs.back().push_back(i);
+    } else {
+      jobs.push_back({i});
+    }
+  }
+  // Expensive jobs first; the slot of each result is its grid position.
+  std::vector<std::size_t> order(jobs.size());
+  std::iota(order.begin(), order.end(), 0);
+  std::vector<double> cost(jobs.size());
+  for (std::size_t j = 0; j < jobs.size(); ++j) {
+    const SweepCell& c = cells[jobs[j].front()];
+    const SharedGroupData& d = shared.at(dataKey(c.group, c.features));
+    cost[j] = cellCost(c, d.train.size(), d.train.dimension());
   }
   std::stable_sort(order.begin(), order.end(),
                    [&cost](std::size_t a, std::size_t b) { return cost[a] > cost[b]; });
@@ -192,7 +239,7 @@ SweepResult runSweep(const std::vector<LabelledRun>& train, const std::vector<La
   int threads =
       options.threads > 0 ? options.threads : static_cast<int>(std::thread::hardware_concurrency());
   threads =
-      std::max(1, std::min<int>(threads, static_cast<int>(std::max<std::size_t>(cells.size(), 1))));
+      std::max(1, std::min<int>(threads, static_cast<int>(std::max<std::size_t>(jobs.size(), 1))));
   result.threads = threads;
 
   std::vector<std::optional<SweepCellResult>> slots(cells.size());
@@ -215,15 +262,21 @@ SweepResult runSweep(const std::vector<LabelledRun>& train, const std::vector<La
     while (!cancel.load()) {
       const std::size_t k = next.fetch_add(1);
       if (k >= order.size()) return;
-      const std::size_t i = order[k];
-      SweepCellResult r =
-          runCell(cells[i], grid, shared.at(dataKey(cells[i].group, cells[i].features)), keepGoing);
+      const std::vector<std::size_t>& job = jobs[order[k]];
+      std::vector<SweepCell> jobCells;
+      for (std::size_t i : job)
+        jobCells.push_back(cells[i]);
+      const SweepCell& first = jobCells.front();
+      std::vector<SweepCellResult> rs =
+          runCells(jobCells, grid, shared.at(dataKey(first.group, first.features)), keepGoing);
       // A fit stopped by cancellation is not a result.
-      if (cancel.load() && !r.ok) return;
+      if (cancel.load() && !rs.front().ok) return;
       std::lock_guard<std::mutex> lock(progressMutex);
-      slots[i] = r;
-      ++done;
-      if (options.onCell) options.onCell(r);
+      for (std::size_t n = 0; n < job.size(); ++n) {
+        slots[job[n]] = rs[n];
+        ++done;
+        if (options.onCell) options.onCell(rs[n]);
+      }
       if (!cancel.load() && progress && !progress(done, cells.size())) cancel = true;
     }
   };
@@ -240,6 +293,85 @@ SweepResult runSweep(const std::vector<LabelledRun>& train, const std::vector<La
   }
   result.wallSeconds = secondsSince(wallStart);
   return result;
+}
+
+SweepResult runSweepByScene(const std::vector<LabelledRun>& runs,
+                            const std::vector<std::string>& sceneOfRun, const SweepGrid& grid,
+                            const SweepOptions& options, const ProgressFn& progress) {
+  const auto wallStart = Clock::now();
+  std::vector<std::string> scenes;
+  for (const std::string& s : sceneOfRun)
+    if (std::find(scenes.begin(), scenes.end(), s) == scenes.end()) scenes.push_back(s);
+  SweepResult merged;
+  merged.grid = grid;
+  const std::size_t cellCount = expandGrid(grid).size();
+  for (std::size_t f = 0; f < scenes.size(); ++f) {
+    std::vector<LabelledRun> train, test;
+    for (std::size_t r = 0; r < runs.size() && r < sceneOfRun.size(); ++r)
+      (sceneOfRun[r] == scenes[f] ? test : train).push_back(runs[r]);
+    SweepOptions foldOptions;
+    foldOptions.threads = options.threads;
+    const ProgressFn foldProgress = [&](std::size_t done, std::size_t) {
+      return !progress || progress(f * cellCount + done, scenes.size() * cellCount);
+    };
+    SweepResult fold = runSweep(train, test, grid, foldOptions, foldProgress);
+    merged.threads = fold.threads;
+    merged.extractSeconds += fold.extractSeconds;
+    if (f == 0) {
+      merged.cells = fold.cells;
+      for (SweepCellResult& c : merged.cells) {
+        c.scenes = {{scenes[f], c.confusion}};
+        c.trainRows = fold.cells.empty() ? 0 : c.trainRows;
+      }
+      merged.data = fold.data;
+    } else {
+      for (SweepCellResult& c : merged.cells) {
+        const auto it = std::find_if(fold.cells.begin(), fold.cells.end(),
+                                     [&c](const SweepCellResult& o) { return o.cell == c.cell; });
+        if (it == fold.cells.end()) continue;
+        if (!it->ok) {
+          c.scenes.emplace_back(scenes[f], ConfusionMatrix());
+          continue;
+        }
+        if (!c.ok) {
+          // The first scenes gave no model; this one does: keep its settings' outcome.
+          const auto previous = c.scenes;
+          c = *it;
+          c.scenes = previous;
+          c.confusion = ConfusionMatrix();
+        } else {
+          c.fitSeconds += it->fitSeconds;
+          c.predictSeconds += it->predictSeconds;
+          c.iterations += it->iterations;
+          c.maxIterations = std::max(c.maxIterations, it->maxIterations);
+          c.converged = c.converged && it->converged;
+          c.testRows += it->testRows;
+          c.negInfRows += it->negInfRows;
+          c.droppedComponents += it->droppedComponents;
+        }
+        c.confusion.merge(it->confusion);
+        c.scenes.emplace_back(scenes[f], it->confusion);
+      }
+      for (std::size_t d = 0; d < merged.data.size() && d < fold.data.size(); ++d) {
+        merged.data[d].testRows += fold.data[d].testRows;
+        for (std::size_t k = 0; k < kContactClassCount; ++k)
+          merged.data[d].testCounts[k] += fold.data[d].testCounts[k];
+      }
+    }
+    if (fold.cancelled) {
+      merged.cancelled = true;
+      break;
+    }
+  }
+  for (SweepCellResult& c : merged.cells) {
+    c.metrics = computeMetrics(c.confusion);
+    // A pooled mean log-likelihood over scenes is not kept (each fold has its own models).
+    if (scenes.size() > 1) c.meanLogLikelihood.reset();
+    c.patterns = ContactPatternTable{c.cell.group, {}};
+    if (options.onCell) options.onCell(c);
+  }
+  merged.wallSeconds = secondsSince(wallStart);
+  return merged;
 }
 
 namespace {
@@ -262,6 +394,65 @@ json classCountsToJson(const std::array<std::size_t, kContactClassCount>& counts
     }
   }
   return out;
+}
+
+json sweepCellSettingsToJson(const SweepCell& cell) {
+  json c;
+  c["group"] = groupInfo(cell.group).shortName;
+  c["method"] = classifierMethodName(cell.method);
+  c["order"] = cell.order;
+  c["covariance"] = covarianceFormName(cell.form);
+  c["floor"] = cell.varianceFloor;
+  c["features"] = featureKindName(cell.features);
+  c["seed"] = cell.seed;
+  c["decision"] = decisionModeName(cell.decision);
+  return c;
+}
+
+json sweepCellToJson(const SweepCellResult& r) {
+  json c = sweepCellSettingsToJson(r.cell);
+  c["ok"] = r.ok;
+  if (!r.ok) c["reason"] = r.reason;
+  c["classes"] = classList(r.classes);
+  c["unmodelled"] = classList(r.unmodelled);
+  c["train_rows"] = r.trainRows;
+  c["test_rows"] = r.testRows;
+  c["fit_s"] = r.fitSeconds;
+  c["predict_s"] = r.predictSeconds;
+  c["iterations"] = r.iterations;
+  c["max_iterations"] = r.maxIterations;
+  c["converged"] = r.converged;
+  // No test rows: nothing was scored, which is not a rate of 0.
+  const bool scored = r.confusion.total() > 0;
+  c["accuracy"] = scored ? json(r.metrics.accuracy) : json(nullptr);
+  c["balanced_accuracy"] = scored ? json(r.metrics.balancedAccuracy) : json(nullptr);
+  c["macro_f1"] = scored ? json(r.metrics.macroF1) : json(nullptr);
+  c["mean_loglik"] = r.meanLogLikelihood ? json(*r.meanLogLikelihood) : json(nullptr);
+  c["neg_inf_rows"] = r.negInfRows;
+  c["dropped_components"] = r.droppedComponents;
+  c["warnings"] = r.warnings;
+  json rates = json::object(), support = json::object();
+  for (const ClassMetrics& m : r.metrics.perClass) {
+    if (m.recall) rates[std::string(contactClassName(m.label))] = *m.recall;
+    if (m.support > 0) support[std::string(contactClassName(m.label))] = m.support;
+  }
+  c["rates"] = std::move(rates);
+  c["test_steps"] = std::move(support);
+  c["confusion"] = confusionToJson(r.confusion);
+  if (!r.patterns.rows.empty()) c["patterns"] = patternsToJson(r.patterns);
+  if (!r.scenes.empty()) {
+    json scenes = json::array();
+    for (const auto& [scene, confusion] : r.scenes) {
+      const bool any = confusion.total() > 0;
+      scenes.push_back({{"scene", scene},
+                        {"test_rows", confusion.total()},
+                        {"balanced_accuracy",
+                         any ? json(computeMetrics(confusion).balancedAccuracy) : json(nullptr)},
+                        {"confusion", confusionToJson(confusion)}});
+    }
+    c["scenes"] = std::move(scenes);
+  }
+  return c;
 }
 
 json sweepToJson(const SweepResult& result) {
@@ -289,6 +480,10 @@ json sweepToJson(const SweepResult& result) {
     features.push_back(featureKindName(f));
   grid["features"] = std::move(features);
   grid["seeds"] = g.seeds;
+  json decisions = json::array();
+  for (DecisionMode d : decisionsOf(g))
+    decisions.push_back(decisionModeName(d));
+  grid["decisions"] = std::move(decisions);
   grid["regularization"] = regularizationName(g.regularization);
   grid["init"] = gmmInitName(g.init);
   grid["restarts"] = g.restarts;
@@ -313,42 +508,8 @@ json sweepToJson(const SweepResult& result) {
   out["extract_s"] = result.extractSeconds;
   out["cancelled"] = result.cancelled;
   json cells = json::array();
-  for (const SweepCellResult& r : result.cells) {
-    json c;
-    c["group"] = groupInfo(r.cell.group).shortName;
-    c["method"] = classifierMethodName(r.cell.method);
-    c["order"] = r.cell.order;
-    c["covariance"] = covarianceFormName(r.cell.form);
-    c["floor"] = r.cell.varianceFloor;
-    c["features"] = featureKindName(r.cell.features);
-    c["seed"] = r.cell.seed;
-    c["ok"] = r.ok;
-    if (!r.ok) c["reason"] = r.reason;
-    c["classes"] = classList(r.classes);
-    c["unmodelled"] = classList(r.unmodelled);
-    c["train_rows"] = r.trainRows;
-    c["test_rows"] = r.testRows;
-    c["fit_s"] = r.fitSeconds;
-    c["predict_s"] = r.predictSeconds;
-    c["iterations"] = r.iterations;
-    c["max_iterations"] = r.maxIterations;
-    c["converged"] = r.converged;
-    c["accuracy"] = r.metrics.accuracy;
-    c["balanced_accuracy"] = r.metrics.balancedAccuracy;
-    c["macro_f1"] = r.metrics.macroF1;
-    c["mean_loglik"] = r.meanLogLikelihood ? json(*r.meanLogLikelihood) : json(nullptr);
-    c["neg_inf_rows"] = r.negInfRows;
-    c["dropped_components"] = r.droppedComponents;
-    c["warnings"] = r.warnings;
-    json rates = json::object();
-    for (const ClassMetrics& m : r.metrics.perClass) {
-      if (m.recall) rates[std::string(contactClassName(m.label))] = *m.recall;
-    }
-    c["rates"] = std::move(rates);
-    c["confusion"] = confusionToJson(r.confusion);
-    if (!r.patterns.rows.empty()) c["patterns"] = patternsToJson(r.patterns);
-    cells.push_back(std::move(c));
-  }
+  for (const SweepCellResult& r : result.cells)
+    cells.push_back(sweepCellToJson(r));
   out["cells"] = std::move(cells);
   return out;
 }
@@ -390,6 +551,13 @@ std::string readSweep(const json& value, SweepResult& out) {
     g.orders = grid.value("orders", std::vector<int>{});
     g.varianceFloors = grid.value("floors", std::vector<double>{});
     g.seeds = grid.value("seeds", std::vector<std::uint64_t>{});
+    // Sweeps from before decision modes scored the per-step decision only.
+    if (grid.contains("decisions")) {
+      if (!parseList(grid, "decisions", g.decisions, parseDecisionMode))
+        return "grid: bad 'decisions'";
+    } else {
+      g.decisions = {DecisionMode::Step};
+    }
     const SweepGrid defaults;
     const auto reg = parseRegularization(
         grid.value("regularization", std::string(regularizationName(defaults.regularization))));
@@ -446,7 +614,13 @@ std::string readSweep(const json& value, SweepResult& out) {
                 *form,
                 c.at("floor").get<double>(),
                 *features,
-                c.value("seed", std::uint64_t{1})};
+                c.value("seed", std::uint64_t{1}),
+                DecisionMode::Step};
+      if (c.contains("decision")) {
+        const auto d = parseDecisionMode(c.value("decision", std::string()));
+        if (!d) return where + "unknown decision";
+        r.cell.decision = *d;
+      }
       r.ok = c.at("ok").get<bool>();
       r.reason = c.value("reason", "");
       for (const auto& [key, list] :
@@ -475,6 +649,12 @@ std::string readSweep(const json& value, SweepResult& out) {
       r.patterns.group = r.cell.group;
       if (c.contains("patterns") && !patternsFromJson(c["patterns"], r.cell.group, r.patterns))
         return where + "bad patterns";
+      for (const json& sc : c.value("scenes", json::array())) {
+        ConfusionMatrix m;
+        if (!confusionFromJson(sc.value("confusion", json::object()), m))
+          return where + "bad scene confusion";
+        r.scenes.emplace_back(sc.value("scene", std::string()), m);
+      }
       r.metrics = computeMetrics(r.confusion);
       out.cells.push_back(std::move(r));
     }

@@ -20,6 +20,7 @@
 #include "analysis/features.h"
 #include "analysis/gmm.h"
 #include "analysis/metrics.h"
+#include "analysis/temporal.h"
 #include "base/error.h"
 #include "base/progress.h"
 
@@ -34,6 +35,9 @@ struct SweepGrid {
   std::vector<double> varianceFloors{0.01, 0.03, 0.1};
   std::vector<FeatureKind> features{FeatureKind::Normal};
   std::vector<std::uint64_t> seeds{1};
+  // Decision modes scored (temporal.h): cells that differ only in the decision share one fit;
+  // online and offline use the class chain estimated from the training rows.
+  std::vector<DecisionMode> decisions{DecisionMode::Step};
   // Settings shared by every cell.
   Regularization regularization = Regularization::Floor;
   GmmInit init = GmmInit::KMeansPlusPlus;
@@ -53,13 +57,18 @@ struct SweepCell {
   double varianceFloor = 0.0;
   FeatureKind features = FeatureKind::Normal;
   std::uint64_t seed = 1;
+  DecisionMode decision = DecisionMode::Step;
+
+  // Same cell (every setting equal).
+  bool operator==(const SweepCell&) const = default;
 };
 
 // The classifier settings of one cell: its own settings with the grid's shared ones, one thread
 // (results do not depend on it). A model trained with them reproduces the cell.
 ClassifierOptions cellClassifierOptions(const SweepGrid& grid, const SweepCell& cell);
 
-// Cells of a grid in a fixed order (group, features, method, form, order, variance floor, seed).
+// Cells of a grid in a fixed order (group, features, method, form, order, variance floor, seed,
+// decision).
 std::vector<SweepCell> expandGrid(const SweepGrid& grid);
 
 struct SweepCellResult {
@@ -71,10 +80,10 @@ struct SweepCellResult {
   std::size_t trainRows = 0;
   std::size_t testRows = 0;
   double fitSeconds = 0.0;
-  double predictSeconds = 0.0;
-  int iterations = 0;      // sum over the classes' fits
-  int maxIterations = 0;   // largest single class fit
-  bool converged = false;  // every class fit converged
+  double predictSeconds = 0.0;  // per-step evaluation, plus the filter for online / offline
+  int iterations = 0;           // sum over the classes' fits
+  int maxIterations = 0;        // largest single class fit
+  bool converged = false;       // every class fit converged
   ConfusionMatrix confusion;
   Metrics metrics;                          // on the test rows
   std::optional<double> meanLogLikelihood;  // held-out, nats (heldOutLogLikelihood, classifier.h)
@@ -84,6 +93,9 @@ struct SweepCellResult {
   // Test rows by on/off pattern of the group's sensors, true and predicted class (thesis table
   // 4.39).
   ContactPatternTable patterns;
+  // By-scene sweeps: each held-out scene's confusion (scored by the cell's settings trained
+  // without that scene); `confusion` is their sum.
+  std::vector<std::pair<std::string, ConfusionMatrix>> scenes;
 };
 
 // Per (group, features): how much data the cells saw.
@@ -123,9 +135,21 @@ SweepResult runSweep(const std::vector<LabelledRun>& train, const std::vector<La
                      const SweepGrid& grid, const SweepOptions& options = {},
                      const ProgressFn& progress = {});
 
+// Leave-one-scene-out: for each scene, every cell is trained on the runs of the other scenes and
+// scored on that scene's runs (sceneOfRun[i] names run i's scene); each cell's confusion is the
+// sum over held-out scenes, its fit and predict times the sums, and `scenes` lists each scene's
+// confusion. onCell sees each cell once, after its last scene. Needs two scenes or more.
+SweepResult runSweepByScene(const std::vector<LabelledRun>& runs,
+                            const std::vector<std::string>& sceneOfRun, const SweepGrid& grid,
+                            const SweepOptions& options = {}, const ProgressFn& progress = {});
+
 // SWEEP.json: {"format":"tactile-sweep","version":1,"grid":{...},"data":[...],"threads",
 // "wall_s","cancelled","cells":[{...}]}.
 nlohmann::json sweepToJson(const SweepResult& result);
+// One cell as written in SWEEP.json's "cells" (and stored per cell in a database), and its
+// settings alone (group, method, order, covariance, floor, features, seed, decision).
+nlohmann::json sweepCellToJson(const SweepCellResult& cell);
+nlohmann::json sweepCellSettingsToJson(const SweepCell& cell);
 // {"Wall": 12, "Corner": 3, ...}: the classes with a non-zero count.
 nlohmann::json classCountsToJson(const std::array<std::size_t, kContactClassCount>& counts);
 // Reads everything sweepToJson wrote (grid, data, run settings, cells; metrics are recomputed

@@ -130,52 +130,239 @@ Decisions summedLogProbabilityDecisions(const StepLikelihoods& steps, double thr
   return out;
 }
 
-HmmFilterResult hmmForwardFilter(const StepLikelihoods& steps, double stayProbability) {
-  const Eigen::Index n = steps.logLik.rows();
-  const Eigen::Index c = steps.logLik.cols();
-  const Eigen::VectorXd priors = priorsOf(steps);
-  HmmFilterResult result;
-  result.logPosterior = Eigen::MatrixXd::Constant(n, c, kNegInf);
-  result.decisions.resize(static_cast<std::size_t>(n));
-  if (c == 0) return result;
+void TransitionModel::set(Eigen::MatrixXd logA, Eigen::VectorXd logPi) {
+  logTransition = std::move(logA);
+  logInitial = std::move(logPi);
+  transition = logTransition.array().exp().matrix();
+}
+
+void hmmPredict(const Eigen::VectorXd& logAlpha, const TransitionModel& chain,
+                Eigen::VectorXd& logPredicted) {
+  const Eigen::Index c = logAlpha.size();
+  logPredicted.resize(c);
+  double m = kNegInf;
+  for (Eigen::Index i = 0; i < c; ++i)
+    m = std::max(m, logAlpha[i]);
+  const bool cached = chain.transition.rows() == c && chain.transition.cols() == c;
+  // Weights of the previous step relative to its largest entry: in (0, 1], exp(-inf) = 0.
+  double w[16];
+  std::vector<double> wide;
+  double* weights = w;
+  if (c > 16) {
+    wide.resize(static_cast<std::size_t>(c));
+    weights = wide.data();
+  }
+  for (Eigen::Index i = 0; i < c; ++i)
+    weights[i] = std::exp(logAlpha[i] - m);
+  for (Eigen::Index j = 0; j < c; ++j) {
+    double sum = 0.0;
+    for (Eigen::Index i = 0; i < c; ++i) {
+      const double a = cached ? chain.transition(i, j) : std::exp(chain.logTransition(i, j));
+      sum += weights[i] * a;
+    }
+    logPredicted[j] = sum > 0.0 ? m + std::log(sum) : kNegInf;
+  }
+}
+
+TransitionModel estimateTransitions(const std::vector<std::vector<int>>& sequences, int classes,
+                                    double pseudoCount) {
+  TransitionModel m;
+  const Eigen::Index c = std::max(classes, 0);
+  const double a =
+      pseudoCount > 0.0 && std::isfinite(pseudoCount) ? pseudoCount : kTransitionPseudoCount;
+  m.pseudoCount = a;
+  m.counts = Eigen::MatrixXd::Zero(c, c);
+  m.initialCounts = Eigen::VectorXd::Zero(c);
+  for (const std::vector<int>& seq : sequences) {
+    int previous = -1;
+    for (const int k : seq) {
+      const int now = k >= 0 && k < classes ? k : -1;
+      if (now >= 0) {
+        if (previous >= 0) {
+          m.counts(previous, now) += 1.0;
+        } else {
+          m.initialCounts[now] += 1.0;
+        }
+      }
+      previous = now;
+    }
+  }
+  Eigen::MatrixXd logA(c, c);
+  Eigen::VectorXd logPi(c);
+  const double ca = static_cast<double>(c) * a;
+  double startTotal = 0.0;
+  for (Eigen::Index j = 0; j < c; ++j)
+    startTotal += m.initialCounts[j];
+  for (Eigen::Index i = 0; i < c; ++i) {
+    double rowTotal = 0.0;
+    for (Eigen::Index j = 0; j < c; ++j)
+      rowTotal += m.counts(i, j);
+    for (Eigen::Index j = 0; j < c; ++j)
+      logA(i, j) = std::log(m.counts(i, j) + a) - std::log(rowTotal + ca);
+    logPi[i] = std::log(m.initialCounts[i] + a) - std::log(startTotal + ca);
+  }
+  m.set(std::move(logA), std::move(logPi));
+  return m;
+}
+
+TransitionModel stayTransitions(int classes, double stayProbability,
+                                const Eigen::VectorXd& logInitial) {
+  TransitionModel m;
+  const Eigen::Index c = std::max(classes, 0);
   const double stay = std::clamp(stayProbability, 0.0, 1.0);
   const double logStay = std::log(stay);  // -inf when stay = 0
   const double logMove = c > 1 ? std::log((1.0 - stay) / static_cast<double>(c - 1)) : kNegInf;
+  Eigen::MatrixXd logA = Eigen::MatrixXd::Constant(c, c, logMove);
+  for (Eigen::Index i = 0; i < c; ++i)
+    logA(i, i) = c > 1 ? logStay : 0.0;
+  m.set(std::move(logA),
+        logInitial.size() == c
+            ? logInitial
+            : Eigen::VectorXd::Constant(c, c > 0 ? -std::log(static_cast<double>(c)) : 0.0));
+  return m;
+}
+
+namespace {
+
+// The evidence of one step: its log-likelihoods, or no evidence (zeros) when every class is -inf
+// (or NaN), so that the chain alone carries the belief through an underflowing step.
+Eigen::VectorXd evidenceOf(const StepLikelihoods& steps, Eigen::Index t) {
+  Eigen::VectorXd l = steps.logLik.row(t).transpose();
+  bool any = false;
+  for (Eigen::Index j = 0; j < l.size(); ++j) {
+    if (std::isnan(l[j])) l[j] = kNegInf;
+    any = any || l[j] > kNegInf;
+  }
+  if (!any) l.setZero();
+  return l;
+}
+
+// Normalises `joint` in place (log space); when it cannot be normalised (every entry -inf: the
+// chain forbids every state the evidence allows) falls back to `fallback`, normalised, then to
+// `last`.
+void normalise(Eigen::VectorXd& joint, const Eigen::VectorXd& fallback,
+               const Eigen::VectorXd& last) {
+  const double z = logSumExp(joint);
+  if (std::isfinite(z)) {
+    joint.array() -= z;
+    return;
+  }
+  const double zf = logSumExp(fallback);
+  if (std::isfinite(zf)) {
+    joint = fallback.array() - zf;
+    return;
+  }
+  joint = last;
+}
+
+}  // namespace
+
+HmmFilterResult hmmForward(const StepLikelihoods& steps, const TransitionModel& chain) {
+  const Eigen::Index n = steps.logLik.rows();
+  const Eigen::Index c = steps.logLik.cols();
+  HmmFilterResult result;
+  result.logPosterior = Eigen::MatrixXd::Constant(n, c, kNegInf);
+  result.decisions.resize(static_cast<std::size_t>(n));
+  if (c == 0 || chain.classCount() != c) return result;
+  const Eigen::VectorXd uniform = Eigen::VectorXd::Constant(c, -std::log(static_cast<double>(c)));
   Eigen::VectorXd alpha;  // log posterior of the previous step; empty at an episode start
   Eigen::VectorXd predicted(c);
-  Eigen::VectorXd terms(c);
   for (Eigen::Index t = 0; t < n; ++t) {
     if (!isObserved(steps, t)) {
       alpha.resize(0);
       continue;
     }
     if (alpha.size() == 0) {
-      predicted = priors;
-    } else if (c == 1) {
-      predicted.setZero();
+      predicted = chain.logInitial;
     } else {
-      // predicted(j) = logsumexp_i(alpha(i) + log A(i, j))
-      for (Eigen::Index j = 0; j < c; ++j) {
-        for (Eigen::Index i = 0; i < c; ++i)
-          terms[i] = alpha[i] + (i == j ? logStay : logMove);
-        predicted[j] = logSumExp(terms);
-      }
+      hmmPredict(alpha, chain, predicted);
     }
-    Eigen::VectorXd joint = steps.logLik.row(t).transpose() + predicted;
-    const double z = logSumExp(joint);
-    if (std::isfinite(z)) {
-      joint.array() -= z;
-    } else {
-      // Every class underflowed (or the transitions forbid every state): keep the prediction,
-      // renormalised, so the filter stays defined.
-      joint = predicted.array() - logSumExp(predicted);
-      if (!std::isfinite(joint[argmaxOf(joint)])) joint = priors;
-    }
+    Eigen::VectorXd joint = evidenceOf(steps, t) + predicted;
+    normalise(joint, predicted, uniform);
     alpha = joint;
     result.logPosterior.row(t) = alpha.transpose();
     result.decisions[static_cast<std::size_t>(t)] = argmaxOf(alpha);
   }
   return result;
+}
+
+HmmFilterResult hmmForwardBackward(const StepLikelihoods& steps, const TransitionModel& chain) {
+  HmmFilterResult result = hmmForward(steps, chain);
+  const Eigen::Index n = steps.logLik.rows();
+  const Eigen::Index c = steps.logLik.cols();
+  if (c == 0 || chain.classCount() != c) return result;
+  Eigen::VectorXd beta(c), next(c), terms(c);
+  bool haveNext = false;  // whether step t+1 belongs to the same episode
+  // Backwards over the steps: beta_t(i) = logsumexp_j(logA(i, j) + l_{t+1}(j) + beta_{t+1}(j)),
+  // normalised at every step (any per-step constant cancels in gamma).
+  for (Eigen::Index t = n - 1; t >= 0; --t) {
+    if (!isObserved(steps, t)) {
+      haveNext = false;
+      continue;
+    }
+    if (!haveNext) {
+      beta.setZero();
+    } else {
+      // beta_t(i) = mm + log(sum_j A(i, j) exp(message_j - mm)), mm = max message.
+      const Eigen::VectorXd message = evidenceOf(steps, t + 1) + next;
+      double mm = kNegInf;
+      for (Eigen::Index j = 0; j < c; ++j)
+        mm = std::max(mm, message[j]);
+      for (Eigen::Index j = 0; j < c; ++j)
+        terms[j] = std::isfinite(mm) ? std::exp(message[j] - mm) : 0.0;
+      const bool cached = chain.transition.rows() == c && chain.transition.cols() == c;
+      for (Eigen::Index i = 0; i < c; ++i) {
+        double sum = 0.0;
+        for (Eigen::Index j = 0; j < c; ++j)
+          sum += (cached ? chain.transition(i, j) : std::exp(chain.logTransition(i, j))) * terms[j];
+        beta[i] = sum > 0.0 ? mm + std::log(sum) : kNegInf;
+      }
+      const double z = logSumExp(beta);
+      if (std::isfinite(z)) {
+        beta.array() -= z;
+      } else {
+        beta.setZero();  // the future forbids every state: it carries no information
+      }
+    }
+    Eigen::VectorXd gamma = result.logPosterior.row(t).transpose() + beta;
+    const Eigen::VectorXd filtered = result.logPosterior.row(t).transpose();
+    normalise(gamma, filtered, filtered);
+    result.logPosterior.row(t) = gamma.transpose();
+    result.decisions[static_cast<std::size_t>(t)] = argmaxOf(gamma);
+    next = beta;
+    haveNext = true;
+  }
+  return result;
+}
+
+std::string_view decisionModeName(DecisionMode mode) {
+  switch (mode) {
+    case DecisionMode::Step:
+      return "step";
+    case DecisionMode::Online:
+      return "online";
+    case DecisionMode::Offline:
+      return "offline";
+  }
+  return "step";
+}
+
+std::optional<DecisionMode> parseDecisionMode(std::string_view name) {
+  for (DecisionMode m : kDecisionModes)
+    if (decisionModeName(m) == name) return m;
+  return std::nullopt;
+}
+
+Decisions decide(const StepLikelihoods& steps, const TransitionModel& chain, DecisionMode mode) {
+  const bool haveChain = !chain.empty() && chain.classCount() == steps.logLik.cols();
+  if (mode == DecisionMode::Step || !haveChain) return argmaxDecisions(steps);
+  if (mode == DecisionMode::Online) return hmmForward(steps, chain).decisions;
+  return hmmForwardBackward(steps, chain).decisions;
+}
+
+HmmFilterResult hmmForwardFilter(const StepLikelihoods& steps, double stayProbability) {
+  return hmmForward(steps, stayTransitions(static_cast<int>(steps.logLik.cols()), stayProbability,
+                                           priorsOf(steps)));
 }
 
 }  // namespace tactile::analysis

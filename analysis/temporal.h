@@ -14,6 +14,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <optional>
+#include <string_view>
 #include <vector>
 
 namespace tactile::analysis {
@@ -55,6 +56,80 @@ struct HmmFilterResult {
   Decisions decisions;
 };
 HmmFilterResult hmmForwardFilter(const StepLikelihoods& steps, double stayProbability);
+
+// A hidden Markov model over one group's classes (thesis 4.6): the classes are the hidden states,
+// the classifier's per-class log-likelihoods the emissions. A contact episode starts from
+// `logInitial`; each next step of contact moves from class i to class j with probability
+// exp(logTransition(i, j)). Empty (size 0) means "no transitions stored".
+struct TransitionModel {
+  Eigen::MatrixXd logTransition;  // C x C, rows sum to 1 in probability
+  Eigen::VectorXd logInitial;     // C, sums to 1 in probability
+  double pseudoCount = 0.0;       // the Dirichlet prior the counts were smoothed with
+  Eigen::MatrixXd counts;         // C x C transition counts it was estimated from (may be empty)
+  Eigen::VectorXd initialCounts;  // C episode-start counts (may be empty)
+  Eigen::MatrixXd transition;     // exp(logTransition), kept for the filter's inner loop
+
+  // Sets logTransition and logInitial (and the cached probabilities).
+  void set(Eigen::MatrixXd logA, Eigen::VectorXd logPi);
+  int classCount() const { return static_cast<int>(logInitial.size()); }
+  bool empty() const { return logInitial.size() == 0; }
+};
+
+// The pseudo-count added to every transition and every start count when estimating transitions:
+// an add-one (Dirichlet(1, ..., 1)) prior, so a transition never seen in training keeps a small
+// probability, 1 / (n_i + C) for a class seen n_i times followed by a step of contact.
+inline constexpr double kTransitionPseudoCount = 1.0;
+
+// Counts of class-to-class moves in label sequences: one sequence per run, one entry per step,
+// the class index (0 .. classes-1) or -1 where the step is not a scored contact step (no contact,
+// unlabelled, or a class without a model). A move t-1 -> t is counted when both are >= 0; an
+// entry >= 0 after a -1 (or at the start) counts as an episode start. The smoothed estimate is
+//   A(i, j) = (n_ij + a) / (sum_k n_ik + C a),   pi(j) = (s_j + a) / (sum_k s_k + C a),
+// with a = pseudoCount > 0 (a prior that keeps unseen moves possible).
+TransitionModel estimateTransitions(const std::vector<std::vector<int>>& sequences, int classes,
+                                    double pseudoCount = kTransitionPseudoCount);
+
+// The fixed "stay" chain: A(i, i) = stay, the rest spread evenly, starting from `logInitial`
+// (the classifier's log priors; equal when empty).
+TransitionModel stayTransitions(int classes, double stayProbability,
+                                const Eigen::VectorXd& logInitial = {});
+
+// One prediction step of the chain: logPredicted(j) = log sum_i exp(logAlpha(i)) A(i, j),
+// computed as m + log(sum_i exp(logAlpha(i) - m) A(i, j)) with m = max logAlpha (C exponentials
+// per step, not C^2). logAlpha must have a finite entry.
+void hmmPredict(const Eigen::VectorXd& logAlpha, const TransitionModel& chain,
+                Eigen::VectorXd& logPredicted);
+
+// Forward filter (online, causal: the posterior at t uses steps <= t only) with the given chain.
+// Episodes (runs of observed steps) start from logInitial; the step priors of `steps` are not
+// used. A step whose likelihoods are all -inf carries no evidence (its likelihood row is taken as
+// 0). Returns the filtered log posteriors (rows of unobserved steps -inf) and their argmax.
+HmmFilterResult hmmForward(const StepLikelihoods& steps, const TransitionModel& chain);
+
+// Forward-backward (offline: the posterior at t uses the whole episode): log gamma_t(j) =
+// log alpha_t(j) + log beta_t(j) - log Z, per episode, log space throughout. Same conventions as
+// hmmForward.
+HmmFilterResult hmmForwardBackward(const StepLikelihoods& steps, const TransitionModel& chain);
+
+// How a model's per-step evidence becomes a decision:
+//  - step: the per-step argmax of log-likelihood + log prior (no memory);
+//  - online: the HMM forward filter's argmax (causal: what a navigator may use at step t);
+//  - offline: the forward-backward posterior's argmax (the whole contact episode: what an
+//    annotator reviews; not causal).
+enum class DecisionMode : std::uint8_t { Step, Online, Offline };
+inline constexpr DecisionMode kDecisionModes[] = {DecisionMode::Step, DecisionMode::Online,
+                                                  DecisionMode::Offline};
+// "step", "online", "offline".
+std::string_view decisionModeName(DecisionMode mode);
+std::optional<DecisionMode> parseDecisionMode(std::string_view name);
+// True for the modes a navigator may use (step, online).
+inline bool isCausal(DecisionMode mode) {
+  return mode != DecisionMode::Offline;
+}
+
+// The decisions of one mode. Without a chain (empty, or of another class count) online and
+// offline fall back to the per-step argmax.
+Decisions decide(const StepLikelihoods& steps, const TransitionModel& chain, DecisionMode mode);
 
 // log(sum_i exp(v_i)) computed stably; -inf for an empty or all -inf vector.
 double logSumExp(const Eigen::Ref<const Eigen::VectorXd>& v);

@@ -55,8 +55,27 @@ GroupTrainResult trainGroupModel(const GroupDataSet& data, const TrainSettings& 
                      : settings.classifier.gmm.form;
   m.varianceFloor = settings.classifier.gmm.varianceFloor;
   m.regularization = settings.classifier.gmm.reg;
+  m.transitions =
+      estimateTransitions(classSequences(data, m.classes), static_cast<int>(m.classes.size()));
+  m.decision = isCausal(settings.decision) ? settings.decision : DecisionMode::Online;
   result.ok = true;
   return result;
+}
+
+std::vector<std::vector<int>> classSequences(const GroupDataSet& data,
+                                             const std::vector<ContactClass>& classes) {
+  std::array<int, kContactClassCount> column{};
+  column.fill(-1);
+  for (std::size_t i = 0; i < classes.size(); ++i)
+    column[static_cast<std::size_t>(classes[i])] = static_cast<int>(i);
+  std::vector<std::vector<int>> out(1);
+  for (std::size_t i = 0; i < data.size(); ++i) {
+    const bool follows =
+        i > 0 && data.runIndex[i] == data.runIndex[i - 1] && data.step[i] == data.step[i - 1] + 1;
+    if (i > 0 && !follows) out.back().push_back(-1);
+    out.back().push_back(column[static_cast<std::size_t>(data.y[i])]);
+  }
+  return out;
 }
 
 GroupSettings GroupSettings::same(const TrainSettings& settings) {
@@ -133,7 +152,8 @@ std::vector<std::string> rowPatterns(const GroupDataSet& data,
 GroupEvaluation evaluateClassifier(const ClassModelSet& classifier,
                                    const std::vector<ContactClass>& classes,
                                    const GroupDataSet& data,
-                                   const std::vector<std::string>* rowPatterns) {
+                                   const std::vector<std::string>* rowPatterns,
+                                   const TransitionModel* chain) {
   GroupEvaluation ev;
   ev.zeroRows = data.zeroRows;
   ev.patterns.group = data.group;
@@ -160,6 +180,40 @@ GroupEvaluation evaluateClassifier(const ClassModelSet& classifier,
   }
   if (rowPatterns != nullptr) ev.patterns.sortRows();
   ev.metrics = computeMetrics(ev.confusion);
+  ev.byDecision.fill(ev.confusion);
+  if (chain != nullptr && !chain->empty() &&
+      chain->classCount() == static_cast<int>(classes.size())) {
+    const auto decideStart = std::chrono::steady_clock::now();
+    // Adjacent rows (same run, next step) form one episode; a gap between rows is an
+    // unobserved separator step.
+    std::vector<Eigen::Index> stepOfRow(data.size());
+    Eigen::Index n = 0;
+    for (std::size_t i = 0; i < data.size(); ++i) {
+      const bool follows =
+          i > 0 && data.runIndex[i] == data.runIndex[i - 1] && data.step[i] == data.step[i - 1] + 1;
+      if (i > 0 && !follows) ++n;  // the separator
+      stepOfRow[i] = n++;
+    }
+    StepLikelihoods sl;
+    sl.logLik = Eigen::MatrixXd::Zero(n, logLik.cols());
+    sl.observed.assign(static_cast<std::size_t>(n), 0);
+    sl.logPriors = classifier.logPriors();
+    for (std::size_t i = 0; i < data.size(); ++i) {
+      sl.logLik.row(stepOfRow[i]) = logLik.row(static_cast<Eigen::Index>(i));
+      sl.observed[static_cast<std::size_t>(stepOfRow[i])] = 1;
+    }
+    for (DecisionMode mode : {DecisionMode::Online, DecisionMode::Offline}) {
+      const Decisions d = decide(sl, *chain, mode);
+      ConfusionMatrix& cm = ev.byDecision[decisionIndex(mode)];
+      cm = ConfusionMatrix();
+      for (std::size_t i = 0; i < data.size(); ++i) {
+        const std::optional<int>& k = d[static_cast<std::size_t>(stepOfRow[i])];
+        cm.add(data.y[i], classes[static_cast<std::size_t>(k.value_or(predicted[i]))]);
+      }
+    }
+    ev.decideSeconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - decideStart).count();
+  }
   const HeldOutLogLikelihood ll = heldOutLogLikelihood(logLik, truthColumn);
   ev.meanLogLikelihood = ll.mean;
   ev.negInfRows = ll.negInfRows;
@@ -179,9 +233,10 @@ GroupEvaluation evaluateClassifier(const ClassModelSet& classifier,
 
 GroupEvaluation evaluateGroupModel(const GroupModel& model, const GroupDataSet& data,
                                    const std::vector<LabelledRun>* runs) {
-  if (runs == nullptr) return evaluateClassifier(model.classifier, model.classes, data);
+  if (runs == nullptr)
+    return evaluateClassifier(model.classifier, model.classes, data, nullptr, &model.transitions);
   const std::vector<std::string> patterns = rowPatterns(data, *runs);
-  return evaluateClassifier(model.classifier, model.classes, data, &patterns);
+  return evaluateClassifier(model.classifier, model.classes, data, &patterns, &model.transitions);
 }
 
 json confusionToJson(const ConfusionMatrix& confusion) {
@@ -261,43 +316,6 @@ bool patternsFromJson(const json& value, SensorGroup group, ContactPatternTable&
     out.rows.push_back(std::move(row));
   }
   return true;
-}
-
-json evaluationToJson(const GroupEvaluation& ev) {
-  json out;
-  out["samples"] = ev.metrics.total;
-  out["zero_rows"] = ev.zeroRows;
-  out["accuracy"] = ev.metrics.accuracy;
-  out["balanced_accuracy"] = ev.metrics.balancedAccuracy;
-  out["macro_f1"] = ev.metrics.macroF1;
-  out["mean_loglik"] = ev.meanLogLikelihood ? json(*ev.meanLogLikelihood) : json(nullptr);
-  out["neg_inf_rows"] = ev.negInfRows;
-  out["predict_s"] = ev.predictSeconds;
-  json perClass = json::object();
-  for (const ClassMetrics& m : ev.metrics.perClass) {
-    json c;
-    c["support"] = m.support;
-    c["predicted"] = m.predicted;
-    c["recall"] = m.recall ? json(*m.recall) : json(nullptr);
-    c["precision"] = m.precision ? json(*m.precision) : json(nullptr);
-    c["f1"] = m.f1;
-    perClass[std::string(contactClassName(m.label))] = std::move(c);
-  }
-  out["per_class"] = std::move(perClass);
-  out["confusion"] = confusionToJson(ev.confusion);
-  if (!ev.patterns.rows.empty()) out["contact_patterns"] = patternsToJson(ev.patterns);
-  if (!ev.oneVsRest.empty()) {
-    json ovr = json::array();
-    for (const BinaryConfusion& b : ev.oneVsRest) {
-      ovr.push_back({{"class", contactClassName(b.positive)},
-                     {"tp", b.truePositive},
-                     {"fp", b.falsePositive},
-                     {"fn", b.falseNegative},
-                     {"tn", b.trueNegative}});
-    }
-    out["one_vs_rest"] = std::move(ovr);
-  }
-  return out;
 }
 
 void splitLabelledRuns(const std::vector<LabelledRun>& runs, double holdoutFraction,

@@ -22,6 +22,8 @@ namespace tactile::analysis {
 struct TrainSettings {
   FeatureKind features = FeatureKind::Normal;
   ClassifierOptions classifier;  // method, GMM options (order, form, floor, ...), priors
+  // The model's default decision (causal: step or online; offline is taken as online).
+  DecisionMode decision = DecisionMode::Online;
 };
 
 // Settings of each group's classifier, indexed by groupIndex().
@@ -59,7 +61,14 @@ struct GroupTrainResult {
   ClassSelection classes;
 };
 
-// Fits one model per modelled class of `data` (rows of that class).
+// The label sequences of a data set for transition counting (estimateTransitions): rows that
+// follow each other (same run, next step) continue a sequence; -1 separates sequences and stands
+// for a row whose class is not among `classes`.
+std::vector<std::vector<int>> classSequences(const GroupDataSet& data,
+                                             const std::vector<ContactClass>& classes);
+
+// Fits one model per modelled class of `data` (rows of that class), and the class chain from the
+// data's label sequences (classSequences, estimateTransitions).
 GroupTrainResult trainGroupModel(const GroupDataSet& data, const TrainSettings& settings,
                                  const ProgressFn& progress = {});
 
@@ -79,6 +88,10 @@ struct GroupEvaluation {
   ContactPatternTable patterns;
   // Thesis table 4.19 (Gaussian models with rest models only): one binary confusion per class.
   std::vector<BinaryConfusion> oneVsRest;
+  // The confusion of each decision mode (step = `confusion`; online and offline with a chain,
+  // else equal to step). Sequences are the data's runs of adjacent rows (classSequences).
+  std::array<ConfusionMatrix, kDecisionModeCount> byDecision;
+  double decideSeconds = 0.0;  // the online and offline decisions
 };
 
 // `runs` are the runs the data set was built from (for the contact patterns); may be null.
@@ -90,7 +103,8 @@ GroupEvaluation evaluateGroupModel(const GroupModel& model, const GroupDataSet& 
 GroupEvaluation evaluateClassifier(const ClassModelSet& classifier,
                                    const std::vector<ContactClass>& classes,
                                    const GroupDataSet& data,
-                                   const std::vector<std::string>* rowPatterns = nullptr);
+                                   const std::vector<std::string>* rowPatterns = nullptr,
+                                   const TransitionModel* chain = nullptr);
 
 // The on/off pattern (contactPattern) of every row of a data set built from `runs`.
 std::vector<std::string> rowPatterns(const GroupDataSet& data,
@@ -99,10 +113,63 @@ std::vector<std::string> rowPatterns(const GroupDataSet& data,
 nlohmann::json confusionToJson(const ConfusionMatrix& confusion);
 // Reads {"classes":[...],"counts":[[...]]}; false on a malformed value.
 bool confusionFromJson(const nlohmann::json& value, ConfusionMatrix& out);
-nlohmann::json evaluationToJson(const GroupEvaluation& evaluation);
 // [{"pattern","truth","predicted":{class: n}}]; the reader is false on a malformed value.
 nlohmann::json patternsToJson(const ContactPatternTable& patterns);
 bool patternsFromJson(const nlohmann::json& value, SensorGroup group, ContactPatternTable& out);
+
+// ---- the one training recipe: `tactile train` (run files and database) and the workbench ----
+
+// How a model is scored.
+enum class EvaluationSplit {
+  TrainingData,    // on the rows it was trained on (says nothing about new data)
+  TestRuns,        // on separate test runs
+  Holdout,         // on the last `holdout` fraction of each run's steps
+  LeaveOneRunOut,  // each run scored by a model trained on all the others
+  ByScene,         // each scene's runs scored by a model trained without that scene
+};
+// "training-data", "by-run", "holdout", "leave-one-run-out", "by-scene".
+std::string_view evaluationSplitName(EvaluationSplit split);
+// What the scores are on, in words ("test runs", "leave-one-scene-out", ...).
+std::string evaluatedOnText(EvaluationSplit split, double holdout);
+
+struct TrainJob {
+  // Runs to train on (for LeaveOneRunOut and ByScene: every run, each scored in turn) and, for
+  // TestRuns, the runs to score on; the references name them (and give their scenes) in the
+  // models' provenance. A run's scene is its reference's `scene`, or its name when empty.
+  std::vector<LabelledRun> runs;
+  std::vector<RunReference> runRefs;
+  std::vector<LabelledRun> testRuns;
+  std::vector<RunReference> testRunRefs;
+  EvaluationSplit split = EvaluationSplit::TestRuns;
+  double holdout = 0.0;             // Holdout: the fraction of each run's steps scored
+  std::vector<SensorGroup> groups;  // empty: all eight
+  GroupSettings settings = defaultGroupSettings();
+  // A group with fewer labelled contact rows than this for training, or with fewer than two
+  // classes that can be modelled, is skipped with a reason; the other groups train.
+  std::size_t minRowsPerGroup = 20;
+  // Provenance written into every model as is (label set / label file, program version);
+  // runs, split, settings and sample counts are filled in by the job.
+  ModelProvenance provenance;
+};
+
+struct GroupJobReport {
+  SensorGroup group = SensorGroup::Front;
+  bool trained = false;
+  std::string skippedBecause;  // when not trained
+  std::size_t samplesTrain = 0;
+  std::vector<std::string> warnings;
+};
+
+struct TrainJobOutcome {
+  ModelBundle bundle;                  // one model per trained group, evaluation and provenance
+  std::vector<GroupJobReport> groups;  // in the requested group order
+  std::string evaluatedOn;
+};
+
+// Trains every group on the job's runs and scores it as the split says (every decision mode),
+// fills each model's provenance and evaluation. Cancelled (progress false) is an error; so is a job
+// where no group could be trained (naming each group's reason).
+Result<TrainJobOutcome> trainAndEvaluate(const TrainJob& job, const ProgressFn& progress = {});
 
 // Splits each run's labelled steps in time: the first (1 - holdout) of its steps for training,
 // the rest for testing (a random row split would leak neighbouring, nearly identical steps).

@@ -37,8 +37,9 @@ StoredRun storedRun(RunDatabase::Impl& impl, std::int64_t runId) {
 
 // Sets the run's step count and recomputes its row checksum from the row as stored.
 void updateRunChecksum(RunDatabase::Impl& impl, std::int64_t runId, std::int64_t steps) {
-  impl.statement("UPDATE runs SET step_count = ?1, crc = tactile_run_crc(id, name, ?1, has_truth, "
-                 "metadata, extra_columns) WHERE id = ?2")
+  impl.statement(
+          "UPDATE runs SET step_count = ?1, crc = tactile_run_crc(id, name, ?1, has_truth, "
+          "metadata, extra_columns) WHERE id = ?2")
       .bind(1, steps)
       .bind(2, runId)
       .run();
@@ -107,15 +108,16 @@ void writeSummaryBlocks(RunDatabase::Impl& impl, std::int64_t runId, const RunDa
         }
       }
       const std::size_t bytes = encodeValues(values.data(), kSummaryValues, encoded.data());
-      impl.statement("INSERT OR REPLACE INTO step_blocks(run_id, level, block, minmax, crc) "
-                     "VALUES(?, ?, ?, ?, ?)")
+      impl.statement(
+              "INSERT OR REPLACE INTO step_blocks(run_id, level, block, minmax, crc) "
+              "VALUES(?, ?, ?, ?, ?)")
           .bind(1, runId)
           .bind(2, static_cast<std::int64_t>(level))
           .bind(3, static_cast<std::int64_t>(block))
           .bindBlob(4, encoded.data(), bytes)
-          .bind(5, static_cast<std::int64_t>(
-                       blockChecksum(runId, static_cast<std::int64_t>(level),
-                                     static_cast<std::int64_t>(block), encoded.data(), bytes)))
+          .bind(5, static_cast<std::int64_t>(blockChecksum(runId, static_cast<std::int64_t>(level),
+                                                           static_cast<std::int64_t>(block),
+                                                           encoded.data(), bytes)))
           .run();
     }
   }

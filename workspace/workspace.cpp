@@ -31,60 +31,11 @@ json runsJson(const std::vector<storage::RunInfo>& infos) {
   return out;
 }
 
-json settingsJson(const analysis::TrainSettings& s) {
-  const analysis::ClassifierOptions& c = s.classifier;
-  json out;
-  out["features"] = analysis::featureKindName(s.features);
-  out["method"] = analysis::classifierMethodName(c.method);
-  if (c.method == analysis::ClassifierMethod::Gmm) {
-    out["order"] = c.gmm.components;
-    out["covariance"] = analysis::covarianceFormName(c.gmm.form);
-    out["init"] = analysis::gmmInitName(c.gmm.init);
-    out["restarts"] = c.gmm.restarts;
-    out["max_iterations"] = c.gmm.maxIterations;
-    out["tolerance"] = c.gmm.tolerance;
-    out["tolerance_rule"] = analysis::convergenceRuleName(c.gmm.rule);
-  }
-  out["variance_floor"] = c.gmm.varianceFloor;
-  out["regularization"] = analysis::regularizationName(c.gmm.reg);
-  out["seed"] = c.gmm.seed;
-  out["priors"] = analysis::priorModeName(c.priors);
+std::vector<analysis::RunReference> runRefs(const std::vector<storage::RunInfo>& infos) {
+  std::vector<analysis::RunReference> out;
+  for (const storage::RunInfo& r : infos)
+    out.push_back({r.name, r.stepCount, r.checksum, r.scene});
   return out;
-}
-
-// Rows of `data` that came from run `runIndex` (or all the others).
-analysis::GroupDataSet rowsOfRun(const analysis::GroupDataSet& data, std::uint32_t runIndex,
-                                 bool keep) {
-  analysis::GroupDataSet out;
-  out.group = data.group;
-  out.kind = data.kind;
-  std::vector<Eigen::Index> rows;
-  for (std::size_t i = 0; i < data.size(); ++i) {
-    if ((data.runIndex[i] == runIndex) == keep) rows.push_back(static_cast<Eigen::Index>(i));
-  }
-  out.x.resize(static_cast<Eigen::Index>(rows.size()), data.x.cols());
-  for (std::size_t i = 0; i < rows.size(); ++i) {
-    const auto r = static_cast<std::size_t>(rows[i]);
-    out.x.row(static_cast<Eigen::Index>(i)) = data.x.row(rows[i]);
-    out.y.push_back(data.y[r]);
-    out.runIndex.push_back(data.runIndex[r]);
-    out.step.push_back(data.step[r]);
-  }
-  return out;
-}
-
-// Why a group's training data cannot give a model, or empty.
-std::string tooLittleData(const analysis::GroupDataSet& data, std::size_t minRows) {
-  if (data.size() < minRows) {
-    return std::to_string(data.size()) + " labelled contact rows for training (at least " +
-           std::to_string(minRows) + " needed)";
-  }
-  const analysis::ClassSelection classes = analysis::selectClasses(data);
-  if (classes.modelled.size() < 2) {
-    return "fewer than two classes with enough rows to model (" +
-           std::to_string(classes.modelled.size()) + ")";
-  }
-  return {};
 }
 
 std::vector<std::string> sorted(std::vector<std::string> v) {
@@ -98,11 +49,20 @@ std::vector<std::string> sorted(std::vector<std::string> v) {
 std::optional<SplitMode> parseSplitMode(std::string_view name) {
   if (name == "by-run") return SplitMode::ByRun;
   if (name == "leave-one-run-out") return SplitMode::LeaveOneRunOut;
+  if (name == "by-scene") return SplitMode::ByScene;
   return std::nullopt;
 }
 
 std::string_view splitModeName(SplitMode mode) {
-  return mode == SplitMode::ByRun ? "by-run" : "leave-one-run-out";
+  switch (mode) {
+    case SplitMode::ByRun:
+      return "by-run";
+    case SplitMode::LeaveOneRunOut:
+      return "leave-one-run-out";
+    case SplitMode::ByScene:
+      return "by-scene";
+  }
+  return "by-run";
 }
 
 std::string_view programVersion() {
@@ -460,7 +420,11 @@ Result<TrainOutcome> Workspace::train(const TrainRequest& request, const Progres
     for (const std::string& r : sorted(labelled))
       if (std::find(testRuns.begin(), testRuns.end(), r) == testRuns.end()) trainRuns.push_back(r);
   }
-  if (request.split == SplitMode::LeaveOneRunOut) {
+  if (request.split == SplitMode::ByScene) {
+    if (!testRuns.empty()) {
+      return failure("by-scene scores every scene in turn; give no test runs");
+    }
+  } else if (request.split == SplitMode::LeaveOneRunOut) {
     if (!testRuns.empty()) {
       return failure("leave-one-run-out scores every run in turn; give no test runs");
     }
@@ -492,107 +456,56 @@ Result<TrainOutcome> Workspace::train(const TrainRequest& request, const Progres
   outcome.trainRuns = trainRuns;
   outcome.testRuns = testRuns;
 
-  std::vector<SensorGroup> groups = request.groups;
-  if (groups.empty()) {
-    for (const GroupInfo& g : kSensorGroups)
-      groups.push_back(g.group);
-  }
-  json metrics = json::object();
-  std::size_t done = 0;
-  for (SensorGroup g : groups) {
-    if (progress && !progress(done, groups.size())) return failure("cancelled");
-    ++done;
+  analysis::TrainJob job;
+  job.runs = train->labelled;
+  job.runRefs = runRefs(train->infos);
+  job.testRuns = test.labelled;
+  job.testRunRefs = runRefs(test.infos);
+  job.split = request.split == SplitMode::LeaveOneRunOut ? analysis::EvaluationSplit::LeaveOneRunOut
+              : request.split == SplitMode::ByScene      ? analysis::EvaluationSplit::ByScene
+                                                         : analysis::EvaluationSplit::TestRuns;
+  job.groups = request.groups;
+  job.settings = request.settings;
+  job.minRowsPerGroup = request.minRowsPerGroup;
+  job.provenance.labelSet = request.labelSet;
+  job.provenance.programVersion = std::string(programVersion());
+  auto trained = analysis::trainAndEvaluate(job, progress);
+  if (!trained) return trained.error();
+  outcome.evaluatedOn = trained->evaluatedOn;
+  outcome.bundle = std::move(trained->bundle);
+  for (const analysis::GroupJobReport& r : trained->groups) {
     GroupTrainReport report;
-    report.group = g;
-    const std::string gName(groupInfo(g).shortName);
-    const analysis::GroupDataSet data =
-        analysis::buildGroupDataSet(train->labelled, g, request.settings.of(g).features);
-    report.samplesTrain = data.size();
-    if (std::string why = tooLittleData(data, request.minRowsPerGroup); !why.empty()) {
-      report.skippedBecause = why;
-      outcome.groups.push_back(std::move(report));
-      continue;
+    report.group = r.group;
+    report.trained = r.trained;
+    report.skippedBecause = r.skippedBecause;
+    report.samplesTrain = r.samplesTrain;
+    report.warnings = r.warnings;
+    if (const analysis::GroupModel* m = outcome.bundle.find(r.group)) {
+      const analysis::ModelEvaluation& e = m->evaluation;
+      report.samplesTest = e.samplesTest();
+      report.decision = m->decision;
+      report.accuracy = e.accuracy(m->decision);
+      report.balancedAccuracy = e.balancedAccuracy(m->decision);
+      for (analysis::DecisionMode mode : analysis::kDecisionModes)
+        report.balancedAccuracyByDecision[analysis::decisionIndex(mode)] = e.balancedAccuracy(mode);
+      report.sceneMean = analysis::meanSceneBalancedAccuracy(e.scenes, m->decision);
+      report.fitSeconds = e.fitSeconds;
     }
-    const analysis::TrainSettings& settings = request.settings.of(g);
-    analysis::GroupTrainResult tr = analysis::trainGroupModel(data, settings);
-    if (!tr.ok) {
-      report.skippedBecause = tr.reason;
-      outcome.groups.push_back(std::move(report));
-      continue;
-    }
-    for (ContactClass c : tr.classes.unmodelled) {
-      report.warnings.push_back("class " + std::string(contactClassName(c)) +
-                                " has too few samples to model");
-    }
-    for (const std::string& w : tr.fit.warnings)
-      report.warnings.push_back(w);
-    report.fitSeconds = tr.fit.fitSeconds;
-
-    analysis::ConfusionMatrix confusion;
-    if (request.split == SplitMode::LeaveOneRunOut) {
-      for (std::uint32_t r = 0; r < train->labelled.size(); ++r) {
-        const analysis::GroupDataSet fold = rowsOfRun(data, r, false);
-        const analysis::GroupDataSet held = rowsOfRun(data, r, true);
-        if (held.size() == 0 || !tooLittleData(fold, request.minRowsPerGroup).empty()) continue;
-        const analysis::GroupTrainResult foldModel = analysis::trainGroupModel(fold, settings);
-        if (!foldModel.ok) continue;
-        confusion.merge(analysis::evaluateGroupModel(foldModel.model, held).confusion);
-      }
-      report.samplesTest = confusion.total();
-    } else {
-      const analysis::GroupDataSet evalData =
-          testRuns.empty() ? data
-                           : analysis::buildGroupDataSet(test.labelled, g, settings.features);
-      const analysis::GroupEvaluation ev = analysis::evaluateGroupModel(tr.model, evalData);
-      confusion = ev.confusion;
-      report.samplesTest = evalData.size();
-    }
-    const analysis::Metrics m = analysis::computeMetrics(confusion);
-    report.accuracy = m.accuracy;
-    report.balancedAccuracy = m.balancedAccuracy;
-    report.trained = true;
-
-    json groupMetrics;
-    groupMetrics["evaluated_on"] = outcome.evaluatedOn;
-    groupMetrics["samples_train"] = report.samplesTrain;
-    groupMetrics["samples_test"] = report.samplesTest;
-    groupMetrics["accuracy"] = report.accuracy;
-    groupMetrics["balanced_accuracy"] = report.balancedAccuracy;
-    groupMetrics["confusion"] = analysis::confusionToJson(confusion);
-    groupMetrics["fit_s"] = report.fitSeconds;
-    groupMetrics["warnings"] = report.warnings;
-    tr.model.metrics = groupMetrics;
-    metrics[gName] = groupMetrics;
-    outcome.bundle.models.push_back(std::move(tr.model));
     outcome.groups.push_back(std::move(report));
   }
-  if (outcome.bundle.models.empty()) {
-    std::string why = "no group could be trained:";
-    for (const GroupTrainReport& r : outcome.groups)
-      why += " " + std::string(groupInfo(r.group).shortName) + ": " + r.skippedBecause + ";";
-    why.pop_back();
-    return failure(why);
-  }
+  outcome.provenance = analysis::bundleProvenanceToJson(outcome.bundle);
+  if (!request.store) return outcome;
+  return storeTrained(std::move(outcome), request);
+}
 
-  json provenance;
-  provenance["label_set"] = request.labelSet;
-  provenance["train_runs"] = runsJson(train->infos);
-  provenance["test_runs"] = runsJson(test.infos);
-  provenance["split"] = splitModeName(request.split);
-  provenance["evaluated_on"] = outcome.evaluatedOn;
-  provenance["program_version"] = programVersion();
-  // Each model carries its own group's settings; the bundle's provenance all of them by group.
-  json allSettings = json::object();
-  for (analysis::GroupModel& model : outcome.bundle.models) {
-    const json s = settingsJson(request.settings.of(model.group));
-    allSettings[std::string(groupInfo(model.group).shortName)] = s;
-    model.trainedOn = provenance;
-    model.trainedOn["settings"] = s;
-  }
-  provenance["settings"] = allSettings;
-  outcome.provenance = provenance;
-
+Result<TrainOutcome> Workspace::storeTrained(TrainOutcome outcome, const TrainRequest& request) {
   std::string name = request.modelName;
+  if (!name.empty()) {
+    if (auto taken = db_->modelInfo(name); taken) {
+      return failure("a model named '" + name +
+                     "' is already stored; choose another name or delete it first");
+    }
+  }
   if (name.empty()) {
     auto models = db_->listModels();
     if (!models) return models.error();
@@ -605,7 +518,8 @@ Result<TrainOutcome> Workspace::train(const TrainRequest& request, const Progres
     }
   }
   auto id = db_->addModel(name, dumpJson(analysis::bundleToJson(outcome.bundle)),
-                          dumpJson(provenance), dumpJson(metrics));
+                          dumpJson(outcome.provenance),
+                          dumpJson(analysis::bundleMetricsToJson(outcome.bundle)));
   if (!id) return id.error();
   outcome.modelName = name;
   outcome.modelId = id.value();
@@ -618,8 +532,18 @@ Result<SweepOutcome> Workspace::sweep(
     const ProgressFn& progress) {
   auto set = db_->findLabelSet(request.labelSet);
   if (!set) return set.error();
-  if (request.trainRuns.empty() || request.testRuns.empty()) {
-    return failure("a sweep needs training runs and test runs");
+  const bool byScene = request.split == SplitMode::ByScene;
+  if (request.split == SplitMode::LeaveOneRunOut) {
+    return failure("a sweep splits by run (training and test runs) or by scene");
+  }
+  if (byScene && !request.testRuns.empty()) {
+    return failure(
+        "a by-scene sweep scores every scene of the training runs in turn; give no "
+        "test runs");
+  }
+  if (request.trainRuns.empty() || (!byScene && request.testRuns.empty())) {
+    return failure(byScene ? "a by-scene sweep needs training runs"
+                           : "a sweep needs training runs and test runs");
   }
   for (const std::string& t : request.testRuns) {
     if (std::find(request.trainRuns.begin(), request.trainRuns.end(), t) !=
@@ -631,6 +555,18 @@ Result<SweepOutcome> Workspace::sweep(
   if (!train) return train.error();
   auto test = loadLabelled(set->id, request.testRuns);
   if (!test) return test.error();
+  std::vector<std::string> sceneOfRun;
+  if (byScene) {
+    std::set<std::string> distinct;
+    for (const storage::RunInfo& r : train->infos) {
+      sceneOfRun.push_back(r.scene.empty() ? r.name : r.scene);
+      distinct.insert(sceneOfRun.back());
+    }
+    if (distinct.size() < 2) {
+      return failure("a by-scene sweep needs runs of at least two scenes, found " +
+                     std::to_string(distinct.size()));
+    }
+  }
 
   analysis::SweepResult empty;
   empty.grid = request.grid;
@@ -639,6 +575,7 @@ Result<SweepOutcome> Workspace::sweep(
   configuration["label_set"] = request.labelSet;
   configuration["train_runs"] = runsJson(train->infos);
   configuration["test_runs"] = runsJson(test->infos);
+  configuration["split"] = splitModeName(request.split);
   configuration["state"] = "running";
   configuration["program_version"] = programVersion();
   const std::string name =
@@ -651,15 +588,9 @@ Result<SweepOutcome> Workspace::sweep(
   analysis::SweepOptions options;
   options.threads = request.threads;
   options.onCell = [&](const analysis::SweepCellResult& cell) {
-    analysis::SweepResult one;
-    one.grid = request.grid;
-    one.cells.push_back(cell);
-    const json cellJson = analysis::sweepToJson(one)["cells"][0];
-    json settings = {{"group", cellJson["group"]}, {"method", cellJson["method"]},
-                     {"order", cellJson["order"]}, {"covariance", cellJson["covariance"]},
-                     {"floor", cellJson["floor"]}, {"features", cellJson["features"]},
-                     {"seed", cellJson["seed"]}};
-    auto stored = db_->addSweepCell(sweepId.value(), dumpJson(settings), dumpJson(cellJson));
+    auto stored =
+        db_->addSweepCell(sweepId.value(), dumpJson(analysis::sweepCellSettingsToJson(cell.cell)),
+                          dumpJson(analysis::sweepCellToJson(cell)));
     if (!stored && !storeFailed) {
       storeFailed = true;
       storeError = stored.error();
@@ -673,13 +604,15 @@ Result<SweepOutcome> Workspace::sweep(
   SweepOutcome outcome;
   outcome.sweepId = sweepId.value();
   outcome.result =
-      analysis::runSweep(train->labelled, test->labelled, request.grid, options, guard);
+      byScene ? analysis::runSweepByScene(train->labelled, sceneOfRun, request.grid, options, guard)
+              : analysis::runSweep(train->labelled, test->labelled, request.grid, options, guard);
 
   json final = analysis::sweepToJson(outcome.result);
   final.erase("cells");
   final["label_set"] = request.labelSet;
   final["train_runs"] = configuration["train_runs"];
   final["test_runs"] = configuration["test_runs"];
+  final["split"] = configuration["split"];
   final["state"] = storeFailed ? "failed" : outcome.result.cancelled ? "cancelled" : "finished";
   final["program_version"] = programVersion();
   if (Status s = db_->updateSweep(sweepId.value(), dumpJson(final)); !s) return s.error();
@@ -709,11 +642,7 @@ Result<analysis::SweepResult> Workspace::loadSweep(std::int64_t sweepId) {
   const std::vector<analysis::SweepCell> grid = analysis::expandGrid(result->grid);
   auto position = [&grid](const analysis::SweepCell& c) {
     for (std::size_t i = 0; i < grid.size(); ++i) {
-      const analysis::SweepCell& g = grid[i];
-      if (g.group == c.group && g.method == c.method && g.order == c.order && g.form == c.form &&
-          g.varianceFloor == c.varianceFloor && g.features == c.features && g.seed == c.seed) {
-        return i;
-      }
+      if (grid[i] == c) return i;
     }
     return grid.size();
   };

@@ -9,6 +9,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <array>
 #include <cstdint>
 #include <filesystem>
 #include <functional>
@@ -34,8 +35,9 @@ namespace tactile::workspace {
 enum class SplitMode {
   ByRun,           // the given test runs; without any, every fourth run (by name) is held out
   LeaveOneRunOut,  // each run is scored by a model trained on all the others
+  ByScene,         // each scene's runs are scored by a model trained without that scene
 };
-// "by-run", "leave-one-run-out".
+// "by-run", "leave-one-run-out", "by-scene".
 std::optional<SplitMode> parseSplitMode(std::string_view name);
 std::string_view splitModeName(SplitMode mode);
 
@@ -58,6 +60,9 @@ struct TrainRequest {
   // A group with fewer labelled contact rows than this for training, or with fewer than two
   // classes that can be modelled, is skipped with a warning; the other groups train.
   std::size_t minRowsPerGroup = 20;
+  // false: train and score only; storeTrained() stores the outcome afterwards (the workbench asks
+  // first when a group scored 0 or had no test data).
+  bool store = true;
 };
 
 // One group's outcome.
@@ -67,10 +72,16 @@ struct GroupTrainReport {
   std::string skippedBecause;  // when not trained
   std::size_t samplesTrain = 0;
   std::size_t samplesTest = 0;
-  double accuracy = 0.0;
-  double balancedAccuracy = 0.0;
+  // By the model's default decision; nullopt when nothing was scored (no test data), never 0.
+  analysis::DecisionMode decision = analysis::DecisionMode::Online;
+  std::optional<double> accuracy;
+  std::optional<double> balancedAccuracy;
+  std::array<std::optional<double>, analysis::kDecisionModeCount> balancedAccuracyByDecision{};
+  std::optional<double> sceneMean;  // by-scene: mean over held-out scenes
   double fitSeconds = 0.0;
   std::vector<std::string> warnings;
+  // True when a trained group had no test rows or scored 0 (worth a question before storing).
+  bool doubtful() const { return trained && (!balancedAccuracy || *balancedAccuracy <= 0.0); }
 };
 
 struct TrainOutcome {
@@ -91,6 +102,9 @@ struct SweepRequest {
   analysis::SweepGrid grid;
   std::string name;  // empty: defaultSweepName(labelSet, grid)
   int threads = 0;
+  // ByRun: train on trainRuns, score on testRuns. ByScene: no test runs; every scene of the
+  // training runs is scored by cells trained without it. (LeaveOneRunOut is not offered.)
+  SplitMode split = SplitMode::ByRun;
 };
 // A sweep's name from what it sweeps: the label set, then each setting with more than one value
 // ("truth: order 1-16 x floor 0.01-0.1 x covariance nodal-full/nodal-diag"), or the one cell's
@@ -174,6 +188,9 @@ class Workspace {
   // Trains one model per group on the label set's segments of the stored runs, scores it as the
   // split says, stores the bundle with its provenance under a free name and returns it.
   Result<TrainOutcome> train(const TrainRequest& request, const ProgressFn& progress = {});
+  // Stores an outcome of train() with request.store == false under request.modelName (or the
+  // first free "<label set>-<n>").
+  Result<TrainOutcome> storeTrained(TrainOutcome outcome, const TrainRequest& request);
   // Runs a sweep over stored runs; every cell is stored as it finishes (a cancelled sweep keeps
   // its finished cells). onCell sees each stored cell.
   Result<SweepOutcome> sweep(

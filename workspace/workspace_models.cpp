@@ -53,14 +53,13 @@ Result<std::string> Workspace::importModel(const std::filesystem::path& file, st
   if (!read) return read.error();
   // A stem's commas and control characters become '_'; the name rule is checked on storing.
   if (name.empty()) name = nameFromFileStem(file.stem().string());
-  json metrics = json::object();
-  for (const analysis::GroupModel& m : read->models)
-    metrics[std::string(groupInfo(m.group).shortName)] = m.metrics;
-  json trainedOn = read->models.empty() ? json::object() : read->models.front().trainedOn;
-  if (!trainedOn.is_object()) trainedOn = json::object();
-  trainedOn["imported_from"] = file.string();
-  auto id = db_->addModel(name, dumpJson(analysis::bundleToJson(read.value())), dumpJson(trainedOn),
-                          dumpJson(metrics));
+  // The bundle is stored as read; the stored provenance also says where it came from.
+  analysis::ModelBundle marked = read.value();
+  for (analysis::GroupModel& m : marked.models)
+    m.provenance.importedFrom = file.string();
+  auto id = db_->addModel(name, dumpJson(analysis::bundleToJson(read.value())),
+                          dumpJson(analysis::bundleProvenanceToJson(marked)),
+                          dumpJson(analysis::bundleMetricsToJson(read.value())));
   if (!id) return id.error();
   return name;
 }
@@ -111,6 +110,10 @@ Result<TrainOutcome> Workspace::trainSweepCell(std::int64_t sweepId, std::size_t
   settings.classifier = analysis::cellClassifierOptions(sweep->grid, cell);
   settings.classifier.threads = 0;
   settings.classifier.gmm.threads = 0;
+  // A model's default decision is causal: an offline cell's model decides online by default (its
+  // stored scores give every mode).
+  settings.decision =
+      analysis::isCausal(cell.decision) ? cell.decision : analysis::DecisionMode::Online;
   request.settings = analysis::GroupSettings::same(settings);
   request.minRowsPerGroup = 1;
   if (modelName.empty()) {

@@ -9,6 +9,7 @@
 #include <limits>
 #include <memory>
 #include <optional>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -203,7 +204,8 @@ FeatureKind parseFeatures(const std::string& name) {
   const auto f = analysis::parseFeatureKind(name);
   if (!f)
     throw UsageError("unknown --features '" + name +
-                     "' (normal, magnitude, normal+shear, normal+shear+touch)");
+                     "' (normal, magnitude, normal+shear, normal+shear+touch, "
+                     "normal+shear+touch+context)");
   return *f;
 }
 
@@ -233,6 +235,7 @@ struct TrainArgs {
   // default (analysis::defaultGroupSettings(), the workbench's too).
   ClassifierArgs classifier;
   std::string features;
+  std::string decision = "online";
   struct Given {
     bool method = false, order = false, cov = false, floor = false, restarts = false;
   } given;
@@ -255,6 +258,135 @@ void checkOutput(const std::string& path) {
   if (!writable) throw std::runtime_error(writable.errorText());
 }
 
+json optionalJson(const std::optional<double>& v) {
+  return v ? json(*v) : json(nullptr);
+}
+
+std::string percentText(const std::optional<double>& v) {
+  if (!v) return "  n/a ";
+  char buffer[32];
+  std::snprintf(buffer, sizeof buffer, "%5.1f%%", 100.0 * *v);
+  return buffer;
+}
+
+// One group's line of the train summary (JSON), the same for both forms.
+json groupSummary(const analysis::GroupJobReport& r, const analysis::GroupModel* m) {
+  json gj{{"group", std::string(groupInfo(r.group).shortName)},
+          {"trained", r.trained},
+          {"samples_train", r.samplesTrain},
+          {"warnings", r.warnings}};
+  if (!r.trained || m == nullptr) {
+    gj["skipped"] = r.skippedBecause;
+    return gj;
+  }
+  const analysis::ModelEvaluation& e = m->evaluation;
+  // No test rows: nothing was scored, which is not an accuracy of 0.
+  gj["samples_test"] = e.samplesTest();
+  gj["decision"] = analysis::decisionModeName(m->decision);
+  gj["accuracy"] = optionalJson(e.accuracy(m->decision));
+  gj["balanced_accuracy"] = optionalJson(e.balancedAccuracy(m->decision));
+  json by = json::object();
+  for (analysis::DecisionMode mode : analysis::kDecisionModes)
+    by[std::string(analysis::decisionModeName(mode))] = optionalJson(e.balancedAccuracy(mode));
+  gj["balanced_accuracy_by_decision"] = std::move(by);
+  gj["classes"] = m->classifier.classNames();
+  gj["fit_s"] = e.fitSeconds;
+  gj["mean_loglik"] = optionalJson(e.meanLogLikelihood);
+  gj["neg_inf_rows"] = e.negInfRows;
+  int dropped = 0;
+  for (const analysis::ClassFitRecord& f : e.fit)
+    dropped += f.droppedComponents;
+  gj["dropped_components"] = dropped;
+  if (!e.scenes.empty()) {
+    json scenes = json::array();
+    for (const analysis::SceneScore& sc : e.scenes) {
+      json byScene = json::object();
+      for (analysis::DecisionMode mode : analysis::kDecisionModes) {
+        const analysis::ConfusionMatrix& c = sc.byDecision[analysis::decisionIndex(mode)];
+        byScene[std::string(analysis::decisionModeName(mode))] =
+            c.total() > 0 ? json(analysis::computeMetrics(c).balancedAccuracy) : json(nullptr);
+      }
+      const std::size_t n = sc.byDecision[0].total();
+      scenes.push_back(
+          {{"scene", sc.scene},
+           {"samples_test", n},
+           {"balanced_accuracy", byScene[std::string(analysis::decisionModeName(m->decision))]},
+           {"balanced_accuracy_by_decision", std::move(byScene)}});
+    }
+    gj["scenes"] = std::move(scenes);
+    json means = json::object();
+    for (analysis::DecisionMode mode : analysis::kDecisionModes)
+      means[std::string(analysis::decisionModeName(mode))] =
+          optionalJson(analysis::meanSceneBalancedAccuracy(e.scenes, mode));
+    gj["scene_mean_balanced_accuracy"] = std::move(means);
+  }
+  return gj;
+}
+
+// Warnings (skipped groups, fit warnings) on stderr, then the summary: one JSON object, or text.
+void printTrainSummary(const std::vector<analysis::GroupJobReport>& reports,
+                       const analysis::ModelBundle& bundle, const std::string& evaluatedOn,
+                       bool asJson, json doc, const std::string& headline) {
+  json groupsJson = json::array();
+  for (const analysis::GroupJobReport& r : reports) {
+    const std::string g(groupInfo(r.group).shortName);
+    if (!r.trained) {
+      std::string keep;
+      for (const analysis::GroupJobReport& q : reports)
+        if (q.trained && q.group != r.group)
+          keep += (keep.empty() ? "" : ",") + std::string(groupInfo(q.group).shortName);
+      printWarning("group " + g + " skipped: " + r.skippedBecause +
+                   (keep.empty() ? std::string() : "; leave it out with --groups " + keep));
+    }
+    for (const std::string& w : r.warnings)
+      printWarning("group " + g + ": " + w);
+    groupsJson.push_back(groupSummary(r, bundle.find(r.group)));
+  }
+  if (asJson) {
+    doc["evaluated_on"] = evaluatedOn;
+    doc["groups"] = std::move(groupsJson);
+    std::cout << dumpJson(doc) << "\n";
+    return;
+  }
+  std::printf("%s\n", headline.c_str());
+  std::printf("  %-4s %7s %7s  %-7s %8s %8s %8s %8s\n", "", "train", "test", "default", "balanced",
+              "step", "online", "offline");
+  for (const analysis::GroupJobReport& r : reports) {
+    const analysis::GroupModel* m = bundle.find(r.group);
+    if (!r.trained || m == nullptr) continue;
+    const analysis::ModelEvaluation& e = m->evaluation;
+    if (!e.scored()) {
+      std::printf("  %-4s %7zu %7d  (no test data: not scored)\n",
+                  std::string(groupInfo(r.group).shortName).c_str(), r.samplesTrain, 0);
+      continue;
+    }
+    std::printf("  %-4s %7zu %7zu  %-7s %8s %8s %8s %8s\n",
+                std::string(groupInfo(r.group).shortName).c_str(), r.samplesTrain, e.samplesTest(),
+                std::string(analysis::decisionModeName(m->decision)).c_str(),
+                percentText(e.balancedAccuracy(m->decision)).c_str(),
+                percentText(e.balancedAccuracy(analysis::DecisionMode::Step)).c_str(),
+                percentText(e.balancedAccuracy(analysis::DecisionMode::Online)).c_str(),
+                percentText(e.balancedAccuracy(analysis::DecisionMode::Offline)).c_str());
+    for (const analysis::SceneScore& sc : e.scenes) {
+      const analysis::ConfusionMatrix& c = sc.byDecision[analysis::decisionIndex(m->decision)];
+      std::printf("         held-out scene %-28s %7zu test  %s\n", sc.scene.c_str(), c.total(),
+                  c.total() > 0 ? percentText(analysis::computeMetrics(c).balancedAccuracy).c_str()
+                                : "no test data");
+    }
+    if (!e.scenes.empty()) {
+      std::printf("         mean over held-out scenes %s\n",
+                  percentText(analysis::meanSceneBalancedAccuracy(e.scenes, m->decision)).c_str());
+    }
+  }
+}
+
+analysis::EvaluationSplit parseFileSplit(const std::string& name) {
+  if (name == "by-run") return analysis::EvaluationSplit::TestRuns;
+  if (name == "leave-one-run-out") return analysis::EvaluationSplit::LeaveOneRunOut;
+  if (name == "by-scene") return analysis::EvaluationSplit::ByScene;
+  throw UsageError("unknown --split '" + name + "' (by-run, leave-one-run-out, by-scene)");
+}
+
 int runTrainDb(const TrainArgs& a, const analysis::GroupSettings& settings,
                const std::vector<SensorGroup>& groups) {
   if (a.set.empty()) throw UsageError("--db needs --set SET (the label set to train on)");
@@ -265,7 +397,9 @@ int runTrainDb(const TrainArgs& a, const analysis::GroupSettings& settings,
         "--train-runs, --test-runs and --split");
   }
   const auto split = workspace::parseSplitMode(a.split);
-  if (!split) throw UsageError("unknown --split '" + a.split + "' (by-run, leave-one-run-out)");
+  if (!split) {
+    throw UsageError("unknown --split '" + a.split + "' (by-run, leave-one-run-out, by-scene)");
+  }
   checkOutput(a.out);
   auto ws = openWorkspace(a.db, true);
   workspace::TrainRequest request;
@@ -280,61 +414,21 @@ int runTrainDb(const TrainArgs& a, const analysis::GroupSettings& settings,
   auto outcome = ws->train(request);
   if (!outcome) throw std::runtime_error(a.db + ": " + outcome.errorText());
   const workspace::TrainOutcome& o = outcome.value();
-  std::vector<std::string> trained;
-  json groupsJson = json::array();
-  for (const workspace::GroupTrainReport& r : o.groups) {
-    const std::string g(groupInfo(r.group).shortName);
-    if (!r.trained) {
-      std::string keep;
-      for (const workspace::GroupTrainReport& q : o.groups)
-        if (q.trained)
-          keep += (keep.empty() ? "" : ",") + std::string(groupInfo(q.group).shortName);
-      printWarning("group " + g + " skipped: " + r.skippedBecause +
-                   "; leave it out with --groups " + keep);
-    }
-    for (const std::string& w : r.warnings)
-      printWarning("group " + g + ": " + w);
-    json gj{{"group", g},
-            {"trained", r.trained},
-            {"samples_train", r.samplesTrain},
-            {"samples_test", r.samplesTest}};
-    if (r.trained) {
-      // No test rows: nothing was scored, which is not an accuracy of 0.
-      gj["accuracy"] = r.samplesTest > 0 ? json(r.accuracy) : json(nullptr);
-      gj["balanced_accuracy"] = r.samplesTest > 0 ? json(r.balancedAccuracy) : json(nullptr);
-      gj["fit_s"] = r.fitSeconds;
-    } else {
-      gj["skipped"] = r.skippedBecause;
-    }
-    groupsJson.push_back(std::move(gj));
-  }
   if (!a.out.empty()) {
     const Status written = analysis::writeModelBundleFile(a.out, o.bundle);
     if (!written) throw std::runtime_error(written.errorText());
   }
-  if (a.json) {
-    json doc{{"model", o.modelName},          {"id", o.modelId},         {"label_set", a.set},
-             {"train_runs", o.trainRuns},     {"test_runs", o.testRuns}, {"split", a.split},
-             {"evaluated_on", o.evaluatedOn}, {"groups", groupsJson}};
-    if (!a.out.empty()) doc["out"] = a.out;
-    std::cout << dumpJson(doc) << "\n";
-  } else {
-    std::printf("stored model '%s' (%zu group model(s)) in %s; scored on %s\n", o.modelName.c_str(),
-                o.bundle.models.size(), a.db.c_str(), o.evaluatedOn.c_str());
-    for (const json& g : groupsJson) {
-      if (!g["trained"].get<bool>()) continue;
-      if (g["accuracy"].is_null()) {
-        std::printf("  %-4s %7zu train        0 test  (not scored)\n",
-                    g["group"].get<std::string>().c_str(), g["samples_train"].get<std::size_t>());
-        continue;
-      }
-      std::printf("  %-4s %7zu train  %7zu test  accuracy %5.1f%%  balanced %5.1f%%\n",
-                  g["group"].get<std::string>().c_str(), g["samples_train"].get<std::size_t>(),
-                  g["samples_test"].get<std::size_t>(), 100.0 * g["accuracy"].get<double>(),
-                  100.0 * g["balanced_accuracy"].get<double>());
-    }
-    if (!a.out.empty()) std::printf("wrote %s\n", a.out.c_str());
-  }
+  std::vector<analysis::GroupJobReport> reports;
+  for (const workspace::GroupTrainReport& r : o.groups)
+    reports.push_back({r.group, r.trained, r.skippedBecause, r.samplesTrain, r.warnings});
+  json doc{{"model", o.modelName},      {"id", o.modelId},         {"label_set", a.set},
+           {"train_runs", o.trainRuns}, {"test_runs", o.testRuns}, {"split", a.split}};
+  if (!a.out.empty()) doc["out"] = a.out;
+  std::string headline = "stored model '" + o.modelName + "' (" +
+                         std::to_string(o.bundle.models.size()) + " group model(s)) in " + a.db +
+                         "; scored on " + o.evaluatedOn;
+  if (!a.out.empty()) headline += "; wrote " + a.out;
+  printTrainSummary(reports, o.bundle, o.evaluatedOn, a.json, std::move(doc), headline);
   return kExitOk;
 }
 
@@ -351,6 +445,11 @@ analysis::GroupSettings trainSettings(const TrainArgs& a) {
     if (!a.given.restarts) o.gmm.restarts = s.classifier.gmm.restarts;
     s.classifier = o;
     if (!a.features.empty()) s.features = parseFeatures(a.features);
+    const auto decision = analysis::parseDecisionMode(a.decision);
+    if (!decision || !analysis::isCausal(*decision)) {
+      throw UsageError("--decision must be online or step (a model's default decision is causal)");
+    }
+    s.decision = *decision;
   }
   return out;
 }
@@ -371,136 +470,54 @@ int runTrain(const TrainArgs& a) {
   if (!a.testRuns.empty() && a.holdout > 0.0) {
     throw UsageError("give either --test-runs or --holdout, not both");
   }
-  std::vector<SensorGroup> groups = parseGroups(a.groups);
-  if (groups.empty()) {
-    for (const GroupInfo& g : kSensorGroups)
-      groups.push_back(g.group);
+  const analysis::EvaluationSplit fileSplit = parseFileSplit(a.split);
+  if (fileSplit != analysis::EvaluationSplit::TestRuns &&
+      (a.holdout > 0.0 || !a.testRuns.empty())) {
+    throw UsageError("--split " + a.split +
+                     " scores the training runs in turn; give no "
+                     "--test-runs or --holdout");
   }
+  std::vector<SensorGroup> groups = parseGroups(a.groups);
 
   LoadedRuns loaded, loadedTest;
   readRuns(a.runs, loaded);
   attachLabels(loaded, a.labels);
-  std::vector<LabelledRun> train = loaded.labelled, test;
-  std::string evaluatedOn = "training data";
-  const std::vector<LabelledRun>* testRuns = &train;
+  analysis::TrainJob job;
+  job.runs = loaded.labelled;
+  auto refsOf = [](const LoadedRuns& l) {
+    std::vector<analysis::RunReference> out;
+    for (std::size_t i = 0; i < l.runs.size(); ++i) {
+      const auto scene = l.runs[i].meta("scene");
+      out.push_back({l.paths[i], static_cast<std::int64_t>(l.runs[i].stepCount()), "",
+                     scene ? std::string(*scene) : std::string()});
+    }
+    return out;
+  };
+  job.runRefs = refsOf(loaded);
+  job.split = fileSplit;
   if (!a.testRuns.empty()) {
     readRuns(a.testRuns, loadedTest);
     attachLabels(loadedTest, a.labels);
-    test = loadedTest.labelled;
-    testRuns = &test;
-    evaluatedOn = "test runs";
+    job.testRuns = loadedTest.labelled;
+    job.testRunRefs = refsOf(loadedTest);
   } else if (a.holdout > 0.0) {
-    analysis::splitLabelledRuns(loaded.labelled, a.holdout, train, test);
-    testRuns = &test;
-    evaluatedOn = "held-out steps (last " +
-                  std::to_string(static_cast<int>(a.holdout * 100 + 0.5)) + "% of each run)";
+    job.split = analysis::EvaluationSplit::Holdout;
+    job.holdout = a.holdout;
   }
-
-  analysis::ModelBundle bundle;
-  json summary = json::array();
-  for (SensorGroup g : groups) {
-    const std::string gName(groupInfo(g).shortName);
-    const analysis::TrainSettings& groupSettings = settings.of(g);
-    const analysis::GroupDataSet data =
-        analysis::buildGroupDataSet(train, g, groupSettings.features);
-    if (data.size() == 0) {
-      printWarning("group " + gName + ": no labelled contact samples; no model");
-      continue;
-    }
-    analysis::GroupTrainResult tr = analysis::trainGroupModel(data, groupSettings);
-    if (!tr.ok) {
-      // One group without enough data must not cost the others their models.
-      std::string keep;
-      for (SensorGroup other : groups)
-        if (other != g) keep += (keep.empty() ? "" : ",") + std::string(groupInfo(other).shortName);
-      printWarning("group " + gName + " skipped: " + tr.reason + "; leave it out with --groups " +
-                   keep);
-      continue;
-    }
-    for (ContactClass c : tr.classes.unmodelled) {
-      printWarning("group " + gName + ": class " + std::string(contactClassName(c)) +
-                   " has too few samples to model");
-    }
-    for (const std::string& w : tr.fit.warnings)
-      printWarning("group " + gName + ": " + w);
-    const analysis::GroupDataSet evalData =
-        testRuns == &train ? data
-                           : analysis::buildGroupDataSet(*testRuns, g, groupSettings.features);
-    const analysis::GroupEvaluation ev = analysis::evaluateGroupModel(tr.model, evalData, testRuns);
-    json trainedOn;
-    trainedOn["runs"] = loaded.paths;
-    trainedOn["labels"] = a.labels.empty() ? "truth columns" : a.labels;
-    trainedOn["samples"] = data.size();
-    trainedOn["class_counts"] = analysis::classCountsToJson(data.classCounts());
-    trainedOn["zero_rows"] = data.zeroRows;
-    trainedOn["holdout"] = a.holdout;
-    trainedOn["init"] = a.classifier.init;
-    trainedOn["seed"] = a.classifier.seed;
-    trainedOn["restarts"] = groupSettings.classifier.gmm.restarts;
-    trainedOn["max_iterations"] = a.classifier.maxIterations;
-    trainedOn["tolerance"] = a.classifier.tolerance;
-    trainedOn["tolerance_rule"] = a.classifier.tolRule;
-    trainedOn["priors"] = a.classifier.priors;
-    if (!tr.classes.unmodelled.empty()) {
-      json un = json::array();
-      for (ContactClass c : tr.classes.unmodelled)
-        un.push_back(contactClassName(c));
-      trainedOn["unmodelled_classes"] = std::move(un);
-    }
-    tr.model.trainedOn = std::move(trainedOn);
-    json metrics;
-    metrics["evaluated_on"] = evaluatedOn;
-    if (!a.testRuns.empty()) metrics["test_runs"] = loadedTest.paths;
-    metrics["fit_s"] = tr.fit.fitSeconds;
-    json iters = json::object(), conv = json::object(), trainLl = json::object(),
-         droppedPerClass = json::object();
-    int dropped = 0;
-    for (std::size_t c = 0; c < tr.model.classes.size(); ++c) {
-      const std::string cn(contactClassName(tr.model.classes[c]));
-      if (c < tr.fit.iterations.size()) iters[cn] = tr.fit.iterations[c];
-      if (c < tr.fit.converged.size()) conv[cn] = static_cast<bool>(tr.fit.converged[c]);
-      if (c < tr.fit.trainMeanLogLikelihood.size()) trainLl[cn] = tr.fit.trainMeanLogLikelihood[c];
-      if (c < tr.fit.droppedComponents.size()) {
-        droppedPerClass[cn] = tr.fit.droppedComponents[c];
-        dropped += tr.fit.droppedComponents[c];
-      }
-    }
-    metrics["iterations"] = std::move(iters);
-    metrics["converged"] = std::move(conv);
-    metrics["train_mean_loglik"] = std::move(trainLl);
-    metrics["dropped_components"] = std::move(droppedPerClass);
-    metrics["warnings"] = tr.fit.warnings;
-    metrics["evaluation"] = analysis::evaluationToJson(ev);
-    tr.model.metrics = metrics;
-    summary.push_back(
-        {{"group", gName},
-         {"samples", data.size()},
-         {"classes", tr.model.classifier.classNames()},
-         {"fit_s", tr.fit.fitSeconds},
-         {"accuracy", ev.metrics.accuracy},
-         {"balanced_accuracy", ev.metrics.balancedAccuracy},
-         {"mean_loglik", ev.meanLogLikelihood ? json(*ev.meanLogLikelihood) : json(nullptr)},
-         {"neg_inf_rows", ev.negInfRows},
-         {"dropped_components", dropped},
-         {"warnings", tr.fit.warnings}});
-    bundle.models.push_back(std::move(tr.model));
-  }
-  if (bundle.models.empty()) throw std::runtime_error("no group has labelled contact samples");
-  const Status written = analysis::writeModelBundleFile(a.out, bundle);
+  job.groups = groups;
+  job.settings = settings;
+  job.minRowsPerGroup = a.minRows;
+  job.provenance.labels = a.labels.empty() ? "truth columns" : a.labels;
+  job.provenance.programVersion = std::string(workspace::programVersion());
+  auto trained = analysis::trainAndEvaluate(job);
+  if (!trained) throw std::runtime_error(trained.errorText());
+  const Status written = analysis::writeModelBundleFile(a.out, trained->bundle);
   if (!written) throw std::runtime_error(written.errorText());
-  if (a.json) {
-    std::cout << dumpJson(json{{"out", a.out}, {"evaluated_on", evaluatedOn}, {"groups", summary}})
-              << "\n";
-  } else {
-    std::printf("wrote %zu group model(s) to %s (scores on %s)\n", bundle.models.size(),
-                a.out.c_str(), evaluatedOn.c_str());
-    for (const json& s : summary) {
-      std::printf("  %-4s %7zu samples  accuracy %5.1f%%  balanced %5.1f%%  fit %.3f s\n",
-                  s["group"].get<std::string>().c_str(), s["samples"].get<std::size_t>(),
-                  100.0 * s["accuracy"].get<double>(), 100.0 * s["balanced_accuracy"].get<double>(),
-                  s["fit_s"].get<double>());
-    }
-  }
+  json doc{{"out", a.out}, {"split", std::string(analysis::evaluationSplitName(job.split))}};
+  printTrainSummary(trained->groups, trained->bundle, trained->evaluatedOn, a.json, std::move(doc),
+                    "wrote " + std::to_string(trained->bundle.models.size()) +
+                        " group model(s) to " + a.out + " (scores on " + trained->evaluatedOn +
+                        ")");
   return kExitOk;
 }
 
@@ -523,6 +540,8 @@ struct SweepArgs {
   std::vector<double> floors{0.01, 0.03, 0.1};
   std::vector<std::string> features{"normal"};
   std::vector<std::uint64_t> seeds{1};
+  std::vector<std::string> decisions{"step"};
+  std::string split = "by-run";
   std::string reg = "floor";
   std::string init = "kmeans++";
   int restarts = 1;
@@ -554,8 +573,10 @@ int runSweepDb(const SweepArgs& a, const analysis::SweepGrid& grid) {
         "--runs and --labels are for run files; with --db use --train-runs and "
         "--test-runs");
   }
-  if (a.trainRuns.empty() || a.testRuns.empty()) {
-    throw UsageError("--db needs --train-runs and --test-runs (stored run names)");
+  if (a.trainRuns.empty() || (a.testRuns.empty() && a.split != "by-scene")) {
+    throw UsageError(
+        "--db needs --train-runs and --test-runs (stored run names), or "
+        "--train-runs and --split by-scene");
   }
   checkOutput(a.out);
   auto ws = openWorkspace(a.db, true);
@@ -566,6 +587,10 @@ int runSweepDb(const SweepArgs& a, const analysis::SweepGrid& grid) {
   request.grid = grid;
   request.name = a.name;
   request.threads = a.threads;
+  const auto split = workspace::parseSplitMode(a.split);
+  if (!split || *split == workspace::SplitMode::LeaveOneRunOut)
+    throw UsageError("unknown --split '" + a.split + "' for a sweep (by-run, by-scene)");
+  request.split = *split;
   auto outcome = ws->sweep(request, {}, sweepProgress(a.progress));
   if (!outcome) throw std::runtime_error(a.db + ": " + outcome.errorText());
   const analysis::SweepResult& result = outcome->result;
@@ -598,6 +623,8 @@ int runSweepVerb(const SweepArgs& a) {
   grid.orders = a.orders;
   grid.varianceFloors = a.floors;
   grid.seeds = a.seeds;
+  grid.decisions =
+      parseNames<analysis::DecisionMode>(a.decisions, analysis::parseDecisionMode, "decision");
   for (int k : grid.orders) {
     if (k < 1) throw UsageError("--orders must be >= 1");
   }
@@ -623,7 +650,21 @@ int runSweepVerb(const SweepArgs& a) {
   readRuns(a.runs, loaded);
   attachLabels(loaded, a.labels);
   std::vector<LabelledRun> train, test;
-  if (!a.testRuns.empty()) {
+  const bool byScene = a.split == "by-scene";
+  if (!byScene && a.split != "by-run") {
+    throw UsageError("unknown --split '" + a.split + "' for a sweep (by-run, by-scene)");
+  }
+  if (byScene && !a.testRuns.empty()) {
+    throw UsageError("--split by-scene scores every scene of --runs in turn; give no --test-runs");
+  }
+  std::vector<std::string> sceneOfRun;
+  for (std::size_t i = 0; i < loaded.runs.size(); ++i) {
+    const std::string* scene = loaded.runs[i].meta("scene");
+    sceneOfRun.push_back(scene != nullptr && !scene->empty() ? *scene : loaded.paths[i]);
+  }
+  if (byScene) {
+    train = loaded.labelled;
+  } else if (!a.testRuns.empty()) {
     readRuns(a.testRuns, loadedTest);
     attachLabels(loadedTest, a.labels);
     train = loaded.labelled;
@@ -634,7 +675,14 @@ int runSweepVerb(const SweepArgs& a) {
   analysis::SweepOptions options;
   options.threads = a.threads;
   const ProgressFn progress = sweepProgress(a.progress);
-  const analysis::SweepResult result = analysis::runSweep(train, test, grid, options, progress);
+  if (byScene && std::set<std::string>(sceneOfRun.begin(), sceneOfRun.end()).size() < 2) {
+    throw std::runtime_error(
+        "--split by-scene needs runs of at least two scenes (their `scene` "
+        "metadata)");
+  }
+  const analysis::SweepResult result =
+      byScene ? analysis::runSweepByScene(train, sceneOfRun, grid, options, progress)
+              : analysis::runSweep(train, test, grid, options, progress);
   // Each distinct warning once (cells of one group and variance floor share them).
   std::vector<std::string> warnings;
   for (const auto& c : result.cells) {
@@ -650,7 +698,8 @@ int runSweepVerb(const SweepArgs& a) {
   doc["runs"] = loaded.paths;
   doc["test_runs"] = loadedTest.paths;
   doc["labels"] = a.labels.empty() ? "truth columns" : a.labels;
-  doc["holdout"] = a.testRuns.empty() ? a.holdout : 0.0;
+  doc["holdout"] = a.testRuns.empty() && !byScene ? a.holdout : 0.0;
+  doc["split"] = a.split;
   writeText(a.out, dumpJson(doc, 1) + "\n");
   std::size_t ok = 0;
   for (const auto& c : result.cells)
@@ -674,6 +723,7 @@ int runSweepVerb(const SweepArgs& a) {
 // report
 
 struct ReportArgs {
+  std::size_t minTestSteps = analysis::kMinTestSteps;
   std::string path;
   bool csv = false;
   bool json = false;
@@ -789,7 +839,7 @@ int runReport(const ReportArgs& r) {
     // Validate through the one model reader before reporting.
     const Result<analysis::ModelBundle> models = analysis::modelsFromJson(value, path);
     if (!models) throw std::runtime_error(models.errorText());
-    writeText(r.out, analysis::modelReport(value, style));
+    writeText(r.out, analysis::modelReport(models.value(), style, r.minTestSteps));
     if (r.json)
       std::cout << dumpJson(json{{"file", path}, {"kind", "model"}, {"out", r.out}}) << "\n";
     return kExitOk;
@@ -807,6 +857,7 @@ struct ClassifyArgs {
   std::string out;
   bool json = false;
   std::string temporal = "none";
+  std::string decision;  // empty: each model's default
   int count = 3;
   double threshold = 5.0;
   int window = 0;
@@ -816,7 +867,6 @@ struct ClassifyArgs {
 // Prints (or writes) a run's classification: JSON, or CSV with one line per step and group.
 int printClassification(const ClassifyArgs& a, const analysis::RunClassification& result) {
   const std::size_t steps = result.steps;
-  const bool withDecided = a.temporal != "none";
   for (const GroupInfo& info : kSensorGroups) {
     if (result.groups[static_cast<std::size_t>(groupIndex(info.group))].model == nullptr) {
       printWarning(a.model + ": no model for group " + std::string(info.shortName) +
@@ -828,26 +878,26 @@ int printClassification(const ClassifyArgs& a, const analysis::RunClassification
     doc["run"] = a.run;
     doc["model"] = a.model;
     doc["steps"] = steps;
-    if (withDecided) doc["temporal"] = a.temporal;
+    if (a.temporal != "none") doc["temporal"] = a.temporal;
     json gj = json::object();
     for (const GroupInfo& info : kSensorGroups) {
       const analysis::GroupClassification& go =
           result.groups[static_cast<std::size_t>(groupIndex(info.group))];
       json g;
       g["model"] = go.model != nullptr;
-      json cls = json::array(), rule = json::array(), dec = json::array();
+      if (go.model) g["decision"] = go.decisionName;
+      json cls = json::array(), stepCls = json::array(), rule = json::array();
       for (std::size_t t = 0; t < steps; ++t) {
         const std::string c = go.className(t);
         cls.push_back(c.empty() ? json(nullptr) : json(c));
+        const std::string p = go.stepClassName(t);
+        stepCls.push_back(p.empty() ? json(nullptr) : json(p));
         rule.push_back(go.noContactRule[t] != 0);
-        if (withDecided) {
-          const std::string d = go.decidedName(t);
-          dec.push_back(d.empty() ? json(nullptr) : json(d));
-        }
       }
+      // `class` is the chosen decision; `step_class` the per-step argmax.
       g["class"] = std::move(cls);
+      g["step_class"] = std::move(stepCls);
       g["no_contact_rule"] = std::move(rule);
-      if (withDecided && go.model) g["decided"] = std::move(dec);
       if (go.model) {
         json ll = json::object();
         for (int c = 0; c < go.model->classifier.classCount(); ++c) {
@@ -874,12 +924,12 @@ int printClassification(const ClassifyArgs& a, const analysis::RunClassification
     return kExitOk;
   }
 
-  // CSV, long form: one line per step and group.
+  // CSV, long form: one line per step and group. `class` is the chosen decision (the model's
+  // default, --decision or --temporal), `step_class` the per-step argmax.
   std::string csv = "step,group,class,no_contact_rule";
   for (std::string_view n : kContactClassNames)
     csv += ",loglik_" + std::string(n);
-  if (withDecided) csv += ",decided";
-  csv += "\n";
+  csv += ",decision,step_class\n";
   for (std::size_t t = 0; t < steps; ++t) {
     for (const GroupInfo& info : kSensorGroups) {
       const analysis::GroupClassification& go =
@@ -896,8 +946,7 @@ int printClassification(const ClassifyArgs& a, const analysis::RunClassification
           }
         }
       }
-      if (withDecided) csv += "," + go.decidedName(t);
-      csv += "\n";
+      csv += "," + go.decisionName + "," + go.stepClassName(t) + "\n";
     }
   }
   writeText(a.out, csv);
@@ -910,6 +959,14 @@ int runClassify(const ClassifyArgs& a) {
   if (a.count < 1) throw UsageError("--count must be >= 1");
   if (a.stay < 0.0 || a.stay > 1.0) throw UsageError("--stay must be in [0, 1]");
   analysis::ClassifyOptions options;
+  if (!a.decision.empty()) {
+    const auto decision = analysis::parseDecisionMode(a.decision);
+    if (!decision)
+      throw UsageError("unknown --decision '" + a.decision + "' (step, online, offline)");
+    if (*rule != analysis::TemporalRule::None)
+      throw UsageError("give either --decision or --temporal, not both");
+    options.decision = *decision;
+  }
   options.temporal = *rule;
   options.count = a.count;
   options.threshold = a.threshold;
@@ -949,13 +1006,14 @@ void registerLearnVerbs(CLI::App& app, CLI::App& /*bench*/) {
                     "minus the test runs)")
         ->delimiter(',');
     cmd->add_option("--split", args->split,
-                    "by-run (whole runs held out: --test-runs, else every 4th run by name) or "
-                    "leave-one-run-out (with --db)")
+                    "by-run (whole runs held out: --test-runs; with --db and no --test-runs every "
+                    "4th run by name), leave-one-run-out, or by-scene (each scene's runs scored by "
+                    "models trained without that scene)")
         ->capture_default_str();
     cmd->add_option("--name", args->name,
                     "Name of the stored model (with --db; default SET-N, the first free N)");
     cmd->add_option("--min-rows", args->minRows,
-                    "Groups with fewer labelled contact rows are skipped (with --db)")
+                    "Groups with fewer labelled contact rows for training are skipped")
         ->capture_default_str();
     cmd->add_option("--runs", args->runs,
                     "Run CSV files to train on (A B; a path is never split at a comma)");
@@ -976,9 +1034,13 @@ void registerLearnVerbs(CLI::App& app, CLI::App& /*bench*/) {
       o->default_str("");
       o->description(o->get_description() + " (default: each group's own)");
     }
-    cmd->add_option(
-        "--features", args->features,
-        "normal, magnitude, normal+shear or normal+shear+touch (default: each group's own)");
+    cmd->add_option("--features", args->features,
+                    "normal, magnitude, normal+shear, normal+shear+touch or "
+                    "normal+shear+touch+context (default: each group's own)");
+    cmd->add_option("--decision", args->decision,
+                    "The models' default decision: online (HMM forward filter, causal) or step "
+                    "(per-step argmax); scores are given for step, online and offline either way")
+        ->capture_default_str();
     cmd->add_option("--groups", args->groups, "Groups to train (default all), e.g. R,L")
         ->delimiter(',');
     cmd->add_option("--out", args->out, "Model bundle JSON to write (checked before training)");
@@ -1030,6 +1092,15 @@ void registerLearnVerbs(CLI::App& app, CLI::App& /*bench*/) {
         ->delimiter(',')
         ->capture_default_str();
     cmd->add_option("--seeds", args->seeds, "Seeds")->delimiter(',')->capture_default_str();
+    cmd->add_option("--decisions", args->decisions,
+                    "Decision modes scored: step, online (HMM forward filter), offline "
+                    "(forward-backward); cells differing only here share one fit")
+        ->delimiter(',')
+        ->capture_default_str();
+    cmd->add_option("--split", args->split,
+                    "by-run (--test-runs, else the --holdout of each run) or by-scene (each "
+                    "scene's runs scored by cells trained without it)")
+        ->capture_default_str();
     cmd->add_option("--reg", args->reg, "floor or add")->capture_default_str();
     cmd->add_option("--init", args->init, "kmeans++ or random-from-data")->capture_default_str();
     cmd->add_option("--restarts", args->restarts, "EM restarts per fit")->capture_default_str();
@@ -1056,6 +1127,10 @@ void registerLearnVerbs(CLI::App& app, CLI::App& /*bench*/) {
     cmd->add_option("--sweep", args->sweep, "Stored sweep id (with --db; see tactile sweeps list)");
     cmd->add_option("--format", args->format, "md, csv, html or text (default text)");
     cmd->add_option("--out", args->out, "Write here instead of stdout");
+    cmd->add_option("--min-test-steps", args->minTestSteps,
+                    "Classes with fewer test steps are marked \"too few\" and never decide a "
+                    "best cell")
+        ->capture_default_str();
     cmd->add_flag("--csv", args->csv, "CSV tables instead of aligned text (= --format csv)");
     cmd->add_flag(
         "--json", args->json,
@@ -1076,8 +1151,13 @@ void registerLearnVerbs(CLI::App& app, CLI::App& /*bench*/) {
     cmd->add_option("--run", args->run, "Run CSV, or a stored run's name")->required();
     cmd->add_option("--out", args->out, "Write here instead of stdout");
     cmd->add_flag("--json", args->json, "JSON instead of CSV");
+    cmd->add_option("--decision", args->decision,
+                    "The decision written as `class`: step (per-step argmax), online (HMM forward "
+                    "filter with the model's transitions, causal) or offline (forward-backward); "
+                    "default: each model's own (online for models with transitions)");
     cmd->add_option("--temporal", args->temporal,
-                    "Temporal decision (thesis 4.6): none, count, sum or hmm")
+                    "An older temporal rule as `class` instead (thesis 4.6): none, count, sum or "
+                    "hmm (a fixed stay probability)")
         ->capture_default_str();
     cmd->add_option("--count", args->count, "count: consecutive steps required")
         ->capture_default_str();

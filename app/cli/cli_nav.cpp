@@ -18,6 +18,7 @@
 #include "nav/benchmark.h"
 #include "nav/navigate.h"
 #include "run/builtin_scenes.h"
+#include "run/json_text.h"
 #include "run/run_csv.h"
 #include "sim/scene_source.h"
 #include "storage/run_database.h"
@@ -133,7 +134,7 @@ int runBenchmark(const NavigateArgs& a) {
           {"seconds", s.seconds}};
     }
     j["seconds"] = r.seconds;
-    std::printf("%s\n", j.dump().c_str());
+    std::printf("%s\n", dumpJson(j).c_str());
   } else {
     std::printf("%zu generated maps (seed %llu), %lld steps at most per run\n", r.maps,
                 static_cast<unsigned long long>(a.seed), static_cast<long long>(a.maxSteps));
@@ -255,7 +256,7 @@ int runNavigate(const NavigateArgs& a) {
            {"success_rate", rate},
            {"runs", runs},
            {"seconds", seconds}};
-    std::printf("%s\n", j.dump().c_str());
+    std::printf("%s\n", dumpJson(j).c_str());
   } else {
     std::printf("%6s  %-11s %7s %12s %8s\n", "seed", "outcome", "steps", "path length", "blocked");
     for (std::size_t i = 0; i < rows.size(); ++i) {

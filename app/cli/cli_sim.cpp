@@ -235,7 +235,7 @@ int runReplay(const SimulateArgs& a) {
     j["outcome"] = outcome;
     j["seconds"] = seconds;
     j["files"] = {a.out};
-    std::printf("%s\n", j.dump().c_str());
+    std::printf("%s\n", dumpJson(j).c_str());
   } else {
     std::printf("replayed %zu of %zu command(s) of %s in %.3f s; outcome %s\nwrote %s\n",
                 result->run.stepCount(), commands.stepCount(), a.commands.c_str(), seconds,

@@ -122,22 +122,27 @@ int modelsFromSweep(const Common& c, std::int64_t sweepId, std::size_t cell,
   }
   const workspace::GroupTrainReport& g = trained->groups.front();
   if (c.json) {
-    json report = {{"model", trained->modelName},
-                   {"id", trained->modelId},
-                   {"sweep", sweepId},
-                   {"cell", cell},
-                   {"group", std::string(groupInfo(g.group).shortName)},
-                   {"accuracy", g.accuracy},
-                   {"balanced_accuracy", g.balancedAccuracy},
-                   {"samples_train", g.samplesTrain},
-                   {"samples_test", g.samplesTest}};
+    json report = {
+        {"model", trained->modelName},
+        {"id", trained->modelId},
+        {"sweep", sweepId},
+        {"cell", cell},
+        {"group", std::string(groupInfo(g.group).shortName)},
+        {"accuracy", g.accuracy ? json(*g.accuracy) : json(nullptr)},
+        {"balanced_accuracy", g.balancedAccuracy ? json(*g.balancedAccuracy) : json(nullptr)},
+        {"samples_train", g.samplesTrain},
+        {"samples_test", g.samplesTest}};
     if (!out.empty()) report["out"] = out;
     std::cout << dumpJson(report) << "\n";
   } else {
-    std::printf(
-        "stored model '%s' (group %s, balanced accuracy %.1f %% on the sweep's test runs)\n",
-        trained->modelName.c_str(), std::string(groupInfo(g.group).shortName).c_str(),
-        100.0 * g.balancedAccuracy);
+    if (!g.balancedAccuracy) {
+      std::printf("stored model '%s' (group %s, no test data on the sweep's test runs)\n",
+                  trained->modelName.c_str(), std::string(groupInfo(g.group).shortName).c_str());
+    } else
+      std::printf(
+          "stored model '%s' (group %s, balanced accuracy %.1f %% on the sweep's test runs)\n",
+          trained->modelName.c_str(), std::string(groupInfo(g.group).shortName).c_str(),
+          100.0 * g.balancedAccuracy.value_or(0.0));
     if (!out.empty()) std::printf("wrote it to %s\n", out.c_str());
   }
   return kExitOk;

@@ -73,6 +73,36 @@ BENCHMARK(BM_FullDefaultSweep)
     ->MeasureProcessCPUTime()
     ->UseRealTime();
 
+// The same full default sweep scoring every decision mode (step, online, offline): cells that
+// differ only in the decision share one fit, so this is 672 fits scored three ways (2,016 cells).
+// Target: under 1 minute on 2 cores.
+void BM_FullDefaultSweepWithDecisions(benchmark::State& state) {
+  const BenchData& data = benchData(static_cast<int>(state.range(0)));
+  SweepOptions options;
+  options.threads = 0;  // all cores
+  SweepGrid grid;
+  grid.decisions = {DecisionMode::Step, DecisionMode::Online, DecisionMode::Offline};
+  SweepResult result;
+  for (auto _ : state) {
+    result = runSweep(data.train, data.test, grid, options);
+    benchmark::DoNotOptimize(result.cells.data());
+  }
+  std::size_t ok = 0;
+  for (const SweepCellResult& c : result.cells)
+    ok += c.ok ? 1 : 0;
+  state.counters["cells"] = static_cast<double>(result.cells.size());
+  state.counters["fitted"] = static_cast<double>(ok);
+  state.counters["threads"] = result.threads;
+}
+BENCHMARK(BM_FullDefaultSweepWithDecisions)
+    ->Arg(30)
+    ->Unit(benchmark::kSecond)
+    ->Iterations(1)
+    ->Repetitions(3)
+    ->ReportAggregatesOnly(false)
+    ->MeasureProcessCPUTime()
+    ->UseRealTime();
+
 // The shared data extraction alone (8 groups, train and test sets).
 void BM_SweepDataExtraction(benchmark::State& state) {
   const BenchData& data = benchData(30);

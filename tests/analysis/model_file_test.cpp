@@ -33,8 +33,12 @@ GroupModel trainedModel(ClassifierMethod method, CovarianceForm form, int order 
   settings.classifier.gmm.seed = 5;
   GroupTrainResult r = trainGroupModel(data, settings);
   EXPECT_TRUE(r.ok) << r.reason;
-  r.model.trainedOn = {{"runs", {"synthetic"}}};
-  r.model.metrics = {{"accuracy", 0.5}};
+  r.model.provenance.trainRuns = {{"synthetic", 1500, "", "room1"}};
+  r.model.provenance.labels = "truth columns";
+  r.model.provenance.classifier = settings.classifier;
+  r.model.evaluation.evaluatedOn = "test runs";
+  r.model.evaluation.byDecision[0].add(ContactClass::Wall, ContactClass::Wall, 7);
+  r.model.evaluation.byDecision[1].add(ContactClass::Wall, ContactClass::Corner, 2);
   return std::move(r.model);
 }
 
@@ -66,8 +70,18 @@ void expectSamePredictions(const GroupModel& original, const GroupModel& loaded)
   EXPECT_EQ(loaded.features, original.features);
   EXPECT_EQ(loaded.covariance, original.covariance);
   EXPECT_EQ(loaded.varianceFloor, original.varianceFloor);
-  EXPECT_EQ(loaded.trainedOn, original.trainedOn);
-  EXPECT_EQ(loaded.metrics, original.metrics);
+  EXPECT_EQ(loaded.provenance.trainRuns, original.provenance.trainRuns);
+  EXPECT_EQ(loaded.provenance.labels, original.provenance.labels);
+  if (original.classifier.method() == ClassifierMethod::Gmm) {  // the Gaussian has no order
+    EXPECT_EQ(loaded.provenance.classifier.gmm.components,
+              original.provenance.classifier.gmm.components);
+  }
+  EXPECT_EQ(loaded.provenance.classifier.gmm.seed, original.provenance.classifier.gmm.seed);
+  EXPECT_EQ(loaded.evaluation.evaluatedOn, original.evaluation.evaluatedOn);
+  EXPECT_EQ(loaded.evaluation.byDecision, original.evaluation.byDecision);
+  EXPECT_EQ(loaded.decision, original.decision);
+  EXPECT_TRUE(bitIdentical(loaded.transitions.logTransition, original.transitions.logTransition));
+  EXPECT_TRUE(bitIdentical(loaded.transitions.logInitial, original.transitions.logInitial));
 }
 
 // Stability case 9: a model file round trip gives identical predictions, bit for
@@ -168,7 +182,7 @@ TEST(ModelFileValidation, WrongFormat) {
 
 TEST(ModelFileValidation, WrongVersion) {
   json j = validModelJson();
-  j["version"] = 2;
+  j["version"] = 3;  // versions 1 and 2 read
   EXPECT_NE(errorOf(j).find("version"), std::string::npos);
 }
 
@@ -297,7 +311,85 @@ TEST(ModelFileHostile, NumberOverflowNamesFileLineAndColumn) {
   EXPECT_GT(r.error().column, 0u);
   EXPECT_NE(r.errorText().find("overflow"), std::string::npos) << r.errorText();
   EXPECT_NE(r.errorText().find("1e400"), std::string::npos) << r.errorText();
-}
+  // A model trained now carries its class chain and decides online by default.
+  TEST(ModelFile, TrainedModelHasTransitionsAndDecidesOnline) {
+    const GroupModel model = trainedModel(ClassifierMethod::Gmm, CovarianceForm::NodalDiag);
+    ASSERT_FALSE(model.transitions.empty());
+    EXPECT_EQ(model.transitions.classCount(), static_cast<int>(model.classes.size()));
+    EXPECT_EQ(model.decision, DecisionMode::Online);
+    const json j = modelToJson(model);
+    EXPECT_EQ(j["version"], 2);
+    EXPECT_EQ(j["decision"], "online");
+    EXPECT_EQ(j["transitions"]["log_matrix"].size(), model.classes.size());
+  }
+
+  // Version-1 files (no transitions, no decision) still load and decide per step.
+  TEST(ModelFile, VersionOneFilesLoad) {
+    const GroupModel model = trainedModel(ClassifierMethod::Gmm, CovarianceForm::NodalFull);
+    json j = modelToJson(model);
+    j["version"] = 1;
+    j.erase("transitions");
+    j.erase("decision");
+    // Version-1 metrics: the run-file form's metrics.evaluation.confusion.
+    // Parsed from text, as a file is (counts are unsigned numbers there).
+    const json confusion =
+        json::parse(R"({"classes": ["Wall", "Corner"], "counts": [[5, 1], [2, 3]]})");
+    j["metrics"] = {{"evaluated_on", "test runs"}, {"evaluation", {{"confusion", confusion}}}};
+    j["trained_on"] = {{"runs", {"a.csv", "b.csv"}}, {"labels", "truth columns"}};
+    const Result<ModelBundle> read = modelsFromJson(
+        json{{"format", "tactile-model-bundle"}, {"version", 1}, {"models", json::array({j})}},
+        "old.json");
+    ASSERT_TRUE(read.ok()) << read.errorText();
+    const GroupModel& m = read->models.front();
+    EXPECT_TRUE(m.transitions.empty());
+    EXPECT_EQ(m.decision, DecisionMode::Step);
+    EXPECT_EQ(m.evaluation.samplesTest(), 11u);
+    EXPECT_EQ(
+        m.evaluation.confusion(DecisionMode::Step).count(ContactClass::Corner, ContactClass::Wall),
+        2u);
+    ASSERT_EQ(m.provenance.trainRuns.size(), 2u);
+    EXPECT_EQ(m.provenance.trainRuns[1].name, "b.csv");
+    const Eigen::MatrixXd x = probeRows();
+    EXPECT_EQ(m.classifier.predict(x), model.classifier.predict(x));
+    // The database form's older metrics.confusion reads the same way.
+    j["metrics"] = json::parse(R"({"confusion": {"classes": ["Wall"], "counts": [[4]]}})");
+    const Result<ModelBundle> db = modelsFromJson(j, "stored");
+    ASSERT_TRUE(db.ok()) << db.errorText();
+    EXPECT_EQ(db->models.front().evaluation.samplesTest(), 4u);
+  }
+
+  // A model's default decision must be causal; "online" needs transitions; the chain's rows must
+  // be distributions.
+  TEST(ModelFile, DecisionAndTransitionsAreValidated) {
+    const GroupModel model = trainedModel(ClassifierMethod::Gmm, CovarianceForm::NodalDiag);
+    json j = modelToJson(model);
+    j["decision"] = "offline";
+    Result<ModelBundle> r = modelsFromJson(j, "m.json");
+    ASSERT_FALSE(r.ok());
+    EXPECT_NE(r.errorText().find("causal"), std::string::npos) << r.errorText();
+    j = modelToJson(model);
+    j.erase("transitions");
+    r = modelsFromJson(j, "m.json");
+    ASSERT_FALSE(r.ok());
+    EXPECT_NE(r.errorText().find("online needs 'transitions'"), std::string::npos);
+    j = modelToJson(model);
+    j["transitions"]["log_matrix"][0][0] = -0.001;
+    r = modelsFromJson(j, "m.json");
+    ASSERT_FALSE(r.ok());
+    EXPECT_NE(r.errorText().find("transitions.log_matrix[0]"), std::string::npos) << r.errorText();
+  }
+
+  // A group with no test rows reports null, never 0.
+  TEST(ModelFile, NoTestRowsIsNullNotZero) {
+    GroupModel model = trainedModel(ClassifierMethod::Gmm, CovarianceForm::NodalDiag);
+    model.evaluation.byDecision = {};
+    const json metrics = evaluationToJson(model);
+    EXPECT_TRUE(metrics["balanced_accuracy"].is_null());
+    EXPECT_TRUE(metrics["accuracy"].is_null());
+    for (const char* mode : {"step", "online", "offline"})
+      EXPECT_TRUE(metrics["balanced_accuracy_by_decision"][mode].is_null()) << mode;
+    EXPECT_EQ(metrics["samples_test"], 0);
+  }
 
 }  // namespace
 }  // namespace tactile::analysis

@@ -58,6 +58,7 @@ SweepCellResult cellWith(SensorGroup group, int order, double floor, double seco
 
 constexpr ContactClass W = ContactClass::Wall;
 constexpr ContactClass C = ContactClass::Corner;
+constexpr ContactClass L = ContactClass::LeavingWall;
 
 SweepResult handSweep() {
   SweepResult s;
@@ -286,6 +287,34 @@ TEST(ReportFile, MarkdownLinksSurviveSpacesInTheName) {
         << f.file;
   }
   EXPECT_NE(text.str().find("| held-out share of each training run | 0.25 |"), std::string::npos);
+}
+
+// A class with fewer test steps than the minimum never decides the best cell: a cell that wins
+// only on a class with 5 test steps loses to one better on the classes with enough.
+TEST(ReportBest, TooFewTestStepsNeverDecide) {
+  SweepResult s;
+  // Wall 100 steps, Corner 100, LeavingWall 5 in both cells.
+  SweepCellResult a = cellWith(SensorGroup::Front, 2, 0.1, 1.0,
+                               {{W, W, 95}, {W, C, 5}, {C, C, 90}, {C, W, 10}, {L, L, 5}});
+  SweepCellResult b = cellWith(SensorGroup::Front, 4, 0.1, 1.0,
+                               {{W, W, 99}, {W, C, 1}, {C, C, 99}, {C, W, 1}, {L, W, 5}});
+  // On every class a is better (LeavingWall 1.0 against 0); on the classes with enough, b is.
+  ASSERT_GT(a.metrics.balancedAccuracy, b.metrics.balancedAccuracy);
+  s.cells = {a, b};
+  EXPECT_TRUE(betterCell(b, a));
+  EXPECT_FALSE(betterCell(a, b));
+  EXPECT_EQ(bestCells(s), (std::vector<std::size_t>{1}));
+  // Counted with no minimum, a wins.
+  EXPECT_TRUE(betterCell(a, b, 0));
+  EXPECT_EQ(bestCells(s, 0), (std::vector<std::size_t>{0}));
+  // The class-rate table marks the thin class and shows every count.
+  const Table t = classRateTable({{"a", a.metrics}}, "rates");
+  const auto& row = t.rows.front();
+  EXPECT_NE(std::find(row.begin(), row.end(), "100.0 (5) too few"), row.end());
+  EXPECT_NE(std::find(row.begin(), row.end(), "95.0 (100)"), row.end());
+  const Table none = classRateTable({{"empty", Metrics{}}}, "rates");
+  EXPECT_NE(std::find(none.rows[0].begin(), none.rows[0].end(), "no test data"),
+            none.rows[0].end());
 }
 
 // Two cells of group F equal in balanced accuracy: the one with fewer components is the best,

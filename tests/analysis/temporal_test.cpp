@@ -2,7 +2,10 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdlib>
 #include <limits>
+#include <utility>
+#include <vector>
 
 #include "analysis/temporal.h"
 
@@ -166,6 +169,198 @@ TEST(Temporal, PriorsShiftTheArgmax) {
   s.logPriors.resize(2);
   s.logPriors << std::log(0.1), std::log(0.9);
   EXPECT_EQ(argmaxDecisions(s)[0], 1);
+}
+
+}  // namespace
+}  // namespace tactile::analysis
+
+// ---- HMM with an estimated chain: forward, forward-backward, estimation, causality ----
+
+namespace tactile::analysis {
+namespace {
+
+// A random chain over `c` classes (rows and start drawn from a fixed generator).
+TransitionModel randomChain(int c, unsigned seed) {
+  std::srand(seed);
+  auto draw = [] { return 0.05 + static_cast<double>(std::rand() % 1000) / 1000.0; };
+  Eigen::MatrixXd a(c, c);
+  Eigen::VectorXd pi(c);
+  for (int i = 0; i < c; ++i) {
+    double sum = 0.0;
+    for (int j = 0; j < c; ++j)
+      sum += a(i, j) = draw();
+    a.row(i) /= sum;
+  }
+  double sum = 0.0;
+  for (int i = 0; i < c; ++i)
+    sum += pi[i] = draw();
+  pi /= sum;
+  TransitionModel m;
+  m.set(a.array().log().matrix(), pi.array().log().matrix());
+  return m;
+}
+
+StepLikelihoods randomSteps(int t, int c, unsigned seed) {
+  std::srand(seed);
+  StepLikelihoods s;
+  s.logLik.resize(t, c);
+  for (int i = 0; i < t; ++i)
+    for (int j = 0; j < c; ++j)
+      s.logLik(i, j) = -5.0 * static_cast<double>(std::rand() % 1000) / 1000.0;
+  s.observed.assign(static_cast<std::size_t>(t), 1);
+  return s;
+}
+
+// Brute force over every path of one episode (steps first..last): the joint probability of each
+// path, summed into the filtered marginal at `upTo` (paths of steps first..upTo) or the smoothed
+// marginal (paths over the whole episode).
+Eigen::VectorXd bruteMarginal(const StepLikelihoods& s, const TransitionModel& m, int first,
+                              int last, int at, bool smoothed) {
+  const int c = static_cast<int>(s.logLik.cols());
+  const int end = smoothed ? last : at;
+  const int len = end - first + 1;
+  Eigen::VectorXd out = Eigen::VectorXd::Zero(c);
+  std::vector<int> path(static_cast<std::size_t>(len), 0);
+  while (true) {
+    double p = std::exp(m.logInitial[path[0]] + s.logLik(first, path[0]));
+    for (int k = 1; k < len; ++k) {
+      p *= std::exp(m.logTransition(path[k - 1], path[k]) + s.logLik(first + k, path[k]));
+    }
+    out[path[static_cast<std::size_t>(at - first)]] += p;
+    int k = 0;
+    while (k < len && ++path[static_cast<std::size_t>(k)] == c)
+      path[static_cast<std::size_t>(k++)] = 0;
+    if (k == len) break;
+  }
+  return out / out.sum();
+}
+
+TEST(Hmm, ForwardAndForwardBackwardMatchBruteForceEnumeration) {
+  for (unsigned seed = 1; seed <= 5; ++seed) {
+    const int c = 2 + static_cast<int>(seed % 3);  // 2, 3 or 4 classes
+    const TransitionModel chain = randomChain(c, seed);
+    StepLikelihoods s = randomSteps(9, c, 100 + seed);
+    s.observed[4] = 0;  // two episodes: steps 0-3 and 5-8
+    const HmmFilterResult f = hmmForward(s, chain);
+    const HmmFilterResult b = hmmForwardBackward(s, chain);
+    for (const auto& [first, last] : {std::pair{0, 3}, std::pair{5, 8}}) {
+      for (int t = first; t <= last; ++t) {
+        const Eigen::VectorXd fw = bruteMarginal(s, chain, first, last, t, false);
+        const Eigen::VectorXd fb = bruteMarginal(s, chain, first, last, t, true);
+        for (int j = 0; j < c; ++j) {
+          EXPECT_NEAR(std::exp(f.logPosterior(t, j)), fw[j], 1e-12) << seed << " " << t;
+          EXPECT_NEAR(std::exp(b.logPosterior(t, j)), fb[j], 1e-12) << seed << " " << t;
+        }
+      }
+    }
+    for (int j = 0; j < c; ++j) {
+      EXPECT_EQ(f.logPosterior(4, j), -kInf);
+      EXPECT_EQ(b.logPosterior(4, j), -kInf);
+    }
+    EXPECT_FALSE(f.decisions[4].has_value());
+    // The last step of an episode has nothing after it: smoothed = filtered.
+    for (int j = 0; j < c; ++j)
+      EXPECT_NEAR(f.logPosterior(8, j), b.logPosterior(8, j), 1e-12);
+  }
+}
+
+TEST(Hmm, OfflineDecisionUsesTheFutureOnlineDoesNot) {
+  // Two classes, sticky chain: a weak step for class 1 between strong steps for class 0.
+  TransitionModel chain = stayTransitions(2, 0.95);
+  StepLikelihoods s = twoClass({0, 0, 0, 0}, 3.0);
+  s.logLik(3, 0) = -1.0 - 8.0;  // the last step strongly says class 1
+  s.logLik(3, 1) = -1.0;
+  s.logLik(2, 0) = -1.0 - 0.5;  // step 2 weakly says class 1
+  s.logLik(2, 1) = -1.0;
+  const Decisions online = decide(s, chain, DecisionMode::Online);
+  const Decisions offline = decide(s, chain, DecisionMode::Offline);
+  const Decisions step = decide(s, chain, DecisionMode::Step);
+  EXPECT_EQ(step[2], 1);
+  EXPECT_EQ(online[2], 0);   // the past (class 0) outweighs a weak step
+  EXPECT_EQ(offline[2], 1);  // the strong class-1 step after it pulls it over
+  EXPECT_EQ(online[3], 1);
+}
+
+TEST(Hmm, TransitionEstimateKeepsAnUnseenTransitionPossible) {
+  // Class 1 is never followed by class 0, class 2 never seen at all.
+  const TransitionModel m = estimateTransitions({{0, 0, 1, 1, -1, 1, 1}, {-1, 0}}, 3, 1.0);
+  // Row 0: 0->0 once, 0->1 once: (1+1)/(2+3), (1+1)/(2+3), (0+1)/(2+3).
+  EXPECT_NEAR(std::exp(m.logTransition(0, 0)), 2.0 / 5.0, 1e-15);
+  EXPECT_NEAR(std::exp(m.logTransition(0, 1)), 2.0 / 5.0, 1e-15);
+  EXPECT_NEAR(std::exp(m.logTransition(0, 2)), 1.0 / 5.0, 1e-15);
+  // Row 1: 1->1 twice (steps 2-3 and 5-6), never 1->0: (0+1)/(2+3) > 0.
+  EXPECT_NEAR(std::exp(m.logTransition(1, 0)), 1.0 / 5.0, 1e-15);
+  EXPECT_NEAR(std::exp(m.logTransition(1, 1)), 3.0 / 5.0, 1e-15);
+  // Row 2: no data: uniform.
+  for (int j = 0; j < 3; ++j)
+    EXPECT_NEAR(std::exp(m.logTransition(2, j)), 1.0 / 3.0, 1e-15);
+  // Starts: 0 (run 1 step 0), 1 (run 1 step 5), 0 (run 2 step 1): (2+1)/6, (1+1)/6, 1/6.
+  EXPECT_NEAR(std::exp(m.logInitial[0]), 3.0 / 6.0, 1e-15);
+  EXPECT_NEAR(std::exp(m.logInitial[1]), 2.0 / 6.0, 1e-15);
+  EXPECT_NEAR(std::exp(m.logInitial[2]), 1.0 / 6.0, 1e-15);
+  EXPECT_EQ(m.counts(1, 0), 0.0);
+  EXPECT_EQ(m.counts(1, 1), 2.0);
+  // The unseen move can still be taken when the evidence demands it.
+  StepLikelihoods s = randomSteps(3, 3, 7);
+  s.logLik.row(0) << 0.0, -30.0, -30.0;
+  s.logLik.row(1) << -30.0, 0.0, -30.0;
+  s.logLik.row(2) << 0.0, -30.0, -30.0;  // 1 -> 0, never seen in training
+  const Decisions d = decide(s, m, DecisionMode::Online);
+  EXPECT_EQ(d[2], 0);
+}
+
+TEST(Hmm, OnlineDecisionIsCausal) {
+  for (unsigned seed = 1; seed <= 3; ++seed) {
+    const TransitionModel chain = randomChain(3, seed);
+    const StepLikelihoods s = randomSteps(40, 3, 50 + seed);
+    const HmmFilterResult base = hmmForward(s, chain);
+    for (int t = 0; t + 1 < 40; t += 3) {
+      StepLikelihoods changed = s;
+      // Change step t+1 and everything after it.
+      for (int u = t + 1; u < 40; ++u)
+        changed.logLik.row(u) = s.logLik.row(u).reverse() * 2.0;
+      changed.observed[static_cast<std::size_t>(t + 1)] = (t % 2 == 0) ? 0 : 1;
+      const HmmFilterResult r = hmmForward(changed, chain);
+      for (int u = 0; u <= t; ++u) {
+        EXPECT_EQ(r.decisions[static_cast<std::size_t>(u)],
+                  base.decisions[static_cast<std::size_t>(u)]);
+        for (int j = 0; j < 3; ++j)
+          EXPECT_EQ(r.logPosterior(u, j), base.logPosterior(u, j));
+      }
+    }
+  }
+}
+
+TEST(Hmm, UnderflowingStepAndForbiddingChainStayFinite) {
+  const TransitionModel chain = randomChain(3, 3);
+  StepLikelihoods s = randomSteps(5, 3, 9);
+  s.logLik.row(2).setConstant(-kInf);
+  s.logLik(3, 1) = std::numeric_limits<double>::quiet_NaN();
+  for (const HmmFilterResult& r : {hmmForward(s, chain), hmmForwardBackward(s, chain)}) {
+    for (int t = 0; t < 5; ++t) {
+      EXPECT_NEAR(std::exp(logSumExp(r.logPosterior.row(t).transpose())), 1.0, 1e-12) << t;
+      for (int j = 0; j < 3; ++j)
+        EXPECT_FALSE(std::isnan(r.logPosterior(t, j)));
+    }
+  }
+  // stay = 1 forbids every move: evidence for another class cannot be followed, but stays defined.
+  const TransitionModel frozen = stayTransitions(2, 1.0);
+  const StepLikelihoods two = twoClass({0, 1, 1});
+  StepLikelihoods hard = two;
+  hard.logLik(1, 0) = -kInf;
+  for (const HmmFilterResult& r : {hmmForward(hard, frozen), hmmForwardBackward(hard, frozen)}) {
+    for (int t = 0; t < 3; ++t)
+      for (int j = 0; j < 2; ++j)
+        EXPECT_FALSE(std::isnan(r.logPosterior(t, j)));
+  }
+}
+
+TEST(Hmm, DecisionModeNames) {
+  for (DecisionMode m : kDecisionModes)
+    EXPECT_EQ(parseDecisionMode(decisionModeName(m)), m);
+  EXPECT_FALSE(parseDecisionMode("smoothed").has_value());
+  EXPECT_TRUE(isCausal(DecisionMode::Online));
+  EXPECT_FALSE(isCausal(DecisionMode::Offline));
 }
 
 }  // namespace

@@ -133,7 +133,7 @@ void PredictionTest::predictionsEqualTheCoreClassification() {
         classified->result.groups[static_cast<std::size_t>(groupIndex(g.group))];
     QCOMPARE(mine.hasModel, core.model != nullptr);
     for (std::size_t t = 0; t < classified->result.steps; ++t) {
-      const std::string name = core.className(t);
+      const std::string name = core.stepClassName(t);
       const auto cls = mine.classAt(static_cast<std::int64_t>(t));
       QCOMPARE(cls ? std::string(contactClassName(*cls)) : std::string(), name);
       const float conf = mine.confidence[t];

@@ -350,7 +350,7 @@ void TrainingDialogTest::trainWithGroupDefaultsUsesEachGroupsOwn() {
     QCOMPARE(m.varianceFloor, d.classifier.gmm.varianceFloor);
     for (const analysis::GaussianMixture& mixture : m.classifier.models())
       QVERIFY(mixture.components() <= d.classifier.gmm.components);
-    QCOMPARE(m.trainedOn["settings"]["order"].get<int>(), d.classifier.gmm.components);
+    QCOMPARE(m.provenance.classifier.gmm.components, d.classifier.gmm.components);
   }
 }
 

@@ -6,6 +6,7 @@
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -16,6 +17,7 @@
 
 #include "analysis/features.h"
 #include "analysis/report.h"
+#include "analysis/training.h"
 #include "run/run_csv.h"
 #include "tests/analysis/learn_test_data.h"
 #include "tests/storage/storage_test_util.h"
@@ -325,7 +327,8 @@ TEST(WorkspaceTrain, GroupWithTooFewRowsIsSkippedOthersTrain) {
   for (std::size_t i : {0u, 2u}) {
     EXPECT_TRUE(outcome->groups[i].trained) << outcome->groups[i].skippedBecause;
     EXPECT_GT(outcome->groups[i].samplesTest, 0u);
-    EXPECT_GT(outcome->groups[i].accuracy, 0.8);
+    ASSERT_TRUE(outcome->groups[i].accuracy.has_value());
+    EXPECT_GT(*outcome->groups[i].accuracy, 0.8);
   }
   EXPECT_EQ(outcome->bundle.models.size(), 2u);
   for (const analysis::GroupModel& m : outcome->bundle.models)
@@ -446,7 +449,8 @@ TEST(WorkspaceTrain, LeaveOneRunOutScoresEveryLabelledContactRow) {
     EXPECT_GT(contactRows, 0u);
     EXPECT_EQ(r.samplesTest, contactRows) << groupInfo(r.group).shortName;
     EXPECT_EQ(r.samplesTrain, contactRows);
-    EXPECT_GT(r.accuracy, 0.8);
+    ASSERT_TRUE(r.accuracy.has_value());
+    EXPECT_GT(*r.accuracy, 0.8);
   }
   // The stored model is trained on every run.
   EXPECT_EQ(outcome->provenance["train_runs"].size(), f.names.size());
@@ -487,7 +491,7 @@ TEST(WorkspaceTrain, StoredModelNamesItsProvenance) {
   EXPECT_EQ(p["settings"]["B"]["order"], 1);
   EXPECT_EQ(p["settings"]["B"]["features"], "normal");
   ASSERT_EQ(outcome->bundle.models.size(), 1u);
-  EXPECT_EQ(outcome->bundle.models.front().trainedOn["settings"], p["settings"]["B"]);
+  EXPECT_EQ(provenanceToJson(outcome->bundle.models.front())["settings"], p["settings"]["B"]);
   std::set<std::string> named;
   for (const char* key : {"train_runs", "test_runs"}) {
     ASSERT_TRUE(p[key].is_array()) << key;
@@ -511,13 +515,98 @@ TEST(WorkspaceTrain, StoredModelNamesItsProvenance) {
   auto bundle = f.ws->loadModel("truth-1");
   ASSERT_TRUE(bundle.ok()) << bundle.errorText();
   ASSERT_EQ(bundle->models.size(), 1u);
-  json own = p;
-  own["settings"] = p["settings"]["B"];
-  EXPECT_EQ(bundle->models[0].trainedOn, own);
+  const json own = provenanceToJson(bundle->models[0]);
+  for (const char* key : {"label_set", "split", "program_version", "train_runs", "test_runs"})
+    EXPECT_EQ(own[key], p[key]) << key;
+  EXPECT_EQ(own["settings"], p["settings"]["B"]);
   // The next automatic name is the next free number.
   auto second = f.ws->train(request);
   ASSERT_TRUE(second.ok());
   EXPECT_EQ(second->modelName, "truth-2");
+}
+
+// One training recipe: the same runs and labels trained from files (the core function the file
+// form of `tactile train` calls) and from the database give the same model and the same scores,
+// and the model exported from the database reports them.
+TEST(WorkspaceTrain, FilesAndDatabaseGiveTheSameModelAndScores) {
+  TrainFixture f;
+  ASSERT_TRUE(f.ws);
+  TrainRequest request;
+  request.labelSet = "truth";
+  request.trainRuns = {"run_a", "run_b", "run_c"};
+  request.testRuns = {"run_d"};
+  request.groups = {SensorGroup::Front, SensorGroup::Right};
+  request.settings = quickSettings();
+  auto stored = f.ws->train(request);
+  ASSERT_TRUE(stored.ok()) << stored.errorText();
+
+  // The same runs as files would give them: the generator's runs with labels from their truth.
+  std::vector<RunData> runs;
+  for (std::uint64_t seed : {42u, 44u, 45u, 43u})
+    runs.push_back(labelledRun(seed));  // a,b,c,d
+  analysis::TrainJob job;
+  for (std::size_t i = 0; i < 3; ++i)
+    job.runs.push_back({&runs[i], analysis::labelsFromTruth(runs[i])});
+  job.testRuns = {{&runs[3], analysis::labelsFromTruth(runs[3])}};
+  job.groups = request.groups;
+  job.settings = request.settings;
+  auto files = analysis::trainAndEvaluate(job);
+  ASSERT_TRUE(files.ok()) << files.errorText();
+
+  ASSERT_EQ(files->bundle.models.size(), stored->bundle.models.size());
+  auto exported = f.ws->loadModel(stored->modelName);
+  ASSERT_TRUE(exported.ok());
+  for (std::size_t i = 0; i < files->bundle.models.size(); ++i) {
+    const analysis::GroupModel& a = files->bundle.models[i];
+    const analysis::GroupModel& b = exported->models[i];
+    EXPECT_EQ(a.group, b.group);
+    EXPECT_EQ(analysis::modelToJson(a)["components"], analysis::modelToJson(b)["components"]);
+    EXPECT_EQ(analysis::modelToJson(a)["transitions"], analysis::modelToJson(b)["transitions"]);
+    EXPECT_GT(a.evaluation.samplesTest(), 0u);
+    EXPECT_EQ(a.evaluation.byDecision, b.evaluation.byDecision);
+    for (analysis::DecisionMode d : analysis::kDecisionModes)
+      EXPECT_EQ(a.evaluation.balancedAccuracy(d), b.evaluation.balancedAccuracy(d));
+  }
+  // The report of the exported bundle shows the scores (not blanks).
+  const std::string report = analysis::modelReport(exported.value(), analysis::TableStyle::Csv);
+  const double ba =
+      *exported->models[0].evaluation.balancedAccuracy(analysis::DecisionMode::Online);
+  char text[32];
+  std::snprintf(text, sizeof text, "%.1f", 100.0 * ba);
+  EXPECT_NE(report.find(text), std::string::npos) << report;
+  EXPECT_EQ(report.find("no test data"), std::string::npos) << report;
+}
+
+// By scene: runs of two scenes, each scored by a model trained on the other.
+TEST(WorkspaceTrain, BySceneScoresEachSceneWithoutIt) {
+  TempDir dir;
+  auto ws = openWorkspace(dir);
+  ASSERT_TRUE(ws);
+  std::uint64_t seed = 70;
+  for (const char* scene : {"room1", "room1", "room2", "room2"}) {
+    RunData run = labelledRun(++seed);
+    run.setMeta("scene", scene);
+    const storage::ImportOutcome out =
+        ws->database().importRun(run, std::string(scene) + "_" + std::to_string(seed));
+    ASSERT_EQ(out.status, storage::ImportStatus::Imported) << out.message;
+    ASSERT_TRUE(ws->database().autolabel(out.runId, "truth").ok());
+  }
+  TrainRequest request;
+  request.labelSet = "truth";
+  request.split = SplitMode::ByScene;
+  request.groups = {SensorGroup::Left};
+  request.settings = quickSettings();
+  auto outcome = ws->train(request);
+  ASSERT_TRUE(outcome.ok()) << outcome.errorText();
+  const analysis::ModelEvaluation& e = outcome->bundle.models.front().evaluation;
+  ASSERT_EQ(e.scenes.size(), 2u);
+  EXPECT_EQ(e.evaluatedOn, "leave-one-scene-out");
+  EXPECT_GT(e.scenes[0].byDecision[0].total(), 0u);
+  EXPECT_EQ(e.scenes[0].byDecision[0].total() + e.scenes[1].byDecision[0].total(), e.samplesTest());
+  ASSERT_TRUE(outcome->groups.front().sceneMean.has_value());
+  // Test runs are refused with by-scene.
+  request.testRuns = {"room1_71"};
+  EXPECT_FALSE(ws->train(request).ok());
 }
 
 TEST(WorkspaceTrain, TakenModelNameFailsBeforeTraining) {
@@ -978,8 +1067,9 @@ TEST(WorkspaceCellModel, ModelOfACellScoresExactlyAsTheCell) {
     EXPECT_TRUE(g.trained);
     EXPECT_EQ(g.samplesTrain, cell.trainRows);
     EXPECT_EQ(g.samplesTest, cell.testRows);
-    EXPECT_DOUBLE_EQ(g.balancedAccuracy, cell.metrics.balancedAccuracy);
-    EXPECT_DOUBLE_EQ(g.accuracy, cell.metrics.accuracy);
+    ASSERT_TRUE(g.balancedAccuracy.has_value() && g.accuracy.has_value());
+    EXPECT_DOUBLE_EQ(*g.balancedAccuracy, cell.metrics.balancedAccuracy);
+    EXPECT_DOUBLE_EQ(*g.accuracy, cell.metrics.accuracy);
     // Stored under a name that says where it came from, distinct for every cell.
     EXPECT_NE(trained->modelName.find("order " + std::to_string(cell.cell.order)),
               std::string::npos)

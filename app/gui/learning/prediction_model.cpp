@@ -70,14 +70,25 @@ namespace {
 void fillGroup(const analysis::GroupClassification& g, std::size_t steps, GroupPrediction& out) {
   out.cls.assign(steps, -1);
   out.confidence.assign(steps, 0.0f);
+  out.online.assign(steps, -1);
+  out.offline.assign(steps, -1);
   out.hasModel = g.model != nullptr;
   for (std::size_t t = 0; t < steps; ++t) {
     if (t < g.noContactRule.size() && g.noContactRule[t]) {
       out.cls[t] = static_cast<std::int8_t>(ContactClass::NoContact);
+      out.online[t] = out.offline[t] = out.cls[t];
       out.confidence[t] = 1.0f;
     }
   }
   if (g.model == nullptr) return;
+  for (const auto& [from, to] :
+       {std::pair{&g.online, &out.online}, std::pair{&g.offline, &out.offline}}) {
+    for (std::size_t t = 0; t < steps && t < from->size(); ++t) {
+      if ((*from)[t])
+        (*to)[t] =
+            static_cast<std::int8_t>(g.model->classes[static_cast<std::size_t>(*(*from)[t])]);
+    }
+  }
   const Eigen::MatrixXd post = logPosteriors(g.logLikelihoods, g.model->classifier.logPriors());
   for (std::size_t t = 0; t < steps && t < g.predicted.size(); ++t) {
     if (!g.predicted[t]) continue;
@@ -132,7 +143,9 @@ void PredictionModel::compute(const QString& databasePath, const QString& runNam
       bool haveRun = false;
       RunData run;
       for (const auto& [model, groups] : groupsOf) {
-        auto classified = ws.value()->classify(model.toStdString(), runName.toStdString());
+        analysis::ClassifyOptions options;
+        options.allDecisions = true;  // the strip shows the online and offline decisions too
+        auto classified = ws.value()->classify(model.toStdString(), runName.toStdString(), options);
         if (!classified) {
           result->error = QString::fromStdString(classified.errorText());
           break;

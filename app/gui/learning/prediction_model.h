@@ -27,10 +27,13 @@ class LabelModel;
 
 // One group's predictions over the run.
 struct GroupPrediction {
-  QString model;                        // stored model name ("" when the group has none)
-  bool hasModel = false;                // the model has a classifier for this group
-  std::vector<std::int8_t> cls;         // ContactClass per step, -1 where nothing was predicted
-  std::vector<float> confidence;        // posterior probability of cls (1 for NoContact by rule)
+  QString model;                  // stored model name ("" when the group has none)
+  bool hasModel = false;          // the model has a classifier for this group
+  std::vector<std::int8_t> cls;   // ContactClass per step, -1 where nothing was predicted
+  std::vector<float> confidence;  // posterior probability of cls (1 for NoContact by rule)
+  // The online (forward filter) and offline (forward-backward) decisions, as cls.
+  std::vector<std::int8_t> online;
+  std::vector<std::int8_t> offline;
   std::vector<std::uint8_t> disagrees;  // 1 where a label exists and differs from cls
   std::size_t disagreements = 0;
 

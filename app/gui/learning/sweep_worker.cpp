@@ -128,6 +128,8 @@ LearningJobResult SweepWorker::trainingJob(LearningJobResult::Kind kind,
   out.ok = true;
   out.modelName = QString::fromStdString(outcome->modelName);
   out.groups = outcome->groups;
+  if (outcome->modelId == 0)
+    out.unstored = std::make_shared<workspace::TrainOutcome>(std::move(outcome.value()));
   return out;
 }
 

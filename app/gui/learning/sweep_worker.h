@@ -33,6 +33,8 @@ struct LearningJobResult {
   std::size_t cells = 0;     // finished cells of a sweep
   QString modelName;         // trainings
   std::vector<workspace::GroupTrainReport> groups;  // trainings
+  // A training run with TrainRequest::store false: the outcome, for the dialog to store.
+  std::shared_ptr<workspace::TrainOutcome> unstored;
   double seconds = 0.0;
 };
 

@@ -9,6 +9,7 @@
 #include <QHeaderView>
 #include <QLabel>
 #include <QLineEdit>
+#include <QMessageBox>
 #include <QProgressBar>
 #include <QPushButton>
 #include <QRegularExpression>
@@ -118,6 +119,10 @@ void TrainingDialog::buildUi() {
   split_->addItem(tr("Score on the test runs"), static_cast<int>(workspace::SplitMode::ByRun));
   split_->addItem(tr("Leave one run out (training only)"),
                   static_cast<int>(workspace::SplitMode::LeaveOneRunOut));
+  split_->addItem(tr("Leave one scene out"), static_cast<int>(workspace::SplitMode::ByScene));
+  split_->setToolTip(
+      tr("Leave one scene out: each scene's runs (marked for training) are scored "
+         "by models trained without that scene; no test runs"));
   form->addRow(tr("Split:"), split_);
 
   auto* groupRow = new QHBoxLayout;
@@ -174,6 +179,24 @@ void TrainingDialog::buildUi() {
   seeds_ = new QLineEdit(QStringLiteral("1"));
   seeds_->setObjectName(QStringLiteral("seeds"));
   form->addRow(tr("Seeds:"), seeds_);
+
+  auto* decisionRow = new QHBoxLayout;
+  for (analysis::DecisionMode m : analysis::kDecisionModes) {
+    auto* box = new QCheckBox(qs(analysis::decisionModeName(m)));
+    box->setObjectName(QStringLiteral("decision-") + qs(analysis::decisionModeName(m)));
+    box->setChecked(m == analysis::DecisionMode::Step);
+    decisions_.push_back(box);
+    decisionRow->addWidget(box);
+  }
+  decisionRow->addStretch();
+  auto* decisionHelp = new QWidget;
+  decisionHelp->setLayout(decisionRow);
+  decisionHelp->setToolTip(
+      tr("Decision modes: step = each step alone; online = HMM forward filter over the contact "
+         "(causal, what a navigator may use); offline = forward-backward over the whole contact. "
+         "A sweep scores every ticked mode (cells differing only here share one fit); Train model "
+         "always scores all three and its models decide online by default"));
+  form->addRow(tr("Decisions:"), decisionHelp);
 
   name_ = new QLineEdit;
   name_->setPlaceholderText(tr("automatic"));
@@ -467,6 +490,10 @@ Result<analysis::SweepGrid> TrainingDialog::grid() const {
   if (g.features.empty()) return failure("choose at least one feature kind");
   auto seeds = parseNumbers(seeds_->text(), tr("Seeds"));
   if (!seeds) return seeds.error();
+  g.decisions.clear();
+  for (std::size_t i = 0; i < decisions_.size(); ++i)
+    if (decisions_[i]->isChecked()) g.decisions.push_back(analysis::kDecisionModes[i]);
+  if (g.decisions.empty()) return failure("choose at least one decision mode");
   g.seeds.clear();
   for (double s : seeds.value()) {
     if (s < 0 || s != std::floor(s) || s > 9.0e15) {
@@ -483,9 +510,14 @@ Result<workspace::SweepRequest> TrainingDialog::sweepRequest() const {
   workspace::SweepRequest request;
   request.labelSet = labelSet_->currentText().toStdString();
   request.trainRuns = runsWithRole(RunRole::Train);
-  request.testRuns = runsWithRole(RunRole::Test);
+  request.split = static_cast<workspace::SplitMode>(split_->currentData().toInt());
+  if (request.split == workspace::SplitMode::LeaveOneRunOut) {
+    return failure("a sweep scores on test runs or leaves one scene out; choose one of those");
+  }
+  if (request.split == workspace::SplitMode::ByRun) request.testRuns = runsWithRole(RunRole::Test);
   if (request.trainRuns.empty()) return failure("mark at least one run for training");
-  if (request.testRuns.empty()) return failure("a sweep scores on test runs: mark at least one");
+  if (request.split == workspace::SplitMode::ByRun && request.testRuns.empty())
+    return failure("a sweep scores on test runs: mark at least one");
   auto g = grid();
   if (!g) return g.error();
   request.grid = std::move(g.value());
@@ -566,7 +598,11 @@ void TrainingDialog::startTrain() {
     showError(QString::fromStdString(request.errorText()));
     return;
   }
-  if (!worker_->startTrain(databasePath_, request.value())) return;
+  // Trained and scored first, stored after: a group that scored 0 or had no test data is worth a
+  // question before the model goes into the database.
+  pendingTrain_ = request.value();
+  pendingTrain_.store = false;
+  if (!worker_->startTrain(databasePath_, pendingTrain_)) return;
   statusIsError_ = false;
   trainResult_->setRowCount(0);
   resultStack_->setCurrentWidget(trainResult_);
@@ -594,7 +630,8 @@ void TrainingDialog::onProgress(qint64 done, qint64 total, double secondsLeft) {
           : tr("%1 of %2 done").arg(done).arg(total));
 }
 
-void TrainingDialog::onFinished(const LearningJobResult& result) {
+void TrainingDialog::onFinished(const LearningJobResult& finished) {
+  LearningJobResult result = finished;  // a training is stored here (when asked) and renamed
   setBusy(false);
   if (progress_->maximum() == 0) progress_->setRange(0, 1);
   if (result.kind == LearningJobResult::Kind::Sweep) {
@@ -617,15 +654,51 @@ void TrainingDialog::onFinished(const LearningJobResult& result) {
       emit sweepStored(result.sweepId);
     }
   } else {
+    if (result.ok && result.unstored) {
+      QStringList doubtful;
+      for (const workspace::GroupTrainReport& g : result.groups) {
+        if (!g.doubtful()) continue;
+        doubtful << (g.balancedAccuracy
+                         ? tr("%1 scored 0 on %2 test steps")
+                               .arg(qs(groupInfo(g.group).shortName))
+                               .arg(g.samplesTest)
+                         : tr("%1 had no test data").arg(qs(groupInfo(g.group).shortName)));
+      }
+      bool store = true;
+      if (!doubtful.isEmpty()) {
+        const QString text =
+            tr("%1. Store the model anyway?").arg(doubtful.join(QStringLiteral("; ")));
+        store = askToStore_
+                    ? askToStore_(text)
+                    : QMessageBox::question(this, tr("Store the model?"), text) == QMessageBox::Yes;
+      }
+      if (!store) {
+        setBusy(false);
+        progress_->setRange(0, 1);
+        status_->setText(
+            tr("The model was not stored (%1).").arg(doubtful.join(QStringLiteral("; "))));
+        emit jobFinished();
+        return;
+      }
+      auto saved = workspace_.storeTrained(std::move(*result.unstored), pendingTrain_);
+      if (!saved) {
+        result.ok = false;
+        result.error = QString::fromStdString(saved.errorText());
+      } else {
+        result.modelName = QString::fromStdString(saved->modelName);
+      }
+    }
     if (result.ok) {
       QStringList lines;
       for (const workspace::GroupTrainReport& g : result.groups) {
         const QString name = qs(groupInfo(g.group).shortName);
-        lines << (g.trained
-                      ? tr("%1: balanced accuracy %2 %")
-                            .arg(name)
-                            .arg(100.0 * g.balancedAccuracy, 0, 'f', 1)
-                      : tr("%1: skipped (%2)").arg(name, QString::fromStdString(g.skippedBecause)));
+        lines << (!g.trained
+                      ? tr("%1: skipped (%2)").arg(name, QString::fromStdString(g.skippedBecause))
+                  : g.balancedAccuracy ? tr("%1: balanced accuracy %2 % (%3 test steps)")
+                                             .arg(name)
+                                             .arg(100.0 * *g.balancedAccuracy, 0, 'f', 1)
+                                             .arg(g.samplesTest)
+                                       : tr("%1: no test data").arg(name));
       }
       progress_->setRange(0, 1);
       progress_->setValue(1);

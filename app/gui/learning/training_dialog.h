@@ -7,6 +7,7 @@
 
 #include <QDialog>
 
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -56,6 +57,10 @@ class TrainingDialog : public QDialog {
   void setGroupsChecked(const std::vector<SensorGroup>& groups);
   void setFormsChecked(const std::vector<analysis::CovarianceForm>& forms);
 
+  // Asked before a trained model is stored when a group scored 0 or had no test data (the text
+  // names them); true stores it. Default: a question box. Tests set their own answer.
+  void setStoreQuestion(std::function<bool(const QString&)> ask) { askToStore_ = std::move(ask); }
+
   SweepWorker* worker() const { return worker_; }
   SweepCellsModel* cellsModel() const { return cells_; }
   QProgressBar* progressBar() const { return progress_; }
@@ -96,6 +101,8 @@ class TrainingDialog : public QDialog {
 
   workspace::Workspace& workspace_;
   QString databasePath_;
+  workspace::TrainRequest pendingTrain_;  // the running training (stored after it, if asked)
+  std::function<bool(const QString&)> askToStore_;
   SweepWorker* worker_ = nullptr;
   SweepCellsModel* cells_ = nullptr;
   QSortFilterProxyModel* sorted_ = nullptr;
@@ -108,6 +115,7 @@ class TrainingDialog : public QDialog {
   QCheckBox* gmm_ = nullptr;
   std::vector<QCheckBox*> forms_;
   std::vector<QCheckBox*> features_;
+  std::vector<QCheckBox*> decisions_;  // step, online, offline
   QLineEdit* orders_ = nullptr;
   QLineEdit* floors_ = nullptr;
   QLineEdit* seeds_ = nullptr;

@@ -187,8 +187,9 @@ struct TimelineView::Impl {
   std::optional<StepRange> restoredRange;  // waits for a run it fits
   std::optional<std::int64_t> openingStep;
   bool truthRows = false;
-  // With predictions, two more rows per group: the predicted class (pale where its posterior is
-  // under kConfident) and a row marking steps where it disagrees with the label.
+  // With predictions, four more rows per group: the per-step class (pale where its posterior is
+  // under kConfident), the online decision (HMM forward filter, causal), the offline decision
+  // (forward-backward) and a row marking steps where the per-step class disagrees with the label.
   const PredictionModel* predictions = nullptr;
   bool predictionRows = false;
   unsigned dirty = kAll;
@@ -214,10 +215,12 @@ struct TimelineView::Impl {
     return labels != nullptr && labels->hasSet() && session->isOpen() &&
            labels->runId() == session->info().id;
   }
-  int rowsPerGroup() const { return 1 + (truthRows ? 1 : 0) + (predictionRows ? 2 : 0); }
+  int rowsPerGroup() const { return 1 + (truthRows ? 1 : 0) + (predictionRows ? 4 : 0); }
   int labelRow(SensorGroup g) const { return groupIndex(g) * rowsPerGroup(); }
   int predictedRow(SensorGroup g) const { return labelRow(g) + (truthRows ? 1 : 0) + 1; }
-  int disagreeRow(SensorGroup g) const { return predictedRow(g) + 1; }
+  int onlineRow(SensorGroup g) const { return predictedRow(g) + 1; }
+  int offlineRow(SensorGroup g) const { return predictedRow(g) + 2; }
+  int disagreeRow(SensorGroup g) const { return predictedRow(g) + 3; }
   // Below the groups, with predictions: the steps where a side shows a hole (thesis 4.5).
   int holesRow() const { return kGroupCount * rowsPerGroup(); }
   int labelRows() const { return kGroupCount * rowsPerGroup() + (predictionRows ? 1 : 0); }
@@ -426,8 +429,10 @@ void TimelineView::Impl::configureLabelRows() {
       names << TimelineView::tr("%1 truth").arg(name);
     }
     if (predictionRows) {
-      at << predictedRow(g.group) << disagreeRow(g.group);
-      names << TimelineView::tr("%1 model").arg(name)
+      at << predictedRow(g.group) << onlineRow(g.group) << offlineRow(g.group)
+         << disagreeRow(g.group);
+      names << TimelineView::tr("%1 model").arg(name) << TimelineView::tr("%1 online").arg(name)
+            << TimelineView::tr("%1 offline").arg(name)
             << TimelineView::tr("%1 \u2260 label").arg(name);
     }
   }
@@ -472,6 +477,20 @@ QString TimelineView::Impl::predictionTip(QPointF pos) const {
     return lines.join(QLatin1Char('\n'));
   }
   for (const GroupInfo& g : kSensorGroups) {
+    if (row == onlineRow(g.group) || row == offlineRow(g.group)) {
+      const GroupPrediction& p = predictions->group(g.group);
+      const bool online = row == onlineRow(g.group);
+      const std::vector<std::int8_t>& decided = online ? p.online : p.offline;
+      if (step < 0 || step >= static_cast<std::int64_t>(decided.size()) ||
+          decided[static_cast<std::size_t>(step)] < 0)
+        return {};
+      return TimelineView::tr("step %1, %2: the %3 decision is %4")
+          .arg(step)
+          .arg(QString::fromUtf8(g.shortName.data(), static_cast<qsizetype>(g.shortName.size())))
+          .arg(online ? TimelineView::tr("online (causal)")
+                      : TimelineView::tr("offline (whole contact)"))
+          .arg(className(ContactClass(decided[static_cast<std::size_t>(step)])));
+    }
     if (row != predictedRow(g.group) && row != disagreeRow(g.group)) continue;
     const GroupPrediction& p = predictions->group(g.group);
     const auto cls = p.classAt(step);
@@ -721,6 +740,12 @@ void TimelineView::Impl::fillLabels(const Columns& cols) {
           const int cls = p.cls[static_cast<std::size_t>(m)];
           const bool sure = p.confidence[static_cast<std::size_t>(m)] >= kConfident;
           grid.set(c, predictedRow(g.group), cls + 1.0 + (sure ? 0.0 : kContactClassCount));
+        }
+        for (const auto& [decided, row] : {std::pair{&p.online, onlineRow(g.group)},
+                                           std::pair{&p.offline, offlineRow(g.group)}}) {
+          if (m < static_cast<std::int64_t>(decided->size()) &&
+              (*decided)[static_cast<std::size_t>(m)] >= 0)
+            grid.set(c, row, (*decided)[static_cast<std::size_t>(m)] + 1.0);
         }
         const std::int64_t first = cols.firstStep(c);
         const std::int64_t last = std::min(cols.lastStep(c), n - 1);

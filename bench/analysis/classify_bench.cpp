@@ -1,0 +1,74 @@
+// Classifying a 1,000,000-step run with a model bundle, per decision mode: the per-step argmax
+// (what `tactile classify` did before models had transitions: the baseline), the online decision
+// (HMM forward filter, the models' default) and the offline one (forward-backward). Target: the
+// online decision under 2 s on one core. Run it on one core: `taskset -c 0`, and the evaluation
+// uses one thread (classifier threads are 1 in trained models' classifyRun path).
+//
+// Data: a synthetic run (tests/analysis/learn_test_data.h: every group in contact 75% of the
+// steps, three contact classes); the bundle is trained with the product's default settings per
+// group (order, covariance, floor, features) on 30,000 steps of another draw.
+#include <benchmark/benchmark.h>
+
+#include "analysis/classify_run.h"
+#include "analysis/training.h"
+#include "tests/analysis/learn_test_data.h"
+
+namespace {
+
+using namespace tactile;
+using namespace tactile::analysis;
+
+struct BenchData {
+  RunData train;
+  RunData run;
+  ModelBundle bundle;
+};
+
+const BenchData& benchData() {
+  static BenchData d = [] {
+    BenchData b;
+    b.train = testdata::makeLabelledRun(30000, 7, 0.3);
+    b.run = testdata::makeLabelledRun(1000000, 8, 0.3);
+    TrainJob job;
+    job.runs = {{&b.train, labelsFromTruth(b.train)}};
+    job.settings = defaultGroupSettings();
+    for (TrainSettings& s : job.settings.byGroup)
+      s.classifier.gmm.restarts = 1;
+    auto out = trainAndEvaluate(job);
+    if (out) b.bundle = std::move(out->bundle);
+    return b;
+  }();
+  return d;
+}
+
+void BM_ClassifyRun(benchmark::State& state) {
+  const BenchData& d = benchData();
+  ClassifyOptions options;
+  options.decision = static_cast<DecisionMode>(state.range(0));
+  std::size_t contact = 0;
+  for (auto _ : state) {
+    const RunClassification r = classifyRun(d.run, d.bundle, options);
+    benchmark::DoNotOptimize(r.groups.data());
+    contact = 0;
+    for (const GroupClassification& g : r.groups)
+      for (std::uint8_t z : g.noContactRule)
+        contact += z == 0 ? 1 : 0;
+  }
+  state.SetLabel(std::string(decisionModeName(options.decision.value())));
+  state.counters["steps"] = static_cast<double>(d.run.stepCount());
+  state.counters["group_contact_steps"] = static_cast<double>(contact);
+  state.counters["models"] = static_cast<double>(d.bundle.models.size());
+}
+BENCHMARK(BM_ClassifyRun)
+    ->Arg(static_cast<int>(DecisionMode::Step))
+    ->Arg(static_cast<int>(DecisionMode::Online))
+    ->Arg(static_cast<int>(DecisionMode::Offline))
+    ->Unit(benchmark::kSecond)
+    ->Iterations(1)
+    ->Repetitions(3)
+    ->MeasureProcessCPUTime()
+    ->UseRealTime();
+
+}  // namespace
+
+BENCHMARK_MAIN();
