@@ -2083,6 +2083,26 @@ grau: blockiert</translation>
         <source>, blocked</source>
         <translation>, blockiert</translation>
     </message>
+    <message>
+        <source>%1 online</source>
+        <translation>%1 online</translation>
+    </message>
+    <message>
+        <source>%1 offline</source>
+        <translation>%1 offline</translation>
+    </message>
+    <message>
+        <source>step %1, %2: the %3 decision is %4</source>
+        <translation>Schritt %1, %2: Entscheidung %3: %4</translation>
+    </message>
+    <message>
+        <source>online (causal)</source>
+        <translation>online (kausal)</translation>
+    </message>
+    <message>
+        <source>offline (whole contact)</source>
+        <translation>offline (ganzer Kontakt)</translation>
+    </message>
 </context>
 <context>
     <name>tactile::gui::TrainingDialog</name>
@@ -2260,10 +2280,6 @@ grau: blockiert</translation>
         </translation>
     </message>
     <message>
-        <source>%1: balanced accuracy %2 %</source>
-        <translation>%1: balancierte Genauigkeit %2 %</translation>
-    </message>
-    <message>
         <source>%1: skipped (%2)</source>
         <translation>%1: übersprungen (%2)</translation>
     </message>
@@ -2348,6 +2364,50 @@ grau: blockiert</translation>
     <message>
         <source>skipped: %1</source>
         <translation>übersprungen: %1</translation>
+    </message>
+    <message>
+        <source>Leave one scene out</source>
+        <translation>Je eine Szene auslassen</translation>
+    </message>
+    <message>
+        <source>Leave one scene out: each scene&apos;s runs (marked for training) are scored by models trained without that scene; no test runs</source>
+        <translation>Je eine Szene auslassen: Die (zum Training markierten) Läufe jeder Szene werden mit Modellen bewertet, die ohne diese Szene trainiert wurden; keine Testläufe</translation>
+    </message>
+    <message>
+        <source>Decision modes: step = each step alone; online = HMM forward filter over the contact (causal, what a navigator may use); offline = forward-backward over the whole contact. A sweep scores every ticked mode (cells differing only here share one fit); Train model always scores all three and its models decide online by default</source>
+        <translation>Entscheidungsmodi: step = jeder Schritt für sich; online = HMM-Vorwärtsfilter über den Kontakt (kausal, was ein Navigator nutzen darf); offline = Vorwärts-Rückwärts über den ganzen Kontakt. Ein Sweep bewertet jeden angehakten Modus (Zellen, die sich nur hierin unterscheiden, teilen eine Anpassung); „Modell trainieren“ bewertet immer alle drei, und seine Modelle entscheiden standardmäßig online</translation>
+    </message>
+    <message>
+        <source>Decisions:</source>
+        <translation>Entscheidungen:</translation>
+    </message>
+    <message>
+        <source>%1 scored 0 on %2 test steps</source>
+        <translation>%1 erzielte 0 auf %2 Testschritten</translation>
+    </message>
+    <message>
+        <source>%1 had no test data</source>
+        <translation>%1 hatte keine Testdaten</translation>
+    </message>
+    <message>
+        <source>%1. Store the model anyway?</source>
+        <translation>%1. Das Modell trotzdem speichern?</translation>
+    </message>
+    <message>
+        <source>Store the model?</source>
+        <translation>Modell speichern?</translation>
+    </message>
+    <message>
+        <source>The model was not stored (%1).</source>
+        <translation>Das Modell wurde nicht gespeichert (%1).</translation>
+    </message>
+    <message>
+        <source>%1: balanced accuracy %2 % (%3 test steps)</source>
+        <translation>%1: balancierte Genauigkeit %2 % (%3 Testschritte)</translation>
+    </message>
+    <message>
+        <source>%1: no test data</source>
+        <translation>%1: keine Testdaten</translation>
     </message>
 </context>
 <context>

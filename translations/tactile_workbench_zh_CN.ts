@@ -2074,6 +2074,26 @@ grey: blocked</source>
         <source>, blocked</source>
         <translation>，受阻</translation>
     </message>
+    <message>
+        <source>%1 online</source>
+        <translation>%1 在线</translation>
+    </message>
+    <message>
+        <source>%1 offline</source>
+        <translation>%1 离线</translation>
+    </message>
+    <message>
+        <source>step %1, %2: the %3 decision is %4</source>
+        <translation>第 %1 步，%2：%3判定为%4</translation>
+    </message>
+    <message>
+        <source>online (causal)</source>
+        <translation>在线（因果）</translation>
+    </message>
+    <message>
+        <source>offline (whole contact)</source>
+        <translation>离线（整个接触）</translation>
+    </message>
 </context>
 <context>
     <name>tactile::gui::TrainingDialog</name>
@@ -2264,10 +2284,6 @@ grey: blocked</source>
         </translation>
     </message>
     <message>
-        <source>%1: balanced accuracy %2 %</source>
-        <translation>%1：平衡准确率 %2 %</translation>
-    </message>
-    <message>
         <source>%1: skipped (%2)</source>
         <translation>%1：已跳过（%2）</translation>
     </message>
@@ -2334,6 +2350,50 @@ grey: blocked</source>
     <message>
         <source>skipped: %1</source>
         <translation>已跳过：%1</translation>
+    </message>
+    <message>
+        <source>Leave one scene out</source>
+        <translation>留一场景交叉验证</translation>
+    </message>
+    <message>
+        <source>Leave one scene out: each scene&apos;s runs (marked for training) are scored by models trained without that scene; no test runs</source>
+        <translation>留一场景交叉验证：每个场景的运行（标记为训练的）由不含该场景训练出的模型评分；不使用测试运行</translation>
+    </message>
+    <message>
+        <source>Decision modes: step = each step alone; online = HMM forward filter over the contact (causal, what a navigator may use); offline = forward-backward over the whole contact. A sweep scores every ticked mode (cells differing only here share one fit); Train model always scores all three and its models decide online by default</source>
+        <translation>判定模式：step = 每步单独判定；online = 在接触过程中做 HMM 前向滤波（因果，导航器可用的方式）；offline = 对整个接触做前向-后向计算。扫描会为每个勾选的模式评分（仅在此处不同的单元共用一次拟合）；“训练模型”总是为三种模式都评分，其模型默认在线判定</translation>
+    </message>
+    <message>
+        <source>Decisions:</source>
+        <translation>判定：</translation>
+    </message>
+    <message>
+        <source>%1 scored 0 on %2 test steps</source>
+        <translation>%1 在 %2 个测试步上得分为 0</translation>
+    </message>
+    <message>
+        <source>%1 had no test data</source>
+        <translation>%1 没有测试数据</translation>
+    </message>
+    <message>
+        <source>%1. Store the model anyway?</source>
+        <translation>%1。仍然保存该模型吗？</translation>
+    </message>
+    <message>
+        <source>Store the model?</source>
+        <translation>保存模型？</translation>
+    </message>
+    <message>
+        <source>The model was not stored (%1).</source>
+        <translation>模型未保存（%1）。</translation>
+    </message>
+    <message>
+        <source>%1: balanced accuracy %2 % (%3 test steps)</source>
+        <translation>%1：平衡准确率 %2 %（%3 个测试步）</translation>
+    </message>
+    <message>
+        <source>%1: no test data</source>
+        <translation>%1：没有测试数据</translation>
     </message>
 </context>
 <context>
