@@ -276,6 +276,7 @@ json groupSummary(const analysis::GroupJobReport& r, const analysis::GroupModel*
           {"samples_train", r.samplesTrain},
           {"warnings", r.warnings}};
   if (!r.trained || m == nullptr) {
+    gj["samples_test"] = 0;
     gj["skipped"] = r.skippedBecause;
     return gj;
   }
