@@ -32,54 +32,209 @@
     </message>
 </context>
 <context>
+    <name>Shortcuts</name>
+    <message>
+        <source>File</source>
+        <translation>Datei</translation>
+    </message>
+    <message>
+        <source>Edit</source>
+        <translation>Bearbeiten</translation>
+    </message>
+    <message>
+        <source>Go</source>
+        <translation>Gehe zu</translation>
+    </message>
+    <message>
+        <source>View</source>
+        <translation>Ansicht</translation>
+    </message>
+    <message>
+        <source>Learn</source>
+        <translation>Lernen</translation>
+    </message>
+    <message>
+        <source>Help</source>
+        <translation>Hilfe</translation>
+    </message>
+    <message>
+        <source>Open a database</source>
+        <translation>Eine Datenbank öffnen</translation>
+    </message>
+    <message>
+        <source>Import run files</source>
+        <translation>Laufdateien importieren</translation>
+    </message>
+    <message>
+        <source>Preferences</source>
+        <translation>Einstellungen</translation>
+    </message>
+    <message>
+        <source>Quit</source>
+        <translation>Beenden</translation>
+    </message>
+    <message>
+        <source>Undo the last label edit</source>
+        <translation>Die letzte Label-Änderung rückgängig machen</translation>
+    </message>
+    <message>
+        <source>Redo</source>
+        <translation>Wiederholen</translation>
+    </message>
+    <message>
+        <source>Label as %1</source>
+        <translation>Als %1 labeln</translation>
+    </message>
+    <message>
+        <source>Delete the segments under the cursor</source>
+        <translation>Die Segmente unter dem Cursor löschen</translation>
+    </message>
+    <message>
+        <source>Move the segment&apos;s start one step left</source>
+        <translation>Den Segmentanfang einen Schritt nach links verschieben</translation>
+    </message>
+    <message>
+        <source>Move the segment&apos;s start one step right</source>
+        <translation>Den Segmentanfang einen Schritt nach rechts verschieben</translation>
+    </message>
+    <message>
+        <source>Move the segment&apos;s end one step left</source>
+        <translation>Das Segmentende einen Schritt nach links verschieben</translation>
+    </message>
+    <message>
+        <source>Move the segment&apos;s end one step right</source>
+        <translation>Das Segmentende einen Schritt nach rechts verschieben</translation>
+    </message>
+    <message>
+        <source>Clear the selection (in a text field: leave the field)</source>
+        <translation>Die Auswahl aufheben (in einem Textfeld: das Feld verlassen)</translation>
+    </message>
+    <message>
+        <source>Next step</source>
+        <translation>Nächster Schritt</translation>
+    </message>
+    <message>
+        <source>Previous step</source>
+        <translation>Vorheriger Schritt</translation>
+    </message>
+    <message>
+        <source>Forward 10 steps</source>
+        <translation>10 Schritte vor</translation>
+    </message>
+    <message>
+        <source>Back 10 steps</source>
+        <translation>10 Schritte zurück</translation>
+    </message>
+    <message>
+        <source>Forward 100 steps</source>
+        <translation>100 Schritte vor</translation>
+    </message>
+    <message>
+        <source>Back 100 steps</source>
+        <translation>100 Schritte zurück</translation>
+    </message>
+    <message>
+        <source>Forward one screen</source>
+        <translation>Eine Bildschirmbreite vor</translation>
+    </message>
+    <message>
+        <source>Back one screen</source>
+        <translation>Eine Bildschirmbreite zurück</translation>
+    </message>
+    <message>
+        <source>First step</source>
+        <translation>Erster Schritt</translation>
+    </message>
+    <message>
+        <source>Last step</source>
+        <translation>Letzter Schritt</translation>
+    </message>
+    <message>
+        <source>Play or pause</source>
+        <translation>Abspielen oder anhalten</translation>
+    </message>
+    <message>
+        <source>Route: robot close-up or whole scene</source>
+        <translation>Route: Roboter-Nahansicht oder ganze Szene</translation>
+    </message>
+    <message>
+        <source>Zoom the timelines out to the whole run</source>
+        <translation>Die Zeitleisten auf den ganzen Lauf herauszoomen</translation>
+    </message>
+    <message>
+        <source>Train and sweep</source>
+        <translation>Trainieren und Sweep</translation>
+    </message>
+    <message>
+        <source>Show a model&apos;s predictions</source>
+        <translation>Die Vorhersagen eines Modells anzeigen</translation>
+    </message>
+    <message>
+        <source>Next stretch where the model disagrees with the labels</source>
+        <translation>Nächster Abschnitt, in dem das Modell von den Labels abweicht</translation>
+    </message>
+    <message>
+        <source>Previous stretch where the model disagrees with the labels</source>
+        <translation>Vorheriger Abschnitt, in dem das Modell von den Labels abweicht</translation>
+    </message>
+    <message>
+        <source>This list of keyboard shortcuts</source>
+        <translation>Diese Liste der Tastenkürzel</translation>
+    </message>
+    <message>
+        <source>New simulation window</source>
+        <translation>Neues Simulatorfenster</translation>
+    </message>
+</context>
+<context>
     <name>SimKeys</name>
     <message>
         <source>Faster forward by a large step (+20 units/s)</source>
-        <translation type="unfinished"></translation>
+        <translation>Vorwärts schneller, großer Schritt (+20 Einheiten/s)</translation>
     </message>
     <message>
         <source>Slower (or backward) by a large step (-20 units/s)</source>
-        <translation type="unfinished"></translation>
+        <translation>Langsamer (oder rückwärts), großer Schritt (-20 Einheiten/s)</translation>
     </message>
     <message>
         <source>Faster forward by a small step (+5 units/s)</source>
-        <translation type="unfinished"></translation>
+        <translation>Vorwärts schneller, kleiner Schritt (+5 Einheiten/s)</translation>
     </message>
     <message>
         <source>Slower (or backward) by a small step (-5 units/s)</source>
-        <translation type="unfinished"></translation>
+        <translation>Langsamer (oder rückwärts), kleiner Schritt (-5 Einheiten/s)</translation>
     </message>
     <message>
         <source>Turn left by a large step (+0.2 rad/s)</source>
-        <translation type="unfinished"></translation>
+        <translation>Nach links drehen, großer Schritt (+0.2 rad/s)</translation>
     </message>
     <message>
         <source>Turn right by a large step (-0.2 rad/s)</source>
-        <translation type="unfinished"></translation>
+        <translation>Nach rechts drehen, großer Schritt (-0.2 rad/s)</translation>
     </message>
     <message>
         <source>Turn left by a small step (+0.05 rad/s)</source>
-        <translation type="unfinished"></translation>
+        <translation>Nach links drehen, kleiner Schritt (+0.05 rad/s)</translation>
     </message>
     <message>
         <source>Turn right by a small step (-0.05 rad/s)</source>
-        <translation type="unfinished"></translation>
+        <translation>Nach rechts drehen, kleiner Schritt (-0.05 rad/s)</translation>
     </message>
     <message>
         <source>Stop (v = 0, omega = 0)</source>
-        <translation type="unfinished"></translation>
+        <translation>Anhalten (v = 0, omega = 0)</translation>
     </message>
     <message>
         <source>Robot close-up / whole scene (close-up only in experiment mode)</source>
-        <translation type="unfinished"></translation>
+        <translation>Roboter-Nahansicht / ganze Szene (im Experimentmodus nur Nahansicht)</translation>
     </message>
     <message>
         <source>Pause / go on</source>
-        <translation type="unfinished"></translation>
+        <translation>Pause / weiter</translation>
     </message>
     <message>
         <source>One step (while paused)</source>
-        <translation type="unfinished"></translation>
+        <translation>Ein Schritt (während der Pause)</translation>
     </message>
 </context>
 <context>
@@ -138,62 +293,62 @@
     </message>
     <message>
         <source>Open the simulator window on SCENE (a built-in scene, a scene JSON file or random:N:SEED); runs go into --db (or the last database).</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>With --simulate: the subject&apos;s name.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>With --simulate --mode experiment: the seed of start and goal.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>With --simulate: start a run and replay the v, omega commands of the run file FILE, one a step.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>With --simulate: steps per second (default 10; 0 as fast as possible).</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>With --simulate: show the data panel.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>With --simulate: show the whole scene where allowed.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>--seed needs a positive number, got &apos;%1&apos;</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>--rate needs a number &gt;= 0, got &apos;%1&apos;</source>
-        <translation type="unfinished"></translation>
+        <translation>Das Simulatorfenster mit der Szene SCENE öffnen (eine eingebaute Szene, eine Szenen-JSON-Datei oder random:N:SEED); Läufe gehen in --db (oder die zuletzt benutzte Datenbank).</translation>
     </message>
     <message>
         <source>With --simulate: practice (default), experiment or autonomous.</source>
-        <translation type="unfinished"></translation>
+        <translation>Mit --simulate: practice (Übung, Vorgabe), experiment (Experiment) oder autonomous (autonom).</translation>
+    </message>
+    <message>
+        <source>With --simulate: the subject&apos;s name.</source>
+        <translation>Mit --simulate: der Name des Probanden.</translation>
+    </message>
+    <message>
+        <source>With --simulate --mode experiment: the seed of start and goal.</source>
+        <translation>Mit --simulate --mode experiment: der Seed für Start und Ziel.</translation>
+    </message>
+    <message>
+        <source>With --simulate: start a run and replay the v, omega commands of the run file FILE, one a step.</source>
+        <translation>Mit --simulate: einen Lauf starten und die Befehle v, omega der Laufdatei FILE abspielen, einen je Schritt.</translation>
+    </message>
+    <message>
+        <source>With --simulate: steps per second (default 10; 0 as fast as possible).</source>
+        <translation>Mit --simulate: Schritte pro Sekunde (Vorgabe 10; 0 so schnell wie möglich).</translation>
+    </message>
+    <message>
+        <source>With --simulate: show the data panel.</source>
+        <translation>Mit --simulate: den Datenbereich anzeigen.</translation>
+    </message>
+    <message>
+        <source>With --simulate: show the whole scene where allowed.</source>
+        <translation>Mit --simulate: die ganze Szene zeigen, wo erlaubt.</translation>
     </message>
     <message>
         <source>no stored model named &apos;%1&apos;</source>
-        <translation type="unfinished"></translation>
+        <translation>kein gespeichertes Modell namens „%1“</translation>
     </message>
     <message>
         <source>--mode must be practice, experiment or autonomous, got &apos;%1&apos;</source>
-        <translation type="unfinished"></translation>
+        <translation>--mode muss practice, experiment oder autonomous sein, erhalten: „%1“</translation>
+    </message>
+    <message>
+        <source>--seed needs a positive number, got &apos;%1&apos;</source>
+        <translation>--seed braucht eine positive Zahl, erhalten: „%1“</translation>
+    </message>
+    <message>
+        <source>--rate needs a number &gt;= 0, got &apos;%1&apos;</source>
+        <translation>--rate braucht eine Zahl &gt;= 0, erhalten: „%1“</translation>
     </message>
 </context>
 <context>
     <name>tactile::gui::ExperimentPanel</name>
     <message>
         <source>Status</source>
-        <translation type="unfinished"></translation>
+        <translation>Status</translation>
     </message>
     <message>
         <source>Strategies</source>
-        <translation type="unfinished"></translation>
+        <translation>Strategien</translation>
     </message>
 </context>
 <context>
@@ -294,14 +449,6 @@
         <translation>Kappa</translation>
     </message>
     <message>
-        <source>Labels against the run&apos;s truth, over the labelled steps</source>
-        <translation>Labels im Vergleich zur Ground Truth des Laufs, über die gelabelten Schritte</translation>
-    </message>
-    <message>
-        <source>Agreement with truth</source>
-        <translation>Übereinstimmung mit der Ground Truth</translation>
-    </message>
-    <message>
         <source>Open a run first.</source>
         <translation>Zuerst einen Lauf öffnen.</translation>
     </message>
@@ -398,6 +545,53 @@
         <source>%1: %2, steps %3-%4</source>
         <translation>%1: %2, Schritte %3–%4</translation>
     </message>
+    <message>
+        <source>Compare the labels with the run&apos;s truth or with another label set (another annotator)</source>
+        <translation>Die Labels mit der Ground Truth des Laufs oder mit einem anderen Labelsatz (eines anderen Annotators) vergleichen</translation>
+    </message>
+    <message>
+        <source>Chance</source>
+        <translation>Zufall</translation>
+    </message>
+    <message>
+        <source>Share of the steps both sides label on which they give the same class</source>
+        <translation>Anteil der von beiden Seiten gelabelten Schritte, auf denen beide dieselbe Klasse vergeben</translation>
+    </message>
+    <message>
+        <source>Agreement expected by chance from each side&apos;s class shares</source>
+        <translation>Aus den Klassenanteilen beider Seiten zufällig zu erwartende Übereinstimmung</translation>
+    </message>
+    <message>
+        <source>Cohen&apos;s kappa = (agree - chance) / (100 % - chance): 0 when the agreement is no better than chance, 1 when perfect; &apos;-&apos; when chance is 100 % (one class throughout)</source>
+        <translation>Cohens Kappa = (Übereinst. − Zufall) / (100 % − Zufall): 0, wenn die Übereinstimmung nicht besser als Zufall ist, 1 bei vollständiger Übereinstimmung; „-“, wenn der Zufall 100 % beträgt (durchgehend eine Klasse)</translation>
+    </message>
+    <message>
+        <source>Agreement with</source>
+        <translation>Übereinstimmung mit</translation>
+    </message>
+    <message>
+        <source>truth</source>
+        <translation>Ground Truth</translation>
+    </message>
+    <message>
+        <source>label set %1</source>
+        <translation>Labelsatz %1</translation>
+    </message>
+    <message>
+        <source>No step is labelled on both sides</source>
+        <translation>Kein Schritt ist auf beiden Seiten gelabelt</translation>
+    </message>
+    <message numerus="yes">
+        <source>Undefined: both sides use one and the same class on all %n step(s), so chance agreement is 100 %</source>
+        <translation>
+            <numerusform>Undefiniert: Beide Seiten vergeben auf %n Schritt ein und dieselbe Klasse, die zufällige Übereinstimmung ist also 100 %</numerusform>
+            <numerusform>Undefiniert: Beide Seiten vergeben auf allen %n Schritten ein und dieselbe Klasse, die zufällige Übereinstimmung ist also 100 %</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>%1 of %2 steps agree (%3); by chance %4 would: kappa = (%3 - %4) / (100 % - %4) = %5</source>
+        <translation>%1 von %2 Schritten stimmen überein (%3); zufällig wären es %4: Kappa = (%3 − %4) / (100 % − %4) = %5</translation>
+    </message>
 </context>
 <context>
     <name>tactile::gui::MainWindow</name>
@@ -438,10 +632,6 @@
         <translation>Läufe &amp;importieren...</translation>
     </message>
     <message>
-        <source>Ctrl+I</source>
-        <translation>Ctrl+I</translation>
-    </message>
-    <message>
         <source>Export &amp;Labels...</source>
         <translation>&amp;Labels exportieren...</translation>
     </message>
@@ -474,32 +664,16 @@
         <translation>Segmentanfang nach links</translation>
     </message>
     <message>
-        <source>Alt+Shift+Left</source>
-        <translation>Alt+Shift+Left</translation>
-    </message>
-    <message>
         <source>Move Segment Start Right</source>
         <translation>Segmentanfang nach rechts</translation>
-    </message>
-    <message>
-        <source>Alt+Shift+Right</source>
-        <translation>Alt+Shift+Right</translation>
     </message>
     <message>
         <source>Move Segment End Left</source>
         <translation>Segmentende nach links</translation>
     </message>
     <message>
-        <source>Alt+Left</source>
-        <translation>Alt+Left</translation>
-    </message>
-    <message>
         <source>Move Segment End Right</source>
         <translation>Segmentende nach rechts</translation>
-    </message>
-    <message>
-        <source>Alt+Right</source>
-        <translation>Alt+Right</translation>
     </message>
     <message>
         <source>Clear Selection</source>
@@ -582,10 +756,6 @@
         <translation>Ganzen Lauf zeigen</translation>
     </message>
     <message>
-        <source>Ctrl+0</source>
-        <translation>Ctrl+0</translation>
-    </message>
-    <message>
         <source>&amp;Help</source>
         <translation>&amp;Hilfe</translation>
     </message>
@@ -663,10 +833,6 @@
         <translation>Tactile Workbench</translation>
     </message>
     <message>
-        <source>Step %1 of %2</source>
-        <translation>Schritt %1 von %2</translation>
-    </message>
-    <message>
         <source>  |  selected %1-%2</source>
         <translation>  |  ausgewählt %1–%2</translation>
     </message>
@@ -703,10 +869,6 @@ Forschungsumgebung für die taktile Navigation mobiler Roboter.</translation>
     <message>
         <source>&amp;Train and Sweep...</source>
         <translation>&amp;Trainieren und Sweep...</translation>
-    </message>
-    <message>
-        <source>Ctrl+T</source>
-        <translation>Ctrl+T</translation>
     </message>
     <message>
         <source>Open &amp;Sweep Results...</source>
@@ -800,10 +962,6 @@ Forschungsumgebung für die taktile Navigation mobiler Roboter.</translation>
         <translation>&amp;Vorhersagen anzeigen...</translation>
     </message>
     <message>
-        <source>Ctrl+P</source>
-        <translation>Ctrl+P</translation>
-    </message>
-    <message>
         <source>&amp;Hide Predictions</source>
         <translation>Vorhersagen &amp;ausblenden</translation>
     </message>
@@ -852,23 +1010,35 @@ Forschungsumgebung für die taktile Navigation mobiler Roboter.</translation>
     </message>
     <message>
         <source>Navigator</source>
-        <translation type="unfinished"></translation>
+        <translation>Navigator</translation>
     </message>
     <message>
-        <source>Navigator</source>
-        <translation type="unfinished"></translation>
+        <source>Keyboard Shortcuts</source>
+        <translation>Tastenkürzel</translation>
     </message>
     <message>
-        <source>Navigator</source>
-        <translation type="unfinished"></translation>
+        <source>Preferences saved</source>
+        <translation>Einstellungen gespeichert</translation>
+    </message>
+    <message>
+        <source>&amp;Preferences...</source>
+        <translation>&amp;Einstellungen...</translation>
+    </message>
+    <message>
+        <source>&amp;Keyboard Shortcuts</source>
+        <translation>&amp;Tastenkürzel</translation>
+    </message>
+    <message>
+        <source>Step %1 of %2 steps</source>
+        <translation>Schritt %1 von %2 Schritten</translation>
+    </message>
+    <message>
+        <source>&amp;User Guide</source>
+        <translation>&amp;Benutzerhandbuch</translation>
     </message>
     <message>
         <source>New &amp;Simulation...</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Ctrl+Shift+N</source>
-        <translation type="unfinished"></translation>
+        <translation>Neue &amp;Simulation...</translation>
     </message>
 </context>
 <context>
@@ -894,114 +1064,81 @@ Forschungsumgebung für die taktile Navigation mobiler Roboter.</translation>
     <name>tactile::gui::NavigatorPanelView</name>
     <message>
         <source>This run has no navigator columns. Runs written by &apos;tactile navigate&apos; have them.</source>
-        <translation type="unfinished"></translation>
+        <translation>Dieser Lauf hat keine Navigator-Spalten. Von „tactile navigate“ geschriebene Läufe haben sie.</translation>
     </message>
     <message>
         <source>Command set:</source>
-        <translation type="unfinished"></translation>
+        <translation>Befehlssatz:</translation>
     </message>
     <message>
         <source>Current control mode:</source>
-        <translation type="unfinished"></translation>
+        <translation>Aktueller Steuermodus:</translation>
     </message>
     <message>
         <source>Status:</source>
-        <translation type="unfinished"></translation>
+        <translation>Status:</translation>
     </message>
     <message>
         <source>Status-%1:</source>
-        <translation type="unfinished"></translation>
+        <translation>Status-%1:</translation>
     </message>
 </context>
 <context>
     <name>tactile::gui::NavigatorStripView</name>
     <message>
         <source>strategy</source>
-        <translation type="unfinished"></translation>
+        <translation>Strategie</translation>
     </message>
     <message>
         <source>status</source>
-        <translation type="unfinished"></translation>
+        <translation>Status</translation>
     </message>
     <message>
         <source>step %1: %2</source>
-        <translation type="unfinished"></translation>
+        <translation>Schritt %1: %2</translation>
     </message>
 </context>
 <context>
-    <name>tactile::gui::NavigatorPanelView</name>
+    <name>tactile::gui::PreferencesDialog</name>
     <message>
-        <source>This run has no navigator columns. Runs written by &apos;tactile navigate&apos; have them.</source>
-        <translation type="unfinished"></translation>
+        <source>Preferences</source>
+        <translation>Einstellungen</translation>
     </message>
     <message>
-        <source>Command set:</source>
-        <translation type="unfinished"></translation>
+        <source>Follow the system</source>
+        <translation>Systemsprache</translation>
     </message>
     <message>
-        <source>Current control mode:</source>
-        <translation type="unfinished"></translation>
+        <source>e.g. your initials</source>
+        <translation>z. B. Ihre Initialen</translation>
     </message>
     <message>
-        <source>Status:</source>
-        <translation type="unfinished"></translation>
+        <source>Stored with every label segment you write and in label exports (annotator column)</source>
+        <translation>Wird mit jedem Label-Segment, das Sie schreiben, und in Label-Exporten gespeichert (Spalte annotator)</translation>
     </message>
     <message>
-        <source>Status-%1:</source>
-        <translation type="unfinished"></translation>
-    </message>
-</context>
-<context>
-    <name>tactile::gui::NavigatorStripView</name>
-    <message>
-        <source>strategy</source>
-        <translation type="unfinished"></translation>
+        <source> px</source>
+        <translation> px</translation>
     </message>
     <message>
-        <source>status</source>
-        <translation type="unfinished"></translation>
+        <source>Height of each label, truth and model row in the timelines</source>
+        <translation>Höhe jeder Label-, Ground-Truth- und Modellzeile in den Zeitleisten</translation>
     </message>
     <message>
-        <source>step %1: %2</source>
-        <translation type="unfinished"></translation>
-    </message>
-</context>
-<context>
-    <name>tactile::gui::NavigatorPanelView</name>
-    <message>
-        <source>This run has no navigator columns. Runs written by &apos;tactile navigate&apos; have them.</source>
-        <translation type="unfinished"></translation>
+        <source>&amp;Language:</source>
+        <translation>&amp;Sprache:</translation>
     </message>
     <message>
-        <source>Command set:</source>
-        <translation type="unfinished"></translation>
+        <source>A new language applies at the next start.</source>
+        <translation>Eine neue Sprache gilt ab dem nächsten Start.</translation>
     </message>
     <message>
-        <source>Current control mode:</source>
-        <translation type="unfinished"></translation>
+        <source>&amp;Annotator:</source>
+        <translation>&amp;Annotator:</translation>
     </message>
     <message>
-        <source>Status:</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Status-%1:</source>
-        <translation type="unfinished"></translation>
-    </message>
-</context>
-<context>
-    <name>tactile::gui::NavigatorStripView</name>
-    <message>
-        <source>strategy</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>status</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>step %1: %2</source>
-        <translation type="unfinished"></translation>
+        <source>Timeline &amp;row height:</source>
+        <translation>&amp;Zeilenhöhe der Zeitleisten:</translation>
     </message>
 </context>
 <context>
@@ -1029,6 +1166,14 @@ Forschungsumgebung für die taktile Navigation mobiler Roboter.</translation>
     <message>
         <source>hole %1 wide</source>
         <translation>Lücke %1 breit</translation>
+    </message>
+    <message>
+        <source>Zoomed %1x (double click: whole scene)</source>
+        <translation>Zoom %1x (Doppelklick: ganze Szene)</translation>
+    </message>
+    <message>
+        <source>Close-up zoomed %1x (double click: close-up)</source>
+        <translation>Nahansicht, Zoom %1x (Doppelklick: Nahansicht)</translation>
     </message>
 </context>
 <context>
@@ -1075,333 +1220,337 @@ importiert aus %2</translation>
     <name>tactile::gui::SimSession</name>
     <message>
         <source>An experiment run needs the subject&apos;s name.</source>
-        <translation type="unfinished"></translation>
+        <translation>Ein Experimentlauf braucht den Namen des Probanden.</translation>
     </message>
     <message>
         <source>A subject&apos;s name must be one line.</source>
-        <translation type="unfinished"></translation>
+        <translation>Der Name eines Probanden muss einzeilig sein.</translation>
     </message>
     <message>
         <source>Autonomous mode needs a driver.</source>
-        <translation type="unfinished"></translation>
+        <translation>Der autonome Modus braucht einen Fahrer.</translation>
     </message>
     <message>
         <source>The step length must be in (0, 1] seconds.</source>
-        <translation type="unfinished"></translation>
+        <translation>Die Schrittlänge muss in (0, 1] Sekunden liegen.</translation>
     </message>
     <message>
         <source>The time limit must be positive.</source>
-        <translation type="unfinished"></translation>
+        <translation>Das Zeitlimit muss positiv sein.</translation>
     </message>
 </context>
 <context>
     <name>tactile::gui::SimWindow</name>
     <message>
         <source>Run %1 ended: %2</source>
-        <translation type="unfinished"></translation>
+        <translation>Lauf %1 beendet: %2</translation>
     </message>
     <message>
         <source>Tactile Simulator</source>
-        <translation type="unfinished"></translation>
+        <translation>Taktiler Simulator</translation>
     </message>
     <message>
         <source>Practice</source>
-        <translation type="unfinished"></translation>
+        <translation>Übung</translation>
     </message>
     <message>
         <source>Experiment</source>
-        <translation type="unfinished"></translation>
+        <translation>Experiment</translation>
     </message>
     <message>
         <source>Autonomous</source>
-        <translation type="unfinished"></translation>
+        <translation>Autonom</translation>
     </message>
     <message>
         <source>needed in experiment mode</source>
-        <translation type="unfinished"></translation>
+        <translation>im Experimentmodus nötig</translation>
     </message>
     <message>
         <source> s</source>
-        <translation type="unfinished"></translation>
+        <translation> s</translation>
     </message>
     <message>
         <source>as fast as possible</source>
-        <translation type="unfinished"></translation>
+        <translation>so schnell wie möglich</translation>
     </message>
     <message>
         <source> steps/s</source>
-        <translation type="unfinished"></translation>
+        <translation> Schritte/s</translation>
     </message>
     <message>
         <source>Run</source>
-        <translation type="unfinished"></translation>
+        <translation>Lauf</translation>
     </message>
     <message>
         <source>Mode</source>
-        <translation type="unfinished"></translation>
+        <translation>Modus</translation>
     </message>
     <message>
         <source>Scene</source>
-        <translation type="unfinished"></translation>
+        <translation>Szene</translation>
     </message>
     <message>
         <source>Subject</source>
-        <translation type="unfinished"></translation>
+        <translation>Proband</translation>
     </message>
     <message>
         <source>Seed (start, goal)</source>
-        <translation type="unfinished"></translation>
+        <translation>Seed (Start, Ziel)</translation>
     </message>
     <message>
         <source>Time limit</source>
-        <translation type="unfinished"></translation>
+        <translation>Zeitlimit</translation>
     </message>
     <message>
         <source>Step rate</source>
-        <translation type="unfinished"></translation>
+        <translation>Schrittrate</translation>
     </message>
     <message>
         <source>Navigator model</source>
-        <translation type="unfinished"></translation>
+        <translation>Navigator-Modell</translation>
     </message>
     <message>
         <source>Start New Run</source>
-        <translation type="unfinished"></translation>
+        <translation>Neuen Lauf starten</translation>
     </message>
     <message>
         <source>Go</source>
-        <translation type="unfinished"></translation>
+        <translation>Los</translation>
     </message>
     <message>
         <source>Step</source>
-        <translation type="unfinished"></translation>
+        <translation>Schritt</translation>
     </message>
     <message>
         <source>Give Up</source>
-        <translation type="unfinished"></translation>
+        <translation>Aufgeben</translation>
     </message>
     <message>
         <source>Data &gt;&gt;</source>
-        <translation type="unfinished"></translation>
+        <translation>Daten &gt;&gt;</translation>
     </message>
     <message>
         <source>Open in Workbench</source>
-        <translation type="unfinished"></translation>
+        <translation>In der Workbench öffnen</translation>
     </message>
     <message>
         <source>Signal per group</source>
-        <translation type="unfinished"></translation>
+        <translation>Signal je Gruppe</translation>
     </message>
     <message>
         <source>Experiment panel</source>
-        <translation type="unfinished"></translation>
+        <translation>Experimentbereich</translation>
     </message>
     <message>
         <source>The run so far</source>
-        <translation type="unfinished"></translation>
+        <translation>Der bisherige Lauf</translation>
     </message>
     <message>
         <source>Bug2 bumper (no model)</source>
-        <translation type="unfinished"></translation>
+        <translation>Bug2 mit Stoßfänger (kein Modell)</translation>
     </message>
     <message>
         <source>&amp;File</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Datei</translation>
     </message>
     <message>
         <source>Built-in &amp;Scenes</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Eingebaute Szenen</translation>
     </message>
     <message>
         <source>Open Scene &amp;File...</source>
-        <translation type="unfinished"></translation>
+        <translation>Szenen&amp;datei öffnen...</translation>
     </message>
     <message>
         <source>Open Run in &amp;Workbench</source>
-        <translation type="unfinished"></translation>
+        <translation>Lauf in der &amp;Workbench öffnen</translation>
     </message>
     <message>
         <source>Save Run as &amp;CSV...</source>
-        <translation type="unfinished"></translation>
+        <translation>Lauf als &amp;CSV speichern...</translation>
     </message>
     <message>
         <source>&amp;Close</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Schließen</translation>
     </message>
     <message>
         <source>&amp;Run</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Lauf</translation>
     </message>
     <message>
         <source>Start &amp;New Run</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Neuen Lauf starten</translation>
     </message>
     <message>
         <source>&amp;Go / Pause (P)</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Los / Pause (P)</translation>
     </message>
     <message>
         <source>&amp;Step (N)</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Schritt (N)</translation>
     </message>
     <message>
         <source>&amp;Give Up</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Aufgeben</translation>
     </message>
     <message>
         <source>&amp;View</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Ansicht</translation>
     </message>
     <message>
         <source>Robot Close-up / Whole Scene (M)</source>
-        <translation type="unfinished"></translation>
+        <translation>Roboter-Nahansicht / ganze Szene (M)</translation>
     </message>
     <message>
         <source>&amp;Data Panel</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Datenbereich</translation>
     </message>
     <message>
         <source>&amp;Help</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Hilfe</translation>
     </message>
     <message>
         <source>&amp;Briefing: Bug1 and Bug2</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Einweisung: Bug1 und Bug2</translation>
     </message>
     <message>
         <source>&amp;Keys</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Tasten</translation>
     </message>
     <message>
         <source>Scene %1: press Start New Run</source>
-        <translation type="unfinished"></translation>
+        <translation>Szene %1: „Neuen Lauf starten“ drücken</translation>
     </message>
     <message>
         <source>Run %1 ready: drive with the arrow keys and W, A, S, D (Help &gt; Keys)</source>
-        <translation type="unfinished"></translation>
+        <translation>Lauf %1 bereit: mit den Pfeiltasten und W, A, S, D fahren (Hilfe &gt; Tasten)</translation>
     </message>
     <message>
         <source>(not stored)</source>
-        <translation type="unfinished"></translation>
+        <translation>(nicht gespeichert)</translation>
     </message>
     <message>
         <source>The scene stays hidden in experiment mode</source>
-        <translation type="unfinished"></translation>
+        <translation>Im Experimentmodus bleibt die Szene verborgen</translation>
     </message>
     <message>
         <source>v %1 units/s   ω %2 rad/s</source>
-        <translation type="unfinished"></translation>
+        <translation>v %1 Einheiten/s   ω %2 rad/s</translation>
     </message>
     <message>
         <source>Blocked: the last step was stopped</source>
-        <translation type="unfinished"></translation>
+        <translation>Blockiert: der letzte Schritt wurde gestoppt</translation>
     </message>
     <message>
         <source>Moving freely</source>
-        <translation type="unfinished"></translation>
+        <translation>Freie Fahrt</translation>
     </message>
     <message>
         <source>No step yet</source>
-        <translation type="unfinished"></translation>
+        <translation>Noch kein Schritt</translation>
     </message>
     <message>
         <source>No run yet.</source>
-        <translation type="unfinished"></translation>
+        <translation>Noch kein Lauf.</translation>
     </message>
     <message>
         <source>%1 mode, scene %2, step %3 (%4 s)</source>
-        <translation type="unfinished"></translation>
+        <translation>Modus %1, Szene %2, Schritt %3 (%4 s)</translation>
     </message>
     <message>
         <source>, %1 s left</source>
-        <translation type="unfinished"></translation>
+        <translation>, noch %1 s</translation>
     </message>
     <message>
         <source>
 run %1, %2 steps stored</source>
-        <translation type="unfinished"></translation>
+        <translation>
+Lauf %1, %2 Schritte gespeichert</translation>
     </message>
     <message>
         <source>
 not stored (no database)</source>
-        <translation type="unfinished"></translation>
+        <translation>
+nicht gespeichert (keine Datenbank)</translation>
     </message>
     <message>
         <source>
 outcome: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>
+Ergebnis: %1</translation>
     </message>
     <message>
         <source>
 paused: a drive key or Go starts the clock</source>
-        <translation type="unfinished"></translation>
+        <translation>
+pausiert: eine Fahrtaste oder „Los“ startet die Uhr</translation>
     </message>
     <message>
         <source>Pause</source>
-        <translation type="unfinished"></translation>
+        <translation>Pause</translation>
     </message>
     <message>
         <source>Play</source>
-        <translation type="unfinished"></translation>
+        <translation>Abspielen</translation>
     </message>
     <message>
         <source>Data &lt;&lt;</source>
-        <translation type="unfinished"></translation>
+        <translation>Daten &lt;&lt;</translation>
     </message>
     <message>
         <source>Open Scene</source>
-        <translation type="unfinished"></translation>
+        <translation>Szene öffnen</translation>
     </message>
     <message>
         <source>Scenes (*.json);;All files (*)</source>
-        <translation type="unfinished"></translation>
+        <translation>Szenen (*.json);;Alle Dateien (*)</translation>
     </message>
     <message>
         <source>No steps recorded yet.</source>
-        <translation type="unfinished"></translation>
+        <translation>Noch keine Schritte aufgezeichnet.</translation>
     </message>
     <message>
         <source>Save Run</source>
-        <translation type="unfinished"></translation>
+        <translation>Lauf speichern</translation>
     </message>
     <message>
         <source>Run files (*.csv)</source>
-        <translation type="unfinished"></translation>
+        <translation>Laufdateien (*.csv)</translation>
     </message>
     <message>
         <source>Briefing: Bug1 and Bug2</source>
-        <translation type="unfinished"></translation>
+        <translation>Einweisung: Bug1 und Bug2</translation>
     </message>
     <message>
         <source>&lt;p&gt;You drive the robot by touch: the close-up shows only the robot, which domes touch something, where it heads (blue) and where the goal lies (red), with the distance. Two classic strategies for a point robot that feels its way may help:&lt;/p&gt;&lt;p&gt;&lt;b&gt;Bug1&lt;/b&gt;&lt;br&gt;1. Head for the goal.&lt;br&gt;2. When you hit an obstacle, go all the way round it, keeping contact, and remember the point where you were closest to the goal.&lt;br&gt;3. Go back to that point, leave the obstacle there and head for the goal again.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Bug2&lt;/b&gt;&lt;br&gt;1. Head for the goal along the straight line from the start to the goal (the S-G line).&lt;br&gt;2. When an obstacle is in the way, follow its edge until you meet the S-G line again, closer to the goal than where you hit it.&lt;br&gt;3. Leave the obstacle there and go on along the line.&lt;/p&gt;&lt;p&gt;The robot is not a point: it is 140 long and 80 wide, it turns about its rear axle, and it loses contact easily when it follows an edge carelessly.&lt;/p&gt;</source>
-        <translation type="unfinished"></translation>
+        <translation>&lt;p&gt;Sie steuern den Roboter nach Gefühl: Die Nahansicht zeigt nur den Roboter, welche Kuppeln etwas berühren, wohin er fährt (blau) und wo das Ziel liegt (rot), mit der Entfernung. Zwei klassische Strategien für einen punktförmigen Roboter, der sich vortastet, können helfen:&lt;/p&gt;&lt;p&gt;&lt;b&gt;Bug1&lt;/b&gt;&lt;br&gt;1. Auf das Ziel zufahren.&lt;br&gt;2. Bei einem Hindernis einmal ganz um es herumfahren, dabei den Kontakt halten, und sich den Punkt merken, an dem man dem Ziel am nächsten war.&lt;br&gt;3. Zu diesem Punkt zurückfahren, das Hindernis dort verlassen und wieder auf das Ziel zufahren.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Bug2&lt;/b&gt;&lt;br&gt;1. Auf der Geraden vom Start zum Ziel (der S-Z-Linie) auf das Ziel zufahren.&lt;br&gt;2. Steht ein Hindernis im Weg, seinem Rand folgen, bis man die S-Z-Linie wieder trifft, näher am Ziel als dort, wo man auf das Hindernis stieß.&lt;br&gt;3. Das Hindernis dort verlassen und auf der Linie weiterfahren.&lt;/p&gt;&lt;p&gt;Der Roboter ist kein Punkt: Er ist 140 lang und 80 breit, dreht sich um seine Hinterachse und verliert leicht den Kontakt, wenn er einem Rand unachtsam folgt.&lt;/p&gt;</translation>
     </message>
     <message>
         <source>Simulator Keys</source>
-        <translation type="unfinished"></translation>
+        <translation>Tasten des Simulators</translation>
     </message>
 </context>
 <context>
     <name>tactile::gui::StatusPictureView</name>
     <message>
         <source>Choose a scene and a mode, then press Start.</source>
-        <translation type="unfinished"></translation>
+        <translation>Szene und Modus wählen, dann „Neuen Lauf starten“ drücken.</translation>
     </message>
     <message>
         <source>%1 units to the goal</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 Einheiten bis zum Ziel</translation>
     </message>
     <message>
         <source>Whole scene (M: robot close-up)</source>
-        <translation type="unfinished"></translation>
+        <translation>Ganze Szene (M: Roboter-Nahansicht)</translation>
     </message>
     <message>
         <source>Robot close-up (M: whole scene)</source>
-        <translation type="unfinished"></translation>
+        <translation>Roboter-Nahansicht (M: ganze Szene)</translation>
     </message>
     <message>
         <source>Robot close-up (scene hidden)</source>
-        <translation type="unfinished"></translation>
+        <translation>Roboter-Nahansicht (Szene verborgen)</translation>
     </message>
 </context>
 <context>
@@ -1435,8 +1584,12 @@ paused: a drive key or Go starts the clock</source>
         <translation>%1 Schritte/s</translation>
     </message>
     <message>
-        <source>of %1</source>
-        <translation>von %1</translation>
+        <source>of %1 steps</source>
+        <translation>von %1 Schritten</translation>
+    </message>
+    <message>
+        <source>Steps are numbered from 0 to %1</source>
+        <translation>Die Schritte sind von 0 bis %1 nummeriert</translation>
     </message>
 </context>
 <context>
@@ -1561,10 +1714,6 @@ paused: a drive key or Go starts the clock</source>
         <translation>Modellordnung</translation>
     </message>
     <message>
-        <source>Correct rate per class (%)</source>
-        <translation>Trefferquote je Klasse (%)</translation>
-    </message>
-    <message>
         <source>Fit + predict time (s)</source>
         <translation>Zeit für Anpassung + Vorhersage (s)</translation>
     </message>
@@ -1581,12 +1730,30 @@ paused: a drive key or Go starts the clock</source>
         <translation>Pareto-Front (%1)</translation>
     </message>
     <message>
-        <source>No cells with a model yet.</source>
-        <translation>Noch keine Zellen mit Modell.</translation>
+        <source>No fitted cells yet.</source>
+        <translation>Noch keine angepassten Zellen.</translation>
     </message>
     <message>
-        <source>No cells with a model scored on test rows.</source>
-        <translation>Keine Zellen mit Modell auf Testzeilen bewertet.</translation>
+        <source>Recall per class (%)</source>
+        <translation>Trefferquote je Klasse (%)</translation>
+    </message>
+    <message>
+        <source>No fitted cells scored on test rows.</source>
+        <translation>Keine angepasste Zelle wurde auf Testzeilen bewertet.</translation>
+    </message>
+    <message>
+        <source>%1
+%2: %3
+%4: %5%6</source>
+        <translation>%1
+%2: %3
+%4: %5%6</translation>
+    </message>
+    <message>
+        <source>
+cell %1 (click to select)</source>
+        <translation>
+Zelle %1 (zum Auswählen klicken)</translation>
     </message>
 </context>
 <context>
@@ -1628,16 +1795,8 @@ paused: a drive key or Go starts the clock</source>
         <translation>Kontaktmuster</translation>
     </message>
     <message>
-        <source>Sweep %1: %2 cells, %3 with a model</source>
-        <translation>Sweep %1: %2 Zellen, %3 mit Modell</translation>
-    </message>
-    <message>
         <source>(cancelled: the finished cells)</source>
         <translation>(abgebrochen: die fertigen Zellen)</translation>
-    </message>
-    <message>
-        <source>No cell has a model yet.</source>
-        <translation>Noch keine Zelle hat ein Modell.</translation>
     </message>
     <message>
         <source>No cells yet.</source>
@@ -1652,10 +1811,6 @@ paused: a drive key or Go starts the clock</source>
         <translation>Zelle %1: %2</translation>
     </message>
     <message>
-        <source>This cell has no model: %1</source>
-        <translation>Diese Zelle hat kein Modell: %1</translation>
-    </message>
-    <message>
         <source>Confusion (counts)</source>
         <translation>Konfusionsmatrix (Anzahl)</translation>
     </message>
@@ -1664,24 +1819,12 @@ paused: a drive key or Go starts the clock</source>
         <translation>Konfusionsmatrix (Zeilenprozent)</translation>
     </message>
     <message>
-        <source>Per-class correct rate of this cell (%)</source>
-        <translation>Trefferquote je Klasse dieser Zelle (%)</translation>
-    </message>
-    <message>
         <source>No contact patterns were kept for this cell.</source>
         <translation>Für diese Zelle wurden keine Kontaktmuster aufbewahrt.</translation>
     </message>
     <message>
-        <source>each group&apos;s best cell</source>
-        <translation>beste Zelle jeder Gruppe</translation>
-    </message>
-    <message>
         <source>This cell was not scored: the test runs have no labelled rows of its group.</source>
         <translation>Diese Zelle wurde nicht bewertet: Die Testläufe haben keine gelabelten Zeilen ihrer Gruppe.</translation>
-    </message>
-    <message>
-        <source>this cell</source>
-        <translation>diese Zelle</translation>
     </message>
     <message>
         <source>Group %1, GMM %2, order %3, variance floor %4, %5 features, seed %6</source>
@@ -1690,6 +1833,30 @@ paused: a drive key or Go starts the clock</source>
     <message>
         <source>Group %1, %2, variance floor %3, %4 features, seed %5</source>
         <translation>Gruppe %1, %2, Varianzuntergrenze %3, %4 Merkmale, Seed %5</translation>
+    </message>
+    <message>
+        <source>Sweep %1: %2 cells, %3 fitted, %4 failed; no model is stored (Store Model of Cell stores one)</source>
+        <translation>Sweep %1: %2 Zellen, %3 angepasst, %4 fehlgeschlagen; kein Modell gespeichert („Modell der Zelle speichern“ speichert eines)</translation>
+    </message>
+    <message>
+        <source>No cell is fitted yet.</source>
+        <translation>Noch keine Zelle angepasst.</translation>
+    </message>
+    <message>
+        <source>Precision per class, one-vs-rest, % - each group&apos;s best cell</source>
+        <translation>Präzision je Klasse, One-vs-Rest, % – beste Zelle jeder Gruppe</translation>
+    </message>
+    <message>
+        <source>This cell could not be fitted: %1</source>
+        <translation>Diese Zelle konnte nicht angepasst werden: %1</translation>
+    </message>
+    <message>
+        <source>Precision per class, one-vs-rest (of the steps predicted a class, the share that are it; thesis table 4.19&apos;s correct rate), % - this cell</source>
+        <translation>Präzision je Klasse, One-vs-Rest (von den als eine Klasse vorhergesagten Schritten der Anteil, der wirklich zu ihr gehört; die Korrektrate aus Tabelle 4.19 der Arbeit), % – diese Zelle</translation>
+    </message>
+    <message>
+        <source>Recall per class of this cell (of the steps of a class, the share predicted as it), %</source>
+        <translation>Trefferquote je Klasse dieser Zelle (von den Schritten einer Klasse der Anteil, der als diese Klasse vorhergesagt wird), %</translation>
     </message>
 </context>
 <context>
@@ -1801,22 +1968,6 @@ paused: a drive key or Go starts the clock</source>
         <translation>Kurs</translation>
     </message>
     <message>
-        <source>L</source>
-        <translation>L</translation>
-    </message>
-    <message>
-        <source>R</source>
-        <translation>R</translation>
-    </message>
-    <message>
-        <source>F</source>
-        <translation>V</translation>
-    </message>
-    <message>
-        <source>B</source>
-        <translation>Z</translation>
-    </message>
-    <message>
         <source>blocked</source>
         <translation>blockiert</translation>
     </message>
@@ -1859,6 +2010,98 @@ paused: a drive key or Go starts the clock</source>
     <message>
         <source>, the label %1</source>
         <translation>, das Label %1</translation>
+    </message>
+    <message>
+        <source>turn left</source>
+        <translation>links drehen</translation>
+    </message>
+    <message>
+        <source>turn right</source>
+        <translation>rechts drehen</translation>
+    </message>
+    <message>
+        <source>forward</source>
+        <translation>vorwärts</translation>
+    </message>
+    <message>
+        <source>backward</source>
+        <translation>rückwärts</translation>
+    </message>
+    <message>
+        <source>blue: facing +x
+red: facing −x</source>
+        <translation>blau: Richtung +x
+rot: Richtung −x</translation>
+    </message>
+    <message>
+        <source>red: command
+grey: blocked</source>
+        <translation>rot: Befehl
+grau: blockiert</translation>
+    </message>
+    <message>
+        <source>normal</source>
+        <translation>Normalkraft</translation>
+    </message>
+    <message>
+        <source>shear</source>
+        <translation>Scherkraft</translation>
+    </message>
+    <message>
+        <source>magnitude</source>
+        <translation>Betrag</translation>
+    </message>
+    <message>
+        <source>step %1</source>
+        <translation>Schritt %1</translation>
+    </message>
+    <message>
+        <source>steps %1-%2 (largest)</source>
+        <translation>Schritte %1–%2 (größter Wert)</translation>
+    </message>
+    <message>
+        <source>%1, sensor %2 (%3 %4): %5 %6</source>
+        <translation>%1, Sensor %2 (%3 %4): %5 %6</translation>
+    </message>
+    <message>
+        <source>step %1: heading %2° (%3)</source>
+        <translation>Schritt %1: Kurs %2° (%3)</translation>
+    </message>
+    <message>
+        <source>blue: facing +x</source>
+        <translation>blau: Richtung +x</translation>
+    </message>
+    <message>
+        <source>red: facing −x</source>
+        <translation>rot: Richtung −x</translation>
+    </message>
+    <message>
+        <source>step %1: v %2, omega %3%4</source>
+        <translation>Schritt %1: v %2, omega %3%4</translation>
+    </message>
+    <message>
+        <source>, blocked</source>
+        <translation>, blockiert</translation>
+    </message>
+    <message>
+        <source>%1 online</source>
+        <translation>%1 online</translation>
+    </message>
+    <message>
+        <source>%1 offline</source>
+        <translation>%1 offline</translation>
+    </message>
+    <message>
+        <source>step %1, %2: the %3 decision is %4</source>
+        <translation>Schritt %1, %2: Entscheidung %3: %4</translation>
+    </message>
+    <message>
+        <source>online (causal)</source>
+        <translation>online (kausal)</translation>
+    </message>
+    <message>
+        <source>offline (whole contact)</source>
+        <translation>offline (ganzer Kontakt)</translation>
     </message>
 </context>
 <context>
@@ -2037,10 +2280,6 @@ paused: a drive key or Go starts the clock</source>
         </translation>
     </message>
     <message>
-        <source>%1: balanced accuracy %2 %</source>
-        <translation>%1: balancierte Genauigkeit %2 %</translation>
-    </message>
-    <message>
         <source>%1: skipped (%2)</source>
         <translation>%1: übersprungen (%2)</translation>
     </message>
@@ -2071,6 +2310,111 @@ paused: a drive key or Go starts the clock</source>
     <message>
         <source>Train one model per group and store it in the database</source>
         <translation>Ein Modell je Gruppe trainieren und in der Datenbank speichern</translation>
+    </message>
+    <message>
+        <source>Plan:</source>
+        <translation>Plan:</translation>
+    </message>
+    <message>
+        <source>Group</source>
+        <translation>Gruppe</translation>
+    </message>
+    <message>
+        <source>Balanced accuracy %</source>
+        <translation>Balancierte Genauigkeit %</translation>
+    </message>
+    <message>
+        <source>Accuracy %</source>
+        <translation>Genauigkeit %</translation>
+    </message>
+    <message>
+        <source>Training samples</source>
+        <translation>Trainingsbeispiele</translation>
+    </message>
+    <message>
+        <source>Test samples</source>
+        <translation>Testbeispiele</translation>
+    </message>
+    <message>
+        <source>Fit s</source>
+        <translation>Anpassung s</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n cell(s)</source>
+        <translation>
+            <numerusform>%n Zelle</numerusform>
+            <numerusform>%n Zellen</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>, about %1 (%2 s a cell as in sweep %3, on %n thread(s))</source>
+        <translation>
+            <numerusform>, etwa %1 (%2 s je Zelle wie in Sweep %3, mit %n Thread)</numerusform>
+            <numerusform>, etwa %1 (%2 s je Zelle wie in Sweep %3, mit %n Threads)</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>; the time left shows once the first cells finish (no sweep is stored yet to estimate from)</source>
+        <translation>; die Restzeit erscheint, sobald die ersten Zellen fertig sind (noch kein gespeicherter Sweep, aus dem sie sich schätzen ließe)</translation>
+    </message>
+    <message>
+        <source>Ready.</source>
+        <translation>Bereit.</translation>
+    </message>
+    <message>
+        <source>skipped: %1</source>
+        <translation>übersprungen: %1</translation>
+    </message>
+    <message>
+        <source>Leave one scene out</source>
+        <translation>Je eine Szene auslassen</translation>
+    </message>
+    <message>
+        <source>Leave one scene out: each scene&apos;s runs (marked for training) are scored by models trained without that scene; no test runs</source>
+        <translation>Je eine Szene auslassen: Die (zum Training markierten) Läufe jeder Szene werden mit Modellen bewertet, die ohne diese Szene trainiert wurden; keine Testläufe</translation>
+    </message>
+    <message>
+        <source>Decision modes: step = each step alone; online = HMM forward filter over the contact (causal, what a navigator may use); offline = forward-backward over the whole contact. A sweep scores every ticked mode (cells differing only here share one fit); Train model always scores all three and its models decide online by default</source>
+        <translation>Entscheidungsmodi: step = jeder Schritt für sich; online = HMM-Vorwärtsfilter über den Kontakt (kausal, was ein Navigator nutzen darf); offline = Vorwärts-Rückwärts über den ganzen Kontakt. Ein Sweep bewertet jeden angehakten Modus (Zellen, die sich nur hierin unterscheiden, teilen eine Anpassung); „Modell trainieren“ bewertet immer alle drei, und seine Modelle entscheiden standardmäßig online</translation>
+    </message>
+    <message>
+        <source>Decisions:</source>
+        <translation>Entscheidungen:</translation>
+    </message>
+    <message>
+        <source>%1 scored 0 on %2 test steps</source>
+        <translation>%1 erzielte 0 auf %2 Testschritten</translation>
+    </message>
+    <message>
+        <source>%1 had no test data</source>
+        <translation>%1 hatte keine Testdaten</translation>
+    </message>
+    <message>
+        <source>%1. Store the model anyway?</source>
+        <translation>%1. Das Modell trotzdem speichern?</translation>
+    </message>
+    <message>
+        <source>Store the model?</source>
+        <translation>Modell speichern?</translation>
+    </message>
+    <message>
+        <source>The model was not stored (%1).</source>
+        <translation>Das Modell wurde nicht gespeichert (%1).</translation>
+    </message>
+    <message>
+        <source>%1: balanced accuracy %2 % (%3 test steps)</source>
+        <translation>%1: balancierte Genauigkeit %2 % (%3 Testschritte)</translation>
+    </message>
+    <message>
+        <source>%1: no test data</source>
+        <translation>%1: keine Testdaten</translation>
+    </message>
+</context>
+<context>
+    <name>tactile::gui::UserGuideWindow</name>
+    <message>
+        <source>User Guide</source>
+        <translation>Benutzerhandbuch</translation>
     </message>
 </context>
 </TS>

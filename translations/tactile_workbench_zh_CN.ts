@@ -32,6 +32,212 @@
     </message>
 </context>
 <context>
+    <name>Shortcuts</name>
+    <message>
+        <source>File</source>
+        <translation>文件</translation>
+    </message>
+    <message>
+        <source>Edit</source>
+        <translation>编辑</translation>
+    </message>
+    <message>
+        <source>Go</source>
+        <translation>转到</translation>
+    </message>
+    <message>
+        <source>View</source>
+        <translation>视图</translation>
+    </message>
+    <message>
+        <source>Learn</source>
+        <translation>学习</translation>
+    </message>
+    <message>
+        <source>Help</source>
+        <translation>帮助</translation>
+    </message>
+    <message>
+        <source>Open a database</source>
+        <translation>打开数据库</translation>
+    </message>
+    <message>
+        <source>Import run files</source>
+        <translation>导入运行文件</translation>
+    </message>
+    <message>
+        <source>Preferences</source>
+        <translation>首选项</translation>
+    </message>
+    <message>
+        <source>Quit</source>
+        <translation>退出</translation>
+    </message>
+    <message>
+        <source>Undo the last label edit</source>
+        <translation>撤销上一次标签编辑</translation>
+    </message>
+    <message>
+        <source>Redo</source>
+        <translation>重做</translation>
+    </message>
+    <message>
+        <source>Label as %1</source>
+        <translation>标注为%1</translation>
+    </message>
+    <message>
+        <source>Delete the segments under the cursor</source>
+        <translation>删除光标处的片段</translation>
+    </message>
+    <message>
+        <source>Move the segment&apos;s start one step left</source>
+        <translation>将片段起点左移一步</translation>
+    </message>
+    <message>
+        <source>Move the segment&apos;s start one step right</source>
+        <translation>将片段起点右移一步</translation>
+    </message>
+    <message>
+        <source>Move the segment&apos;s end one step left</source>
+        <translation>将片段终点左移一步</translation>
+    </message>
+    <message>
+        <source>Move the segment&apos;s end one step right</source>
+        <translation>将片段终点右移一步</translation>
+    </message>
+    <message>
+        <source>Clear the selection (in a text field: leave the field)</source>
+        <translation>清除选区（在文本框中：离开文本框）</translation>
+    </message>
+    <message>
+        <source>Next step</source>
+        <translation>下一步</translation>
+    </message>
+    <message>
+        <source>Previous step</source>
+        <translation>上一步</translation>
+    </message>
+    <message>
+        <source>Forward 10 steps</source>
+        <translation>前进 10 步</translation>
+    </message>
+    <message>
+        <source>Back 10 steps</source>
+        <translation>后退 10 步</translation>
+    </message>
+    <message>
+        <source>Forward 100 steps</source>
+        <translation>前进 100 步</translation>
+    </message>
+    <message>
+        <source>Back 100 steps</source>
+        <translation>后退 100 步</translation>
+    </message>
+    <message>
+        <source>Forward one screen</source>
+        <translation>前进一屏</translation>
+    </message>
+    <message>
+        <source>Back one screen</source>
+        <translation>后退一屏</translation>
+    </message>
+    <message>
+        <source>First step</source>
+        <translation>第一步</translation>
+    </message>
+    <message>
+        <source>Last step</source>
+        <translation>最后一步</translation>
+    </message>
+    <message>
+        <source>Play or pause</source>
+        <translation>播放或暂停</translation>
+    </message>
+    <message>
+        <source>Route: robot close-up or whole scene</source>
+        <translation>路线：机器人特写或整个场景</translation>
+    </message>
+    <message>
+        <source>Zoom the timelines out to the whole run</source>
+        <translation>将时间轴缩放至整个运行</translation>
+    </message>
+    <message>
+        <source>Train and sweep</source>
+        <translation>训练与扫描</translation>
+    </message>
+    <message>
+        <source>Show a model&apos;s predictions</source>
+        <translation>显示模型的预测</translation>
+    </message>
+    <message>
+        <source>Next stretch where the model disagrees with the labels</source>
+        <translation>下一处模型与标签不一致的区段</translation>
+    </message>
+    <message>
+        <source>Previous stretch where the model disagrees with the labels</source>
+        <translation>上一处模型与标签不一致的区段</translation>
+    </message>
+    <message>
+        <source>This list of keyboard shortcuts</source>
+        <translation>本快捷键列表</translation>
+    </message>
+    <message>
+        <source>New simulation window</source>
+        <translation>新建模拟器窗口</translation>
+    </message>
+</context>
+<context>
+    <name>SimKeys</name>
+    <message>
+        <source>Faster forward by a large step (+20 units/s)</source>
+        <translation>向前加速，大步长（+20 单位/秒）</translation>
+    </message>
+    <message>
+        <source>Slower (or backward) by a large step (-20 units/s)</source>
+        <translation>减速（或后退），大步长（-20 单位/秒）</translation>
+    </message>
+    <message>
+        <source>Faster forward by a small step (+5 units/s)</source>
+        <translation>向前加速，小步长（+5 单位/秒）</translation>
+    </message>
+    <message>
+        <source>Slower (or backward) by a small step (-5 units/s)</source>
+        <translation>减速（或后退），小步长（-5 单位/秒）</translation>
+    </message>
+    <message>
+        <source>Turn left by a large step (+0.2 rad/s)</source>
+        <translation>左转，大步长（+0.2 rad/s）</translation>
+    </message>
+    <message>
+        <source>Turn right by a large step (-0.2 rad/s)</source>
+        <translation>右转，大步长（-0.2 rad/s）</translation>
+    </message>
+    <message>
+        <source>Turn left by a small step (+0.05 rad/s)</source>
+        <translation>左转，小步长（+0.05 rad/s）</translation>
+    </message>
+    <message>
+        <source>Turn right by a small step (-0.05 rad/s)</source>
+        <translation>右转，小步长（-0.05 rad/s）</translation>
+    </message>
+    <message>
+        <source>Stop (v = 0, omega = 0)</source>
+        <translation>停止（v = 0，omega = 0）</translation>
+    </message>
+    <message>
+        <source>Robot close-up / whole scene (close-up only in experiment mode)</source>
+        <translation>机器人特写 / 整个场景（实验模式下仅特写）</translation>
+    </message>
+    <message>
+        <source>Pause / go on</source>
+        <translation>暂停 / 继续</translation>
+    </message>
+    <message>
+        <source>One step (while paused)</source>
+        <translation>单步（暂停时）</translation>
+    </message>
+</context>
+<context>
     <name>main</name>
     <message>
         <source>Tactile Workbench: tactile-navigation research desktop</source>
@@ -84,6 +290,65 @@
     <message>
         <source>%1: no such database</source>
         <translation>%1：没有此数据库</translation>
+    </message>
+    <message>
+        <source>Open the simulator window on SCENE (a built-in scene, a scene JSON file or random:N:SEED); runs go into --db (or the last database).</source>
+        <translation>在场景 SCENE（内置场景、场景 JSON 文件或 random:N:SEED）上打开模拟器窗口；运行保存到 --db（或上次使用的数据库）。</translation>
+    </message>
+    <message>
+        <source>With --simulate: practice (default), experiment or autonomous.</source>
+        <translation>与 --simulate 一起使用：practice（练习，默认）、experiment（实验）或 autonomous（自主）。</translation>
+    </message>
+    <message>
+        <source>With --simulate: the subject&apos;s name.</source>
+        <translation>与 --simulate 一起使用：受试者姓名。</translation>
+    </message>
+    <message>
+        <source>With --simulate --mode experiment: the seed of start and goal.</source>
+        <translation>与 --simulate --mode experiment 一起使用：起点和目标的随机种子。</translation>
+    </message>
+    <message>
+        <source>With --simulate: start a run and replay the v, omega commands of the run file FILE, one a step.</source>
+        <translation>与 --simulate 一起使用：开始一次运行，并逐步重放运行文件 FILE 中的 v、omega 指令，每步一条。</translation>
+    </message>
+    <message>
+        <source>With --simulate: steps per second (default 10; 0 as fast as possible).</source>
+        <translation>与 --simulate 一起使用：每秒步数（默认 10；0 表示尽可能快）。</translation>
+    </message>
+    <message>
+        <source>With --simulate: show the data panel.</source>
+        <translation>与 --simulate 一起使用：显示数据面板。</translation>
+    </message>
+    <message>
+        <source>With --simulate: show the whole scene where allowed.</source>
+        <translation>与 --simulate 一起使用：在允许时显示整个场景。</translation>
+    </message>
+    <message>
+        <source>no stored model named &apos;%1&apos;</source>
+        <translation>没有名为“%1”的已保存模型</translation>
+    </message>
+    <message>
+        <source>--mode must be practice, experiment or autonomous, got &apos;%1&apos;</source>
+        <translation>--mode 必须是 practice、experiment 或 autonomous，收到的是“%1”</translation>
+    </message>
+    <message>
+        <source>--seed needs a positive number, got &apos;%1&apos;</source>
+        <translation>--seed 需要一个正数，收到的是“%1”</translation>
+    </message>
+    <message>
+        <source>--rate needs a number &gt;= 0, got &apos;%1&apos;</source>
+        <translation>--rate 需要一个 &gt;= 0 的数，收到的是“%1”</translation>
+    </message>
+</context>
+<context>
+    <name>tactile::gui::ExperimentPanel</name>
+    <message>
+        <source>Status</source>
+        <translation>状态</translation>
+    </message>
+    <message>
+        <source>Strategies</source>
+        <translation>策略</translation>
     </message>
 </context>
 <context>
@@ -184,14 +449,6 @@
         <translation>Kappa</translation>
     </message>
     <message>
-        <source>Labels against the run&apos;s truth, over the labelled steps</source>
-        <translation>标签与该运行真值的对比，仅统计已标注的步</translation>
-    </message>
-    <message>
-        <source>Agreement with truth</source>
-        <translation>与真值的一致性</translation>
-    </message>
-    <message>
         <source>Open a run first.</source>
         <translation>请先打开一个运行。</translation>
     </message>
@@ -285,6 +542,52 @@
         <source>%1: %2, steps %3-%4</source>
         <translation>%1：%2，第 %3–%4 步</translation>
     </message>
+    <message>
+        <source>Compare the labels with the run&apos;s truth or with another label set (another annotator)</source>
+        <translation>将标签与运行的真值或另一个标签集（另一位标注者）进行比较</translation>
+    </message>
+    <message>
+        <source>Chance</source>
+        <translation>偶然一致率</translation>
+    </message>
+    <message>
+        <source>Share of the steps both sides label on which they give the same class</source>
+        <translation>在双方都已标注的步中，双方给出相同类别的比例</translation>
+    </message>
+    <message>
+        <source>Agreement expected by chance from each side&apos;s class shares</source>
+        <translation>根据双方各自的类别占比，偶然情况下预期的一致率</translation>
+    </message>
+    <message>
+        <source>Cohen&apos;s kappa = (agree - chance) / (100 % - chance): 0 when the agreement is no better than chance, 1 when perfect; &apos;-&apos; when chance is 100 % (one class throughout)</source>
+        <translation>Cohen&apos;s kappa = (一致率 − 偶然一致率) / (100 % − 偶然一致率)：一致程度不优于偶然时为 0，完全一致时为 1；偶然一致率为 100 %（始终只有一个类别）时显示“-”</translation>
+    </message>
+    <message>
+        <source>Agreement with</source>
+        <translation>比较对象</translation>
+    </message>
+    <message>
+        <source>truth</source>
+        <translation>真值</translation>
+    </message>
+    <message>
+        <source>label set %1</source>
+        <translation>标签集 %1</translation>
+    </message>
+    <message>
+        <source>No step is labelled on both sides</source>
+        <translation>没有双方都已标注的步</translation>
+    </message>
+    <message numerus="yes">
+        <source>Undefined: both sides use one and the same class on all %n step(s), so chance agreement is 100 %</source>
+        <translation>
+            <numerusform>未定义：双方在全部 %n 步上都使用同一个类别，因此偶然一致率为 100 %</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>%1 of %2 steps agree (%3); by chance %4 would: kappa = (%3 - %4) / (100 % - %4) = %5</source>
+        <translation>%2 步中有 %1 步一致（%3）；偶然一致率为 %4：kappa = (%3 − %4) / (100 % − %4) = %5</translation>
+    </message>
 </context>
 <context>
     <name>tactile::gui::MainWindow</name>
@@ -335,10 +638,6 @@
         <translation>导入运行(&amp;I)...</translation>
     </message>
     <message>
-        <source>Ctrl+I</source>
-        <translation>Ctrl+I</translation>
-    </message>
-    <message>
         <source>Export &amp;Labels...</source>
         <translation>导出标签(&amp;L)...</translation>
     </message>
@@ -371,32 +670,16 @@
         <translation>片段起点左移</translation>
     </message>
     <message>
-        <source>Alt+Shift+Left</source>
-        <translation>Alt+Shift+Left</translation>
-    </message>
-    <message>
         <source>Move Segment Start Right</source>
         <translation>片段起点右移</translation>
-    </message>
-    <message>
-        <source>Alt+Shift+Right</source>
-        <translation>Alt+Shift+Right</translation>
     </message>
     <message>
         <source>Move Segment End Left</source>
         <translation>片段终点左移</translation>
     </message>
     <message>
-        <source>Alt+Left</source>
-        <translation>Alt+Left</translation>
-    </message>
-    <message>
         <source>Move Segment End Right</source>
         <translation>片段终点右移</translation>
-    </message>
-    <message>
-        <source>Alt+Right</source>
-        <translation>Alt+Right</translation>
     </message>
     <message>
         <source>Clear Selection</source>
@@ -479,10 +762,6 @@
         <translation>缩放至整个运行</translation>
     </message>
     <message>
-        <source>Ctrl+0</source>
-        <translation>Ctrl+0</translation>
-    </message>
-    <message>
         <source>&amp;Learn</source>
         <translation>学习(&amp;L)</translation>
     </message>
@@ -491,20 +770,12 @@
         <translation>训练与扫描(&amp;T)...</translation>
     </message>
     <message>
-        <source>Ctrl+T</source>
-        <translation>Ctrl+T</translation>
-    </message>
-    <message>
         <source>Open &amp;Sweep Results...</source>
         <translation>打开扫描结果(&amp;S)...</translation>
     </message>
     <message>
         <source>Show &amp;Predictions...</source>
         <translation>显示预测(&amp;P)...</translation>
-    </message>
-    <message>
-        <source>Ctrl+P</source>
-        <translation>Ctrl+P</translation>
     </message>
     <message>
         <source>&amp;Hide Predictions</source>
@@ -613,10 +884,6 @@
     <message>
         <source>Tactile Workbench</source>
         <translation>触觉工作台</translation>
-    </message>
-    <message>
-        <source>Step %1 of %2</source>
-        <translation>第 %1 步，共 %2 步</translation>
     </message>
     <message>
         <source>  |  selected %1-%2</source>
@@ -734,7 +1001,35 @@ Research workbench for tactile-based mobile-robot navigation.</source>
     </message>
     <message>
         <source>Navigator</source>
-        <translation type="unfinished"></translation>
+        <translation>导航器</translation>
+    </message>
+    <message>
+        <source>Keyboard Shortcuts</source>
+        <translation>键盘快捷键</translation>
+    </message>
+    <message>
+        <source>Preferences saved</source>
+        <translation>首选项已保存</translation>
+    </message>
+    <message>
+        <source>&amp;Preferences...</source>
+        <translation>首选项(&amp;P)...</translation>
+    </message>
+    <message>
+        <source>&amp;Keyboard Shortcuts</source>
+        <translation>键盘快捷键(&amp;K)</translation>
+    </message>
+    <message>
+        <source>Step %1 of %2 steps</source>
+        <translation>第 %1 步，共 %2 步</translation>
+    </message>
+    <message>
+        <source>&amp;User Guide</source>
+        <translation>用户指南(&amp;U)</translation>
+    </message>
+    <message>
+        <source>New &amp;Simulation...</source>
+        <translation>新建模拟(&amp;S)...</translation>
     </message>
 </context>
 <context>
@@ -760,38 +1055,81 @@ Research workbench for tactile-based mobile-robot navigation.</source>
     <name>tactile::gui::NavigatorPanelView</name>
     <message>
         <source>This run has no navigator columns. Runs written by &apos;tactile navigate&apos; have them.</source>
-        <translation type="unfinished"></translation>
+        <translation>此运行没有导航器列。由“tactile navigate”写入的运行才有这些列。</translation>
     </message>
     <message>
         <source>Command set:</source>
-        <translation type="unfinished"></translation>
+        <translation>指令集：</translation>
     </message>
     <message>
         <source>Current control mode:</source>
-        <translation type="unfinished"></translation>
+        <translation>当前控制模式：</translation>
     </message>
     <message>
         <source>Status:</source>
-        <translation type="unfinished"></translation>
+        <translation>状态：</translation>
     </message>
     <message>
         <source>Status-%1:</source>
-        <translation type="unfinished"></translation>
+        <translation>状态-%1：</translation>
     </message>
 </context>
 <context>
     <name>tactile::gui::NavigatorStripView</name>
     <message>
         <source>strategy</source>
-        <translation type="unfinished"></translation>
+        <translation>策略</translation>
     </message>
     <message>
         <source>status</source>
-        <translation type="unfinished"></translation>
+        <translation>状态</translation>
     </message>
     <message>
         <source>step %1: %2</source>
-        <translation type="unfinished"></translation>
+        <translation>第 %1 步：%2</translation>
+    </message>
+</context>
+<context>
+    <name>tactile::gui::PreferencesDialog</name>
+    <message>
+        <source>Preferences</source>
+        <translation>首选项</translation>
+    </message>
+    <message>
+        <source>Follow the system</source>
+        <translation>跟随系统</translation>
+    </message>
+    <message>
+        <source>e.g. your initials</source>
+        <translation>例如您的姓名缩写</translation>
+    </message>
+    <message>
+        <source>Stored with every label segment you write and in label exports (annotator column)</source>
+        <translation>随您写入的每个标签片段一起保存，也写入标签导出文件（annotator 列）</translation>
+    </message>
+    <message>
+        <source> px</source>
+        <translation> px</translation>
+    </message>
+    <message>
+        <source>Height of each label, truth and model row in the timelines</source>
+        <translation>时间轴中每个标签行、真值行和模型行的高度</translation>
+    </message>
+    <message>
+        <source>&amp;Language:</source>
+        <translation>语言(&amp;L)：</translation>
+    </message>
+    <message>
+        <source>A new language applies at the next start.</source>
+        <translation>新语言将在下次启动时生效。</translation>
+    </message>
+    <message>
+        <source>&amp;Annotator:</source>
+        <translation>标注者(&amp;A)：</translation>
+    </message>
+    <message>
+        <source>Timeline &amp;row height:</source>
+        <translation>时间轴行高(&amp;R)：</translation>
     </message>
 </context>
 <context>
@@ -819,6 +1157,14 @@ Research workbench for tactile-based mobile-robot navigation.</source>
     <message>
         <source>Close-up (M: whole scene)</source>
         <translation>特写（M：整个场景）</translation>
+    </message>
+    <message>
+        <source>Zoomed %1x (double click: whole scene)</source>
+        <translation>缩放 %1 倍（双击：整个场景）</translation>
+    </message>
+    <message>
+        <source>Close-up zoomed %1x (double click: close-up)</source>
+        <translation>特写，缩放 %1 倍（双击：特写）</translation>
     </message>
 </context>
 <context>
@@ -862,6 +1208,343 @@ imported from %2</source>
     </message>
 </context>
 <context>
+    <name>tactile::gui::SimSession</name>
+    <message>
+        <source>An experiment run needs the subject&apos;s name.</source>
+        <translation>实验运行需要受试者姓名。</translation>
+    </message>
+    <message>
+        <source>A subject&apos;s name must be one line.</source>
+        <translation>受试者姓名只能有一行。</translation>
+    </message>
+    <message>
+        <source>Autonomous mode needs a driver.</source>
+        <translation>自主模式需要一个驾驶程序。</translation>
+    </message>
+    <message>
+        <source>The step length must be in (0, 1] seconds.</source>
+        <translation>步长必须在 (0, 1] 秒之间。</translation>
+    </message>
+    <message>
+        <source>The time limit must be positive.</source>
+        <translation>时间限制必须为正数。</translation>
+    </message>
+</context>
+<context>
+    <name>tactile::gui::SimWindow</name>
+    <message>
+        <source>Run %1 ended: %2</source>
+        <translation>运行 %1 已结束：%2</translation>
+    </message>
+    <message>
+        <source>Tactile Simulator</source>
+        <translation>触觉模拟器</translation>
+    </message>
+    <message>
+        <source>Practice</source>
+        <translation>练习</translation>
+    </message>
+    <message>
+        <source>Experiment</source>
+        <translation>实验</translation>
+    </message>
+    <message>
+        <source>Autonomous</source>
+        <translation>自主</translation>
+    </message>
+    <message>
+        <source>needed in experiment mode</source>
+        <translation>实验模式下必填</translation>
+    </message>
+    <message>
+        <source> s</source>
+        <translation> 秒</translation>
+    </message>
+    <message>
+        <source>as fast as possible</source>
+        <translation>尽可能快</translation>
+    </message>
+    <message>
+        <source> steps/s</source>
+        <translation> 步/秒</translation>
+    </message>
+    <message>
+        <source>Run</source>
+        <translation>运行</translation>
+    </message>
+    <message>
+        <source>Mode</source>
+        <translation>模式</translation>
+    </message>
+    <message>
+        <source>Scene</source>
+        <translation>场景</translation>
+    </message>
+    <message>
+        <source>Subject</source>
+        <translation>受试者</translation>
+    </message>
+    <message>
+        <source>Seed (start, goal)</source>
+        <translation>随机种子（起点、目标）</translation>
+    </message>
+    <message>
+        <source>Time limit</source>
+        <translation>时间限制</translation>
+    </message>
+    <message>
+        <source>Step rate</source>
+        <translation>步速</translation>
+    </message>
+    <message>
+        <source>Navigator model</source>
+        <translation>导航器模型</translation>
+    </message>
+    <message>
+        <source>Start New Run</source>
+        <translation>开始新运行</translation>
+    </message>
+    <message>
+        <source>Go</source>
+        <translation>开始</translation>
+    </message>
+    <message>
+        <source>Step</source>
+        <translation>单步</translation>
+    </message>
+    <message>
+        <source>Give Up</source>
+        <translation>放弃</translation>
+    </message>
+    <message>
+        <source>Data &gt;&gt;</source>
+        <translation>数据 &gt;&gt;</translation>
+    </message>
+    <message>
+        <source>Open in Workbench</source>
+        <translation>在工作台中打开</translation>
+    </message>
+    <message>
+        <source>Signal per group</source>
+        <translation>各组信号</translation>
+    </message>
+    <message>
+        <source>Experiment panel</source>
+        <translation>实验面板</translation>
+    </message>
+    <message>
+        <source>The run so far</source>
+        <translation>目前的运行</translation>
+    </message>
+    <message>
+        <source>Bug2 bumper (no model)</source>
+        <translation>Bug2 保险杠（无模型）</translation>
+    </message>
+    <message>
+        <source>&amp;File</source>
+        <translation>文件(&amp;F)</translation>
+    </message>
+    <message>
+        <source>Built-in &amp;Scenes</source>
+        <translation>内置场景(&amp;S)</translation>
+    </message>
+    <message>
+        <source>Open Scene &amp;File...</source>
+        <translation>打开场景文件(&amp;F)...</translation>
+    </message>
+    <message>
+        <source>Open Run in &amp;Workbench</source>
+        <translation>在工作台中打开运行(&amp;W)</translation>
+    </message>
+    <message>
+        <source>Save Run as &amp;CSV...</source>
+        <translation>将运行保存为 CSV(&amp;C)...</translation>
+    </message>
+    <message>
+        <source>&amp;Close</source>
+        <translation>关闭(&amp;C)</translation>
+    </message>
+    <message>
+        <source>&amp;Run</source>
+        <translation>运行(&amp;R)</translation>
+    </message>
+    <message>
+        <source>Start &amp;New Run</source>
+        <translation>开始新运行(&amp;N)</translation>
+    </message>
+    <message>
+        <source>&amp;Go / Pause (P)</source>
+        <translation>开始 / 暂停（P）(&amp;G)</translation>
+    </message>
+    <message>
+        <source>&amp;Step (N)</source>
+        <translation>单步（N）(&amp;S)</translation>
+    </message>
+    <message>
+        <source>&amp;Give Up</source>
+        <translation>放弃(&amp;G)</translation>
+    </message>
+    <message>
+        <source>&amp;View</source>
+        <translation>视图(&amp;V)</translation>
+    </message>
+    <message>
+        <source>Robot Close-up / Whole Scene (M)</source>
+        <translation>机器人特写 / 整个场景（M）</translation>
+    </message>
+    <message>
+        <source>&amp;Data Panel</source>
+        <translation>数据面板(&amp;D)</translation>
+    </message>
+    <message>
+        <source>&amp;Help</source>
+        <translation>帮助(&amp;H)</translation>
+    </message>
+    <message>
+        <source>&amp;Briefing: Bug1 and Bug2</source>
+        <translation>任务简介：Bug1 与 Bug2(&amp;B)</translation>
+    </message>
+    <message>
+        <source>&amp;Keys</source>
+        <translation>按键(&amp;K)</translation>
+    </message>
+    <message>
+        <source>Scene %1: press Start New Run</source>
+        <translation>场景 %1：请点击“开始新运行”</translation>
+    </message>
+    <message>
+        <source>Run %1 ready: drive with the arrow keys and W, A, S, D (Help &gt; Keys)</source>
+        <translation>运行 %1 已就绪：用方向键和 W、A、S、D 驾驶（帮助 &gt; 按键）</translation>
+    </message>
+    <message>
+        <source>(not stored)</source>
+        <translation>（未保存）</translation>
+    </message>
+    <message>
+        <source>The scene stays hidden in experiment mode</source>
+        <translation>实验模式下场景保持隐藏</translation>
+    </message>
+    <message>
+        <source>v %1 units/s   ω %2 rad/s</source>
+        <translation>v %1 单位/秒   ω %2 rad/s</translation>
+    </message>
+    <message>
+        <source>Blocked: the last step was stopped</source>
+        <translation>受阻：上一步被阻挡</translation>
+    </message>
+    <message>
+        <source>Moving freely</source>
+        <translation>自由移动</translation>
+    </message>
+    <message>
+        <source>No step yet</source>
+        <translation>还没有步</translation>
+    </message>
+    <message>
+        <source>No run yet.</source>
+        <translation>还没有运行。</translation>
+    </message>
+    <message>
+        <source>%1 mode, scene %2, step %3 (%4 s)</source>
+        <translation>%1 模式，场景 %2，第 %3 步（%4 秒）</translation>
+    </message>
+    <message>
+        <source>, %1 s left</source>
+        <translation>，剩余 %1 秒</translation>
+    </message>
+    <message>
+        <source>
+run %1, %2 steps stored</source>
+        <translation>
+运行 %1，已保存 %2 步</translation>
+    </message>
+    <message>
+        <source>
+not stored (no database)</source>
+        <translation>
+未保存（无数据库）</translation>
+    </message>
+    <message>
+        <source>
+outcome: %1</source>
+        <translation>
+结果：%1</translation>
+    </message>
+    <message>
+        <source>
+paused: a drive key or Go starts the clock</source>
+        <translation>
+已暂停：按驾驶键或“开始”即开始计时</translation>
+    </message>
+    <message>
+        <source>Pause</source>
+        <translation>暂停</translation>
+    </message>
+    <message>
+        <source>Play</source>
+        <translation>播放</translation>
+    </message>
+    <message>
+        <source>Data &lt;&lt;</source>
+        <translation>数据 &lt;&lt;</translation>
+    </message>
+    <message>
+        <source>Open Scene</source>
+        <translation>打开场景</translation>
+    </message>
+    <message>
+        <source>Scenes (*.json);;All files (*)</source>
+        <translation>场景 (*.json);;所有文件 (*)</translation>
+    </message>
+    <message>
+        <source>No steps recorded yet.</source>
+        <translation>还没有记录任何步。</translation>
+    </message>
+    <message>
+        <source>Save Run</source>
+        <translation>保存运行</translation>
+    </message>
+    <message>
+        <source>Run files (*.csv)</source>
+        <translation>运行文件 (*.csv)</translation>
+    </message>
+    <message>
+        <source>Briefing: Bug1 and Bug2</source>
+        <translation>任务简介：Bug1 与 Bug2</translation>
+    </message>
+    <message>
+        <source>&lt;p&gt;You drive the robot by touch: the close-up shows only the robot, which domes touch something, where it heads (blue) and where the goal lies (red), with the distance. Two classic strategies for a point robot that feels its way may help:&lt;/p&gt;&lt;p&gt;&lt;b&gt;Bug1&lt;/b&gt;&lt;br&gt;1. Head for the goal.&lt;br&gt;2. When you hit an obstacle, go all the way round it, keeping contact, and remember the point where you were closest to the goal.&lt;br&gt;3. Go back to that point, leave the obstacle there and head for the goal again.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Bug2&lt;/b&gt;&lt;br&gt;1. Head for the goal along the straight line from the start to the goal (the S-G line).&lt;br&gt;2. When an obstacle is in the way, follow its edge until you meet the S-G line again, closer to the goal than where you hit it.&lt;br&gt;3. Leave the obstacle there and go on along the line.&lt;/p&gt;&lt;p&gt;The robot is not a point: it is 140 long and 80 wide, it turns about its rear axle, and it loses contact easily when it follows an edge carelessly.&lt;/p&gt;</source>
+        <translation>&lt;p&gt;您通过触觉驾驶机器人：特写只显示机器人本身、哪些触点正在接触物体、它的朝向（蓝色）以及目标所在方向（红色）和距离。对于靠摸索前进的点状机器人，有两种经典策略可供参考：&lt;/p&gt;&lt;p&gt;&lt;b&gt;Bug1&lt;/b&gt;&lt;br&gt;1. 朝目标前进。&lt;br&gt;2. 碰到障碍物时，保持接触绕它完整走一圈，并记住离目标最近的那个点。&lt;br&gt;3. 回到该点，在那里离开障碍物，再次朝目标前进。&lt;/p&gt;&lt;p&gt;&lt;b&gt;Bug2&lt;/b&gt;&lt;br&gt;1. 沿起点到目标的直线（S-G 线）朝目标前进。&lt;br&gt;2. 遇到障碍物挡路时，沿其边缘行走，直到再次遇到 S-G 线，且该处比碰到障碍物的位置更接近目标。&lt;br&gt;3. 在那里离开障碍物，继续沿直线前进。&lt;/p&gt;&lt;p&gt;机器人不是一个点：它长 140、宽 80，绕后轴转向，沿边缘行走时稍不留神就会失去接触。&lt;/p&gt;</translation>
+    </message>
+    <message>
+        <source>Simulator Keys</source>
+        <translation>模拟器按键</translation>
+    </message>
+</context>
+<context>
+    <name>tactile::gui::StatusPictureView</name>
+    <message>
+        <source>Choose a scene and a mode, then press Start.</source>
+        <translation>选择场景和模式，然后点击“开始新运行”。</translation>
+    </message>
+    <message>
+        <source>%1 units to the goal</source>
+        <translation>距目标 %1 单位</translation>
+    </message>
+    <message>
+        <source>Whole scene (M: robot close-up)</source>
+        <translation>整个场景（M：机器人特写）</translation>
+    </message>
+    <message>
+        <source>Robot close-up (M: whole scene)</source>
+        <translation>机器人特写（M：整个场景）</translation>
+    </message>
+    <message>
+        <source>Robot close-up (scene hidden)</source>
+        <translation>机器人特写（场景隐藏）</translation>
+    </message>
+</context>
+<context>
     <name>tactile::gui::StepControlsView</name>
     <message>
         <source>Previous step (Left)</source>
@@ -892,8 +1575,12 @@ imported from %2</source>
         <translation>%1 步/秒</translation>
     </message>
     <message>
-        <source>of %1</source>
-        <translation>/ %1</translation>
+        <source>of %1 steps</source>
+        <translation>共 %1 步</translation>
+    </message>
+    <message>
+        <source>Steps are numbered from 0 to %1</source>
+        <translation>步的编号从 0 到 %1</translation>
     </message>
 </context>
 <context>
@@ -1010,20 +1697,12 @@ imported from %2</source>
         <translation>PDF 文件 (*.pdf)</translation>
     </message>
     <message>
-        <source>No cells with a model yet.</source>
-        <translation>还没有带模型的单元。</translation>
-    </message>
-    <message>
         <source>Variance floor</source>
         <translation>方差下限</translation>
     </message>
     <message>
         <source>Model order</source>
         <translation>模型阶数</translation>
-    </message>
-    <message>
-        <source>Correct rate per class (%)</source>
-        <translation>各类别正确率 (%)</translation>
     </message>
     <message>
         <source>Fit + predict time (s)</source>
@@ -1042,8 +1721,30 @@ imported from %2</source>
         <translation>帕累托前沿（%1）</translation>
     </message>
     <message>
-        <source>No cells with a model scored on test rows.</source>
-        <translation>没有在测试行上评分的带模型单元。</translation>
+        <source>No fitted cells yet.</source>
+        <translation>还没有已拟合的单元。</translation>
+    </message>
+    <message>
+        <source>Recall per class (%)</source>
+        <translation>各类别召回率 (%)</translation>
+    </message>
+    <message>
+        <source>No fitted cells scored on test rows.</source>
+        <translation>没有在测试行上评分的已拟合单元。</translation>
+    </message>
+    <message>
+        <source>%1
+%2: %3
+%4: %5%6</source>
+        <translation>%1
+%2：%3
+%4：%5%6</translation>
+    </message>
+    <message>
+        <source>
+cell %1 (click to select)</source>
+        <translation>
+单元 %1（单击以选择）</translation>
     </message>
 </context>
 <context>
@@ -1093,20 +1794,8 @@ imported from %2</source>
         <translation>接触模式</translation>
     </message>
     <message>
-        <source>Sweep %1: %2 cells, %3 with a model</source>
-        <translation>扫描 %1：%2 个单元，%3 个带模型</translation>
-    </message>
-    <message>
         <source>(cancelled: the finished cells)</source>
         <translation>（已取消：仅已完成的单元）</translation>
-    </message>
-    <message>
-        <source>No cell has a model yet.</source>
-        <translation>还没有单元带模型。</translation>
-    </message>
-    <message>
-        <source>each group&apos;s best cell</source>
-        <translation>每组最佳单元</translation>
     </message>
     <message>
         <source>No cells yet.</source>
@@ -1121,10 +1810,6 @@ imported from %2</source>
         <translation>单元 %1：%2</translation>
     </message>
     <message>
-        <source>This cell has no model: %1</source>
-        <translation>此单元没有模型：%1</translation>
-    </message>
-    <message>
         <source>This cell was not scored: the test runs have no labelled rows of its group.</source>
         <translation>此单元未评分：测试运行中没有其所属组的已标注行。</translation>
     </message>
@@ -1137,16 +1822,32 @@ imported from %2</source>
         <translation>混淆矩阵（行百分比）</translation>
     </message>
     <message>
-        <source>this cell</source>
-        <translation>此单元</translation>
-    </message>
-    <message>
-        <source>Per-class correct rate of this cell (%)</source>
-        <translation>此单元各类别正确率 (%)</translation>
-    </message>
-    <message>
         <source>No contact patterns were kept for this cell.</source>
         <translation>此单元未保留接触模式。</translation>
+    </message>
+    <message>
+        <source>Sweep %1: %2 cells, %3 fitted, %4 failed; no model is stored (Store Model of Cell stores one)</source>
+        <translation>扫描 %1：%2 个单元，%3 个已拟合，%4 个失败；未保存模型（“保存单元的模型”可保存一个）</translation>
+    </message>
+    <message>
+        <source>No cell is fitted yet.</source>
+        <translation>还没有单元完成拟合。</translation>
+    </message>
+    <message>
+        <source>Precision per class, one-vs-rest, % - each group&apos;s best cell</source>
+        <translation>各类别精确率（一对其余），% – 每组的最佳单元</translation>
+    </message>
+    <message>
+        <source>This cell could not be fitted: %1</source>
+        <translation>此单元无法拟合：%1</translation>
+    </message>
+    <message>
+        <source>Precision per class, one-vs-rest (of the steps predicted a class, the share that are it; thesis table 4.19&apos;s correct rate), % - this cell</source>
+        <translation>各类别精确率（一对其余；预测为某类别的步中实际属于该类别的比例，即论文表 4.19 中的正确率），% – 本单元</translation>
+    </message>
+    <message>
+        <source>Recall per class of this cell (of the steps of a class, the share predicted as it), %</source>
+        <translation>本单元各类别召回率（某类别的步中被预测为该类别的比例），%</translation>
     </message>
 </context>
 <context>
@@ -1258,22 +1959,6 @@ imported from %2</source>
         <translation>航向</translation>
     </message>
     <message>
-        <source>L</source>
-        <translation>左</translation>
-    </message>
-    <message>
-        <source>R</source>
-        <translation>右</translation>
-    </message>
-    <message>
-        <source>F</source>
-        <translation>前</translation>
-    </message>
-    <message>
-        <source>B</source>
-        <translation>后</translation>
-    </message>
-    <message>
         <source>blocked</source>
         <translation>受阻</translation>
     </message>
@@ -1316,6 +2001,98 @@ imported from %2</source>
     <message>
         <source>Magnitude</source>
         <translation>合力大小</translation>
+    </message>
+    <message>
+        <source>turn left</source>
+        <translation>左转</translation>
+    </message>
+    <message>
+        <source>turn right</source>
+        <translation>右转</translation>
+    </message>
+    <message>
+        <source>forward</source>
+        <translation>前进</translation>
+    </message>
+    <message>
+        <source>backward</source>
+        <translation>后退</translation>
+    </message>
+    <message>
+        <source>blue: facing +x
+red: facing −x</source>
+        <translation>蓝色：朝向 +x
+红色：朝向 −x</translation>
+    </message>
+    <message>
+        <source>red: command
+grey: blocked</source>
+        <translation>红色：指令
+灰色：受阻</translation>
+    </message>
+    <message>
+        <source>normal</source>
+        <translation>法向力</translation>
+    </message>
+    <message>
+        <source>shear</source>
+        <translation>剪切力</translation>
+    </message>
+    <message>
+        <source>magnitude</source>
+        <translation>合力大小</translation>
+    </message>
+    <message>
+        <source>step %1</source>
+        <translation>第 %1 步</translation>
+    </message>
+    <message>
+        <source>steps %1-%2 (largest)</source>
+        <translation>第 %1–%2 步（最大值）</translation>
+    </message>
+    <message>
+        <source>%1, sensor %2 (%3 %4): %5 %6</source>
+        <translation>%1，传感器 %2（%3 %4）：%5 %6</translation>
+    </message>
+    <message>
+        <source>step %1: heading %2° (%3)</source>
+        <translation>第 %1 步：航向 %2°（%3）</translation>
+    </message>
+    <message>
+        <source>blue: facing +x</source>
+        <translation>蓝色：朝向 +x</translation>
+    </message>
+    <message>
+        <source>red: facing −x</source>
+        <translation>红色：朝向 −x</translation>
+    </message>
+    <message>
+        <source>step %1: v %2, omega %3%4</source>
+        <translation>第 %1 步：v %2，omega %3%4</translation>
+    </message>
+    <message>
+        <source>, blocked</source>
+        <translation>，受阻</translation>
+    </message>
+    <message>
+        <source>%1 online</source>
+        <translation>%1 在线</translation>
+    </message>
+    <message>
+        <source>%1 offline</source>
+        <translation>%1 离线</translation>
+    </message>
+    <message>
+        <source>step %1, %2: the %3 decision is %4</source>
+        <translation>第 %1 步，%2：%3判定为%4</translation>
+    </message>
+    <message>
+        <source>online (causal)</source>
+        <translation>在线（因果）</translation>
+    </message>
+    <message>
+        <source>offline (whole contact)</source>
+        <translation>离线（整个接触）</translation>
     </message>
 </context>
 <context>
@@ -1507,10 +2284,6 @@ imported from %2</source>
         </translation>
     </message>
     <message>
-        <source>%1: balanced accuracy %2 %</source>
-        <translation>%1：平衡准确率 %2 %</translation>
-    </message>
-    <message>
         <source>%1: skipped (%2)</source>
         <translation>%1：已跳过（%2）</translation>
     </message>
@@ -1525,6 +2298,109 @@ imported from %2</source>
     <message>
         <source>Training failed: %1</source>
         <translation>训练失败：%1</translation>
+    </message>
+    <message>
+        <source>Plan:</source>
+        <translation>计划：</translation>
+    </message>
+    <message>
+        <source>Group</source>
+        <translation>组</translation>
+    </message>
+    <message>
+        <source>Balanced accuracy %</source>
+        <translation>平衡准确率 %</translation>
+    </message>
+    <message>
+        <source>Accuracy %</source>
+        <translation>准确率 %</translation>
+    </message>
+    <message>
+        <source>Training samples</source>
+        <translation>训练样本数</translation>
+    </message>
+    <message>
+        <source>Test samples</source>
+        <translation>测试样本数</translation>
+    </message>
+    <message>
+        <source>Fit s</source>
+        <translation>拟合 s</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n cell(s)</source>
+        <translation>
+            <numerusform>%n 个单元</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>, about %1 (%2 s a cell as in sweep %3, on %n thread(s))</source>
+        <translation>
+            <numerusform>，约 %1（按扫描 %3 中每个单元 %2 秒计，使用 %n 个线程）</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>; the time left shows once the first cells finish (no sweep is stored yet to estimate from)</source>
+        <translation>；首批单元完成后将显示剩余时间（尚无已保存的扫描可供估算）</translation>
+    </message>
+    <message>
+        <source>Ready.</source>
+        <translation>就绪。</translation>
+    </message>
+    <message>
+        <source>skipped: %1</source>
+        <translation>已跳过：%1</translation>
+    </message>
+    <message>
+        <source>Leave one scene out</source>
+        <translation>留一场景交叉验证</translation>
+    </message>
+    <message>
+        <source>Leave one scene out: each scene&apos;s runs (marked for training) are scored by models trained without that scene; no test runs</source>
+        <translation>留一场景交叉验证：每个场景的运行（标记为训练的）由不含该场景训练出的模型评分；不使用测试运行</translation>
+    </message>
+    <message>
+        <source>Decision modes: step = each step alone; online = HMM forward filter over the contact (causal, what a navigator may use); offline = forward-backward over the whole contact. A sweep scores every ticked mode (cells differing only here share one fit); Train model always scores all three and its models decide online by default</source>
+        <translation>判定模式：step = 每步单独判定；online = 在接触过程中做 HMM 前向滤波（因果，导航器可用的方式）；offline = 对整个接触做前向-后向计算。扫描会为每个勾选的模式评分（仅在此处不同的单元共用一次拟合）；“训练模型”总是为三种模式都评分，其模型默认在线判定</translation>
+    </message>
+    <message>
+        <source>Decisions:</source>
+        <translation>判定：</translation>
+    </message>
+    <message>
+        <source>%1 scored 0 on %2 test steps</source>
+        <translation>%1 在 %2 个测试步上得分为 0</translation>
+    </message>
+    <message>
+        <source>%1 had no test data</source>
+        <translation>%1 没有测试数据</translation>
+    </message>
+    <message>
+        <source>%1. Store the model anyway?</source>
+        <translation>%1。仍然保存该模型吗？</translation>
+    </message>
+    <message>
+        <source>Store the model?</source>
+        <translation>保存模型？</translation>
+    </message>
+    <message>
+        <source>The model was not stored (%1).</source>
+        <translation>模型未保存（%1）。</translation>
+    </message>
+    <message>
+        <source>%1: balanced accuracy %2 % (%3 test steps)</source>
+        <translation>%1：平衡准确率 %2 %（%3 个测试步）</translation>
+    </message>
+    <message>
+        <source>%1: no test data</source>
+        <translation>%1：没有测试数据</translation>
+    </message>
+</context>
+<context>
+    <name>tactile::gui::UserGuideWindow</name>
+    <message>
+        <source>User Guide</source>
+        <translation>用户指南</translation>
     </message>
 </context>
 </TS>
