@@ -2409,6 +2409,10 @@ grau: blockiert</translation>
         <source>%1: no test data</source>
         <translation>%1: keine Testdaten</translation>
     </message>
+    <message>
+        <source>no test data</source>
+        <translation>keine Testdaten</translation>
+    </message>
 </context>
 <context>
     <name>tactile::gui::UserGuideWindow</name>

@@ -2395,6 +2395,10 @@ grey: blocked</source>
         <source>%1: no test data</source>
         <translation>%1：没有测试数据</translation>
     </message>
+    <message>
+        <source>no test data</source>
+        <translation>没有测试数据</translation>
+    </message>
 </context>
 <context>
     <name>tactile::gui::UserGuideWindow</name>
