@@ -439,212 +439,214 @@ class MainWindowTest : public QObject {
     drop({folder + QStringLiteral("/notes.txt")});
     QVERIFY(window.lastError().contains(QStringLiteral("notes.txt")));
     QCOMPARE(window.runList()->table()->model()->rowCount(), 4);
-    // Regression: at start the runs filter had the focus, so Right, Left and the class keys went
-    // into it and Ctrl+Z did nothing to the labels.
-    void keysWorkWhateverHasTheFocusExceptATextField() {
-      GuiFixture fx(1000);
-      QVERIFY(fx.workspace->database().createLabelSet("mine").ok());
-      MainWindow window;
-      QVERIFY(window.openDatabase(QString::fromStdString(fx.dbPath)).ok());
-      window.show();
-      QVERIFY(QTest::qWaitForWindowExposed(&window));
-      window.activateWindow();
-      QVERIFY(QTest::qWaitForWindowActive(&window));
-      auto* s = window.session();
-      QCOMPARE(s->currentStep(), 0);
-      QCOMPARE(window.labels()->setName(), std::string("mine"));
-      const SensorGroup group = s->selectedGroup();
-      // Right after start, whatever took the focus: the keys step and label.
-      QWidget* focus = QApplication::focusWidget();
-      QVERIFY(focus != nullptr);
-      QVERIFY2(qobject_cast<QLineEdit*>(focus) == nullptr, focus->metaObject()->className());
-      QTest::keyClick(focus, Qt::Key_Right);
-      QCOMPARE(s->currentStep(), 1);
-      QTest::keyClick(QApplication::focusWidget(), Qt::Key_2);
-      QCOMPARE(window.labels()->classAt(group, 1), std::optional(ContactClass::Wall));
-      QTest::keyClick(QApplication::focusWidget(), Qt::Key_Z, Qt::ControlModifier);
-      QVERIFY(!window.labels()->classAt(group, 1).has_value());
-      auto* filter = window.findChild<QLineEdit*>(QStringLiteral("runFilter"));
-      QVERIFY(filter != nullptr);
-      QVERIFY(filter->text().isEmpty());
-      // A table or a slider with the focus leaves the arrows and digits to the window.
-      QWidget* table = window.runList()->table();
-      QWidget* slider = window.findChild<QSlider*>(QStringLiteral("stepSlider"));
-      for (QWidget* w : {table, slider}) {
-        w->setFocus(Qt::MouseFocusReason);
-        QCOMPARE(QApplication::focusWidget(), w);
-        const std::int64_t before = s->currentStep();
-        QTest::keyClick(w, Qt::Key_Right);
-        QCOMPARE(s->currentStep(), before + 1);
-        QTest::keyClick(w, Qt::Key_Left, Qt::ShiftModifier);
-        QCOMPARE(s->currentStep(), std::max<std::int64_t>(0, before - 9));
-        QTest::keyClick(w, Qt::Key_Right, Qt::ShiftModifier);
-      }
-      // A text field being typed in keeps its keys, and Escape leaves it for the timelines.
-      const std::int64_t before = s->currentStep();
-      filter->setFocus(Qt::MouseFocusReason);
-      QTest::keyClicks(filter, QStringLiteral("room2"));
-      QTest::keyClick(filter, Qt::Key_Left);
-      QTest::keyClick(filter, Qt::Key_Backspace);
-      QCOMPARE(filter->text(), QStringLiteral("roo2"));  // the cursor moved before the 2: "m" went
-      QCOMPARE(s->currentStep(), before);
-      QVERIFY(!window.labels()->classAt(group, before).has_value());
-      QTest::keyClick(filter, Qt::Key_Escape);
-      QVERIFY(!filter->hasFocus());
-      QCOMPARE(QApplication::focusWidget(), static_cast<QWidget*>(window.timeline()));
-      QTest::keyClick(QApplication::focusWidget(), Qt::Key_Right);
-      QCOMPARE(s->currentStep(), before + 1);
-    }
-
-    // Regression: the cursor and "Apply to" were saved only on a clean quit; after kill -9 they
-    // came back reset.
-    void settingsSurviveAKilledSession() {
-      GuiFixture fx(700);
-      QProcess child;
-      QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
-      env.insert(QLatin1String(kChildDbVariable), QString::fromStdString(fx.dbPath));
-      env.insert(QLatin1String(kChildSettingsVariable), settingsDir_.path());
-      env.insert(QStringLiteral("QT_QPA_PLATFORM"), QStringLiteral("offscreen"));
-      child.setProcessEnvironment(env);
-      child.start(QCoreApplication::applicationFilePath(), {});
-      QVERIFY(child.waitForStarted());
-      QByteArray out;
-      QTRY_VERIFY_WITH_TIMEOUT((out += child.readAllStandardOutput()).contains('\n'), 20000);
-      QVERIFY2(out.startsWith("ready "), out.constData());
-      const qint64 step = out.mid(6).trimmed().toLongLong();
-      QCOMPARE(step, 700 - 1 - 11);
-      QTest::qWait(1500);  // the settings are written shortly after they change
-      QCOMPARE(child.state(), QProcess::Running);
-      ::kill(static_cast<pid_t>(child.processId()), SIGKILL);
-      QVERIFY(child.waitForFinished());
-      QCOMPARE(child.exitStatus(), QProcess::CrashExit);
-      MainWindow again;
-      QVERIFY(again.openDatabase(QString::fromStdString(fx.dbPath)).ok());
-      QCOMPARE(again.session()->currentStep(), step);
-      QCOMPARE(again.labelPanel()->groupsMode(),
-               tactile::gui::LabelPanelView::GroupsMode::Contacting);
-      QCOMPARE(again.labelPanel()->checkedGroups(), std::vector<SensorGroup>{SensorGroup::Back});
-    }
-
-    // Help > Keyboard Shortcuts lists exactly the shortcuts the window binds, and the Edit menu
-    // names the classes.
-    void theShortcutListEqualsTheBoundShortcuts() {
-      MainWindow window;
-      std::map<QString, QList<QKeySequence>> bound;
-      std::set<QString> keysSeen;
-      for (QAction* a : window.findChildren<QAction*>()) {
-        if (a->shortcuts().isEmpty()) continue;
-        QVERIFY2(!bound.count(a->objectName()), qPrintable(a->objectName()));
-        bound[a->objectName()] = a->shortcuts();
-        for (const QKeySequence& k : a->shortcuts()) {
-          // No key does two things.
-          QVERIFY2(keysSeen.insert(k.toString()).second, qPrintable(k.toString()));
-        }
-      }
-      std::map<QString, QList<QKeySequence>> listed;
-      for (const tactile::gui::ShortcutEntry& e : tactile::gui::shortcutTable())
-        listed[e.id] = e.keys;
-      for (const auto& [id, keys] : bound)
-        QVERIFY2(listed.count(id) == 1, qPrintable(id));
-      QCOMPARE(bound.size(), listed.size());
-      for (const auto& [id, keys] : listed) {
-        QVERIFY2(bound.count(id) == 1, qPrintable(id));
-        QCOMPARE(bound[id], keys);
-      }
-      // The dialog shows every entry's keys and text.
-      window.showKeyboardShortcuts();
-      auto* text = window.findChild<QTextBrowser*>(QStringLiteral("shortcutsText"));
-      QVERIFY(text != nullptr);
-      const QString shown = text->toPlainText();
-      for (const tactile::gui::ShortcutEntry& e : tactile::gui::shortcutTable()) {
-        QVERIFY2(shown.contains(e.text), qPrintable(e.text));
-        for (const QKeySequence& k : e.keys)
-          QVERIFY2(shown.contains(k.toString(QKeySequence::NativeText)), qPrintable(k.toString()));
-      }
-      QCOMPARE(window.findChild<QAction*>(QStringLiteral("labelAs2"))->text(),
-               QStringLiteral("Label as Wall"));
-      QCOMPARE(window.findChild<QAction*>(QStringLiteral("labelAs4"))->text(),
-               QStringLiteral("Label as Leaving wall"));
-    }
-
-    // Help > User Guide shows the embedded guide, pictures included, with no docs/ folder needed.
-    void helpShowsTheEmbeddedUserGuide() {
-      MainWindow window;
-      QAction* entry = nullptr;
-      for (QAction* a : window.findChildren<QAction*>())
-        if (a->text() == QStringLiteral("&User Guide")) entry = a;
-      QVERIFY(entry != nullptr);
-      entry->trigger();
-      auto* text = window.findChild<QTextBrowser*>(QStringLiteral("userGuideText"));
-      QVERIFY(text != nullptr);
-      QVERIFY(text->toPlainText().contains(QStringLiteral("User guide")));
-      QVERIFY(text->toPlainText().contains(QStringLiteral("Ctrl+Z")));
-      // Every picture the guide names is embedded and loads as an image.
-      QFile guide(QStringLiteral(":/guide/user-guide.md"));
-      QVERIFY(guide.open(QIODevice::ReadOnly));
-      const QString markdown = QString::fromUtf8(guide.readAll());
-      static const QRegularExpression picture(QStringLiteral("\\]\\((images/[^)]+\\.png)\\)"));
-      int pictures = 0;
-      for (auto it = picture.globalMatch(markdown); it.hasNext(); ++pictures) {
-        const QString path = QStringLiteral(":/guide/") + it.next().captured(1);
-        QVERIFY2(!QImage(path).isNull(), qPrintable(path));
-      }
-      QVERIFY(pictures >= 3);
-    }
-
-    // The annotator's name from the preferences is stored on every segment and exported.
-    void annotatorIsStoredOnSegmentsAndExported() {
-      GuiFixture fx(300);
-      QVERIFY(fx.workspace->database().createLabelSet("named").ok());
-      QSettings().setValue(tactile::gui::settings_keys::kAnnotator, QStringLiteral("ada"));
-      MainWindow window;
-      QVERIFY(window.openDatabase(QString::fromStdString(fx.dbPath)).ok());
-      window.show();
-      QVERIFY(QTest::qWaitForWindowExposed(&window));
-      window.session()->setSelection(10, 20);
-      QTest::keyClick(QApplication::focusWidget(), Qt::Key_3);
-      auto set = fx.workspace->database().findLabelSet("named");
-      QVERIFY(set.ok());
-      auto stored = fx.workspace->database().segments(set->id);
-      QVERIFY(stored.ok());
-      QCOMPARE(stored->size(), std::size_t{1});
-      QCOMPARE(stored->front().annotator, std::string("ada"));
-      const QString csv = fx.dir.filePath(QStringLiteral("named.csv"));
-      QVERIFY(window.labels()->exportFile(csv.toStdString()).ok());
-      QFile f(csv);
-      QVERIFY(f.open(QIODevice::ReadOnly));
-      const QString text = QString::fromUtf8(f.readAll());
-      QVERIFY2(text.contains(QStringLiteral("annotator")) &&
-                   text.contains(QStringLiteral(",10,20,Corner,ada")),
-               qPrintable(text));
-      // A new name from the preferences applies to the next edit.
-      QSettings().setValue(tactile::gui::settings_keys::kAnnotator, QStringLiteral("bob"));
-      window.applyPreferences();
-      window.session()->setSelection(30, 40);
-      QTest::keyClick(QApplication::focusWidget(), Qt::Key_2);
-      stored = fx.workspace->database().segments(set->id);
-      QCOMPARE(stored->back().annotator, std::string("bob"));
-    }
-
-    void badDatabaseIsAnErrorAndChangesNothing() {
-      MainWindow window;
-      QTemporaryDir dir;
-      const QString missing = dir.filePath(QStringLiteral("absent.db"));
-      QVERIFY(!window.openDatabase(missing).ok());
-      QVERIFY(!QFileInfo::exists(missing));
-      QVERIFY(window.databasePath().isEmpty());
-    }
-
-   private:
-    QTemporaryDir settingsDir_;
-  };
-
-  int main(int argc, char** argv) {
-    if (qEnvironmentVariableIsSet(kChildDbVariable)) return runKilledSession(argc, argv);
-    QApplication app(argc, argv);
-    app.setAttribute(Qt::AA_Use96Dpi, true);
-    MainWindowTest test;
-    QTEST_SET_MAIN_SOURCE_PATH
-    return QTest::qExec(&test, argc, argv);
   }
+
+  // Regression: at start the runs filter had the focus, so Right, Left and the class keys went
+  // into it and Ctrl+Z did nothing to the labels.
+  void keysWorkWhateverHasTheFocusExceptATextField() {
+    GuiFixture fx(1000);
+    QVERIFY(fx.workspace->database().createLabelSet("mine").ok());
+    MainWindow window;
+    QVERIFY(window.openDatabase(QString::fromStdString(fx.dbPath)).ok());
+    window.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&window));
+    window.activateWindow();
+    QVERIFY(QTest::qWaitForWindowActive(&window));
+    auto* s = window.session();
+    QCOMPARE(s->currentStep(), 0);
+    QCOMPARE(window.labels()->setName(), std::string("mine"));
+    const SensorGroup group = s->selectedGroup();
+    // Right after start, whatever took the focus: the keys step and label.
+    QWidget* focus = QApplication::focusWidget();
+    QVERIFY(focus != nullptr);
+    QVERIFY2(qobject_cast<QLineEdit*>(focus) == nullptr, focus->metaObject()->className());
+    QTest::keyClick(focus, Qt::Key_Right);
+    QCOMPARE(s->currentStep(), 1);
+    QTest::keyClick(QApplication::focusWidget(), Qt::Key_2);
+    QCOMPARE(window.labels()->classAt(group, 1), std::optional(ContactClass::Wall));
+    QTest::keyClick(QApplication::focusWidget(), Qt::Key_Z, Qt::ControlModifier);
+    QVERIFY(!window.labels()->classAt(group, 1).has_value());
+    auto* filter = window.findChild<QLineEdit*>(QStringLiteral("runFilter"));
+    QVERIFY(filter != nullptr);
+    QVERIFY(filter->text().isEmpty());
+    // A table or a slider with the focus leaves the arrows and digits to the window.
+    QWidget* table = window.runList()->table();
+    QWidget* slider = window.findChild<QSlider*>(QStringLiteral("stepSlider"));
+    for (QWidget* w : {table, slider}) {
+      w->setFocus(Qt::MouseFocusReason);
+      QCOMPARE(QApplication::focusWidget(), w);
+      const std::int64_t before = s->currentStep();
+      QTest::keyClick(w, Qt::Key_Right);
+      QCOMPARE(s->currentStep(), before + 1);
+      QTest::keyClick(w, Qt::Key_Left, Qt::ShiftModifier);
+      QCOMPARE(s->currentStep(), std::max<std::int64_t>(0, before - 9));
+      QTest::keyClick(w, Qt::Key_Right, Qt::ShiftModifier);
+    }
+    // A text field being typed in keeps its keys, and Escape leaves it for the timelines.
+    const std::int64_t before = s->currentStep();
+    filter->setFocus(Qt::MouseFocusReason);
+    QTest::keyClicks(filter, QStringLiteral("room2"));
+    QTest::keyClick(filter, Qt::Key_Left);
+    QTest::keyClick(filter, Qt::Key_Backspace);
+    QCOMPARE(filter->text(), QStringLiteral("roo2"));  // the cursor moved before the 2: "m" went
+    QCOMPARE(s->currentStep(), before);
+    QVERIFY(!window.labels()->classAt(group, before).has_value());
+    QTest::keyClick(filter, Qt::Key_Escape);
+    QVERIFY(!filter->hasFocus());
+    QCOMPARE(QApplication::focusWidget(), static_cast<QWidget*>(window.timeline()));
+    QTest::keyClick(QApplication::focusWidget(), Qt::Key_Right);
+    QCOMPARE(s->currentStep(), before + 1);
+  }
+
+  // Regression: the cursor and "Apply to" were saved only on a clean quit; after kill -9 they
+  // came back reset.
+  void settingsSurviveAKilledSession() {
+    GuiFixture fx(700);
+    QProcess child;
+    QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
+    env.insert(QLatin1String(kChildDbVariable), QString::fromStdString(fx.dbPath));
+    env.insert(QLatin1String(kChildSettingsVariable), settingsDir_.path());
+    env.insert(QStringLiteral("QT_QPA_PLATFORM"), QStringLiteral("offscreen"));
+    child.setProcessEnvironment(env);
+    child.start(QCoreApplication::applicationFilePath(), {});
+    QVERIFY(child.waitForStarted());
+    QByteArray out;
+    QTRY_VERIFY_WITH_TIMEOUT((out += child.readAllStandardOutput()).contains('\n'), 20000);
+    QVERIFY2(out.startsWith("ready "), out.constData());
+    const qint64 step = out.mid(6).trimmed().toLongLong();
+    QCOMPARE(step, 700 - 1 - 11);
+    QTest::qWait(1500);  // the settings are written shortly after they change
+    QCOMPARE(child.state(), QProcess::Running);
+    ::kill(static_cast<pid_t>(child.processId()), SIGKILL);
+    QVERIFY(child.waitForFinished());
+    QCOMPARE(child.exitStatus(), QProcess::CrashExit);
+    MainWindow again;
+    QVERIFY(again.openDatabase(QString::fromStdString(fx.dbPath)).ok());
+    QCOMPARE(again.session()->currentStep(), step);
+    QCOMPARE(again.labelPanel()->groupsMode(),
+             tactile::gui::LabelPanelView::GroupsMode::Contacting);
+    QCOMPARE(again.labelPanel()->checkedGroups(), std::vector<SensorGroup>{SensorGroup::Back});
+  }
+
+  // Help > Keyboard Shortcuts lists exactly the shortcuts the window binds, and the Edit menu
+  // names the classes.
+  void theShortcutListEqualsTheBoundShortcuts() {
+    MainWindow window;
+    std::map<QString, QList<QKeySequence>> bound;
+    std::set<QString> keysSeen;
+    for (QAction* a : window.findChildren<QAction*>()) {
+      if (a->shortcuts().isEmpty()) continue;
+      QVERIFY2(!bound.count(a->objectName()), qPrintable(a->objectName()));
+      bound[a->objectName()] = a->shortcuts();
+      for (const QKeySequence& k : a->shortcuts()) {
+        // No key does two things.
+        QVERIFY2(keysSeen.insert(k.toString()).second, qPrintable(k.toString()));
+      }
+    }
+    std::map<QString, QList<QKeySequence>> listed;
+    for (const tactile::gui::ShortcutEntry& e : tactile::gui::shortcutTable())
+      listed[e.id] = e.keys;
+    for (const auto& [id, keys] : bound)
+      QVERIFY2(listed.count(id) == 1, qPrintable(id));
+    QCOMPARE(bound.size(), listed.size());
+    for (const auto& [id, keys] : listed) {
+      QVERIFY2(bound.count(id) == 1, qPrintable(id));
+      QCOMPARE(bound[id], keys);
+    }
+    // The dialog shows every entry's keys and text.
+    window.showKeyboardShortcuts();
+    auto* text = window.findChild<QTextBrowser*>(QStringLiteral("shortcutsText"));
+    QVERIFY(text != nullptr);
+    const QString shown = text->toPlainText();
+    for (const tactile::gui::ShortcutEntry& e : tactile::gui::shortcutTable()) {
+      QVERIFY2(shown.contains(e.text), qPrintable(e.text));
+      for (const QKeySequence& k : e.keys)
+        QVERIFY2(shown.contains(k.toString(QKeySequence::NativeText)), qPrintable(k.toString()));
+    }
+    QCOMPARE(window.findChild<QAction*>(QStringLiteral("labelAs2"))->text(),
+             QStringLiteral("Label as Wall"));
+    QCOMPARE(window.findChild<QAction*>(QStringLiteral("labelAs4"))->text(),
+             QStringLiteral("Label as Leaving wall"));
+  }
+
+  // Help > User Guide shows the embedded guide, pictures included, with no docs/ folder needed.
+  void helpShowsTheEmbeddedUserGuide() {
+    MainWindow window;
+    QAction* entry = nullptr;
+    for (QAction* a : window.findChildren<QAction*>())
+      if (a->text() == QStringLiteral("&User Guide")) entry = a;
+    QVERIFY(entry != nullptr);
+    entry->trigger();
+    auto* text = window.findChild<QTextBrowser*>(QStringLiteral("userGuideText"));
+    QVERIFY(text != nullptr);
+    QVERIFY(text->toPlainText().contains(QStringLiteral("User guide")));
+    QVERIFY(text->toPlainText().contains(QStringLiteral("Ctrl+Z")));
+    // Every picture the guide names is embedded and loads as an image.
+    QFile guide(QStringLiteral(":/guide/user-guide.md"));
+    QVERIFY(guide.open(QIODevice::ReadOnly));
+    const QString markdown = QString::fromUtf8(guide.readAll());
+    static const QRegularExpression picture(QStringLiteral("\\]\\((images/[^)]+\\.png)\\)"));
+    int pictures = 0;
+    for (auto it = picture.globalMatch(markdown); it.hasNext(); ++pictures) {
+      const QString path = QStringLiteral(":/guide/") + it.next().captured(1);
+      QVERIFY2(!QImage(path).isNull(), qPrintable(path));
+    }
+    QVERIFY(pictures >= 3);
+  }
+
+  // The annotator's name from the preferences is stored on every segment and exported.
+  void annotatorIsStoredOnSegmentsAndExported() {
+    GuiFixture fx(300);
+    QVERIFY(fx.workspace->database().createLabelSet("named").ok());
+    QSettings().setValue(tactile::gui::settings_keys::kAnnotator, QStringLiteral("ada"));
+    MainWindow window;
+    QVERIFY(window.openDatabase(QString::fromStdString(fx.dbPath)).ok());
+    window.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&window));
+    window.session()->setSelection(10, 20);
+    QTest::keyClick(QApplication::focusWidget(), Qt::Key_3);
+    auto set = fx.workspace->database().findLabelSet("named");
+    QVERIFY(set.ok());
+    auto stored = fx.workspace->database().segments(set->id);
+    QVERIFY(stored.ok());
+    QCOMPARE(stored->size(), std::size_t{1});
+    QCOMPARE(stored->front().annotator, std::string("ada"));
+    const QString csv = fx.dir.filePath(QStringLiteral("named.csv"));
+    QVERIFY(window.labels()->exportFile(csv.toStdString()).ok());
+    QFile f(csv);
+    QVERIFY(f.open(QIODevice::ReadOnly));
+    const QString text = QString::fromUtf8(f.readAll());
+    QVERIFY2(text.contains(QStringLiteral("annotator")) &&
+                 text.contains(QStringLiteral(",10,20,Corner,ada")),
+             qPrintable(text));
+    // A new name from the preferences applies to the next edit.
+    QSettings().setValue(tactile::gui::settings_keys::kAnnotator, QStringLiteral("bob"));
+    window.applyPreferences();
+    window.session()->setSelection(30, 40);
+    QTest::keyClick(QApplication::focusWidget(), Qt::Key_2);
+    stored = fx.workspace->database().segments(set->id);
+    QCOMPARE(stored->back().annotator, std::string("bob"));
+  }
+
+  void badDatabaseIsAnErrorAndChangesNothing() {
+    MainWindow window;
+    QTemporaryDir dir;
+    const QString missing = dir.filePath(QStringLiteral("absent.db"));
+    QVERIFY(!window.openDatabase(missing).ok());
+    QVERIFY(!QFileInfo::exists(missing));
+    QVERIFY(window.databasePath().isEmpty());
+  }
+
+ private:
+  QTemporaryDir settingsDir_;
+};
+
+int main(int argc, char** argv) {
+  if (qEnvironmentVariableIsSet(kChildDbVariable)) return runKilledSession(argc, argv);
+  QApplication app(argc, argv);
+  app.setAttribute(Qt::AA_Use96Dpi, true);
+  MainWindowTest test;
+  QTEST_SET_MAIN_SOURCE_PATH
+  return QTest::qExec(&test, argc, argv);
+}
 #include "main_window_test.moc"
