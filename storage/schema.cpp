@@ -247,6 +247,7 @@ std::optional<std::string> migrationProblem(Connection& connection, int targetVe
   // The schema alone (no rows), copied into a private in-memory database: tables first, then
   // what refers to them.
   Connection trial = Connection::open(":memory:", true);
+  registerChecksumFunctions(trial);  // the migrations to schema 5 compute checksums
   for (const char* type : {"table", "index", "view", "trigger"}) {
     Statement objects(connection,
                       "SELECT sql FROM sqlite_schema WHERE type = ? AND sql IS NOT NULL AND "

@@ -1,5 +1,7 @@
 #include "workspace/workspace.h"
 
+#include "base/text_rules.h"
+
 #include <algorithm>
 #include <array>
 #include <limits>
@@ -236,14 +238,22 @@ std::string defaultSweepName(const std::string& labelSet, const analysis::SweepG
     if (count > 1) varied += (varied.empty() ? "" : " x ") + text;
   if (varied.empty()) {  // one cell: its settings
     for (const auto& [count, text] : parts)
-      if (count == 1) varied += (varied.empty() ? "" : ", ") + text;
+      if (count == 1) varied += (varied.empty() ? "" : "; ") + text;
   }
   std::string name = labelSet + ": " + varied;
   if (!grid.groups.empty() && grid.groups.size() < static_cast<std::size_t>(kGroupCount)) {
     name += " (";
     for (std::size_t i = 0; i < grid.groups.size(); ++i)
-      name += (i > 0 ? "," : "") + std::string(groupInfo(grid.groups[i]).shortName);
+      name += (i > 0 ? " " : "") + std::string(groupInfo(grid.groups[i]).shortName);
     name += ")";
+  }
+  // Names follow the one name rule (no comma, at most kMaxNameBytes): a long one is cut at a
+  // character boundary.
+  if (name.size() > kMaxNameBytes) {
+    std::size_t cut = kMaxNameBytes - 3;
+    while (cut > 0 && (static_cast<unsigned char>(name[cut]) & 0xC0) == 0x80)
+      --cut;
+    name = name.substr(0, cut) + "...";
   }
   return name;
 }

@@ -9,6 +9,7 @@
 #include "app/gui/labels/label_model.h"
 #include "app/gui/runs/run_list_model.h"
 #include "app/gui/runs/run_session_model.h"
+#include "base/text_rules.h"
 #include "tests/app/gui_fixture.h"
 #include "workspace/workspace.h"
 
@@ -293,13 +294,16 @@ class GuiCoreTest : public QObject {
     g.groups = {SensorGroup::Front, SensorGroup::Left};
     const std::string a = tactile::workspace::defaultSweepName("truth", g);
     QCOMPARE(QString::fromStdString(a),
-             QStringLiteral("truth: order 1-16 x floor 0.01-0.03 (F,L)"));
+             QStringLiteral("truth: order 1-16 x floor 0.01-0.03 (F L)"));
+    // A default name follows the name rule: no comma, whatever the grid.
+    QVERIFY(!tactile::nameProblem(a).has_value());
     g.orders = {4};
     g.varianceFloors = {0.01};
     g.groups = {};
     const std::string b = tactile::workspace::defaultSweepName("truth", g);
     QVERIFY2(b != a && QString::fromStdString(b).contains(QStringLiteral("order 4")), b.c_str());
     QVERIFY(QString::fromStdString(b).contains(QStringLiteral("floor 0.01")));
+    QVERIFY2(!tactile::nameProblem(b).has_value(), b.c_str());
   }
 
   void runListShowsCoverageOfTheSet() {
