@@ -507,6 +507,20 @@ IntegrityReport RunDatabase::check() {
   IntegrityReport report;
   try {
     db::Connection& c = impl_->connection;
+    // Every count and checksum is read from one snapshot: another process importing at the same
+    // time must not make the runs' step counts and the steps table look inconsistent.
+    struct Snapshot {
+      db::Connection& c;
+      explicit Snapshot(db::Connection& connection) : c(connection) {
+        c.exec("SAVEPOINT tactile_check");
+      }
+      ~Snapshot() {
+        try {
+          c.exec("RELEASE tactile_check");
+        } catch (...) {  // nothing was written; the connection stays usable
+        }
+      }
+    } snapshot(c);
     report.schemaVersion = db::schemaVersion(c);
     {
       db::Statement s(c, "PRAGMA integrity_check");
