@@ -50,8 +50,8 @@
 #include "app/gui/runs/run_session_model.h"
 #include "app/gui/runs/step_controls_view.h"
 #include "app/gui/runs/timeline_view.h"
-#include "app/gui/user_guide_window.h"
 #include "app/gui/sim/sim_window.h"
+#include "app/gui/user_guide_window.h"
 #include "workspace/workspace.h"
 
 namespace tactile::gui {
