@@ -8,6 +8,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "base/error.h"
 #include "base/progress.h"
@@ -36,6 +37,10 @@ class Recorder {
   void setOutcome(RunOutcome outcome) {
     run_.setMeta("outcome", std::string(runOutcomeName(outcome)));
   }
+  // Extra (x_) columns (docs/file-formats.md): named before the first step; after each record()
+  // the caller appends that step's values, one per column, in column order.
+  void setExtraColumns(std::vector<std::string> names) { run_.extraColumns = std::move(names); }
+  std::vector<std::string>& extraValues() { return run_.extraValues; }
   const RunData& run() const { return run_; }
   // The run, its truth smoothed over the whole run (smoothTruth in sim/truth.h).
   RunData take() {

@@ -67,7 +67,7 @@ int main(int argc, char** argv) {
       QStringLiteral("model"),
       QApplication::translate("main",
                               "Show the stored model NAME's predictions under the labels (needs "
-                              "--run)."),
+                              "--run); with --simulate --mode autonomous: the navigator's model."),
       QStringLiteral("NAME"));
   // The simulator window (docs/workbench.md#simulator).
   const QCommandLineOption simulateOption(
@@ -88,7 +88,9 @@ int main(int argc, char** argv) {
   const QCommandLineOption seedOption(
       QStringLiteral("seed"),
       QApplication::translate("main",
-                              "With --simulate --mode experiment: the seed of start and goal."),
+                              "With --simulate --mode experiment: the seed of start and goal; "
+                              "--mode autonomous: the seed of the start (as tactile navigate "
+                              "--seeds)."),
       QStringLiteral("N"));
   const QCommandLineOption commandsOption(
       QStringLiteral("commands"),
@@ -158,7 +160,7 @@ int main(int argc, char** argv) {
     tactile::Status opened = window.openRun(parser.value(runOption));
     if (!opened) return fail(QString::fromStdString(opened.errorText()));
   }
-  if (parser.isSet(modelOption)) {
+  if (parser.isSet(modelOption) && !parser.isSet(simulateOption)) {
     tactile::Status shown = window.showPredictions(parser.value(modelOption));
     if (!shown) return fail(QString::fromStdString(shown.errorText()));
   }
@@ -207,8 +209,10 @@ int main(int argc, char** argv) {
     if (!started) return fail(QString::fromStdString(started.errorText()));
     // --step K with --simulate: the run takes K steps at once (screenshots of a run under way).
     if (parser.isSet(stepOption)) simWindow->session()->advance(static_cast<std::size_t>(step));
-    // Autonomous mode plays at once (Play pressed).
-    if (mode == QStringLiteral("autonomous")) simWindow->session()->setPaused(false);
+    // Autonomous mode plays at once (Play pressed); not for a screenshot, which shows the run
+    // after --step K steps exactly.
+    if (mode == QStringLiteral("autonomous") && !parser.isSet(screenshot))
+      simWindow->session()->setPaused(false);
     if (parser.isSet(dataOption)) simWindow->setDataPanelShown(true);
     if (parser.isSet(wholeOption)) simWindow->picture()->setWholeScene(true);
     shot = simWindow;

@@ -1,7 +1,9 @@
 // The simulator window: the key table gives the documented commands, M switches the picture
 // (never to the scene in experiment mode), the collision light turns red on a blocked step, Give
 // Up records `gave-up`, a run driven in the window equals `tactile simulate` replaying its
-// commands, and a window killed mid-run leaves the steps so far in the database.
+// commands, and a window killed mid-run leaves the steps so far in the database. Autonomous mode:
+// Play lets the navigator drive and records its strategy and status as `tactile navigate` does,
+// Step takes exactly one step, Pause stops.
 #include <QLabel>
 #include <QMessageBox>
 #include <QProcess>
@@ -15,11 +17,14 @@
 #include <chrono>
 #include <thread>
 
+#include "app/gui/runs/navigator_track_model.h"
 #include "app/gui/runs/run_session_model.h"
 #include "app/gui/sim/drive_keys.h"
 #include "app/gui/sim/experiment_panel.h"
 #include "app/gui/sim/sim_window.h"
 #include "app/gui/sim/status_picture_view.h"
+#include "nav/navigate.h"
+#include "nav/navigator.h"
 #include "run/run_csv.h"
 #include "sim/recorder.h"
 #include "sim/scene_source.h"
@@ -380,6 +385,141 @@ class SimWindowTest : public QObject {
     const RunData* run = s->run();
     QCOMPARE(run->v.back(), before.v);
     QCOMPARE(*run->meta("mode"), std::string("autonomous"));
+    window.giveUp();
+  }
+
+  void autonomousPlayRecordsTheNavigatorsColumnsAsNavigateDoes() {
+    QTemporaryDir dir;
+    const QString db = dir.filePath(QStringLiteral("nav.db"));
+    constexpr int kSeed = 1;
+    constexpr double kLimitSeconds = 80.0;  // 800 steps at most
+    std::size_t steps = 0;
+    {
+      SimWindow window(db);
+      window.setMode(SimMode::Autonomous);
+      window.setScene(QStringLiteral("chapter5"));
+      window.setNavigatorModel(QString());  // the navigator with the skin as a bumper
+      window.setSeed(kSeed);
+      window.setTimeLimitSeconds(kLimitSeconds);
+      window.setStepsPerSecond(0);
+      window.setDataPanelShown(true);
+      window.show();
+      QVERIFY(window.startRun().ok());
+      gui::SimSession* s = window.session();
+      QVERIFY(s->isPaused());  // waits for Play
+      auto* play = window.findChild<QPushButton*>(QStringLiteral("pauseButton"));
+      QVERIFY(play != nullptr);
+      QCOMPARE(play->text(), SimWindow::tr("Play"));
+      play->click();
+      QVERIFY(!s->isPaused());
+      QTRY_VERIFY_WITH_TIMEOUT(s->hasEnded(), 60000);
+      steps = s->stepCount();
+      QVERIFY(steps > 10);
+      // The data panel shows the navigator's strips for the run it recorded.
+      window.refreshDataPanel();
+      QVERIFY(window.navigatorTrack()->hasTrack());
+      QCOMPARE(window.navigatorTrack()->stepCount(), static_cast<std::int64_t>(steps));
+      auto* strips = window.findChild<QWidget*>(QStringLiteral("navigatorStrips"));
+      QVERIFY(strips != nullptr && strips->isVisibleTo(&window));
+    }
+
+    // The stored run: the x_ columns of `tactile navigate`, value for value, and the same route:
+    // the navigator run by nav::navigate from the same seed's start.
+    auto ws = openWorkspace(db);
+    auto runs = ws->database().listRuns();
+    QVERIFY(runs.ok());
+    QCOMPARE(runs->size(), std::size_t{1});
+    auto stored = ws->database().loadRun(runs->front().id);
+    QVERIFY(stored.ok());
+    QCOMPARE(stored->stepCount(), steps);
+    std::vector<std::string> expectedColumns{"x_strategy", "x_status"};
+    for (const GroupInfo& g : kSensorGroups)
+      expectedColumns.push_back("x_status_" + std::string(g.shortName));
+    QVERIFY(stored->extraColumns == expectedColumns);
+    QCOMPARE(*stored->meta("status_source"), std::string("bumper"));
+    QCOMPARE(*stored->meta("seed"), std::to_string(kSeed));
+
+    auto scene = sim::loadScene("chapter5");
+    QVERIFY(scene.ok());
+    auto world = std::make_shared<const sim::World>(std::move(scene.value()));
+    nav::NavigatorConfig config;
+    config.source = nav::StatusSource::Bumper;
+    nav::NavigateOptions options;
+    options.maxSteps = static_cast<std::size_t>(kLimitSeconds / 0.1 + 0.5);
+    options.seed = kSeed;
+    const Pose2d start = nav::drawStart(world, kSeed);
+    auto reference =
+        nav::navigate(world, "chapter5", start, world->scene().goal, config, options, true);
+    QVERIFY(reference.ok());
+    QCOMPARE(std::string(runOutcomeName(reference->outcome)), runs->front().outcome);
+    QCOMPARE(reference->run.stepCount(), steps);
+    QVERIFY(reference->run.extraColumns == stored->extraColumns);
+    QVERIFY(reference->run.extraValues == stored->extraValues);
+    QVERIFY(test_support::bitEqual(reference->run.x, stored->x));
+    QVERIFY(test_support::bitEqual(reference->run.theta, stored->theta));
+    QVERIFY(test_support::bitEqual(reference->run.v, stored->v));
+    QVERIFY(test_support::bitEqual(reference->run.omega, stored->omega));
+    // Every cell is a strategy key or a status as nav/ spells them.
+    for (std::size_t k = 0; k < steps; ++k) {
+      const std::size_t row = k * expectedColumns.size();
+      QVERIFY(nav::parseStrategyKey(stored->extraValues[row]).has_value());
+      for (std::size_t c = 1; c < expectedColumns.size(); ++c)
+        QVERIFY(nav::parseStatusText(stored->extraValues[row + c]).has_value());
+    }
+    // The workbench reads them as the navigator's track.
+    gui::RunSession session;
+    session.setWorkspace(ws.get());
+    gui::NavigatorTrackModel track(&session);
+    QVERIFY(session.open(runs->front().name));
+    QVERIFY(track.hasTrack());
+    for (std::size_t k = 0; k < steps; k += 37) {
+      const auto strategy = track.strategyAt(static_cast<std::int64_t>(k));
+      QVERIFY(strategy.has_value());
+      QCOMPARE(std::string(nav::strategyKey(*strategy)),
+               stored->extraValues[k * expectedColumns.size()]);
+    }
+    session.setWorkspace(nullptr);
+  }
+
+  void autonomousStepByStepTakesOneStepAndPauseStops() {
+    QTemporaryDir dir;
+    SimWindow window(dir.filePath(QStringLiteral("steps.db")));
+    window.setMode(SimMode::Autonomous);
+    window.setScene(QStringLiteral("chapter5"));
+    window.setNavigatorModel(QString());
+    window.setStepsPerSecond(100);
+    window.show();
+    QVERIFY(window.startRun().ok());
+    gui::SimSession* s = window.session();
+    const auto* navigator = dynamic_cast<const nav::Navigator*>(s->setup().driver.get());
+    QVERIFY(navigator != nullptr);
+    QVERIFY(s->isPaused());
+    // N and the Step button: exactly one step each, and the run stays paused.
+    for (std::size_t k = 1; k <= 3; ++k) {
+      QTest::keyClick(&window, Qt::Key_N);
+      QCOMPARE(s->stepCount(), k);
+      QVERIFY(s->isPaused());
+    }
+    window.findChild<QPushButton*>(QStringLiteral("stepButton"))->click();
+    QCOMPARE(s->stepCount(), std::size_t{4});
+    QTest::qWait(150);
+    QCOMPARE(s->stepCount(), std::size_t{4});  // nothing moves while paused
+    // The panel marks the navigator's strategy and shows its status.
+    QCOMPARE(window.experimentPanel()->markedStrategyRow(),
+             static_cast<int>(navigator->strategy()));
+    QCOMPARE(window.experimentPanel()->statusText(0),
+             QString::fromStdString(nav::statusText(navigator->integratedStatus())));
+    // P plays, P pauses: no step after the pause.
+    QTest::keyClick(&window, Qt::Key_P);
+    QVERIFY(!s->isPaused());
+    QTRY_VERIFY_WITH_TIMEOUT(s->stepCount() >= 20, 10000);
+    QTest::keyClick(&window, Qt::Key_P);
+    QVERIFY(s->isPaused());
+    const std::size_t paused = s->stepCount();
+    QTest::qWait(300);
+    QCOMPARE(s->stepCount(), paused);
+    QCOMPARE(window.experimentPanel()->markedStrategyRow(),
+             static_cast<int>(navigator->strategy()));
     window.giveUp();
   }
 

@@ -27,7 +27,11 @@ ExperimentPanel::ExperimentPanel(SimSession* session, QWidget* parent)
   strategies_->setSelectionMode(QAbstractItemView::NoSelection);
   for (nav::Strategy s : nav::kStrategies)
     strategies_->addItem(text(nav::strategyTitle(s)));
-  strategies_->setMaximumHeight(strategies_->sizeHintForRow(0) * nav::kStrategyCount + 8);
+  // Every strategy in view at once: the list never scrolls.
+  strategies_->setVerticalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+  strategies_->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+  strategies_->setFixedHeight(strategies_->sizeHintForRow(0) * nav::kStrategyCount +
+                              2 * strategies_->frameWidth() + 2);
   auto* grid = new QGridLayout;
   grid->addWidget(new QLabel(tr("Status")), 0, 0);
   status_[0] = new QLabel;

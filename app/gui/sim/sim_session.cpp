@@ -6,6 +6,9 @@
 #include <cmath>
 #include <utility>
 
+#include "app/gui/sim/navigator_record.h"
+#include "nav/navigate.h"
+#include "nav/navigator.h"
 #include "run/builtin_scenes.h"
 #include "sim/scene_source.h"
 #include "sim/start_goal.h"
@@ -23,6 +26,18 @@ QString simModeName(SimMode mode) {
       return QStringLiteral("experiment");
     case SimMode::Autonomous:
       return QStringLiteral("autonomous");
+  }
+  return {};
+}
+
+QString simModeTitle(SimMode mode) {
+  switch (mode) {
+    case SimMode::Practice:
+      return SimSession::tr("practice");
+    case SimMode::Experiment:
+      return SimSession::tr("experiment");
+    case SimMode::Autonomous:
+      return SimSession::tr("autonomous");
   }
   return {};
 }
@@ -91,6 +106,11 @@ Status SimSession::start(const SimSetup& setup) {
     if (!drawn) return drawn.error();
     scene = std::move(drawn.value());
   }
+  if (setup.mode == SimMode::Autonomous) {
+    // The navigator starts where `tactile navigate --seeds SEED` starts it (nav::drawStart), so a
+    // seed tried on the command line can be watched here.
+    scene.start = nav::drawStart(std::make_shared<const sim::World>(scene), setup.seed);
+  }
   // Built-in scenes and random:N:SEED are recorded by what was typed, files by their scene name
   // (as `tactile simulate` records them); the scene's JSON is stored with the run either way.
   const bool byName = spec.starts_with("random:") || builtinSceneJson(spec).has_value();
@@ -119,7 +139,16 @@ Status SimSession::start(const SimSetup& setup) {
   sim::Recorder& recorder = loop->recorder();
   recorder.setMeta("mode", simModeName(setup.mode).toStdString());
   recorder.setMeta("driver", driverName);
-  if (setup.mode == SimMode::Experiment) recorder.setMeta("seed", std::to_string(setup.seed));
+  if (setup.mode != SimMode::Practice) recorder.setMeta("seed", std::to_string(setup.seed));
+  const auto* navigator = setup.mode == SimMode::Autonomous
+                              ? dynamic_cast<const nav::Navigator*>(setup.driver.get())
+                              : nullptr;
+  if (navigator != nullptr) {
+    // The navigator's state per step, as `tactile navigate` records it.
+    recorder.setMeta("status_source",
+                     std::string(nav::statusSourceName(navigator->config().source)));
+    recorder.setExtraColumns(navigatorColumns());
+  }
   if (setup.mode != SimMode::Practice) {
     recorder.setMeta("time_limit", sim::formatNumber(setup.timeLimitSeconds));
   }
@@ -163,6 +192,7 @@ Status SimSession::start(const SimSetup& setup) {
 
   timer_.stop();
   setup_ = setup;
+  navigator_ = navigator;
   loop_ = std::move(loop);
   recording_ = std::move(recording);
   finished_ = RunData();
@@ -234,7 +264,7 @@ std::size_t SimSession::advance(std::size_t steps) {
   std::size_t taken = 0;
   while (taken < steps && loop_ && !hasFinished_ && stepInternal())
     ++taken;
-  flush(false);
+  flush(true);
   emit stepped();
   return taken;
 }
@@ -262,7 +292,9 @@ bool SimSession::stepInternal() {
   std::optional<RunOutcome> ended;
   if (setup_.mode == SimMode::Autonomous) {
     ended = loop_->step(*setup_.driver);
-    command_ = {loop_->recorder().run().v.back(), loop_->recorder().run().omega.back()};
+    sim::Recorder& recorder = loop_->recorder();
+    if (navigator_ != nullptr) appendNavigatorState(*navigator_, recorder.extraValues());
+    command_ = {recorder.run().v.back(), recorder.run().omega.back()};
   } else {
     const bool scripted = scriptPos_ < script_.size();
     if (scripted) command_ = script_[scriptPos_++];

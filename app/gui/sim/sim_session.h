@@ -7,6 +7,11 @@
 // and goal from a seed, hides the scene, has a time limit (simulated time: steps x dt) and needs
 // the subject's name. The outcome (`success`, `gave-up`, `timeout`) and the subject go into the
 // run's metadata together with `mode`, `driver` and, in experiment mode, `seed` and `time_limit`.
+//
+// Autonomous mode: a driver (the chapter-5 navigator) drives from the start `tactile navigate
+// --seeds SEED` uses (nav::drawStart), under the time limit; `seed`, `time_limit` and, for the
+// navigator, `status_source` are recorded, and every step carries the navigator's strategy and
+// status as the x_ columns `tactile navigate` writes (navigator_record.h).
 #pragma once
 
 #include <QElapsedTimer>
@@ -30,17 +35,22 @@ class Workspace;
 class RunRecording;
 }  // namespace tactile::workspace
 
+namespace tactile::nav {
+class Navigator;
+}
+
 namespace tactile::gui {
 
 enum class SimMode { Practice, Experiment, Autonomous };
-QString simModeName(SimMode mode);  // "practice", "experiment", "autonomous" (metadata values)
+QString simModeName(SimMode mode);   // "practice", "experiment", "autonomous" (metadata values)
+QString simModeTitle(SimMode mode);  // the same, translated (what the window shows)
 
 struct SimSetup {
   SimMode mode = SimMode::Practice;
   // A built-in scene name, a scene JSON file or random:N:SEED.
   QString scene = QStringLiteral("practice");
-  QString subject;                  // needed in experiment mode; recorded as `subject`
-  std::uint64_t seed = 1;           // experiment mode: start and goal are drawn from it
+  QString subject;         // needed in experiment mode; recorded as `subject`
+  std::uint64_t seed = 1;  // experiment mode: start and goal are drawn from it; autonomous: start
   double timeLimitSeconds = 600.0;  // experiment mode, simulated seconds
   double dtSeconds = 0.1;
   // Autonomous mode: the driver (its name() is recorded as `driver` and `subject`).
@@ -94,7 +104,8 @@ class SimSession : public QObject {
   void setPaused(bool paused);
   // One step now (paused or not); false when no run goes on.
   bool stepOnce();
-  // Up to `steps` steps now, without the clock (tests, benchmarks); returns the steps taken.
+  // Up to `steps` steps now, without the clock, then stores them (tests, screenshots); returns
+  // the steps taken.
   std::size_t advance(std::size_t steps);
 
   // ---- ending ----
@@ -138,6 +149,7 @@ class SimSession : public QObject {
 
   workspace::Workspace* workspace_ = nullptr;
   SimSetup setup_;
+  const nav::Navigator* navigator_ = nullptr;  // setup_.driver when it is the navigator
   std::unique_ptr<sim::RunLoop> loop_;
   std::unique_ptr<workspace::RunRecording> recording_;
   RunData finished_;  // the whole run once it has ended

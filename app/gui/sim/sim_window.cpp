@@ -22,6 +22,8 @@
 #include <QTimer>
 #include <QVBoxLayout>
 
+#include "app/gui/runs/navigator_track_model.h"
+#include "app/gui/runs/navigator_view.h"
 #include "app/gui/runs/run_session_model.h"
 #include "app/gui/runs/timeline_view.h"
 #include "app/gui/sim/drive_keys.h"
@@ -164,6 +166,10 @@ void SimWindow::buildUi() {
   form->addRow(tr("Scene"), sceneLabel_);
   form->addRow(tr("Subject"), subjectEdit_);
   form->addRow(tr("Seed (start, goal)"), seedBox_);
+  seedBox_->setObjectName(QStringLiteral("seedBox"));
+  seedBox_->setToolTip(
+      tr("Experiment mode: the seed of start and goal. Autonomous mode: the seed "
+         "of the start, as in tactile navigate --seeds."));
   form->addRow(tr("Time limit"), limitBox_);
   form->addRow(tr("Step rate"), rateBox_);
   form->addRow(tr("Navigator model"), modelBox_);
@@ -227,6 +233,10 @@ void SimWindow::buildUi() {
   dataLayout->setContentsMargins(0, 0, 0, 0);
   dataLayout->addWidget(new QLabel(tr("The run so far")));
   dataLayout->addWidget(timeline_, 1);
+  // The navigator's strips under the timelines, for autonomous runs (their x_ columns).
+  navTrack_ = new NavigatorTrackModel(dataSession_, this);
+  navStrips_ = new NavigatorStripView(dataSession_, navTrack_, timeline_, dataPanel_);
+  dataLayout->addWidget(navStrips_);
   dataPanel_->hide();
 
   splitter_ = new QSplitter(Qt::Vertical);
@@ -372,9 +382,16 @@ Status SimWindow::startRun() {
   shownSteps_ = 0;
   shownFinished_ = false;
   picture_->setFocus();
-  statusBar()->showMessage(
-      tr("Run %1 ready: drive with the arrow keys and W, A, S, D (Help > Keys)")
-          .arg(session_->runName().isEmpty() ? tr("(not stored)") : session_->runName()));
+  const QString name = session_->runName().isEmpty() ? tr("(not stored)") : session_->runName();
+  if (setup.mode == SimMode::Autonomous) {
+    // The person watches: the whole scene, the route so far, the experiment panel.
+    picture_->setWholeScene(true);
+    statusBar()->showMessage(
+        tr("Run %1 ready: Play (P) lets the navigator drive, Step (N) takes one step").arg(name));
+  } else {
+    statusBar()->showMessage(
+        tr("Run %1 ready: drive with the arrow keys and W, A, S, D (Help > Keys)").arg(name));
+  }
   return Status::success();
 }
 
@@ -489,7 +506,7 @@ void SimWindow::updateState() {
     state = tr("No run yet.");
   } else {
     state = tr("%1 mode, scene %2, step %3 (%4 s)")
-                .arg(simModeName(session_->mode()), session_->setup().scene)
+                .arg(simModeTitle(session_->mode()), session_->setup().scene)
                 .arg(session_->stepCount())
                 .arg(session_->elapsedSeconds(), 0, 'f', 1);
     if (const auto left = session_->timeLeftSeconds())
@@ -501,6 +518,8 @@ void SimWindow::updateState() {
       state += tr("\nnot stored (no database)");
     if (const auto outcome = session_->outcome())
       state += tr("\noutcome: %1").arg(outcomeText(*outcome));
+    else if (session_->isPaused() && session_->mode() == SimMode::Autonomous)
+      state += tr("\npaused: Play (P) lets the navigator drive, Step (N) takes one step");
     else if (session_->isPaused())
       state += tr("\npaused: a drive key or Go starts the clock");
   }
@@ -516,7 +535,7 @@ void SimWindow::updateControls() {
   openButton_->setEnabled(!session_->runName().isEmpty() && !dbPath_.isEmpty());
   const bool experiment = mode() == SimMode::Experiment;
   const bool autonomous = mode() == SimMode::Autonomous;
-  seedBox_->setEnabled(experiment);
+  seedBox_->setEnabled(experiment || autonomous);
   limitBox_->setEnabled(experiment || autonomous);
   modelBox_->setEnabled(autonomous);
   experimentBox_->setVisible(autonomous);

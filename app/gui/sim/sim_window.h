@@ -38,6 +38,8 @@ class SignalBarsView;
 class StatusPictureView;
 class TimelineView;
 class ExperimentPanel;
+class NavigatorStripView;
+class NavigatorTrackModel;
 
 class SimWindow : public QMainWindow {
   Q_OBJECT
@@ -56,6 +58,8 @@ class SimWindow : public QMainWindow {
   StatusPictureView* picture() const { return picture_; }
   SignalBarsView* bars() const { return bars_; }
   TimelineView* timeline() const { return timeline_; }
+  // The data panel's navigator strips (shown for autonomous runs).
+  NavigatorTrackModel* navigatorTrack() const { return navTrack_; }
   RunSession* dataSession() const { return dataSession_; }
 
   // ---- the run controls ----
@@ -124,6 +128,8 @@ class SimWindow : public QMainWindow {
   StatusPictureView* picture_ = nullptr;
   SignalBarsView* bars_ = nullptr;
   TimelineView* timeline_ = nullptr;
+  NavigatorTrackModel* navTrack_ = nullptr;
+  NavigatorStripView* navStrips_ = nullptr;
   QWidget* dataPanel_ = nullptr;
   QSplitter* splitter_ = nullptr;
   QLabel* lightLabel_ = nullptr;
