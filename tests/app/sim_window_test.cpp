@@ -421,6 +421,7 @@ class SimWindowTest : public QObject {
       QCOMPARE(window.navigatorTrack()->stepCount(), static_cast<std::int64_t>(steps));
       auto* strips = window.findChild<QWidget*>(QStringLiteral("navigatorStrips"));
       QVERIFY(strips != nullptr && strips->isVisibleTo(&window));
+      QVERIFY(strips->height() >= 60);  // all six rows, not squeezed away by the timelines
     }
 
     // The stored run: the x_ columns of `tactile navigate`, value for value, and the same route:

@@ -236,6 +236,7 @@ void SimWindow::buildUi() {
   // The navigator's strips under the timelines, for autonomous runs (their x_ columns).
   navTrack_ = new NavigatorTrackModel(dataSession_, this);
   navStrips_ = new NavigatorStripView(dataSession_, navTrack_, timeline_, dataPanel_);
+  navStrips_->setFixedHeight(navStrips_->sizeHint().height());
   dataLayout->addWidget(navStrips_);
   dataPanel_->hide();
 
