@@ -30,7 +30,9 @@ namespace {
 
 using tactile::gui::SimWindow;
 
-constexpr std::size_t kSteps = 3000;
+// Steps of the baseline; the window's runs take state.range(0) steps, long enough for the data
+// panel to re-read the run several times (it does every 250 ms while it is open).
+constexpr std::size_t kSteps = 20000;
 // A slow circle in room1: contacts, blocked steps and free driving.
 constexpr tactile::sim::Command kDrive{60.0, 0.15};
 
@@ -44,13 +46,17 @@ void BM_SimWindowStepsDataPanelOpen(benchmark::State& state) {
   window.show();
   std::size_t total = 0;
   double seconds = 0.0;
+  int refreshes = 0;
+  QObject::connect(window.dataSession(), &tactile::gui::RunSession::runOpened, &window,
+                   [&refreshes] { ++refreshes; });
   for (auto _ : state) {
     if (!window.startRun().ok()) {
       state.SkipWithError("cannot start a run");
       return;
     }
     tactile::gui::SimSession* s = window.session();
-    s->setCommandScript(std::vector<tactile::sim::Command>(kSteps, kDrive));
+    s->setCommandScript(
+        std::vector<tactile::sim::Command>(static_cast<std::size_t>(state.range(0)), kDrive));
     QElapsedTimer clock;
     clock.start();
     s->setPaused(false);
@@ -62,6 +68,7 @@ void BM_SimWindowStepsDataPanelOpen(benchmark::State& state) {
   }
   state.counters["steps_per_s"] = seconds > 0.0 ? static_cast<double>(total) / seconds : 0.0;
   state.counters["data_panel_steps"] = static_cast<double>(window.dataSession()->stepCount());
+  state.counters["data_panel_reads"] = refreshes;
 }
 
 void BM_BaselineRunLoopAlone(benchmark::State& state) {
@@ -96,13 +103,16 @@ void BM_KeyToRobotMotion(benchmark::State& state) {
     return;
   }
   QCoreApplication::processEvents();
-  const int keys[] = {Qt::Key_W, Qt::Key_A, Qt::Key_S, Qt::Key_D};
+  // Forward at 20 units/s, then turn left and straight again by turns: every key moves the robot
+  // (or is blocked by a wall).
+  QTest::keyClick(&window, Qt::Key_Up);
+  const int keys[] = {Qt::Key_A, Qt::Key_D};
   int i = 0;
   for (auto _ : state) {
     const double xBefore = window.session()->simulator()->pose().x;
     const double thetaBefore = window.session()->simulator()->pose().theta;
     // The key event, then the paint the event loop would do next.
-    QTest::keyClick(&window, static_cast<Qt::Key>(keys[i++ % 4]));
+    QTest::keyClick(&window, static_cast<Qt::Key>(keys[i++ % 2]));
     window.picture()->repaint();
     const auto& pose = window.session()->simulator()->pose();
     if (pose.x == xBefore && pose.theta == thetaBefore && !window.session()->simulator()->blocked())
@@ -111,6 +121,8 @@ void BM_KeyToRobotMotion(benchmark::State& state) {
 }
 
 BENCHMARK(BM_SimWindowStepsDataPanelOpen)
+    ->Arg(20000)
+    ->Arg(100000)
     ->Unit(benchmark::kMillisecond)
     ->Iterations(1)
     ->UseRealTime();
