@@ -509,7 +509,16 @@ class SimWindowTest : public QObject {
     QCOMPARE(window.experimentPanel()->markedStrategyRow(),
              static_cast<int>(navigator->strategy()));
     QCOMPARE(window.experimentPanel()->statusText(0),
-             QString::fromStdString(nav::statusText(navigator->integratedStatus())));
+             gui::ExperimentPanel::statusTitle(navigator->integratedStatus()));
+    for (const GroupInfo& g : kSensorGroups) {
+      const auto i = static_cast<std::size_t>(groupIndex(g.group));
+      QCOMPARE(window.experimentPanel()->statusText(1 + static_cast<int>(i)),
+               gui::ExperimentPanel::statusTitle(navigator->groupStatus()[i]));
+    }
+    QCOMPARE(gui::ExperimentPanel::statusTitle({nav::StatusKind::Hole, 109.6}),
+             QStringLiteral("Hole, 110 wide"));
+    QCOMPARE(gui::ExperimentPanel::strategyTitle(nav::Strategy::FollowWall),
+             QStringLiteral("Follow Wall"));
     // P plays, P pauses: no step after the pause.
     QTest::keyClick(&window, Qt::Key_P);
     QVERIFY(!s->isPaused());

@@ -6,6 +6,7 @@
 #include <QListWidget>
 #include <QVBoxLayout>
 
+#include "app/gui/common/plot_style.h"
 #include "app/gui/sim/sim_session.h"
 #include "nav/navigator.h"
 
@@ -18,6 +19,46 @@ QString text(std::string_view s) {
 
 }  // namespace
 
+QString ExperimentPanel::strategyTitle(nav::Strategy strategy) {
+  switch (strategy) {
+    case nav::Strategy::GoStraight:
+      return tr("Go Straight");
+    case nav::Strategy::HeadToDestination:
+      return tr("Head to Destination");
+    case nav::Strategy::CheckContact:
+      return tr("Check Contact");
+    case nav::Strategy::FollowWall:
+      return tr("Follow Wall");
+    case nav::Strategy::MoveThroughWall:
+      return tr("Move through Wall");
+    case nav::Strategy::RightUTurn:
+      return tr("Right U Turn");
+    case nav::Strategy::LeftUTurn:
+      return tr("Left U Turn");
+  }
+  return text(nav::strategyTitle(strategy));
+}
+
+QString ExperimentPanel::statusTitle(const nav::ContactStatus& status) {
+  switch (status.kind) {
+    case nav::StatusKind::NoContact:
+      return className(ContactClass::NoContact);
+    case nav::StatusKind::Wall:
+      return className(ContactClass::Wall);
+    case nav::StatusKind::Corner:
+      return className(ContactClass::Corner);
+    case nav::StatusKind::LeavingWall:
+      return className(ContactClass::LeavingWall);
+    case nav::StatusKind::DeadPath:
+      return className(ContactClass::DeadPath);
+    case nav::StatusKind::Hole:
+      return tr("Hole, %1 wide").arg(qRound(status.holeWidthUnits));
+    case nav::StatusKind::Undecided:
+      return tr("Undecided");
+  }
+  return QString::fromStdString(nav::statusText(status));
+}
+
 ExperimentPanel::ExperimentPanel(SimSession* session, QWidget* parent)
     : QWidget(parent), session_(session) {
   setObjectName(QStringLiteral("experimentPanel"));
@@ -26,7 +67,7 @@ ExperimentPanel::ExperimentPanel(SimSession* session, QWidget* parent)
   strategies_->setFocusPolicy(Qt::NoFocus);
   strategies_->setSelectionMode(QAbstractItemView::NoSelection);
   for (nav::Strategy s : nav::kStrategies)
-    strategies_->addItem(text(nav::strategyTitle(s)));
+    strategies_->addItem(strategyTitle(s));
   // Every strategy in view at once: the list never scrolls.
   strategies_->setVerticalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
   strategies_->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
@@ -70,17 +111,17 @@ void ExperimentPanel::refresh() {
     item->setFont(f);
     item->setBackground(current ? QColor(255, 214, 120) : QColor(Qt::transparent));
     item->setText((current ? QStringLiteral("\u25b6 ") : QStringLiteral("   ")) +
-                  text(nav::strategyTitle(nav::kStrategies[static_cast<std::size_t>(row)])));
+                  strategyTitle(nav::kStrategies[static_cast<std::size_t>(row)]));
   }
   if (n == nullptr || session_->stepCount() == 0) {
     for (QLabel* l : status_)
       l->setText(QStringLiteral("-"));
     return;
   }
-  status_[0]->setText(QString::fromStdString(nav::statusText(n->integratedStatus())));
+  status_[0]->setText(statusTitle(n->integratedStatus()));
   const auto& groups = n->groupStatus();
   for (std::size_t g = 0; g < groups.size(); ++g)
-    status_[1 + g]->setText(QString::fromStdString(nav::statusText(groups[g])));
+    status_[1 + g]->setText(statusTitle(groups[g]));
 }
 
 int ExperimentPanel::markedStrategyRow() const {

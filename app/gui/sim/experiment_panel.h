@@ -7,14 +7,11 @@
 
 #include <array>
 
+#include "nav/navigator.h"
 #include "run/sensor_layout.h"
 
 class QLabel;
 class QListWidget;
-
-namespace tactile::nav {
-class Navigator;
-}
 
 namespace tactile::gui {
 
@@ -30,6 +27,11 @@ class ExperimentPanel : public QWidget {
   // F, FLC, L, RLC, B, RRC, R, FRC), for tests.
   int markedStrategyRow() const;
   QString statusText(int index) const;
+
+  // What the panel shows for a strategy and a status, translated ("Follow Wall", "Wall",
+  // "Hole, 110 wide", ...).
+  static QString strategyTitle(nav::Strategy strategy);
+  static QString statusTitle(const nav::ContactStatus& status);
 
  private:
   void refresh();
