@@ -276,10 +276,6 @@
         <translation>Die Ergebnisse des gespeicherten Sweeps ID öffnen (braucht --db).</translation>
     </message>
     <message>
-        <source>Show the stored model NAME&apos;s predictions under the labels (needs --run).</source>
-        <translation>Die Vorhersagen des gespeicherten Modells NAME unter den Labels zeigen (braucht --run).</translation>
-    </message>
-    <message>
         <source>--sweep needs --db</source>
         <translation>--sweep braucht --db</translation>
     </message>
@@ -302,10 +298,6 @@
     <message>
         <source>With --simulate: the subject&apos;s name.</source>
         <translation>Mit --simulate: der Name des Probanden.</translation>
-    </message>
-    <message>
-        <source>With --simulate --mode experiment: the seed of start and goal.</source>
-        <translation>Mit --simulate --mode experiment: der Seed für Start und Ziel.</translation>
     </message>
     <message>
         <source>With --simulate: start a run and replay the v, omega commands of the run file FILE, one a step.</source>
@@ -339,6 +331,14 @@
         <source>--rate needs a number &gt;= 0, got &apos;%1&apos;</source>
         <translation>--rate braucht eine Zahl &gt;= 0, erhalten: „%1“</translation>
     </message>
+    <message>
+        <source>Show the stored model NAME&apos;s predictions under the labels (needs --run); with --simulate --mode autonomous: the navigator&apos;s model.</source>
+        <translation>Die Vorhersagen des gespeicherten Modells NAME unter den Labels zeigen (braucht --run); mit --simulate --mode autonomous: das Modell des Navigators.</translation>
+    </message>
+    <message>
+        <source>With --simulate --mode experiment: the seed of start and goal; --mode autonomous: the seed of the start (as tactile navigate --seeds).</source>
+        <translation>Mit --simulate --mode experiment: der Seed für Start und Ziel; --mode autonomous: der Seed des Starts (wie bei tactile navigate --seeds).</translation>
+    </message>
 </context>
 <context>
     <name>tactile::gui::ExperimentPanel</name>
@@ -349,6 +349,42 @@
     <message>
         <source>Strategies</source>
         <translation>Strategien</translation>
+    </message>
+    <message>
+        <source>Go Straight</source>
+        <translation>Geradeaus fahren</translation>
+    </message>
+    <message>
+        <source>Head to Destination</source>
+        <translation>Zum Ziel fahren</translation>
+    </message>
+    <message>
+        <source>Check Contact</source>
+        <translation>Kontakt prüfen</translation>
+    </message>
+    <message>
+        <source>Follow Wall</source>
+        <translation>Wand folgen</translation>
+    </message>
+    <message>
+        <source>Move through Wall</source>
+        <translation>Durch die Wand fahren</translation>
+    </message>
+    <message>
+        <source>Right U Turn</source>
+        <translation>Rechtswende</translation>
+    </message>
+    <message>
+        <source>Left U Turn</source>
+        <translation>Linkswende</translation>
+    </message>
+    <message>
+        <source>Hole, %1 wide</source>
+        <translation>Lücke, %1 breit</translation>
+    </message>
+    <message>
+        <source>Undecided</source>
+        <translation>Unentschieden</translation>
     </message>
 </context>
 <context>
@@ -1238,6 +1274,18 @@ importiert aus %2</translation>
         <source>The time limit must be positive.</source>
         <translation>Das Zeitlimit muss positiv sein.</translation>
     </message>
+    <message>
+        <source>practice</source>
+        <translation>Übung</translation>
+    </message>
+    <message>
+        <source>experiment</source>
+        <translation>Experiment</translation>
+    </message>
+    <message>
+        <source>autonomous</source>
+        <translation>autonom</translation>
+    </message>
 </context>
 <context>
     <name>tactile::gui::SimWindow</name>
@@ -1528,6 +1576,20 @@ pausiert: eine Fahrtaste oder „Los“ startet die Uhr</translation>
     <message>
         <source>Simulator Keys</source>
         <translation>Tasten des Simulators</translation>
+    </message>
+    <message>
+        <source>Experiment mode: the seed of start and goal. Autonomous mode: the seed of the start, as in tactile navigate --seeds.</source>
+        <translation>Experimentmodus: der Seed für Start und Ziel. Autonomer Modus: der Seed des Starts, wie bei tactile navigate --seeds.</translation>
+    </message>
+    <message>
+        <source>Run %1 ready: Play (P) lets the navigator drive, Step (N) takes one step</source>
+        <translation>Lauf %1 bereit: „Abspielen“ (P) lässt den Navigator fahren, „Schritt“ (N) macht einen Schritt</translation>
+    </message>
+    <message>
+        <source>
+paused: Play (P) lets the navigator drive, Step (N) takes one step</source>
+        <translation>
+pausiert: „Abspielen“ (P) lässt den Navigator fahren, „Schritt“ (N) macht einen Schritt</translation>
     </message>
 </context>
 <context>

@@ -264,10 +264,6 @@
         <translation>打开已保存的扫描 ID 的结果（需要 --db）。</translation>
     </message>
     <message>
-        <source>Show the stored model NAME&apos;s predictions under the labels (needs --run).</source>
-        <translation>在标签下方显示已保存模型 NAME 的预测（需要 --run）。</translation>
-    </message>
-    <message>
         <source>--step needs a step number, got &apos;%1&apos;</source>
         <translation>--step 需要一个步数，收到的是“%1”</translation>
     </message>
@@ -304,10 +300,6 @@
         <translation>与 --simulate 一起使用：受试者姓名。</translation>
     </message>
     <message>
-        <source>With --simulate --mode experiment: the seed of start and goal.</source>
-        <translation>与 --simulate --mode experiment 一起使用：起点和目标的随机种子。</translation>
-    </message>
-    <message>
         <source>With --simulate: start a run and replay the v, omega commands of the run file FILE, one a step.</source>
         <translation>与 --simulate 一起使用：开始一次运行，并逐步重放运行文件 FILE 中的 v、omega 指令，每步一条。</translation>
     </message>
@@ -339,6 +331,14 @@
         <source>--rate needs a number &gt;= 0, got &apos;%1&apos;</source>
         <translation>--rate 需要一个 &gt;= 0 的数，收到的是“%1”</translation>
     </message>
+    <message>
+        <source>Show the stored model NAME&apos;s predictions under the labels (needs --run); with --simulate --mode autonomous: the navigator&apos;s model.</source>
+        <translation>在标注下方显示已存储模型 NAME 的预测（需要 --run）；与 --simulate --mode autonomous 一起使用时：导航器使用的模型。</translation>
+    </message>
+    <message>
+        <source>With --simulate --mode experiment: the seed of start and goal; --mode autonomous: the seed of the start (as tactile navigate --seeds).</source>
+        <translation>与 --simulate --mode experiment 一起使用：起点和目标的种子；--mode autonomous：起点的种子（与 tactile navigate --seeds 相同）。</translation>
+    </message>
 </context>
 <context>
     <name>tactile::gui::ExperimentPanel</name>
@@ -349,6 +349,42 @@
     <message>
         <source>Strategies</source>
         <translation>策略</translation>
+    </message>
+    <message>
+        <source>Go Straight</source>
+        <translation>直行</translation>
+    </message>
+    <message>
+        <source>Head to Destination</source>
+        <translation>驶向目标</translation>
+    </message>
+    <message>
+        <source>Check Contact</source>
+        <translation>检查接触</translation>
+    </message>
+    <message>
+        <source>Follow Wall</source>
+        <translation>沿墙行驶</translation>
+    </message>
+    <message>
+        <source>Move through Wall</source>
+        <translation>穿过墙体</translation>
+    </message>
+    <message>
+        <source>Right U Turn</source>
+        <translation>右掉头</translation>
+    </message>
+    <message>
+        <source>Left U Turn</source>
+        <translation>左掉头</translation>
+    </message>
+    <message>
+        <source>Hole, %1 wide</source>
+        <translation>缺口，宽 %1</translation>
+    </message>
+    <message>
+        <source>Undecided</source>
+        <translation>未定</translation>
     </message>
 </context>
 <context>
@@ -1229,6 +1265,18 @@ imported from %2</source>
         <source>The time limit must be positive.</source>
         <translation>时间限制必须为正数。</translation>
     </message>
+    <message>
+        <source>practice</source>
+        <translation>练习</translation>
+    </message>
+    <message>
+        <source>experiment</source>
+        <translation>实验</translation>
+    </message>
+    <message>
+        <source>autonomous</source>
+        <translation>自主</translation>
+    </message>
 </context>
 <context>
     <name>tactile::gui::SimWindow</name>
@@ -1519,6 +1567,20 @@ paused: a drive key or Go starts the clock</source>
     <message>
         <source>Simulator Keys</source>
         <translation>模拟器按键</translation>
+    </message>
+    <message>
+        <source>Experiment mode: the seed of start and goal. Autonomous mode: the seed of the start, as in tactile navigate --seeds.</source>
+        <translation>实验模式：起点和目标的种子。自主模式：起点的种子，与 tactile navigate --seeds 相同。</translation>
+    </message>
+    <message>
+        <source>Run %1 ready: Play (P) lets the navigator drive, Step (N) takes one step</source>
+        <translation>运行 %1 已就绪：“播放”（P）让导航器驾驶，“单步”（N）走一步</translation>
+    </message>
+    <message>
+        <source>
+paused: Play (P) lets the navigator drive, Step (N) takes one step</source>
+        <translation>
+已暂停：“播放”（P）让导航器驾驶，“单步”（N）走一步</translation>
     </message>
 </context>
 <context>
