@@ -2,8 +2,9 @@
 # Makes the user guide's screenshots (docs/images/guide-*.png) with the workbench's --screenshot
 # option on the offscreen platform, from a database this script builds with the CLI: simulated
 # runs in three built-in scenes, their truth as the label set "truth", half a run labelled by hand
-# as "annotations", a stored model and a small sweep. Settings go to a temporary home, so the
-# pictures do not depend on the user's.
+# as "annotations", a stored model and a small sweep; for the simulator window's three modes a
+# navigator model by the standard recipe and runs driven in the window. Settings go to a temporary
+# home, so the pictures do not depend on the user's.
 # Usage: scripts/user-guide-shots.sh [BUILD_DIR]     (default build/)
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
@@ -49,3 +50,39 @@ shot C.UTF-8 guide-sweep.png --sweep 1
 shot C.UTF-8 guide-predictions.png --run chapter5_0001 --step 900 --model "$model"
 shot de_DE.UTF-8 guide-de.png --run chapter5_0000 --step 700
 shot zh_CN.UTF-8 guide-zh_CN.png --run chapter5_0000 --step 700
+
+# The simulator window, one picture per mode. Each picture is made on a copy of the database, so
+# the runs left part way by a screenshot do not end up in the guide's database.
+# simshot FILE ARGS...: the simulator window (with --simulate ... in ARGS) to FILE.
+simshot() {
+  local file=$1
+  shift
+  cp "$db" "$work/shot.db"
+  env LANG=C.UTF-8 LC_ALL=C.UTF-8 LANGUAGE= "$W" --db "$work/shot.db" "$@" --screenshot "$out/$file"
+  rm -f "$work/shot.db"
+  echo "wrote docs/images/$file"
+}
+# Practice: a wall-following explorer's commands replayed as if typed, the whole scene shown.
+"$T" simulate --scene practice --driver wall-follow --steps 700 --seed 3 --out "$work/practice.csv" \
+  --quiet >/dev/null
+simshot guide-sim-practice.png --simulate practice --commands "$work/practice.csv" --rate 0 \
+  --whole-scene --data
+# Experiment: start and goal from seed 5 in room2, the scene hidden, a subject driving.
+"$T" simulate --scene room2 --driver wall-follow --steps 520 --seed 5 --out "$work/experiment.csv" \
+  --quiet >/dev/null
+simshot guide-sim-experiment.png --simulate room2 --mode experiment --subject "Ada Lovelace" \
+  --seed 5 --commands "$work/experiment.csv" --rate 0
+# Autonomous: the navigator with a model by the standard recipe (docs/navigation-bench.md) on the
+# chapter-5 scene, from the first start (seed) it reaches the goal from after following a wall.
+"$T" simulate --plan training --runs 40 --seed 1 --out-dir "$work/train" --quiet >/dev/null
+"$T" train --runs "$work"/train/*.csv --out "$work/navigator.json" --threads 2 >/dev/null
+"$T" models import --db "$db" --name navigator "$work/navigator.json" >/dev/null
+nav_seed=$("$T" navigate --scene chapter5 --model "$work/navigator.json" --seeds 1-40 --threads 2 \
+  --quiet --json | jq -r '[.runs[] | select(.outcome == "success" and .steps > 500)][0].seed')
+[ "$nav_seed" != null ] || { echo "no seed of 1-40 reaches the goal after a wall" >&2; exit 1; }
+simshot guide-sim-autonomous.png --simulate chapter5 --mode autonomous --model navigator \
+  --seed "$nav_seed" --step 400 --data
+# The navigator: its whole run, recorded in the window, opened in the workbench with its strips.
+env LANG=C.UTF-8 LC_ALL=C.UTF-8 LANGUAGE= "$W" --db "$db" --simulate chapter5 --mode autonomous \
+  --model navigator --seed "$nav_seed" --step 6000 --screenshot "$work/whole-run.png"
+shot C.UTF-8 guide-navigator.png --run autonomous_chapter5 --step 400
