@@ -3,7 +3,7 @@
 // Up records `gave-up`, a run driven in the window equals `tactile simulate` replaying its
 // commands, and a window killed mid-run leaves the steps so far in the database. Autonomous mode:
 // Play lets the navigator drive and records its strategy and status as `tactile navigate` does,
-// Step takes exactly one step, Pause stops.
+// Step takes exactly one step, Pause stops, and a killed autonomous run keeps those columns.
 #include <QLabel>
 #include <QMessageBox>
 #include <QProcess>
@@ -359,6 +359,59 @@ class SimWindowTest : public QObject {
     const RunData& again = loop.value()->recorder().run();
     QVERIFY(test_support::bitEqual(again.x, kept->x));
     QVERIFY(test_support::bitEqual(again.sensors, kept->sensors));
+  }
+
+  void killedAutonomousRunKeepsTheNavigatorsColumns() {
+    QTemporaryDir dir;
+    const QString db = dir.filePath(QStringLiteral("kill-nav.db"));
+    { auto ws = openWorkspace(db); }  // no model stored: the navigator with the bumper
+    QProcess child;
+    QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
+    env.insert(QStringLiteral("QT_QPA_PLATFORM"), QStringLiteral("offscreen"));
+    env.insert(QStringLiteral("HOME"), dir.path());
+    env.insert(QStringLiteral("XDG_CONFIG_HOME"), dir.filePath(QStringLiteral("config")));
+    child.setProcessEnvironment(env);
+    child.start(
+        QStringLiteral(TACTILE_WORKBENCH),
+        {QStringLiteral("--db"), db, QStringLiteral("--simulate"), QStringLiteral("chapter5"),
+         QStringLiteral("--mode"), QStringLiteral("autonomous"), QStringLiteral("--seed"),
+         QStringLiteral("9"), QStringLiteral("--rate"), QStringLiteral("50")});
+    QVERIFY(child.waitForStarted(10000));
+    auto ws = openWorkspace(db);
+    std::int64_t seen = 0;
+    for (int i = 0; i < 300 && seen < 40; ++i) {
+      std::this_thread::sleep_for(std::chrono::milliseconds(100));
+      auto runs = ws->database().listRuns();
+      if (runs.ok() && !runs->empty()) seen = runs->front().stepCount;
+    }
+    QVERIFY2(seen >= 40, "the window stored no steps");
+    QCOMPARE(::kill(static_cast<pid_t>(child.processId()), SIGKILL), 0);
+    QVERIFY(child.waitForFinished(10000));
+
+    auto runs = ws->database().listRuns();
+    QVERIFY(runs.ok());
+    QCOMPARE(runs->size(), std::size_t{1});
+    QCOMPARE(runs->front().outcome, std::string("unknown"));  // killed mid-run
+    auto kept = ws->loadRun(runs->front().name);
+    QVERIFY(kept.ok());
+    const std::size_t steps = kept->stepCount();
+    QVERIFY(steps >= static_cast<std::size_t>(seen));
+    // Every step kept has the navigator's columns, equal to tactile navigate's first steps.
+    auto scene = sim::loadScene("chapter5");
+    QVERIFY(scene.ok());
+    auto world = std::make_shared<const sim::World>(std::move(scene.value()));
+    nav::NavigatorConfig config;
+    config.source = nav::StatusSource::Bumper;
+    nav::NavigateOptions options;
+    options.maxSteps = steps;
+    options.seed = 9;
+    auto reference = nav::navigate(world, "chapter5", nav::drawStart(world, 9), world->scene().goal,
+                                   config, options, true);
+    QVERIFY(reference.ok());
+    QCOMPARE(reference->run.stepCount(), steps);  // the navigator had not finished there
+    QVERIFY(kept->extraColumns == reference->run.extraColumns);
+    QVERIFY(kept->extraValues == reference->run.extraValues);
+    QVERIFY(test_support::bitEqual(kept->x, reference->run.x));
   }
 
   void autonomousModeTheNavigatorDrivesWithItsPanelLive() {
