@@ -80,7 +80,8 @@ void StatusPictureView::paintEvent(QPaintEvent*) {
   const RobotGeometry robot = simulator->config().geometry;
   const sim::Scene& scene = *session_->scene();
   const Pose2d pose = simulator->pose();
-  const QRectF area = QRectF(rect()).adjusted(16, 16, -16, -40);
+  // Below the caption at the top, above the distance at the bottom.
+  const QRectF area = QRectF(rect()).adjusted(16, 28, -16, -40);
 
   Frame f;
   if (wholeScene_) {
