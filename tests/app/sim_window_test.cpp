@@ -4,6 +4,7 @@
 // commands, and a window killed mid-run leaves the steps so far in the database. Autonomous mode:
 // Play lets the navigator drive and records its strategy and status as `tactile navigate` does,
 // Step takes exactly one step, Pause stops, and a killed autonomous run keeps those columns.
+#include <QComboBox>
 #include <QLabel>
 #include <QMessageBox>
 #include <QProcess>
@@ -584,6 +585,38 @@ class SimWindowTest : public QObject {
     QCOMPARE(window.experimentPanel()->markedStrategyRow(),
              static_cast<int>(navigator->strategy()));
     window.giveUp();
+  }
+
+  void modelsStoredLaterAreOfferedInAutonomousMode() {
+    QTemporaryDir dir;
+    const QString db = dir.filePath(QStringLiteral("models.db"));
+    { auto ws = openWorkspace(db); }
+    SimWindow window(db);
+    QCOMPARE(window.navigatorModels(), QStringList{QString()});  // only the bumper baseline
+    // A model stored by another program while the window is open.
+    const QString runFile = dir.filePath(QStringLiteral("r.csv"));
+    const QString modelFile = dir.filePath(QStringLiteral("m.json"));
+    const auto cli = [](const QStringList& args) {
+      QProcess p;
+      p.start(QStringLiteral(TACTILE_CLI), args);
+      return p.waitForFinished(120000) && p.exitStatus() == QProcess::NormalExit &&
+             p.exitCode() == 0;
+    };
+    QVERIFY(cli({QStringLiteral("simulate"), QStringLiteral("--scene"), QStringLiteral("room1"),
+                 QStringLiteral("--steps"), QStringLiteral("3000"), QStringLiteral("--out"),
+                 runFile, QStringLiteral("--quiet")}));
+    QVERIFY(cli({QStringLiteral("train"), QStringLiteral("--runs"), runFile,
+                 QStringLiteral("--groups"), QStringLiteral("R"), QStringLiteral("--threads"),
+                 QStringLiteral("1"), QStringLiteral("--min-rows"), QStringLiteral("1"),
+                 QStringLiteral("--out"), modelFile}));
+    QVERIFY(cli({QStringLiteral("models"), QStringLiteral("import"), QStringLiteral("--db"), db,
+                 QStringLiteral("--name"), QStringLiteral("later"), modelFile}));
+    window.setMode(SimMode::Autonomous);
+    QVERIFY(window.navigatorModels().contains(QStringLiteral("later")));
+    window.setNavigatorModel(QStringLiteral("later"));
+    auto* box = window.findChild<QComboBox*>(QStringLiteral("modelBox"));
+    QVERIFY(box != nullptr);
+    QCOMPARE(box->currentData().toString(), QStringLiteral("later"));
   }
 
   void briefingAndKeysHelpListTheTable() {

@@ -158,7 +158,11 @@ void SimWindow::buildUi() {
                      static_cast<QWidget*>(limitBox_), static_cast<QWidget*>(rateBox_)})
     w->setFocusPolicy(Qt::ClickFocus);
   connect(rateBox_, &QDoubleSpinBox::valueChanged, session_, &SimSession::setStepsPerSecond);
-  connect(modeBox_, &QComboBox::currentIndexChanged, this, &SimWindow::updateControls);
+  connect(modeBox_, &QComboBox::currentIndexChanged, this, [this] {
+    // Models stored since the window opened (e.g. trained in the workbench) come into the list.
+    if (mode() == SimMode::Autonomous) reloadModels();
+    updateControls();
+  });
 
   auto* setupBox = new QGroupBox(tr("Run"));
   auto* form = new QFormLayout(setupBox);
