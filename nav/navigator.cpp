@@ -283,6 +283,7 @@ struct Navigator::Impl {
   // ---- status -------------------------------------------------------------------------------
 
   void updateStatus(const Observation& obs) {
+    estimator->command(last.v, last.omega);
     const GroupClasses& classes = estimator->update(*obs.values, obs.truth);
     for (std::size_t g = 0; g < kGroupCount; ++g) {
       status[g] =
@@ -885,8 +886,7 @@ Result<std::unique_ptr<Navigator>> Navigator::create(NavigatorConfig config) {
       for (const analysis::GroupModel& m : config.models->models)
         side = side || m.group == SensorGroup::Left || m.group == SensorGroup::Right;
       if (!side) return Error("the model bundle has no model for the left or right side");
-      impl->estimator =
-          std::make_unique<ModelStatusEstimator>(config.models, config.stayProbability);
+      impl->estimator = std::make_unique<ModelStatusEstimator>(config.models);
       break;
     }
     case StatusSource::Truth:
