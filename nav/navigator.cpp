@@ -58,6 +58,9 @@ constexpr double kReturnUnits = 70.0;
 constexpr int kEscapeAfter = 3;
 // Check Contact gives up after this many steps in a row.
 constexpr int kCheckBudgetSteps = 300;
+// Arrived by odometry without reaching the goal: the search spiral round it.
+constexpr double kSearchPitchUnits = 80.0;
+constexpr double kSearchRadiusUnits = 400.0;
 // Bug2's bumper following: the arc back toward an obstacle no longer touched.
 constexpr double kBumperArcUnits = 90.0;
 
@@ -210,6 +213,7 @@ struct Navigator::Impl {
 
   // Escape from blocked steps.
   int blockedStreak = 0;
+  double searchAngle = 0.0;  // along the search spiral round the goal
   int escapeIndex = 0;
   int escapeSteps = 0;
   Command escape;
@@ -356,6 +360,30 @@ struct Navigator::Impl {
     const double turn = cfg.turnRadiansPerSecond;
     if (std::abs(err) > 0.3) return {0.0, err > 0 ? turn : -turn};
     return {cruise(), std::clamp(1.5 * err, -turn, turn)};
+  }
+
+  // Arrived by odometry while the run goes on: the odometry has drifted (blocked steps). Search
+  // round the goal on a spiral of pitch kSearchPitchUnits out to kSearchRadiusUnits (then again),
+  // skipping ahead on the spiral at a contact.
+  Command searchGoal() {
+    if (escapeSteps > 0) {
+      --escapeSteps;
+      return escape;
+    }
+    if (frontMax() > kTouching || blockedStreak > 0) {
+      searchAngle += 0.8;
+      escape = {-0.5 * cruise(), 0.0};
+      escapeSteps = 4;
+      return escape;
+    }
+    for (int i = 0; i < 200; ++i) {
+      const double r = kSearchPitchUnits * searchAngle / (2.0 * kPi);
+      if (r > kSearchRadiusUnits) searchAngle = 0.0;
+      const Vec2 target = goal + r * Vec2(std::cos(searchAngle), std::sin(searchAngle));
+      if ((target - position()).norm() > 25.0) return headTo(target);
+      searchAngle += std::max(0.05, 20.0 / std::max(r, 20.0));
+    }
+    return {};
   }
 
   // Escape moves tried in turn after several blocked steps, each held a few steps: back, turn
@@ -818,10 +846,15 @@ struct Navigator::Impl {
     stepIndex = obs.step;
     blockedStreak = obs.blocked ? blockedStreak + 1 : 0;
     updateStatus(obs);
-    if (finished || arrived) return last = Command{};
-    if ((goal - position()).norm() < cfg.arriveRadiusUnits) {
+    if (finished) return last = Command{};
+    if (!arrived && (goal - position()).norm() < cfg.arriveRadiusUnits) {
       arrived = true;
-      return last = Command{};
+      searchAngle = 0.0;
+      escapeSteps = 0;
+    }
+    if (arrived) {
+      integrated = integratedOf();
+      return last = searchGoal();
     }
     // A Check Contact that has not settled in kCheckBudgetSteps (a pocket it keeps backing out
     // of): leave it and head for the goal again; the next contact starts a new check.
