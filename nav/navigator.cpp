@@ -562,6 +562,16 @@ struct Navigator::Impl {
             beginFollowing();
             return followWall();
           }
+          // Touching on the side but not yet judged: line up with the wall by the follow-wall
+          // rule rather than arc on into it (the near front corner would hit it head on).
+          switch (sim::followWallAction(*values, !wallOnLeft)) {
+            case sim::FollowAction::Away:
+              return {0.5 * cruise(), away() * 2.0 * cfg.slightTurnRadiansPerSecond};
+            case sim::FollowAction::Toward:
+              return {0.6 * cruise(), -away() * cfg.slightTurnRadiansPerSecond};
+            case sim::FollowAction::Straight:
+              return {0.6 * cruise(), 0.0};
+          }
         }
         if (phaseUnits > kCheckLostUnits) {
           // Nothing found beside: the obstacle was small; head for the goal again.
