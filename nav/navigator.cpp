@@ -54,6 +54,11 @@ constexpr double kLeaveGainUnits = 20.0;
 // Circling: back within kReturnUnits of where following started after being kDepartUnits away.
 constexpr double kDepartUnits = 250.0;
 constexpr double kReturnUnits = 70.0;
+// Loop detection: a hit this close to an earlier one after this much path is a loop; this many
+// loops exhaust the walls.
+constexpr double kLoopUnits = 100.0;
+constexpr double kLoopPathUnits = 1500.0;
+constexpr int kLoopsToGiveUp = 3;
 // Blocked this many steps in a row: the escape moves are tried in turn.
 constexpr int kEscapeAfter = 3;
 // Check Contact gives up after this many steps in a row.
@@ -185,6 +190,18 @@ struct Navigator::Impl {
   double farFromHit = 0.0;
   bool following = false;  // the hit point counts from the first Follow Wall step
 
+  // Loop detection over episodes (odometry): where walls were hit, with the goal distance there
+  // and the odometry path length so far.
+  struct Hit {
+    Vec2 at = Vec2::Zero();
+    double goalDistance = 0.0;
+    double path = 0.0;
+  };
+  std::vector<Hit> hits;
+  double pathUnits = 0.0;
+  int loops = 0;
+  std::optional<bool> sidePreference;
+
   // Phase state.
   Phase phase = Phase::None;
   int phaseSteps = 0;
@@ -234,6 +251,7 @@ struct Navigator::Impl {
     odo = sim::integratePose(odo, last.v, last.omega, dt);
     odo.theta = sim::wrapAngle(odo.theta);
     phaseUnits += std::abs(last.v) * dt;
+    pathUnits += std::abs(last.v) * dt;
     turned += sim::wrapAngle(odo.theta - theta);
     if (sideLost) lostUnits += std::abs(last.v) * dt;
     if (rounding) roundTurned += std::abs(sim::wrapAngle(odo.theta - theta));
@@ -408,7 +426,9 @@ struct Navigator::Impl {
     double right = groupMax(*values, G::FrontRightCorner) + groupMax(*values, G::Right);
     for (int s = 0; s < 8; ++s)
       (s < 4 ? right : left) += normalOf(*values, s);
-    if (left == right) {
+    if (sidePreference) {
+      wallOnLeft = *sidePreference;
+    } else if (left == right) {
       const Vec2 g = goal - position();
       const double err = sim::wrapAngle(std::atan2(g.y(), g.x()) - odo.theta);
       wallOnLeft = err < 0.0;  // turn toward the goal's side
@@ -422,6 +442,22 @@ struct Navigator::Impl {
     rounding = false;
     sideWasTouching = false;
     setStrategy(Strategy::CheckContact, Phase::Back);
+  }
+
+  // A hit within kLoopUnits of an earlier one, no closer to the goal (by kLeaveGainUnits), after
+  // kLoopPathUnits of odometry path: the robot is going round in a loop. Records the hit.
+  bool loopAtHit() {
+    const Vec2 p = position();
+    const double d = (goal - p).norm();
+    bool loop = false;
+    for (const Hit& h : hits) {
+      if ((p - h.at).norm() < kLoopUnits && pathUnits - h.path > kLoopPathUnits &&
+          d > h.goalDistance - kLeaveGainUnits)
+        loop = true;
+    }
+    if (loop) hits.clear();
+    hits.push_back({p, d, pathUnits});
+    return loop;
   }
 
   void beginFollowing() {
@@ -486,6 +522,13 @@ struct Navigator::Impl {
 
   Command headToDestination() {
     if (frontMax() > kTouching || blockedStreak > 0) {
+      if (loopAtHit()) {
+        // Hit again where it was hit before, no closer to the goal, after a long way round: a
+        // loop. Follow walls on the other side from then on; at the third loop the walls are
+        // exhausted (the widest passable hole left, or unreachable).
+        if (++loops >= kLoopsToGiveUp) return wallExhausted(false);
+        sidePreference = !wallOnLeft;
+      }
       startEpisode();
       return checkContact();
     }
