@@ -11,21 +11,21 @@
 
 #include "nav/astar.h"
 #include "nav/navigate.h"
-#include "nav/office_map.h"
+#include "sim/office_scene.h"
 #include "sim/simulator.h"
 
 namespace tactile::nav {
 namespace {
-
-double unit(std::mt19937_64& rng) {
-  return static_cast<double>(rng() >> 11) * 0x1.0p-53;
-}
 
 // Grid and robot size of the A* reference.
 constexpr double kGridUnits = 10.0;
 constexpr double kRobotHalfWidthUnits = 46.0;  // 40 + a dome radius
 
 }  // namespace
+
+std::uint64_t mapSeed(std::uint64_t seed, std::size_t index) {
+  return sim::kFirstBenchmarkSceneSeed + seed + index;
+}
 
 double quantile(std::vector<double> values, double p) {
   if (values.empty()) return 0.0;
@@ -37,42 +37,25 @@ double quantile(std::vector<double> values, double p) {
 }
 
 Result<MapCase> benchmarkCase(std::uint64_t seed) {
-  OfficeMap office = generateOfficeMap(seed);
+  if (seed < sim::kFirstBenchmarkSceneSeed)
+    return Error("map seed " + std::to_string(seed) + " is below " +
+                 std::to_string(sim::kFirstBenchmarkSceneSeed) +
+                 ": benchmark maps use the seeds kept for benchmarks");
+  sim::OfficeScene office = sim::generateOfficeScene(seed);
+  if (!office.connected)
+    return Error("map seed " + std::to_string(seed) + ": the start and the goal are not joined");
   MapCase c;
+  c.start = office.scene.start;
+  c.goal = office.scene.goal;
   c.world = std::make_shared<const sim::World>(std::move(office.scene));
   const GridMap grid = inflatedGrid(*c.world, kGridUnits, kRobotHalfWidthUnits);
-  sim::Simulator probe(c.world);
-  std::mt19937_64 rng(seed ^ 0xD1B54A32D192ED03ull);
-  const auto freePoint = [&](const OfficeRoom& room) -> std::optional<Vec2> {
-    for (int i = 0; i < 200; ++i) {
-      const Vec2 p(room.x0 + 100.0 + (room.x1 - room.x0 - 200.0) * unit(rng),
-                   room.y0 + 100.0 + (room.y1 - room.y0 - 200.0) * unit(rng));
-      const int col = static_cast<int>((p.x() - grid.x0) / grid.cellUnits);
-      const int row = static_cast<int>((p.y() - grid.y0) / grid.cellUnits);
-      if (!grid.isBlocked(col, row)) return p;
-    }
-    return std::nullopt;
-  };
-  const std::size_t rooms = office.rooms.size();
-  for (int attempt = 0; attempt < 200; ++attempt) {
-    const std::size_t a = static_cast<std::size_t>(rng() % rooms);
-    std::size_t b = static_cast<std::size_t>(rng() % rooms);
-    if (rooms > 1 && b == a) b = (a + 1 + rng() % (rooms - 1)) % rooms;
-    const auto s = freePoint(office.rooms[a]);
-    const auto g = freePoint(office.rooms[b]);
-    if (!s || !g) continue;
-    const double theta = 2.0 * std::numbers::pi * unit(rng) - std::numbers::pi;
-    // The pose is the rear axle; the body's centre (35 ahead) was checked on the grid.
-    const Pose2d start{s->x() - 35.0 * std::cos(theta), s->y() - 35.0 * std::sin(theta), theta};
-    if (probe.isBlocked(start)) continue;
-    const auto length = shortestPathUnits(grid, *s, *g);
-    if (!length) continue;
-    c.start = start;
-    c.goal = *g;
-    c.astarUnits = *length;
-    return c;
-  }
-  return Error("map seed " + std::to_string(seed) + ": no start and goal joined by a path");
+  // The path is measured from the body's centre (35 ahead of the rear axle), as the goal is.
+  const Vec2 centre(c.start.x + 35.0 * std::cos(c.start.theta),
+                    c.start.y + 35.0 * std::sin(c.start.theta));
+  const auto length = shortestPathUnits(grid, centre, c.goal);
+  if (!length) return Error("map seed " + std::to_string(seed) + ": no path joins start and goal");
+  c.astarUnits = *length;
+  return c;
 }
 
 Result<BenchmarkResult> runMapBenchmark(const BenchmarkOptions& options,
@@ -104,7 +87,7 @@ Result<BenchmarkResult> runMapBenchmark(const BenchmarkOptions& options,
       if (j >= jobs) return;
       const std::size_t m = j / sources.size();
       std::call_once(made[m], [&] {
-        auto c = benchmarkCase(options.seed + m);
+        auto c = benchmarkCase(mapSeed(options.seed, m));
         if (c) {
           cases[m] = std::move(c.value());
         } else {
@@ -120,9 +103,9 @@ Result<BenchmarkResult> runMapBenchmark(const BenchmarkOptions& options,
       config.models = options.models;
       NavigateOptions no;
       no.maxSteps = options.maxSteps;
-      no.seed = options.seed + m;
+      no.seed = mapSeed(options.seed, m);
       const auto r0 = std::chrono::steady_clock::now();
-      auto r = navigate(mc.world, "office", mc.start, mc.goal, config, no, false);
+      auto r = navigate(mc.world, mc.world->scene().name, mc.start, mc.goal, config, no, false);
       if (!r) {
         std::lock_guard lock(mutex);
         if (firstError.empty()) firstError = r.errorText();

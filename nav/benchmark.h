@@ -1,6 +1,8 @@
-// The map benchmark (docs/navigation.md#benchmark): generated office-like maps (rooms, doors,
-// furniture) in the manner of McGuire, de Croon and Tuyls (2019); per map a start and a goal drawn
-// from the seed in different rooms, the A* length on the map grown by the robot as the reference,
+// The map benchmark (docs/navigation.md#the-benchmark): the simulator's generated office maps
+// (`random:office:SEED`, sim/office_scene.h: rooms, doors, narrow gaps, bumps, furniture) in the
+// manner of McGuire, de Croon and Tuyls (2019), on the seeds kept for benchmarks
+// (sim::kFirstBenchmarkSceneSeed and up, never drawn by the training recipe); the map's own start
+// and goal (in different rooms), the A* length on the map grown by the robot as the reference,
 // and one run per status source.
 #pragma once
 
@@ -24,13 +26,18 @@ struct MapCase {
   double astarUnits = 0.0;
 };
 
-// The map of seed `seed` with a start and a goal that A* connects; fails only when no such pair
-// is found in many draws.
+// The office map `random:office:SEED` with its start and goal and the A* length between them.
+// Fails for a seed below sim::kFirstBenchmarkSceneSeed (kept out of benchmarks: training draws
+// them) and when no path joins start and goal.
 Result<MapCase> benchmarkCase(std::uint64_t seed);
+
+// The scene seed of map `index` of a benchmark run with `seed`:
+// sim::kFirstBenchmarkSceneSeed + seed + index.
+std::uint64_t mapSeed(std::uint64_t seed, std::size_t index);
 
 struct BenchmarkOptions {
   std::size_t maps = 200;
-  std::uint64_t seed = 1;  // map i uses seed + i
+  std::uint64_t seed = 1;  // map i is random:office:mapSeed(seed, i)
   std::size_t maxSteps = 6000;
   unsigned threads = 0;                                 // 0 = all cores
   std::shared_ptr<const analysis::ModelBundle> models;  // null: the model source is skipped

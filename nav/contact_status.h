@@ -1,10 +1,8 @@
 // The contact status of every sensor group at one step, from one of three sources
-// (docs/navigation.md#status-sources). The model source decides causally: each group's class
-// comes from its classifier's per-step log-likelihoods filtered forward by an HMM over the
-// contact episode (OnlineGroupDecider), so a decision uses only the steps seen so far.
+// (docs/navigation.md#status-sources). The model source decides causally with the learning part's
+// online decision (analysis::OnlineDecider): each group's class from the steps seen so far, as
+// `tactile classify` decides it online on the same run.
 #pragma once
-
-#include <Eigen/Core>
 
 #include <array>
 #include <memory>
@@ -12,38 +10,11 @@
 #include <vector>
 
 #include "analysis/model_file.h"
+#include "analysis/online_decider.h"
 #include "run/contact_class.h"
 #include "run/sensor_layout.h"
 
 namespace tactile::nav {
-
-// One group's online decision: the forward filter of thesis 4.6 / analysis/temporal.h, one step
-// at a time,
-//   log alpha_t(j) = l_t(j) + logsumexp_i(log alpha_{t-1}(i) + log A(i, j)) - log Z_t,
-//   A(i, i) = stay, A(i, j != i) = (1 - stay) / (C - 1),
-// started from the log priors at the first step of each contact episode. This is the one place
-// that knows how the decision is made, so a learned transition matrix can replace A here.
-class OnlineGroupDecider {
- public:
-  OnlineGroupDecider() = default;
-  OnlineGroupDecider(Eigen::VectorXd logPriors, double stayProbability);
-  // A step without contact: the episode ends.
-  void reset() { started_ = false; }
-  // A contact step with per-class log-likelihoods (C entries); returns the filtered class.
-  int push(const Eigen::Ref<const Eigen::VectorXd>& logLik);
-  // Filtered posterior probability of the decided class (1 for a single class).
-  double confidence() const { return confidence_; }
-
- private:
-  Eigen::VectorXd logPriors_;
-  double logStay_ = 0.0;
-  double logMove_ = 0.0;
-  Eigen::VectorXd alpha_;
-  Eigen::VectorXd predicted_;
-  Eigen::VectorXd scratch_;
-  bool started_ = false;
-  double confidence_ = 1.0;
-};
 
 // Per-group classes of one step. Undecided groups (a model gave no class) read as nullopt.
 using GroupClasses = std::array<std::optional<ContactClass>, kGroupCount>;
@@ -54,22 +25,30 @@ class StatusEstimator {
   // `values`: the 88 filtered dome values; `truth`: the simulator's classes (Truth source only).
   virtual const GroupClasses& update(const std::array<double, kValuesPerStep>& values,
                                      const std::array<ContactClass, kGroupCount>* truth) = 0;
+  // The command that led to the next update's values (the model source's context features use
+  // it; the others ignore it).
+  virtual void command(double /*v*/, double /*omega*/) {}
 };
 
-// Trained models with the online decision. Groups without a model touch as Wall (a side group
-// must still be followed); all-zero groups are NoContact by rule and skip their model.
+// Trained models with the learning part's online decision (each model's own decision: the
+// forward filter through its transition chain, or the per-step argmax). All-zero groups are
+// NoContact by rule; a touching group without a model reads Wall (a side group must still be
+// followed).
 class ModelStatusEstimator : public StatusEstimator {
  public:
-  ModelStatusEstimator(std::shared_ptr<const analysis::ModelBundle> models, double stayProbability);
+  explicit ModelStatusEstimator(std::shared_ptr<const analysis::ModelBundle> models);
   const GroupClasses& update(const std::array<double, kValuesPerStep>& values,
                              const std::array<ContactClass, kGroupCount>* truth) override;
+  void command(double v, double omega) override {
+    v_ = v;
+    omega_ = omega;
+  }
 
  private:
   std::shared_ptr<const analysis::ModelBundle> models_;
-  std::array<const analysis::GroupModel*, kGroupCount> byGroup_{};
-  std::array<OnlineGroupDecider, kGroupCount> deciders_;
-  std::array<Eigen::MatrixXd, kGroupCount> features_;  // 1 x D scratch
-  Eigen::MatrixXd logLik_;
+  analysis::OnlineDecider decider_;
+  double v_ = 0.0;
+  double omega_ = 0.0;
   GroupClasses out_{};
 };
 

@@ -54,10 +54,18 @@ constexpr double kLeaveGainUnits = 20.0;
 // Circling: back within kReturnUnits of where following started after being kDepartUnits away.
 constexpr double kDepartUnits = 250.0;
 constexpr double kReturnUnits = 70.0;
+// Loop detection: a hit this close to an earlier one after this much path is a loop; this many
+// loops exhaust the walls.
+constexpr double kLoopUnits = 100.0;
+constexpr double kLoopPathUnits = 1500.0;
+constexpr int kLoopsToGiveUp = 3;
 // Blocked this many steps in a row: the escape moves are tried in turn.
 constexpr int kEscapeAfter = 3;
 // Check Contact gives up after this many steps in a row.
 constexpr int kCheckBudgetSteps = 300;
+// Arrived by odometry without reaching the goal: the search spiral round it.
+constexpr double kSearchPitchUnits = 80.0;
+constexpr double kSearchRadiusUnits = 400.0;
 // Bug2's bumper following: the arc back toward an obstacle no longer touched.
 constexpr double kBumperArcUnits = 90.0;
 
@@ -182,6 +190,18 @@ struct Navigator::Impl {
   double farFromHit = 0.0;
   bool following = false;  // the hit point counts from the first Follow Wall step
 
+  // Loop detection over episodes (odometry): where walls were hit, with the goal distance there
+  // and the odometry path length so far.
+  struct Hit {
+    Vec2 at = Vec2::Zero();
+    double goalDistance = 0.0;
+    double path = 0.0;
+  };
+  std::vector<Hit> hits;
+  double pathUnits = 0.0;
+  int loops = 0;
+  std::optional<bool> sidePreference;
+
   // Phase state.
   Phase phase = Phase::None;
   int phaseSteps = 0;
@@ -210,6 +230,7 @@ struct Navigator::Impl {
 
   // Escape from blocked steps.
   int blockedStreak = 0;
+  double searchAngle = 0.0;  // along the search spiral round the goal
   int escapeIndex = 0;
   int escapeSteps = 0;
   Command escape;
@@ -230,6 +251,7 @@ struct Navigator::Impl {
     odo = sim::integratePose(odo, last.v, last.omega, dt);
     odo.theta = sim::wrapAngle(odo.theta);
     phaseUnits += std::abs(last.v) * dt;
+    pathUnits += std::abs(last.v) * dt;
     turned += sim::wrapAngle(odo.theta - theta);
     if (sideLost) lostUnits += std::abs(last.v) * dt;
     if (rounding) roundTurned += std::abs(sim::wrapAngle(odo.theta - theta));
@@ -283,6 +305,7 @@ struct Navigator::Impl {
   // ---- status -------------------------------------------------------------------------------
 
   void updateStatus(const Observation& obs) {
+    estimator->command(last.v, last.omega);
     const GroupClasses& classes = estimator->update(*obs.values, obs.truth);
     for (std::size_t g = 0; g < kGroupCount; ++g) {
       status[g] =
@@ -357,6 +380,30 @@ struct Navigator::Impl {
     return {cruise(), std::clamp(1.5 * err, -turn, turn)};
   }
 
+  // Arrived by odometry while the run goes on: the odometry has drifted (blocked steps). Search
+  // round the goal on a spiral of pitch kSearchPitchUnits out to kSearchRadiusUnits (then again),
+  // skipping ahead on the spiral at a contact.
+  Command searchGoal() {
+    if (escapeSteps > 0) {
+      --escapeSteps;
+      return escape;
+    }
+    if (frontMax() > kTouching || blockedStreak > 0) {
+      searchAngle += 0.8;
+      escape = {-0.5 * cruise(), 0.0};
+      escapeSteps = 4;
+      return escape;
+    }
+    for (int i = 0; i < 200; ++i) {
+      const double r = kSearchPitchUnits * searchAngle / (2.0 * kPi);
+      if (r > kSearchRadiusUnits) searchAngle = 0.0;
+      const Vec2 target = goal + r * Vec2(std::cos(searchAngle), std::sin(searchAngle));
+      if ((target - position()).norm() > 25.0) return headTo(target);
+      searchAngle += std::max(0.05, 20.0 / std::max(r, 20.0));
+    }
+    return {};
+  }
+
   // Escape moves tried in turn after several blocked steps, each held a few steps: back, turn
   // either way, forward.
   Command nextEscape() {
@@ -379,7 +426,9 @@ struct Navigator::Impl {
     double right = groupMax(*values, G::FrontRightCorner) + groupMax(*values, G::Right);
     for (int s = 0; s < 8; ++s)
       (s < 4 ? right : left) += normalOf(*values, s);
-    if (left == right) {
+    if (sidePreference) {
+      wallOnLeft = *sidePreference;
+    } else if (left == right) {
       const Vec2 g = goal - position();
       const double err = sim::wrapAngle(std::atan2(g.y(), g.x()) - odo.theta);
       wallOnLeft = err < 0.0;  // turn toward the goal's side
@@ -393,6 +442,22 @@ struct Navigator::Impl {
     rounding = false;
     sideWasTouching = false;
     setStrategy(Strategy::CheckContact, Phase::Back);
+  }
+
+  // A hit within kLoopUnits of an earlier one, no closer to the goal (by kLeaveGainUnits), after
+  // kLoopPathUnits of odometry path: the robot is going round in a loop. Records the hit.
+  bool loopAtHit() {
+    const Vec2 p = position();
+    const double d = (goal - p).norm();
+    bool loop = false;
+    for (const Hit& h : hits) {
+      if ((p - h.at).norm() < kLoopUnits && pathUnits - h.path > kLoopPathUnits &&
+          d > h.goalDistance - kLeaveGainUnits)
+        loop = true;
+    }
+    if (loop) hits.clear();
+    hits.push_back({p, d, pathUnits});
+    return loop;
   }
 
   void beginFollowing() {
@@ -457,6 +522,13 @@ struct Navigator::Impl {
 
   Command headToDestination() {
     if (frontMax() > kTouching || blockedStreak > 0) {
+      if (loopAtHit()) {
+        // Hit again where it was hit before, no closer to the goal, after a long way round: a
+        // loop. Follow walls on the other side from then on; at the third loop the walls are
+        // exhausted (the widest passable hole left, or unreachable).
+        if (++loops >= kLoopsToGiveUp) return wallExhausted(false);
+        sidePreference = !wallOnLeft;
+      }
       startEpisode();
       return checkContact();
     }
@@ -532,6 +604,16 @@ struct Navigator::Impl {
               sideSteps >= kCheckMaxSideSteps) {
             beginFollowing();
             return followWall();
+          }
+          // Touching on the side but not yet judged: line up with the wall by the follow-wall
+          // rule rather than arc on into it (the near front corner would hit it head on).
+          switch (sim::followWallAction(*values, !wallOnLeft)) {
+            case sim::FollowAction::Away:
+              return {0.5 * cruise(), away() * 2.0 * cfg.slightTurnRadiansPerSecond};
+            case sim::FollowAction::Toward:
+              return {0.6 * cruise(), -away() * cfg.slightTurnRadiansPerSecond};
+            case sim::FollowAction::Straight:
+              return {0.6 * cruise(), 0.0};
           }
         }
         if (phaseUnits > kCheckLostUnits) {
@@ -817,10 +899,15 @@ struct Navigator::Impl {
     stepIndex = obs.step;
     blockedStreak = obs.blocked ? blockedStreak + 1 : 0;
     updateStatus(obs);
-    if (finished || arrived) return last = Command{};
-    if ((goal - position()).norm() < cfg.arriveRadiusUnits) {
+    if (finished) return last = Command{};
+    if (!arrived && (goal - position()).norm() < cfg.arriveRadiusUnits) {
       arrived = true;
-      return last = Command{};
+      searchAngle = 0.0;
+      escapeSteps = 0;
+    }
+    if (arrived) {
+      integrated = integratedOf();
+      return last = searchGoal();
     }
     // A Check Contact that has not settled in kCheckBudgetSteps (a pocket it keeps backing out
     // of): leave it and head for the goal again; the next contact starts a new check.
@@ -885,8 +972,7 @@ Result<std::unique_ptr<Navigator>> Navigator::create(NavigatorConfig config) {
       for (const analysis::GroupModel& m : config.models->models)
         side = side || m.group == SensorGroup::Left || m.group == SensorGroup::Right;
       if (!side) return Error("the model bundle has no model for the left or right side");
-      impl->estimator =
-          std::make_unique<ModelStatusEstimator>(config.models, config.stayProbability);
+      impl->estimator = std::make_unique<ModelStatusEstimator>(config.models);
       break;
     }
     case StatusSource::Truth:

@@ -104,8 +104,6 @@ struct NavigatorConfig {
   StatusSource source = StatusSource::Model;
   // Model source: the trained per-group classifiers (must outlive nothing: shared).
   std::shared_ptr<const analysis::ModelBundle> models;
-  // Model source: self-transition probability of the online HMM filter per group.
-  double stayProbability = 0.9;
   RobotGeometry geometry;
   double cruiseUnitsPerSecond = 50.0;
   double turnRadiansPerSecond = 0.8;         // turning in place

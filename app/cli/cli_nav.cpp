@@ -5,6 +5,7 @@
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
+#include <limits>
 #include <memory>
 #include <mutex>
 #include <nlohmann/json.hpp>
@@ -99,6 +100,8 @@ int runBenchmark(const NavigateArgs& a) {
   if (!a.scene.empty()) throw UsageError("give --scene or --benchmark, not both");
   if (a.benchmark < 1 || a.benchmark > 100'000)
     throw UsageError("--benchmark must be between 1 and 100000 maps");
+  if (a.seed > std::numeric_limits<std::uint64_t>::max() / 2)
+    throw UsageError("--seed must be below 2^63");
   nav::BenchmarkOptions options;
   options.maps = static_cast<std::size_t>(a.benchmark);
   options.seed = a.seed;
@@ -295,7 +298,8 @@ void registerNavigateVerb(CLI::App& app) {
   cmd->add_option("--threads", args->threads, "Worker threads (0 = all cores)");
   cmd->add_option("--benchmark", args->benchmark,
                   "Benchmark the three status sources on N generated office maps");
-  cmd->add_option("--seed", args->seed, "First map seed of --benchmark");
+  cmd->add_option("--seed", args->seed,
+                  "--benchmark: map i is random:office:(900000 + SEED + i) (default 1)");
   cmd->add_flag("--json", args->json, "Print one JSON object on stdout");
   cmd->add_flag("--quiet", args->quiet, "No progress on stderr");
   setAction(cmd, [args] { return runNavigate(*args); });

@@ -66,7 +66,7 @@ TEST(Navigate, TinySceneReachesTheGoalRoundABox) {
 
 // Known miss: hitting the box dead-on (from y 450) with the truth source still times out: the
 // odometry drifts over the blocked steps of Check Contact and the robot stops short of the goal.
-TEST(Navigate, DISABLED_TinySceneDeadOnHit) {
+TEST(Navigate, TinySceneDeadOnHit) {
   const auto world = worldOf({box(600, 330, 700, 570)});
   EXPECT_EQ(run(world, StatusSource::Truth, {200, 450, 0}).outcome, RunOutcome::Success);
 }
@@ -84,13 +84,58 @@ TEST(Navigate, EnclosedGoalEndsUnreachable) {
   }
 }
 
-// Known miss: times out circling (the circuit's return point is missed by the drifting odometry).
-TEST(Navigate, DISABLED_WallWithOnlyANarrowGapIsUnreachable) {
+// A wall across the scene with only a gap narrower than the robot: the robot goes round the
+// closed half (hitting the wall again where it hit it before, no closer to the goal) and ends
+// as unreachable, never in a timeout.
+TEST(Navigate, WallWithOnlyANarrowGapIsUnreachable) {
   // 70 wide: narrower than the body with its domes fully compressed (82).
   const auto world = worldOf(wallWithOpenings({{400, 470}}));
-  for (double y : {600.0}) {
+  for (double y : {200.0, 600.0}) {
     const NavigateResult r = run(world, StatusSource::Truth, {250, y, 0}, 20000);
     EXPECT_EQ(r.outcome, RunOutcome::Unreachable) << "from y " << y << " after " << r.steps;
+  }
+}
+
+// A 120-wide gap in a wall across the whole scene is passed from starts spread over the start's
+// side, facing within 40 degrees of the goal. Target: always; measured 23 of 27: in the misses
+// Check Contact does not settle beside a wall met nearly head on, and the loop detection then
+// gives up (unreachable) or the run times out (docs/navigation.md#figures-and-known-misses).
+// This holds the line at 20.
+TEST(Navigate, GapOf120IsPassed) {
+  int passed = 0;
+  int runs = 0;
+  for (double gapY : {250.0, 450.0, 650.0}) {
+    const auto world = worldOf(wallWithOpenings({{gapY - 60.0, gapY + 60.0}}));
+    for (double y : {150.0, 450.0, 750.0}) {
+      for (double theta : {-0.7, 0.0, 0.7}) {
+        const NavigateResult r = run(world, StatusSource::Truth, {250, y, theta}, 8000);
+        ++runs;
+        passed += r.outcome == RunOutcome::Success ? 1 : 0;
+      }
+    }
+  }
+  EXPECT_GE(passed, 20) << passed << " of " << runs;
+}
+
+// A 90-wide gap (the robot with its domes is 92 wide) is never tried for long: with a way round
+// the wall's end, the robot goes round, and the steps spent moving through a hole stay few.
+TEST(Navigate, GapOf90IsGivenUpQuickly) {
+  for (double gapY : {300.0, 450.0}) {
+    // The wall stops 250 short of the top bound: the way round.
+    auto obstacles = wallWithOpenings({{gapY - 45.0, gapY + 45.0}, {650.0, 900.0}});
+    const auto world = worldOf(std::move(obstacles));
+    for (double y : {200.0, 450.0, 700.0}) {
+      const NavigateResult r = run(world, StatusSource::Truth, {250, y, 0.0}, 8000);
+      EXPECT_EQ(r.outcome, RunOutcome::Success)
+          << "gap at " << gapY << " from y " << y << ": " << runOutcomeName(r.outcome) << " after "
+          << r.steps;
+      EXPECT_LT(r.steps, 4000u) << "gap at " << gapY << " from y " << y;
+      std::size_t through = 0;
+      const std::size_t cols = r.run.extraColumns.size();
+      for (std::size_t k = 0; k < r.run.stepCount(); ++k)
+        through += r.run.extraValues[k * cols] == "MoveThroughWall" ? 1 : 0;
+      EXPECT_LT(through, 300u) << "gap at " << gapY << " from y " << y;
+    }
   }
 }
 

@@ -4,59 +4,61 @@
 #include <cmath>
 #include <random>
 
-#include "analysis/temporal.h"
+#include "analysis/classify_run.h"
+#include "analysis/training.h"
 #include "nav/contact_status.h"
 #include "nav/hole_memory.h"
+#include "tests/analysis/learn_test_data.h"
 
 namespace tactile::nav {
 namespace {
 
-// The step-by-step filter gives what the whole-run forward filter gives at every step, episode
-// by episode (steps without contact restart it).
-TEST(OnlineGroupDecider, MatchesTheWholeRunForwardFilter) {
-  std::mt19937_64 rng(7);
-  std::normal_distribution<double> noise(0.0, 3.0);
-  const int steps = 60;
-  const int classes = 4;
-  analysis::StepLikelihoods sl;
-  sl.logLik.resize(steps, classes);
-  sl.observed.assign(steps, 1);
-  for (int t = 0; t < steps; ++t)
-    for (int c = 0; c < classes; ++c)
-      sl.logLik(t, c) = noise(rng) - (c == (t / 15) % classes ? 0.0 : 2.0);
-  sl.observed[20] = 0;
-  sl.observed[41] = 0;
-  sl.logPriors = Eigen::VectorXd::Constant(classes, -std::log(double(classes)));
-  for (double stay : {0.25, 0.9, 0.99}) {
-    const analysis::HmmFilterResult batch = analysis::hmmForwardFilter(sl, stay);
-    OnlineGroupDecider online(sl.logPriors, stay);
-    for (int t = 0; t < steps; ++t) {
-      if (!sl.observed[t]) {
-        online.reset();
-        continue;
-      }
-      const int c = online.push(sl.logLik.row(t).transpose());
-      ASSERT_TRUE(batch.decisions[t]);
-      EXPECT_EQ(c, *batch.decisions[t]) << "stay " << stay << " step " << t;
-      EXPECT_NEAR(std::log(online.confidence()), batch.logPosterior(t, c), 1e-9);
-    }
-  }
-}
+// The model source decides with the learning part's online decision: step for step what
+// classifyRun decides online on the same run (the command of each step goes with its values); a
+// group without a model reads Wall while it touches and NoContact while it does not.
+TEST(ModelStatusEstimator, DecidesAsTheOnlineClassificationOfTheRun) {
+  const RunData run = testdata::makeLabelledRun(1200, 11);
+  std::vector<analysis::LabelledRun> runs{{&run, analysis::labelsFromTruth(run)}};
+  const analysis::GroupDataSet data =
+      analysis::buildGroupDataSet(runs, SensorGroup::Right, analysis::FeatureKind::Normal);
+  analysis::TrainSettings settings;
+  settings.classifier.method = analysis::ClassifierMethod::Gmm;
+  settings.classifier.gmm.components = 2;
+  settings.classifier.gmm.seed = 5;
+  analysis::GroupTrainResult trained = analysis::trainGroupModel(data, settings);
+  ASSERT_TRUE(trained.ok) << trained.reason;
+  auto bundle = std::make_shared<analysis::ModelBundle>();
+  bundle->models.push_back(std::move(trained.model));
+  const analysis::RunClassification batch =
+      analysis::classifyRun(run, *bundle, analysis::ClassifyOptions{});
+  const analysis::GroupClassification& right = batch.groups[groupIndex(SensorGroup::Right)];
+  ASSERT_EQ(right.decided.size(), run.stepCount());
 
-TEST(OnlineGroupDecider, UnderflowAndOneClassStayFinite) {
-  OnlineGroupDecider one(Eigen::VectorXd::Zero(1), 0.9);
-  EXPECT_EQ(one.push(Eigen::VectorXd::Constant(1, -1e300)), 0);
-  EXPECT_DOUBLE_EQ(one.confidence(), 1.0);
-  const double inf = std::numeric_limits<double>::infinity();
-  OnlineGroupDecider two(Eigen::VectorXd::Constant(2, std::log(0.5)), 0.9);
-  Eigen::VectorXd l(2);
-  l << -inf, -inf;
-  const int c = two.push(l);
-  EXPECT_TRUE(c == 0 || c == 1);
-  EXPECT_TRUE(std::isfinite(two.confidence()));
-  l << 0.0, -5.0;
-  EXPECT_EQ(two.push(l), 0);
-  EXPECT_GT(two.confidence(), 0.5);
+  ModelStatusEstimator estimator(bundle);
+  std::size_t compared = 0;
+  std::size_t leftTouching = 0;
+  for (std::size_t t = 0; t < run.stepCount(); ++t) {
+    std::array<double, kValuesPerStep> values{};
+    const double* step = run.stepSensors(t);
+    std::copy(step, step + kValuesPerStep, values.begin());
+    estimator.command(run.v[t], run.omega[t]);
+    const GroupClasses& out = estimator.update(values, nullptr);
+    const auto r = static_cast<std::size_t>(groupIndex(SensorGroup::Right));
+    if (right.decided[t]) {
+      ASSERT_TRUE(out[r].has_value());
+      EXPECT_EQ(*out[r], right.model->classes[static_cast<std::size_t>(*right.decided[t])])
+          << "step " << t;
+      ++compared;
+    } else if (!groupTouches(values, SensorGroup::Right)) {
+      EXPECT_EQ(out[r], ContactClass::NoContact) << "step " << t;
+    }
+    const auto l = static_cast<std::size_t>(groupIndex(SensorGroup::Left));
+    const bool touches = groupTouches(values, SensorGroup::Left);
+    leftTouching += touches ? 1 : 0;
+    EXPECT_EQ(out[l], touches ? ContactClass::Wall : ContactClass::NoContact) << "step " << t;
+  }
+  EXPECT_GT(compared, 100u);
+  EXPECT_GT(leftTouching, 0u);
 }
 
 TEST(HoleMemory, ReadingsOfOneOpeningMergeIntoTheMeanWidth) {
