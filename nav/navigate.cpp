@@ -22,6 +22,23 @@ std::string groupStatusColumn(SensorGroup group) {
   return "x_status_" + std::string(groupInfo(group).shortName);
 }
 
+std::vector<std::string> navigatorColumns() {
+  std::vector<std::string> names;
+  names.reserve(2 + kGroupCount);
+  names.emplace_back(kStrategyColumn);
+  names.emplace_back(kIntegratedStatusColumn);
+  for (const GroupInfo& info : kSensorGroups)
+    names.push_back(groupStatusColumn(info.group));
+  return names;
+}
+
+void appendNavigatorState(const Navigator& navigator, std::vector<std::string>& values) {
+  values.emplace_back(strategyKey(navigator.strategy()));
+  values.push_back(statusText(navigator.integratedStatus()));
+  for (const ContactStatus& s : navigator.groupStatus())
+    values.push_back(statusText(s));
+}
+
 Result<NavigateResult> navigate(std::shared_ptr<const sim::World> world, std::string_view sceneName,
                                 const Pose2d& start, const Vec2& goal,
                                 const NavigatorConfig& config, const NavigateOptions& options,
@@ -61,10 +78,7 @@ Result<NavigateResult> navigate(std::shared_ptr<const sim::World> world, std::st
     ++result.steps;
     if (recorder) {
       recorder->record(simulator, command);
-      extra.emplace_back(strategyKey(navigator.strategy()));
-      extra.push_back(statusText(navigator.integratedStatus()));
-      for (const ContactStatus& s : navigator.groupStatus())
-        extra.push_back(statusText(s));
+      appendNavigatorState(navigator, extra);
     }
     const Vec2 centre = sim::bodyToWorld(p, Vec2(centreOffset, 0.0));
     if ((centre - goal).norm() < options.goalRadiusUnits) {
@@ -79,10 +93,7 @@ Result<NavigateResult> navigate(std::shared_ptr<const sim::World> world, std::st
   if (recorder) {
     recorder->setOutcome(result.outcome);
     result.run = recorder->take();
-    result.run.extraColumns.emplace_back(kStrategyColumn);
-    result.run.extraColumns.emplace_back(kIntegratedStatusColumn);
-    for (const GroupInfo& info : kSensorGroups)
-      result.run.extraColumns.push_back(groupStatusColumn(info.group));
+    result.run.extraColumns = navigatorColumns();
     result.run.extraValues = std::move(extra);
   }
   return result;

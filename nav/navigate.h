@@ -9,6 +9,7 @@
 #include <memory>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "base/error.h"
 #include "nav/navigator.h"
@@ -23,6 +24,13 @@ inline constexpr std::string_view kStrategyColumn = "x_strategy";
 inline constexpr std::string_view kIntegratedStatusColumn = "x_status";
 // Per group: "x_status_F", "x_status_FLC", ... in sensor-group order.
 std::string groupStatusColumn(SensorGroup group);
+// All the navigator's columns, in the order a run file holds them: x_strategy, x_status, then
+// x_status_<group> in sensor-group order. Every recorder of navigator runs (navigate below, the
+// simulator window's autonomous mode) writes these, so the workbench reads them alike.
+std::vector<std::string> navigatorColumns();
+// Appends the navigator's state after its last step: one value per column of navigatorColumns(),
+// in that order.
+void appendNavigatorState(const Navigator& navigator, std::vector<std::string>& values);
 
 struct NavigateOptions {
   std::size_t maxSteps = 6000;

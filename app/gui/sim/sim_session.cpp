@@ -6,7 +6,6 @@
 #include <cmath>
 #include <utility>
 
-#include "app/gui/sim/navigator_record.h"
 #include "nav/navigate.h"
 #include "nav/navigator.h"
 #include "run/builtin_scenes.h"
@@ -147,7 +146,7 @@ Status SimSession::start(const SimSetup& setup) {
     // The navigator's state per step, as `tactile navigate` records it.
     recorder.setMeta("status_source",
                      std::string(nav::statusSourceName(navigator->config().source)));
-    recorder.setExtraColumns(navigatorColumns());
+    recorder.setExtraColumns(nav::navigatorColumns());
   }
   if (setup.mode != SimMode::Practice) {
     recorder.setMeta("time_limit", sim::formatNumber(setup.timeLimitSeconds));
@@ -293,7 +292,7 @@ bool SimSession::stepInternal() {
   if (setup_.mode == SimMode::Autonomous) {
     ended = loop_->step(*setup_.driver);
     sim::Recorder& recorder = loop_->recorder();
-    if (navigator_ != nullptr) appendNavigatorState(*navigator_, recorder.extraValues());
+    if (navigator_ != nullptr) nav::appendNavigatorState(*navigator_, recorder.extraValues());
     command_ = {recorder.run().v.back(), recorder.run().omega.back()};
   } else {
     const bool scripted = scriptPos_ < script_.size();

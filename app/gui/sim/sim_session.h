@@ -11,7 +11,7 @@
 // Autonomous mode: a driver (the chapter-5 navigator) drives from the start `tactile navigate
 // --seeds SEED` uses (nav::drawStart), under the time limit; `seed`, `time_limit` and, for the
 // navigator, `status_source` are recorded, and every step carries the navigator's strategy and
-// status as the x_ columns `tactile navigate` writes (navigator_record.h).
+// status as the x_ columns `tactile navigate` writes (nav/navigate.h).
 #pragma once
 
 #include <QElapsedTimer>
