@@ -12,14 +12,16 @@
 #include "nav/astar.h"
 #include "nav/navigate.h"
 #include "sim/office_scene.h"
+#include "sim/recorder.h"
 #include "sim/simulator.h"
 
 namespace tactile::nav {
 namespace {
 
-// Grid and robot size of the A* reference.
+// Grid of the A* reference; the map is inflated as the office generator inflates it to check
+// that start and goal are joined: the robot's half-width with its domes plus a margin, so the
+// reference path is one the robot fits along.
 constexpr double kGridUnits = 10.0;
-constexpr double kRobotHalfWidthUnits = 46.0;  // 40 + a dome radius
 
 }  // namespace
 
@@ -48,7 +50,9 @@ Result<MapCase> benchmarkCase(std::uint64_t seed) {
   c.start = office.scene.start;
   c.goal = office.scene.goal;
   c.world = std::make_shared<const sim::World>(std::move(office.scene));
-  const GridMap grid = inflatedGrid(*c.world, kGridUnits, kRobotHalfWidthUnits);
+  const sim::OfficeOptions generator;
+  const GridMap grid =
+      inflatedGrid(*c.world, kGridUnits, generator.robotHalfWidthUnits + generator.marginUnits);
   // The path is measured from the body's centre (35 ahead of the rear axle), as the goal is.
   const Vec2 centre(c.start.x + 35.0 * std::cos(c.start.theta),
                     c.start.y + 35.0 * std::sin(c.start.theta));
@@ -56,6 +60,13 @@ Result<MapCase> benchmarkCase(std::uint64_t seed) {
   if (!length) return Error("map seed " + std::to_string(seed) + ": no path joins start and goal");
   c.astarUnits = *length;
   return c;
+}
+
+std::size_t mapStepBudget(double astarUnits, double cruiseUnitsPerStep, std::size_t floorSteps) {
+  double steps = static_cast<double>(floorSteps);
+  if (cruiseUnitsPerStep > 0.0 && std::isfinite(astarUnits))
+    steps = std::max(steps, std::ceil(kBudgetPerAStarPath * astarUnits / cruiseUnitsPerStep));
+  return static_cast<std::size_t>(std::min(steps, static_cast<double>(sim::kMaxStepsPerRun)));
 }
 
 Result<BenchmarkResult> runMapBenchmark(const BenchmarkOptions& options,
@@ -102,7 +113,8 @@ Result<BenchmarkResult> runMapBenchmark(const BenchmarkOptions& options,
       config.source = sources[j % sources.size()];
       config.models = options.models;
       NavigateOptions no;
-      no.maxSteps = options.maxSteps;
+      no.maxSteps = mapStepBudget(mc.astarUnits, config.cruiseUnitsPerSecond * no.sim.dtSeconds,
+                                  options.maxSteps);
       no.seed = mapSeed(options.seed, m);
       const auto r0 = std::chrono::steady_clock::now();
       auto r = navigate(mc.world, mc.world->scene().name, mc.start, mc.goal, config, no, false);

@@ -26,6 +26,13 @@ struct MapCase {
   double astarUnits = 0.0;
 };
 
+// The step budget of a map: kBudgetPerAStarPath times the steps the A* path takes at the
+// navigator's cruise speed (`cruiseUnitsPerStep`), and at least `floorSteps` (--max-steps), at
+// most sim::kMaxStepsPerRun. A long map gets the time a long way round needs; a short one keeps
+// the floor.
+inline constexpr double kBudgetPerAStarPath = 20.0;
+std::size_t mapStepBudget(double astarUnits, double cruiseUnitsPerStep, std::size_t floorSteps);
+
 // The office map `random:office:SEED` with its start and goal and the A* length between them.
 // Fails for a seed below sim::kFirstBenchmarkSceneSeed (kept out of benchmarks: training draws
 // them) and when no path joins start and goal.
@@ -37,9 +44,9 @@ std::uint64_t mapSeed(std::uint64_t seed, std::size_t index);
 
 struct BenchmarkOptions {
   std::size_t maps = 200;
-  std::uint64_t seed = 1;  // map i is random:office:mapSeed(seed, i)
-  std::size_t maxSteps = 6000;
-  unsigned threads = 0;                                 // 0 = all cores
+  std::uint64_t seed = 1;       // map i is random:office:mapSeed(seed, i)
+  std::size_t maxSteps = 6000;  // the floor of each map's budget (mapStepBudget)
+  unsigned threads = 0;         // 0 = all cores
   std::shared_ptr<const analysis::ModelBundle> models;  // null: the model source is skipped
 };
 

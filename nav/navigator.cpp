@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <deque>
 #include <numbers>
 
 #include "analysis/hole_detection.h"
@@ -58,9 +59,16 @@ constexpr double kReturnUnits = 70.0;
 // loops exhaust the walls.
 constexpr double kLoopUnits = 100.0;
 constexpr double kLoopPathUnits = 1500.0;
-constexpr int kLoopsToGiveUp = 3;
+constexpr int kLoopsToGiveUp = 6;
 // Blocked this many steps in a row: the escape moves are tried in turn.
 constexpr int kEscapeAfter = 3;
+// Wedged (at least kWedgedBlocked of the last kWedgedWindow steps blocked, the escape moves
+// failing): the robot retraces its last kBacktrackSteps moves backward, each the exact inverse of
+// a command that moved it, so each lands on a pose it has been in before.
+constexpr int kWedgedWindow = 20;
+constexpr int kWedgedBlocked = 10;
+constexpr std::size_t kBacktrackSteps = 16;
+constexpr std::size_t kBacktrackMemory = 64;
 // Check Contact gives up after this many steps in a row.
 constexpr int kCheckBudgetSteps = 300;
 // Arrived by odometry without reaching the goal: the search spiral round it.
@@ -235,6 +243,12 @@ struct Navigator::Impl {
   int escapeSteps = 0;
   Command escape;
 
+  // Backtracking out of a wedge: the last commands that moved the robot, the newest last.
+  std::deque<Command> moved;
+  std::array<bool, kWedgedWindow> recentBlocked{};
+  std::size_t backtrackLeft = 0;
+  bool backtracking = false;  // the last command was a backtrack step
+
   // Bug2 (bumper source).
   Vec2 startPoint = Vec2::Zero();
 
@@ -247,6 +261,10 @@ struct Navigator::Impl {
 
   void integrate(bool blocked) {
     if (blocked) return;  // a cancelled step: the pose stays (as far as the robot knows)
+    if (!backtracking && (last.v != 0.0 || last.omega != 0.0)) {
+      moved.push_back(last);
+      if (moved.size() > kBacktrackMemory) moved.pop_front();
+    }
     const double theta = odo.theta;
     odo = sim::integratePose(odo, last.v, last.omega, dt);
     odo.theta = sim::wrapAngle(odo.theta);
@@ -896,8 +914,10 @@ struct Navigator::Impl {
     } else {
       integrate(obs.blocked);
     }
+    backtracking = false;
     stepIndex = obs.step;
     blockedStreak = obs.blocked ? blockedStreak + 1 : 0;
+    recentBlocked[obs.step % kWedgedWindow] = obs.blocked;
     updateStatus(obs);
     if (finished) return last = Command{};
     if (!arrived && (goal - position()).norm() < cfg.arriveRadiusUnits) {
@@ -927,6 +947,21 @@ struct Navigator::Impl {
   }
 
   Command choose() {
+    backtracking = false;
+    if (backtrackLeft == 0 &&
+        std::count(recentBlocked.begin(), recentBlocked.end(), true) >= kWedgedBlocked) {
+      backtrackLeft = std::min(kBacktrackSteps, moved.size());
+      recentBlocked.fill(false);
+      escapeSteps = 0;
+    }
+    if (backtrackLeft > 0 && !moved.empty()) {
+      --backtrackLeft;
+      const Command undo{-moved.back().v, -moved.back().omega};
+      moved.pop_back();
+      backtracking = true;
+      return undo;
+    }
+    backtrackLeft = 0;
     if (cfg.source == StatusSource::Bumper) {
       if (blockedStreak >= kEscapeAfter + 2 || escapeSteps > 0) return escapeMove();
       return bug2();

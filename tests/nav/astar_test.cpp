@@ -4,6 +4,8 @@
 #include <cmath>
 
 #include "nav/astar.h"
+#include "nav/benchmark.h"
+#include "sim/recorder.h"
 
 namespace tactile::nav {
 namespace {
@@ -72,6 +74,19 @@ TEST(AStar, EnclosedGoalHasNoPath) {
   EXPECT_FALSE(shortestPathUnits(g, Vec2(200, 200), Vec2(750, 750)));
   // A start inside an obstacle's grown margin snaps to the nearest free cell.
   EXPECT_TRUE(shortestPathUnits(g, Vec2(30, 200), Vec2(200, 200)));
+}
+
+// A map's step budget: kBudgetPerAStarPath times the A* path's steps at cruise, never below the
+// floor, never above a run's maximum; a degenerate length or speed leaves the floor.
+TEST(MapBenchmark, StepBudgetScalesWithTheAStarPath) {
+  EXPECT_EQ(mapStepBudget(1000.0, 5.0, 6000), 6000u);  // 4000 < floor
+  EXPECT_EQ(mapStepBudget(3000.0, 5.0, 6000), static_cast<std::size_t>(kBudgetPerAStarPath * 600));
+  EXPECT_EQ(mapStepBudget(3001.0, 5.0, 1),
+            static_cast<std::size_t>(std::ceil(kBudgetPerAStarPath * 3001.0 / 5.0)));
+  EXPECT_EQ(mapStepBudget(1e12, 5.0, 1), sim::kMaxStepsPerRun);
+  EXPECT_EQ(mapStepBudget(std::nan(""), 5.0, 6000), 6000u);
+  EXPECT_EQ(mapStepBudget(3000.0, 0.0, 6000), 6000u);
+  EXPECT_EQ(mapStepBudget(3000.0, 5.0, 2'000'000), sim::kMaxStepsPerRun);
 }
 
 }  // namespace
