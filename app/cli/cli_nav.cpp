@@ -292,7 +292,10 @@ void registerNavigateVerb(CLI::App& app) {
                   "Status source: model (trained models, online decision), truth (the "
                   "simulator's ground truth) or bumper (Bug2 with the skin as a bumper)");
   cmd->add_option("--seeds", args->seeds, "Seeds of the start poses: A-B, A or A,B,C (default 1)");
-  cmd->add_option("--max-steps", args->maxSteps, "Step budget per run (then `timeout`)");
+  cmd->add_option(
+      "--max-steps", args->maxSteps,
+      "Step budget per run (then `timeout`); with --benchmark the least budget of a map, "
+      "which gets 20x its A* path's steps at cruise speed when that is more");
   cmd->add_option("--out-dir", args->outDir,
                   "Write each run as navigate_STATUS_SEED.csv here (importable)");
   cmd->add_option("--threads", args->threads, "Worker threads (0 = all cores)");
