@@ -542,8 +542,8 @@ struct Navigator::Impl {
     if (frontMax() > kTouching || blockedStreak > 0) {
       if (loopAtHit()) {
         // Hit again where it was hit before, no closer to the goal, after a long way round: a
-        // loop. Follow walls on the other side from then on; at the third loop the walls are
-        // exhausted (the widest passable hole left, or unreachable).
+        // loop. Follow walls on the other side from then on; at the kLoopsToGiveUp-th loop the
+        // walls are exhausted (the widest passable hole left, or unreachable).
         if (++loops >= kLoopsToGiveUp) return wallExhausted(false);
         sidePreference = !wallOnLeft;
       }
