@@ -1,5 +1,6 @@
 #include "analysis/classify_run.h"
 
+#include <algorithm>
 #include <limits>
 
 #include "analysis/features.h"
@@ -7,6 +8,8 @@
 namespace tactile::analysis {
 
 namespace {
+// Contact rows evaluated at once by classifyRun.
+constexpr Eigen::Index kClassifyChunkRows = 4096;
 constexpr std::array<std::pair<TemporalRule, std::string_view>, 4> kRuleNames{{
     {TemporalRule::None, "none"},
     {TemporalRule::Count, "count"},
@@ -61,17 +64,34 @@ RunClassification classifyRun(const RunData& run, const ModelBundle& bundle,
     const int classes = go.model->classifier.classCount();
     go.logLikelihoods = Eigen::MatrixXd::Constant(static_cast<Eigen::Index>(steps), classes,
                                                   -std::numeric_limits<double>::infinity());
-    if (!contactRows.empty()) {
-      Eigen::MatrixXd x(static_cast<Eigen::Index>(contactRows.size()), gs.features.cols());
-      for (std::size_t i = 0; i < contactRows.size(); ++i)
-        x.row(static_cast<Eigen::Index>(i)) = gs.features.row(contactRows[i]);
-      Eigen::MatrixXd ll;
+    // The contact rows in chunks: the evaluation's buffers stay a few MB whatever the run's
+    // length (a whole 1,000,000-step run at once spent more time faulting in and clearing fresh
+    // memory than evaluating densities), and rows are gathered and scattered column by column
+    // (the matrices are column-major). Each row's log-likelihoods do not depend on the chunking.
+    const Eigen::Index contact = static_cast<Eigen::Index>(contactRows.size());
+    const Eigen::Index dims = gs.features.cols();
+    Eigen::MatrixXd x;
+    Eigen::MatrixXd ll;
+    for (Eigen::Index start = 0; start < contact; start += kClassifyChunkRows) {
+      const Eigen::Index rows = std::min(kClassifyChunkRows, contact - start);
+      x.resize(rows, dims);
+      for (Eigen::Index d = 0; d < dims; ++d) {
+        const double* from = gs.features.col(d).data();
+        double* to = x.col(d).data();
+        for (Eigen::Index i = 0; i < rows; ++i)
+          to[i] = from[contactRows[static_cast<std::size_t>(start + i)]];
+      }
       go.model->classifier.logLikelihoods(x, ll);
       const std::vector<int> pred = go.model->classifier.predictFromLogLikelihoods(ll);
-      for (std::size_t i = 0; i < contactRows.size(); ++i) {
-        go.logLikelihoods.row(contactRows[i]) = ll.row(static_cast<Eigen::Index>(i));
-        go.predicted[static_cast<std::size_t>(contactRows[i])] = pred[i];
+      for (Eigen::Index c = 0; c < classes; ++c) {
+        const double* from = ll.col(c).data();
+        double* to = go.logLikelihoods.col(c).data();
+        for (Eigen::Index i = 0; i < rows; ++i)
+          to[contactRows[static_cast<std::size_t>(start + i)]] = from[i];
       }
+      for (Eigen::Index i = 0; i < rows; ++i)
+        go.predicted[static_cast<std::size_t>(contactRows[static_cast<std::size_t>(start + i)])] =
+            pred[static_cast<std::size_t>(i)];
     }
     StepLikelihoods sl{go.logLikelihoods, {}, go.model->classifier.logPriors()};
     sl.observed.resize(steps);
