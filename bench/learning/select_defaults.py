@@ -1,10 +1,12 @@
 #!/usr/bin/env python3
 """Choose each group's training defaults from a leave-scene-out sweep (docs/learning.md#training-defaults).
 
-    bench/learning/select_defaults.py SWEEP.json [SWEEP2.json ...] [--min-steps 30]
+    bench/learning/select_defaults.py SWEEP.json|MODEL.json[=TAG] ... [--min-steps 30]
 
-The sweeps are `tactile sweep --split by-scene` over the selection corpus (docs/learning.md). Each
-held-out scene's confusion is in the cell's "scenes". Scenes named "recipe-*" are folds of the
+The sweeps are `tactile sweep --split by-scene` over the selection corpus (docs/learning.md), the
+model bundles `tactile train --split by-scene` over it (for settings a sweep does not cover, such
+as `--priors`; TAG names them in the table). Each held-out scene's confusion is in the cell's (the
+model's) "scenes". Scenes named "recipe-*" are folds of the
 training recipe; the others are wall-following runs in generated office rooms. Per cell and fold
 kind the confusions are pooled (summed over the folds of that kind) and the balanced accuracy is
 taken over the classes with at least --min-steps test steps; a fold kind with fewer than two such
@@ -48,8 +50,19 @@ def main():
         min_steps = int(args[i + 1])
         del args[i:i + 2]
     cells = []
-    for path in args:
-        cells += json.load(open(path))["cells"]
+    for arg in args:
+        path, _, tag = arg.partition("=")
+        doc = json.load(open(path))
+        if "cells" in doc:
+            cells += doc["cells"]
+            continue
+        for m in doc["models"]:  # a model bundle trained with --split by-scene
+            for mode, _ in m["metrics"]["balanced_accuracy_by_decision"].items():
+                scenes = [{"scene": sc["scene"], "confusion": sc["by_decision"][mode]["confusion"]}
+                          for sc in m["metrics"].get("scenes", []) if mode in sc.get("by_decision", {})]
+                cells.append({"ok": True, "group": m["group"], "features": m["features"] + (f" [{tag}]" if tag else ""),
+                              "order": max(len(c["weights"]) for c in m["components"].values()), "floor": m["variance_floor"],
+                              "decision": mode, "scenes": scenes})
     by_group = {}
     for c in cells:
         if not c.get("ok"):
@@ -71,7 +84,7 @@ def main():
             continue
         best = causal[0][0]
         near = [x for x in causal if x[0] >= best - 0.002]
-        near.sort(key=lambda x: (FEATURE_SIZE.get(x[5]["features"], 9), x[5]["order"], -x[5]["floor"], -x[0]))
+        near.sort(key=lambda x: (FEATURE_SIZE.get(x[5]["features"].split(" [")[0], 9), x[5]["order"], -x[5]["floor"], -x[0]))
         chosen = near[0]
         for x in rows[:3] + ([chosen] if chosen not in rows[:3] else []):
             c = x[5]
