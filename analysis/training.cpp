@@ -101,9 +101,8 @@ struct GroupDefault {
 // the decision causal (online won in every group); within 0.002 the fewer features, the lower
 // order, the larger floor win (docs/learning.md#training-defaults). Nodal-full, 3 restarts. The
 // context features (the normal values' change over 3 steps, commanded v and omega, steps since
-// the contact began) won in six groups: they tell a wall being followed from a corner being met.
+// the contact began) won in seven groups: they tell a wall being followed from a corner being met.
 constexpr FeatureKind kShear = FeatureKind::NormalShear;
-constexpr FeatureKind kTouch = FeatureKind::NormalShearTouch;
 constexpr FeatureKind kContext = FeatureKind::Context;
 constexpr std::array<GroupDefault, kGroupCount> kGroupDefaults{{
     {SensorGroup::Front, kContext, 16, 0.01},
