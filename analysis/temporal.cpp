@@ -226,15 +226,15 @@ namespace {
 
 // The evidence of one step: its log-likelihoods, or no evidence (zeros) when every class is -inf
 // (or NaN), so that the chain alone carries the belief through an underflowing step.
-Eigen::VectorXd evidenceOf(const StepLikelihoods& steps, Eigen::Index t) {
-  Eigen::VectorXd l = steps.logLik.row(t).transpose();
+// Writes step t's evidence into `l` (sized already: no allocation per step).
+void evidenceInto(const StepLikelihoods& steps, Eigen::Index t, Eigen::VectorXd& l) {
   bool any = false;
   for (Eigen::Index j = 0; j < l.size(); ++j) {
-    if (std::isnan(l[j])) l[j] = kNegInf;
+    const double v = steps.logLik(t, j);
+    l[j] = std::isnan(v) ? kNegInf : v;
     any = any || l[j] > kNegInf;
   }
   if (!any) l.setZero();
-  return l;
 }
 
 // Normalises `joint` in place (log space); when it cannot be normalised (every entry -inf: the
@@ -265,21 +265,26 @@ HmmFilterResult hmmForward(const StepLikelihoods& steps, const TransitionModel& 
   result.decisions.resize(static_cast<std::size_t>(n));
   if (c == 0 || chain.classCount() != c) return result;
   const Eigen::VectorXd uniform = Eigen::VectorXd::Constant(c, -std::log(static_cast<double>(c)));
-  Eigen::VectorXd alpha;  // log posterior of the previous step; empty at an episode start
+  // Buffers sized once: the loop allocates nothing per step.
+  Eigen::VectorXd alpha(c);  // log posterior of the previous step
+  bool episode = false;      // whether alpha belongs to the current contact episode
   Eigen::VectorXd predicted(c);
+  Eigen::VectorXd joint(c);
   for (Eigen::Index t = 0; t < n; ++t) {
     if (!isObserved(steps, t)) {
-      alpha.resize(0);
+      episode = false;
       continue;
     }
-    if (alpha.size() == 0) {
+    if (!episode) {
       predicted = chain.logInitial;
     } else {
       hmmPredict(alpha, chain, predicted);
     }
-    Eigen::VectorXd joint = evidenceOf(steps, t) + predicted;
+    evidenceInto(steps, t, joint);
+    joint += predicted;
     normalise(joint, predicted, uniform);
     alpha = joint;
+    episode = true;
     result.logPosterior.row(t) = alpha.transpose();
     result.decisions[static_cast<std::size_t>(t)] = argmaxOf(alpha);
   }
@@ -291,7 +296,7 @@ HmmFilterResult hmmForwardBackward(const StepLikelihoods& steps, const Transitio
   const Eigen::Index n = steps.logLik.rows();
   const Eigen::Index c = steps.logLik.cols();
   if (c == 0 || chain.classCount() != c) return result;
-  Eigen::VectorXd beta(c), next(c), terms(c);
+  Eigen::VectorXd beta(c), next(c), terms(c), message(c);
   bool haveNext = false;  // whether step t+1 belongs to the same episode
   // Backwards over the steps: beta_t(i) = logsumexp_j(logA(i, j) + l_{t+1}(j) + beta_{t+1}(j)),
   // normalised at every step (any per-step constant cancels in gamma).
@@ -304,7 +309,8 @@ HmmFilterResult hmmForwardBackward(const StepLikelihoods& steps, const Transitio
       beta.setZero();
     } else {
       // beta_t(i) = mm + log(sum_j A(i, j) exp(message_j - mm)), mm = max message.
-      const Eigen::VectorXd message = evidenceOf(steps, t + 1) + next;
+      evidenceInto(steps, t + 1, message);
+      message += next;
       double mm = kNegInf;
       for (Eigen::Index j = 0; j < c; ++j)
         mm = std::max(mm, message[j]);

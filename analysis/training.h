@@ -37,9 +37,9 @@ struct GroupSettings {
 };
 
 // What `tactile train` and the workbench train with unless told otherwise: GMM, nodal-full,
-// k-means++ with 3 restarts, seed 1, and per group the feature kind (normal+shear, with the touch
-// flags where the group can see a dead path), order and variance floor (clamp) that did best on
-// four validation corpora apart from the ones scores are quoted on
+// k-means++ with 3 restarts, seed 1, the online decision, and per group the feature kind (mostly
+// the context kind), order and variance floor (clamp) with the best leave-one-scene-out score on
+// a selection corpus apart from the scenes scores are quoted on
 // (docs/learning.md#training-defaults).
 GroupSettings defaultGroupSettings();
 TrainSettings defaultTrainSettings(SensorGroup group);

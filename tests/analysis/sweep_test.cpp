@@ -52,17 +52,22 @@ TEST(Training, DefaultsAreEachGroupsOwnTunedGmm) {
   bool ordersDiffer = false;
   for (const GroupInfo& g : kSensorGroups) {
     const TrainSettings& s = d.of(g.group);
-    // The touch flags of F, L and R in every group that can see a dead path; the others choose.
+    // The touch flags of F, L and R (alone or within the context kind) in every group that can
+    // see a dead path: the flags are the dead-path rule itself; the others choose.
     const bool seesDeadPath = g.group == SensorGroup::Front || g.group == SensorGroup::Left ||
                               g.group == SensorGroup::Right ||
                               g.group == SensorGroup::FrontLeftCorner ||
                               g.group == SensorGroup::FrontRightCorner;
     if (seesDeadPath) {
-      EXPECT_EQ(s.features, FeatureKind::NormalShearTouch) << g.shortName;
+      EXPECT_TRUE(s.features == FeatureKind::NormalShearTouch || s.features == FeatureKind::Context)
+          << g.shortName;
     }
     EXPECT_TRUE(s.features == FeatureKind::NormalShearTouch ||
-                s.features == FeatureKind::NormalShear)
+                s.features == FeatureKind::NormalShear || s.features == FeatureKind::Context)
         << g.shortName;
+    // A model's default decision is one a navigator may use.
+    EXPECT_TRUE(isCausal(s.decision)) << g.shortName;
+    EXPECT_EQ(s.decision, DecisionMode::Online) << g.shortName;
     EXPECT_EQ(s.classifier.method, ClassifierMethod::Gmm) << g.shortName;
     EXPECT_EQ(s.classifier.gmm.form, CovarianceForm::NodalFull) << g.shortName;
     EXPECT_EQ(s.classifier.gmm.restarts, 3) << g.shortName;

@@ -191,6 +191,41 @@ TEST(OnlineDecider, AgreesWithTheWholeRunOnlineDecision) {
   }
 }
 
+// classifyRun evaluates a long run's contact rows in chunks; every step's log-likelihoods and
+// per-step class equal those of the whole feature matrix evaluated at once, across chunk edges.
+TEST(ClassifyRun, ChunkedEvaluationEqualsTheWholeMatrixAtOnce) {
+  Runs train = makeRuns({"a", "b"}, 1500);
+  TrainJob job;
+  job.runs = train.labelled;
+  job.runRefs = train.refs;
+  job.settings = quick();
+  job.groups = {SensorGroup::Left};
+  auto out = trainAndEvaluate(job);
+  ASSERT_TRUE(out.ok()) << out.errorText();
+  const RunData run = testdata::makeLabelledRun(30000, 4242);
+  const RunClassification r = classifyRun(run, out->bundle, {});
+  const GroupClassification& gc = r.groups[static_cast<std::size_t>(groupIndex(SensorGroup::Left))];
+  ASSERT_NE(gc.model, nullptr);
+  const GroupSteps gs = extractGroupSteps(run, SensorGroup::Left, gc.model->features);
+  Eigen::MatrixXd all;
+  gc.model->classifier.logLikelihoods(gs.features, all);
+  const std::vector<int> pred = gc.model->classifier.predictFromLogLikelihoods(all);
+  std::size_t contact = 0;
+  for (std::size_t t = 0; t < run.stepCount(); ++t) {
+    if (gs.isZero[t]) {
+      EXPECT_FALSE(gc.predicted[t].has_value()) << t;
+      continue;
+    }
+    ++contact;
+    for (Eigen::Index c = 0; c < all.cols(); ++c)
+      ASSERT_EQ(gc.logLikelihoods(static_cast<Eigen::Index>(t), c),
+                all(static_cast<Eigen::Index>(t), c))
+          << t;
+    ASSERT_EQ(gc.predicted[t], pred[t]) << t;
+  }
+  EXPECT_GT(contact, 3u * 4096u);  // several chunks
+}
+
 // Context features from a run equal those the decider computes from its kept history.
 TEST(ContextFeatures, RunAndStreamAgree) {
   const RunData run = testdata::makeLabelledRun(200, 5);

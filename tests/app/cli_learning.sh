@@ -83,18 +83,27 @@ for key in '"dropped_components":' '"neg_inf_rows":' '"mean_loglik":' '"warnings
 done
 lacks train.json '"dropped_components":0'
 # Unset train options keep each group's own default; a given one applies to every group.
-# (RRC, not F: a group needs two classes with enough rows, and F only touches walls here;
+# (RRC and FRC, not F: a group needs two classes with enough rows, and F only touches walls here;
 # --min-rows 1: these short runs give RRC fewer rows than the default minimum of 20.)
-"$T" train --runs runs/run_0000.csv runs/run_0001.csv --groups R,RRC --order 4 --min-rows 1 \
+"$T" train --runs runs/run_0000.csv runs/run_0001.csv --groups R,RRC,FRC --order 4 --min-rows 1 \
   --out d.json > /dev/null 2>&1 || fail "train --order 4 exited $?"
 "$T" report d.json > d.txt || fail "report exited $?"
-grep -Eq '^R +normal\+shear\+touch +gmm +nodal-full +4 +0\.1 ' d.txt || fail "R defaults: $(cat d.txt)"
-grep -Eq '^RRC +normal\+shear\+touch +gmm +nodal-full +4 +0\.01 ' d.txt || fail "RRC defaults: $(cat d.txt)"
+grep -Eq '^R +normal\+shear\+touch\+context +gmm +nodal-full +4 +0\.01 ' d.txt || fail "R defaults: $(cat d.txt)"
+# RRC's and FRC's defaults (context features) may need more rows per class than these short runs
+# have; when they train, they keep their own kind and floor (FRC's floor differs from R's).
+if grep -q '^RRC ' d.txt; then
+  grep -Eq '^RRC +normal\+shear\+touch\+context +gmm +nodal-full +4 +0\.01 ' d.txt ||
+    fail "RRC defaults: $(cat d.txt)"
+fi
+if grep -q '^FRC ' d.txt; then
+  grep -Eq '^FRC +normal\+shear\+touch\+context +gmm +nodal-full +4 +(0\.0001|1e-04) ' d.txt ||
+    fail "FRC defaults: $(cat d.txt)"
+fi
 "$T" train --runs runs/run_0000.csv runs/run_0001.csv --groups R,RRC --floor 0.5 --cov nodal-diag \
   --features normal --min-rows 1 --out e.json > /dev/null 2>&1 || fail "train --floor exited $?"
 "$T" report e.json > e.txt || fail "report exited $?"
-grep -Eq '^R +normal +gmm +nodal-diag +16 +0\.5 ' e.txt || fail "R overridden: $(cat e.txt)"
-grep -Eq '^RRC +normal +gmm +nodal-diag +16 +0\.5 ' e.txt || fail "RRC overridden: $(cat e.txt)"
+grep -Eq '^R +normal +gmm +nodal-diag +8 +0\.5 ' e.txt || fail "R overridden: $(cat e.txt)"
+grep -Eq '^RRC +normal +gmm +nodal-diag +8 +0\.5 ' e.txt || fail "RRC overridden: $(cat e.txt)"
 "$T" sweep --runs runs/run_0000.csv runs/run_0001.csv --groups R --orders 1,64 \
   --covs nodal-diag --floors 0.03 --out s.json --json > sweep.json || fail "sweep exited $?"
 has sweep.json '"warnings":'
