@@ -58,6 +58,31 @@ void writeCommandFile(const QString& path, std::size_t steps, double v, double o
   if (!written) qFatal("%s", written.errorText().c_str());
 }
 
+// Starts the real workbench on `db` with `args`, waits until the database holds at least
+// `minSteps` steps of one run, then kills it with SIGKILL. Returns the steps seen before the kill
+// (fewer than `minSteps` when the window stored too few within 30 s; -1 when the process failed).
+std::int64_t killWorkbenchAfterSteps(const QTemporaryDir& dir, const QString& db,
+                                     const QStringList& args, std::int64_t minSteps) {
+  QProcess child;
+  QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
+  env.insert(QStringLiteral("QT_QPA_PLATFORM"), QStringLiteral("offscreen"));
+  env.insert(QStringLiteral("HOME"), dir.path());  // its own settings
+  env.insert(QStringLiteral("XDG_CONFIG_HOME"), dir.filePath(QStringLiteral("config")));
+  child.setProcessEnvironment(env);
+  child.start(QStringLiteral(TACTILE_WORKBENCH), QStringList{QStringLiteral("--db"), db} + args);
+  if (!child.waitForStarted(10000)) return -1;
+  auto ws = openWorkspace(db);
+  std::int64_t seen = 0;
+  for (int i = 0; i < 300 && seen < minSteps; ++i) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(100));
+    auto runs = ws->database().listRuns();
+    if (runs.ok() && !runs->empty()) seen = runs->front().stepCount;
+  }
+  if (::kill(static_cast<pid_t>(child.processId()), SIGKILL) != 0) return -1;
+  if (!child.waitForFinished(10000) || child.exitStatus() != QProcess::CrashExit) return -1;
+  return seen;
+}
+
 }  // namespace
 
 class SimWindowTest : public QObject {
@@ -315,28 +340,13 @@ class SimWindowTest : public QObject {
     const QString commands = dir.filePath(QStringLiteral("commands.csv"));
     writeCommandFile(commands, 20000, 30, 0.25);
     { auto ws = openWorkspace(db); }  // the database exists before the window opens it
-    QProcess child;
-    QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
-    env.insert(QStringLiteral("QT_QPA_PLATFORM"), QStringLiteral("offscreen"));
-    env.insert(QStringLiteral("HOME"), dir.path());  // its own settings
-    env.insert(QStringLiteral("XDG_CONFIG_HOME"), dir.filePath(QStringLiteral("config")));
-    child.setProcessEnvironment(env);
-    child.start(
-        QStringLiteral(TACTILE_WORKBENCH),
-        {QStringLiteral("--db"), db, QStringLiteral("--simulate"), QStringLiteral("practice"),
-         QStringLiteral("--commands"), commands, QStringLiteral("--rate"), QStringLiteral("100")});
-    QVERIFY(child.waitForStarted(10000));
-    auto ws = openWorkspace(db);
-    std::int64_t seen = 0;
-    for (int i = 0; i < 300 && seen < 60; ++i) {
-      std::this_thread::sleep_for(std::chrono::milliseconds(100));
-      auto runs = ws->database().listRuns();
-      if (runs.ok() && !runs->empty()) seen = runs->front().stepCount;
-    }
+    const std::int64_t seen = killWorkbenchAfterSteps(
+        dir, db,
+        {QStringLiteral("--simulate"), QStringLiteral("practice"), QStringLiteral("--commands"),
+         commands, QStringLiteral("--rate"), QStringLiteral("100")},
+        60);
     QVERIFY2(seen >= 60, "the window stored no steps");
-    QCOMPARE(::kill(static_cast<pid_t>(child.processId()), SIGKILL), 0);
-    QVERIFY(child.waitForFinished(10000));
-    QCOMPARE(child.exitStatus(), QProcess::CrashExit);
+    auto ws = openWorkspace(db);
 
     auto runs = ws->database().listRuns();
     QVERIFY(runs.ok());
@@ -366,28 +376,14 @@ class SimWindowTest : public QObject {
     QTemporaryDir dir;
     const QString db = dir.filePath(QStringLiteral("kill-nav.db"));
     { auto ws = openWorkspace(db); }  // no model stored: the navigator with the bumper
-    QProcess child;
-    QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
-    env.insert(QStringLiteral("QT_QPA_PLATFORM"), QStringLiteral("offscreen"));
-    env.insert(QStringLiteral("HOME"), dir.path());
-    env.insert(QStringLiteral("XDG_CONFIG_HOME"), dir.filePath(QStringLiteral("config")));
-    child.setProcessEnvironment(env);
-    child.start(
-        QStringLiteral(TACTILE_WORKBENCH),
-        {QStringLiteral("--db"), db, QStringLiteral("--simulate"), QStringLiteral("chapter5"),
-         QStringLiteral("--mode"), QStringLiteral("autonomous"), QStringLiteral("--seed"),
-         QStringLiteral("9"), QStringLiteral("--rate"), QStringLiteral("50")});
-    QVERIFY(child.waitForStarted(10000));
-    auto ws = openWorkspace(db);
-    std::int64_t seen = 0;
-    for (int i = 0; i < 300 && seen < 40; ++i) {
-      std::this_thread::sleep_for(std::chrono::milliseconds(100));
-      auto runs = ws->database().listRuns();
-      if (runs.ok() && !runs->empty()) seen = runs->front().stepCount;
-    }
+    const std::int64_t seen = killWorkbenchAfterSteps(
+        dir, db,
+        {QStringLiteral("--simulate"), QStringLiteral("chapter5"), QStringLiteral("--mode"),
+         QStringLiteral("autonomous"), QStringLiteral("--seed"), QStringLiteral("9"),
+         QStringLiteral("--rate"), QStringLiteral("50")},
+        40);
     QVERIFY2(seen >= 40, "the window stored no steps");
-    QCOMPARE(::kill(static_cast<pid_t>(child.processId()), SIGKILL), 0);
-    QVERIFY(child.waitForFinished(10000));
+    auto ws = openWorkspace(db);
 
     auto runs = ws->database().listRuns();
     QVERIFY(runs.ok());
