@@ -5,14 +5,15 @@
 
 #include "analysis/metrics.h"
 #include "analysis/report.h"
+#include "tests/analysis/class_shorthand.h"
 #include "tests/analysis/learn_test_data.h"
 
 namespace tactile::analysis {
 namespace {
 
-constexpr ContactClass W = ContactClass::Wall;
-constexpr ContactClass C = ContactClass::Corner;
-constexpr ContactClass L = ContactClass::LeavingWall;
+using shorthand::C;
+using shorthand::L;
+using shorthand::W;
 
 ConfusionMatrix example() {
   // truth W W W C C L, predicted W W C C W L

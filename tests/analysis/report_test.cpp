@@ -17,6 +17,7 @@
 #include "analysis/report.h"
 #include "analysis/report_svg.h"
 #include "analysis/sweep.h"
+#include "tests/analysis/class_shorthand.h"
 #include "tests/analysis/learn_test_data.h"
 
 namespace tactile::analysis {
@@ -56,9 +57,9 @@ SweepCellResult cellWith(SensorGroup group, int order, double floor, double seco
   return r;
 }
 
-constexpr ContactClass W = ContactClass::Wall;
-constexpr ContactClass C = ContactClass::Corner;
-constexpr ContactClass L = ContactClass::LeavingWall;
+using shorthand::C;
+using shorthand::L;
+using shorthand::W;
 
 SweepResult handSweep() {
   SweepResult s;
