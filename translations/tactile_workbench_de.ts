@@ -1736,6 +1736,34 @@ pausiert: „Abspielen“ (P) lässt den Navigator fahren, „Schritt“ (N) mac
         <source>Predict ms</source>
         <translation>Vorhersage ms</translation>
     </message>
+    <message>
+        <source>%1: %2 test steps%3</source>
+        <translation>%1: %2 Testschritte%3</translation>
+    </message>
+    <message>
+        <source> (too few)</source>
+        <translation> (zu wenige)</translation>
+    </message>
+    <message>
+        <source>none</source>
+        <translation>keine</translation>
+    </message>
+    <message>
+        <source>%1 (rarest %2, too few)</source>
+        <translation>%1 (seltenste %2, zu wenige)</translation>
+    </message>
+    <message>
+        <source>%1 (rarest %2)</source>
+        <translation>%1 (seltenste %2)</translation>
+    </message>
+    <message>
+        <source>Decision</source>
+        <translation>Entscheidung</translation>
+    </message>
+    <message>
+        <source>Test steps</source>
+        <translation>Testschritte</translation>
+    </message>
 </context>
 <context>
     <name>tactile::gui::SweepPlot</name>
@@ -1889,14 +1917,6 @@ Zelle %1 (zum Auswählen klicken)</translation>
         <translation>Diese Zelle wurde nicht bewertet: Die Testläufe haben keine gelabelten Zeilen ihrer Gruppe.</translation>
     </message>
     <message>
-        <source>Group %1, GMM %2, order %3, variance floor %4, %5 features, seed %6</source>
-        <translation>Gruppe %1, GMM %2, Ordnung %3, Varianzuntergrenze %4, %5 Merkmale, Seed %6</translation>
-    </message>
-    <message>
-        <source>Group %1, %2, variance floor %3, %4 features, seed %5</source>
-        <translation>Gruppe %1, %2, Varianzuntergrenze %3, %4 Merkmale, Seed %5</translation>
-    </message>
-    <message>
         <source>Sweep %1: %2 cells, %3 fitted, %4 failed; no model is stored (Store Model of Cell stores one)</source>
         <translation>Sweep %1: %2 Zellen, %3 angepasst, %4 fehlgeschlagen; kein Modell gespeichert („Modell der Zelle speichern“ speichert eines)</translation>
     </message>
@@ -1919,6 +1939,26 @@ Zelle %1 (zum Auswählen klicken)</translation>
     <message>
         <source>Recall per class of this cell (of the steps of a class, the share predicted as it), %</source>
         <translation>Trefferquote je Klasse dieser Zelle (von den Schritten einer Klasse der Anteil, der als diese Klasse vorhergesagt wird), %</translation>
+    </message>
+    <message>
+        <source>Group %1, GMM %2, order %3, variance floor %4, %5 features, seed %6, %7 decision</source>
+        <translation>Gruppe %1, GMM %2, Ordnung %3, Varianzuntergrenze %4, %5 Merkmale, Seed %6, Entscheidung %7</translation>
+    </message>
+    <message>
+        <source>Group %1, %2, variance floor %3, %4 features, seed %5, %6 decision</source>
+        <translation>Gruppe %1, %2, Varianzuntergrenze %3, %4 Merkmale, Seed %5, Entscheidung %6</translation>
+    </message>
+    <message>
+        <source>step: the per-step argmax; online: the forward filter (causal); offline: forward-backward over the whole contact. Cells that differ only in it share one fit.</source>
+        <translation>step: das Argmax je Schritt; online: der Vorwärtsfilter (kausal); offline: Vorwärts-Rückwärts über den ganzen Kontakt. Zellen, die sich nur darin unterscheiden, teilen sich eine Anpassung.</translation>
+    </message>
+    <message>
+        <source>Decision:</source>
+        <translation>Entscheidung:</translation>
+    </message>
+    <message>
+        <source>All decisions</source>
+        <translation>Alle Entscheidungen</translation>
     </message>
 </context>
 <context>

@@ -1727,6 +1727,34 @@ paused: Play (P) lets the navigator drive, Step (N) takes one step</source>
         <source>Status</source>
         <translation>状态</translation>
     </message>
+    <message>
+        <source>%1: %2 test steps%3</source>
+        <translation>%1：%2 个测试步%3</translation>
+    </message>
+    <message>
+        <source> (too few)</source>
+        <translation>（过少）</translation>
+    </message>
+    <message>
+        <source>none</source>
+        <translation>无</translation>
+    </message>
+    <message>
+        <source>%1 (rarest %2, too few)</source>
+        <translation>%1（最少的类 %2，过少）</translation>
+    </message>
+    <message>
+        <source>%1 (rarest %2)</source>
+        <translation>%1（最少的类 %2）</translation>
+    </message>
+    <message>
+        <source>Decision</source>
+        <translation>决策</translation>
+    </message>
+    <message>
+        <source>Test steps</source>
+        <translation>测试步数</translation>
+    </message>
 </context>
 <context>
     <name>tactile::gui::SweepPlot</name>
@@ -1811,14 +1839,6 @@ cell %1 (click to select)</source>
 </context>
 <context>
     <name>tactile::gui::SweepResultsView</name>
-    <message>
-        <source>Group %1, GMM %2, order %3, variance floor %4, %5 features, seed %6</source>
-        <translation>%1 组，GMM %2，阶数 %3，方差下限 %4，%5 个特征，随机种子 %6</translation>
-    </message>
-    <message>
-        <source>Group %1, %2, variance floor %3, %4 features, seed %5</source>
-        <translation>%1 组，%2，方差下限 %3，%4 个特征，随机种子 %5</translation>
-    </message>
     <message>
         <source>No sweep</source>
         <translation>无扫描</translation>
@@ -1910,6 +1930,26 @@ cell %1 (click to select)</source>
     <message>
         <source>Recall per class of this cell (of the steps of a class, the share predicted as it), %</source>
         <translation>本单元各类别召回率（某类别的步中被预测为该类别的比例），%</translation>
+    </message>
+    <message>
+        <source>Group %1, GMM %2, order %3, variance floor %4, %5 features, seed %6, %7 decision</source>
+        <translation>%1 组，GMM %2，阶数 %3，方差下限 %4，%5 个特征，随机种子 %6，%7 决策</translation>
+    </message>
+    <message>
+        <source>Group %1, %2, variance floor %3, %4 features, seed %5, %6 decision</source>
+        <translation>%1 组，%2，方差下限 %3，%4 个特征，随机种子 %5，%6 决策</translation>
+    </message>
+    <message>
+        <source>step: the per-step argmax; online: the forward filter (causal); offline: forward-backward over the whole contact. Cells that differ only in it share one fit.</source>
+        <translation>step：逐步取最大后验；online：前向滤波（因果）；offline：对整个接触做前向-后向。只在此项上不同的单元共用一次拟合。</translation>
+    </message>
+    <message>
+        <source>Decision:</source>
+        <translation>决策：</translation>
+    </message>
+    <message>
+        <source>All decisions</source>
+        <translation>全部决策</translation>
     </message>
 </context>
 <context>
