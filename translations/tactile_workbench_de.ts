@@ -2237,14 +2237,6 @@ grau: blockiert</translation>
         <translation>Läufe:</translation>
     </message>
     <message>
-        <source>Score on the test runs</source>
-        <translation>Auf den Testläufen bewerten</translation>
-    </message>
-    <message>
-        <source>Leave one run out (training only)</source>
-        <translation>Je einen Lauf auslassen (nur Training)</translation>
-    </message>
-    <message>
         <source>Split:</source>
         <translation>Aufteilung:</translation>
     </message>
@@ -2468,14 +2460,6 @@ grau: blockiert</translation>
         <translation>übersprungen: %1</translation>
     </message>
     <message>
-        <source>Leave one scene out</source>
-        <translation>Je eine Szene auslassen</translation>
-    </message>
-    <message>
-        <source>Leave one scene out: each scene&apos;s runs (marked for training) are scored by models trained without that scene; no test runs</source>
-        <translation>Je eine Szene auslassen: Die (zum Training markierten) Läufe jeder Szene werden mit Modellen bewertet, die ohne diese Szene trainiert wurden; keine Testläufe</translation>
-    </message>
-    <message>
         <source>Decision modes: step = each step alone; online = HMM forward filter over the contact (causal, what a navigator may use); offline = forward-backward over the whole contact. A sweep scores every ticked mode (cells differing only here share one fit); Train model always scores all three and its models decide online by default</source>
         <translation>Entscheidungsmodi: step = jeder Schritt für sich; online = HMM-Vorwärtsfilter über den Kontakt (kausal, was ein Navigator nutzen darf); offline = Vorwärts-Rückwärts über den ganzen Kontakt. Ein Sweep bewertet jeden angehakten Modus (Zellen, die sich nur hierin unterscheiden, teilen eine Anpassung); „Modell trainieren“ bewertet immer alle drei, und seine Modelle entscheiden standardmäßig online</translation>
     </message>
@@ -2514,6 +2498,22 @@ grau: blockiert</translation>
     <message>
         <source>no test data</source>
         <translation>keine Testdaten</translation>
+    </message>
+    <message>
+        <source>score on the test runs</source>
+        <translation>auf den Testläufen bewerten</translation>
+    </message>
+    <message>
+        <source>leave one scene out: each scene scored by models trained without it</source>
+        <translation>je eine Szene auslassen: jede Szene mit Modellen bewertet, die ohne sie trainiert wurden</translation>
+    </message>
+    <message>
+        <source>leave one run out (Train model only; a sweep cannot)</source>
+        <translation>je einen Lauf auslassen (nur „Modell trainieren“; ein Sweep kann es nicht)</translation>
+    </message>
+    <message>
+        <source>by-run: the runs marked Test are scored (the command line&apos;s default); by-scene: each scene&apos;s runs (marked for training) are scored by models trained without that scene, no test runs; leave-one-run-out: each run scored by a model trained on the others (Train model only)</source>
+        <translation>by-run: die als Test markierten Läufe werden bewertet (Vorgabe der Kommandozeile); by-scene: die (zum Training markierten) Läufe jeder Szene werden mit Modellen bewertet, die ohne diese Szene trainiert wurden, keine Testläufe; leave-one-run-out: jeder Lauf mit einem auf den anderen trainierten Modell bewertet (nur „Modell trainieren“)</translation>
     </message>
 </context>
 <context>

@@ -2228,14 +2228,6 @@ grey: blocked</source>
         <translation>运行：</translation>
     </message>
     <message>
-        <source>Score on the test runs</source>
-        <translation>在测试运行上评分</translation>
-    </message>
-    <message>
-        <source>Leave one run out (training only)</source>
-        <translation>留一运行交叉验证（仅训练运行）</translation>
-    </message>
-    <message>
         <source>Split:</source>
         <translation>划分：</translation>
     </message>
@@ -2454,14 +2446,6 @@ grey: blocked</source>
         <translation>已跳过：%1</translation>
     </message>
     <message>
-        <source>Leave one scene out</source>
-        <translation>留一场景交叉验证</translation>
-    </message>
-    <message>
-        <source>Leave one scene out: each scene&apos;s runs (marked for training) are scored by models trained without that scene; no test runs</source>
-        <translation>留一场景交叉验证：每个场景的运行（标记为训练的）由不含该场景训练出的模型评分；不使用测试运行</translation>
-    </message>
-    <message>
         <source>Decision modes: step = each step alone; online = HMM forward filter over the contact (causal, what a navigator may use); offline = forward-backward over the whole contact. A sweep scores every ticked mode (cells differing only here share one fit); Train model always scores all three and its models decide online by default</source>
         <translation>判定模式：step = 每步单独判定；online = 在接触过程中做 HMM 前向滤波（因果，导航器可用的方式）；offline = 对整个接触做前向-后向计算。扫描会为每个勾选的模式评分（仅在此处不同的单元共用一次拟合）；“训练模型”总是为三种模式都评分，其模型默认在线判定</translation>
     </message>
@@ -2500,6 +2484,22 @@ grey: blocked</source>
     <message>
         <source>no test data</source>
         <translation>没有测试数据</translation>
+    </message>
+    <message>
+        <source>score on the test runs</source>
+        <translation>在测试运行上评分</translation>
+    </message>
+    <message>
+        <source>leave one scene out: each scene scored by models trained without it</source>
+        <translation>留一场景：每个场景由不含该场景训练的模型评分</translation>
+    </message>
+    <message>
+        <source>leave one run out (Train model only; a sweep cannot)</source>
+        <translation>留一运行（仅限“训练模型”；扫描不支持）</translation>
+    </message>
+    <message>
+        <source>by-run: the runs marked Test are scored (the command line&apos;s default); by-scene: each scene&apos;s runs (marked for training) are scored by models trained without that scene, no test runs; leave-one-run-out: each run scored by a model trained on the others (Train model only)</source>
+        <translation>by-run：对标记为测试的运行评分（命令行的默认值）；by-scene：每个场景（标记为训练）的运行由不含该场景训练的模型评分，无测试运行；leave-one-run-out：每个运行由在其余运行上训练的模型评分（仅限“训练模型”）</translation>
     </message>
 </context>
 <context>
