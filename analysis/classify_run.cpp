@@ -5,12 +5,15 @@
 #include <utility>
 
 #include "analysis/features.h"
+#include "analysis/gaussian_mixture.h"
+#include "analysis/gmm_kernels.h"
 
 namespace tactile::analysis {
 
 namespace {
-// Contact rows evaluated at once by classifyRun.
-constexpr Eigen::Index kClassifyChunkRows = 4096;
+// Steps of the run that classifyRun walks through with every group before moving on (their sensor
+// values, 88 doubles a step, stay in cache between the groups).
+constexpr std::size_t kClassifySliceSteps = 512;
 constexpr std::array<std::pair<TemporalRule, std::string_view>, 4> kRuleNames{{
     {TemporalRule::None, "none"},
     {TemporalRule::Count, "count"},
@@ -45,58 +48,130 @@ std::string GroupClassification::stepClassName(std::size_t step) const {
   return nameOf(predicted, step);
 }
 
+namespace {
+
+// One group's evaluation while classifyRun walks the run: contact rows gather, their features
+// computed straight into a column-major block of kDensityBlockRows rows, which is evaluated when
+// full (and at the end). Buffers are sized once; nothing is allocated per step.
+struct GroupPass {
+  GroupClassification* out = nullptr;
+  SensorGroup group = SensorGroup::Front;
+  FeatureKind kind = FeatureKind::Normal;
+  int dims = 0;
+  int classes = 0;
+  int contactSteps = 0;   // steps of the current contact before this one (capped)
+  Eigen::MatrixXd block;  // kDensityBlockRows x dims, column-major
+  std::vector<std::size_t> blockSteps;
+  std::vector<double> row;
+  Eigen::MatrixXd ll;  // kDensityBlockRows x classes
+  GaussianMixture::BlockScratch scratch;
+
+  void evaluate() {
+    const Eigen::Index rows = static_cast<Eigen::Index>(blockSteps.size());
+    if (rows == 0) return;
+    const ClassModelSet& classifier = out->model->classifier;
+    for (int c = 0; c < classes; ++c)
+      classifier.model(c).blockLogDensities(block.data(), kDensityBlockRows, rows, ll.col(c).data(),
+                                            scratch);
+    const Eigen::VectorXd& logPriors = classifier.logPriors();
+    Eigen::MatrixXd& target = out->logLikelihoods;
+    for (Eigen::Index i = 0; i < rows; ++i) {
+      const auto t = static_cast<Eigen::Index>(blockSteps[static_cast<std::size_t>(i)]);
+      // The argmax of ClassModelSet::predictFromLogLikelihoods: strict, so ties keep the lowest
+      // index and NaN never wins.
+      int best = 0;
+      double bestScore = -std::numeric_limits<double>::infinity();
+      for (int c = 0; c < classes; ++c) {
+        const double v = ll(i, c);
+        target(t, c) = v;
+        const double score = v + logPriors(c);
+        if (score > bestScore) {
+          bestScore = score;
+          best = c;
+        }
+      }
+      out->predicted[static_cast<std::size_t>(t)] = best;
+    }
+    blockSteps.clear();
+  }
+};
+
+}  // namespace
+
 RunClassification classifyRun(const RunData& run, const ModelBundle& bundle,
                               const ClassifyOptions& options) {
   RunClassification out;
   const std::size_t steps = run.stepCount();
   out.steps = steps;
+  std::vector<GroupPass> passes;
   for (const GroupInfo& info : kSensorGroups) {
     GroupClassification& go = out.groups[static_cast<std::size_t>(groupIndex(info.group))];
     go.model = bundle.find(info.group);
     go.noContactRule.resize(steps);
-    for (std::size_t t = 0; t < steps; ++t)
-      go.noContactRule[t] = groupIsZero(run, t, info.group) ? 1 : 0;
     go.predicted.assign(steps, std::nullopt);
+    GroupPass p;
+    p.out = &go;
+    p.group = info.group;
+    if (go.model != nullptr) {
+      p.kind = go.model->features;
+      p.dims = featureDimension(info.group, p.kind);
+      p.classes = go.model->classifier.classCount();
+      go.logLikelihoods = Eigen::MatrixXd::Constant(static_cast<Eigen::Index>(steps), p.classes,
+                                                    -std::numeric_limits<double>::infinity());
+      p.block.resize(kDensityBlockRows, p.dims);
+      p.blockSteps.reserve(static_cast<std::size_t>(kDensityBlockRows));
+      p.row.resize(static_cast<std::size_t>(p.dims));
+      p.ll.resize(kDensityBlockRows, p.classes);
+    }
+    passes.push_back(std::move(p));
+  }
+  // The run in slices of steps, every group over each slice in turn: a slice's sensor values are
+  // read from memory once for all groups (the context features and touch flags of one group read
+  // the values of others). Each row's log-likelihoods depend neither on the slicing nor on the
+  // blocks (the density is evaluated row by row).
+  for (std::size_t s0 = 0; s0 < steps; s0 += kClassifySliceSteps) {
+    const std::size_t s1 = std::min(steps, s0 + kClassifySliceSteps);
+    for (GroupPass& p : passes) {
+      std::vector<std::uint8_t>& zero = p.out->noContactRule;
+      const bool modelled = p.out->model != nullptr;
+      for (std::size_t t = s0; t < s1; ++t) {
+        const double* values = run.stepSensors(t);
+        const bool isZero = groupIsZero(values, p.group);
+        zero[t] = isZero ? 1 : 0;
+        if (isZero) {
+          p.contactSteps = 0;
+          continue;
+        }
+        if (modelled) {
+          // The context of stepContextOf, kept as the walk goes (contact steps counted here
+          // instead of back from every step).
+          StepContext context;
+          context.values = values;
+          context.laggedValues = t >= static_cast<std::size_t>(kContextLag)
+                                     ? run.stepSensors(t - static_cast<std::size_t>(kContextLag))
+                                     : nullptr;
+          context.v = t < run.v.size() ? run.v[t] : 0.0;
+          context.omega = t < run.omega.size() ? run.omega[t] : 0.0;
+          context.contactSteps = p.contactSteps;
+          groupFeatures(context, p.group, p.kind, p.row.data());
+          const Eigen::Index i = static_cast<Eigen::Index>(p.blockSteps.size());
+          double* to = p.block.data() + i;
+          for (int d = 0; d < p.dims; ++d)
+            to[d * kDensityBlockRows] = p.row[static_cast<std::size_t>(d)];
+          p.blockSteps.push_back(t);
+          if (p.blockSteps.size() == static_cast<std::size_t>(kDensityBlockRows)) p.evaluate();
+        }
+        if (p.contactSteps < kContextCap) ++p.contactSteps;
+      }
+    }
+  }
+  for (GroupPass& p : passes)
+    if (p.out->model != nullptr) p.evaluate();
+
+  for (const GroupInfo& info : kSensorGroups) {
+    GroupClassification& go = out.groups[static_cast<std::size_t>(groupIndex(info.group))];
     if (go.model == nullptr) continue;
-    const FeatureKind kind = go.model->features;
-    std::vector<Eigen::Index> contactRows;
-    for (std::size_t t = 0; t < steps; ++t) {
-      if (!go.noContactRule[t]) contactRows.push_back(static_cast<Eigen::Index>(t));
-    }
     const int classes = go.model->classifier.classCount();
-    go.logLikelihoods = Eigen::MatrixXd::Constant(static_cast<Eigen::Index>(steps), classes,
-                                                  -std::numeric_limits<double>::infinity());
-    // The contact rows in chunks, their features computed straight into the chunk: the
-    // evaluation's buffers stay a few MB whatever the run's length (a whole 1,000,000-step run at
-    // once, with a feature row for every step, spent more time faulting in and clearing fresh
-    // memory than evaluating densities). Each row's log-likelihoods do not depend on the chunking.
-    const Eigen::Index contact = static_cast<Eigen::Index>(contactRows.size());
-    const int dims = featureDimension(info.group, kind);
-    std::vector<double> row(static_cast<std::size_t>(dims));
-    Eigen::MatrixXd x;
-    Eigen::MatrixXd ll;
-    for (Eigen::Index start = 0; start < contact; start += kClassifyChunkRows) {
-      const Eigen::Index rows = std::min(kClassifyChunkRows, contact - start);
-      x.resize(rows, dims);
-      for (Eigen::Index i = 0; i < rows; ++i) {
-        groupFeatures(run,
-                      static_cast<std::size_t>(contactRows[static_cast<std::size_t>(start + i)]),
-                      info.group, kind, row.data());
-        for (int d = 0; d < dims; ++d)
-          x(i, d) = row[static_cast<std::size_t>(d)];
-      }
-      go.model->classifier.logLikelihoods(x, ll);
-      const std::vector<int> pred = go.model->classifier.predictFromLogLikelihoods(ll);
-      for (Eigen::Index c = 0; c < classes; ++c) {
-        const double* from = ll.col(c).data();
-        double* to = go.logLikelihoods.col(c).data();
-        for (Eigen::Index i = 0; i < rows; ++i)
-          to[contactRows[static_cast<std::size_t>(start + i)]] = from[i];
-      }
-      for (Eigen::Index i = 0; i < rows; ++i)
-        go.predicted[static_cast<std::size_t>(contactRows[static_cast<std::size_t>(start + i)])] =
-            pred[static_cast<std::size_t>(i)];
-    }
     // The likelihoods lend themselves to the deciders and come back below (no copy).
     StepLikelihoods sl{std::move(go.logLikelihoods), {}, go.model->classifier.logPriors()};
     sl.observed.resize(steps);

@@ -150,6 +150,37 @@ void GaussianMixture::logDensities(const Eigen::MatrixXd& samples, Eigen::Vector
   }
 }
 
+void GaussianMixture::blockLogDensities(const double* x, Eigen::Index ldx, Eigen::Index rows,
+                                        double* out, BlockScratch& scratch) const {
+  const int k = components();
+  const int d = dimension();
+  if (k == 0) {
+    for (Eigen::Index r = 0; r < rows; ++r)
+      out[r] = -std::numeric_limits<double>::infinity();
+    return;
+  }
+  if (rows <= 0) return;
+  if (scratch.centred.rows() != kDensityBlockRows || scratch.centred.cols() != d)
+    scratch.centred = Eigen::MatrixXd::Zero(kDensityBlockRows, d);
+  if (scratch.logp.rows() != kDensityBlockRows || scratch.logp.cols() != k)
+    scratch.logp.resize(kDensityBlockRows, k);
+  if (scratch.logSum.size() != kDensityBlockRows) scratch.logSum.resize(kDensityBlockRows);
+  const int ld = static_cast<int>(kDensityBlockRows);
+  for (int j = 0; j < d; ++j) {
+    const double c = centre_[j];
+    const double* from = x + j * ldx;
+    double* to = scratch.centred.col(j).data();
+    for (Eigen::Index r = 0; r < rows; ++r)
+      to[r] = from[r] - c;
+  }
+  blockComponentLogDensities(cache_, scratch.centred.data(), kDensityBlockRows, paddedRows(rows),
+                             scratch.logp.data(), ld);
+  blockLogSumExp(scratch.logp.data(), ld, paddedRows(rows), k, scratch.logSum.data(), nullptr,
+                 nullptr);
+  for (Eigen::Index r = 0; r < rows; ++r)
+    out[r] = scratch.logSum[r];
+}
+
 double GaussianMixture::logDensity(const Eigen::Ref<const Eigen::VectorXd>& x) const {
   if (components() == 0) return -std::numeric_limits<double>::infinity();
   Eigen::MatrixXd row = x.transpose();

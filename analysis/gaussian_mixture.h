@@ -66,6 +66,16 @@ class GaussianMixture {
   double logDensity(const Eigen::Ref<const Eigen::VectorXd>& x) const;
   // log p(x_n) for every row of samples (N x D) into out (resized to N). Blocked and vectorised.
   void logDensities(const Eigen::MatrixXd& samples, Eigen::VectorXd& out) const;
+  // Buffers of blockLogDensities, kept by the caller between calls (no allocation per block).
+  struct BlockScratch {
+    Eigen::MatrixXd centred;  // kDensityBlockRows x D
+    Eigen::MatrixXd logp;     // kDensityBlockRows x K
+    Eigen::VectorXd logSum;   // kDensityBlockRows
+  };
+  // log p(x_r) for `rows` <= kDensityBlockRows rows of a column-major block (element (r, j) at
+  // x[r + j * ldx]) into out[0 .. rows): the same arithmetic as logDensities, bit for bit.
+  void blockLogDensities(const double* x, Eigen::Index ldx, Eigen::Index rows, double* out,
+                         BlockScratch& scratch) const;
   // log w_i + log N(x_n | mu_i, Sigma_i) for every row and component: out is N x K.
   void weightedComponentLogDensities(const Eigen::MatrixXd& samples, Eigen::MatrixXd& out) const;
   // Posterior p(i | x) of each component for one sample (sums to 1; computed in log space).

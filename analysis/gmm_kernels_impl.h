@@ -223,6 +223,50 @@ struct VBuffer {
   V* p;
 };
 
+// Row vectors of eight rows evaluated together by the blocked full-covariance kernel below: two
+// where a vector is one register (AVX-512), one where it is split over several (the accumulators
+// would not fit in AVX2's or SSE's sixteen registers).
+constexpr int kBlockRowVectors = kParts == 1 ? 3 : 1;
+// Columns of the triangular product computed together.
+constexpr int kBlockColumns = 4;
+
+// Full covariance, runtime dimension: the Mahalanobis sums of `rowVectors` (1 or R) vectors of
+// eight rows, kBlockColumns columns of y = U^T z at a time, so that each broadcast coefficient of U
+// serves every row vector and each loaded z serves every column. Every y_j is summed over l in
+// the same order as the plain loop (l = 0, 1, ..., j) and |y|^2 over j in the same order, so the
+// result is bit for bit the plain kernel's.
+template <int R>
+void fullMahalanobisBlock(const V* const* z, const double* u, int d, V* acc) {
+  for (int q = 0; q < R; ++q)
+    acc[q] = zero();
+  for (int j0 = 0; j0 < d; j0 += kBlockColumns) {
+    const int jb = d - j0 < kBlockColumns ? d - j0 : kBlockColumns;
+    V y[R][kBlockColumns];
+    const double* col[kBlockColumns];
+    for (int a = 0; a < kBlockColumns; ++a)
+      col[a] = u + static_cast<std::ptrdiff_t>(j0 + (a < jb ? a : 0)) * d;
+    for (int q = 0; q < R; ++q)
+      for (int a = 0; a < kBlockColumns; ++a)
+        y[q][a] = z[q][0] * col[a][0];
+    // Rows l = 1 .. j0 belong to every column of the block.
+    for (int l = 1; l <= j0; ++l) {
+      for (int q = 0; q < R; ++q) {
+        const V zl = z[q][l];
+        for (int a = 0; a < kBlockColumns; ++a)
+          y[q][a] += zl * col[a][l];
+      }
+    }
+    // The triangle inside the block: column j0 + a also takes rows j0 + 1 .. j0 + a.
+    for (int a = 1; a < jb; ++a)
+      for (int l = j0 + 1; l <= j0 + a; ++l)
+        for (int q = 0; q < R; ++q)
+          y[q][a] += z[q][l] * col[a][l];
+    for (int a = 0; a < jb; ++a)
+      for (int q = 0; q < R; ++q)
+        acc[q] += y[q][a] * y[q][a];
+  }
+}
+
 // E-step kernel for dimension D (compile-time when D > 0, runtime d otherwise).
 template <int D>
 void logDensitiesKernel(const KernelDensityView& c, const double* x, std::ptrdiff_t ldx, int rows,
@@ -230,7 +274,7 @@ void logDensitiesKernel(const KernelDensityView& c, const double* x, std::ptrdif
   const int d = D > 0 ? D : c.dimension;
   const int k = c.components;
   constexpr int kMaxZ = D > 0 ? D : 16;
-  VBuffer zHeap(d > kMaxZ ? static_cast<std::size_t>(d) : 0);
+  VBuffer zHeap(D == 0 ? static_cast<std::size_t>(kBlockRowVectors * d) : 0);
   for (int i = 0; i < k; ++i) {
     const double* m = c.means + i;  // column-major K x D: m[j * k]
     const V logConstant = splat(c.logConstants[i]);
@@ -250,6 +294,29 @@ void logDensitiesKernel(const KernelDensityView& c, const double* x, std::ptrdif
       continue;
     }
     const double* u = c.upper + static_cast<std::ptrdiff_t>(c.nodal ? i : 0) * d * d;
+    if constexpr (D == 0) {
+      // Runtime dimension (the large ones): blocked over rows and columns.
+      V* zr[kBlockRowVectors];
+      for (int q = 0; q < kBlockRowVectors; ++q)
+        zr[q] = zHeap.p + static_cast<std::ptrdiff_t>(q) * d;
+      V acc[kBlockRowVectors];
+      int r = 0;
+      for (; r + kBlockRowVectors * kLanes <= rows; r += kBlockRowVectors * kLanes) {
+        for (int q = 0; q < kBlockRowVectors; ++q)
+          for (int j = 0; j < d; ++j)
+            zr[q][j] = loadV(x + j * ldx + r + q * kLanes) - m[j * k];
+        fullMahalanobisBlock<kBlockRowVectors>(zr, u, d, acc);
+        for (int q = 0; q < kBlockRowVectors; ++q)
+          storeV(o + r + q * kLanes, logConstant - 0.5 * acc[q]);
+      }
+      for (; r < rows; r += kLanes) {
+        for (int j = 0; j < d; ++j)
+          zr[0][j] = loadV(x + j * ldx + r) - m[j * k];
+        fullMahalanobisBlock<1>(zr, u, d, acc);
+        storeV(o + r, logConstant - 0.5 * acc[0]);
+      }
+      continue;
+    }
     V zStack[kMaxZ];
     V* z = d > kMaxZ ? zHeap.p : zStack;
     for (int r = 0; r < rows; r += kLanes) {

@@ -257,6 +257,101 @@ void normalise(Eigen::VectorXd& joint, const Eigen::VectorXd& fallback,
 
 }  // namespace
 
+namespace {
+
+// logSumExp over n contiguous values, the same arithmetic as logSumExp(Eigen::Ref).
+double logSumExpOf(const double* v, Eigen::Index n) {
+  if (n == 0) return kNegInf;
+  double m = v[0];
+  for (Eigen::Index i = 1; i < n; ++i)
+    m = std::max(m, v[i]);
+  if (!std::isfinite(m)) return m;
+  double sum = 0.0;
+  for (Eigen::Index i = 0; i < n; ++i)
+    sum += std::exp(v[i] - m);
+  return m + std::log(sum);
+}
+
+// The forward filter over raw per-class arrays (no Eigen temporaries per step): the arithmetic of
+// hmmPredict, evidenceInto and normalise, step for step, so the posteriors are bit for bit those
+// of the plain formulation. Fills decisions (n entries) and, when logPosterior is given, its rows.
+void forwardPass(const StepLikelihoods& steps, const TransitionModel& chain,
+                 Eigen::MatrixXd* logPosterior, Decisions& decisions) {
+  const Eigen::Index n = steps.logLik.rows();
+  const Eigen::Index c = steps.logLik.cols();
+  const auto cs = static_cast<std::size_t>(c);
+  // A(i, j) at a[i * c + j]: the cached probabilities, or exp of the logs as hmmPredict takes them.
+  const bool cached = chain.transition.rows() == c && chain.transition.cols() == c;
+  std::vector<double> a(cs * cs);
+  for (Eigen::Index i = 0; i < c; ++i)
+    for (Eigen::Index j = 0; j < c; ++j)
+      a[static_cast<std::size_t>(i * c + j)] =
+          cached ? chain.transition(i, j) : std::exp(chain.logTransition(i, j));
+  const double logUniform = -std::log(static_cast<double>(c));
+  std::vector<double> buffer(4 * cs);
+  double* alpha = buffer.data();  // log posterior of the previous step
+  double* predicted = alpha + c;  // log prediction of this step
+  double* joint = predicted + c;  // evidence + prediction, then normalised
+  double* weights = joint + c;    // exp(alpha - max alpha)
+  const double* logLik = steps.logLik.data();
+  bool episode = false;  // whether alpha belongs to the current contact episode
+  for (Eigen::Index t = 0; t < n; ++t) {
+    if (!isObserved(steps, t)) {
+      episode = false;
+      continue;
+    }
+    if (!episode) {
+      for (Eigen::Index j = 0; j < c; ++j)
+        predicted[j] = chain.logInitial[j];
+    } else {
+      double m = kNegInf;
+      for (Eigen::Index i = 0; i < c; ++i)
+        m = std::max(m, alpha[i]);
+      for (Eigen::Index i = 0; i < c; ++i)
+        weights[i] = std::exp(alpha[i] - m);
+      for (Eigen::Index j = 0; j < c; ++j) {
+        double sum = 0.0;
+        for (Eigen::Index i = 0; i < c; ++i)
+          sum += weights[i] * a[static_cast<std::size_t>(i * c + j)];
+        predicted[j] = sum > 0.0 ? m + std::log(sum) : kNegInf;
+      }
+    }
+    // The evidence (zeros when every class is -inf or NaN), then the prediction added.
+    bool any = false;
+    for (Eigen::Index j = 0; j < c; ++j) {
+      const double v = logLik[t + j * n];
+      joint[j] = std::isnan(v) ? kNegInf : v;
+      any = any || joint[j] > kNegInf;
+    }
+    if (!any)
+      for (Eigen::Index j = 0; j < c; ++j)
+        joint[j] = 0.0;
+    for (Eigen::Index j = 0; j < c; ++j)
+      joint[j] += predicted[j];
+    // Normalised; when it cannot be, the prediction normalised, else uniform.
+    const double z = logSumExpOf(joint, c);
+    if (std::isfinite(z)) {
+      for (Eigen::Index j = 0; j < c; ++j)
+        joint[j] -= z;
+    } else {
+      const double zf = logSumExpOf(predicted, c);
+      for (Eigen::Index j = 0; j < c; ++j)
+        joint[j] = std::isfinite(zf) ? predicted[j] - zf : logUniform;
+    }
+    std::swap(alpha, joint);
+    episode = true;
+    int best = 0;
+    for (Eigen::Index j = 1; j < c; ++j)
+      if (alpha[j] > alpha[best]) best = static_cast<int>(j);
+    decisions[static_cast<std::size_t>(t)] = best;
+    if (logPosterior != nullptr)
+      for (Eigen::Index j = 0; j < c; ++j)
+        (*logPosterior)(t, j) = alpha[j];
+  }
+}
+
+}  // namespace
+
 HmmFilterResult hmmForward(const StepLikelihoods& steps, const TransitionModel& chain) {
   const Eigen::Index n = steps.logLik.rows();
   const Eigen::Index c = steps.logLik.cols();
@@ -264,31 +359,16 @@ HmmFilterResult hmmForward(const StepLikelihoods& steps, const TransitionModel& 
   result.logPosterior = Eigen::MatrixXd::Constant(n, c, kNegInf);
   result.decisions.resize(static_cast<std::size_t>(n));
   if (c == 0 || chain.classCount() != c) return result;
-  const Eigen::VectorXd uniform = Eigen::VectorXd::Constant(c, -std::log(static_cast<double>(c)));
-  // Buffers sized once: the loop allocates nothing per step.
-  Eigen::VectorXd alpha(c);  // log posterior of the previous step
-  bool episode = false;      // whether alpha belongs to the current contact episode
-  Eigen::VectorXd predicted(c);
-  Eigen::VectorXd joint(c);
-  for (Eigen::Index t = 0; t < n; ++t) {
-    if (!isObserved(steps, t)) {
-      episode = false;
-      continue;
-    }
-    if (!episode) {
-      predicted = chain.logInitial;
-    } else {
-      hmmPredict(alpha, chain, predicted);
-    }
-    evidenceInto(steps, t, joint);
-    joint += predicted;
-    normalise(joint, predicted, uniform);
-    alpha = joint;
-    episode = true;
-    result.logPosterior.row(t) = alpha.transpose();
-    result.decisions[static_cast<std::size_t>(t)] = argmaxOf(alpha);
-  }
+  forwardPass(steps, chain, &result.logPosterior, result.decisions);
   return result;
+}
+
+Decisions hmmForwardDecisions(const StepLikelihoods& steps, const TransitionModel& chain) {
+  const Eigen::Index c = steps.logLik.cols();
+  Decisions decisions(static_cast<std::size_t>(steps.logLik.rows()));
+  if (c == 0 || chain.classCount() != c) return decisions;
+  forwardPass(steps, chain, nullptr, decisions);
+  return decisions;
 }
 
 HmmFilterResult hmmForwardBackward(const StepLikelihoods& steps, const TransitionModel& chain) {
@@ -362,7 +442,7 @@ std::optional<DecisionMode> parseDecisionMode(std::string_view name) {
 Decisions decide(const StepLikelihoods& steps, const TransitionModel& chain, DecisionMode mode) {
   const bool haveChain = !chain.empty() && chain.classCount() == steps.logLik.cols();
   if (mode == DecisionMode::Step || !haveChain) return argmaxDecisions(steps);
-  if (mode == DecisionMode::Online) return hmmForward(steps, chain).decisions;
+  if (mode == DecisionMode::Online) return hmmForwardDecisions(steps, chain);
   return hmmForwardBackward(steps, chain).decisions;
 }
 

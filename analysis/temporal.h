@@ -106,6 +106,9 @@ void hmmPredict(const Eigen::VectorXd& logAlpha, const TransitionModel& chain,
 // 0). Returns the filtered log posteriors (rows of unobserved steps -inf) and their argmax.
 HmmFilterResult hmmForward(const StepLikelihoods& steps, const TransitionModel& chain);
 
+// The decisions of hmmForward alone (the same, without keeping the posteriors).
+Decisions hmmForwardDecisions(const StepLikelihoods& steps, const TransitionModel& chain);
+
 // Forward-backward (offline: the posterior at t uses the whole episode): log gamma_t(j) =
 // log alpha_t(j) + log beta_t(j) - log Z, per episode, log space throughout. Same conventions as
 // hmmForward.

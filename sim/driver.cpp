@@ -170,6 +170,7 @@ WallFollowDriver::WallFollowDriver(std::uint64_t seed, Options options)
     : options_(std::move(options)), rng_(seed), switchesLeft_(options_.sideSwitches) {
   cruise_ = 30.0 + 30.0 * unit(rng_);
   wallSide_ = unit(rng_) < 0.5 ? -1.0 : 1.0;
+  if (options_.side) wallSide_ = *options_.side == FollowSide::Right ? -1.0 : 1.0;
   turn_ = kSlightTurnMin + (kSlightTurnMax - kSlightTurnMin) * unit(rng_);
 }
 
@@ -184,9 +185,25 @@ WallFollowDriver::Options bugOptions() {
   return o;
 }
 
+WallFollowDriver::Options withSide(WallFollowDriver::Options o, std::optional<FollowSide> side) {
+  o.side = side;
+  return o;
+}
+
 }  // namespace
 
-BugDriver::BugDriver(std::uint64_t seed) : WallFollowDriver(seed, bugOptions()) {}
+BugDriver::BugDriver(std::uint64_t seed, std::optional<FollowSide> side)
+    : WallFollowDriver(seed, withSide(bugOptions(), side)) {}
+
+std::string_view followSideName(FollowSide side) {
+  return side == FollowSide::Left ? "left" : "right";
+}
+
+std::optional<FollowSide> parseFollowSide(std::string_view name) {
+  if (name == "left") return FollowSide::Left;
+  if (name == "right") return FollowSide::Right;
+  return std::nullopt;
+}
 
 std::optional<RunOutcome> WallFollowDriver::finished() const {
   if (unreachable_) return RunOutcome::Unreachable;
@@ -198,6 +215,7 @@ void WallFollowDriver::startFollowing(double goalDistance) {
   mode_ = Mode::Follow;
   if (options_.sidePerObstacle) {
     wallSide_ = unit(rng_) < 0.5 ? -1.0 : 1.0;
+    if (options_.side) wallSide_ = *options_.side == FollowSide::Right ? -1.0 : 1.0;
     switchesLeft_ = options_.sideSwitches;
   }
   hitPointSet_ = false;
@@ -386,6 +404,18 @@ Command RandomDriver::next(const Observation& obs) {
 
 std::vector<std::string> autonomousDriverNames() {
   return {"bug", "random", "wall-follow"};
+}
+
+std::unique_ptr<Driver> makeDriver(std::string_view name, std::uint64_t seed,
+                                   std::optional<FollowSide> side) {
+  if (!side) return makeDriver(name, seed);
+  if (name == "wall-follow") {
+    WallFollowDriver::Options o;
+    o.side = side;
+    return std::make_unique<WallFollowDriver>(seed, o);
+  }
+  if (name == "bug") return std::make_unique<BugDriver>(seed, side);
+  return nullptr;
 }
 
 std::unique_ptr<Driver> makeDriver(std::string_view name, std::uint64_t seed) {

@@ -83,6 +83,12 @@ inline constexpr double kFollowTowardMax = 0.5;
 inline constexpr double kFollowTowardMean = 2.0;
 FollowAction followWallAction(const std::array<double, kValuesPerStep>& values, bool wallOnRight);
 
+// The side of the robot on which a wall follower keeps the wall.
+enum class FollowSide { Left, Right };
+// "left", "right".
+std::string_view followSideName(FollowSide side);
+std::optional<FollowSide> parseFollowSide(std::string_view name);
+
 // Bug-2 style explorer: heads for the goal; on touching something, follows the wall by touch on a
 // side chosen from the seed (followWallAction); leaves the wall where it crosses the start-goal
 // line closer to the goal than where it hit, with a clear front. Ends the run as `unreachable`
@@ -102,6 +108,9 @@ class WallFollowDriver : public Driver {
   // What varies between this driver and its Bug-2 variant (BugDriver).
   struct Options {
     std::string name = "wall-follow";
+    // The followed side, when given; else drawn from the seed. The draw is made either way, so
+    // the seed's other choices (speeds, turn) stay the same.
+    std::optional<FollowSide> side;
     std::size_t giveUpSteps = kGiveUpSteps;
     // Draw the followed side again at every new obstacle (else once per run).
     bool sidePerObstacle = false;
@@ -165,7 +174,7 @@ class WallFollowDriver : public Driver {
 class BugDriver : public WallFollowDriver {
  public:
   static constexpr std::size_t kGiveUpSteps = 12000;
-  explicit BugDriver(std::uint64_t seed);
+  explicit BugDriver(std::uint64_t seed, std::optional<FollowSide> side = std::nullopt);
 };
 
 // Bounded random walk: holds a random (v, omega) in [-20, 60] x [-1, 1] for 5..30 steps; after a
@@ -187,5 +196,9 @@ class RandomDriver : public Driver {
 std::vector<std::string> autonomousDriverNames();  // "bug", "random", "wall-follow"
 // A driver by name, or nullptr for an unknown name.
 std::unique_ptr<Driver> makeDriver(std::string_view name, std::uint64_t seed);
+// Same, the wall followers (wall-follow, bug) keeping the wall on `side` when it is given (bug: the
+// side it takes at every obstacle first); nullptr as well for a side given to another driver.
+std::unique_ptr<Driver> makeDriver(std::string_view name, std::uint64_t seed,
+                                   std::optional<FollowSide> side);
 
 }  // namespace tactile::sim

@@ -37,8 +37,12 @@ void Recorder::record(const Simulator& sim, const Command& command) {
 
 RunResult simulateRun(std::shared_ptr<const World> world, std::string_view sceneName,
                       const RunOptions& options, const ProgressFn& progress) {
-  std::unique_ptr<Driver> driver = makeDriver(options.driver, options.seed);
-  if (!driver) return Error("unknown driver '" + options.driver + "'");
+  std::unique_ptr<Driver> driver = makeDriver(options.driver, options.seed, options.followSide);
+  if (!driver) {
+    if (options.followSide && makeDriver(options.driver, options.seed))
+      return Error("driver '" + options.driver + "' follows no wall: a side cannot be given");
+    return Error("unknown driver '" + options.driver + "'");
+  }
   return simulateRunWith(std::move(world), sceneName, *driver, options, progress);
 }
 

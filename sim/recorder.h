@@ -56,6 +56,8 @@ struct RunOptions {
   std::size_t maxSteps = 5000;
   std::uint64_t seed = 1;
   std::string driver = "wall-follow";
+  // The wall followers' side (wall-follow, bug); nullopt: drawn from the seed.
+  std::optional<FollowSide> followSide;
   SimConfig config;
   // The run succeeds (and stops) when the body centre comes this close to the goal.
   double goalRadiusUnits = 60.0;

@@ -1736,6 +1736,34 @@ pausiert: „Abspielen“ (P) lässt den Navigator fahren, „Schritt“ (N) mac
         <source>Predict ms</source>
         <translation>Vorhersage ms</translation>
     </message>
+    <message>
+        <source>%1: %2 test steps%3</source>
+        <translation>%1: %2 Testschritte%3</translation>
+    </message>
+    <message>
+        <source> (too few)</source>
+        <translation> (zu wenige)</translation>
+    </message>
+    <message>
+        <source>none</source>
+        <translation>keine</translation>
+    </message>
+    <message>
+        <source>%1 (rarest %2, too few)</source>
+        <translation>%1 (seltenste %2, zu wenige)</translation>
+    </message>
+    <message>
+        <source>%1 (rarest %2)</source>
+        <translation>%1 (seltenste %2)</translation>
+    </message>
+    <message>
+        <source>Decision</source>
+        <translation>Entscheidung</translation>
+    </message>
+    <message>
+        <source>Test steps</source>
+        <translation>Testschritte</translation>
+    </message>
 </context>
 <context>
     <name>tactile::gui::SweepPlot</name>
@@ -1889,14 +1917,6 @@ Zelle %1 (zum Auswählen klicken)</translation>
         <translation>Diese Zelle wurde nicht bewertet: Die Testläufe haben keine gelabelten Zeilen ihrer Gruppe.</translation>
     </message>
     <message>
-        <source>Group %1, GMM %2, order %3, variance floor %4, %5 features, seed %6</source>
-        <translation>Gruppe %1, GMM %2, Ordnung %3, Varianzuntergrenze %4, %5 Merkmale, Seed %6</translation>
-    </message>
-    <message>
-        <source>Group %1, %2, variance floor %3, %4 features, seed %5</source>
-        <translation>Gruppe %1, %2, Varianzuntergrenze %3, %4 Merkmale, Seed %5</translation>
-    </message>
-    <message>
         <source>Sweep %1: %2 cells, %3 fitted, %4 failed; no model is stored (Store Model of Cell stores one)</source>
         <translation>Sweep %1: %2 Zellen, %3 angepasst, %4 fehlgeschlagen; kein Modell gespeichert („Modell der Zelle speichern“ speichert eines)</translation>
     </message>
@@ -1919,6 +1939,26 @@ Zelle %1 (zum Auswählen klicken)</translation>
     <message>
         <source>Recall per class of this cell (of the steps of a class, the share predicted as it), %</source>
         <translation>Trefferquote je Klasse dieser Zelle (von den Schritten einer Klasse der Anteil, der als diese Klasse vorhergesagt wird), %</translation>
+    </message>
+    <message>
+        <source>Group %1, GMM %2, order %3, variance floor %4, %5 features, seed %6, %7 decision</source>
+        <translation>Gruppe %1, GMM %2, Ordnung %3, Varianzuntergrenze %4, %5 Merkmale, Seed %6, Entscheidung %7</translation>
+    </message>
+    <message>
+        <source>Group %1, %2, variance floor %3, %4 features, seed %5, %6 decision</source>
+        <translation>Gruppe %1, %2, Varianzuntergrenze %3, %4 Merkmale, Seed %5, Entscheidung %6</translation>
+    </message>
+    <message>
+        <source>step: the per-step argmax; online: the forward filter (causal); offline: forward-backward over the whole contact. Cells that differ only in it share one fit.</source>
+        <translation>step: das Argmax je Schritt; online: der Vorwärtsfilter (kausal); offline: Vorwärts-Rückwärts über den ganzen Kontakt. Zellen, die sich nur darin unterscheiden, teilen sich eine Anpassung.</translation>
+    </message>
+    <message>
+        <source>Decision:</source>
+        <translation>Entscheidung:</translation>
+    </message>
+    <message>
+        <source>All decisions</source>
+        <translation>Alle Entscheidungen</translation>
     </message>
 </context>
 <context>
@@ -2197,14 +2237,6 @@ grau: blockiert</translation>
         <translation>Läufe:</translation>
     </message>
     <message>
-        <source>Score on the test runs</source>
-        <translation>Auf den Testläufen bewerten</translation>
-    </message>
-    <message>
-        <source>Leave one run out (training only)</source>
-        <translation>Je einen Lauf auslassen (nur Training)</translation>
-    </message>
-    <message>
         <source>Split:</source>
         <translation>Aufteilung:</translation>
     </message>
@@ -2428,14 +2460,6 @@ grau: blockiert</translation>
         <translation>übersprungen: %1</translation>
     </message>
     <message>
-        <source>Leave one scene out</source>
-        <translation>Je eine Szene auslassen</translation>
-    </message>
-    <message>
-        <source>Leave one scene out: each scene&apos;s runs (marked for training) are scored by models trained without that scene; no test runs</source>
-        <translation>Je eine Szene auslassen: Die (zum Training markierten) Läufe jeder Szene werden mit Modellen bewertet, die ohne diese Szene trainiert wurden; keine Testläufe</translation>
-    </message>
-    <message>
         <source>Decision modes: step = each step alone; online = HMM forward filter over the contact (causal, what a navigator may use); offline = forward-backward over the whole contact. A sweep scores every ticked mode (cells differing only here share one fit); Train model always scores all three and its models decide online by default</source>
         <translation>Entscheidungsmodi: step = jeder Schritt für sich; online = HMM-Vorwärtsfilter über den Kontakt (kausal, was ein Navigator nutzen darf); offline = Vorwärts-Rückwärts über den ganzen Kontakt. Ein Sweep bewertet jeden angehakten Modus (Zellen, die sich nur hierin unterscheiden, teilen eine Anpassung); „Modell trainieren“ bewertet immer alle drei, und seine Modelle entscheiden standardmäßig online</translation>
     </message>
@@ -2474,6 +2498,22 @@ grau: blockiert</translation>
     <message>
         <source>no test data</source>
         <translation>keine Testdaten</translation>
+    </message>
+    <message>
+        <source>score on the test runs</source>
+        <translation>auf den Testläufen bewerten</translation>
+    </message>
+    <message>
+        <source>leave one scene out: each scene scored by models trained without it</source>
+        <translation>je eine Szene auslassen: jede Szene mit Modellen bewertet, die ohne sie trainiert wurden</translation>
+    </message>
+    <message>
+        <source>leave one run out (Train model only; a sweep cannot)</source>
+        <translation>je einen Lauf auslassen (nur „Modell trainieren“; ein Sweep kann es nicht)</translation>
+    </message>
+    <message>
+        <source>by-run: the runs marked Test are scored (the command line&apos;s default); by-scene: each scene&apos;s runs (marked for training) are scored by models trained without that scene, no test runs; leave-one-run-out: each run scored by a model trained on the others (Train model only)</source>
+        <translation>by-run: die als Test markierten Läufe werden bewertet (Vorgabe der Kommandozeile); by-scene: die (zum Training markierten) Läufe jeder Szene werden mit Modellen bewertet, die ohne diese Szene trainiert wurden, keine Testläufe; leave-one-run-out: jeder Lauf mit einem auf den anderen trainierten Modell bewertet (nur „Modell trainieren“)</translation>
     </message>
 </context>
 <context>

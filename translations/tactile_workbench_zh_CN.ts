@@ -1727,6 +1727,34 @@ paused: Play (P) lets the navigator drive, Step (N) takes one step</source>
         <source>Status</source>
         <translation>状态</translation>
     </message>
+    <message>
+        <source>%1: %2 test steps%3</source>
+        <translation>%1：%2 个测试步%3</translation>
+    </message>
+    <message>
+        <source> (too few)</source>
+        <translation>（过少）</translation>
+    </message>
+    <message>
+        <source>none</source>
+        <translation>无</translation>
+    </message>
+    <message>
+        <source>%1 (rarest %2, too few)</source>
+        <translation>%1（最少的类 %2，过少）</translation>
+    </message>
+    <message>
+        <source>%1 (rarest %2)</source>
+        <translation>%1（最少的类 %2）</translation>
+    </message>
+    <message>
+        <source>Decision</source>
+        <translation>决策</translation>
+    </message>
+    <message>
+        <source>Test steps</source>
+        <translation>测试步数</translation>
+    </message>
 </context>
 <context>
     <name>tactile::gui::SweepPlot</name>
@@ -1811,14 +1839,6 @@ cell %1 (click to select)</source>
 </context>
 <context>
     <name>tactile::gui::SweepResultsView</name>
-    <message>
-        <source>Group %1, GMM %2, order %3, variance floor %4, %5 features, seed %6</source>
-        <translation>%1 组，GMM %2，阶数 %3，方差下限 %4，%5 个特征，随机种子 %6</translation>
-    </message>
-    <message>
-        <source>Group %1, %2, variance floor %3, %4 features, seed %5</source>
-        <translation>%1 组，%2，方差下限 %3，%4 个特征，随机种子 %5</translation>
-    </message>
     <message>
         <source>No sweep</source>
         <translation>无扫描</translation>
@@ -1910,6 +1930,26 @@ cell %1 (click to select)</source>
     <message>
         <source>Recall per class of this cell (of the steps of a class, the share predicted as it), %</source>
         <translation>本单元各类别召回率（某类别的步中被预测为该类别的比例），%</translation>
+    </message>
+    <message>
+        <source>Group %1, GMM %2, order %3, variance floor %4, %5 features, seed %6, %7 decision</source>
+        <translation>%1 组，GMM %2，阶数 %3，方差下限 %4，%5 个特征，随机种子 %6，%7 决策</translation>
+    </message>
+    <message>
+        <source>Group %1, %2, variance floor %3, %4 features, seed %5, %6 decision</source>
+        <translation>%1 组，%2，方差下限 %3，%4 个特征，随机种子 %5，%6 决策</translation>
+    </message>
+    <message>
+        <source>step: the per-step argmax; online: the forward filter (causal); offline: forward-backward over the whole contact. Cells that differ only in it share one fit.</source>
+        <translation>step：逐步取最大后验；online：前向滤波（因果）；offline：对整个接触做前向-后向。只在此项上不同的单元共用一次拟合。</translation>
+    </message>
+    <message>
+        <source>Decision:</source>
+        <translation>决策：</translation>
+    </message>
+    <message>
+        <source>All decisions</source>
+        <translation>全部决策</translation>
     </message>
 </context>
 <context>
@@ -2188,14 +2228,6 @@ grey: blocked</source>
         <translation>运行：</translation>
     </message>
     <message>
-        <source>Score on the test runs</source>
-        <translation>在测试运行上评分</translation>
-    </message>
-    <message>
-        <source>Leave one run out (training only)</source>
-        <translation>留一运行交叉验证（仅训练运行）</translation>
-    </message>
-    <message>
         <source>Split:</source>
         <translation>划分：</translation>
     </message>
@@ -2414,14 +2446,6 @@ grey: blocked</source>
         <translation>已跳过：%1</translation>
     </message>
     <message>
-        <source>Leave one scene out</source>
-        <translation>留一场景交叉验证</translation>
-    </message>
-    <message>
-        <source>Leave one scene out: each scene&apos;s runs (marked for training) are scored by models trained without that scene; no test runs</source>
-        <translation>留一场景交叉验证：每个场景的运行（标记为训练的）由不含该场景训练出的模型评分；不使用测试运行</translation>
-    </message>
-    <message>
         <source>Decision modes: step = each step alone; online = HMM forward filter over the contact (causal, what a navigator may use); offline = forward-backward over the whole contact. A sweep scores every ticked mode (cells differing only here share one fit); Train model always scores all three and its models decide online by default</source>
         <translation>判定模式：step = 每步单独判定；online = 在接触过程中做 HMM 前向滤波（因果，导航器可用的方式）；offline = 对整个接触做前向-后向计算。扫描会为每个勾选的模式评分（仅在此处不同的单元共用一次拟合）；“训练模型”总是为三种模式都评分，其模型默认在线判定</translation>
     </message>
@@ -2460,6 +2484,22 @@ grey: blocked</source>
     <message>
         <source>no test data</source>
         <translation>没有测试数据</translation>
+    </message>
+    <message>
+        <source>score on the test runs</source>
+        <translation>在测试运行上评分</translation>
+    </message>
+    <message>
+        <source>leave one scene out: each scene scored by models trained without it</source>
+        <translation>留一场景：每个场景由不含该场景训练的模型评分</translation>
+    </message>
+    <message>
+        <source>leave one run out (Train model only; a sweep cannot)</source>
+        <translation>留一运行（仅限“训练模型”；扫描不支持）</translation>
+    </message>
+    <message>
+        <source>by-run: the runs marked Test are scored (the command line&apos;s default); by-scene: each scene&apos;s runs (marked for training) are scored by models trained without that scene, no test runs; leave-one-run-out: each run scored by a model trained on the others (Train model only)</source>
+        <translation>by-run：对标记为测试的运行评分（命令行的默认值）；by-scene：每个场景（标记为训练）的运行由不含该场景训练的模型评分，无测试运行；leave-one-run-out：每个运行由在其余运行上训练的模型评分（仅限“训练模型”）</translation>
     </message>
 </context>
 <context>

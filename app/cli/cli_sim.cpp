@@ -35,6 +35,7 @@ struct SimulateArgs {
   std::string plan;
   std::string commands;  // a run file whose commands are replayed
   std::string driver = "wall-follow";
+  std::string followSide;  // "left", "right"; empty: drawn from the seed
   std::int64_t steps = 5000;
   std::uint64_t seed = 1;
   std::string out;
@@ -246,6 +247,18 @@ int runReplay(const SimulateArgs& a) {
 
 int runSimulate(const SimulateArgs& a) {
   if (!a.prefix.empty()) requireValidName(a.prefix, "--prefix", "run");
+  std::optional<FollowSide> side;
+  if (!a.followSide.empty()) {
+    side = parseFollowSide(a.followSide);
+    if (!side) throw UsageError("--follow-side must be left or right, got '" + a.followSide + "'");
+    if (!a.commands.empty() || !a.plan.empty())
+      throw UsageError(
+          "--follow-side goes with --driver wall-follow or bug, not with --commands "
+          "or --plan");
+    if (a.driver != "wall-follow" && a.driver != "bug")
+      throw UsageError("--follow-side needs --driver wall-follow or bug (the " + a.driver +
+                       " driver follows no wall)");
+  }
   if (!a.commands.empty()) {
     if (!a.plan.empty()) throw UsageError("give --commands or --plan, not both");
     if (a.scene.empty()) throw UsageError("--commands needs --scene");
@@ -298,6 +311,7 @@ int runSimulate(const SimulateArgs& a) {
   options.maxSteps = static_cast<std::size_t>(a.steps);
   options.seed = a.seed;
   options.driver = a.driver;
+  options.followSide = side;
   options.config.dtSeconds = a.dt;
 
   const auto t0 = std::chrono::steady_clock::now();
@@ -373,6 +387,7 @@ int runSimulate(const SimulateArgs& a) {
     nlohmann::json j;
     j["scene"] = label;
     j["driver"] = a.driver;
+    if (side) j["follow_side"] = std::string(followSideName(*side));
     j["runs"] = a.runs;
     j["steps"] = totalSteps;
     j["outcomes"] = outcomes;
@@ -524,6 +539,9 @@ void registerSimVerbs(CLI::App& app, CLI::App& bench) {
                   "and drivers come from the recipe, docs/sim.md#training-corpus)");
   sim->add_option("--driver", args->driver,
                   "wall-follow (Bug-2 explorer), bug (Bug-2, side per obstacle) or random");
+  sim->add_option("--follow-side", args->followSide,
+                  "left or right: the wall followers (wall-follow, bug) keep the wall on this side "
+                  "(default: drawn from the seed; bug: the side it takes first at each obstacle)");
   sim->add_option("--commands", args->commands,
                   "Replay the v, omega commands of this run file, one a step, from its start "
                   "pose to its goal (one run, --out; docs/cli.md#simulate)");

@@ -21,6 +21,7 @@ using namespace tactile::analysis;
 struct BenchData {
   RunData train;
   RunData run;
+  RunData sparse;  // the same length, 15% of the steps in contact per group
   ModelBundle bundle;
 };
 
@@ -29,6 +30,7 @@ const BenchData& benchData() {
     BenchData b;
     b.train = testdata::makeLabelledRun(30000, 7, 0.3);
     b.run = testdata::makeLabelledRun(1000000, 8, 0.3);
+    b.sparse = testdata::makeLabelledRun(1000000, 9, 0.3, 0.15);
     TrainJob job;
     job.runs = {{&b.train, labelsFromTruth(b.train)}};
     job.settings = defaultGroupSettings();
@@ -41,13 +43,13 @@ const BenchData& benchData() {
   return d;
 }
 
-void BM_ClassifyRun(benchmark::State& state) {
+void classify(benchmark::State& state, const RunData& run) {
   const BenchData& d = benchData();
   ClassifyOptions options;
   options.decision = static_cast<DecisionMode>(state.range(0));
   std::size_t contact = 0;
   for (auto _ : state) {
-    const RunClassification r = classifyRun(d.run, d.bundle, options);
+    const RunClassification r = classifyRun(run, d.bundle, options);
     benchmark::DoNotOptimize(r.groups.data());
     contact = 0;
     for (const GroupClassification& g : r.groups)
@@ -55,14 +57,29 @@ void BM_ClassifyRun(benchmark::State& state) {
         contact += z == 0 ? 1 : 0;
   }
   state.SetLabel(std::string(decisionModeName(options.decision.value())));
-  state.counters["steps"] = static_cast<double>(d.run.stepCount());
+  state.counters["steps"] = static_cast<double>(run.stepCount());
   state.counters["group_contact_steps"] = static_cast<double>(contact);
   state.counters["models"] = static_cast<double>(d.bundle.models.size());
+}
+void BM_ClassifyRun(benchmark::State& state) {
+  classify(state, benchData().run);
+}
+// A run in which each group touches in 15% of the steps (a simulated wall-following run: 5-20%).
+void BM_ClassifyRunSparse(benchmark::State& state) {
+  classify(state, benchData().sparse);
 }
 BENCHMARK(BM_ClassifyRun)
     ->Arg(static_cast<int>(DecisionMode::Step))
     ->Arg(static_cast<int>(DecisionMode::Online))
     ->Arg(static_cast<int>(DecisionMode::Offline))
+    ->Unit(benchmark::kSecond)
+    ->Iterations(1)
+    ->Repetitions(3)
+    ->MeasureProcessCPUTime()
+    ->UseRealTime();
+BENCHMARK(BM_ClassifyRunSparse)
+    ->Arg(static_cast<int>(DecisionMode::Step))
+    ->Arg(static_cast<int>(DecisionMode::Online))
     ->Unit(benchmark::kSecond)
     ->Iterations(1)
     ->Repetitions(3)

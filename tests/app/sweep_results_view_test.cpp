@@ -118,6 +118,8 @@ class SweepResultsViewTest : public QObject {
   void failedCellShowsItsReason();
   void plotsZoomHoverAndKeepTickLabelsApart();
   void emptyAndCancelledSweeps();
+  void decisionModesHaveAColumnAFilterAndOneFigureEach();
+  void testStepsShowCountsAndTooFew();
 };
 
 void SweepResultsViewTest::tableHasEveryCellSortedByBalancedAccuracy() {
@@ -580,4 +582,112 @@ void SweepResultsViewTest::emptyAndCancelledSweeps() {
 }
 
 QTEST_MAIN(SweepResultsViewTest)
+// A sweep scoring the step and online decisions: every fit appears once per decision, told apart
+// by the Decision column; the decision filter shows one mode, and the rate figures hold one mode
+// (the same fit under two decisions would be two points at one x).
+void SweepResultsViewTest::decisionModesHaveAColumnAFilterAndOneFigureEach() {
+  static const RunData a = testdata::makeLabelledRun(1200, 21, 0.9);
+  static const RunData b = testdata::makeLabelledRun(800, 22, 0.9);
+  analysis::SweepGrid g;
+  g.groups = {SensorGroup::Right};
+  g.orders = {1, 2};
+  g.forms = {analysis::CovarianceForm::NodalDiag};
+  g.varianceFloors = {0.01, 0.1};
+  g.decisions = {analysis::DecisionMode::Step, analysis::DecisionMode::Online};
+  g.maxIterations = 30;
+  const analysis::SweepResult sweep = analysis::runSweep({{&a, analysis::labelsFromTruth(a)}},
+                                                         {{&b, analysis::labelsFromTruth(b)}}, g);
+  QCOMPARE(static_cast<int>(sweep.cells.size()), 8);
+  SweepResultsView view;
+  view.setSweep(3, sweep);
+  const QAbstractItemModel* m = view.cellsView()->model();
+  QCOMPARE(m->headerData(gui::SweepCellsModel::Decision, Qt::Horizontal).toString(),
+           QStringLiteral("Decision"));
+  const auto* proxy = static_cast<const QSortFilterProxyModel*>(m);
+  int online = 0;
+  for (int row = 0; row < m->rowCount(); ++row) {
+    const auto& cell =
+        sweep.cells[static_cast<std::size_t>(proxy->mapToSource(m->index(row, 0)).row())];
+    QCOMPARE(m->data(m->index(row, gui::SweepCellsModel::Decision)).toString(),
+             QString::fromUtf8(analysis::decisionModeName(cell.cell.decision).data()));
+    online += cell.cell.decision == analysis::DecisionMode::Online ? 1 : 0;
+  }
+  QCOMPARE(online, 4);
+  // The selected cell's title names its decision.
+  const auto& selected = sweep.cells[static_cast<std::size_t>(view.selectedCell())];
+  QVERIFY(
+      view.findChild<QLabel*>(QStringLiteral("cellTitle"))
+          ->text()
+          .contains(QString::fromUtf8(analysis::decisionModeName(selected.cell.decision).data()) +
+                    QStringLiteral(" decision")));
+  // The rate figures hold the selected cell's decision only.
+  const auto only = [&](analysis::DecisionMode d) {
+    analysis::SweepResult out;
+    out.grid = sweep.grid;
+    for (const auto& c : sweep.cells)
+      if (c.cell.decision == d) out.cells.push_back(c);
+    return out;
+  };
+  checkRates(view.rateFloorPlot(),
+             analysis::rateSeries(only(selected.cell.decision), analysis::SweptVariable::Floor));
+  // The filter offers the scored modes and shows one of them.
+  auto* box = view.findChild<QComboBox*>(QStringLiteral("decisionFilter"));
+  QVERIFY(box != nullptr);
+  QCOMPARE(box->count(), 3);  // all, step, online
+  QCOMPARE(box->findData(static_cast<int>(analysis::DecisionMode::Offline)), -1);
+  box->setCurrentIndex(box->findData(static_cast<int>(analysis::DecisionMode::Online)));
+  QCOMPARE(m->rowCount(), 4);
+  for (int row = 0; row < m->rowCount(); ++row)
+    QCOMPARE(m->data(m->index(row, gui::SweepCellsModel::Decision)).toString(),
+             QStringLiteral("online"));
+  QCOMPARE(sweep.cells[static_cast<std::size_t>(view.selectedCell())].cell.decision,
+           analysis::DecisionMode::Online);
+  checkRates(view.rateFloorPlot(), analysis::rateSeries(only(analysis::DecisionMode::Online),
+                                                        analysis::SweptVariable::Floor));
+  view.setDecisionFilter(analysis::DecisionMode::Step);
+  QCOMPARE(box->currentData().toInt(), static_cast<int>(analysis::DecisionMode::Step));
+  QCOMPARE(sweep.cells[static_cast<std::size_t>(view.selectedCell())].cell.decision,
+           analysis::DecisionMode::Step);
+  checkRates(view.rateFloorPlot(), analysis::rateSeries(only(analysis::DecisionMode::Step),
+                                                        analysis::SweptVariable::Floor));
+  view.setDecisionFilter(std::nullopt);
+  QCOMPARE(m->rowCount(), 8);
+}
+
+// The test steps beside the scores: the count, the rarest class's count, "too few" below
+// kMinTestSteps, per-class counts in the tooltip; "none" for a cell without test steps.
+void SweepResultsViewTest::testStepsShowCountsAndTooFew() {
+  analysis::SweepResult sweep;
+  sweep.grid = sweepOnce().grid;
+  analysis::SweepCellResult enough = sweepOnce().cells.front();
+  enough.ok = true;
+  enough.confusion = {};
+  enough.confusion.add(ContactClass::Wall, ContactClass::Wall, 200);
+  enough.confusion.add(ContactClass::Corner, ContactClass::Corner, 40);
+  analysis::SweepCellResult few = enough;
+  few.cell.seed = 2;
+  few.confusion.add(ContactClass::LeavingWall, ContactClass::Wall, 7);
+  analysis::SweepCellResult none = enough;
+  none.cell.seed = 3;
+  none.confusion = {};
+  sweep.cells = {enough, few, none};
+  gui::SweepCellsModel model;
+  model.setCells(sweep.cells);
+  const auto shown = [&](int row) {
+    return model.data(model.index(row, gui::SweepCellsModel::TestSteps)).toString();
+  };
+  QCOMPARE(model.headerData(gui::SweepCellsModel::TestSteps, Qt::Horizontal).toString(),
+           QStringLiteral("Test steps"));
+  QCOMPARE(shown(0), QStringLiteral("240 (rarest 40)"));
+  QCOMPARE(shown(1), QStringLiteral("247 (rarest 7, too few)"));
+  QCOMPARE(shown(2), QStringLiteral("none"));
+  QCOMPARE(model.data(model.index(1, gui::SweepCellsModel::TestSteps), Qt::UserRole).toULongLong(),
+           247ull);
+  const QString tip =
+      model.data(model.index(1, gui::SweepCellsModel::TestSteps), Qt::ToolTipRole).toString();
+  QVERIFY2(tip.contains(QStringLiteral("LeavingWall: 7 test steps (too few)")), qPrintable(tip));
+  QVERIFY2(tip.contains(QStringLiteral("Wall: 200 test steps")), qPrintable(tip));
+  QVERIFY(!tip.contains(QStringLiteral("Corner: 40 test steps (too few)")));
+}
+
 #include "sweep_results_view_test.moc"

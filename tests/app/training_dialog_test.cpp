@@ -90,6 +90,7 @@ class TrainingDialogTest : public QObject {
 
  private slots:
   void defaultSplitHoldsOutEveryFourthRun();
+  void splitOffersTheCommandLinesSplitsWithItsDefault();
   void sweepShowsProgressAndStreamsSortedCells();
   void cliStoresTheSameNumbers();
   void cancelKeepsFinishedCells();
@@ -108,6 +109,41 @@ void TrainingDialogTest::defaultSplitHoldsOutEveryFourthRun() {
   // Three runs: none is fourth, so the last by name is held out, as `tactile train` does.
   QCOMPARE(request->testRuns, std::vector<std::string>{"room3_demo"});
   QCOMPARE(request->trainRuns, (std::vector<std::string>{"room1_demo", "room2_demo"}));
+}
+
+// The split box names the command line's splits (by-scene among them) and starts on the command
+// line's default; by-scene and by-run reach the requests, leave-one-run-out only the training one.
+void TrainingDialogTest::splitOffersTheCommandLinesSplitsWithItsDefault() {
+  LearningFixture f;
+  TrainingDialog dialog(*f.workspace, QString::fromStdString(f.dbPath));
+  dialog.setLabelSet(QStringLiteral("truth"));
+  auto* split = dialog.findChild<QComboBox*>(QStringLiteral("split"));
+  QVERIFY(split != nullptr);
+  QCOMPARE(split->count(), 3);
+  for (const char* name : {"by-run", "by-scene", "leave-one-run-out"}) {
+    const std::optional<workspace::SplitMode> mode = workspace::parseSplitMode(name);
+    QVERIFY(mode.has_value());
+    const int index = split->findData(static_cast<int>(*mode));
+    QVERIFY2(index >= 0, name);
+    QVERIFY2(split->itemText(index).startsWith(QString::fromLatin1(name) + QStringLiteral(" - ")),
+             qPrintable(split->itemText(index)));
+  }
+  // `tactile train` and `tactile sweep` default to by-run.
+  QCOMPARE(split->currentData().toInt(), static_cast<int>(*workspace::parseSplitMode("by-run")));
+  QVERIFY(split->currentText().startsWith(QStringLiteral("by-run")));
+  split->setCurrentIndex(split->findData(static_cast<int>(workspace::SplitMode::ByScene)));
+  auto sweep = dialog.sweepRequest();
+  QVERIFY2(sweep.ok(), sweep.ok() ? "" : sweep.errorText().c_str());
+  QCOMPARE(sweep->split, workspace::SplitMode::ByScene);
+  QVERIFY(sweep->testRuns.empty());
+  auto train = dialog.trainRequest();
+  QVERIFY2(train.ok(), train.ok() ? "" : train.errorText().c_str());
+  QCOMPARE(train->split, workspace::SplitMode::ByScene);
+  split->setCurrentIndex(split->findData(static_cast<int>(workspace::SplitMode::LeaveOneRunOut)));
+  QVERIFY(!dialog.sweepRequest().ok());
+  auto loo = dialog.trainRequest();
+  QVERIFY2(loo.ok(), loo.ok() ? "" : loo.errorText().c_str());
+  QCOMPARE(loo->split, workspace::SplitMode::LeaveOneRunOut);
 }
 
 void TrainingDialogTest::sweepShowsProgressAndStreamsSortedCells() {

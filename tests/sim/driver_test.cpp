@@ -194,6 +194,78 @@ TEST(WallFollowRun, WalkingRoundAClosedRoomEndsUnreachable) {
   EXPECT_TRUE(sawRight);
 }
 
+// Contact steps of a group over a run.
+std::size_t contactSteps(const RunData& run, SensorGroup g) {
+  const GroupInfo& info = groupInfo(g);
+  std::size_t n = 0;
+  for (std::size_t k = 0; k < run.stepCount(); ++k) {
+    for (int d = info.firstSensor; d < info.firstSensor + info.sensorCount; ++d) {
+      if (run.normal(k, d) > 0.0) {
+        ++n;
+        break;
+      }
+    }
+  }
+  return n;
+}
+
+TEST(FollowSide, NamesRoundTrip) {
+  for (FollowSide side : {FollowSide::Left, FollowSide::Right})
+    EXPECT_EQ(parseFollowSide(followSideName(side)), side);
+  EXPECT_FALSE(parseFollowSide("Left").has_value());
+  EXPECT_FALSE(parseFollowSide("").has_value());
+}
+
+// A given side overrides the seed's; the seed's other draws stay: a run with the side the seed
+// would have drawn anyway is the default run, step for step.
+TEST(FollowSide, OverridesTheSeedAndNothingElse) {
+  const auto world = std::make_shared<const World>(splitRoom());
+  for (std::uint64_t seed = 1; seed <= 6; ++seed) {
+    for (FollowSide side : {FollowSide::Left, FollowSide::Right}) {
+      WallFollowDriver::Options o;
+      o.side = side;
+      EXPECT_EQ(WallFollowDriver(seed, o).wallOnRight(), side == FollowSide::Right) << seed;
+      const bool own = WallFollowDriver(seed).wallOnRight() == (side == FollowSide::Right);
+      for (const char* driver : {"wall-follow", "bug"}) {
+        RunOptions options;
+        options.maxSteps = 1500;
+        options.seed = seed;
+        options.driver = driver;
+        options.followSide = side;
+        RunResult forced = simulateRun(world, "split", options);
+        ASSERT_TRUE(forced.ok()) << forced.errorText();
+        options.followSide.reset();
+        RunResult drawn = simulateRun(world, "split", options);
+        ASSERT_TRUE(drawn.ok()) << drawn.errorText();
+        if (std::string(driver) == "wall-follow") {
+          EXPECT_EQ(formatRunCsv(forced->run) == formatRunCsv(drawn->run), own)
+              << driver << " seed " << seed;
+        }
+        // The followed side's group touches the wall, the other side's hardly.
+        const RunData& run = forced->run;
+        const SensorGroup near = side == FollowSide::Left ? SensorGroup::Left : SensorGroup::Right;
+        const SensorGroup far = side == FollowSide::Left ? SensorGroup::Right : SensorGroup::Left;
+        EXPECT_GT(contactSteps(run, near), 200u) << driver << " seed " << seed;
+        EXPECT_GT(contactSteps(run, near), 5 * contactSteps(run, far))
+            << driver << " seed " << seed;
+      }
+    }
+  }
+}
+
+TEST(FollowSide, OnlyTheWallFollowersTakeASide) {
+  EXPECT_NE(makeDriver("wall-follow", 1, FollowSide::Left), nullptr);
+  EXPECT_NE(makeDriver("bug", 1, FollowSide::Right), nullptr);
+  EXPECT_EQ(makeDriver("random", 1, FollowSide::Left), nullptr);
+  EXPECT_NE(makeDriver("random", 1, std::nullopt), nullptr);
+  RunOptions options;
+  options.driver = "random";
+  options.followSide = FollowSide::Left;
+  RunResult r = simulateRun(std::make_shared<const World>(splitRoom()), "split", options);
+  ASSERT_FALSE(r.ok());
+  EXPECT_NE(r.errorText().find("follows no wall"), std::string::npos) << r.errorText();
+}
+
 TEST(WallFollowRun, ARobotThatKeepsBeingBlockedGivesUpInsteadOfTimingOut) {
   // A closed slot barely longer and wider than the robot: it can neither turn nor get out, and
   // never gets far from where it first touched, so only the step budget ends the run.

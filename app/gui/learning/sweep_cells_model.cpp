@@ -16,6 +16,16 @@ bool isGaussian(const analysis::SweepCell& c) {
   return c.method == analysis::ClassifierMethod::Gaussian;
 }
 
+// Test steps of the cell's rarest scored class (0 without test steps).
+std::size_t rarestTestSteps(const analysis::ConfusionMatrix& m) {
+  std::size_t rarest = 0;
+  for (ContactClass c : m.activeClasses()) {
+    const std::size_t n = m.trueCount(c);
+    if (n > 0 && (rarest == 0 || n < rarest)) rarest = n;
+  }
+  return rarest;
+}
+
 }  // namespace
 
 SweepCellsModel::SweepCellsModel(QObject* parent) : QAbstractTableModel(parent) {}
@@ -59,6 +69,14 @@ QVariant SweepCellsModel::data(const QModelIndex& index, int role) const {
   if (role == Qt::ToolTipRole) {
     if (!r.ok) return text(r.reason);
     QStringList lines;
+    if (index.column() == TestSteps) {
+      for (ContactClass cls : r.confusion.activeClasses())
+        if (const std::size_t n = r.confusion.trueCount(cls); n > 0)
+          lines << tr("%1: %2 test steps%3")
+                       .arg(text(contactClassName(cls)))
+                       .arg(n)
+                       .arg(n < analysis::kMinTestSteps ? tr(" (too few)") : QString());
+    }
     for (const std::string& w : r.warnings)
       lines << text(w);
     return lines.isEmpty() ? QVariant() : QVariant(lines.join(QLatin1Char('\n')));
@@ -83,6 +101,17 @@ QVariant SweepCellsModel::data(const QModelIndex& index, int role) const {
       return sort ? QVariant(c.varianceFloor) : QVariant(QString::number(c.varianceFloor, 'g', 4));
     case Features:
       return text(analysis::featureKindName(c.features));
+    case Decision:
+      return text(analysis::decisionModeName(c.decision));
+    case TestSteps: {
+      const std::size_t steps = r.confusion.total();
+      if (sort) return QVariant(static_cast<qulonglong>(steps));
+      if (!r.ok) return QString();
+      if (steps == 0) return tr("none");
+      const std::size_t rarest = rarestTestSteps(r.confusion);
+      return rarest < analysis::kMinTestSteps ? tr("%1 (rarest %2, too few)").arg(steps).arg(rarest)
+                                              : tr("%1 (rarest %2)").arg(steps).arg(rarest);
+    }
     case Seed:
       return sort ? QVariant(static_cast<qulonglong>(c.seed)) : QVariant(QString::number(c.seed));
     case FitSeconds:  // shown in milliseconds, sorted by the seconds
@@ -126,6 +155,10 @@ QVariant SweepCellsModel::headerData(int section, Qt::Orientation orientation, i
       return tr("Floor");
     case Features:
       return tr("Features");
+    case Decision:
+      return tr("Decision");
+    case TestSteps:
+      return tr("Test steps");
     case Seed:
       return tr("Seed");
     case FitSeconds:

@@ -1,6 +1,8 @@
-// The cells of a sweep as a table: one row per cell with its settings, times and scores, growing
-// as cells finish. Display text is formatted; Qt::UserRole holds the raw number (or text) of each
-// column, so a QSortFilterProxyModel with sort role UserRole sorts numerically.
+// The cells of a sweep as a table: one row per cell with its settings (the decision mode among
+// them: cells that differ only in it share one fit), its test steps beside its scores ("too few"
+// where a class has fewer than kMinTestSteps), times, growing as cells finish. Display text is
+// formatted; Qt::UserRole holds the raw number (or text) of each column, so a QSortFilterProxyModel
+// with sort role UserRole sorts numerically.
 #pragma once
 
 #include <QAbstractTableModel>
@@ -22,7 +24,9 @@ class SweepCellsModel : public QAbstractTableModel {
     Form,
     Order,
     Floor,
+    Decision,
     BalancedAccuracy,
+    TestSteps,
     Accuracy,
     MacroF1,
     LogLikelihood,

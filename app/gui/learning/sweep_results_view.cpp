@@ -11,6 +11,7 @@
 #include <QTimer>
 #include <QVBoxLayout>
 
+#include <algorithm>
 #include <initializer_list>
 #include <utility>
 
@@ -31,16 +32,21 @@ class GroupFilter : public QSortFilterProxyModel {
     group_ = group;
     invalidateFilter();
   }
+  void setDecision(std::optional<analysis::DecisionMode> decision) {
+    decision_ = decision;
+    invalidateFilter();
+  }
 
  protected:
   bool filterAcceptsRow(int row, const QModelIndex&) const override {
-    if (!group_) return true;
     const auto* cells = static_cast<const SweepCellsModel*>(sourceModel());
-    return cells->cell(row).cell.group == *group_;
+    const analysis::SweepCell& c = cells->cell(row).cell;
+    return (!group_ || c.group == *group_) && (!decision_ || c.decision == *decision_);
   }
 
  private:
   std::optional<SensorGroup> group_;
+  std::optional<analysis::DecisionMode> decision_;
 };
 
 // Background of a confusion cell by its row percent: the diagonal in green, the rest in red,
@@ -69,13 +75,15 @@ QString describe(const analysis::SweepCell& c) {
   const QString floor = QString::number(c.varianceFloor, 'g', 4);
   const QString features = s(analysis::featureKindName(c.features));
   const QString seed = QString::number(c.seed);
+  const QString decision = s(analysis::decisionModeName(c.decision));
   if (c.method == analysis::ClassifierMethod::Gmm)
     return SweepResultsView::tr(
-               "Group %1, GMM %2, order %3, variance floor %4, %5 features, seed %6")
+               "Group %1, GMM %2, order %3, variance floor %4, %5 features, seed %6, %7 "
+               "decision")
         .arg(group, s(analysis::covarianceFormName(c.form)), QString::number(c.order), floor,
-             features, seed);
-  return SweepResultsView::tr("Group %1, %2, variance floor %3, %4 features, seed %5")
-      .arg(group, s(analysis::classifierMethodName(c.method)), floor, features, seed);
+             features, seed, decision);
+  return SweepResultsView::tr("Group %1, %2, variance floor %3, %4 features, seed %5, %6 decision")
+      .arg(group, s(analysis::classifierMethodName(c.method)), floor, features, seed, decision);
 }
 
 }  // namespace
@@ -100,6 +108,18 @@ SweepResultsView::SweepResultsView(QWidget* parent) : QWidget(parent) {
     setGroupFilter(
         g < 0 ? std::nullopt
               : std::optional<SensorGroup>(kSensorGroups[static_cast<std::size_t>(g)].group));
+  });
+
+  decisionBox_ = new QComboBox;
+  decisionBox_->setObjectName(QStringLiteral("decisionFilter"));
+  decisionBox_->setToolTip(
+      tr("step: the per-step argmax; online: the forward filter (causal); offline: "
+         "forward-backward over the whole contact. Cells that differ only in it share one fit."));
+  connect(decisionBox_, &QComboBox::currentIndexChanged, this, [this] {
+    const int d = decisionBox_->currentData().toInt();
+    setDecisionFilter(
+        d < 0 ? std::nullopt
+              : std::optional<analysis::DecisionMode>(static_cast<analysis::DecisionMode>(d)));
   });
 
   cells_ = new SweepCellsModel(this);
@@ -130,6 +150,8 @@ SweepResultsView::SweepResultsView(QWidget* parent) : QWidget(parent) {
   auto* filterRow = new QHBoxLayout;
   filterRow->addWidget(new QLabel(tr("Group:")));
   filterRow->addWidget(groupBox_);
+  filterRow->addWidget(new QLabel(tr("Decision:")));
+  filterRow->addWidget(decisionBox_);
   filterRow->addStretch();
   leftLayout->addLayout(filterRow);
   leftLayout->addWidget(cellsView_, 1);
@@ -206,6 +228,25 @@ void SweepResultsView::setSweep(std::int64_t sweepId, const analysis::SweepResul
   selected_ = -1;
   refreshTimer_->stop();
   cells_->setCells(sweep_.cells);
+  {
+    // The decision modes the sweep scored, in the grid's order.
+    const QSignalBlocker block(decisionBox_);
+    decisionBox_->clear();
+    decisionBox_->addItem(tr("All decisions"), -1);
+    for (analysis::DecisionMode d : analysis::kDecisionModes) {
+      const bool scored = std::any_of(sweep_.cells.begin(), sweep_.cells.end(),
+                                      [d](const auto& r) { return r.cell.decision == d; }) ||
+                          std::find(sweep_.grid.decisions.begin(), sweep_.grid.decisions.end(),
+                                    d) != sweep_.grid.decisions.end();
+      if (scored) {
+        const std::string_view name = analysis::decisionModeName(d);
+        decisionBox_->addItem(QString::fromUtf8(name.data(), static_cast<qsizetype>(name.size())),
+                              static_cast<int>(d));
+      }
+    }
+    decision_.reset();
+    static_cast<GroupFilter*>(filtered_)->setDecision(std::nullopt);
+  }
   refreshTitle();
   // The best cell of the shown group (or of all) first.
   int best = -1;
@@ -258,6 +299,32 @@ void SweepResultsView::setGroupFilter(std::optional<SensorGroup> group) {
   scrollToSelected();
 }
 
+void SweepResultsView::setDecisionFilter(std::optional<analysis::DecisionMode> decision) {
+  decision_ = decision;
+  static_cast<GroupFilter*>(filtered_)->setDecision(decision);
+  const int index = decisionBox_->findData(decision ? static_cast<int>(*decision) : -1);
+  if (index >= 0 && index != decisionBox_->currentIndex()) {
+    const QSignalBlocker block(decisionBox_);
+    decisionBox_->setCurrentIndex(index);
+  }
+  // The best cell among those shown.
+  const auto shown = [this](const analysis::SweepCell& c) {
+    return (!group_ || c.group == *group_) && (!decision_ || c.decision == *decision_);
+  };
+  if (selected_ < 0 || !shown(sweep_.cells[static_cast<std::size_t>(selected_)].cell)) {
+    int best = -1;
+    for (std::size_t i = 0; i < sweep_.cells.size(); ++i) {
+      const analysis::SweepCellResult& r = sweep_.cells[i];
+      if (!r.ok || !shown(r.cell)) continue;
+      if (best < 0 || analysis::betterCell(r, sweep_.cells[static_cast<std::size_t>(best)]))
+        best = static_cast<int>(i);
+    }
+    if (best >= 0) selectCell(best);
+  }
+  refreshFigures();
+  scrollToSelected();
+}
+
 void SweepResultsView::selectBestCell(SensorGroup group) {
   for (const std::size_t i : analysis::bestCells(sweep_)) {
     if (sweep_.cells[i].cell.group == group) {
@@ -272,6 +339,10 @@ void SweepResultsView::selectCell(int cellIndex) {
   const std::optional<SensorGroup> previousGroup =
       selected_ >= 0 ? std::optional(sweep_.cells[static_cast<std::size_t>(selected_)].cell.group)
                      : std::nullopt;
+  const std::optional<analysis::DecisionMode> previousDecision =
+      selected_ >= 0
+          ? std::optional(sweep_.cells[static_cast<std::size_t>(selected_)].cell.decision)
+          : std::nullopt;
   selected_ = cellIndex;
   const QModelIndex shown = filtered_->mapFromSource(cells_->index(cellIndex, 0));
   if (shown.isValid() && cellsView_->currentIndex().row() != shown.row()) {
@@ -283,7 +354,9 @@ void SweepResultsView::selectCell(int cellIndex) {
   // Without a group filter the rate figures hold the selected cell's group.
   const bool groupChanged =
       previousGroup != sweep_.cells[static_cast<std::size_t>(cellIndex)].cell.group;
-  if (!group_ && groupChanged) refreshFigures();
+  const bool decisionChanged =
+      previousDecision != sweep_.cells[static_cast<std::size_t>(cellIndex)].cell.decision;
+  if ((!group_ && groupChanged) || (!decision_ && decisionChanged)) refreshFigures();
   for (SweepPlot* plot : {floorPlot_, orderPlot_, timePlot_})
     plot->markCell(cellIndex);
   refreshCellDetails();
@@ -328,11 +401,16 @@ void SweepResultsView::refreshFigures() {
   std::optional<SensorGroup> rateGroup = group_;
   if (!rateGroup && selected_ >= 0)
     rateGroup = sweep_.cells[static_cast<std::size_t>(selected_)].cell.group;
+  // One decision mode too: the same fit scored by two decisions would be two points at one x.
+  std::optional<analysis::DecisionMode> rateDecision = decision_;
+  if (!rateDecision && selected_ >= 0)
+    rateDecision = sweep_.cells[static_cast<std::size_t>(selected_)].cell.decision;
   analysis::SweepResult shown;
   shown.grid = sweep_.grid;
   std::vector<int> origin;  // index in sweep_.cells of each cell of `shown`
   for (std::size_t i = 0; i < sweep_.cells.size(); ++i) {
     if (rateGroup && sweep_.cells[i].cell.group != *rateGroup) continue;
+    if (rateDecision && sweep_.cells[i].cell.decision != *rateDecision) continue;
     shown.cells.push_back(sweep_.cells[i]);
     origin.push_back(static_cast<int>(i));
   }

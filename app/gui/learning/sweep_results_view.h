@@ -46,6 +46,9 @@ class SweepResultsView : public QWidget {
   void selectBestCell(SensorGroup group);
   // Shows only one group's cells and figures (nullopt: all).
   void setGroupFilter(std::optional<SensorGroup> group);
+  // Cells of one decision mode only (nullopt: all). The rate figures always hold one decision:
+  // this one, else the selected cell's.
+  void setDecisionFilter(std::optional<analysis::DecisionMode> decision);
 
   // Parts, for tests and the results window.
   QLabel* title() const { return title_; }
@@ -80,10 +83,12 @@ class SweepResultsView : public QWidget {
   analysis::SweepResult sweep_;
   int selected_ = -1;
   std::optional<SensorGroup> group_;
+  std::optional<analysis::DecisionMode> decision_;
   bool figuresStale_ = true;
 
   QLabel* title_ = nullptr;
   QComboBox* groupBox_ = nullptr;
+  QComboBox* decisionBox_ = nullptr;
   SweepCellsModel* cells_ = nullptr;
   QSortFilterProxyModel* filtered_ = nullptr;
   QTableView* cellsView_ = nullptr;

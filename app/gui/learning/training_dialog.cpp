@@ -116,13 +116,26 @@ void TrainingDialog::buildUi() {
   form->addRow(tr("Runs:"), runs_);
 
   split_ = new QComboBox;
-  split_->addItem(tr("Score on the test runs"), static_cast<int>(workspace::SplitMode::ByRun));
-  split_->addItem(tr("Leave one run out (training only)"),
-                  static_cast<int>(workspace::SplitMode::LeaveOneRunOut));
-  split_->addItem(tr("Leave one scene out"), static_cast<int>(workspace::SplitMode::ByScene));
+  split_->setObjectName(QStringLiteral("split"));
+  // Each split under the name `tactile train --split` and `tactile sweep --split` give it.
+  const auto splitItem = [this](workspace::SplitMode mode, const QString& what) {
+    const std::string_view name = workspace::splitModeName(mode);
+    split_->addItem(QStringLiteral("%1 - %2").arg(
+                        QString::fromUtf8(name.data(), static_cast<qsizetype>(name.size())), what),
+                    static_cast<int>(mode));
+  };
+  splitItem(workspace::SplitMode::ByRun, tr("score on the test runs"));
+  splitItem(workspace::SplitMode::ByScene,
+            tr("leave one scene out: each scene scored by models trained without it"));
+  splitItem(workspace::SplitMode::LeaveOneRunOut,
+            tr("leave one run out (Train model only; a sweep cannot)"));
+  // The default of the command line and of the core's requests.
+  split_->setCurrentIndex(split_->findData(static_cast<int>(workspace::TrainRequest{}.split)));
   split_->setToolTip(
-      tr("Leave one scene out: each scene's runs (marked for training) are scored "
-         "by models trained without that scene; no test runs"));
+      tr("by-run: the runs marked Test are scored (the command line's default); by-scene: each "
+         "scene's runs (marked for training) are scored by models trained without that scene, no "
+         "test runs; leave-one-run-out: each run scored by a model trained on the others (Train "
+         "model only)"));
   form->addRow(tr("Split:"), split_);
 
   auto* groupRow = new QHBoxLayout;
