@@ -83,8 +83,10 @@ constexpr std::size_t kReplanIdleSteps = 20;
 constexpr double kLookAheadUnits = 300.0;
 constexpr double kClearUnits = 25.0;
 // Following a wall with the touch map: leave it (the plan heads away from the wall) only after
-// kMapLeaveUnits along it; turn back (the plan heads back along the wall) after kMapReverseUnits.
+// kMapLeaveUnits along it and with the plan's point in sight at least kMapLeaveClearUnits away
+// (room to go); turn back (the plan heads back along the wall) after kMapReverseUnits.
 constexpr double kMapLeaveUnits = 20.0;
+constexpr double kMapLeaveClearUnits = 100.0;
 constexpr double kMapReverseUnits = 60.0;
 constexpr double kMapReverseCosine = -0.5;
 // A map that finds no way is started afresh this many times before the run is unreachable (old
@@ -607,6 +609,7 @@ struct Navigator::Impl {
     if (useMap() && plan) {
       const auto d = planDirection();
       if (!d || followedUnits < kMapLeaveUnits) return false;
+      if ((planTarget() - bodyCentre()).norm() < kMapLeaveClearUnits) return false;
       return d->dot(intoWall()) < kLeaveCosine && aheadMax() <= kTouching;
     }
     const Vec2 g = goal - position();

@@ -1,8 +1,9 @@
-// The touch map (docs/navigation.md#the-touch-map): an occupancy grid in the navigator's odometry
-// frame holding where the robot has touched something, and a grid A* on it from the robot to the
-// goal. Unknown cells count as free; a cell is closed to the planner when a touched cell lies
-// within the growth radius (about the robot's half width). Cells the robot's body has since
-// driven through are cleared again (the odometry drifts; the body there says the cell is free).
+// The touch map (docs/navigation.md#the-touch-map-experimental): an occupancy grid in the
+// navigator's odometry frame holding where the robot has touched something, and a grid A* on it
+// from the robot to the goal. Unknown cells count as free; a cell is closed to the planner when a
+// touched cell lies within the growth radius (about the robot's half width). Cells the robot's body
+// has since driven through are cleared again (the odometry drifts; the body there says the cell is
+// free).
 //
 // What it may know is what the navigator knows: its odometry pose, the goal relative to the
 // start, the dome layout and which domes touch. Deterministic.
