@@ -264,6 +264,46 @@ TEST(TouchMapNavigator, PlanChoosesTheFollowSide) {
   }
 }
 
+// Where the plan and the first-touch rule disagree, the plan decides: hit on the front-left corner
+// (the first-touch rule puts that wall on the left and turns right) with the goal far off to the
+// left, where the plan's way leads past the touch: the robot turns left, the wall on its right.
+TEST(TouchMapNavigator, PlanOverridesTheFirstTouchRule) {
+  for (bool map : {true, false}) {
+    NavigatorConfig config;
+    config.source = StatusSource::Truth;
+    config.touchMap = map;
+    auto nav = std::move(Navigator::create(config).value());
+    Values values{};
+    Truth truth{};
+    std::size_t k = 0;
+    const auto step = [&](const Values& v) {
+      values = v;
+      truth = truthOf(v, ContactClass::Wall);
+      Observation o;
+      o.step = k++;
+      o.dtSeconds = 0.1;
+      o.start = Pose2d{0.0, 0.0, 0.0};
+      o.goal = Vec2(200.0, 1500.0);
+      o.values = &values;
+      o.truth = &truth;
+      return nav->step(o);
+    };
+    Values hit{};
+    press(hit, {8, 9}, 2.0);
+    step(hit);
+    ASSERT_EQ(nav->strategy(), Strategy::CheckContact);
+    double omega = 0.0;
+    for (int i = 0; i < 60 && omega == 0.0; ++i) {
+      const Command c = step(Values{});
+      if (c.v >= 0.0 && c.omega != 0.0) omega = c.omega;
+    }
+    if (map)
+      EXPECT_GT(omega, 0.0);  // the plan: round to the left
+    else
+      EXPECT_LT(omega, 0.0);  // the first-touch rule: away from the left-hand wall
+  }
+}
+
 // ---- whole runs --------------------------------------------------------------------------------
 
 sim::Obstacle box(double x0, double y0, double x1, double y1) {
