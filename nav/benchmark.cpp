@@ -112,6 +112,7 @@ Result<BenchmarkResult> runMapBenchmark(const BenchmarkOptions& options,
       NavigatorConfig config;
       config.source = sources[j % sources.size()];
       config.models = options.models;
+      config.touchMap = options.touchMap;
       NavigateOptions no;
       no.maxSteps = mapStepBudget(mc.astarUnits, config.cruiseUnitsPerSecond * no.sim.dtSeconds,
                                   options.maxSteps);

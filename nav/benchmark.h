@@ -48,6 +48,7 @@ struct BenchmarkOptions {
   std::size_t maxSteps = 6000;  // the floor of each map's budget (mapStepBudget)
   unsigned threads = 0;         // 0 = all cores
   std::shared_ptr<const analysis::ModelBundle> models;  // null: the model source is skipped
+  bool touchMap = false;  // NavigatorConfig::touchMap for the model and truth sources
 };
 
 struct SourceSummary {

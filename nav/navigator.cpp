@@ -74,6 +74,24 @@ constexpr int kCheckBudgetSteps = 300;
 // Arrived by odometry without reaching the goal: the search spiral round it.
 constexpr double kSearchPitchUnits = 80.0;
 constexpr double kSearchRadiusUnits = 400.0;
+// The touch map: replan at most every kReplanSteps steps when the map changed, and at least every
+// kReplanIdleSteps; Head to Destination steers to the farthest plan point in sight up to
+// kLookAheadUnits along the plan. The body clears touched cells within kClearUnits of three
+// points on its axis (the odometry drifts; where the body is, nothing is).
+constexpr std::size_t kReplanSteps = 5;
+constexpr std::size_t kReplanIdleSteps = 20;
+constexpr double kLookAheadUnits = 300.0;
+constexpr double kClearUnits = 25.0;
+// Following a wall with the touch map: leave it (the plan heads away from the wall) only after
+// kMapLeaveUnits along it and with the plan's point in sight at least kMapLeaveClearUnits away
+// (room to go); turn back (the plan heads back along the wall) after kMapReverseUnits.
+constexpr double kMapLeaveUnits = 20.0;
+constexpr double kMapLeaveClearUnits = 100.0;
+constexpr double kMapReverseUnits = 60.0;
+constexpr double kMapReverseCosine = -0.5;
+// A map that finds no way is started afresh this many times before the run is unreachable (old
+// touches may have drifted across a way that exists).
+constexpr int kMapResets = 3;
 // Bug2's bumper following: the arc back toward an obstacle no longer touched.
 constexpr double kBumperArcUnits = 90.0;
 
@@ -252,6 +270,17 @@ struct Navigator::Impl {
   // Bug2 (bumper source).
   Vec2 startPoint = Vec2::Zero();
 
+  // The touch map and the plan on it.
+  TouchMap touch;
+  std::optional<TouchPlan> plan;
+  std::uint64_t planRevision = 0;
+  std::size_t planStep = 0;
+  bool planned = false;
+  bool noWay = false;
+  int mapResets = 0;
+  double followedUnits = 0.0;  // along the wall since following started (odometry)
+  bool reversing = false;      // a U turn back along the wall the plan asked for
+
   const std::array<double, kValuesPerStep>* values = nullptr;
 
   double cruise() const { return cfg.cruiseUnitsPerSecond; }
@@ -272,6 +301,7 @@ struct Navigator::Impl {
     pathUnits += std::abs(last.v) * dt;
     turned += sim::wrapAngle(odo.theta - theta);
     if (sideLost) lostUnits += std::abs(last.v) * dt;
+    followedUnits += std::abs(last.v) * dt;
     if (rounding) roundTurned += std::abs(sim::wrapAngle(odo.theta - theta));
   }
 
@@ -368,6 +398,78 @@ struct Navigator::Impl {
     integrated = integratedOf();
   }
 
+  // ---- the touch map ----------------------------------------------------------------------------
+
+  bool useMap() const { return cfg.touchMap && cfg.source != StatusSource::Bumper; }
+  Vec2 bodyPoint(double x) const { return sim::bodyToWorld(odo, Vec2(x, 0.0)); }
+  Vec2 bodyCentre() const {
+    return bodyPoint(0.5 * (cfg.geometry.frontX() + cfg.geometry.backX()));
+  }
+
+  // Touching domes of the groups whose status is a contact mark their cells (the touched surface
+  // lies a dome radius out along the dome's normal); the body clears the cells it stands on.
+  void updateMap(bool blocked) {
+    if (!blocked) {
+      const double back = cfg.geometry.backX() + kClearUnits;
+      const double front = cfg.geometry.frontX() - kClearUnits;
+      for (double x : {back, 0.5 * (back + front), front})
+        touch.clear(bodyPoint(x), kClearUnits);
+    }
+    for (int s = 0; s < kSensorCount; ++s) {
+      if (normalOf(*values, s) <= kTouching) continue;
+      const StatusKind k = status[static_cast<std::size_t>(groupIndex(groupOfSensor(s)))].kind;
+      if (k == StatusKind::NoContact) continue;
+      const DomePlacement& d = domes[static_cast<std::size_t>(s)];
+      const Vec2 surface = toVec(d.centre) + cfg.geometry.domeRadiusUnits * toVec(d.normal);
+      touch.mark(sim::bodyToWorld(odo, surface));
+    }
+  }
+
+  // Replans when the map has changed (at most every kReplanSteps) or the plan is old; `force`
+  // replans now. noWay: the search found no way from an open cell near the robot to the goal.
+  void updatePlan(bool force) {
+    if (!useMap()) return;
+    const std::size_t age = stepIndex - planStep;
+    if (!force && planned && !(touch.revision() != planRevision && age >= kReplanSteps) &&
+        age < kReplanIdleSteps)
+      return;
+    bool snapFailed = false;
+    plan = touch.plan(bodyCentre(), goal, 80.0, &snapFailed);
+    planned = true;
+    planRevision = touch.revision();
+    planStep = stepIndex;
+    noWay = !plan && !snapFailed;
+  }
+
+  // Where Head to Destination heads: the plan's farthest point in sight, or the goal.
+  Vec2 planTarget() const {
+    if (!useMap() || !plan || plan->points.size() < 2) return goal;
+    if (touch.lineOpen(bodyCentre(), goal)) return goal;  // nothing touched in the way
+    const Vec2 p = touch.lookAhead(*plan, bodyCentre(), kLookAheadUnits);
+    if ((p - plan->points.back()).norm() < 1e-9) return goal;
+    return p;
+  }
+
+  // The direction of the plan from the robot (unit), or nullopt without a plan.
+  std::optional<Vec2> planDirection() const {
+    if (!useMap() || !plan || plan->points.size() < 2) return std::nullopt;
+    const Vec2 d = planTarget() - bodyCentre();
+    if (d.norm() < 1e-9) return std::nullopt;
+    return d / d.norm();
+  }
+
+  // No way on the map: start it afresh (kMapResets times), then the goal is unreachable.
+  bool mapSaysUnreachable() {
+    if (!useMap() || !noWay) return false;
+    if (mapResets < kMapResets) {
+      ++mapResets;
+      touch = TouchMap(startPoint, goal);
+      updatePlan(true);
+      return noWay;
+    }
+    return true;
+  }
+
   // The robot's status as the panel shows it: the followed side while following; otherwise the
   // most telling group (a hole, then a dead path, corner, leaving wall, wall).
   ContactStatus integratedOf() const {
@@ -444,7 +546,17 @@ struct Navigator::Impl {
     double right = groupMax(*values, G::FrontRightCorner) + groupMax(*values, G::Right);
     for (int s = 0; s < 8; ++s)
       (s < 4 ? right : left) += normalOf(*values, s);
-    if (sidePreference) {
+    std::optional<double> planTurn;
+    if (useMap()) {
+      updatePlan(true);
+      if (auto d = planDirection()) {
+        const double err = sim::wrapAngle(std::atan2(d->y(), d->x()) - odo.theta);
+        if (std::abs(err) > 0.05) planTurn = err;
+      }
+    }
+    if (planTurn) {
+      wallOnLeft = *planTurn < 0.0;  // the plan goes round to the right: the wall on the left
+    } else if (sidePreference) {
       wallOnLeft = *sidePreference;
     } else if (left == right) {
       const Vec2 g = goal - position();
@@ -454,6 +566,7 @@ struct Navigator::Impl {
       wallOnLeft = left > right;
     }
     following = false;
+    reversing = false;
     farFromHit = 0.0;
     hitGoalDistance = (goal - position()).norm();
     sideLost = false;
@@ -483,14 +596,22 @@ struct Navigator::Impl {
       following = true;
       hitPoint = position();
       farFromHit = 0.0;
+      followedUnits = 0.0;
     }
     sideLost = false;
     rounding = false;
     setStrategy(Strategy::FollowWall);
   }
 
-  // The goal lies away from the followed wall and closer than where the wall was hit.
+  // The goal lies away from the followed wall and closer than where the wall was hit. With the
+  // touch map: the plan heads away from the wall.
   bool mayLeave() const {
+    if (useMap() && plan) {
+      const auto d = planDirection();
+      if (!d || followedUnits < kMapLeaveUnits) return false;
+      if ((planTarget() - bodyCentre()).norm() < kMapLeaveClearUnits) return false;
+      return d->dot(intoWall()) < kLeaveCosine && aheadMax() <= kTouching;
+    }
     const Vec2 g = goal - position();
     const double d = g.norm();
     if (d <= 0.0 || d > hitGoalDistance - kLeaveGainUnits) return false;
@@ -499,9 +620,33 @@ struct Navigator::Impl {
     return g.dot(into) / d < kLeaveCosine && aheadMax() <= kTouching;
   }
 
+  // The unit direction from the robot into the followed wall.
+  Vec2 intoWall() const {
+    return wallOnLeft ? Vec2(-std::sin(odo.theta), std::cos(odo.theta))
+                      : Vec2(std::sin(odo.theta), -std::cos(odo.theta));
+  }
+
+  // With the touch map: the plan heads back along the wall (behind the robot, not away from the
+  // wall) after kMapReverseUnits of following: U turn, then head to the plan.
+  bool mayReverse() const {
+    if (!useMap() || !plan || followedUnits < kMapReverseUnits) return false;
+    const auto d = planDirection();
+    if (!d) return false;
+    const Vec2 forward(std::cos(odo.theta), std::sin(odo.theta));
+    return d->dot(forward) < kMapReverseCosine && d->dot(intoWall()) >= kLeaveCosine;
+  }
+
+  Command reverse() {
+    target.reset();
+    following = false;
+    reversing = true;
+    setStrategy(wallOnLeft ? Strategy::RightUTurn : Strategy::LeftUTurn, Phase::Back);
+    return uTurn();
+  }
+
   // Back where following started, having been away: the obstacle was walked round.
   bool circled() {
-    if (!following) return false;
+    if (!following || useMap()) return false;
     const double d = (position() - hitPoint).norm();
     farFromHit = std::max(farFromHit, d);
     return farFromHit > kDepartUnits && d < kReturnUnits;
@@ -540,7 +685,7 @@ struct Navigator::Impl {
 
   Command headToDestination() {
     if (frontMax() > kTouching || blockedStreak > 0) {
-      if (loopAtHit()) {
+      if (!useMap() && loopAtHit()) {
         // Hit again where it was hit before, no closer to the goal, after a long way round: a
         // loop. Follow walls on the other side from then on; at the kLoopsToGiveUp-th loop the
         // walls are exhausted (the widest passable hole left, or unreachable).
@@ -550,7 +695,7 @@ struct Navigator::Impl {
       startEpisode();
       return checkContact();
     }
-    Command c = headTo(goal);
+    Command c = headTo(planTarget());
     // A side brushing something while the way ahead is free: ease away from it.
     const double l = std::max(groupMax(*values, SensorGroup::Left),
                               groupMax(*values, SensorGroup::RearLeftCorner));
@@ -637,7 +782,7 @@ struct Navigator::Impl {
         if (phaseUnits > kCheckLostUnits) {
           // Nothing found beside: the obstacle was small; head for the goal again.
           setStrategy(Strategy::HeadToDestination);
-          return headTo(goal);
+          return headTo(planTarget());
         }
         // Straight first (thesis: move straight, turn a slight angle when stopped); then arc
         // gently toward the wall side to find it.
@@ -656,8 +801,9 @@ struct Navigator::Impl {
     if (circled()) return wallExhausted(false);
     if (mayLeave()) {
       setStrategy(Strategy::HeadToDestination);
-      return headTo(goal);
+      return headTo(planTarget());
     }
+    if (mayReverse()) return reverse();
     const StatusKind front = groupStatus(SensorGroup::Front).kind;
     if (aheadMax() > kTouching || front == StatusKind::DeadPath) {
       // The end of this wall: a wall ahead. With a passable hole behind, go back to the widest
@@ -691,7 +837,7 @@ struct Navigator::Impl {
     if (circled()) return wallExhausted(false);
     if (mayLeave()) {
       setStrategy(Strategy::HeadToDestination);
-      return headTo(goal);
+      return headTo(planTarget());
     }
     if (aheadMax() > kTouching) {
       if (memory.widestPassable(cfg.passableWidthUnits, wall)) return wallExhausted(true);
@@ -735,7 +881,7 @@ struct Navigator::Impl {
       }
       if (roundTurned > 2.0 * kPi) {
         setStrategy(Strategy::HeadToDestination);
-        return headTo(goal);
+        return headTo(planTarget());
       }
       return {0.6 * cruise(), -away() * kRoundTurnFraction * cfg.turnRadiansPerSecond};
     }
@@ -768,6 +914,11 @@ struct Navigator::Impl {
         const std::size_t t = *target;
         beginHole(t);
         return moveThroughWall();
+      }
+      if (reversing) {
+        reversing = false;
+        setStrategy(Strategy::HeadToDestination);
+        return headTo(planTarget());
       }
       setStrategy(Strategy::CheckContact, Phase::Forward);
       return {};
@@ -911,6 +1062,7 @@ struct Navigator::Impl {
       // distance to the destination).
       goal = obs.goal;
       startPoint = Vec2(obs.start.x, obs.start.y);
+      if (useMap()) touch = TouchMap(startPoint, goal);
     } else {
       integrate(obs.blocked);
     }
@@ -919,6 +1071,11 @@ struct Navigator::Impl {
     blockedStreak = obs.blocked ? blockedStreak + 1 : 0;
     recentBlocked[obs.step % kWedgedWindow] = obs.blocked;
     updateStatus(obs);
+    if (useMap() && !finished) {
+      updateMap(obs.blocked);
+      updatePlan(false);
+      if (!arrived && mapSaysUnreachable()) finished = RunOutcome::Unreachable;
+    }
     if (finished) return last = Command{};
     if (!arrived && (goal - position()).norm() < cfg.arriveRadiusUnits) {
       arrived = true;
@@ -1066,6 +1223,12 @@ const Pose2d& Navigator::odometry() const {
 }
 bool Navigator::arrived() const {
   return impl_->arrived;
+}
+const TouchMap& Navigator::touchMap() const {
+  return impl_->touch;
+}
+const std::optional<TouchPlan>& Navigator::plan() const {
+  return impl_->plan;
 }
 
 }  // namespace tactile::nav

@@ -26,6 +26,7 @@
 
 #include "analysis/model_file.h"
 #include "base/error.h"
+#include "nav/touch_map.h"
 #include "run/contact_class.h"
 #include "run/robot_geometry.h"
 #include "run/run.h"
@@ -113,6 +114,13 @@ struct NavigatorConfig {
   // The navigator stops (and waits for the referee) when its odometry puts it this close to the
   // goal.
   double arriveRadiusUnits = 30.0;
+  // The touch map (docs/navigation.md#the-touch-map-experimental), opt-in: remember where the robot
+  // touched things in the odometry frame and plan on it where Head to Destination heads, which side
+  // to follow and when to leave a wall; the plan finding no way (after kMapResets fresh starts)
+  // ends the run as unreachable, replacing the loop rule and the return-point test. Off (the
+  // default): the navigator as the figures in docs/navigation-bench.md give it. The bumper Bug2
+  // never uses it.
+  bool touchMap = false;
 };
 
 // One step's input. The base holds what every driver sees (its `pose` is the simulator's and is
@@ -154,6 +162,10 @@ class Navigator : public sim::Driver {
   const Pose2d& odometry() const;
   // True once the odometry says the goal is reached.
   bool arrived() const;
+  // The touch map (empty before the first step and for the bumper source or with touchMap off)
+  // and the latest plan on it (nullopt when none was made or no way was found).
+  const TouchMap& touchMap() const;
+  const std::optional<TouchPlan>& plan() const;
 
  private:
   struct Impl;

@@ -43,6 +43,7 @@ struct NavigateArgs {
   std::uint64_t seed = 1;
   bool json = false;
   bool quiet = false;
+  bool touchMap = false;
 };
 
 // "A-B", "A" or "A,B,C" (each part a number or a range); at most 100,000 seeds.
@@ -107,6 +108,7 @@ int runBenchmark(const NavigateArgs& a) {
   options.seed = a.seed;
   options.maxSteps = static_cast<std::size_t>(a.maxSteps);
   options.threads = a.threads;
+  options.touchMap = a.touchMap;
   options.models = loadModels(a);
   ProgressFn progress;
   if (!a.quiet) {
@@ -164,6 +166,7 @@ int runNavigate(const NavigateArgs& a) {
   const std::vector<std::uint64_t> seeds = parseSeeds(a.seeds);
   nav::NavigatorConfig config;
   config.source = *source;
+  config.touchMap = a.touchMap;
   if (*source == nav::StatusSource::Model) config.models = loadModels(a);
   Result<sim::Scene> loaded = sim::loadScene(a.scene);
   if (!loaded) throw std::runtime_error(loaded.errorText());
@@ -305,6 +308,9 @@ void registerNavigateVerb(CLI::App& app) {
                   "--benchmark: map i is random:office:(900000 + SEED + i) (default 1)");
   cmd->add_flag("--json", args->json, "Print one JSON object on stdout");
   cmd->add_flag("--quiet", args->quiet, "No progress on stderr");
+  cmd->add_flag("--touch-map", args->touchMap,
+                "Model and truth sources plan on a map of where the robot touched things "
+                "(experimental; see docs/navigation.md)");
   setAction(cmd, [args] { return runNavigate(*args); });
 }
 

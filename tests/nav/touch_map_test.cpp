@@ -1,0 +1,347 @@
+// The touch map (docs/navigation.md#the-touch-map): marking and clearing cells, the grid A* on
+// hand-made maps (a wall with no way through leaves no plan: the navigator's `unreachable`), the
+// navigator marking what its domes touch, the plan choosing the follow side, and determinism.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <initializer_list>
+
+#include "nav/navigate.h"
+#include "nav/navigator.h"
+#include "nav/touch_map.h"
+#include "run/run_csv.h"
+#include "sim/robot.h"
+
+namespace tactile::nav {
+namespace {
+
+using Values = std::array<double, kValuesPerStep>;
+using Truth = std::array<ContactClass, kGroupCount>;
+
+// A map over x in [0, 1000] (plus the margin), cells of 20, growth 40.
+TouchMap plainMap(double margin = 300.0) {
+  TouchMapConfig c;
+  c.marginUnits = margin;
+  return TouchMap(Vec2(0.0, 0.0), Vec2(1000.0, 0.0), c);
+}
+
+// Touches every 10 units along x = `x` from y0 to y1.
+void markWall(TouchMap& map, double x, double y0, double y1) {
+  for (double y = y0; y <= y1; y += 10.0)
+    map.mark(Vec2(x, y));
+}
+
+TEST(TouchMap, MarkClosesCellsWithinTheGrowth) {
+  TouchMap map = plainMap();
+  EXPECT_FALSE(map.closed(Vec2(500.0, 0.0)));
+  const auto rev = map.revision();
+  EXPECT_TRUE(map.mark(Vec2(505.0, 5.0)));
+  EXPECT_FALSE(map.mark(Vec2(501.0, 1.0)));  // the same cell
+  EXPECT_EQ(map.touchedCount(), 1);
+  EXPECT_GT(map.revision(), rev);
+  EXPECT_TRUE(map.touched(Vec2(510.0, 10.0)));
+  // The cell's centre is (510, 10): cells whose centres lie within 40 are closed, 60 away open.
+  EXPECT_TRUE(map.closed(Vec2(550.0, 10.0)));
+  EXPECT_TRUE(map.closed(Vec2(510.0, -30.0)));
+  EXPECT_FALSE(map.closed(Vec2(570.0, 10.0)));
+  EXPECT_FALSE(map.closed(Vec2(450.0, 10.0)));
+  // Off the grid: never marked, always closed.
+  EXPECT_FALSE(map.mark(Vec2(-5000.0, 0.0)));
+  EXPECT_TRUE(map.closed(Vec2(-5000.0, 0.0)));
+  EXPECT_FALSE(map.mark(Vec2(std::nan(""), 0.0)));
+}
+
+TEST(TouchMap, ClearOpensTheCellsAgain) {
+  TouchMap map = plainMap();
+  markWall(map, 500.0, -100.0, 100.0);
+  const int before = map.touchedCount();
+  ASSERT_GT(before, 5);
+  EXPECT_EQ(map.clear(Vec2(500.0, 0.0), 25.0), 2);  // the cells centred at y -10 and 10
+  EXPECT_EQ(map.touchedCount(), before - 2);
+  EXPECT_FALSE(map.touched(Vec2(505.0, 5.0)));
+  EXPECT_TRUE(map.touched(Vec2(505.0, 65.0)));
+  EXPECT_EQ(map.clear(Vec2(500.0, 0.0), 25.0), 0);
+}
+
+TEST(TouchMap, PlanOnAnEmptyMapIsTheOctileDistance) {
+  const TouchMap map = plainMap();
+  const auto p = map.plan(Vec2(10.0, 10.0), Vec2(410.0, 10.0));
+  ASSERT_TRUE(p);
+  EXPECT_NEAR(p->lengthUnits, 400.0, 1e-9);
+  const auto d = map.plan(Vec2(10.0, 10.0), Vec2(210.0, 210.0));
+  ASSERT_TRUE(d);
+  EXPECT_NEAR(d->lengthUnits, 200.0 * std::sqrt(2.0), 1e-9);
+  EXPECT_NEAR((d->points.front() - Vec2(10.0, 10.0)).norm(), 0.0, 1e-9);
+  EXPECT_NEAR((d->points.back() - Vec2(210.0, 210.0)).norm(), 0.0, 1e-9);
+}
+
+TEST(TouchMap, PlanGoesRoundATouchedWallThroughOpenCells) {
+  TouchMap map = plainMap();
+  markWall(map, 500.0, -200.0, 150.0);  // a wall across the straight way, shorter above
+  const auto p = map.plan(Vec2(10.0, 10.0), Vec2(990.0, 10.0));
+  ASSERT_TRUE(p);
+  // At least the straight legs to and from the crossing above the wall's end and its growth.
+  EXPECT_GT(p->lengthUnits, 2.0 * std::hypot(490.0, 180.0));
+  for (const Vec2& q : p->points)
+    EXPECT_FALSE(map.closed(q)) << q.x() << ", " << q.y();
+  // Round the shorter (upper) end: the crossing of x = 500 lies above the wall's end and its
+  // growth.
+  bool crossed = false;
+  for (std::size_t i = 1; i < p->points.size(); ++i) {
+    if (p->points[i - 1].x() < 500.0 && p->points[i].x() >= 500.0) {
+      crossed = true;
+      EXPECT_GT(p->points[i].y(), 150.0 + 40.0);
+    }
+  }
+  EXPECT_TRUE(crossed);
+  // The look-ahead sees past the cells next to the robot but not through the wall.
+  const Vec2 aim = map.lookAhead(*p, Vec2(10.0, 10.0), 300.0);
+  EXPECT_GT((aim - Vec2(10.0, 10.0)).norm(), 100.0);
+  EXPECT_TRUE(map.lineOpen(Vec2(10.0, 10.0), aim));
+}
+
+TEST(TouchMap, WallAcrossTheWholeMapLeavesNoWay) {
+  TouchMap map = plainMap(200.0);
+  markWall(map, 500.0, -260.0, 260.0);  // the grid spans y -200..200
+  bool snapFailed = true;
+  EXPECT_FALSE(map.plan(Vec2(10.0, 10.0), Vec2(990.0, 10.0), 80.0, &snapFailed));
+  EXPECT_FALSE(snapFailed);  // both ends open: the search found no way
+  // A 120-wide opening in it (the robot is 92 wide with its domes) lets the plan through; a 60
+  // wide one does not.
+  TouchMap door = plainMap(200.0);
+  markWall(door, 500.0, -260.0, -60.0);
+  markWall(door, 500.0, 60.0, 260.0);
+  EXPECT_TRUE(door.plan(Vec2(10.0, 10.0), Vec2(990.0, 10.0)));
+  TouchMap gap = plainMap(200.0);
+  markWall(gap, 500.0, -260.0, -30.0);
+  markWall(gap, 500.0, 30.0, 260.0);
+  EXPECT_FALSE(gap.plan(Vec2(10.0, 10.0), Vec2(990.0, 10.0)));
+}
+
+TEST(TouchMap, StartOnTheGrowthOfAThinWallStaysOnItsSide) {
+  TouchMap map = plainMap();
+  markWall(map, 500.0, -200.0, 200.0);
+  // Standing 20 in front of the wall (on closed cells): the plan starts on this side, not on the
+  // open cells just beyond the wall.
+  const auto p = map.plan(Vec2(480.0, 0.0), Vec2(990.0, 10.0));
+  ASSERT_TRUE(p);
+  EXPECT_LT(p->points.front().x(), 500.0);
+  bool snapFailed = false;
+  EXPECT_FALSE(map.plan(Vec2(480.0, 0.0), Vec2(990.0, 10.0), 10.0, &snapFailed));
+  EXPECT_TRUE(snapFailed);
+}
+
+// ---- the navigator with the touch map ---------------------------------------------------------
+
+void press(Values& values, std::initializer_list<int> sensors, double n) {
+  for (int s : sensors)
+    values[static_cast<std::size_t>(normalOffset(s))] = n;
+}
+
+Truth truthOf(const Values& values, ContactClass touching) {
+  Truth t{};
+  for (const GroupInfo& info : kSensorGroups) {
+    bool any = false;
+    for (int d = info.firstSensor; d < info.firstSensor + info.sensorCount; ++d)
+      any = any || values[static_cast<std::size_t>(normalOffset(d))] != 0.0;
+    t[static_cast<std::size_t>(groupIndex(info.group))] = any ? touching : ContactClass::NoContact;
+  }
+  return t;
+}
+
+class Script {
+ public:
+  explicit Script(Vec2 goal = Vec2(2000.0, 0.0)) : goal_(goal) {
+    NavigatorConfig config;
+    config.source = StatusSource::Truth;
+    config.touchMap = true;
+    auto made = Navigator::create(config);
+    EXPECT_TRUE(made.ok());
+    nav_ = std::move(made.value());
+  }
+  Command step(const Values& values, ContactClass touching = ContactClass::Wall) {
+    values_ = values;
+    truth_ = truthOf(values, touching);
+    Observation o;
+    o.step = step_++;
+    o.dtSeconds = 0.1;
+    o.start = Pose2d{0.0, 0.0, 0.0};
+    o.goal = goal_;
+    o.values = &values_;
+    o.truth = &truth_;
+    return nav_->step(o);
+  }
+  Navigator& nav() { return *nav_; }
+
+ private:
+  std::unique_ptr<Navigator> nav_;
+  Vec2 goal_;
+  Values values_{};
+  Truth truth_{};
+  std::size_t step_ = 0;
+};
+
+// Where a pressed dome marks: its centre a dome radius out along its normal, in the odometry frame.
+Vec2 touchPoint(const Pose2d& pose, int sensor) {
+  const RobotGeometry g;
+  const DomePlacement d = domePlacements(g)[static_cast<std::size_t>(sensor)];
+  const Vec2 body(d.centre.x + g.domeRadiusUnits * d.normal.x,
+                  d.centre.y + g.domeRadiusUnits * d.normal.y);
+  return sim::bodyToWorld(pose, body);
+}
+
+TEST(TouchMapNavigator, TouchingDomesOfAContactGroupMarkTheirCells) {
+  Script s;
+  s.step(Values{});
+  s.step(Values{});
+  const Pose2d pose = s.nav().odometry();
+  EXPECT_EQ(s.nav().touchMap().touchedCount(), 0);
+  Values front{};
+  press(front, {2, 3}, 2.0);
+  s.step(front);
+  // The pose did not change in this step (the odometry integrated the previous command first).
+  const Pose2d now = s.nav().odometry();
+  for (int sensor : {2, 3})
+    EXPECT_TRUE(s.nav().touchMap().touched(touchPoint(now, sensor)));
+  EXPECT_FALSE(s.nav().touchMap().touched(touchPoint(now, 20)));
+  EXPECT_GE(s.nav().touchMap().touchedCount(), 1);
+  EXPECT_LE(s.nav().touchMap().touchedCount(), 2);
+  EXPECT_GT(now.x, pose.x);
+  // The bumper Bug2 and a navigator with the map off keep no map.
+  NavigatorConfig off;
+  off.source = StatusSource::Truth;
+  EXPECT_TRUE(Navigator::create(off).value()->touchMap().empty());
+}
+
+TEST(TouchMapNavigator, GroupJudgedNoContactDoesNotMark) {
+  Script s;
+  s.step(Values{});
+  Values front{};
+  press(front, {2, 3}, 2.0);
+  s.step(front, ContactClass::NoContact);
+  EXPECT_EQ(s.nav().touchMap().touchedCount(), 0);
+}
+
+// The side to follow is the side the plan goes round: the wall goes on the other side, so Check
+// Contact turns toward the plan's way (a hit on a front corner with the goal off to that side).
+TEST(TouchMapNavigator, PlanChoosesTheFollowSide) {
+  for (double goalY : {600.0, -600.0}) {
+    Script s(Vec2(2000.0, goalY));
+    s.step(Values{});
+    // Face the goal first (Head to Destination turns in place).
+    for (int i = 0; i < 60 && s.nav().strategy() == Strategy::HeadToDestination; ++i) {
+      const Command c = s.step(Values{});
+      if (c.v > 0.0) break;
+    }
+    Values hit{};
+    // The front corner on the goal's side and the front face next to it.
+    if (goalY > 0.0)
+      press(hit, {8, 9, 6, 7}, 2.0);  // front-left corner
+    else
+      press(hit, {42, 43, 0, 1}, 2.0);  // front-right corner
+    s.step(hit);
+    ASSERT_EQ(s.nav().strategy(), Strategy::CheckContact);
+    ASSERT_TRUE(s.nav().plan());
+    // The plan's way from the body centre, relative to the heading.
+    const Pose2d pose = s.nav().odometry();
+    const Vec2 centre = sim::bodyToWorld(pose, Vec2(35.0, 0.0));
+    const Vec2 goal(2000.0, goalY);
+    const Vec2 aim = s.nav().touchMap().lineOpen(centre, goal)
+                         ? goal
+                         : s.nav().touchMap().lookAhead(*s.nav().plan(), centre, 300.0);
+    const double err =
+        sim::wrapAngle(std::atan2(aim.y() - centre.y(), aim.x() - centre.x()) - pose.theta);
+    ASSERT_GT(std::abs(err), 0.05);
+    // Back off straight, then the turn (in place, or on an arc when the corner was pressed):
+    // its sign is the plan's.
+    double omega = 0.0;
+    for (int i = 0; i < 60 && omega == 0.0; ++i) {
+      const Command c = s.step(Values{});
+      if (c.v >= 0.0 && c.omega != 0.0) omega = c.omega;
+    }
+    EXPECT_NE(omega, 0.0);
+    EXPECT_EQ(omega > 0.0, err > 0.0) << "goal y " << goalY;
+  }
+}
+
+// Where the plan and the first-touch rule disagree, the plan decides: hit on the front-left corner
+// (the first-touch rule puts that wall on the left and turns right) with the goal far off to the
+// left, where the plan's way leads past the touch: the robot turns left, the wall on its right.
+TEST(TouchMapNavigator, PlanOverridesTheFirstTouchRule) {
+  for (bool map : {true, false}) {
+    NavigatorConfig config;
+    config.source = StatusSource::Truth;
+    config.touchMap = map;
+    auto nav = std::move(Navigator::create(config).value());
+    Values values{};
+    Truth truth{};
+    std::size_t k = 0;
+    const auto step = [&](const Values& v) {
+      values = v;
+      truth = truthOf(v, ContactClass::Wall);
+      Observation o;
+      o.step = k++;
+      o.dtSeconds = 0.1;
+      o.start = Pose2d{0.0, 0.0, 0.0};
+      o.goal = Vec2(200.0, 1500.0);
+      o.values = &values;
+      o.truth = &truth;
+      return nav->step(o);
+    };
+    Values hit{};
+    press(hit, {8, 9}, 2.0);
+    step(hit);
+    ASSERT_EQ(nav->strategy(), Strategy::CheckContact);
+    double omega = 0.0;
+    for (int i = 0; i < 60 && omega == 0.0; ++i) {
+      const Command c = step(Values{});
+      if (c.v >= 0.0 && c.omega != 0.0) omega = c.omega;
+    }
+    if (map)
+      EXPECT_GT(omega, 0.0);  // the plan: round to the left
+    else
+      EXPECT_LT(omega, 0.0);  // the first-touch rule: away from the left-hand wall
+  }
+}
+
+// ---- whole runs --------------------------------------------------------------------------------
+
+sim::Obstacle box(double x0, double y0, double x1, double y1) {
+  return sim::Obstacle{{Vec2(x0, y0), Vec2(x1, y0), Vec2(x1, y1), Vec2(x0, y1)}};
+}
+
+std::shared_ptr<const sim::World> worldOf(std::vector<sim::Obstacle> obstacles, double width,
+                                          double height, Vec2 goal) {
+  sim::Scene s;
+  s.name = "test";
+  s.bounds = {0, 0, width, height};
+  s.obstacles = std::move(obstacles);
+  s.start = {200, height / 2, 0};
+  s.goal = goal;
+  return std::make_shared<const sim::World>(std::move(s));
+}
+
+NavigateResult runWithMap(const std::shared_ptr<const sim::World>& world, Pose2d start,
+                          std::size_t maxSteps) {
+  NavigatorConfig config;
+  config.source = StatusSource::Truth;
+  config.touchMap = true;
+  NavigateOptions options;
+  options.maxSteps = maxSteps;
+  auto r = navigate(world, "test", start, world->scene().goal, config, options);
+  EXPECT_TRUE(r.ok()) << (r.ok() ? "" : r.errorText());
+  return std::move(r.value());
+}
+
+TEST(TouchMapNavigate, ReachesTheGoalRoundABoxAndIsDeterministic) {
+  const auto world = worldOf({box(600, 330, 700, 570)}, 1400, 900, Vec2(1200, 450));
+  for (double y : {400.0, 500.0}) {
+    const NavigateResult a = runWithMap(world, {200, y, 0}, 8000);
+    EXPECT_EQ(a.outcome, RunOutcome::Success) << "from y " << y << " after " << a.steps;
+    const NavigateResult b = runWithMap(world, {200, y, 0}, 8000);
+    EXPECT_TRUE(a.run == b.run);
+  }
+}
+
+}  // namespace
+}  // namespace tactile::nav
