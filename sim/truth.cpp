@@ -29,18 +29,6 @@ double bodyX(const Pose2d& pose, const Vec2& p) {
   return std::cos(pose.theta) * (p.x() - pose.x) + std::sin(pose.theta) * (p.y() - pose.y);
 }
 
-// The other edge of the polygon loop of edge `e` that meets it at vertex `v`; -1 when `v` is not
-// an end of `e`. A loop's edges are stored one after another, in order.
-int otherEdgeAt(const std::vector<Edge>& edges, int e, int v) {
-  if (v < 0 || (edges[e].vertexA != v && edges[e].vertexB != v)) return -1;
-  for (int k = e - 1; k >= 0 && edges[k].obstacle == edges[e].obstacle; --k)
-    if (k != e && (edges[k].vertexA == v || edges[k].vertexB == v)) return k;
-  for (int k = e + 1; k < static_cast<int>(edges.size()) && edges[k].obstacle == edges[e].obstacle;
-       ++k)
-    if (edges[k].vertexA == v || edges[k].vertexB == v) return k;
-  return -1;
-}
-
 }  // namespace
 
 TruthTracker::TruthTracker(const RobotGeometry& geometry)
@@ -104,8 +92,8 @@ ContactClass TruthTracker::touching(const World& world, const Pose2d& pose,
   // between it and the next dome of the group ahead, which has lost the wall); and the group's
   // front-most dome is off the wall or on v. The group enters LeavingWall from Wall when v moves
   // rearward in the robot's frame (the robot slides off the end) while a dome of the group is
-  // still on e's interior; it stays LeavingWall while the end stays so, however the robot moves.
-  // When every touching dome is on one vertex, either edge there may be the wall.
+  // still on e's interior; it stays LeavingWall while the end stays so and a dome of the group is
+  // still on e's interior, however the robot moves.
   if (mayLeaveWall(info.group) &&
       (previous == ContactClass::Wall || previous == ContactClass::LeavingWall)) {
     int front = info.firstSensor;
@@ -135,16 +123,16 @@ ContactClass TruthTracker::touching(const World& world, const Pose2d& pose,
         if (fc.edge >= 0 && fc.vertex != vertex) continue;
         const double x = bodyX(pose, at);
         if (onFront != vertex && !(std::isfinite(nextX) && x > frontX && x < nextX)) continue;
+        // The group still lies along the wall behind the end: a dome of it is on e's interior.
+        // Without one, the group feels nothing but the end itself, which reads the same as any
+        // convex vertex passing along the side (a tip met side-on): that is a corner (rule 6).
+        if (!onInterior) continue;
         if (previous == ContactClass::LeavingWall) return true;
-        if (onInterior && previousPose_ && bodyX(*previousPose_, at) - x > kStillUnits) return true;
+        if (previousPose_ && bodyX(*previousPose_, at) - x > kStillUnits) return true;
       }
       return false;
     };
     if (leavesWall(wall)) return ContactClass::LeavingWall;
-    if (interiorWall < 0) {
-      const int other = otherEdgeAt(edges, wall, contact.domes[frontTouching].vertex);
-      if (other >= 0 && leavesWall(other)) return ContactClass::LeavingWall;
-    }
   }
   if (feltVertex) return ContactClass::Corner;
   // A group that felt a corner stays Corner while a non-flat end of an edge it touches is still

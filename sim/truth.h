@@ -16,7 +16,9 @@
 //                  reached g's front-most touching dome (it sits on v, or v lies between it and
 //                  the next dome of g ahead), and g's front-most dome is off the wall or on v.
 //                  Entered from Wall when v moves rearward in the robot's frame while a dome of
-//                  g is still on e's interior (sliding off forwards); kept while it holds.
+//                  g is still on e's interior (sliding off forwards); kept while it holds and
+//                  a dome of g is still on e's interior (a group left on the end alone feels a
+//                  vertex: rule 6).
 //   6. Corner      a dome of g sits on a non-flat vertex; or g was Corner and a non-flat end of
 //                  an edge it touches lies within a dome radius of a touching dome's centre.
 //   7. Wall        otherwise: all contacts on one straight wall.

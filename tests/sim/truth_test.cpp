@@ -1,6 +1,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <numbers>
 #include <string>
 #include <vector>
@@ -71,9 +72,10 @@ std::string sequenceOf(const std::vector<ContactClass>& seen) {
   return out;
 }
 
-TEST(Truth, DrivingPastTheEndOfAWallIsWallThenLeavingWallThenNoContactAtAnySpeed) {
+TEST(Truth, DrivingPastTheEndOfAWallIsWallThenLeavingWallThenCornerAtAnySpeed) {
   // A wall along the right side that ends at x = 1100; drive forward past its end with the
-  // default spring-damper, at speeds 10 to 60.
+  // default spring-damper, at speeds 10 to 60. The rear-most dome, last on the wall, rolls over
+  // its end alone: a vertex felt (Corner), and its values fade with that class.
   for (double speed : {10.0, 20.0, 30.0, 40.0, 50.0, 60.0}) {
     auto sim = makeSim(roomWith({box(500, 800, 1100, 1000 - 43)}), SimConfig{});
     std::vector<ContactClass> right;
@@ -85,7 +87,7 @@ TEST(Truth, DrivingPastTheEndOfAWallIsWallThenLeavingWallThenNoContactAtAnySpeed
       right.push_back(classOf(*sim, SensorGroup::Right));
       frontRight.push_back(classOf(*sim, SensorGroup::FrontRightCorner));
     }
-    EXPECT_EQ(sequenceOf(right), "Wall LeavingWall NoContact") << "speed " << speed;
+    EXPECT_EQ(sequenceOf(right), "Wall LeavingWall Corner NoContact") << "speed " << speed;
     // The front corner group never leaves a wall (no such class there).
     EXPECT_EQ(std::count(frontRight.begin(), frontRight.end(), ContactClass::LeavingWall), 0)
         << "speed " << speed << ": " << sequenceOf(frontRight);
@@ -109,6 +111,61 @@ TEST(Truth, LeavingWallStartsOnlyOnceTheEndHasReachedTheFrontMostDome) {
     if (r == ContactClass::LeavingWall) ++leaving;
   }
   EXPECT_GT(leaving, 50);
+}
+
+// LeavingWall is the group's front off the wall while its rear is still on it: at every such step
+// a dome of the group touches the wall's interior. A group left with nothing but the end under
+// it feels a vertex, as it would any convex corner passing along the side: Corner.
+bool onAnEdgeInterior(const Simulator& sim, SensorGroup g) {
+  const GroupInfo& info = groupInfo(g);
+  for (int d = info.firstSensor; d < info.firstSensor + info.sensorCount; ++d) {
+    const DomeContact& dc = sim.contact().domes[d];
+    if (dc.edge >= 0 && dc.vertex < 0) return true;
+  }
+  return false;
+}
+
+TEST(Truth, LeavingWallOnlyWhileADomeOfTheGroupIsStillOnTheWall) {
+  // Straight off the end of a wall along the right side, and off the end of a wall that closes
+  // in on the side toward its end (only the front domes touch it, the end then runs back along
+  // the side alone), at several speeds.
+  const double surface = 1000 - 46;  // the right side's domes, undeformed
+  const Obstacle straight = box(500, 800, 1100, 1000 - 43);
+  const double slope = std::tan(8.0 * std::numbers::pi / 180.0);
+  const Obstacle closing{{Vec2(1060, surface + 2), Vec2(700, surface + 2 - 360 * slope),
+                          Vec2(700, 800), Vec2(1060, 800)}};
+  for (int shape = 0; shape < 2; ++shape) {
+    const Obstacle& wall = shape == 0 ? straight : closing;
+    for (double speed : {5.0, 10.0, 30.0}) {
+      auto sim = makeSim(roomWith({wall}), SimConfig{});
+      std::vector<ContactClass> right;
+      int leaving = 0;
+      int vertexOnly = 0;
+      for (int k = 0; k < static_cast<int>(3000 / speed); ++k) {  // 300 units
+        sim->step(speed, 0);
+        ASSERT_FALSE(sim->blocked());
+        const ContactClass r = classOf(*sim, SensorGroup::Right);
+        right.push_back(r);
+        if (r == ContactClass::LeavingWall) {
+          ++leaving;
+          EXPECT_TRUE(onAnEdgeInterior(*sim, SensorGroup::Right))
+              << "speed " << speed << " step " << k << ": " << sequenceOf(right);
+        }
+        bool touches = false;
+        const GroupInfo& info = groupInfo(SensorGroup::Right);
+        for (int d = info.firstSensor; d < info.firstSensor + info.sensorCount; ++d)
+          touches = touches || sim->contact().domes[d].edge >= 0;
+        if (touches && !onAnEdgeInterior(*sim, SensorGroup::Right)) {
+          ++vertexOnly;
+          EXPECT_EQ(r, ContactClass::Corner) << "speed " << speed << " step " << k;
+        }
+      }
+      EXPECT_GT(vertexOnly, 0) << "speed " << speed << ": " << sequenceOf(right);
+      if (shape == 0) {
+        EXPECT_GT(leaving, 0) << sequenceOf(right);
+      }
+    }
+  }
 }
 
 // Backing along a wall onto its end reads like leaving it, but the robot is not leaving.
