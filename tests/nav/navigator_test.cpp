@@ -5,34 +5,20 @@
 #include <initializer_list>
 
 #include "nav/navigator.h"
+#include "tests/nav/scripted_readings.h"
 
 namespace tactile::nav {
 namespace {
 
-using Values = std::array<double, kValuesPerStep>;
-using Truth = std::array<ContactClass, kGroupCount>;
-
-void press(Values& values, std::initializer_list<int> sensors, double n) {
-  for (int s : sensors)
-    values[static_cast<std::size_t>(normalOffset(s))] = n;
-}
+using test::press;
+using test::Truth;
+using test::truthOf;
+using test::Values;
 
 void pressGroup(Values& values, SensorGroup g, double n) {
   const GroupInfo& info = groupInfo(g);
   for (int d = info.firstSensor; d < info.firstSensor + info.sensorCount; ++d)
     values[static_cast<std::size_t>(normalOffset(d))] = n;
-}
-
-// Truth of a step: the groups with any value touch as `touching`, the rest NoContact.
-Truth truthOf(const Values& values, ContactClass touching = ContactClass::Wall) {
-  Truth t{};
-  for (const GroupInfo& info : kSensorGroups) {
-    bool any = false;
-    for (int d = info.firstSensor; d < info.firstSensor + info.sensorCount; ++d)
-      any = any || values[static_cast<std::size_t>(normalOffset(d))] != 0.0;
-    t[static_cast<std::size_t>(groupIndex(info.group))] = any ? touching : ContactClass::NoContact;
-  }
-  return t;
 }
 
 // Feeds scripted readings to a truth-status navigator, one step at a time.

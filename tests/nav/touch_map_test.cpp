@@ -11,12 +11,15 @@
 #include "nav/touch_map.h"
 #include "run/run_csv.h"
 #include "sim/robot.h"
+#include "tests/nav/scripted_readings.h"
 
 namespace tactile::nav {
 namespace {
 
-using Values = std::array<double, kValuesPerStep>;
-using Truth = std::array<ContactClass, kGroupCount>;
+using test::press;
+using test::Truth;
+using test::truthOf;
+using test::Values;
 
 // A map over x in [0, 1000] (plus the margin), cells of 20, growth 40.
 TouchMap plainMap(double margin = 300.0) {
@@ -132,22 +135,6 @@ TEST(TouchMap, StartOnTheGrowthOfAThinWallStaysOnItsSide) {
 }
 
 // ---- the navigator with the touch map ---------------------------------------------------------
-
-void press(Values& values, std::initializer_list<int> sensors, double n) {
-  for (int s : sensors)
-    values[static_cast<std::size_t>(normalOffset(s))] = n;
-}
-
-Truth truthOf(const Values& values, ContactClass touching) {
-  Truth t{};
-  for (const GroupInfo& info : kSensorGroups) {
-    bool any = false;
-    for (int d = info.firstSensor; d < info.firstSensor + info.sensorCount; ++d)
-      any = any || values[static_cast<std::size_t>(normalOffset(d))] != 0.0;
-    t[static_cast<std::size_t>(groupIndex(info.group))] = any ? touching : ContactClass::NoContact;
-  }
-  return t;
-}
 
 class Script {
  public:
