@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Choose each group's training defaults from a leave-scene-out sweep (docs/learning.md#training-defaults).
 
-    bench/learning/select_defaults.py SWEEP.json|MODEL.json[=TAG] ... [--min-steps 30]
+    bench/learning/select_defaults.py SWEEP.json|MODEL.json[=TAG] ... [--min-steps 30] [--median-over-fits]
 
 The sweeps are `tactile sweep --split by-scene` over the selection corpus (docs/learning.md), the
 model bundles `tactile train --split by-scene` over it (for settings a sweep does not cover, such
@@ -14,7 +14,13 @@ classes is left out. A cell's score is the mean of the two fold kinds' balanced 
 the one that has data). Only causal decisions (step, online) can be a default; within 0.002 of the
 best, the fewer features, then the lower order, then the larger floor win (the simpler model).
 Prints the table of every group's best cells and the chosen one.
+
+--median-over-fits: the inputs are fits of the same cells with different fit seeds (for example
+model bundles `tactile train --split by-scene --seed S` for S = 1, 2, 3, or one sweep per seed);
+a setting's score is the median of its fits' scores (its recipe and office figures too), so a
+setting that won by one lucky EM start does not win.
 """
+import statistics
 import json
 import sys
 
@@ -45,6 +51,9 @@ def balanced(acc, min_steps):
 def main():
     args = sys.argv[1:]
     min_steps = 30
+    median_over_fits = "--median-over-fits" in args
+    if median_over_fits:
+        args.remove("--median-over-fits")
     if "--min-steps" in args:
         i = args.index("--min-steps")
         min_steps = int(args[i + 1])
@@ -74,6 +83,20 @@ def main():
             continue
         score = sum(parts) / len(parts)
         by_group.setdefault(c["group"], []).append((score, r, o, nr, no, c))
+    if median_over_fits:
+        for g, rows in by_group.items():
+            fits = {}
+            for x in rows:
+                c = x[5]
+                key = (c["features"].split(" [")[0], c["order"], c["floor"], c["decision"])
+                fits.setdefault(key, []).append(x)
+            merged = []
+            for (features, order, floor, decision), xs in fits.items():
+                med = lambda i: None if any(x[i] is None for x in xs) else statistics.median(x[i] for x in xs)
+                cell = {"features": f"{features} [median of {len(xs)} fits]", "order": order, "floor": floor,
+                        "decision": decision}
+                merged.append((statistics.median(x[0] for x in xs), med(1), med(2), xs[0][3], xs[0][4], cell))
+            by_group[g] = merged
     print("| group | features | order | floor | decision | recipe folds (steps) | office folds (steps) | score |")
     print("|---|---|---|---|---|---|---|---|")
     fmt = lambda v: "-" if v is None else f"{v:.3f}"
