@@ -1764,6 +1764,10 @@ pausiert: „Abspielen“ (P) lässt den Navigator fahren, „Schritt“ (N) mac
         <source>Test steps</source>
         <translation>Testschritte</translation>
     </message>
+    <message>
+        <source>no test data</source>
+        <translation>keine Testdaten</translation>
+    </message>
 </context>
 <context>
     <name>tactile::gui::SweepPlot</name>

@@ -1755,6 +1755,10 @@ paused: Play (P) lets the navigator drive, Step (N) takes one step</source>
         <source>Test steps</source>
         <translation>测试步数</translation>
     </message>
+    <message>
+        <source>no test data</source>
+        <translation>没有测试数据</translation>
+    </message>
 </context>
 <context>
     <name>tactile::gui::SweepPlot</name>

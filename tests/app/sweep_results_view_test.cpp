@@ -681,6 +681,15 @@ void SweepResultsViewTest::testStepsShowCountsAndTooFew() {
   QCOMPARE(shown(0), QStringLiteral("240 (rarest 40)"));
   QCOMPARE(shown(1), QStringLiteral("247 (rarest 7, too few)"));
   QCOMPARE(shown(2), QStringLiteral("none"));
+  // Without test steps there is no score: never a 0, and it sorts below every real score.
+  const auto balanced = [&](int row, int role) {
+    return model.data(model.index(row, gui::SweepCellsModel::BalancedAccuracy), role);
+  };
+  QCOMPARE(balanced(2, Qt::DisplayRole).toString(), QStringLiteral("no test data"));
+  QVERIFY(balanced(2, Qt::UserRole).toDouble() < balanced(1, Qt::UserRole).toDouble());
+  QVERIFY(balanced(0, Qt::DisplayRole).toString() != QStringLiteral("no test data"));
+  QCOMPARE(model.data(model.index(2, gui::SweepCellsModel::Accuracy)).toString(),
+           QStringLiteral("no test data"));
   QCOMPARE(model.data(model.index(1, gui::SweepCellsModel::TestSteps), Qt::UserRole).toULongLong(),
            247ull);
   const QString tip =

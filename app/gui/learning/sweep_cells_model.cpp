@@ -82,9 +82,11 @@ QVariant SweepCellsModel::data(const QModelIndex& index, int role) const {
     return lines.isEmpty() ? QVariant() : QVariant(lines.join(QLatin1Char('\n')));
   }
   if (role != Qt::DisplayRole && !sort) return {};
-  // A score of a cell without a model sorts below every real score.
+  // A score of a cell without a model sorts below every real score; a cell with a model but no
+  // test steps has no score (never a 0), and sorts just above the cells without a model.
   const auto score = [&](double value, int decimals) -> QVariant {
     if (!r.ok) return sort ? QVariant(-1.0) : QVariant(QStringLiteral("-"));
+    if (r.confusion.total() == 0) return sort ? QVariant(-0.5) : QVariant(tr("no test data"));
     return sort ? QVariant(value) : QVariant(QString::number(value, 'f', decimals));
   };
   switch (index.column()) {
