@@ -4,6 +4,8 @@
 #include <atomic>
 #include <chrono>
 #include <cmath>
+#include <cstdio>
+#include <filesystem>
 #include <mutex>
 #include <numbers>
 #include <random>
@@ -11,6 +13,7 @@
 
 #include "nav/astar.h"
 #include "nav/navigate.h"
+#include "run/run_csv.h"
 #include "sim/office_scene.h"
 #include "sim/recorder.h"
 #include "sim/simulator.h"
@@ -83,6 +86,7 @@ Result<BenchmarkResult> runMapBenchmark(const BenchmarkOptions& options,
     double ratio = 0.0;
     double steps = 0.0;
     double seconds = 0.0;
+    MapRun run;
   };
   std::vector<Outcome> results(jobs);
   std::vector<std::optional<MapCase>> cases(maps);
@@ -118,18 +122,43 @@ Result<BenchmarkResult> runMapBenchmark(const BenchmarkOptions& options,
                                   options.maxSteps);
       no.seed = mapSeed(options.seed, m);
       const auto r0 = std::chrono::steady_clock::now();
-      auto r = navigate(mc.world, mc.world->scene().name, mc.start, mc.goal, config, no, false);
+      const bool record = !options.outDir.empty();
+      auto r = navigate(mc.world, mc.world->scene().name, mc.start, mc.goal, config, no, record);
       if (!r) {
         std::lock_guard lock(mutex);
         if (firstError.empty()) firstError = r.errorText();
         stop = true;
         return;
       }
+      if (record) {
+        char name[96];
+        std::snprintf(name, sizeof name, "benchmark_%s_%llu.csv",
+                      std::string(statusSourceName(config.source)).c_str(),
+                      static_cast<unsigned long long>(no.seed));
+        const Status written = writeRunCsv(r->run, std::filesystem::path(options.outDir) / name);
+        r->run = RunData();
+        if (!written) {
+          std::lock_guard lock(mutex);
+          if (firstError.empty()) firstError = written.errorText();
+          stop = true;
+          return;
+        }
+      }
       Outcome& o = results[j];
       o.outcome = r->outcome;
       o.ratio = r->pathLengthUnits / mc.astarUnits;
       o.steps = static_cast<double>(r->steps);
       o.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - r0).count();
+      o.run.mapSeed = no.seed;
+      o.run.outcome = r->outcome;
+      o.run.steps = r->steps;
+      o.run.budget = no.maxSteps;
+      o.run.pathRatio = o.ratio;
+      o.run.blockedSteps = r->blockedSteps;
+      o.run.strategySteps = r->strategySteps;
+      o.run.checkContactStarts = r->checkContactStarts;
+      o.run.closestGoalUnits = r->closestGoalUnits;
+      o.run.finalGoalUnits = r->finalGoalUnits;
       const std::size_t n = ++done;
       if (progress) {
         std::lock_guard lock(mutex);
@@ -161,6 +190,7 @@ Result<BenchmarkResult> runMapBenchmark(const BenchmarkOptions& options,
       const Outcome& o = results[m * sources.size() + s];
       ++sum.runs;
       sum.seconds += o.seconds;
+      sum.mapRuns.push_back(o.run);
       if (o.outcome == RunOutcome::Success) {
         ++sum.successes;
         ratios.push_back(o.ratio);

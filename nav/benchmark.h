@@ -6,8 +6,10 @@
 // and one run per status source.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <memory>
+#include <string>
 #include <vector>
 
 #include "analysis/model_file.h"
@@ -49,6 +51,23 @@ struct BenchmarkOptions {
   unsigned threads = 0;         // 0 = all cores
   std::shared_ptr<const analysis::ModelBundle> models;  // null: the model source is skipped
   bool touchMap = false;  // NavigatorConfig::touchMap for the model and truth sources
+  // When set, every run is written here as benchmark_SOURCE_MAPSEED.csv (with the navigator's
+  // x_ columns; `tactile navigate --scene random:office:MAPSEED` rebuilds its scene).
+  std::string outDir;
+};
+
+// One run of the benchmark: a map and a source.
+struct MapRun {
+  std::uint64_t mapSeed = 0;  // random:office:mapSeed
+  RunOutcome outcome = RunOutcome::Unknown;
+  std::size_t steps = 0;
+  std::size_t budget = 0;  // the map's step budget (mapStepBudget)
+  double pathRatio = 0.0;  // path length over the A* length (whatever the outcome)
+  std::size_t blockedSteps = 0;
+  std::array<std::size_t, kStrategyCount> strategySteps{};  // kStrategies order
+  std::size_t checkContactStarts = 0;
+  double closestGoalUnits = 0.0;  // the body centre's closest approach to the goal
+  double finalGoalUnits = 0.0;    // and its distance at the end
 };
 
 struct SourceSummary {
@@ -61,8 +80,9 @@ struct SourceSummary {
   // Path length over the A* length, over the successful runs (0 when none succeeded).
   double medianPathRatio = 0.0;
   double p90PathRatio = 0.0;
-  double medianSteps = 0.0;  // over the successful runs
-  double seconds = 0.0;      // CPU-side wall time of this source's runs, summed over threads
+  double medianSteps = 0.0;     // over the successful runs
+  double seconds = 0.0;         // CPU-side wall time of this source's runs, summed over threads
+  std::vector<MapRun> mapRuns;  // map by map, in map order
 };
 
 struct BenchmarkResult {

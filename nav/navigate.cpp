@@ -76,11 +76,15 @@ Result<NavigateResult> navigate(std::shared_ptr<const sim::World> world, std::st
     previous = p;
     if (simulator.blocked()) ++result.blockedSteps;
     ++result.steps;
+    ++result.strategySteps[static_cast<std::size_t>(navigator.strategy())];
     if (recorder) {
       recorder->record(simulator, command);
       appendNavigatorState(navigator, extra);
     }
     const Vec2 centre = sim::bodyToWorld(p, Vec2(centreOffset, 0.0));
+    result.finalGoalUnits = (centre - goal).norm();
+    result.closestGoalUnits =
+        k == 0 ? result.finalGoalUnits : std::min(result.closestGoalUnits, result.finalGoalUnits);
     if ((centre - goal).norm() < options.goalRadiusUnits) {
       result.outcome = RunOutcome::Success;
       break;
@@ -90,6 +94,7 @@ Result<NavigateResult> navigate(std::shared_ptr<const sim::World> world, std::st
       break;
     }
   }
+  result.checkContactStarts = navigator.checkContactStarts();
   if (recorder) {
     recorder->setOutcome(result.outcome);
     result.run = recorder->take();

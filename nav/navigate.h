@@ -45,6 +45,13 @@ struct NavigateResult {
   std::size_t steps = 0;
   double pathLengthUnits = 0.0;  // distance the rear-axle midpoint travelled (simulator truth)
   std::size_t blockedSteps = 0;
+  // Steps spent in each strategy (kStrategies order) and the Check Contact episodes started
+  // (every back-off of a Check Contact, also a restart within one).
+  std::array<std::size_t, kStrategyCount> strategySteps{};
+  std::size_t checkContactStarts = 0;
+  // The body centre's closest approach to the goal and its distance at the end (simulator truth).
+  double closestGoalUnits = 0.0;
+  double finalGoalUnits = 0.0;
 };
 
 // Runs the navigator from `start` toward `goal` in `world`. Fails when the start pose is blocked

@@ -238,6 +238,7 @@ struct Navigator::Impl {
   Strategy previousStrategy = Strategy::HeadToDestination;
   int sameStrategySteps = 0;
   int sideSteps = 0;
+  std::size_t checkStarts = 0;  // Check Contact back-offs started (checkContactStarts())
 
   // Gap tracking along the followed side.
   bool sideWasTouching = false;
@@ -340,6 +341,9 @@ struct Navigator::Impl {
   }
 
   void setStrategy(Strategy s, Phase p = Phase::None) {
+    if (s == Strategy::CheckContact && p == Phase::Back &&
+        !(strategy == Strategy::CheckContact && phase == Phase::Back))
+      ++checkStarts;
     strategy = s;
     phase = p;
     phaseSteps = 0;
@@ -1220,6 +1224,9 @@ const std::vector<RememberedHole>& Navigator::holes() const {
 }
 const Pose2d& Navigator::odometry() const {
   return impl_->odo;
+}
+std::size_t Navigator::checkContactStarts() const {
+  return impl_->checkStarts;
 }
 bool Navigator::arrived() const {
   return impl_->arrived;

@@ -160,6 +160,8 @@ class Navigator : public sim::Driver {
   const std::vector<RememberedHole>& holes() const;
   // Odometry: the integrated commands, in the world frame anchored at the start pose.
   const Pose2d& odometry() const;
+  // Check Contact episodes started so far (each back-off, also a restart within one).
+  std::size_t checkContactStarts() const;
   // True once the odometry says the goal is reached.
   bool arrived() const;
   // The touch map (empty before the first step and for the bumper source or with touchMap off)

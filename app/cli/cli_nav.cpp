@@ -110,6 +110,12 @@ int runBenchmark(const NavigateArgs& a) {
   options.threads = a.threads;
   options.touchMap = a.touchMap;
   options.models = loadModels(a);
+  if (!a.outDir.empty()) {
+    std::error_code ec;
+    std::filesystem::create_directories(a.outDir, ec);
+    if (ec) throw std::runtime_error(a.outDir + ": cannot create directory: " + ec.message());
+    options.outDir = a.outDir;
+  }
   ProgressFn progress;
   if (!a.quiet) {
     progress = [](std::size_t done, std::size_t total) {
@@ -128,6 +134,23 @@ int runBenchmark(const NavigateArgs& a) {
     j["max_steps"] = a.maxSteps;
     j["unreachable_maps"] = r.mapsWithoutPath;
     for (const nav::SourceSummary& s : r.sources) {
+      json runs = json::array();
+      for (const nav::MapRun& m : s.mapRuns) {
+        json strategies = json::object();
+        for (nav::Strategy st : nav::kStrategies)
+          strategies[std::string(nav::strategyKey(st))] =
+              m.strategySteps[static_cast<std::size_t>(st)];
+        runs.push_back({{"map_seed", m.mapSeed},
+                        {"outcome", std::string(runOutcomeName(m.outcome))},
+                        {"steps", m.steps},
+                        {"budget", m.budget},
+                        {"path_ratio", m.pathRatio},
+                        {"blocked_steps", m.blockedSteps},
+                        {"check_contact_starts", m.checkContactStarts},
+                        {"closest_goal_distance", m.closestGoalUnits},
+                        {"final_goal_distance", m.finalGoalUnits},
+                        {"strategy_steps", strategies}});
+      }
       j[std::string(nav::statusSourceName(s.source))] = {
           {"runs", s.runs},
           {"success_rate", s.successRate},
@@ -136,7 +159,8 @@ int runBenchmark(const NavigateArgs& a) {
           {"median_steps", s.medianSteps},
           {"outcomes",
            {{"success", s.successes}, {"unreachable", s.unreachable}, {"timeout", s.timeouts}}},
-          {"seconds", s.seconds}};
+          {"seconds", s.seconds},
+          {"map_runs", std::move(runs)}};
     }
     j["seconds"] = r.seconds;
     std::printf("%s\n", dumpJson(j).c_str());
@@ -300,7 +324,8 @@ void registerNavigateVerb(CLI::App& app) {
       "Step budget per run (then `timeout`); with --benchmark the least budget of a map, "
       "which gets 20x its A* path's steps at cruise speed when that is more");
   cmd->add_option("--out-dir", args->outDir,
-                  "Write each run as navigate_STATUS_SEED.csv here (importable)");
+                  "Write each run as navigate_STATUS_SEED.csv here (importable); with --benchmark "
+                  "as benchmark_STATUS_MAPSEED.csv");
   cmd->add_option("--threads", args->threads, "Worker threads (0 = all cores)");
   cmd->add_option("--benchmark", args->benchmark,
                   "Benchmark the three status sources on N generated office maps");
