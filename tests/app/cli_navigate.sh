@@ -28,6 +28,34 @@ head -c 2000 "$W/a/navigate_truth_0001.csv" | grep -q "x_strategy" || fail "no x
 cols=$(sqlite3 "$W/n.db" "SELECT count(*) FROM runs")
 [ "$cols" = 3 ] || fail "imported $cols of 3 runs"
 
+# The benchmark's JSON: one record a map per source, adding up to the summary; --out-dir writes
+# every run (a small model trained on two short runs is enough for the model source to drive).
+"$T" simulate --scene room1 --driver wall-follow --steps 800 --runs 2 --out-dir "$W/train" \
+  --quiet >/dev/null || fail "simulate for the model failed"
+"$T" train --runs "$W/train/run_0000.csv" "$W/train/run_0001.csv" --groups R --out "$W/m.json" \
+  >/dev/null 2>&1 || fail "train failed"
+"$T" navigate --benchmark 2 --model "$W/m.json" --threads 2 --out-dir "$W/bench" --json --quiet \
+  >"$W/bench.json" || fail "navigate --benchmark failed"
+python3 - "$W/bench.json" "$W/bench" <<'PY' || fail "benchmark JSON"
+import json, os, sys
+j = json.load(open(sys.argv[1]))
+assert j["maps"] == 2, j
+for source in ("model", "truth", "bumper"):
+    s = j[source]
+    runs = s["map_runs"]
+    assert [r["map_seed"] for r in runs] == [900001, 900002], runs
+    for key in ("success", "unreachable", "timeout"):
+        assert s["outcomes"][key] == sum(r["outcome"] == key for r in runs), (source, key)
+    for r in runs:
+        assert sum(r["strategy_steps"].values()) == r["steps"] <= r["budget"], r
+        assert set(r["strategy_steps"]) >= {"CheckContact", "FollowWall", "HeadToDestination"}, r
+        assert 0 <= r["closest_goal_distance"] <= r["final_goal_distance"], r
+        assert r["check_contact_starts"] >= 0 and r["path_ratio"] > 0, r
+        f = os.path.join(sys.argv[2], "benchmark_%s_%d.csv" % (source, r["map_seed"]))
+        rows = sum(1 for line in open(f) if line[0].isdigit())
+        assert rows == r["steps"], (f, rows, r["steps"])
+PY
+
 # Usage errors exit 2; a model source without a model too.
 set +e
 "$T" navigate --scene chapter5 --status truth --seeds 5-2 >/dev/null 2>&1
