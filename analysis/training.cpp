@@ -57,6 +57,7 @@ GroupTrainResult trainGroupModel(const GroupDataSet& data, const TrainSettings& 
   m.regularization = settings.classifier.gmm.reg;
   m.transitions =
       estimateTransitions(classSequences(data, m.classes), static_cast<int>(m.classes.size()));
+  m.transitions.emissionWeight = settings.emissionWeight;
   m.decision = isCausal(settings.decision) ? settings.decision : DecisionMode::Online;
   result.ok = true;
   return result;
