@@ -11,6 +11,7 @@
 #include <unistd.h>
 
 #include "analysis/model_file.h"
+#include "analysis/report.h"
 #include "analysis/training.h"
 #include "run/json_text.h"
 #include "tests/analysis/learn_test_data.h"
@@ -391,6 +392,13 @@ TEST(ModelFile, EmissionWeightRoundTripsAndIsValidated) {
   Result<ModelBundle> r = modelsFromJson(j, "m.json");
   ASSERT_TRUE(r.ok()) << r.errorText();
   EXPECT_EQ(r->models.front().transitions.emissionWeight, 0.3);
+  // The report names it beside the decision; a plain chain shows the decision alone.
+  const std::string report = modelReport(ModelBundle{{model}}, TableStyle::Csv);
+  EXPECT_NE(report.find(",online (evidence x 0.3)"), std::string::npos) << report;
+  model.transitions.emissionWeight = 1.0;
+  const std::string plain = modelReport(ModelBundle{{model}}, TableStyle::Csv);
+  EXPECT_EQ(plain.find("evidence x"), std::string::npos) << plain;
+  EXPECT_NE(plain.find(",online"), std::string::npos) << plain;
   j["transitions"].erase("emission_weight");
   r = modelsFromJson(j, "m.json");
   ASSERT_TRUE(r.ok()) << r.errorText();
