@@ -92,6 +92,7 @@ struct GroupDefault {
   FeatureKind features;
   int order;
   double floor;
+  double emissionWeight;  // of the class chain's evidence (TransitionModel::emissionWeight)
 };
 
 // Per group, the setting with the best leave-one-scene-out score (`sweep --split by-scene`) over
@@ -109,14 +110,14 @@ constexpr FeatureKind kShear = FeatureKind::NormalShear;
 constexpr FeatureKind kTouch = FeatureKind::NormalShearTouch;
 constexpr FeatureKind kContext = FeatureKind::Context;
 constexpr std::array<GroupDefault, kGroupCount> kGroupDefaults{{
-    {SensorGroup::Front, kContext, 16, 0.01},
-    {SensorGroup::FrontLeftCorner, kContext, 8, 0.01},
-    {SensorGroup::Left, kContext, 8, 0.01},
-    {SensorGroup::RearLeftCorner, kContext, 8, 0.01},
-    {SensorGroup::Back, kShear, 4, 0.01},
-    {SensorGroup::RearRightCorner, kContext, 8, 0.01},
-    {SensorGroup::Right, kContext, 8, 0.01},
-    {SensorGroup::FrontRightCorner, kTouch, 8, 0.01},
+    {SensorGroup::Front, kContext, 16, 0.01, 1.0},
+    {SensorGroup::FrontLeftCorner, kContext, 8, 0.01, 1.0},
+    {SensorGroup::Left, kContext, 8, 0.01, 1.0},
+    {SensorGroup::RearLeftCorner, kContext, 8, 0.01, 1.0},
+    {SensorGroup::Back, kShear, 4, 0.01, 1.0},
+    {SensorGroup::RearRightCorner, kContext, 8, 0.01, 1.0},
+    {SensorGroup::Right, kContext, 8, 0.01, 1.0},
+    {SensorGroup::FrontRightCorner, kTouch, 8, 0.01, 1.0},
 }};
 
 constexpr bool inGroupOrder() {
@@ -137,6 +138,7 @@ TrainSettings defaultTrainSettings(SensorGroup group) {
   s.classifier.gmm.components = d.order;
   s.classifier.gmm.varianceFloor = d.floor;
   s.classifier.gmm.restarts = 3;  // the best of three fits: one start alone sometimes lands badly
+  s.emissionWeight = d.emissionWeight;
   return s;
 }
 
