@@ -103,7 +103,7 @@ struct GroupDefault {
 // the decision causal (online won in every group); within 0.002 the fewer features, the lower
 // order, the larger floor win (docs/learning.md#training-defaults). Nodal-full, 3 restarts. The
 // context features (the normal values' change over 3 steps, commanded v and omega, steps since
-// the contact began) won in five groups: they tell a wall being followed from a corner being met.
+// the contact began) won in six groups: they tell a wall being followed from a corner being met.
 // FRC's score depended on the EM start (fit seeds 1-3 of the setting chosen first: 0.922, 0.904,
 // 0.884); it is chosen by the median over fit seeds 1-3 of every cell's score, and so are F, L
 // and R with the emission weight (1, 0.3, 0.1, 0.03; F also over +touch and context, orders 8
