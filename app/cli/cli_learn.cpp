@@ -2,13 +2,13 @@
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <deque>
 #include <filesystem>
 #include <iostream>
 #include <limits>
 #include <memory>
-#include <cmath>
 #include <optional>
 #include <set>
 #include <string>
