@@ -105,11 +105,11 @@ struct GroupDefault {
 // context features (the normal values' change over 3 steps, commanded v and omega, steps since
 // the contact began) won in six groups: they tell a wall being followed from a corner being met.
 // FRC's score depended on the EM start (fit seeds 1-3 of the setting chosen first: 0.922, 0.904,
-// 0.884); it is chosen by the median over fit seeds 1-3 of every cell's score, and so are F, L
-// and R with the emission weight (1, 0.3, 0.1, 0.03; F also over +touch and context, orders 8
-// and 16), keeping only settings that lose at most 0.02 on the recipe's own held-out draws: each
-// step's evidence weighted by 0.3 gained 0.01-0.03 in all three; the other groups keep the plain
-// chain (weight 1, not chosen again).
+// 0.884); it is chosen by the median over fit seeds 1-3 of every cell's score, and so is every
+// group's emission weight (1, 0.3, 0.1; F, L, R also 0.03, F also over +touch and context, orders
+// 8 and 16), keeping only settings that lose at most 0.02 on the recipe's own held-out draws:
+// each step's evidence weighted by 0.3 won in F, L, R, RRC and B; FLC, RLC and FRC keep the plain
+// chain (weight 1).
 constexpr FeatureKind kShear = FeatureKind::NormalShear;
 constexpr FeatureKind kTouch = FeatureKind::NormalShearTouch;
 constexpr FeatureKind kContext = FeatureKind::Context;
@@ -118,8 +118,8 @@ constexpr std::array<GroupDefault, kGroupCount> kGroupDefaults{{
     {SensorGroup::FrontLeftCorner, kContext, 8, 0.01, 1.0},
     {SensorGroup::Left, kContext, 8, 0.01, 0.3},
     {SensorGroup::RearLeftCorner, kContext, 8, 0.01, 1.0},
-    {SensorGroup::Back, kShear, 4, 0.01, 1.0},
-    {SensorGroup::RearRightCorner, kContext, 8, 0.01, 1.0},
+    {SensorGroup::Back, kShear, 4, 0.01, 0.3},
+    {SensorGroup::RearRightCorner, kContext, 8, 0.01, 0.3},
     {SensorGroup::Right, kContext, 8, 0.01, 0.3},
     {SensorGroup::FrontRightCorner, kTouch, 8, 0.01, 1.0},
 }};
