@@ -431,6 +431,12 @@ TransitionModel transitionsOf(const json& v, const std::string& path, int classe
   if (auto it = v.find("counts"); it != v.end()) {
     m.counts = matrixOf(*it, path + ".counts", classes, classes);
   }
+  if (auto it = v.find("emission_weight"); it != v.end()) {
+    m.emissionWeight = numberOf(*it, path + ".emission_weight");
+    if (!(m.emissionWeight > 0.0) || !std::isfinite(m.emissionWeight)) {
+      fail(path + ".emission_weight", "expected a finite number > 0");
+    }
+  }
   return m;
 }
 
@@ -449,6 +455,7 @@ json transitionsToJson(const TransitionModel& m) {
     rows.push_back(logRow(m.logTransition.row(i).transpose()));
   out["log_matrix"] = std::move(rows);
   out["pseudo_count"] = m.pseudoCount;
+  out["emission_weight"] = m.emissionWeight;
   if (m.initialCounts.size() == m.logInitial.size()) {
     json counts = json::array();
     for (Eigen::Index i = 0; i < m.initialCounts.size(); ++i)

@@ -788,6 +788,22 @@ Status writeSweepReport(const SweepResult& sweep, TableStyle style,
   return writeFileAtomically(out, sweepReport(sweep, style, options));
 }
 
+namespace {
+
+// A model's default decision, with the chain's emission weight when it is not 1 (the plain HMM):
+// "online (evidence x 0.1)".
+std::string decisionText(DecisionMode d, const TransitionModel& chain) {
+  std::string out(decisionModeName(d));
+  if (d != DecisionMode::Step && chain.emissionWeight != 1.0) {
+    std::ostringstream w;
+    w << chain.emissionWeight;
+    out += " (evidence x " + w.str() + ")";
+  }
+  return out;
+}
+
+}  // namespace
+
 std::string modelReport(const ModelBundle& bundle, TableStyle style, std::size_t minTestSteps) {
   const std::string sep = style == TableStyle::Text ? "\n" : "";
   std::string out;
@@ -835,7 +851,7 @@ std::string modelReport(const ModelBundle& bundle, TableStyle style, std::size_t
          floorText(m.varianceFloor), dropped, classes,
          std::to_string(e.samplesTrain > 0 ? e.samplesTrain : m.provenance.samples),
          e.scored() ? std::to_string(e.samplesTest()) : "no test data",
-         std::string(decisionModeName(d))});
+         decisionText(d, m.transitions)});
     decisions.rows.push_back({groupName, e.evaluatedOn, std::to_string(e.samplesTest()),
                               rate(e.confusion(DecisionMode::Step)),
                               rate(e.confusion(DecisionMode::Online)),

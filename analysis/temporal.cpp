@@ -227,11 +227,11 @@ namespace {
 // The evidence of one step: its log-likelihoods, or no evidence (zeros) when every class is -inf
 // (or NaN), so that the chain alone carries the belief through an underflowing step.
 // Writes step t's evidence into `l` (sized already: no allocation per step).
-void evidenceInto(const StepLikelihoods& steps, Eigen::Index t, Eigen::VectorXd& l) {
+void evidenceInto(const StepLikelihoods& steps, Eigen::Index t, double weight, Eigen::VectorXd& l) {
   bool any = false;
   for (Eigen::Index j = 0; j < l.size(); ++j) {
     const double v = steps.logLik(t, j);
-    l[j] = std::isnan(v) ? kNegInf : v;
+    l[j] = std::isnan(v) ? kNegInf : weight * v;
     any = any || l[j] > kNegInf;
   }
   if (!any) l.setZero();
@@ -288,6 +288,7 @@ void forwardPass(const StepLikelihoods& steps, const TransitionModel& chain,
       a[static_cast<std::size_t>(i * c + j)] =
           cached ? chain.transition(i, j) : std::exp(chain.logTransition(i, j));
   const double logUniform = -std::log(static_cast<double>(c));
+  const double weight = chain.emissionWeight;
   std::vector<double> buffer(4 * cs);
   double* alpha = buffer.data();  // log posterior of the previous step
   double* predicted = alpha + c;  // log prediction of this step
@@ -316,11 +317,11 @@ void forwardPass(const StepLikelihoods& steps, const TransitionModel& chain,
         predicted[j] = sum > 0.0 ? m + std::log(sum) : kNegInf;
       }
     }
-    // The evidence (zeros when every class is -inf or NaN), then the prediction added.
+    // The evidence, weighted (zeros when every class is -inf or NaN), then the prediction added.
     bool any = false;
     for (Eigen::Index j = 0; j < c; ++j) {
       const double v = logLik[t + j * n];
-      joint[j] = std::isnan(v) ? kNegInf : v;
+      joint[j] = std::isnan(v) ? kNegInf : weight * v;
       any = any || joint[j] > kNegInf;
     }
     if (!any)
@@ -389,7 +390,7 @@ HmmFilterResult hmmForwardBackward(const StepLikelihoods& steps, const Transitio
       beta.setZero();
     } else {
       // beta_t(i) = mm + log(sum_j A(i, j) exp(message_j - mm)), mm = max message.
-      evidenceInto(steps, t + 1, message);
+      evidenceInto(steps, t + 1, chain.emissionWeight, message);
       message += next;
       double mm = kNegInf;
       for (Eigen::Index j = 0; j < c; ++j)

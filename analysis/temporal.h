@@ -68,6 +68,11 @@ struct TransitionModel {
   Eigen::MatrixXd counts;         // C x C transition counts it was estimated from (may be empty)
   Eigen::VectorXd initialCounts;  // C episode-start counts (may be empty)
   Eigen::MatrixXd transition;     // exp(logTransition), kept for the filter's inner loop
+  // The weight w of the evidence in the online and offline deciders: each step's log-likelihoods
+  // enter as w * l_t(j) (a tempered likelihood, p(x | j)^w). Consecutive steps of contact are
+  // far from independent given the class, so the raw likelihoods of a few steps outweigh any
+  // transition probability; w < 1 lets the chain act. w > 0 and finite; 1 is the plain HMM.
+  double emissionWeight = 1.0;
 
   // Sets logTransition and logInitial (and the cached probabilities).
   void set(Eigen::MatrixXd logA, Eigen::VectorXd logPi);

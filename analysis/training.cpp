@@ -57,6 +57,7 @@ GroupTrainResult trainGroupModel(const GroupDataSet& data, const TrainSettings& 
   m.regularization = settings.classifier.gmm.reg;
   m.transitions =
       estimateTransitions(classSequences(data, m.classes), static_cast<int>(m.classes.size()));
+  m.transitions.emissionWeight = settings.emissionWeight;
   m.decision = isCausal(settings.decision) ? settings.decision : DecisionMode::Online;
   result.ok = true;
   return result;
@@ -91,6 +92,7 @@ struct GroupDefault {
   FeatureKind features;
   int order;
   double floor;
+  double emissionWeight;  // of the class chain's evidence (TransitionModel::emissionWeight)
 };
 
 // Per group, the setting with the best leave-one-scene-out score (`sweep --split by-scene`) over
@@ -103,19 +105,23 @@ struct GroupDefault {
 // context features (the normal values' change over 3 steps, commanded v and omega, steps since
 // the contact began) won in six groups: they tell a wall being followed from a corner being met.
 // FRC's score depended on the EM start (fit seeds 1-3 of the setting chosen first: 0.922, 0.904,
-// 0.884); it is chosen by the median over fit seeds 1-3 of every cell's score.
+// 0.884); it is chosen by the median over fit seeds 1-3 of every cell's score, and so is every
+// group's emission weight (1, 0.3, 0.1; F, L, R also 0.03, F also over +touch and context, orders
+// 8 and 16), keeping only settings that lose at most 0.02 on the recipe's own held-out draws:
+// each step's evidence weighted by 0.3 won in F, L, R, RRC and B; FLC, RLC and FRC keep the plain
+// chain (weight 1).
 constexpr FeatureKind kShear = FeatureKind::NormalShear;
 constexpr FeatureKind kTouch = FeatureKind::NormalShearTouch;
 constexpr FeatureKind kContext = FeatureKind::Context;
 constexpr std::array<GroupDefault, kGroupCount> kGroupDefaults{{
-    {SensorGroup::Front, kContext, 16, 0.01},
-    {SensorGroup::FrontLeftCorner, kContext, 8, 0.01},
-    {SensorGroup::Left, kContext, 8, 0.01},
-    {SensorGroup::RearLeftCorner, kContext, 8, 0.01},
-    {SensorGroup::Back, kShear, 4, 0.01},
-    {SensorGroup::RearRightCorner, kContext, 8, 0.01},
-    {SensorGroup::Right, kContext, 8, 0.01},
-    {SensorGroup::FrontRightCorner, kTouch, 8, 0.01},
+    {SensorGroup::Front, kContext, 8, 0.01, 0.3},
+    {SensorGroup::FrontLeftCorner, kContext, 8, 0.01, 1.0},
+    {SensorGroup::Left, kContext, 8, 0.01, 0.3},
+    {SensorGroup::RearLeftCorner, kContext, 8, 0.01, 1.0},
+    {SensorGroup::Back, kShear, 4, 0.01, 0.3},
+    {SensorGroup::RearRightCorner, kContext, 8, 0.01, 0.3},
+    {SensorGroup::Right, kContext, 8, 0.01, 0.3},
+    {SensorGroup::FrontRightCorner, kTouch, 8, 0.01, 1.0},
 }};
 
 constexpr bool inGroupOrder() {
@@ -136,6 +142,7 @@ TrainSettings defaultTrainSettings(SensorGroup group) {
   s.classifier.gmm.components = d.order;
   s.classifier.gmm.varianceFloor = d.floor;
   s.classifier.gmm.restarts = 3;  // the best of three fits: one start alone sometimes lands badly
+  s.emissionWeight = d.emissionWeight;
   return s;
 }
 

@@ -24,6 +24,9 @@ struct TrainSettings {
   ClassifierOptions classifier;  // method, GMM options (order, form, floor, ...), priors
   // The model's default decision (causal: step or online; offline is taken as online).
   DecisionMode decision = DecisionMode::Online;
+  // The weight of each step's log-likelihoods in the class chain's deciders
+  // (TransitionModel::emissionWeight): 1 is the plain HMM, smaller lets the chain act.
+  double emissionWeight = 1.0;
 };
 
 // Settings of each group's classifier, indexed by groupIndex().

@@ -2,6 +2,7 @@
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <deque>
 #include <filesystem>
@@ -236,6 +237,7 @@ struct TrainArgs {
   ClassifierArgs classifier;
   std::string features;
   std::string decision = "online";
+  std::optional<double> emissionWeight;  // unless given, each group's own
   struct Given {
     bool method = false, order = false, cov = false, floor = false, restarts = false;
   } given;
@@ -451,6 +453,12 @@ analysis::GroupSettings trainSettings(const TrainArgs& a) {
       throw UsageError("--decision must be online or step (a model's default decision is causal)");
     }
     s.decision = *decision;
+    if (a.emissionWeight) {
+      if (!std::isfinite(*a.emissionWeight) || *a.emissionWeight <= 0.0) {
+        throw UsageError("--emission-weight must be a finite number > 0");
+      }
+      s.emissionWeight = *a.emissionWeight;
+    }
   }
   return out;
 }
@@ -1042,6 +1050,11 @@ void registerLearnVerbs(CLI::App& app, CLI::App& /*bench*/) {
                     "The models' default decision: online (HMM forward filter, causal) or step "
                     "(per-step argmax); scores are given for step, online and offline either way")
         ->capture_default_str();
+    cmd->add_option("--emission-weight", args->emissionWeight,
+                    "Weight w of each step's log-likelihoods in the online and offline deciders "
+                    "(the class chain sees p(x | class)^w; 1 = plain HMM; default: each group's "
+                    "own)")
+        ->check(CLI::PositiveNumber);
     cmd->add_option("--groups", args->groups, "Groups to train (default all), e.g. R,L")
         ->delimiter(',');
     cmd->add_option("--out", args->out, "Model bundle JSON to write (checked before training)");

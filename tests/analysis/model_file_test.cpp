@@ -11,6 +11,7 @@
 #include <unistd.h>
 
 #include "analysis/model_file.h"
+#include "analysis/report.h"
 #include "analysis/training.h"
 #include "run/json_text.h"
 #include "tests/analysis/learn_test_data.h"
@@ -379,6 +380,36 @@ TEST(ModelFile, DecisionAndTransitionsAreValidated) {
   r = modelsFromJson(j, "m.json");
   ASSERT_FALSE(r.ok());
   EXPECT_NE(r.errorText().find("transitions.log_matrix[0]"), std::string::npos) << r.errorText();
+}
+
+// The chain's emission weight is written and read back; a file without it (written before it
+// existed) reads as 1 (the plain HMM); a weight that is not a finite number > 0 is an error.
+TEST(ModelFile, EmissionWeightRoundTripsAndIsValidated) {
+  GroupModel model = trainedModel(ClassifierMethod::Gmm, CovarianceForm::NodalDiag);
+  model.transitions.emissionWeight = 0.3;
+  json j = modelToJson(model);
+  EXPECT_EQ(j["transitions"]["emission_weight"], 0.3);
+  Result<ModelBundle> r = modelsFromJson(j, "m.json");
+  ASSERT_TRUE(r.ok()) << r.errorText();
+  EXPECT_EQ(r->models.front().transitions.emissionWeight, 0.3);
+  // The report names it beside the decision; a plain chain shows the decision alone.
+  const std::string report = modelReport(ModelBundle{{model}}, TableStyle::Csv);
+  EXPECT_NE(report.find(",online (evidence x 0.3)"), std::string::npos) << report;
+  model.transitions.emissionWeight = 1.0;
+  const std::string plain = modelReport(ModelBundle{{model}}, TableStyle::Csv);
+  EXPECT_EQ(plain.find("evidence x"), std::string::npos) << plain;
+  EXPECT_NE(plain.find(",online"), std::string::npos) << plain;
+  j["transitions"].erase("emission_weight");
+  r = modelsFromJson(j, "m.json");
+  ASSERT_TRUE(r.ok()) << r.errorText();
+  EXPECT_EQ(r->models.front().transitions.emissionWeight, 1.0);
+  for (double bad : {0.0, -0.5}) {
+    j["transitions"]["emission_weight"] = bad;
+    r = modelsFromJson(j, "m.json");
+    ASSERT_FALSE(r.ok());
+    EXPECT_NE(r.errorText().find("transitions.emission_weight"), std::string::npos)
+        << r.errorText();
+  }
 }
 
 // A group with no test rows reports null, never 0.

@@ -73,6 +73,9 @@ TEST(Training, DefaultsAreEachGroupsOwnTunedGmm) {
     EXPECT_EQ(s.classifier.gmm.restarts, 3) << g.shortName;
     EXPECT_GE(s.classifier.gmm.components, 1) << g.shortName;
     EXPECT_GT(s.classifier.gmm.varianceFloor, 0.0) << g.shortName;
+    // The chain's evidence weight: tempered (< 1) or plain (1), never amplified.
+    EXPECT_GT(s.emissionWeight, 0.0) << g.shortName;
+    EXPECT_LE(s.emissionWeight, 1.0) << g.shortName;
     EXPECT_EQ(s.classifier.gmm.components, defaultTrainSettings(g.group).classifier.gmm.components);
     ordersDiffer |= s.classifier.gmm.components != d.byGroup[0].classifier.gmm.components;
   }

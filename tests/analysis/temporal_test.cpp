@@ -264,6 +264,65 @@ TEST(Hmm, ForwardAndForwardBackwardMatchBruteForceEnumeration) {
   }
 }
 
+// With emission weight w, forward and forward-backward are the HMM whose evidence is w times the
+// log-likelihoods: checked against brute-force enumeration over the scaled evidence, for a weight
+// below and above 1, with an impossible class (-inf) at one step that must stay impossible.
+TEST(Hmm, EmissionWeightTempersTheEvidenceOfEveryStep) {
+  for (double w : {0.1, 0.35, 2.0}) {
+    for (unsigned seed = 1; seed <= 3; ++seed) {
+      const int c = 2 + static_cast<int>(seed % 3);
+      TransitionModel chain = randomChain(c, seed);
+      chain.emissionWeight = w;
+      StepLikelihoods s = randomSteps(7, c, 200 + seed);
+      s.logLik(2, 0) = -kInf;
+      StepLikelihoods scaled = s;
+      scaled.logLik = s.logLik * w;
+      const HmmFilterResult f = hmmForward(s, chain);
+      const HmmFilterResult b = hmmForwardBackward(s, chain);
+      const TransitionModel plain = [&] {
+        TransitionModel p = chain;
+        p.emissionWeight = 1.0;
+        return p;
+      }();
+      for (int t = 0; t < 7; ++t) {
+        const Eigen::VectorXd fw = bruteMarginal(scaled, plain, 0, 6, t, false);
+        const Eigen::VectorXd fb = bruteMarginal(scaled, plain, 0, 6, t, true);
+        for (int j = 0; j < c; ++j) {
+          EXPECT_NEAR(std::exp(f.logPosterior(t, j)), fw[j], 1e-12) << w << " " << seed << " " << t;
+          EXPECT_NEAR(std::exp(b.logPosterior(t, j)), fb[j], 1e-12) << w << " " << seed << " " << t;
+        }
+      }
+      EXPECT_EQ(f.logPosterior(2, 0), -kInf);
+      EXPECT_EQ(b.logPosterior(2, 0), -kInf);
+    }
+  }
+}
+
+// Why the weight exists: with a sticky chain estimated from long episodes (stay 0.99) one step of
+// strong evidence (20 nats) flips the plain filter at once, the tempered one keeps the class the
+// episode has shown, and a sustained change still goes through after a few steps.
+TEST(Hmm, EmissionWeightLetsTheChainOutweighOneStrongStep) {
+  std::vector<int> labels(30, 0);
+  for (int t = 20; t < 30; ++t)
+    labels[static_cast<std::size_t>(t)] = 1;
+  StepLikelihoods s = twoClass(labels, 3.0);
+  s.logLik(10, 0) = -21.0;  // one step strongly for class 1 inside the class-0 stretch
+  s.logLik(10, 1) = -1.0;
+  TransitionModel chain = stayTransitions(2, 0.99);
+  const Decisions plain = decide(s, chain, DecisionMode::Online);
+  EXPECT_EQ(plain[10], 1);
+  chain.emissionWeight = 0.1;
+  const Decisions online = decide(s, chain, DecisionMode::Online);
+  const Decisions offline = decide(s, chain, DecisionMode::Offline);
+  EXPECT_EQ(online[10], 0);
+  EXPECT_EQ(offline[10], 0);
+  EXPECT_EQ(online[29], 1);
+  EXPECT_EQ(offline[25], 1);
+  // Online needs a few steps of the new class before it follows (0.3 nats each against the
+  // chain's 4.6 for leaving); offline sees the change coming.
+  EXPECT_EQ(online[20], 0);
+}
+
 TEST(Hmm, OfflineDecisionUsesTheFutureOnlineDoesNot) {
   // Two classes, sticky chain: a weak step for class 1 between strong steps for class 0.
   TransitionModel chain = stayTransitions(2, 0.95);

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "analysis/classify_run.h"
@@ -155,17 +156,25 @@ TEST(TrainRecipe, MinRowsSkipsAGroup) {
 // and its decision at t does not depend on later steps.
 TEST(OnlineDecider, AgreesWithTheWholeRunOnlineDecision) {
   Runs train = makeRuns({"a", "b"}, 1500);
-  for (FeatureKind kind : {FeatureKind::NormalShear, FeatureKind::Context}) {
+  // The emission weight of the settings reaches the model's chain, the whole-run deciders and the
+  // step-by-step one alike.
+  for (const auto& [kind, weight] :
+       {std::pair{FeatureKind::NormalShear, 1.0}, std::pair{FeatureKind::Context, 1.0},
+        std::pair{FeatureKind::Context, 0.2}}) {
     TrainJob job;
     job.runs = train.labelled;
     job.runRefs = train.refs;
     job.settings = quick();
-    for (TrainSettings& s : job.settings.byGroup)
+    for (TrainSettings& s : job.settings.byGroup) {
       s.features = kind;
+      s.emissionWeight = weight;
+    }
     job.groups = {SensorGroup::Left, SensorGroup::FrontRightCorner};
     auto out = trainAndEvaluate(job);
     ASSERT_TRUE(out.ok()) << out.errorText();
     const ModelBundle& bundle = out->bundle;
+    for (const GroupModel& m : bundle.models)
+      EXPECT_EQ(m.transitions.emissionWeight, weight);
     const RunData run = testdata::makeLabelledRun(700, 999);
     ClassifyOptions options;
     options.allDecisions = true;

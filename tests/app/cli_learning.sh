@@ -105,6 +105,20 @@ fi
 "$T" report e.json > e.txt || fail "report exited $?"
 grep -Eq '^R +normal +gmm +nodal-diag +8 +0\.5 ' e.txt || fail "R overridden: $(cat e.txt)"
 grep -Eq '^RRC +normal +gmm +nodal-diag +8 +0\.5 ' e.txt || fail "RRC overridden: $(cat e.txt)"
+# --emission-weight: every group's chain weighs each step's evidence by it; the model file and
+# the report say so; a weight that is not > 0 is a usage error (exit 2).
+"$T" train --runs runs/run_0000.csv runs/run_0001.csv --groups R --emission-weight 0.25 \
+  --min-rows 1 --out w.json > /dev/null 2>&1 || fail "train --emission-weight exited $?"
+has w.json '"emission_weight": 0.25'
+"$T" report w.json > w.txt || fail "report exited $?"
+grep -Eq '^R .* online \(evidence x 0\.25\)' w.txt || fail "R weight: $(cat w.txt)"
+for bad in 0 -1 nan; do
+  code=0
+  "$T" train --runs runs/run_0000.csv --groups R --emission-weight "$bad" --out bad.json \
+    > /dev/null 2> bad.err || code=$?
+  [ "$code" -eq 2 ] || fail "--emission-weight $bad exited $code"
+  grep -q "emission-weight" bad.err || fail "--emission-weight $bad: $(cat bad.err)"
+done
 "$T" sweep --runs runs/run_0000.csv runs/run_0001.csv --groups R --orders 1,64 \
   --covs nodal-diag --floors 0.03 --out s.json --json > sweep.json || fail "sweep exited $?"
 has sweep.json '"warnings":'
