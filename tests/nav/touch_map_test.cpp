@@ -330,5 +330,30 @@ TEST(TouchMapNavigate, ReachesTheGoalRoundABoxAndIsDeterministic) {
   }
 }
 
+// With the map the run still ends as unreachable when no way exists: a goal inside a closed ring of
+// walls (the odometry drifts over the blocked steps and carries the robot "inside" the ring; the
+// search round the goal then finds nothing), and a wall across the scene whose only gap (70) is
+// narrower than the robot (the plan finds no way once the wall is touched along its length).
+TEST(TouchMapNavigate, EnclosedGoalEndsUnreachable) {
+  const auto world = worldOf({box(950, 250, 1250, 270), box(950, 630, 1250, 650),
+                              box(950, 270, 970, 630), box(1230, 270, 1250, 630)},
+                             2000, 1000, Vec2(1100, 450));
+  for (double y : {380.0, 450.0, 520.0}) {
+    const NavigateResult r = runWithMap(world, {200, y, 0}, 20000);
+    EXPECT_EQ(r.outcome, RunOutcome::Unreachable)
+        << "from y " << y << ": " << runOutcomeName(r.outcome) << " after " << r.steps;
+  }
+}
+
+TEST(TouchMapNavigate, WallWithOnlyANarrowGapIsUnreachable) {
+  const auto world =
+      worldOf({box(700, 0, 720, 400), box(700, 470, 720, 900)}, 1400, 900, Vec2(1200, 450));
+  for (double y : {200.0, 600.0}) {
+    const NavigateResult r = runWithMap(world, {250, y, 0}, 20000);
+    EXPECT_EQ(r.outcome, RunOutcome::Unreachable)
+        << "from y " << y << ": " << runOutcomeName(r.outcome) << " after " << r.steps;
+  }
+}
+
 }  // namespace
 }  // namespace tactile::nav
