@@ -5,6 +5,7 @@
 
 #include <cmath>
 #include <initializer_list>
+#include <tuple>
 
 #include "nav/navigate.h"
 #include "nav/navigator.h"
@@ -101,6 +102,43 @@ TEST(TouchMap, PlanGoesRoundATouchedWallThroughOpenCells) {
   const Vec2 aim = map.lookAhead(*p, Vec2(10.0, 10.0), 300.0);
   EXPECT_GT((aim - Vec2(10.0, 10.0)).norm(), 100.0);
   EXPECT_TRUE(map.lineOpen(Vec2(10.0, 10.0), aim));
+}
+
+// Cells near a touched one (within nearUnits) cost nearCost times their length: a plan along a
+// touched wall to a door in it keeps out of the band along the wall (where the robot's corners
+// would graze it, and meet the door's jamb at a slant) and crosses it at the door; with nearCost 1
+// it runs along the edge of the closed cells. The plan's length counts the extra cost.
+TEST(TouchMap, NearCellsCostMoreSoThePlanKeepsOffAWall) {
+  const auto run = [](double nearCost) {
+    TouchMapConfig c;
+    c.marginUnits = 300.0;
+    c.nearCost = nearCost;
+    TouchMap map(Vec2(0.0, 0.0), Vec2(1000.0, 0.0), c);
+    markWall(map, 500.0, -600.0, 0.0);  // a door from y 0 to 120 in a wall along x = 500
+    markWall(map, 500.0, 120.0, 700.0);
+    // Touched cell centres lie at x = 510: near within 70 of them, closed within 40.
+    EXPECT_TRUE(map.near(Vec2(445.0, -200.0)));
+    EXPECT_FALSE(map.near(Vec2(425.0, -200.0)));
+    EXPECT_TRUE(map.near(Vec2(510.0, 70.0)));  // the whole door is near its jambs
+    const auto p = map.plan(Vec2(450.0, -250.0), Vec2(700.0, 60.0));
+    EXPECT_TRUE(p);
+    double lo = 1e9;
+    double hi = -1e9;
+    if (p)
+      for (const Vec2& q : p->points)
+        if (q.y() >= -200.0 && q.y() <= 0.0) {
+          lo = std::min(lo, q.x());
+          hi = std::max(hi, q.x());
+        }
+    return std::tuple<double, double, double>{lo, hi, p ? p->lengthUnits : 0.0};
+  };
+  const auto [lo3, hi3, len3] = run(3.0);
+  const auto [lo1, hi1, len1] = run(1.0);
+  EXPECT_LE(hi3, 430.0 + 1e-9);  // outside the band along the wall
+  EXPECT_GE(lo1, 450.0 - 1e-9);  // on the edge of the closed cells
+  EXPECT_GT(len3, len1);
+  EXPECT_LE(lo3, hi3);  // points in the stretch were found
+  EXPECT_LE(lo1, hi1);
 }
 
 TEST(TouchMap, WallAcrossTheWholeMapLeavesNoWay) {
