@@ -3,6 +3,7 @@
 // navigator marking what its domes touch, the plan choosing the follow side, and determinism.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <initializer_list>
 #include <tuple>
@@ -326,6 +327,42 @@ TEST(TouchMapNavigator, PlanOverridesTheFirstTouchRule) {
       EXPECT_GT(omega, 0.0);  // the plan: round to the left
     else
       EXPECT_LT(omega, 0.0);  // the first-touch rule: away from the left-hand wall
+  }
+}
+
+// Arrived by odometry while the run goes on (the referee has not ended it): the robot searches on a
+// spiral round the goal out to 400 units. With the map, two spirals without the goal end the run as
+// unreachable; without it the search goes on.
+TEST(TouchMapNavigator, TwoSearchSpiralsWithoutTheGoalEndTheRunAsUnreachable) {
+  for (bool map : {true, false}) {
+    NavigatorConfig config;
+    config.source = StatusSource::Truth;
+    config.touchMap = map;
+    auto nav = std::move(Navigator::create(config).value());
+    Values values{};
+    Truth truth = truthOf(values, ContactClass::NoContact);
+    double farthest = 0.0;
+    std::size_t k = 0;
+    for (; k < 12000 && !nav->finished(); ++k) {
+      Observation o;
+      o.step = k;
+      o.dtSeconds = 0.1;
+      o.start = Pose2d{0.0, 0.0, 0.0};
+      o.goal = Vec2(10.0, 0.0);  // within the arrival radius from the start
+      o.values = &values;
+      o.truth = &truth;
+      nav->step(o);
+      const Pose2d p = nav->odometry();
+      farthest = std::max(farthest, std::hypot(p.x - 10.0, p.y));
+    }
+    if (map) {
+      ASSERT_TRUE(nav->finished()) << "after " << k << " steps";
+      EXPECT_EQ(*nav->finished(), RunOutcome::Unreachable);
+      EXPECT_GT(farthest, 350.0);  // it searched out to the spiral's edge first
+      EXPECT_GT(k, 1000u);
+    } else {
+      EXPECT_FALSE(nav->finished()) << "after " << k << " steps";
+    }
   }
 }
 
