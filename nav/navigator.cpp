@@ -92,6 +92,9 @@ constexpr double kMapReverseCosine = -0.5;
 // A map that finds no way is started afresh this many times before the run is unreachable (old
 // touches may have drifted across a way that exists).
 constexpr int kMapResets = 3;
+// With the touch map, arrived by odometry and this many search spirals without the goal: the run
+// ends as unreachable.
+constexpr int kMapSearchRounds = 2;
 // Bug2's bumper following: the arc back toward an obstacle no longer touched.
 constexpr double kBumperArcUnits = 90.0;
 
@@ -258,6 +261,7 @@ struct Navigator::Impl {
   // Escape from blocked steps.
   int blockedStreak = 0;
   double searchAngle = 0.0;  // along the search spiral round the goal
+  int searchRounds = 0;      // spirals searched out to kSearchRadiusUnits
   int escapeIndex = 0;
   int escapeSteps = 0;
   Command escape;
@@ -278,6 +282,9 @@ struct Navigator::Impl {
   std::size_t planStep = 0;
   bool planned = false;
   bool noWay = false;
+  // The last step Head to Destination turned in place with the map, and which way.
+  std::size_t spinStep = static_cast<std::size_t>(-2);
+  double spinOmega = 0.0;
   int mapResets = 0;
   double followedUnits = 0.0;  // along the wall since following started (odometry)
   bool reversing = false;      // a U turn back along the wall the plan asked for
@@ -520,7 +527,16 @@ struct Navigator::Impl {
     }
     for (int i = 0; i < 200; ++i) {
       const double r = kSearchPitchUnits * searchAngle / (2.0 * kPi);
-      if (r > kSearchRadiusUnits) searchAngle = 0.0;
+      if (r > kSearchRadiusUnits) {
+        searchAngle = 0.0;
+        // With the map: the goal was not found in kMapSearchRounds spirals round where the
+        // odometry puts it. The odometry took the robot through what it touched (a closed ring
+        // round the goal); the goal is unreachable.
+        if (useMap() && ++searchRounds >= kMapSearchRounds) {
+          finished = RunOutcome::Unreachable;
+          return {};
+        }
+      }
       const Vec2 target = goal + r * Vec2(std::cos(searchAngle), std::sin(searchAngle));
       if ((target - position()).norm() > 25.0) return headTo(target);
       searchAngle += std::max(0.05, 20.0 / std::max(r, 20.0));
@@ -700,6 +716,15 @@ struct Navigator::Impl {
       return checkContact();
     }
     Command c = headTo(planTarget());
+    // With the map, turning in place toward the plan keeps the way it turned on the step before:
+    // the body centre (the plan's start) moves as the robot turns, and the plan's target can flip
+    // between the two ways round an obstacle from one step to the next; without this the robot
+    // turns back and forth on the spot for the rest of its run.
+    if (useMap() && c.v == 0.0 && c.omega != 0.0) {
+      if (spinStep + 1 == stepIndex && (c.omega > 0.0) != (spinOmega > 0.0)) c.omega = spinOmega;
+      spinStep = stepIndex;
+      spinOmega = c.omega;
+    }
     // A side brushing something while the way ahead is free: ease away from it.
     const double l = std::max(groupMax(*values, SensorGroup::Left),
                               groupMax(*values, SensorGroup::RearLeftCorner));

@@ -116,10 +116,11 @@ struct NavigatorConfig {
   double arriveRadiusUnits = 30.0;
   // The touch map (docs/navigation.md#the-touch-map-experimental), opt-in: remember where the robot
   // touched things in the odometry frame and plan on it where Head to Destination heads, which side
-  // to follow and when to leave a wall; the plan finding no way (after kMapResets fresh starts)
-  // ends the run as unreachable, replacing the loop rule and the return-point test. Off (the
-  // default): the navigator as the figures in docs/navigation-bench.md give it. The bumper Bug2
-  // never uses it.
+  // to follow and when to leave a wall; the plan finding no way (after kMapResets fresh starts),
+  // or two search spirals round the goal without reaching it once the odometry says it has
+  // arrived, end the run as unreachable, replacing the loop rule and the return-point test. Off
+  // (the default): the navigator as the figures in docs/navigation-bench.md give it. The bumper
+  // Bug2 never uses it.
   bool touchMap = false;
 };
 

@@ -18,6 +18,8 @@ TouchMap::TouchMap(const sim::Vec2& start, const sim::Vec2& goal, TouchMapConfig
   if (!(cfg_.cellUnits > 0.0)) cfg_.cellUnits = 20.0;
   if (!(cfg_.growUnits >= 0.0)) cfg_.growUnits = 0.0;
   if (!(cfg_.marginUnits >= 0.0)) cfg_.marginUnits = 0.0;
+  if (!(cfg_.nearUnits >= 0.0)) cfg_.nearUnits = 0.0;
+  if (!(cfg_.nearCost >= 1.0)) cfg_.nearCost = 1.0;
   const double xmin = std::min(start.x(), goal.x()) - cfg_.marginUnits;
   const double ymin = std::min(start.y(), goal.y()) - cfg_.marginUnits;
   const double xmax = std::max(start.x(), goal.x()) + cfg_.marginUnits;
@@ -29,6 +31,7 @@ TouchMap::TouchMap(const sim::Vec2& start, const sim::Vec2& goal, TouchMapConfig
   const std::size_t n = static_cast<std::size_t>(cols_) * static_cast<std::size_t>(rows_);
   touched_.assign(n, 0);
   closedBy_.assign(n, 0);
+  nearBy_.assign(n, 0);
   cost_.assign(n, 0.0);
   parent_.assign(n, -1);
   seen_.assign(n, 0);
@@ -36,6 +39,11 @@ TouchMap::TouchMap(const sim::Vec2& start, const sim::Vec2& goal, TouchMapConfig
   for (int dr = -reach; dr <= reach; ++dr)
     for (int dc = -reach; dc <= reach; ++dc)
       if (std::hypot(dc, dr) * cfg_.cellUnits <= cfg_.growUnits + 1e-9) disc_.emplace_back(dc, dr);
+  const int nearReach = static_cast<int>(std::floor(cfg_.nearUnits / cfg_.cellUnits));
+  for (int dr = -nearReach; dr <= nearReach; ++dr)
+    for (int dc = -nearReach; dc <= nearReach; ++dc)
+      if (std::hypot(dc, dr) * cfg_.cellUnits <= cfg_.nearUnits + 1e-9)
+        nearDisc_.emplace_back(dc, dr);
 }
 
 bool TouchMap::cellOf(const sim::Vec2& p, int& col, int& row) const {
@@ -64,6 +72,19 @@ void TouchMap::grow(int col, int row, int delta) {
     auto& n = closedBy_[index(c, r)];
     n = static_cast<std::uint16_t>(n + delta);
   }
+  for (const auto& [dc, dr] : nearDisc_) {
+    const int c = col + dc;
+    const int r = row + dr;
+    if (c < 0 || r < 0 || c >= cols_ || r >= rows_) continue;
+    auto& n = nearBy_[index(c, r)];
+    n = static_cast<std::uint16_t>(n + delta);
+  }
+}
+
+bool TouchMap::near(const sim::Vec2& point) const {
+  int c = 0;
+  int r = 0;
+  return !cellOf(point, c, r) || nearBy_[index(c, r)] != 0;
 }
 
 bool TouchMap::mark(const sim::Vec2& point) {
@@ -204,7 +225,8 @@ std::optional<TouchPlan> TouchMap::plan(const sim::Vec2& from, const sim::Vec2& 
         if (!openCell(nc, nr)) continue;
         if (dc != 0 && dr != 0 && (!openCell(c + dc, r) || !openCell(c, r + dr))) continue;
         const int n = index(nc, nr);
-        const double g = cost_[cell] + (dc != 0 && dr != 0 ? kSqrt2 : 1.0) * cfg_.cellUnits;
+        const double g = cost_[cell] + (dc != 0 && dr != 0 ? kSqrt2 : 1.0) * cfg_.cellUnits *
+                                           (nearBy_[n] != 0 ? cfg_.nearCost : 1.0);
         if (seen_[n] != open || g + 1e-9 < cost_[n]) {
           seen_[n] = open;
           cost_[n] = g;

@@ -21,6 +21,12 @@ struct TouchMapConfig {
   double cellUnits = 20.0;
   // A touched cell closes every cell whose centre lies within this distance of its centre.
   double growUnits = 40.0;
+  // Open cells within this distance of a touched cell are near it: a plan step onto one costs
+  // nearCost times its length, so the plan keeps off the band along a wall and crosses it square
+  // on at a door. 1 (the default): no extra cost; 3 passes the 120-wide gap from more starts but
+  // succeeds on fewer of the generated maps (docs/navigation-bench.md#touch-map-experiment).
+  double nearUnits = 70.0;
+  double nearCost = 1.0;
   // The grid covers the box round start and goal widened by this much on every side; beyond it
   // the planner does not go.
   double marginUnits = 2000.0;
@@ -67,6 +73,8 @@ class TouchMap {
   // The straight segment from a to b crosses only open cells once it has left the closed cells
   // round a (a robot beside a wall stands on closed cells).
   bool lineOpen(const sim::Vec2& a, const sim::Vec2& b) const;
+  // Within nearUnits of a touched cell (or off the grid).
+  bool near(const sim::Vec2& point) const;
 
  private:
   int index(int col, int row) const { return row * cols_ + col; }
@@ -82,8 +90,10 @@ class TouchMap {
   int cols_ = 0;
   int rows_ = 0;
   std::vector<std::uint8_t> touched_;
-  std::vector<std::uint16_t> closedBy_;    // how many touched cells close this one
-  std::vector<std::pair<int, int>> disc_;  // cell offsets within growUnits
+  std::vector<std::uint16_t> closedBy_;        // how many touched cells close this one
+  std::vector<std::uint16_t> nearBy_;          // how many touched cells lie within nearUnits
+  std::vector<std::pair<int, int>> disc_;      // cell offsets within growUnits
+  std::vector<std::pair<int, int>> nearDisc_;  // cell offsets within nearUnits
   int touchedCount_ = 0;
   std::uint64_t revision_ = 0;
   // Search scratch, reused between plans.

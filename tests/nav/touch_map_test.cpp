@@ -3,8 +3,10 @@
 // navigator marking what its domes touch, the plan choosing the follow side, and determinism.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <initializer_list>
+#include <tuple>
 
 #include "nav/navigate.h"
 #include "nav/navigator.h"
@@ -101,6 +103,43 @@ TEST(TouchMap, PlanGoesRoundATouchedWallThroughOpenCells) {
   const Vec2 aim = map.lookAhead(*p, Vec2(10.0, 10.0), 300.0);
   EXPECT_GT((aim - Vec2(10.0, 10.0)).norm(), 100.0);
   EXPECT_TRUE(map.lineOpen(Vec2(10.0, 10.0), aim));
+}
+
+// Cells near a touched one (within nearUnits) cost nearCost times their length: a plan along a
+// touched wall to a door in it keeps out of the band along the wall (where the robot's corners
+// would graze it, and meet the door's jamb at a slant) and crosses it at the door; with nearCost 1
+// it runs along the edge of the closed cells. The plan's length counts the extra cost.
+TEST(TouchMap, NearCellsCostMoreSoThePlanKeepsOffAWall) {
+  const auto run = [](double nearCost) {
+    TouchMapConfig c;
+    c.marginUnits = 300.0;
+    c.nearCost = nearCost;
+    TouchMap map(Vec2(0.0, 0.0), Vec2(1000.0, 0.0), c);
+    markWall(map, 500.0, -600.0, 0.0);  // a door from y 0 to 120 in a wall along x = 500
+    markWall(map, 500.0, 120.0, 700.0);
+    // Touched cell centres lie at x = 510: near within 70 of them, closed within 40.
+    EXPECT_TRUE(map.near(Vec2(445.0, -200.0)));
+    EXPECT_FALSE(map.near(Vec2(425.0, -200.0)));
+    EXPECT_TRUE(map.near(Vec2(510.0, 70.0)));  // the whole door is near its jambs
+    const auto p = map.plan(Vec2(450.0, -250.0), Vec2(700.0, 60.0));
+    EXPECT_TRUE(p);
+    double lo = 1e9;
+    double hi = -1e9;
+    if (p)
+      for (const Vec2& q : p->points)
+        if (q.y() >= -200.0 && q.y() <= 0.0) {
+          lo = std::min(lo, q.x());
+          hi = std::max(hi, q.x());
+        }
+    return std::tuple<double, double, double>{lo, hi, p ? p->lengthUnits : 0.0};
+  };
+  const auto [lo3, hi3, len3] = run(3.0);
+  const auto [lo1, hi1, len1] = run(1.0);
+  EXPECT_LE(hi3, 430.0 + 1e-9);  // outside the band along the wall
+  EXPECT_GE(lo1, 450.0 - 1e-9);  // on the edge of the closed cells
+  EXPECT_GT(len3, len1);
+  EXPECT_LE(lo3, hi3);  // points in the stretch were found
+  EXPECT_LE(lo1, hi1);
 }
 
 TEST(TouchMap, WallAcrossTheWholeMapLeavesNoWay) {
@@ -291,6 +330,42 @@ TEST(TouchMapNavigator, PlanOverridesTheFirstTouchRule) {
   }
 }
 
+// Arrived by odometry while the run goes on (the referee has not ended it): the robot searches on a
+// spiral round the goal out to 400 units. With the map, two spirals without the goal end the run as
+// unreachable; without it the search goes on.
+TEST(TouchMapNavigator, TwoSearchSpiralsWithoutTheGoalEndTheRunAsUnreachable) {
+  for (bool map : {true, false}) {
+    NavigatorConfig config;
+    config.source = StatusSource::Truth;
+    config.touchMap = map;
+    auto nav = std::move(Navigator::create(config).value());
+    Values values{};
+    Truth truth = truthOf(values, ContactClass::NoContact);
+    double farthest = 0.0;
+    std::size_t k = 0;
+    for (; k < 12000 && !nav->finished(); ++k) {
+      Observation o;
+      o.step = k;
+      o.dtSeconds = 0.1;
+      o.start = Pose2d{0.0, 0.0, 0.0};
+      o.goal = Vec2(10.0, 0.0);  // within the arrival radius from the start
+      o.values = &values;
+      o.truth = &truth;
+      nav->step(o);
+      const Pose2d p = nav->odometry();
+      farthest = std::max(farthest, std::hypot(p.x - 10.0, p.y));
+    }
+    if (map) {
+      ASSERT_TRUE(nav->finished()) << "after " << k << " steps";
+      EXPECT_EQ(*nav->finished(), RunOutcome::Unreachable);
+      EXPECT_GT(farthest, 350.0);  // it searched out to the spiral's edge first
+      EXPECT_GT(k, 1000u);
+    } else {
+      EXPECT_FALSE(nav->finished()) << "after " << k << " steps";
+    }
+  }
+}
+
 // ---- whole runs --------------------------------------------------------------------------------
 
 sim::Obstacle box(double x0, double y0, double x1, double y1) {
@@ -327,6 +402,31 @@ TEST(TouchMapNavigate, ReachesTheGoalRoundABoxAndIsDeterministic) {
     EXPECT_EQ(a.outcome, RunOutcome::Success) << "from y " << y << " after " << a.steps;
     const NavigateResult b = runWithMap(world, {200, y, 0}, 8000);
     EXPECT_TRUE(a.run == b.run);
+  }
+}
+
+// With the map the run still ends as unreachable when no way exists: a goal inside a closed ring of
+// walls (the odometry drifts over the blocked steps and carries the robot "inside" the ring; the
+// search round the goal then finds nothing), and a wall across the scene whose only gap (70) is
+// narrower than the robot (the plan finds no way once the wall is touched along its length).
+TEST(TouchMapNavigate, EnclosedGoalEndsUnreachable) {
+  const auto world = worldOf({box(950, 250, 1250, 270), box(950, 630, 1250, 650),
+                              box(950, 270, 970, 630), box(1230, 270, 1250, 630)},
+                             2000, 1000, Vec2(1100, 450));
+  for (double y : {380.0, 450.0, 520.0}) {
+    const NavigateResult r = runWithMap(world, {200, y, 0}, 20000);
+    EXPECT_EQ(r.outcome, RunOutcome::Unreachable)
+        << "from y " << y << ": " << runOutcomeName(r.outcome) << " after " << r.steps;
+  }
+}
+
+TEST(TouchMapNavigate, WallWithOnlyANarrowGapIsUnreachable) {
+  const auto world =
+      worldOf({box(700, 0, 720, 400), box(700, 470, 720, 900)}, 1400, 900, Vec2(1200, 450));
+  for (double y : {200.0, 600.0}) {
+    const NavigateResult r = runWithMap(world, {250, y, 0}, 20000);
+    EXPECT_EQ(r.outcome, RunOutcome::Unreachable)
+        << "from y " << y << ": " << runOutcomeName(r.outcome) << " after " << r.steps;
   }
 }
 
