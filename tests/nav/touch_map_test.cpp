@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <initializer_list>
+#include <memory>
 #include <tuple>
 
 #include "nav/navigate.h"
@@ -290,15 +291,20 @@ TEST(TouchMapNavigator, PlanChoosesTheFollowSide) {
   }
 }
 
+// A navigator on the simulator's truth, with or without the touch map.
+std::unique_ptr<Navigator> truthNavigator(bool touchMap) {
+  NavigatorConfig config;
+  config.source = StatusSource::Truth;
+  config.touchMap = touchMap;
+  return std::move(Navigator::create(config).value());
+}
+
 // Where the plan and the first-touch rule disagree, the plan decides: hit on the front-left corner
 // (the first-touch rule puts that wall on the left and turns right) with the goal far off to the
 // left, where the plan's way leads past the touch: the robot turns left, the wall on its right.
 TEST(TouchMapNavigator, PlanOverridesTheFirstTouchRule) {
   for (bool map : {true, false}) {
-    NavigatorConfig config;
-    config.source = StatusSource::Truth;
-    config.touchMap = map;
-    auto nav = std::move(Navigator::create(config).value());
+    auto nav = truthNavigator(map);
     Values values{};
     Truth truth{};
     std::size_t k = 0;
@@ -335,10 +341,7 @@ TEST(TouchMapNavigator, PlanOverridesTheFirstTouchRule) {
 // unreachable; without it the search goes on.
 TEST(TouchMapNavigator, TwoSearchSpiralsWithoutTheGoalEndTheRunAsUnreachable) {
   for (bool map : {true, false}) {
-    NavigatorConfig config;
-    config.source = StatusSource::Truth;
-    config.touchMap = map;
-    auto nav = std::move(Navigator::create(config).value());
+    auto nav = truthNavigator(map);
     Values values{};
     Truth truth = truthOf(values, ContactClass::NoContact);
     double farthest = 0.0;
