@@ -195,6 +195,9 @@ SweepResult runSweep(const std::vector<LabelledRun>& train, const std::vector<La
     }
     d.chain = estimateTransitions(classSequences(d.train, d.selection.modelled),
                                   static_cast<int>(d.selection.modelled.size()));
+    // The chain weighs the evidence as the group's trained models do by default, so that the
+    // online and offline scores of a cell are those of the model trained with its settings.
+    d.chain.emissionWeight = defaultTrainSettings(cell.group).emissionWeight;
     SweepDataSummary s;
     s.group = cell.group;
     s.features = cell.features;

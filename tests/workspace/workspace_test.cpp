@@ -1051,7 +1051,11 @@ namespace {
 TEST(WorkspaceCellModel, ModelOfACellScoresExactlyAsTheCell) {
   TrainFixture f;
   ASSERT_TRUE(f.ws);
-  auto sweep = f.ws->sweep(smallSweep());
+  // Per-step and online cells: the online score depends on the class chain and its evidence
+  // weight (the group's default), which the cell's model must share.
+  SweepRequest request = smallSweep();
+  request.grid.decisions = {analysis::DecisionMode::Step, analysis::DecisionMode::Online};
+  auto sweep = f.ws->sweep(request);
   ASSERT_TRUE(sweep.ok()) << sweep.errorText();
   auto stored = f.ws->loadSweep(sweep->sweepId);
   ASSERT_TRUE(stored.ok());
@@ -1078,6 +1082,9 @@ TEST(WorkspaceCellModel, ModelOfACellScoresExactlyAsTheCell) {
     ASSERT_NE(m, nullptr);
     EXPECT_EQ(m->varianceFloor, cell.cell.varianceFloor);
     EXPECT_EQ(m->classifier.models().front().components(), cell.cell.order);
+    EXPECT_EQ(m->decision, cell.cell.decision);
+    EXPECT_EQ(m->transitions.emissionWeight,
+              analysis::defaultTrainSettings(cell.cell.group).emissionWeight);
     ++checked;
   }
   EXPECT_GE(checked, 2u);
