@@ -11,6 +11,7 @@ namespace tactile::nav {
 namespace {
 
 using test::press;
+using test::Script;
 using test::Truth;
 using test::truthOf;
 using test::Values;
@@ -20,39 +21,6 @@ void pressGroup(Values& values, SensorGroup g, double n) {
   for (int d = info.firstSensor; d < info.firstSensor + info.sensorCount; ++d)
     values[static_cast<std::size_t>(normalOffset(d))] = n;
 }
-
-// Feeds scripted readings to a truth-status navigator, one step at a time.
-class Script {
- public:
-  explicit Script(StatusSource source = StatusSource::Truth) {
-    NavigatorConfig config;
-    config.source = source;
-    auto made = Navigator::create(config);
-    EXPECT_TRUE(made.ok());
-    nav_ = std::move(made.value());
-  }
-  Command step(const Values& values, bool blocked = false,
-               ContactClass touching = ContactClass::Wall) {
-    values_ = values;
-    truth_ = truthOf(values, touching);
-    Observation o;
-    o.step = step_++;
-    o.dtSeconds = 0.1;
-    o.start = Pose2d{0.0, 0.0, 0.0};
-    o.goal = Vec2(2000.0, 0.0);
-    o.blocked = blocked;
-    o.values = &values_;
-    o.truth = &truth_;
-    return nav_->step(o);
-  }
-  Navigator& nav() { return *nav_; }
-
- private:
-  std::unique_ptr<Navigator> nav_;
-  Values values_{};
-  Truth truth_{};
-  std::size_t step_ = 0;
-};
 
 TEST(NavigatorNames, StrategiesAndStatusesReadBack) {
   for (Strategy s : kStrategies) {

@@ -20,6 +20,7 @@ namespace tactile::nav {
 namespace {
 
 using test::press;
+using test::Script;
 using test::Truth;
 using test::truthOf;
 using test::Values;
@@ -176,38 +177,6 @@ TEST(TouchMap, StartOnTheGrowthOfAThinWallStaysOnItsSide) {
 
 // ---- the navigator with the touch map ---------------------------------------------------------
 
-class Script {
- public:
-  explicit Script(Vec2 goal = Vec2(2000.0, 0.0)) : goal_(goal) {
-    NavigatorConfig config;
-    config.source = StatusSource::Truth;
-    config.touchMap = true;
-    auto made = Navigator::create(config);
-    EXPECT_TRUE(made.ok());
-    nav_ = std::move(made.value());
-  }
-  Command step(const Values& values, ContactClass touching = ContactClass::Wall) {
-    values_ = values;
-    truth_ = truthOf(values, touching);
-    Observation o;
-    o.step = step_++;
-    o.dtSeconds = 0.1;
-    o.start = Pose2d{0.0, 0.0, 0.0};
-    o.goal = goal_;
-    o.values = &values_;
-    o.truth = &truth_;
-    return nav_->step(o);
-  }
-  Navigator& nav() { return *nav_; }
-
- private:
-  std::unique_ptr<Navigator> nav_;
-  Vec2 goal_;
-  Values values_{};
-  Truth truth_{};
-  std::size_t step_ = 0;
-};
-
 // Where a pressed dome marks: its centre a dome radius out along its normal, in the odometry frame.
 Vec2 touchPoint(const Pose2d& pose, int sensor) {
   const RobotGeometry g;
@@ -218,7 +187,7 @@ Vec2 touchPoint(const Pose2d& pose, int sensor) {
 }
 
 TEST(TouchMapNavigator, TouchingDomesOfAContactGroupMarkTheirCells) {
-  Script s;
+  Script s(true);
   s.step(Values{});
   s.step(Values{});
   const Pose2d pose = s.nav().odometry();
@@ -241,11 +210,11 @@ TEST(TouchMapNavigator, TouchingDomesOfAContactGroupMarkTheirCells) {
 }
 
 TEST(TouchMapNavigator, GroupJudgedNoContactDoesNotMark) {
-  Script s;
+  Script s(true);
   s.step(Values{});
   Values front{};
   press(front, {2, 3}, 2.0);
-  s.step(front, ContactClass::NoContact);
+  s.step(front, false, ContactClass::NoContact);
   EXPECT_EQ(s.nav().touchMap().touchedCount(), 0);
 }
 
@@ -253,7 +222,7 @@ TEST(TouchMapNavigator, GroupJudgedNoContactDoesNotMark) {
 // Contact turns toward the plan's way (a hit on a front corner with the goal off to that side).
 TEST(TouchMapNavigator, PlanChoosesTheFollowSide) {
   for (double goalY : {600.0, -600.0}) {
-    Script s(Vec2(2000.0, goalY));
+    Script s(true, Vec2(2000.0, goalY));
     s.step(Values{});
     // Face the goal first (Head to Destination turns in place).
     for (int i = 0; i < 60 && s.nav().strategy() == Strategy::HeadToDestination; ++i) {
