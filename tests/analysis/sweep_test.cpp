@@ -216,6 +216,48 @@ TEST(Sweep, CellsRecordMetricsAndTimes) {
   }
 }
 
+// An online cell is scored with the class chain weighing the evidence as the group's trained
+// models do (its default emission weight), so a model trained with the cell's settings scores
+// exactly as the cell. On noisy data the weight changes the online decisions (checked here, so
+// the test can tell a sweep that leaves the weight at 1 from one that uses the default).
+TEST(Sweep, OnlineCellsDecideWithTheGroupsDefaultEmissionWeight) {
+  RunData a = testdata::makeLabelledRun(1500, 31, 2.0);
+  RunData b = testdata::makeLabelledRun(1500, 32, 2.0);
+  std::vector<LabelledRun> runs{{&a, labelsFromTruth(a)}, {&b, labelsFromTruth(b)}};
+  std::vector<LabelledRun> train, test;
+  splitLabelledRuns(runs, 0.4, train, test);
+  SweepGrid grid;
+  grid.groups = {SensorGroup::Right};
+  grid.orders = {1};
+  grid.forms = {CovarianceForm::NodalDiag};
+  grid.varianceFloors = {0.1};
+  grid.decisions = {DecisionMode::Online};
+  grid.maxIterations = 30;
+  const double weight = defaultTrainSettings(SensorGroup::Right).emissionWeight;
+  ASSERT_NE(weight, 1.0) << "the test needs a group whose default weight is not 1";
+  const SweepResult r = runSweep(train, test, grid);
+  ASSERT_EQ(r.cells.size(), 1u);
+  const SweepCellResult& cell = r.cells.front();
+  ASSERT_TRUE(cell.ok) << cell.reason;
+
+  TrainSettings settings;
+  settings.features = cell.cell.features;
+  settings.classifier = cellClassifierOptions(grid, cell.cell);
+  const GroupDataSet trainData = buildGroupDataSet(train, SensorGroup::Right, settings.features);
+  const GroupDataSet testData = buildGroupDataSet(test, SensorGroup::Right, settings.features);
+  const auto online = static_cast<std::size_t>(DecisionMode::Online);
+  auto onlineConfusion = [&](double w) {
+    settings.emissionWeight = w;
+    const GroupTrainResult trained = trainGroupModel(trainData, settings);
+    EXPECT_TRUE(trained.ok) << trained.reason;
+    return evaluateGroupModel(trained.model, testData).byDecision[online];
+  };
+  const ConfusionMatrix withDefault = onlineConfusion(weight);
+  const ConfusionMatrix withOne = onlineConfusion(1.0);
+  ASSERT_NE(withDefault, withOne) << "the data does not tell the weights apart";
+  EXPECT_EQ(cell.confusion, withDefault);
+}
+
 TEST(Sweep, GroupWithoutDataGivesFailedCellsWithReason) {
   const Fixture& f = fixture();
   std::vector<LabelledRun> train = f.runs;
