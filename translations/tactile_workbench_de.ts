@@ -2519,6 +2519,18 @@ grau: blockiert</translation>
         <source>by-run: the runs marked Test are scored (the command line&apos;s default); by-scene: each scene&apos;s runs (marked for training) are scored by models trained without that scene, no test runs; leave-one-run-out: each run scored by a model trained on the others (Train model only)</source>
         <translation>by-run: die als Test markierten Läufe werden bewertet (Vorgabe der Kommandozeile); by-scene: die (zum Training markierten) Läufe jeder Szene werden mit Modellen bewertet, die ohne diese Szene trainiert wurden, keine Testläufe; leave-one-run-out: jeder Lauf mit einem auf den anderen trainierten Modell bewertet (nur „Modell trainieren“)</translation>
     </message>
+    <message>
+        <source>each group&apos;s default</source>
+        <translation>Standard jeder Gruppe</translation>
+    </message>
+    <message>
+        <source>Train model: the weight of each step&apos;s evidence in the online and offline decisions (1 is the plain HMM; smaller lets the class chain outweigh single steps), as tactile train --emission-weight. Sweeps always use each group&apos;s default</source>
+        <translation>Modell trainieren: das Gewicht der Evidenz jedes Schritts in den Online- und Offline-Entscheidungen (1 ist das einfache HMM; kleiner lässt die Klassenkette einzelne Schritte überwiegen), wie tactile train --emission-weight. Sweeps verwenden immer den Standard jeder Gruppe</translation>
+    </message>
+    <message>
+        <source>Evidence weight:</source>
+        <translation>Evidenzgewicht:</translation>
+    </message>
 </context>
 <context>
     <name>tactile::gui::UserGuideWindow</name>

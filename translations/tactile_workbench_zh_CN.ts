@@ -2505,6 +2505,18 @@ grey: blocked</source>
         <source>by-run: the runs marked Test are scored (the command line&apos;s default); by-scene: each scene&apos;s runs (marked for training) are scored by models trained without that scene, no test runs; leave-one-run-out: each run scored by a model trained on the others (Train model only)</source>
         <translation>by-run：对标记为测试的运行评分（命令行的默认值）；by-scene：每个场景（标记为训练）的运行由不含该场景训练的模型评分，无测试运行；leave-one-run-out：每个运行由在其余运行上训练的模型评分（仅限“训练模型”）</translation>
     </message>
+    <message>
+        <source>each group&apos;s default</source>
+        <translation>各组默认值</translation>
+    </message>
+    <message>
+        <source>Train model: the weight of each step&apos;s evidence in the online and offline decisions (1 is the plain HMM; smaller lets the class chain outweigh single steps), as tactile train --emission-weight. Sweeps always use each group&apos;s default</source>
+        <translation>训练模型：在线和离线判定中每一步证据的权重（1 为普通 HMM；更小的值让类别链压过单个步骤），同 tactile train --emission-weight。扫描始终使用各组默认值</translation>
+    </message>
+    <message>
+        <source>Evidence weight:</source>
+        <translation>证据权重：</translation>
+    </message>
 </context>
 <context>
     <name>tactile::gui::UserGuideWindow</name>

@@ -3,6 +3,7 @@
 // cells, and stores exactly the numbers `tactile sweep` stores for the same request.
 #include <QCheckBox>
 #include <QComboBox>
+#include <QDoubleSpinBox>
 #include <QFile>
 #include <QFileInfo>
 #include <QLabel>
@@ -97,6 +98,7 @@ class TrainingDialogTest : public QObject {
   void badGridIsReportedAndNothingStarts();
   void trainStoresAModel();
   void trainWithGroupDefaultsUsesEachGroupsOwn();
+  void evidenceWeightIsEachGroupsDefaultUnlessSet();
   void resultsWindowExportsReportAndCellModel();
 };
 
@@ -144,6 +146,36 @@ void TrainingDialogTest::splitOffersTheCommandLinesSplitsWithItsDefault() {
   auto loo = dialog.trainRequest();
   QVERIFY2(loo.ok(), loo.ok() ? "" : loo.errorText().c_str());
   QCOMPARE(loo->split, workspace::SplitMode::LeaveOneRunOut);
+}
+
+void TrainingDialogTest::evidenceWeightIsEachGroupsDefaultUnlessSet() {
+  LearningFixture f;
+  TrainingDialog dialog(*f.workspace, QString::fromStdString(f.dbPath));
+  smallGrid(dialog);
+  auto* weight = dialog.findChild<QDoubleSpinBox*>(QStringLiteral("emissionWeight"));
+  QVERIFY(weight);
+  QCOMPARE(weight->value(), 0.0);
+  QCOMPARE(weight->text(), weight->specialValueText());
+  auto* groupDefaults = dialog.findChild<QCheckBox*>(QStringLiteral("groupDefaults"));
+  QVERIFY(groupDefaults);
+  for (bool defaults : {true, false}) {
+    groupDefaults->setChecked(defaults);
+    weight->setValue(0.0);
+    auto request = dialog.trainRequest();
+    QVERIFY2(request.ok(), request.ok() ? "" : request.errorText().c_str());
+    bool someGroupIsNotOne = false;
+    for (const GroupInfo& info : kSensorGroups) {
+      const double expected = analysis::defaultTrainSettings(info.group).emissionWeight;
+      QCOMPARE(request->settings.of(info.group).emissionWeight, expected);
+      someGroupIsNotOne = someGroupIsNotOne || expected != 1.0;
+    }
+    QVERIFY(someGroupIsNotOne);
+    weight->setValue(0.45);
+    request = dialog.trainRequest();
+    QVERIFY(request.ok());
+    for (const analysis::TrainSettings& s : request->settings.byGroup)
+      QCOMPARE(s.emissionWeight, 0.45);
+  }
 }
 
 void TrainingDialogTest::sweepShowsProgressAndStreamsSortedCells() {
@@ -360,6 +392,8 @@ void TrainingDialogTest::trainStoresAModel() {
   }
   for (const analysis::GroupModel& m : bundle->models) {
     QCOMPARE(m.varianceFloor, 0.03);
+    // The class chain weighs the evidence as a sweep of these settings scored it.
+    QCOMPARE(m.transitions.emissionWeight, analysis::defaultTrainSettings(m.group).emissionWeight);
     for (const analysis::GaussianMixture& mixture : m.classifier.models())
       QCOMPARE(mixture.components(), 1);
   }

@@ -228,6 +228,18 @@ void TrainingDialog::buildUi() {
          "tactile train does; unticked, the first value of every list above"));
   form->addRow(tr("Train model with:"), groupDefaults_);
 
+  emissionWeight_ = new QDoubleSpinBox;
+  emissionWeight_->setObjectName(QStringLiteral("emissionWeight"));
+  emissionWeight_->setRange(0.0, 1.0);
+  emissionWeight_->setSingleStep(0.05);
+  emissionWeight_->setDecimals(2);
+  emissionWeight_->setSpecialValueText(tr("each group's default"));
+  emissionWeight_->setToolTip(
+      tr("Train model: the weight of each step's evidence in the online and offline decisions "
+         "(1 is the plain HMM; smaller lets the class chain outweigh single steps), as tactile "
+         "train --emission-weight. Sweeps always use each group's default"));
+  form->addRow(tr("Evidence weight:"), emissionWeight_);
+
   plan_ = new QLabel;
   plan_->setObjectName(QStringLiteral("plan"));
   plan_->setWordWrap(true);
@@ -565,6 +577,15 @@ Result<workspace::TrainRequest> TrainingDialog::trainRequest() const {
     settings.classifier = analysis::cellClassifierOptions(g.value(), first);
     settings.classifier.oneVsRest = true;
     request.settings = analysis::GroupSettings::same(settings);
+    // The chain weighs the evidence as the sweep scored these settings: each group's default.
+    for (const GroupInfo& info : kSensorGroups) {
+      request.settings.of(info.group).emissionWeight =
+          analysis::defaultTrainSettings(info.group).emissionWeight;
+    }
+  }
+  if (emissionWeight_->value() > 0.0) {
+    for (analysis::TrainSettings& s : request.settings.byGroup)
+      s.emissionWeight = emissionWeight_->value();
   }
   for (analysis::TrainSettings& s : request.settings.byGroup) {
     s.classifier.threads = threads_->value();

@@ -17,6 +17,7 @@
 
 class QCheckBox;
 class QComboBox;
+class QDoubleSpinBox;
 class QLabel;
 class QLineEdit;
 class QProgressBar;
@@ -122,6 +123,7 @@ class TrainingDialog : public QDialog {
   QLineEdit* name_ = nullptr;
   QSpinBox* threads_ = nullptr;
   QCheckBox* groupDefaults_ = nullptr;  // Train model: each group's defaults, or the lists' firsts
+  QDoubleSpinBox* emissionWeight_ = nullptr;  // Train model: 0 = each group's default
   QPushButton* sweepButton_ = nullptr;
   QPushButton* trainButton_ = nullptr;
   QPushButton* cancelButton_ = nullptr;
