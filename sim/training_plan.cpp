@@ -107,7 +107,7 @@ PlannedRun wallEnd(Draw& draw, bool slow, std::size_t round) {
   std::vector<Leg> legs;
   // Turning in place sweeps 126 units about the rear axle: clear the corridor by more.
   constexpr double kClear = 140.0;
-  const int passes = slow ? draw.integer(10, 14) : draw.integer(22, 30);
+  const int passes = slow ? draw.integer(5, 7) : draw.integer(22, 30);
   const auto forward = [&](double v, double distance) {
     legs.push_back({{v, 0.0}, static_cast<int>(std::round(distance / (v * 0.1)))});
   };

@@ -225,7 +225,7 @@ TEST(TrainingPlan, FortyRunsShowEachClassOfEveryGroupAThousandTimes) {
     stats.add(run);
   }
   EXPECT_GE(fTurning * 10, fCorner * 3) << fTurning << " of " << fCorner;
-  EXPECT_GE(leavingFast * 4, leaving) << leavingFast << " of " << leaving;
+  EXPECT_GE(leavingFast * 10, leaving * 4) << leavingFast << " of " << leaving;
   for (const GroupInfo& info : kSensorGroups) {
     const auto& row = stats.classSteps[static_cast<std::size_t>(groupIndex(info.group))];
     const auto steps = [&](ContactClass c) { return row[static_cast<std::size_t>(c)]; };
