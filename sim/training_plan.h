@@ -5,9 +5,8 @@
 //   cluttered     the wall follower in a procedural room (random:N:SEED, N 20..60)
 //   wall-end      a short corridor about as wide as the robot: the robot drives out of one end,
 //                 turns in place, drives back through and out of the other end, always forwards,
-//                 at speeds 25..60, each wall at its own small angle to the heading (Wall, then
-//                 LeavingWall on the sides at driving speeds; Corner where it meets the walls'
-//                 ends coming in)
+//                 at speeds 10..60 (Wall, then LeavingWall on the sides; Corner where it meets
+//                 the walls' ends coming in)
 //   inside-corner the robot pushes into a concave corner ahead at an angle, wiggling, then backs
 //                 off; repeated (front Wall and Corner, corner groups Corner, sides Wall)
 //   tips          five convex tips (squares turned 45 degrees) round the start, each off its ray
@@ -19,12 +18,8 @@
 //                 Wall and Corner, rear corners Corner on both walls)
 //   pocket        a dead-end pocket whose sides press the side domes: in to the end, push, back
 //                 out (DeadPath on F, FLC, FRC, L, R)
-//   slow wall-end the wall-end corridor narrower, its walls along the heading, at speeds 5..15
-//                 (more corner-group contact)
-//   turning tips  the tips kind with two of the five obstacles notches (concave corners), the
-//                 front approaches driven as the wall follower meets things: straight or on an
-//                 arc, and from the first touch turning to and fro (F Corner and Wall while
-//                 turning)
+//   slow wall-end the wall-end corridor narrower, at speeds 5..15 (more corner-group contact)
+//   tips          a second run of the kind above (its own offsets)
 //   side tip      rows of tips along both sides, driven past and back (Corner on the side and
 //                 corner groups)
 //   office bug    the Bug-2 driver in a generated office map (random:office:SEED), to its goal
