@@ -72,42 +72,28 @@ void pushAndWiggle(std::vector<Leg>& legs, Draw& draw, double v, int steps) {
 }
 
 PlannedRun wallEnd(Draw& draw, bool slow, std::size_t round) {
-  // A short corridor about as wide as the robot with dome surfaces, from just behind the robot to
-  // 60-200 units ahead of its front. Each pass drives out of the far end until the whole robot is
-  // clear, turns in place, drives back through the corridor and out of the near end, turns again
-  // and comes back to the start: the robot leaves the walls twice a pass, always forwards
-  // (backing onto a wall's end reads like leaving it but is not).
-  // Slow: both walls along the heading, pressing the side domes by 2.5..4.5 (past about 2.2 the
-  // rear corners' side domes touch too), speeds 5..15.
-  // Fast: each wall at its own small angle to the heading (up to 0.06 rad either way), pressing
-  // the side domes by 0.5..4 at its nearer end and less along it, speeds 25..60: the ends of walls
-  // a driving robot leaves, with the front or the rear of the side pressed harder.
-  // The press is stratified over the plan's runs of the kind (four bands in turn), so that a few
+  // A short corridor 2 x gap wider than the robot with dome surfaces, from just behind the robot
+  // to 60-200 units ahead of its front. Below a gap of about -3 the rear-corner domes touch too.
+  // Each pass drives out of the far end until the whole robot is clear, turns in place, drives
+  // back through the corridor and out of the near end, turns again and comes back to the start:
+  // the robot leaves the walls twice a pass, always forwards (backing onto a wall's end reads
+  // like leaving it but is not).
+  // The gap is stratified over the plan's runs of the kind (four bands in turn), so that a few
   // runs cover its whole range.
-  const double lo = slow ? 2.5 : 0.5;
-  const double hi = slow ? 4.5 : 4.0;
-  const double press =
+  const double lo = slow ? -4.5 : -3.5;
+  const double hi = slow ? -2.5 : 1.0;
+  const double gap =
       lo + (hi - lo) * (static_cast<double>(round % 4) + draw.uniform(0.0, 1.0)) / 4.0;
+  const double y = kHalfWidth + kDome + gap;
   const double near = kAxleX - kBack - 5.0;
   const double end = kAxleX + kFront + draw.uniform(60.0, 200.0);
   PlannedRun run;
-  // The wall on each side (-1 right, +1 left): its inner face is `press` into the domes at its
-  // nearer end; turned by `angle` about that end, so that it falls away from the robot along it.
-  for (const double side : {-1.0, 1.0}) {
-    const double sidePress = slow ? press : std::max(0.5, press - draw.uniform(0.0, 0.5));
-    const double angle = slow ? 0.0 : draw.uniform(-0.06, 0.06);
-    const double y = kAxleY + side * (kHalfWidth + kDome - sidePress);
-    const Obstacle wall = side < 0 ? rect(near, y - 60, end, y) : rect(near, y, end, y + 60);
-    // angle > 0: nearest at the far end (the robot closes in on it driving out); < 0: at the near
-    // end. Turning about that end by -side * angle moves the rest of the face away.
-    const double pivot = angle > 0.0 ? end : near;
-    run.scene.obstacles.push_back(turned(wall, pivot, y, -side * angle));
-  }
-  run.scene = openRoom(std::move(run.scene.obstacles));
+  run.scene = openRoom(
+      {rect(near, kAxleY - y - 60, end, kAxleY - y), rect(near, kAxleY + y, end, kAxleY + y + 60)});
   std::vector<Leg> legs;
   // Turning in place sweeps 126 units about the rear axle: clear the corridor by more.
   constexpr double kClear = 140.0;
-  const int passes = slow ? draw.integer(5, 7) : draw.integer(22, 30);
+  const int passes = slow ? draw.integer(10, 14) : draw.integer(4, 6);
   const auto forward = [&](double v, double distance) {
     legs.push_back({{v, 0.0}, static_cast<int>(std::round(distance / (v * 0.1)))});
   };
@@ -116,7 +102,7 @@ PlannedRun wallEnd(Draw& draw, bool slow, std::size_t round) {
     legs.push_back({{0.0, std::numbers::pi / (steps * 0.1)}, steps});
   };
   for (int i = 0; i < passes; ++i) {
-    const double v = slow ? draw.uniform(5.0, 15.0) : draw.uniform(25.0, 60.0);
+    const double v = slow ? draw.uniform(5.0, 15.0) : draw.uniform(10.0, 60.0);
     forward(v, end + kClear - kAxleX);
     turnAround();
     forward(v, (end + kClear) - (near - kClear));
@@ -124,7 +110,7 @@ PlannedRun wallEnd(Draw& draw, bool slow, std::size_t round) {
     forward(v, kAxleX - (near - kClear));
   }
   run.driver = std::make_unique<ScriptDriver>(std::move(legs));
-  run.kind = slow ? "slow wall-end" : "wall-end";
+  run.kind = "wall-end";
   return run;
 }
 
@@ -153,33 +139,6 @@ PlannedRun insideCorner(Draw& draw, bool left) {
   return run;
 }
 
-// Turning while the front touches, as the wall follower does when its front meets something:
-// pairs of legs turning at 0.5..1 rad/s one way, then as far the other way (so what is touched
-// stays on the front and the heading comes back), 2-6 steps each, in place (six pairs in ten) or
-// creeping forward at 0.1..0.3 `v`. One pair in five is instead a back-off (1-2 steps at 0.3 `v`,
-// turning at 0.375..0.75 rad/s, as the wall follower eases off a pressed front) and as many
-// steps forward turning back, so that the robot stays at what it touches.
-void pushAndTurn(std::vector<Leg>& legs, Draw& draw, double v, int steps) {
-  double sign = draw.coin() ? 1.0 : -1.0;
-  for (int done = 0; done < steps;) {
-    const double turn = sign * draw.uniform(0.5, 1.0);
-    const double kind = draw.uniform(0.0, 1.0);
-    if (kind < 0.2) {
-      const int n = draw.integer(1, 2);
-      legs.push_back({{-0.3 * v, 0.75 * turn}, n});
-      legs.push_back({{0.3 * v, -0.75 * turn}, n});
-      done += 2 * n;
-    } else {
-      const int n = draw.integer(2, 6);
-      const double creep = kind < 0.68 ? 0.0 : draw.uniform(0.1, 0.3) * v;
-      legs.push_back({{creep, turn}, n});
-      legs.push_back({{creep, -turn}, n});
-      done += 2 * n;
-    }
-    sign = -sign;
-  }
-}
-
 // Plays a list of approaches to obstacles placed round the start: turn in place to a heading,
 // drive (forwards or backwards) until blocked or a distance is covered, push with small turns
 // either way (stopping if that slides 25 units along the obstacle), then drive back, steering
@@ -193,10 +152,6 @@ class ApproachDriver : public Driver {
     double v = 20.0;         // units/s
     double maxTravel = 0.0;  // give the approach up after this distance without being blocked
     std::vector<Leg> push;   // played once blocked (speeds signed already)
-    // Turning (turning != 0): the drive is an arc at `arc` rad/s and ends at the first touch of
-    // the front (the wall follower reacts to a touch, not to being blocked).
-    bool turning = false;
-    double arc = 0.0;
   };
   explicit ApproachDriver(std::vector<Approach> approaches) : approaches_(std::move(approaches)) {}
   std::string name() const override { return "script"; }
@@ -223,17 +178,14 @@ class ApproachDriver : public Driver {
         }
         case Phase::Drive:
           if (phaseSteps_ > 1 &&
-              (obs.blocked || (at - from_).norm() >= a.maxTravel || phaseSteps_ > kMaxPhaseSteps ||
-               (a.turning && frontValue(obs) > kTouchingFront))) {
-            // Turning at nothing (an arc that missed) would only wander: back to the start.
-            const bool missed = a.turning && !obs.blocked && frontValue(obs) <= kTouchingFront;
-            enter(missed ? Phase::Back : Phase::Push);
+              (obs.blocked || (at - from_).norm() >= a.maxTravel || phaseSteps_ > kMaxPhaseSteps)) {
+            enter(Phase::Push);
             leg_ = 0;
             legDone_ = 0;
             from_ = at;
             continue;
           }
-          return {a.dir * a.v, a.arc};
+          return {a.dir * a.v, 0.0};
         case Phase::Push:
           // A push that slides off the tip would drive on into the open: stop it 25 units on.
           if ((at - from_).norm() > kMaxSlide) leg_ = a.push.size();
@@ -255,20 +207,15 @@ class ApproachDriver : public Driver {
           const Vec2 start(obs.start.x, obs.start.y);
           const Vec2 toStart = start - at;
           const double ahead = toStart.dot(-a.dir * along);
-          // After turning at what it touched, the heading may be further off: back more slowly, so
-          // that the steering has room to bring it to the start.
-          const double v = a.turning ? std::min(a.v, kMaxBackSpeed) : a.v;
-          const double steer = 0.5;
-          if (ahead > 0.5 * v * obs.dtSeconds && phaseSteps_ <= kMaxPhaseSteps) {
+          if (ahead > 0.5 * a.v * obs.dtSeconds && phaseSteps_ <= kMaxPhaseSteps) {
             double omega = 0.0;
             if ((at - from_).norm() > 15.0) {
               const double want =
                   std::atan2(toStart.y(), toStart.x()) + (a.dir > 0 ? std::numbers::pi : 0.0);
-              omega =
-                  std::clamp(2.0 * std::remainder(want - obs.pose.theta, 2.0 * std::numbers::pi),
-                             -steer, steer);
+              omega = std::clamp(
+                  2.0 * std::remainder(want - obs.pose.theta, 2.0 * std::numbers::pi), -0.5, 0.5);
             }
-            return {-a.dir * v, omega};
+            return {-a.dir * a.v, omega};
           }
           enter(Phase::Turn);
           ++index_;
@@ -285,14 +232,6 @@ class ApproachDriver : public Driver {
   static constexpr int kMaxStuckSteps = 20;
   static constexpr double kMaxSlide = 25.0;
   static constexpr double kTurnRate = 1.0;  // rad/s
-  static constexpr double kMaxBackSpeed = 25.0;
-  // The wall follower's threshold on the front's values: touching.
-  static constexpr double kTouchingFront = 0.2;
-  static double frontValue(const Observation& obs) {
-    return std::max({groupMaxNormal(*obs.values, SensorGroup::Front),
-                     groupMaxNormal(*obs.values, SensorGroup::FrontLeftCorner),
-                     groupMaxNormal(*obs.values, SensorGroup::FrontRightCorner)});
-  }
   void enter(Phase p) {
     phase_ = p;
     phaseSteps_ = 0;
@@ -307,7 +246,7 @@ class ApproachDriver : public Driver {
   int stuck_ = 0;
 };
 
-PlannedRun tips(Draw& draw, std::size_t round, bool turning) {
+PlannedRun tips(Draw& draw, std::size_t round) {
   // Five convex tips (squares turned 45 degrees, each turned again about its tip) round the start,
   // their tips 140-165 units from the rear axle, clear of the 126 units a turn in place sweeps.
   // Each tip sits off the ray from the start by its own lateral offset; the offsets are stratified
@@ -315,14 +254,6 @@ PlannedRun tips(Draw& draw, std::size_t round, bool turning) {
   // on the corners. The robot turns to each tip in turn (heading jittered by up to 0.1 rad), drives
   // into it front first, pushes with small turns, comes back to the start, then does the same
   // with the back.
-  // Turning (`turning`): the obstacles 160-185 units out (coming back from a turned push, the
-  // robot may turn in place up to about 30 units off the start); the second and fourth are
-  // notches instead, concave corners of
-  // 120-160 degrees open toward the start, their mouths where the tips would be. The front
-  // approaches are driven as the wall follower meets things: at 20..60, straight or on an arc
-  // (0.4..0.9 rad/s, turning by at most 0.8 rad, aimed so that it ends at the obstacle), and from
-  // the first touch the robot turns to and fro for 90-150 steps (pushAndTurn). The back approaches
-  // are as above.
   constexpr int kTips = 5;
   const double first = draw.uniform(0.0, 2.0 * std::numbers::pi);
   std::array<int, kTips> band{0, 1, 2, 3, 4};
@@ -336,25 +267,11 @@ PlannedRun tips(Draw& draw, std::size_t round, bool turning) {
   for (int k = 0; k < kTips; ++k) {
     const std::size_t ks = static_cast<std::size_t>(k);
     ray[ks] = first + 2.0 * std::numbers::pi * k / kTips;
-    reach[ks] = turning ? draw.uniform(160.0, 185.0) : draw.uniform(140.0, 165.0);
+    reach[ks] = draw.uniform(140.0, 165.0);
     const double lateral = -45.0 + 18.0 * (band[ks] + draw.uniform(0.0, 1.0));
     const double half = draw.uniform(35.0, 65.0);
     const Vec2 u(std::cos(ray[ks]), std::sin(ray[ks]));
     const Vec2 n(-u.y(), u.x());
-    if (turning && k % 2 == 1) {
-      // The notch: its mouth `mouth` units wide either side, its apex `depth` units beyond.
-      const double halfAngle = draw.uniform(60.0, 80.0) * std::numbers::pi / 180.0;
-      const double mouth = draw.uniform(70.0, 110.0);
-      const double depth = mouth / std::tan(halfAngle);
-      const Vec2 m = Vec2(kAxleX, kAxleY) + reach[ks] * u + lateral * n;
-      const Vec2 apex = m + depth * u;
-      const Vec2 back = (depth + 60.0) * u;
-      Obstacle notch{
-          {apex, m + mouth * n, m + mouth * n + back, m - mouth * n + back, m - mouth * n}};
-      obstacles.push_back(turned(notch, apex.x(), apex.y(), draw.uniform(-0.25, 0.25)));
-      reach[ks] += depth;
-      continue;
-    }
     const Vec2 tip = Vec2(kAxleX, kAxleY) + reach[ks] * u + lateral * n;
     const Vec2 c = tip + half * u;
     Obstacle d{{tip, c + half * n, c + half * u, c - half * n}};
@@ -371,25 +288,12 @@ PlannedRun tips(Draw& draw, std::size_t round, bool turning) {
       a.heading = ray[ks] + (dir > 0 ? 0.0 : std::numbers::pi) + draw.uniform(-0.1, 0.1);
       a.v = draw.uniform(10.0, 40.0);
       a.maxTravel = reach[ks] - (dir > 0 ? kFront : kBack) - kDome + 30.0;
-      if (turning && dir > 0) {
-        a.v = draw.uniform(20.0, 60.0);
-        a.turning = true;
-        pushAndTurn(a.push, draw, a.v, draw.integer(90, 150));
-        if (draw.coin()) {
-          // An arc that turns by at most 0.8 rad on the way, started off the ray by half its
-          // turn.
-          const double travel = reach[ks] - kFront - kDome;
-          a.arc = (draw.coin() ? 1.0 : -1.0) * std::min(draw.uniform(0.4, 0.9), 0.8 * a.v / travel);
-          a.heading -= 0.5 * a.arc * travel / a.v;
-        }
-      } else {
-        pushAndWiggle(a.push, draw, dir * a.v * 0.4, draw.integer(50, 100));
-      }
+      pushAndWiggle(a.push, draw, dir * a.v * 0.4, draw.integer(50, 100));
       approaches.push_back(std::move(a));
     }
   }
   run.driver = std::make_unique<ApproachDriver>(std::move(approaches));
-  run.kind = turning ? "turning tips" : "tips";
+  run.kind = "tips";
   run.options.maxSteps = 6000;
   return run;
 }
@@ -556,7 +460,7 @@ PlannedRun planTrainingRun(std::uint64_t seed, std::size_t index) {
       run = insideCorner(draw, round % 2 == 0);
       break;
     case 4:
-      return tips(draw, round, false);
+      return tips(draw, round);
     case 5:
       run = reverse(draw, std::array{1, -1, 0}[round % 3]);
       break;
@@ -567,7 +471,7 @@ PlannedRun planTrainingRun(std::uint64_t seed, std::size_t index) {
       run = wallEnd(draw, true, round);
       break;
     case 8:
-      return tips(draw, round + 2, true);
+      return tips(draw, round + 2);
     default:  // 9
       run = sideTips(draw);
       break;
