@@ -2,6 +2,7 @@
 // cancellable inside running fits, shared data extraction, JSON round trip of every field.
 #include <gtest/gtest.h>
 
+#include <array>
 #include <atomic>
 #include <cmath>
 
@@ -84,6 +85,35 @@ TEST(Training, DefaultsAreEachGroupsOwnTunedGmm) {
   for (const TrainSettings& s : same.byGroup)
     EXPECT_EQ(s.classifier.gmm.components,
               defaultTrainSettings(SensorGroup::Back).classifier.gmm.components);
+}
+
+// The table of docs/learning.md#training-defaults, group by group: features, order, floor and
+// the chain's evidence weight, as chosen on the selection corpus.
+TEST(Training, DefaultsAreTheDocumentedTable) {
+  struct Row {
+    SensorGroup group;
+    FeatureKind features;
+    int order;
+    double floor;
+    double weight;
+  };
+  const std::array<Row, 8> table{{
+      {SensorGroup::Front, FeatureKind::Context, 8, 0.01, 0.3},
+      {SensorGroup::FrontLeftCorner, FeatureKind::Context, 8, 0.01, 1.0},
+      {SensorGroup::Left, FeatureKind::Context, 8, 0.01, 0.3},
+      {SensorGroup::RearLeftCorner, FeatureKind::Context, 8, 0.01, 1.0},
+      {SensorGroup::Back, FeatureKind::NormalShear, 4, 0.01, 0.3},
+      {SensorGroup::RearRightCorner, FeatureKind::Context, 8, 0.01, 0.3},
+      {SensorGroup::Right, FeatureKind::Context, 8, 0.01, 0.3},
+      {SensorGroup::FrontRightCorner, FeatureKind::NormalShearTouch, 8, 0.01, 1.0},
+  }};
+  for (const Row& r : table) {
+    const TrainSettings s = defaultTrainSettings(r.group);
+    EXPECT_EQ(s.features, r.features) << groupInfo(r.group).shortName;
+    EXPECT_EQ(s.classifier.gmm.components, r.order) << groupInfo(r.group).shortName;
+    EXPECT_DOUBLE_EQ(s.classifier.gmm.varianceFloor, r.floor) << groupInfo(r.group).shortName;
+    EXPECT_DOUBLE_EQ(s.emissionWeight, r.weight) << groupInfo(r.group).shortName;
+  }
 }
 
 TEST(Training, SeparableDataIsClassifiedWell) {
