@@ -3,7 +3,9 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <deque>
+#include <limits>
 #include <numbers>
 
 #include "analysis/hole_detection.h"
@@ -95,6 +97,35 @@ constexpr int kMapResets = 3;
 // With the touch map, arrived by odometry and this many search spirals without the goal: the run
 // ends as unreachable.
 constexpr int kMapSearchRounds = 2;
+// Plan drive: the touch map's grid (finer than the experiment's, so a 120-wide door keeps open
+// cells with the growth that closes a 90-wide gap) and the box round start and goal it covers.
+constexpr double kDriveCellUnits = 20.0;
+constexpr double kDriveGrowUnits = 40.0;
+constexpr double kDriveMarginUnits = 1000.0;
+// Plan drive: plan steps onto cells within kDriveNearUnits of a touched cell cost kDriveNearCost
+// times their length, so the plan keeps a berth from what was touched where there is room.
+constexpr double kDriveNearUnits = 110.0;
+constexpr double kDriveNearCost = 3.0;
+// Plan drive: steer to the farthest plan point in clear sight up to this far along the plan;
+// turn in place when it lies more than kDriveTurnRadians off the heading.
+constexpr double kDriveLookAheadUnits = 150.0;
+constexpr double kDriveTurnRadians = 0.5;
+// Plan drive, at a contact ahead: back off kDriveBackUnits (kDriveBackMoreUnits more for every
+// contact within kDriveRepeatUnits of the last one, up to kDriveBackMaxUnits), then replan. A
+// front corner pressed above kDriveCornerPressed counts as a contact ahead; lighter, it and the
+// sides only ease the robot away.
+constexpr double kDriveBackUnits = 20.0;
+constexpr double kDriveBackMoreUnits = 15.0;
+constexpr double kDriveBackMaxUnits = 80.0;
+constexpr double kDriveRepeatUnits = 40.0;
+constexpr double kDriveCornerPressed = 1.0;
+// Plan drive keeps its plan while the body centre is within kDriveOffPlanUnits of it and it is
+// open, replanning at least every kDriveReplanIdleSteps; after kDriveRepeatsToRetrace contacts
+// in a row at one place (or no open cell near the robot to plan from) the robot retraces its
+// last moves, as out of a wedge.
+constexpr double kDriveOffPlanUnits = 60.0;
+constexpr std::size_t kDriveReplanIdleSteps = 50;
+constexpr int kDriveRepeatsToRetrace = 3;
 // Bug2's bumper following: the arc back toward an obstacle no longer touched.
 constexpr double kBumperArcUnits = 90.0;
 
@@ -107,6 +138,11 @@ constexpr std::array<std::string_view, kStrategyCount> kKeys{
 constexpr std::array<std::string_view, 3> kSourceNames{"model", "truth", "bumper"};
 constexpr std::array<std::string_view, 7> kKindNames{"NoContact", "Wall", "Corner",   "LeavingWall",
                                                      "DeadPath",  "Hole", "Undecided"};
+
+double envOr(const char* name, double fallback) {
+  const char* v = std::getenv(name);
+  return v ? std::atof(v) : fallback;
+}
 
 Vec2 toVec(const Vec2d& v) {
   return Vec2(v.x, v.y);
@@ -282,12 +318,19 @@ struct Navigator::Impl {
   std::size_t planStep = 0;
   bool planned = false;
   bool noWay = false;
+  bool noStart = false;  // the last plan failed to find an open cell near the robot
   // The last step Head to Destination turned in place with the map, and which way.
   std::size_t spinStep = static_cast<std::size_t>(-2);
   double spinOmega = 0.0;
   int mapResets = 0;
   double followedUnits = 0.0;  // along the wall since following started (odometry)
   bool reversing = false;      // a U turn back along the wall the plan asked for
+  // Plan drive: how far to back off, where the last contact ahead was and how many in a row were
+  // there, and the way the next turn in place must go (0: toward the plan).
+  double driveBack = kDriveBackUnits;
+  Vec2 driveHitAt = Vec2(1e300, 1e300);
+  int driveRepeats = 0;
+  double driveSpin = 0.0;
 
   const std::array<double, kValuesPerStep>* values = nullptr;
 
@@ -411,7 +454,22 @@ struct Navigator::Impl {
 
   // ---- the touch map ----------------------------------------------------------------------------
 
-  bool useMap() const { return cfg.touchMap && cfg.source != StatusSource::Bumper; }
+  bool useMap() const {
+    return (cfg.touchMap || cfg.planDrive) && cfg.source != StatusSource::Bumper;
+  }
+  bool planMode() const { return cfg.planDrive && cfg.source != StatusSource::Bumper; }
+  TouchMap freshMap() const {
+    TouchMapConfig m;
+    if (planMode()) {
+      m.cellUnits = envOr("TW_CELL", kDriveCellUnits);
+      m.growUnits = envOr("TW_GROW", kDriveGrowUnits);
+      m.marginUnits = envOr("TW_MARGIN", kDriveMarginUnits);
+      m.nearUnits = envOr("TW_NEAR", kDriveNearUnits);
+      m.nearCost = envOr("TW_NEARCOST", kDriveNearCost);
+      m.nearGradedCells = static_cast<int>(envOr("TW_GRADED", 0));
+    }
+    return TouchMap(startPoint, goal, m);
+  }
   Vec2 bodyPoint(double x) const { return sim::bodyToWorld(odo, Vec2(x, 0.0)); }
   Vec2 bodyCentre() const {
     return bodyPoint(0.5 * (cfg.geometry.frontX() + cfg.geometry.backX()));
@@ -441,15 +499,53 @@ struct Navigator::Impl {
   void updatePlan(bool force) {
     if (!useMap()) return;
     const std::size_t age = stepIndex - planStep;
-    if (!force && planned && !(touch.revision() != planRevision && age >= kReplanSteps) &&
-        age < kReplanIdleSteps)
+    if (planMode() && envOr("TW_KEEP", 0) > 0) {
+      trimPlan();
+      // Plan drive keeps its plan while the robot is on it and it is still open (new touches
+      // elsewhere do not change it), and replans at least every kDriveReplanIdleSteps.
+      if (!force && planned && age < kDriveReplanIdleSteps && plan && onPlan() && 
+          (touch.revision() == planRevision || age < kReplanSteps || planOpen()))
+        return;
+    } else if (!force && planned && !(touch.revision() != planRevision && age >= kReplanSteps) &&
+               age < kReplanIdleSteps) {
       return;
+    }
     bool snapFailed = false;
     plan = touch.plan(bodyCentre(), goal, 80.0, &snapFailed);
     planned = true;
     planRevision = touch.revision();
     planStep = stepIndex;
     noWay = !plan && !snapFailed;
+    noStart = !plan && snapFailed;
+  }
+
+  // Plan drive: drops the plan's points behind the one nearest the body centre.
+  void trimPlan() {
+    if (!plan || plan->points.size() < 2) return;
+    const Vec2 c = bodyCentre();
+    std::size_t best = 0;
+    double bestD = std::numeric_limits<double>::infinity();
+    for (std::size_t i = 0; i + 1 < plan->points.size(); ++i) {
+      const double d = (plan->points[i] - c).norm();
+      if (d < bestD) {
+        bestD = d;
+        best = i;
+      }
+    }
+    if (best > 0)
+      plan->points.erase(plan->points.begin(), plan->points.begin() + static_cast<long>(best));
+  }
+  // The body centre is near the plan's first point.
+  bool onPlan() const {
+    return plan && !plan->points.empty() &&
+           (plan->points.front() - bodyCentre()).norm() < kDriveOffPlanUnits;
+  }
+  // Every plan point beyond the first few (the robot may stand on closed cells) is still open.
+  bool planOpen() const {
+    if (!plan) return false;
+    for (std::size_t i = 4; i < plan->points.size(); ++i)
+      if (touch.closed(plan->points[i])) return false;
+    return true;
   }
 
   // Where Head to Destination heads: the plan's farthest point in sight, or the goal.
@@ -474,7 +570,7 @@ struct Navigator::Impl {
     if (!useMap() || !noWay) return false;
     if (mapResets < kMapResets) {
       ++mapResets;
-      touch = TouchMap(startPoint, goal);
+      touch = freshMap();
       updatePlan(true);
       return noWay;
     }
@@ -1091,7 +1187,7 @@ struct Navigator::Impl {
       // distance to the destination).
       goal = obs.goal;
       startPoint = Vec2(obs.start.x, obs.start.y);
-      if (useMap()) touch = TouchMap(startPoint, goal);
+      if (useMap()) touch = freshMap();
     } else {
       integrate(obs.blocked);
     }
@@ -1128,6 +1224,12 @@ struct Navigator::Impl {
     }
     Command c = choose();
     if (finished) c = {};
+    if (std::getenv("TW_DEBUG")) {
+      const Vec2 t = planMode() ? driveTarget() : goal;
+      std::fprintf(stderr, "D %zu odo %.0f %.0f %.2f tgt %.0f %.0f plan %d len %.0f cmd %.1f %.2f\n",
+                   stepIndex, odo.x, odo.y, odo.theta, t.x(), t.y(), plan ? 1 : 0,
+                   plan ? plan->lengthUnits : -1.0, c.v, c.omega);
+    }
     integrated = integratedOf();
     return last = c;
   }
@@ -1152,6 +1254,7 @@ struct Navigator::Impl {
       if (blockedStreak >= kEscapeAfter + 2 || escapeSteps > 0) return escapeMove();
       return bug2();
     }
+    if (planMode()) return planDrive();
     if (blockedStreak >= kEscapeAfter + 3 || escapeSteps > 0) return escapeMove();
     switch (strategy) {
       case Strategy::HeadToDestination:
@@ -1169,6 +1272,88 @@ struct Navigator::Impl {
         return moveThroughWall();
     }
     return {};
+  }
+
+  // ---- plan drive -------------------------------------------------------------------------------
+
+  // Follows the touch map's plan: Head to Destination while driving, Check Contact while backing
+  // off a contact ahead.
+  Command planDrive() {
+    ++phaseSteps;
+    if (strategy == Strategy::CheckContact) {
+      const bool stop = backMax() > kTouching || (blockedStreak > 0 && last.v < 0.0);
+      if (phaseUnits < driveBack && !stop && phaseSteps < 60) return {-0.5 * cruise(), 0.0};
+      setStrategy(Strategy::HeadToDestination);
+      updatePlan(true);
+    }
+    strategy = Strategy::HeadToDestination;
+    using G = SensorGroup;
+    const double flc = groupMax(*values, G::FrontLeftCorner);
+    const double frc = groupMax(*values, G::FrontRightCorner);
+    const bool ahead = groupMax(*values, G::Front) > kTouching ||
+                       std::max(flc, frc) > envOr("TW_CORNER", kDriveCornerPressed) ||
+                       (blockedStreak > 0 && last.v >= 0.0);
+    if (ahead) return driveBackOff();
+    if ((noStart || (driveRepeats >= kDriveRepeatsToRetrace && envOr("TW_RETRACE", 0) > 0)) &&
+        !moved.empty()) {
+      // Pressed at the same place again and again, or hemmed in on the map: retrace the last
+      // moves (each lands on a pose the robot has been in), then replan.
+      driveRepeats = 0;
+      noStart = false;
+      driveSpin = 0.0;
+      backtrackLeft = std::min(kBacktrackSteps, moved.size()) - 1;
+      const Command undo{-moved.back().v, -moved.back().omega};
+      moved.pop_back();
+      backtracking = true;
+      planned = false;
+      return undo;
+    }
+    const Vec2 target = driveTarget();
+    const Vec2 d = target - position();
+    const double err = sim::wrapAngle(std::atan2(d.y(), d.x()) - odo.theta);
+    const double turn = cfg.turnRadiansPerSecond;
+    if (std::abs(err) > envOr("TW_TURN", kDriveTurnRadians)) {
+      // Turning in place keeps the way it turned on the step before (the plan's target can flip
+      // between the two ways round an obstacle as the body turns); after a contact while turning,
+      // the other way.
+      double omega = err > 0.0 ? turn : -turn;
+      if (driveSpin != 0.0) omega = driveSpin;
+      else if (spinStep + 1 == stepIndex) omega = spinOmega;
+      spinStep = stepIndex;
+      spinOmega = omega;
+      return {0.0, omega};
+    }
+    driveSpin = 0.0;
+    Command c{std::abs(err) < 0.2 ? cruise() : 0.6 * cruise(), std::clamp(2.0 * err, -turn, turn)};
+    // A side or a front corner brushing something: ease away from it.
+    const double l = std::max({groupMax(*values, G::Left), groupMax(*values, G::RearLeftCorner), flc});
+    const double r = std::max({groupMax(*values, G::Right), groupMax(*values, G::RearRightCorner), frc});
+    const double ease = envOr("TW_EASE", 2.0) * cfg.slightTurnRadiansPerSecond;
+    if (l > kTouching && r <= kTouching) c.omega = std::min(c.omega, -ease);
+    if (r > kTouching && l <= kTouching) c.omega = std::max(c.omega, ease);
+    return c;
+  }
+
+  // The plan's farthest point in clear sight (or the goal when nothing touched is in the way).
+  Vec2 driveTarget() const {
+    if (!plan || plan->points.size() < 2) return goal;
+    const Vec2 p = touch.lookAhead(*plan, bodyCentre(), envOr("TW_LOOK", kDriveLookAheadUnits));
+    if ((p - plan->points.back()).norm() < 1e-9) return goal;
+    return p;
+  }
+
+  // A contact ahead: its domes are marked (updateMap); back off, the further the more often the
+  // robot meets something at the same place, then replan. A contact while turning in place makes
+  // the next turn go the other way.
+  Command driveBackOff() {
+    const Vec2 p = position();
+    driveRepeats = (p - driveHitAt).norm() < kDriveRepeatUnits ? driveRepeats + 1 : 0;
+    driveHitAt = p;
+    driveBack = std::min(kDriveBackUnits + kDriveBackMoreUnits * driveRepeats, kDriveBackMaxUnits);
+    if (last.v == 0.0 && last.omega != 0.0) driveSpin = -last.omega;
+    setStrategy(Strategy::CheckContact, Phase::Back);
+    ++phaseSteps;
+    return {-0.5 * cruise(), 0.0};
   }
 
   Command escapeMove() {

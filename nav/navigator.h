@@ -122,6 +122,11 @@ struct NavigatorConfig {
   // (the default): the navigator as the figures in docs/navigation-bench.md give it. The bumper
   // Bug2 never uses it.
   bool touchMap = false;
+  // Plan drive (docs/navigation.md#plan-drive), opt-in, implies the touch map: the robot follows
+  // the map's plan with a path-tracking controller instead of following walls; at a contact it
+  // marks the touching domes' cells, backs off just enough to turn free and replans. The bumper
+  // Bug2 never uses it.
+  bool planDrive = false;
 };
 
 // One step's input. The base holds what every driver sees (its `pose` is the simulator's and is

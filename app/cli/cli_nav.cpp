@@ -44,6 +44,7 @@ struct NavigateArgs {
   bool json = false;
   bool quiet = false;
   bool touchMap = false;
+  bool planDrive = false;
 };
 
 // "A-B", "A" or "A,B,C" (each part a number or a range); at most 100,000 seeds.
@@ -109,6 +110,7 @@ int runBenchmark(const NavigateArgs& a) {
   options.maxSteps = static_cast<std::size_t>(a.maxSteps);
   options.threads = a.threads;
   options.touchMap = a.touchMap;
+  options.planDrive = a.planDrive;
   options.models = loadModels(a);
   if (!a.outDir.empty()) {
     std::error_code ec;
@@ -191,6 +193,7 @@ int runNavigate(const NavigateArgs& a) {
   nav::NavigatorConfig config;
   config.source = *source;
   config.touchMap = a.touchMap;
+  config.planDrive = a.planDrive;
   if (*source == nav::StatusSource::Model) config.models = loadModels(a);
   Result<sim::Scene> loaded = sim::loadScene(a.scene);
   if (!loaded) throw std::runtime_error(loaded.errorText());
@@ -336,6 +339,9 @@ void registerNavigateVerb(CLI::App& app) {
   cmd->add_flag("--touch-map", args->touchMap,
                 "Model and truth sources plan on a map of where the robot touched things "
                 "(experimental; see docs/navigation.md)");
+  cmd->add_flag("--plan-drive", args->planDrive,
+                "Model and truth sources follow the touch map's plan instead of following walls "
+                "(implies --touch-map; experimental; see docs/navigation.md)");
   setAction(cmd, [args] { return runNavigate(*args); });
 }
 
