@@ -106,6 +106,10 @@ constexpr double kDriveMarginUnits = 1000.0;
 // times their length, so the plan keeps a berth from what was touched where there is room.
 constexpr double kDriveNearUnits = 110.0;
 constexpr double kDriveNearCost = 3.0;
+// Plan drive: the body clears touched cells within kDriveClearUnits of three points on its axis,
+// kDriveClearInsetUnits in from its back, its middle and kDriveClearInsetUnits in from its front.
+constexpr double kDriveClearUnits = 20.0;
+constexpr double kDriveClearInsetUnits = 40.0;
 // Plan drive: steer to the farthest plan point in clear sight up to this far along the plan;
 // turn in place when it lies more than kDriveTurnRadians off the heading.
 constexpr double kDriveLookAheadUnits = 150.0;
@@ -479,10 +483,14 @@ struct Navigator::Impl {
   // lies a dome radius out along the dome's normal); the body clears the cells it stands on.
   void updateMap(bool blocked) {
     if (!blocked) {
-      const double back = cfg.geometry.backX() + kClearUnits;
-      const double front = cfg.geometry.frontX() - kClearUnits;
+      // Plan drive clears well inside the body: a cell is up to half a cell diagonal from the
+      // touch that marked it, and a mark ahead of the front must survive the back-off.
+      const double radius = planMode() ? envOr("TW_CLEAR", kDriveClearUnits) : kClearUnits;
+      const double inset = planMode() ? envOr("TW_INSET", kDriveClearInsetUnits) : kClearUnits;
+      const double back = cfg.geometry.backX() + inset;
+      const double front = cfg.geometry.frontX() - inset;
       for (double x : {back, 0.5 * (back + front), front})
-        touch.clear(bodyPoint(x), kClearUnits);
+        touch.clear(bodyPoint(x), radius);
     }
     for (int s = 0; s < kSensorCount; ++s) {
       if (normalOf(*values, s) <= kTouching) continue;
@@ -615,7 +623,10 @@ struct Navigator::Impl {
       --escapeSteps;
       return escape;
     }
-    if (frontMax() > kTouching || blockedStreak > 0) {
+    // Plan drive: a blocked step while backing off is not met by backing on (the robot would push
+    // its back into what it touches for the rest of the run).
+    const bool blockedBack = planMode() && blockedStreak > 0 && last.v < 0.0;
+    if ((frontMax() > kTouching || blockedStreak > 0) && !blockedBack) {
       searchAngle += 0.8;
       escape = {-0.5 * cruise(), 0.0};
       escapeSteps = 4;
@@ -1254,8 +1265,8 @@ struct Navigator::Impl {
       if (blockedStreak >= kEscapeAfter + 2 || escapeSteps > 0) return escapeMove();
       return bug2();
     }
-    if (planMode()) return planDrive();
     if (blockedStreak >= kEscapeAfter + 3 || escapeSteps > 0) return escapeMove();
+    if (planMode()) return planDrive();
     switch (strategy) {
       case Strategy::HeadToDestination:
         return headToDestination();
