@@ -3,9 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <cstdlib>
 #include <deque>
-#include <limits>
 #include <numbers>
 
 #include "analysis/hole_detection.h"
@@ -97,8 +95,8 @@ constexpr int kMapResets = 3;
 // With the touch map, arrived by odometry and this many search spirals without the goal: the run
 // ends as unreachable.
 constexpr int kMapSearchRounds = 2;
-// Plan drive: the touch map's grid (finer than the experiment's, so a 120-wide door keeps open
-// cells with the growth that closes a 90-wide gap) and the box round start and goal it covers.
+// Plan drive: the touch map's cells and growth (as the experiment's: a 120-wide door keeps open
+// cells) and the box round start and goal it covers (smaller than the experiment's: quicker plans).
 constexpr double kDriveCellUnits = 20.0;
 constexpr double kDriveGrowUnits = 40.0;
 constexpr double kDriveMarginUnits = 1000.0;
@@ -123,13 +121,6 @@ constexpr double kDriveBackMoreUnits = 15.0;
 constexpr double kDriveBackMaxUnits = 80.0;
 constexpr double kDriveRepeatUnits = 40.0;
 constexpr double kDriveCornerPressed = 1.0;
-// Plan drive keeps its plan while the body centre is within kDriveOffPlanUnits of it and it is
-// open, replanning at least every kDriveReplanIdleSteps; after kDriveRepeatsToRetrace contacts
-// in a row at one place (or no open cell near the robot to plan from) the robot retraces its
-// last moves, as out of a wedge.
-constexpr double kDriveOffPlanUnits = 60.0;
-constexpr std::size_t kDriveReplanIdleSteps = 50;
-constexpr int kDriveRepeatsToRetrace = 3;
 // Bug2's bumper following: the arc back toward an obstacle no longer touched.
 constexpr double kBumperArcUnits = 90.0;
 
@@ -142,11 +133,6 @@ constexpr std::array<std::string_view, kStrategyCount> kKeys{
 constexpr std::array<std::string_view, 3> kSourceNames{"model", "truth", "bumper"};
 constexpr std::array<std::string_view, 7> kKindNames{"NoContact", "Wall", "Corner",   "LeavingWall",
                                                      "DeadPath",  "Hole", "Undecided"};
-
-double envOr(const char* name, double fallback) {
-  const char* v = std::getenv(name);
-  return v ? std::atof(v) : fallback;
-}
 
 Vec2 toVec(const Vec2d& v) {
   return Vec2(v.x, v.y);
@@ -465,12 +451,11 @@ struct Navigator::Impl {
   TouchMap freshMap() const {
     TouchMapConfig m;
     if (planMode()) {
-      m.cellUnits = envOr("TW_CELL", kDriveCellUnits);
-      m.growUnits = envOr("TW_GROW", kDriveGrowUnits);
-      m.marginUnits = envOr("TW_MARGIN", kDriveMarginUnits);
-      m.nearUnits = envOr("TW_NEAR", kDriveNearUnits);
-      m.nearCost = envOr("TW_NEARCOST", kDriveNearCost);
-      m.nearGradedCells = static_cast<int>(envOr("TW_GRADED", 0));
+      m.cellUnits = kDriveCellUnits;
+      m.growUnits = kDriveGrowUnits;
+      m.marginUnits = kDriveMarginUnits;
+      m.nearUnits = kDriveNearUnits;
+      m.nearCost = kDriveNearCost;
     }
     return TouchMap(startPoint, goal, m);
   }
@@ -485,8 +470,8 @@ struct Navigator::Impl {
     if (!blocked) {
       // Plan drive clears well inside the body: a cell is up to half a cell diagonal from the
       // touch that marked it, and a mark ahead of the front must survive the back-off.
-      const double radius = planMode() ? envOr("TW_CLEAR", kDriveClearUnits) : kClearUnits;
-      const double inset = planMode() ? envOr("TW_INSET", kDriveClearInsetUnits) : kClearUnits;
+      const double radius = planMode() ? kDriveClearUnits : kClearUnits;
+      const double inset = planMode() ? kDriveClearInsetUnits : kClearUnits;
       const double back = cfg.geometry.backX() + inset;
       const double front = cfg.geometry.frontX() - inset;
       for (double x : {back, 0.5 * (back + front), front})
@@ -507,17 +492,9 @@ struct Navigator::Impl {
   void updatePlan(bool force) {
     if (!useMap()) return;
     const std::size_t age = stepIndex - planStep;
-    if (planMode() && envOr("TW_KEEP", 0) > 0) {
-      trimPlan();
-      // Plan drive keeps its plan while the robot is on it and it is still open (new touches
-      // elsewhere do not change it), and replans at least every kDriveReplanIdleSteps.
-      if (!force && planned && age < kDriveReplanIdleSteps && plan && onPlan() && 
-          (touch.revision() == planRevision || age < kReplanSteps || planOpen()))
-        return;
-    } else if (!force && planned && !(touch.revision() != planRevision && age >= kReplanSteps) &&
-               age < kReplanIdleSteps) {
+    if (!force && planned && !(touch.revision() != planRevision && age >= kReplanSteps) &&
+        age < kReplanIdleSteps)
       return;
-    }
     bool snapFailed = false;
     plan = touch.plan(bodyCentre(), goal, 80.0, &snapFailed);
     planned = true;
@@ -525,35 +502,6 @@ struct Navigator::Impl {
     planStep = stepIndex;
     noWay = !plan && !snapFailed;
     noStart = !plan && snapFailed;
-  }
-
-  // Plan drive: drops the plan's points behind the one nearest the body centre.
-  void trimPlan() {
-    if (!plan || plan->points.size() < 2) return;
-    const Vec2 c = bodyCentre();
-    std::size_t best = 0;
-    double bestD = std::numeric_limits<double>::infinity();
-    for (std::size_t i = 0; i + 1 < plan->points.size(); ++i) {
-      const double d = (plan->points[i] - c).norm();
-      if (d < bestD) {
-        bestD = d;
-        best = i;
-      }
-    }
-    if (best > 0)
-      plan->points.erase(plan->points.begin(), plan->points.begin() + static_cast<long>(best));
-  }
-  // The body centre is near the plan's first point.
-  bool onPlan() const {
-    return plan && !plan->points.empty() &&
-           (plan->points.front() - bodyCentre()).norm() < kDriveOffPlanUnits;
-  }
-  // Every plan point beyond the first few (the robot may stand on closed cells) is still open.
-  bool planOpen() const {
-    if (!plan) return false;
-    for (std::size_t i = 4; i < plan->points.size(); ++i)
-      if (touch.closed(plan->points[i])) return false;
-    return true;
   }
 
   // Where Head to Destination heads: the plan's farthest point in sight, or the goal.
@@ -1235,12 +1183,6 @@ struct Navigator::Impl {
     }
     Command c = choose();
     if (finished) c = {};
-    if (std::getenv("TW_DEBUG")) {
-      const Vec2 t = planMode() ? driveTarget() : goal;
-      std::fprintf(stderr, "D %zu odo %.0f %.0f %.2f tgt %.0f %.0f plan %d len %.0f cmd %.1f %.2f\n",
-                   stepIndex, odo.x, odo.y, odo.theta, t.x(), t.y(), plan ? 1 : 0,
-                   plan ? plan->lengthUnits : -1.0, c.v, c.omega);
-    }
     integrated = integratedOf();
     return last = c;
   }
@@ -1302,13 +1244,12 @@ struct Navigator::Impl {
     const double flc = groupMax(*values, G::FrontLeftCorner);
     const double frc = groupMax(*values, G::FrontRightCorner);
     const bool ahead = groupMax(*values, G::Front) > kTouching ||
-                       std::max(flc, frc) > envOr("TW_CORNER", kDriveCornerPressed) ||
+                       std::max(flc, frc) > kDriveCornerPressed ||
                        (blockedStreak > 0 && last.v >= 0.0);
     if (ahead) return driveBackOff();
-    if ((noStart || (driveRepeats >= kDriveRepeatsToRetrace && envOr("TW_RETRACE", 0) > 0)) &&
-        !moved.empty()) {
-      // Pressed at the same place again and again, or hemmed in on the map: retrace the last
-      // moves (each lands on a pose the robot has been in), then replan.
+    if (noStart && !moved.empty()) {
+      // Hemmed in on the map (no open cell near the robot to plan from): retrace the last moves
+      // (each lands on a pose the robot has been in), then replan.
       driveRepeats = 0;
       noStart = false;
       driveSpin = 0.0;
@@ -1323,13 +1264,15 @@ struct Navigator::Impl {
     const Vec2 d = target - position();
     const double err = sim::wrapAngle(std::atan2(d.y(), d.x()) - odo.theta);
     const double turn = cfg.turnRadiansPerSecond;
-    if (std::abs(err) > envOr("TW_TURN", kDriveTurnRadians)) {
+    if (std::abs(err) > kDriveTurnRadians) {
       // Turning in place keeps the way it turned on the step before (the plan's target can flip
       // between the two ways round an obstacle as the body turns); after a contact while turning,
       // the other way.
       double omega = err > 0.0 ? turn : -turn;
-      if (driveSpin != 0.0) omega = driveSpin;
-      else if (spinStep + 1 == stepIndex) omega = spinOmega;
+      if (driveSpin != 0.0)
+        omega = driveSpin;
+      else if (spinStep + 1 == stepIndex)
+        omega = spinOmega;
       spinStep = stepIndex;
       spinOmega = omega;
       return {0.0, omega};
@@ -1337,9 +1280,11 @@ struct Navigator::Impl {
     driveSpin = 0.0;
     Command c{std::abs(err) < 0.2 ? cruise() : 0.6 * cruise(), std::clamp(2.0 * err, -turn, turn)};
     // A side or a front corner brushing something: ease away from it.
-    const double l = std::max({groupMax(*values, G::Left), groupMax(*values, G::RearLeftCorner), flc});
-    const double r = std::max({groupMax(*values, G::Right), groupMax(*values, G::RearRightCorner), frc});
-    const double ease = envOr("TW_EASE", 2.0) * cfg.slightTurnRadiansPerSecond;
+    const double l =
+        std::max({groupMax(*values, G::Left), groupMax(*values, G::RearLeftCorner), flc});
+    const double r =
+        std::max({groupMax(*values, G::Right), groupMax(*values, G::RearRightCorner), frc});
+    const double ease = 2.0 * cfg.slightTurnRadiansPerSecond;
     if (l > kTouching && r <= kTouching) c.omega = std::min(c.omega, -ease);
     if (r > kTouching && l <= kTouching) c.omega = std::max(c.omega, ease);
     return c;
@@ -1348,7 +1293,7 @@ struct Navigator::Impl {
   // The plan's farthest point in clear sight (or the goal when nothing touched is in the way).
   Vec2 driveTarget() const {
     if (!plan || plan->points.size() < 2) return goal;
-    const Vec2 p = touch.lookAhead(*plan, bodyCentre(), envOr("TW_LOOK", kDriveLookAheadUnits));
+    const Vec2 p = touch.lookAhead(*plan, bodyCentre(), kDriveLookAheadUnits);
     if ((p - plan->points.back()).norm() < 1e-9) return goal;
     return p;
   }

@@ -81,14 +81,6 @@ void TouchMap::grow(int col, int row, int delta) {
   }
 }
 
-double TouchMap::stepFactor(int n) const {
-  if (nearBy_[static_cast<std::size_t>(n)] == 0) return 1.0;
-  if (cfg_.nearGradedCells <= 0) return cfg_.nearCost;
-  const double share =
-      std::min(1.0, static_cast<double>(nearBy_[static_cast<std::size_t>(n)]) / cfg_.nearGradedCells);
-  return 1.0 + (cfg_.nearCost - 1.0) * share;
-}
-
 bool TouchMap::near(const sim::Vec2& point) const {
   int c = 0;
   int r = 0;
@@ -234,7 +226,7 @@ std::optional<TouchPlan> TouchMap::plan(const sim::Vec2& from, const sim::Vec2& 
         if (dc != 0 && dr != 0 && (!openCell(c + dc, r) || !openCell(c, r + dr))) continue;
         const int n = index(nc, nr);
         const double g = cost_[cell] + (dc != 0 && dr != 0 ? kSqrt2 : 1.0) * cfg_.cellUnits *
-                                           stepFactor(n);
+                                           (nearBy_[n] != 0 ? cfg_.nearCost : 1.0);
         if (seen_[n] != open || g + 1e-9 < cost_[n]) {
           seen_[n] = open;
           cost_[n] = g;

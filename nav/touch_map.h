@@ -27,9 +27,6 @@ struct TouchMapConfig {
   // succeeds on fewer of the generated maps (docs/navigation-bench.md#touch-map-experiment).
   double nearUnits = 70.0;
   double nearCost = 1.0;
-  // Graded: when above 0, the extra cost grows with the number of touched cells within nearUnits
-  // (the nearer a wall, the more of it lies within that radius), reaching nearCost at this many.
-  int nearGradedCells = 0;
   // The grid covers the box round start and goal widened by this much on every side; beyond it
   // the planner does not go.
   double marginUnits = 2000.0;
@@ -86,7 +83,6 @@ class TouchMap {
   bool openCell(int col, int row) const;
   void grow(int col, int row, int delta);
   std::optional<int> snap(const sim::Vec2& p, double snapUnits) const;
-  double stepFactor(int n) const;
 
   TouchMapConfig cfg_;
   double x0_ = 0.0;
