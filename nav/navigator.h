@@ -122,11 +122,12 @@ struct NavigatorConfig {
   // (the default): the navigator as the figures in docs/navigation-bench.md give it. The bumper
   // Bug2 never uses it.
   bool touchMap = false;
-  // Plan drive (docs/navigation.md#plan-drive), opt-in, implies the touch map: the robot follows
-  // the map's plan with a path-tracking controller instead of following walls; at a contact it
-  // marks the touching domes' cells, backs off just enough to turn free and replans. The bumper
-  // Bug2 never uses it.
-  bool planDrive = false;
+  // Plan drive (docs/navigation.md#plan-drive), the default; implies the touch map: the robot
+  // follows the map's plan with a path-tracking controller instead of following walls; at a
+  // contact ahead it marks the touching domes' cells, backs off just enough to turn free and
+  // replans. false: the thesis strategies (wall following, with or without `touchMap`). The
+  // bumper Bug2 never uses it.
+  bool planDrive = true;
 };
 
 // One step's input. The base holds what every driver sees (its `pose` is the simulator's and is
