@@ -1,6 +1,8 @@
 // The chapter-5 navigator (docs/navigation.md, thesis ch. 5): a state machine over the strategies
 // Go Straight, Head to Destination, Check Contact, Follow Wall, Move Through Wall and the two U
-// turns, driven by the contact status of every sensor group and the holes found along the walls.
+// turns, driven by the contact status of every sensor group and the holes found along the walls;
+// or (plan drive, the default: NavigatorConfig::planDrive) by a plan on a map of where the robot
+// touched things, backing off and replanning at each contact ahead.
 //
 // Stepped one simulator step at a time: step(observation) -> (v, omega). What it may know is what
 // the thesis's robot knew: its own commands integrated over time (odometry, with blocked steps
