@@ -117,6 +117,7 @@ Result<BenchmarkResult> runMapBenchmark(const BenchmarkOptions& options,
       config.source = sources[j % sources.size()];
       config.models = options.models;
       config.touchMap = options.touchMap;
+      config.planDrive = options.planDrive;
       NavigateOptions no;
       no.maxSteps = mapStepBudget(mc.astarUnits, config.cruiseUnitsPerSecond * no.sim.dtSeconds,
                                   options.maxSteps);

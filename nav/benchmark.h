@@ -51,6 +51,7 @@ struct BenchmarkOptions {
   unsigned threads = 0;         // 0 = all cores
   std::shared_ptr<const analysis::ModelBundle> models;  // null: the model source is skipped
   bool touchMap = false;  // NavigatorConfig::touchMap for the model and truth sources
+  bool planDrive = true;  // NavigatorConfig::planDrive for the model and truth sources
   // When set, every run is written here as benchmark_SOURCE_MAPSEED.csv (with the navigator's
   // x_ columns; `tactile navigate --scene random:office:MAPSEED` rebuilds its scene).
   std::string outDir;

@@ -95,6 +95,32 @@ constexpr int kMapResets = 3;
 // With the touch map, arrived by odometry and this many search spirals without the goal: the run
 // ends as unreachable.
 constexpr int kMapSearchRounds = 2;
+// Plan drive: the touch map's cells and growth (as the experiment's: a 120-wide door keeps open
+// cells) and the box round start and goal it covers (smaller than the experiment's: quicker plans).
+constexpr double kDriveCellUnits = 20.0;
+constexpr double kDriveGrowUnits = 40.0;
+constexpr double kDriveMarginUnits = 1000.0;
+// Plan drive: plan steps onto cells within kDriveNearUnits of a touched cell cost kDriveNearCost
+// times their length, so the plan keeps a berth from what was touched where there is room.
+constexpr double kDriveNearUnits = 110.0;
+constexpr double kDriveNearCost = 3.0;
+// Plan drive: the body clears touched cells within kDriveClearUnits of three points on its axis,
+// kDriveClearInsetUnits in from its back, its middle and kDriveClearInsetUnits in from its front.
+constexpr double kDriveClearUnits = 20.0;
+constexpr double kDriveClearInsetUnits = 40.0;
+// Plan drive: steer to the farthest plan point in clear sight up to this far along the plan;
+// turn in place when it lies more than kDriveTurnRadians off the heading.
+constexpr double kDriveLookAheadUnits = 150.0;
+constexpr double kDriveTurnRadians = 0.5;
+// Plan drive, at a contact ahead: back off kDriveBackUnits (kDriveBackMoreUnits more for every
+// contact within kDriveRepeatUnits of the last one, up to kDriveBackMaxUnits), then replan. A
+// front corner pressed above kDriveCornerPressed counts as a contact ahead; lighter, it and the
+// sides only ease the robot away.
+constexpr double kDriveBackUnits = 20.0;
+constexpr double kDriveBackMoreUnits = 15.0;
+constexpr double kDriveBackMaxUnits = 80.0;
+constexpr double kDriveRepeatUnits = 40.0;
+constexpr double kDriveCornerPressed = 1.0;
 // Bug2's bumper following: the arc back toward an obstacle no longer touched.
 constexpr double kBumperArcUnits = 90.0;
 
@@ -282,12 +308,19 @@ struct Navigator::Impl {
   std::size_t planStep = 0;
   bool planned = false;
   bool noWay = false;
+  bool noStart = false;  // the last plan failed to find an open cell near the robot
   // The last step Head to Destination turned in place with the map, and which way.
   std::size_t spinStep = static_cast<std::size_t>(-2);
   double spinOmega = 0.0;
   int mapResets = 0;
   double followedUnits = 0.0;  // along the wall since following started (odometry)
   bool reversing = false;      // a U turn back along the wall the plan asked for
+  // Plan drive: how far to back off, where the last contact ahead was and how many in a row were
+  // there, and the way the next turn in place must go (0: toward the plan).
+  double driveBack = kDriveBackUnits;
+  Vec2 driveHitAt = Vec2(1e300, 1e300);
+  int driveRepeats = 0;
+  double driveSpin = 0.0;
 
   const std::array<double, kValuesPerStep>* values = nullptr;
 
@@ -411,7 +444,21 @@ struct Navigator::Impl {
 
   // ---- the touch map ----------------------------------------------------------------------------
 
-  bool useMap() const { return cfg.touchMap && cfg.source != StatusSource::Bumper; }
+  bool useMap() const {
+    return (cfg.touchMap || cfg.planDrive) && cfg.source != StatusSource::Bumper;
+  }
+  bool planMode() const { return cfg.planDrive && cfg.source != StatusSource::Bumper; }
+  TouchMap freshMap() const {
+    TouchMapConfig m;
+    if (planMode()) {
+      m.cellUnits = kDriveCellUnits;
+      m.growUnits = kDriveGrowUnits;
+      m.marginUnits = kDriveMarginUnits;
+      m.nearUnits = kDriveNearUnits;
+      m.nearCost = kDriveNearCost;
+    }
+    return TouchMap(startPoint, goal, m);
+  }
   Vec2 bodyPoint(double x) const { return sim::bodyToWorld(odo, Vec2(x, 0.0)); }
   Vec2 bodyCentre() const {
     return bodyPoint(0.5 * (cfg.geometry.frontX() + cfg.geometry.backX()));
@@ -421,10 +468,14 @@ struct Navigator::Impl {
   // lies a dome radius out along the dome's normal); the body clears the cells it stands on.
   void updateMap(bool blocked) {
     if (!blocked) {
-      const double back = cfg.geometry.backX() + kClearUnits;
-      const double front = cfg.geometry.frontX() - kClearUnits;
+      // Plan drive clears well inside the body: a cell is up to half a cell diagonal from the
+      // touch that marked it, and a mark ahead of the front must survive the back-off.
+      const double radius = planMode() ? kDriveClearUnits : kClearUnits;
+      const double inset = planMode() ? kDriveClearInsetUnits : kClearUnits;
+      const double back = cfg.geometry.backX() + inset;
+      const double front = cfg.geometry.frontX() - inset;
       for (double x : {back, 0.5 * (back + front), front})
-        touch.clear(bodyPoint(x), kClearUnits);
+        touch.clear(bodyPoint(x), radius);
     }
     for (int s = 0; s < kSensorCount; ++s) {
       if (normalOf(*values, s) <= kTouching) continue;
@@ -450,6 +501,7 @@ struct Navigator::Impl {
     planRevision = touch.revision();
     planStep = stepIndex;
     noWay = !plan && !snapFailed;
+    noStart = !plan && snapFailed;
   }
 
   // Where Head to Destination heads: the plan's farthest point in sight, or the goal.
@@ -474,7 +526,7 @@ struct Navigator::Impl {
     if (!useMap() || !noWay) return false;
     if (mapResets < kMapResets) {
       ++mapResets;
-      touch = TouchMap(startPoint, goal);
+      touch = freshMap();
       updatePlan(true);
       return noWay;
     }
@@ -519,7 +571,10 @@ struct Navigator::Impl {
       --escapeSteps;
       return escape;
     }
-    if (frontMax() > kTouching || blockedStreak > 0) {
+    // Plan drive: a blocked step while backing off is not met by backing on (the robot would push
+    // its back into what it touches for the rest of the run).
+    const bool blockedBack = planMode() && blockedStreak > 0 && last.v < 0.0;
+    if ((frontMax() > kTouching || blockedStreak > 0) && !blockedBack) {
       searchAngle += 0.8;
       escape = {-0.5 * cruise(), 0.0};
       escapeSteps = 4;
@@ -1091,7 +1146,7 @@ struct Navigator::Impl {
       // distance to the destination).
       goal = obs.goal;
       startPoint = Vec2(obs.start.x, obs.start.y);
-      if (useMap()) touch = TouchMap(startPoint, goal);
+      if (useMap()) touch = freshMap();
     } else {
       integrate(obs.blocked);
     }
@@ -1153,6 +1208,7 @@ struct Navigator::Impl {
       return bug2();
     }
     if (blockedStreak >= kEscapeAfter + 3 || escapeSteps > 0) return escapeMove();
+    if (planMode()) return planDrive();
     switch (strategy) {
       case Strategy::HeadToDestination:
         return headToDestination();
@@ -1169,6 +1225,91 @@ struct Navigator::Impl {
         return moveThroughWall();
     }
     return {};
+  }
+
+  // ---- plan drive -------------------------------------------------------------------------------
+
+  // Follows the touch map's plan: Head to Destination while driving, Check Contact while backing
+  // off a contact ahead.
+  Command planDrive() {
+    ++phaseSteps;
+    if (strategy == Strategy::CheckContact) {
+      const bool stop = backMax() > kTouching || (blockedStreak > 0 && last.v < 0.0);
+      if (phaseUnits < driveBack && !stop && phaseSteps < 60) return {-0.5 * cruise(), 0.0};
+      setStrategy(Strategy::HeadToDestination);
+      updatePlan(true);
+    }
+    strategy = Strategy::HeadToDestination;
+    using G = SensorGroup;
+    const double flc = groupMax(*values, G::FrontLeftCorner);
+    const double frc = groupMax(*values, G::FrontRightCorner);
+    const bool ahead = groupMax(*values, G::Front) > kTouching ||
+                       std::max(flc, frc) > kDriveCornerPressed ||
+                       (blockedStreak > 0 && last.v >= 0.0);
+    if (ahead) return driveBackOff();
+    if (noStart && !moved.empty()) {
+      // Hemmed in on the map (no open cell near the robot to plan from): retrace the last moves
+      // (each lands on a pose the robot has been in), then replan.
+      driveRepeats = 0;
+      noStart = false;
+      driveSpin = 0.0;
+      backtrackLeft = std::min(kBacktrackSteps, moved.size()) - 1;
+      const Command undo{-moved.back().v, -moved.back().omega};
+      moved.pop_back();
+      backtracking = true;
+      planned = false;
+      return undo;
+    }
+    const Vec2 target = driveTarget();
+    const Vec2 d = target - position();
+    const double err = sim::wrapAngle(std::atan2(d.y(), d.x()) - odo.theta);
+    const double turn = cfg.turnRadiansPerSecond;
+    if (std::abs(err) > kDriveTurnRadians) {
+      // Turning in place keeps the way it turned on the step before (the plan's target can flip
+      // between the two ways round an obstacle as the body turns); after a contact while turning,
+      // the other way.
+      double omega = err > 0.0 ? turn : -turn;
+      if (driveSpin != 0.0)
+        omega = driveSpin;
+      else if (spinStep + 1 == stepIndex)
+        omega = spinOmega;
+      spinStep = stepIndex;
+      spinOmega = omega;
+      return {0.0, omega};
+    }
+    driveSpin = 0.0;
+    Command c{std::abs(err) < 0.2 ? cruise() : 0.6 * cruise(), std::clamp(2.0 * err, -turn, turn)};
+    // A side or a front corner brushing something: ease away from it.
+    const double l =
+        std::max({groupMax(*values, G::Left), groupMax(*values, G::RearLeftCorner), flc});
+    const double r =
+        std::max({groupMax(*values, G::Right), groupMax(*values, G::RearRightCorner), frc});
+    const double ease = 2.0 * cfg.slightTurnRadiansPerSecond;
+    if (l > kTouching && r <= kTouching) c.omega = std::min(c.omega, -ease);
+    if (r > kTouching && l <= kTouching) c.omega = std::max(c.omega, ease);
+    return c;
+  }
+
+  // The plan's farthest point in clear sight (or the goal when nothing touched is in the way).
+  Vec2 driveTarget() const {
+    if (!plan || plan->points.size() < 2) return goal;
+    const Vec2 p = touch.lookAhead(*plan, bodyCentre(), kDriveLookAheadUnits);
+    if ((p - plan->points.back()).norm() < 1e-9) return goal;
+    return p;
+  }
+
+  // A contact ahead: its domes are marked (updateMap); back off, the further the more often the
+  // robot meets something at the same place, then replan. A contact while turning in place makes
+  // the next turn go the other way.
+  Command driveBackOff() {
+    const Vec2 p = position();
+    driveRepeats = (p - driveHitAt).norm() < kDriveRepeatUnits ? driveRepeats + 1 : 0;
+    driveHitAt = p;
+    driveBack = std::min(kDriveBackUnits + kDriveBackMoreUnits * driveRepeats, kDriveBackMaxUnits);
+    if (last.v == 0.0 && last.omega != 0.0) driveSpin = -last.omega;
+    setStrategy(Strategy::CheckContact, Phase::Back);
+    ++phaseSteps;
+    return {-0.5 * cruise(), 0.0};
   }
 
   Command escapeMove() {

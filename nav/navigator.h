@@ -1,6 +1,8 @@
 // The chapter-5 navigator (docs/navigation.md, thesis ch. 5): a state machine over the strategies
 // Go Straight, Head to Destination, Check Contact, Follow Wall, Move Through Wall and the two U
-// turns, driven by the contact status of every sensor group and the holes found along the walls.
+// turns, driven by the contact status of every sensor group and the holes found along the walls;
+// or (plan drive, the default: NavigatorConfig::planDrive) by a plan on a map of where the robot
+// touched things, backing off and replanning at each contact ahead.
 //
 // Stepped one simulator step at a time: step(observation) -> (v, omega). What it may know is what
 // the thesis's robot knew: its own commands integrated over time (odometry, with blocked steps
@@ -122,6 +124,12 @@ struct NavigatorConfig {
   // (the default): the navigator as the figures in docs/navigation-bench.md give it. The bumper
   // Bug2 never uses it.
   bool touchMap = false;
+  // Plan drive (docs/navigation.md#plan-drive), the default; implies the touch map: the robot
+  // follows the map's plan with a path-tracking controller instead of following walls; at a
+  // contact ahead it marks the touching domes' cells, backs off just enough to turn free and
+  // replans. false: the thesis strategies (wall following, with or without `touchMap`). The
+  // bumper Bug2 never uses it.
+  bool planDrive = true;
 };
 
 // One step's input. The base holds what every driver sees (its `pose` is the simulator's and is

@@ -44,6 +44,7 @@ struct NavigateArgs {
   bool json = false;
   bool quiet = false;
   bool touchMap = false;
+  bool wallFollow = false;
 };
 
 // "A-B", "A" or "A,B,C" (each part a number or a range); at most 100,000 seeds.
@@ -109,6 +110,7 @@ int runBenchmark(const NavigateArgs& a) {
   options.maxSteps = static_cast<std::size_t>(a.maxSteps);
   options.threads = a.threads;
   options.touchMap = a.touchMap;
+  options.planDrive = !a.wallFollow;
   options.models = loadModels(a);
   if (!a.outDir.empty()) {
     std::error_code ec;
@@ -191,6 +193,7 @@ int runNavigate(const NavigateArgs& a) {
   nav::NavigatorConfig config;
   config.source = *source;
   config.touchMap = a.touchMap;
+  config.planDrive = !a.wallFollow;
   if (*source == nav::StatusSource::Model) config.models = loadModels(a);
   Result<sim::Scene> loaded = sim::loadScene(a.scene);
   if (!loaded) throw std::runtime_error(loaded.errorText());
@@ -334,8 +337,11 @@ void registerNavigateVerb(CLI::App& app) {
   cmd->add_flag("--json", args->json, "Print one JSON object on stdout");
   cmd->add_flag("--quiet", args->quiet, "No progress on stderr");
   cmd->add_flag("--touch-map", args->touchMap,
-                "Model and truth sources plan on a map of where the robot touched things "
-                "(experimental; see docs/navigation.md)");
+                "With --wall-follow: the thesis strategies also plan on a map of where the robot "
+                "touched things (experimental; plan drive always does; see docs/navigation.md)");
+  cmd->add_flag("--wall-follow", args->wallFollow,
+                "Model and truth sources use the thesis strategies (wall following) instead of "
+                "following the touch map's plan (see docs/navigation.md)");
   setAction(cmd, [args] { return runNavigate(*args); });
 }
 

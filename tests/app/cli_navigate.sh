@@ -28,6 +28,22 @@ head -c 2000 "$W/a/navigate_truth_0001.csv" | grep -q "x_strategy" || fail "no x
 cols=$(sqlite3 "$W/n.db" "SELECT count(*) FROM runs")
 [ "$cols" = 3 ] || fail "imported $cols of 3 runs"
 
+# The default navigator follows the touch map's plan (Head to Destination, Check Contact at a
+# contact); --wall-follow runs the thesis strategies, which follow the wall across the scene.
+"$T" navigate --scene chapter5 --status truth --seeds 1 --max-steps 3000 --out-dir "$W/pd" \
+  --quiet >/dev/null || fail "plan drive failed"
+"$T" navigate --scene chapter5 --status truth --seeds 1 --max-steps 3000 --out-dir "$W/wf" \
+  --wall-follow --quiet >/dev/null || fail "--wall-follow failed"
+python3 - "$W/pd/navigate_truth_0001.csv" "$W/wf/navigate_truth_0001.csv" <<'PY' || fail "modes"
+import csv, sys
+def strategies(path):
+    rows = csv.DictReader(line for line in open(path) if not line.startswith("#"))
+    return {r["x_strategy"] for r in rows}
+plan, wall = strategies(sys.argv[1]), strategies(sys.argv[2])
+assert plan <= {"HeadToDestination", "CheckContact"}, plan
+assert "FollowWall" in wall, wall
+PY
+
 # The benchmark's JSON: one record a map per source, adding up to the summary; --out-dir writes
 # every run (a small model trained on two short runs is enough for the model source to drive).
 "$T" simulate --scene room1 --driver wall-follow --steps 800 --runs 2 --out-dir "$W/train" \

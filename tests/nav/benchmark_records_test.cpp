@@ -40,6 +40,7 @@ TEST(NavigateRecords, StrategyStepsMatchTheRecordedColumn) {
   auto world = wallScene();
   NavigatorConfig config;
   config.source = StatusSource::Truth;
+  config.planDrive = false;  // the thesis strategies
   NavigateOptions options;
   options.maxSteps = 4000;
   auto r = navigate(world, "records", world->scene().start, world->scene().goal, config, options);
@@ -95,6 +96,7 @@ TEST(NavigateRecords, ARunThatNeverMeetsAnythingHasNoCheckContact) {
   auto world = std::make_shared<const sim::World>(std::move(s));
   NavigatorConfig config;
   config.source = StatusSource::Truth;
+  config.planDrive = false;  // the thesis strategies
   NavigateOptions options;
   options.maxSteps = 2000;
   auto r =

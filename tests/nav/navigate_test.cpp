@@ -43,6 +43,7 @@ NavigateResult run(const std::shared_ptr<const sim::World>& world, StatusSource 
                    Pose2d start, std::size_t maxSteps = 8000) {
   NavigatorConfig config;
   config.source = source;
+  config.planDrive = false;  // the thesis strategies
   NavigateOptions options;
   options.maxSteps = maxSteps;
   auto r = navigate(world, "test", start, world->scene().goal, config, options);

@@ -37,14 +37,16 @@ inline Truth truthOf(const Values& values, ContactClass touching = ContactClass:
   return t;
 }
 
-// Feeds scripted readings to a truth-status navigator (with or without the touch map), one step
-// at a time, from the origin toward `goal`.
+// Feeds scripted readings to a truth-status navigator (with or without the touch map, or in plan
+// drive), one step at a time, from the origin toward `goal`.
 class Script {
  public:
-  explicit Script(bool touchMap = false, Vec2 goal = Vec2(2000.0, 0.0)) : goal_(goal) {
+  explicit Script(bool touchMap = false, Vec2 goal = Vec2(2000.0, 0.0), bool planDrive = false)
+      : goal_(goal) {
     NavigatorConfig config;
     config.source = StatusSource::Truth;
     config.touchMap = touchMap;
+    config.planDrive = planDrive;
     auto made = Navigator::create(config);
     EXPECT_TRUE(made.ok());
     nav_ = std::move(made.value());

@@ -206,6 +206,7 @@ TEST(TouchMapNavigator, TouchingDomesOfAContactGroupMarkTheirCells) {
   // The bumper Bug2 and a navigator with the map off keep no map.
   NavigatorConfig off;
   off.source = StatusSource::Truth;
+  off.planDrive = false;
   EXPECT_TRUE(Navigator::create(off).value()->touchMap().empty());
 }
 
@@ -265,6 +266,7 @@ std::unique_ptr<Navigator> truthNavigator(bool touchMap) {
   NavigatorConfig config;
   config.source = StatusSource::Truth;
   config.touchMap = touchMap;
+  config.planDrive = false;
   return std::move(Navigator::create(config).value());
 }
 
@@ -360,6 +362,7 @@ NavigateResult runWithMap(const std::shared_ptr<const sim::World>& world, Pose2d
   NavigatorConfig config;
   config.source = StatusSource::Truth;
   config.touchMap = true;
+  config.planDrive = false;  // the touch map under the thesis strategies
   NavigateOptions options;
   options.maxSteps = maxSteps;
   auto r = navigate(world, "test", start, world->scene().goal, config, options);
