@@ -120,6 +120,9 @@ constexpr double kDriveBackUnits = 20.0;
 constexpr double kDriveBackMoreUnits = 15.0;
 constexpr double kDriveBackMaxUnits = 80.0;
 constexpr double kDriveRepeatUnits = 40.0;
+// Plan drive: a contact ahead with the goal within kGoalBehindUnits of the body centre and on a
+// closed cell of the map starts the search round the goal.
+constexpr double kGoalBehindUnits = 150.0;
 constexpr double kDriveCornerPressed = 1.0;
 // Bug2's bumper following: the arc back toward an obstacle no longer touched.
 constexpr double kBumperArcUnits = 90.0;
@@ -1246,6 +1249,13 @@ struct Navigator::Impl {
     const bool ahead = groupMax(*values, G::Front) > kTouching ||
                        std::max(flc, frc) > kDriveCornerPressed ||
                        (blockedStreak > 0 && last.v >= 0.0);
+    if (ahead && goalBehindContact()) {
+      // As near as the odometry lets it come: search round the goal from here.
+      arrived = true;
+      searchAngle = 0.0;
+      escapeSteps = 0;
+      return searchGoal();
+    }
     if (ahead) return driveBackOff();
     if (noStart && !moved.empty()) {
       // Hemmed in on the map (no open cell near the robot to plan from): retrace the last moves
@@ -1288,6 +1298,14 @@ struct Navigator::Impl {
     if (l > kTouching && r <= kTouching) c.omega = std::min(c.omega, -ease);
     if (r > kTouching && l <= kTouching) c.omega = std::max(c.omega, ease);
     return c;
+  }
+
+  // A contact ahead with the goal (where the odometry puts it) close by and on cells closed by
+  // what was touched: the goal lies at or behind the touched surface, where the robot cannot
+  // stand; its odometry has drifted (or the goal is walled in).
+  bool goalBehindContact() const {
+    if ((goal - bodyCentre()).norm() > kGoalBehindUnits) return false;
+    return touch.closed(goal);
   }
 
   // The plan's farthest point in clear sight (or the goal when nothing touched is in the way).

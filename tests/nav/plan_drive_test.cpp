@@ -188,6 +188,32 @@ TEST(PlanDriveNavigate, GapOf90IsGoneRound) {
   }
 }
 
+// A contact ahead with the goal close by on cells the contact closed (the goal where the odometry
+// puts it lies at or behind what was touched): the robot searches round the goal from there
+// instead of backing off and driving into the same contact again. A goal close by but clear of
+// the marks, or a closed goal far away, does not start the search.
+TEST(PlanDrive, ContactWithTheGoalBehindItStartsTheSearch) {
+  struct Case {
+    Vec2 goal;
+    bool search;
+  };
+  for (const Case& k : {Case{Vec2(150.0, 0.0), true}, Case{Vec2(150.0, 10.0), true},
+                        Case{Vec2(130.0, 110.0), false}, Case{Vec2(400.0, 0.0), false}}) {
+    Script s(false, k.goal, true);
+    for (int i = 0; i < 4; ++i)
+      s.step(Values{});
+    ASSERT_FALSE(s.nav().arrived());
+    const double goalAhead = k.goal.x() - s.nav().odometry().x;
+    Values front{};
+    press(front, {0, 1, 2, 3, 4, 5}, 2.0);
+    const Command c = s.step(front);
+    EXPECT_LT(c.v, 0.0) << "goal " << k.goal.transpose();  // off the contact either way
+    EXPECT_EQ(s.nav().arrived(), k.search)
+        << "goal " << k.goal.transpose() << ", " << goalAhead << " ahead of the axle";
+    EXPECT_EQ(s.nav().touchMap().closed(k.goal), k.goal.x() < 300.0 && k.goal.y() < 50.0);
+  }
+}
+
 // No way exists: a goal in a closed ring of walls, and a wall across the scene whose only gap
 // (70) is narrower than the robot. Both end as unreachable, well before the step budget.
 TEST(PlanDriveNavigate, EnclosedGoalEndsUnreachable) {
