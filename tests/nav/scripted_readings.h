@@ -9,10 +9,15 @@
 #include <initializer_list>
 #include <memory>
 #include <utility>
+#include <vector>
 
 #include "nav/navigator.h"
 #include "run/contact_class.h"
+#include "run/robot_geometry.h"
 #include "run/sensor_layout.h"
+#include "sim/robot.h"
+#include "sim/scene.h"
+#include "sim/world.h"
 
 namespace tactile::nav::test {
 
@@ -74,5 +79,39 @@ class Script {
   Truth truth_{};
   std::size_t step_ = 0;
 };
+
+// A rectangle obstacle from (x0, y0) to (x1, y1).
+inline sim::Obstacle box(double x0, double y0, double x1, double y1) {
+  return sim::Obstacle{
+      {sim::Vec2(x0, y0), sim::Vec2(x1, y0), sim::Vec2(x1, y1), sim::Vec2(x0, y1)}};
+}
+
+// A test scene of the given size and obstacles with its goal; the start is at (200, height / 2).
+inline std::shared_ptr<const sim::World> worldOf(std::vector<sim::Obstacle> obstacles, double width,
+                                                 double height, sim::Vec2 goal) {
+  sim::Scene s;
+  s.name = "test";
+  s.bounds = {0, 0, width, height};
+  s.obstacles = std::move(obstacles);
+  s.start = {200, height / 2, 0};
+  s.goal = goal;
+  return std::make_shared<const sim::World>(std::move(s));
+}
+
+// A 2000 x 1000 scene whose goal (1100, 450) lies inside a closed ring of walls: no way to it.
+inline std::shared_ptr<const sim::World> ringWorld() {
+  return worldOf({box(950, 250, 1250, 270), box(950, 630, 1250, 650), box(950, 270, 970, 630),
+                  box(1230, 270, 1250, 630)},
+                 2000, 1000, sim::Vec2(1100, 450));
+}
+
+// Where a pressed dome marks: its centre a dome radius out along its normal, in the odometry frame.
+inline Vec2 touchPoint(const Pose2d& pose, int sensor) {
+  const RobotGeometry g;
+  const DomePlacement d = domePlacements(g)[static_cast<std::size_t>(sensor)];
+  const Vec2 body(d.centre.x + g.domeRadiusUnits * d.normal.x,
+                  d.centre.y + g.domeRadiusUnits * d.normal.y);
+  return sim::bodyToWorld(pose, body);
+}
 
 }  // namespace tactile::nav::test

@@ -19,11 +19,15 @@
 namespace tactile::nav {
 namespace {
 
+using test::box;
 using test::press;
+using test::ringWorld;
 using test::Script;
+using test::touchPoint;
 using test::Truth;
 using test::truthOf;
 using test::Values;
+using test::worldOf;
 
 // A map over x in [0, 1000] (plus the margin), cells of 20, growth 40.
 TouchMap plainMap(double margin = 300.0) {
@@ -176,15 +180,6 @@ TEST(TouchMap, StartOnTheGrowthOfAThinWallStaysOnItsSide) {
 }
 
 // ---- the navigator with the touch map ---------------------------------------------------------
-
-// Where a pressed dome marks: its centre a dome radius out along its normal, in the odometry frame.
-Vec2 touchPoint(const Pose2d& pose, int sensor) {
-  const RobotGeometry g;
-  const DomePlacement d = domePlacements(g)[static_cast<std::size_t>(sensor)];
-  const Vec2 body(d.centre.x + g.domeRadiusUnits * d.normal.x,
-                  d.centre.y + g.domeRadiusUnits * d.normal.y);
-  return sim::bodyToWorld(pose, body);
-}
 
 TEST(TouchMapNavigator, TouchingDomesOfAContactGroupMarkTheirCells) {
   Script s(true);
@@ -342,21 +337,6 @@ TEST(TouchMapNavigator, TwoSearchSpiralsWithoutTheGoalEndTheRunAsUnreachable) {
 
 // ---- whole runs --------------------------------------------------------------------------------
 
-sim::Obstacle box(double x0, double y0, double x1, double y1) {
-  return sim::Obstacle{{Vec2(x0, y0), Vec2(x1, y0), Vec2(x1, y1), Vec2(x0, y1)}};
-}
-
-std::shared_ptr<const sim::World> worldOf(std::vector<sim::Obstacle> obstacles, double width,
-                                          double height, Vec2 goal) {
-  sim::Scene s;
-  s.name = "test";
-  s.bounds = {0, 0, width, height};
-  s.obstacles = std::move(obstacles);
-  s.start = {200, height / 2, 0};
-  s.goal = goal;
-  return std::make_shared<const sim::World>(std::move(s));
-}
-
 NavigateResult runWithMap(const std::shared_ptr<const sim::World>& world, Pose2d start,
                           std::size_t maxSteps) {
   NavigatorConfig config;
@@ -385,9 +365,7 @@ TEST(TouchMapNavigate, ReachesTheGoalRoundABoxAndIsDeterministic) {
 // search round the goal then finds nothing), and a wall across the scene whose only gap (70) is
 // narrower than the robot (the plan finds no way once the wall is touched along its length).
 TEST(TouchMapNavigate, EnclosedGoalEndsUnreachable) {
-  const auto world = worldOf({box(950, 250, 1250, 270), box(950, 630, 1250, 650),
-                              box(950, 270, 970, 630), box(1230, 270, 1250, 630)},
-                             2000, 1000, Vec2(1100, 450));
+  const auto world = ringWorld();
   for (double y : {380.0, 450.0, 520.0}) {
     const NavigateResult r = runWithMap(world, {200, y, 0}, 20000);
     EXPECT_EQ(r.outcome, RunOutcome::Unreachable)
