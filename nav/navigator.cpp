@@ -120,10 +120,10 @@ constexpr double kDriveBackUnits = 20.0;
 constexpr double kDriveBackMoreUnits = 15.0;
 constexpr double kDriveBackMaxUnits = 80.0;
 constexpr double kDriveRepeatUnits = 40.0;
+constexpr double kDriveCornerPressed = 1.0;
 // Plan drive: a contact ahead with the goal within kGoalBehindUnits of the body centre and on a
 // closed cell of the map starts the search round the goal.
 constexpr double kGoalBehindUnits = 150.0;
-constexpr double kDriveCornerPressed = 1.0;
 // Bug2's bumper following: the arc back toward an obstacle no longer touched.
 constexpr double kBumperArcUnits = 90.0;
 
