@@ -1591,6 +1591,22 @@ paused: Play (P) lets the navigator drive, Step (N) takes one step</source>
         <translation>
 pausiert: „Abspielen“ (P) lässt den Navigator fahren, „Schritt“ (N) macht einen Schritt</translation>
     </message>
+    <message>
+        <source>Plan drive (map of touches)</source>
+        <translation>Planfahrt (Karte der Berührungen)</translation>
+    </message>
+    <message>
+        <source>Thesis strategies (wall following)</source>
+        <translation>Strategien der Arbeit (Wandfolgen)</translation>
+    </message>
+    <message>
+        <source>How a navigator with a model drives: by a plan on a map of what it touched (the default, as tactile navigate), or by the thesis&apos;s strategies (tactile navigate --wall-follow). The Bug2 bumper baseline ignores it.</source>
+        <translation>Wie ein Navigator mit Modell fährt: nach einem Plan auf einer Karte dessen, was er berührt hat (Standard, wie tactile navigate), oder nach den Strategien der Arbeit (tactile navigate --wall-follow). Die Bug2-Stoßfänger-Basislinie ignoriert dies.</translation>
+    </message>
+    <message>
+        <source>Navigator drives by</source>
+        <translation>Navigator fährt nach</translation>
+    </message>
 </context>
 <context>
     <name>tactile::gui::StatusPictureView</name>

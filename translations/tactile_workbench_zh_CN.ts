@@ -1582,6 +1582,22 @@ paused: Play (P) lets the navigator drive, Step (N) takes one step</source>
         <translation>
 已暂停：“播放”（P）让导航器驾驶，“单步”（N）走一步</translation>
     </message>
+    <message>
+        <source>Plan drive (map of touches)</source>
+        <translation>按规划行驶（触碰地图）</translation>
+    </message>
+    <message>
+        <source>Thesis strategies (wall following)</source>
+        <translation>论文策略（沿墙行驶）</translation>
+    </message>
+    <message>
+        <source>How a navigator with a model drives: by a plan on a map of what it touched (the default, as tactile navigate), or by the thesis&apos;s strategies (tactile navigate --wall-follow). The Bug2 bumper baseline ignores it.</source>
+        <translation>带模型的导航器如何行驶：按其触碰所得地图上的规划（默认，同 tactile navigate），或按论文的策略（tactile navigate --wall-follow）。Bug2 保险杠基线忽略此项。</translation>
+    </message>
+    <message>
+        <source>Navigator drives by</source>
+        <translation>导航器行驶方式</translation>
+    </message>
 </context>
 <context>
     <name>tactile::gui::StatusPictureView</name>

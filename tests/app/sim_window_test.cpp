@@ -613,6 +613,24 @@ class SimWindowTest : public QObject {
     auto* box = window.findChild<QComboBox*>(QStringLiteral("modelBox"));
     QVERIFY(box != nullptr);
     QCOMPARE(box->currentData().toString(), QStringLiteral("later"));
+    // How the navigator drives: plan drive by default (as tactile navigate), or the thesis
+    // strategies; the bumper baseline has no choice.
+    auto* control = window.findChild<QComboBox*>(QStringLiteral("controlBox"));
+    QVERIFY(control != nullptr);
+    QVERIFY(control->isEnabled());
+    QCOMPARE(control->currentData().toBool(), nav::NavigatorConfig{}.planDrive);
+    for (int i = 0; i < control->count(); ++i) {
+      control->setCurrentIndex(i);
+      QVERIFY(window.startRun().ok());
+      const auto* navigator =
+          dynamic_cast<const nav::Navigator*>(window.session()->setup().driver.get());
+      QVERIFY(navigator != nullptr);
+      QCOMPARE(navigator->config().planDrive, control->itemData(i).toBool());
+      QCOMPARE(navigator->config().source, nav::StatusSource::Model);
+      window.giveUp();
+    }
+    window.setNavigatorModel(QString());
+    QVERIFY(!control->isEnabled());
   }
 
   void briefingAndKeysHelpListTheTable() {

@@ -134,6 +134,15 @@ void SimWindow::buildUi() {
   modelBox_ = new QComboBox;
   modelBox_->setObjectName(QStringLiteral("modelBox"));
   modelBox_->setFocusPolicy(Qt::ClickFocus);
+  controlBox_ = new QComboBox;
+  controlBox_->setObjectName(QStringLiteral("controlBox"));
+  controlBox_->setFocusPolicy(Qt::ClickFocus);
+  controlBox_->addItem(tr("Plan drive (map of touches)"), true);
+  controlBox_->addItem(tr("Thesis strategies (wall following)"), false);
+  controlBox_->setToolTip(
+      tr("How a navigator with a model drives: by a plan on a map of what it touched (the "
+         "default, as tactile navigate), or by the thesis's strategies (tactile navigate "
+         "--wall-follow). The Bug2 bumper baseline ignores it."));
   sceneLabel_ = new QLabel;
   subjectEdit_ = new QLineEdit;
   subjectEdit_->setObjectName(QStringLiteral("subjectEdit"));
@@ -163,6 +172,7 @@ void SimWindow::buildUi() {
     if (mode() == SimMode::Autonomous) reloadModels();
     updateControls();
   });
+  connect(modelBox_, &QComboBox::currentIndexChanged, this, [this] { updateControls(); });
 
   auto* setupBox = new QGroupBox(tr("Run"));
   auto* form = new QFormLayout(setupBox);
@@ -177,6 +187,7 @@ void SimWindow::buildUi() {
   form->addRow(tr("Time limit"), limitBox_);
   form->addRow(tr("Step rate"), rateBox_);
   form->addRow(tr("Navigator model"), modelBox_);
+  form->addRow(tr("Navigator drives by"), controlBox_);
 
   auto button = [](const QString& text, const char* name) {
     auto* b = new QPushButton(text);
@@ -295,6 +306,7 @@ Status SimWindow::makeNavigator(SimSetup& setup) {
     config.source = nav::StatusSource::Model;
     config.models = std::make_shared<const analysis::ModelBundle>(std::move(bundle.value()));
   }
+  config.planDrive = controlBox_->currentData().toBool();
   Result<std::unique_ptr<nav::Navigator>> made = nav::Navigator::create(std::move(config));
   if (!made) return made.error();
   setup.driver = std::shared_ptr<sim::Driver>(std::move(made.value()));
@@ -543,6 +555,7 @@ void SimWindow::updateControls() {
   seedBox_->setEnabled(experiment || autonomous);
   limitBox_->setEnabled(experiment || autonomous);
   modelBox_->setEnabled(autonomous);
+  controlBox_->setEnabled(autonomous && !modelBox_->currentData().toString().isEmpty());
   experimentBox_->setVisible(autonomous);
   if (session_->mode() == SimMode::Autonomous && session_->isStarted())
     pauseButton_->setText(session_->isPaused() ? tr("Play") : tr("Pause"));

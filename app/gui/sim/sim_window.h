@@ -138,6 +138,7 @@ class SimWindow : public QMainWindow {
   QLabel* errorLabel_ = nullptr;
   QComboBox* modeBox_ = nullptr;
   QComboBox* modelBox_ = nullptr;
+  QComboBox* controlBox_ = nullptr;  // plan drive, or the thesis strategies (wall following)
   ExperimentPanel* experiment_ = nullptr;
   QWidget* experimentBox_ = nullptr;
   QLabel* sceneLabel_ = nullptr;
