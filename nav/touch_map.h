@@ -76,6 +76,11 @@ class TouchMap {
   // Within nearUnits of a touched cell (or off the grid).
   bool near(const sim::Vec2& point) const;
 
+  // Cell by cell (columns along x, rows along y, row 0 at the bottom), for pictures of the map.
+  sim::Vec2 cellCentre(int col, int row) const { return centre(col, row); }
+  bool cellTouched(int col, int row) const { return touched_[index(col, row)] != 0; }
+  bool cellClosed(int col, int row) const { return closedBy_[index(col, row)] != 0; }
+
  private:
   int index(int col, int row) const { return row * cols_ + col; }
   bool cellOf(const sim::Vec2& p, int& col, int& row) const;

@@ -236,6 +236,10 @@
         <source>One step (while paused)</source>
         <translation>Ein Schritt (während der Pause)</translation>
     </message>
+    <message>
+        <source>The navigator&apos;s touch map and plan on the picture / off (autonomous mode)</source>
+        <translation>Tastkarte und Plan des Navigators im Bild ein / aus (autonomer Modus)</translation>
+    </message>
 </context>
 <context>
     <name>main</name>
@@ -1607,6 +1611,14 @@ pausiert: „Abspielen“ (P) lässt den Navigator fahren, „Schritt“ (N) mac
         <source>Navigator drives by</source>
         <translation>Navigator fährt nach</translation>
     </message>
+    <message>
+        <source>The navigator&apos;s touch map and plan are drawn (T: off)</source>
+        <translation>Tastkarte und Plan des Navigators werden gezeigt (T: aus)</translation>
+    </message>
+    <message>
+        <source>The navigator&apos;s touch map and plan are hidden (T: on)</source>
+        <translation>Tastkarte und Plan des Navigators sind ausgeblendet (T: ein)</translation>
+    </message>
 </context>
 <context>
     <name>tactile::gui::StatusPictureView</name>
@@ -1629,6 +1641,18 @@ pausiert: „Abspielen“ (P) lässt den Navigator fahren, „Schritt“ (N) mac
     <message>
         <source>Robot close-up (scene hidden)</source>
         <translation>Roboter-Nahansicht (Szene verborgen)</translation>
+    </message>
+    <message>
+        <source>touched</source>
+        <translation>berührt</translation>
+    </message>
+    <message>
+        <source>closed to the plan</source>
+        <translation>für den Plan gesperrt</translation>
+    </message>
+    <message>
+        <source>plan, odometry (T)</source>
+        <translation>Plan, Odometrie (T)</translation>
     </message>
 </context>
 <context>

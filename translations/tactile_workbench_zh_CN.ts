@@ -236,6 +236,10 @@
         <source>One step (while paused)</source>
         <translation>单步（暂停时）</translation>
     </message>
+    <message>
+        <source>The navigator&apos;s touch map and plan on the picture / off (autonomous mode)</source>
+        <translation>在图上显示/隐藏导航器的触觉地图和路径规划（自主模式）</translation>
+    </message>
 </context>
 <context>
     <name>main</name>
@@ -1598,6 +1602,14 @@ paused: Play (P) lets the navigator drive, Step (N) takes one step</source>
         <source>Navigator drives by</source>
         <translation>导航器行驶方式</translation>
     </message>
+    <message>
+        <source>The navigator&apos;s touch map and plan are drawn (T: off)</source>
+        <translation>已显示导航器的触觉地图和路径规划（T：隐藏）</translation>
+    </message>
+    <message>
+        <source>The navigator&apos;s touch map and plan are hidden (T: on)</source>
+        <translation>已隐藏导航器的触觉地图和路径规划（T：显示）</translation>
+    </message>
 </context>
 <context>
     <name>tactile::gui::StatusPictureView</name>
@@ -1620,6 +1632,18 @@ paused: Play (P) lets the navigator drive, Step (N) takes one step</source>
     <message>
         <source>Robot close-up (scene hidden)</source>
         <translation>机器人特写（场景隐藏）</translation>
+    </message>
+    <message>
+        <source>touched</source>
+        <translation>已触碰</translation>
+    </message>
+    <message>
+        <source>closed to the plan</source>
+        <translation>规划不可通行</translation>
+    </message>
+    <message>
+        <source>plan, odometry (T)</source>
+        <translation>规划，里程计（T）</translation>
     </message>
 </context>
 <context>

@@ -5,6 +5,7 @@
 // Play lets the navigator drive and records its strategy and status as `tactile navigate` does,
 // Step takes exactly one step, Pause stops, and a killed autonomous run keeps those columns.
 #include <QComboBox>
+#include <QDir>
 #include <QLabel>
 #include <QMessageBox>
 #include <QProcess>
@@ -631,6 +632,108 @@ class SimWindowTest : public QObject {
     }
     window.setNavigatorModel(QString());
     QVERIFY(!control->isEnabled());
+  }
+
+  void touchMapIsDrawnOverThePictureAndTTogglesIt() {
+    QTemporaryDir dir;
+    const QString db = dir.filePath(QStringLiteral("map.db"));
+    { auto ws = openWorkspace(db); }
+    const auto cli = [](const QStringList& args) {
+      QProcess p;
+      p.start(QStringLiteral(TACTILE_CLI), args);
+      return p.waitForFinished(120000) && p.exitStatus() == QProcess::NormalExit &&
+             p.exitCode() == 0;
+    };
+    // Models for every group, by a short run of the training recipe.
+    const QString runs = dir.filePath(QStringLiteral("train"));
+    const QString modelFile = dir.filePath(QStringLiteral("m.json"));
+    QVERIFY(
+        cli({QStringLiteral("simulate"), QStringLiteral("--plan"), QStringLiteral("training"),
+             QStringLiteral("--runs"), QStringLiteral("12"), QStringLiteral("--seed"),
+             QStringLiteral("1"), QStringLiteral("--out-dir"), runs, QStringLiteral("--quiet")}));
+    QStringList train{QStringLiteral("train"), QStringLiteral("--runs")};
+    for (const QString& f : QDir(runs).entryList({QStringLiteral("*.csv")}, QDir::Files))
+      train << QDir(runs).filePath(f);
+    train << QStringLiteral("--threads") << QStringLiteral("2") << QStringLiteral("--out")
+          << modelFile;
+    QVERIFY(cli(train));
+    QVERIFY(cli({QStringLiteral("models"), QStringLiteral("import"), QStringLiteral("--db"), db,
+                 QStringLiteral("--name"), QStringLiteral("m"), modelFile}));
+
+    SimWindow window(db);
+    window.setMode(SimMode::Autonomous);
+    window.setScene(QStringLiteral("chapter5"));
+    window.setNavigatorModel(QStringLiteral("m"));
+    window.setSeed(1);
+    window.resize(1600, 1000);
+    window.show();
+    QVERIFY(window.startRun().ok());
+    gui::SimSession* s = window.session();
+    const auto* navigator = dynamic_cast<const nav::Navigator*>(s->setup().driver.get());
+    QVERIFY(navigator != nullptr && navigator->config().planDrive);
+    gui::StatusPictureView* picture = window.picture();
+    QVERIFY(picture->wholeScene());
+    QVERIFY(picture->showTouchMap());
+
+    // Drive until a touched cell lies well away from the robot and where its odometry puts it
+    // (the robot and the ring are drawn over the map).
+    const nav::TouchMap* map = nullptr;
+    int col = -1;
+    int row = -1;
+    for (int chunk = 0; chunk < 40 && col < 0 && !s->hasEnded(); ++chunk) {
+      s->advance(20);
+      map = &navigator->touchMap();
+      const Pose2d pose = s->simulator()->pose();
+      const Pose2d& odo = navigator->odometry();
+      for (int r = 0; r < map->rows() && col < 0; ++r) {
+        for (int c = 0; c < map->cols(); ++c) {
+          if (!map->cellTouched(c, r)) continue;
+          const sim::Vec2 at = map->cellCentre(c, r);
+          if (std::hypot(at.x() - pose.x, at.y() - pose.y) > 180.0 &&
+              std::hypot(at.x() - odo.x, at.y() - odo.y) > 180.0) {
+            col = c;
+            row = r;
+            break;
+          }
+        }
+      }
+    }
+    QVERIFY2(col >= 0, "the navigator never touched anything far from where it stands");
+    const sim::Vec2 cell = map->cellCentre(col, row);
+    QImage shown = picture->grab().toImage();
+    QVERIFY(picture->touchMapDrawn());
+    const QPoint px = picture->worldToWidget().map(QPointF(cell.x(), cell.y())).toPoint();
+    QVERIFY(shown.rect().contains(px));
+    QCOMPARE(shown.pixelColor(px).rgb(), gui::StatusPictureView::touchedColour().rgb());
+    // A cell closed by it but not touched itself is shaded (orange over the scene).
+    int closedCol = -1;
+    for (int c = 0; c < map->cols(); ++c) {
+      if (map->cellClosed(c, row) && !map->cellTouched(c, row) && std::abs(c - col) <= 2) {
+        closedCol = c;
+        break;
+      }
+    }
+    QVERIFY(closedCol >= 0);
+    const QPoint closedPx = picture->worldToWidget()
+                                .map(QPointF(map->cellCentre(closedCol, row).x(), cell.y()))
+                                .toPoint();
+    const QColor closed = shown.pixelColor(closedPx);
+    QVERIFY2(closed.red() > closed.blue() + 40, qPrintable(closed.name()));
+
+    // T hides it and shows it again.
+    QTest::keyClick(picture, Qt::Key_T);
+    QVERIFY(!picture->showTouchMap());
+    shown = picture->grab().toImage();
+    QVERIFY(!picture->touchMapDrawn());
+    QVERIFY(shown.pixelColor(px).rgb() != gui::StatusPictureView::touchedColour().rgb());
+    QTest::keyClick(picture, Qt::Key_T);
+    QVERIFY(picture->showTouchMap());
+    // The close-up draws it too.
+    QTest::keyClick(picture, Qt::Key_M);
+    QVERIFY(!picture->wholeScene());
+    picture->grab();
+    QVERIFY(picture->touchMapDrawn());
+    window.giveUp();
   }
 
   void briefingAndKeysHelpListTheTable() {

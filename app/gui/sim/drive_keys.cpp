@@ -9,7 +9,7 @@
 namespace tactile::gui {
 namespace {
 
-constexpr std::array<SimKey, 14> kKeys{{
+constexpr std::array<SimKey, 15> kKeys{{
     {Qt::Key_Up, SimKeyAction::SpeedUpLarge, "Up",
      QT_TRANSLATE_NOOP("SimKeys", "Faster forward by a large step (+20 units/s)")},
     {Qt::Key_Down, SimKeyAction::SlowDownLarge, "Down",
@@ -31,6 +31,9 @@ constexpr std::array<SimKey, 14> kKeys{{
     {Qt::Key_M, SimKeyAction::ToggleView, "M",
      QT_TRANSLATE_NOOP("SimKeys",
                        "Robot close-up / whole scene (close-up only in experiment mode)")},
+    {Qt::Key_T, SimKeyAction::ToggleTouchMap, "T",
+     QT_TRANSLATE_NOOP(
+         "SimKeys", "The navigator's touch map and plan on the picture / off (autonomous mode)")},
     {Qt::Key_P, SimKeyAction::TogglePause, "P", QT_TRANSLATE_NOOP("SimKeys", "Pause / go on")},
     {Qt::Key_Pause, SimKeyAction::TogglePause, "Pause",
      QT_TRANSLATE_NOOP("SimKeys", "Pause / go on")},

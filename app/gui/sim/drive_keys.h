@@ -30,9 +30,10 @@ enum class SimKeyAction {
   TurnLeftSmall,
   TurnRightSmall,
   Stop,
-  ToggleView,   // robot close-up / whole scene (where the mode allows)
-  TogglePause,  // pause / go on
-  StepOnce,     // one step while paused
+  ToggleView,      // robot close-up / whole scene (where the mode allows)
+  ToggleTouchMap,  // the navigator's touch map and plan drawn on the picture, or not
+  TogglePause,     // pause / go on
+  StepOnce,        // one step while paused
 };
 
 struct SimKey {

@@ -455,6 +455,13 @@ bool SimWindow::handleKey(int key) {
       if (!picture_->toggle() && !session_->mayShowScene())
         statusBar()->showMessage(tr("The scene stays hidden in experiment mode"), 3000);
       break;
+    case SimKeyAction::ToggleTouchMap:
+      picture_->setShowTouchMap(!picture_->showTouchMap());
+      statusBar()->showMessage(picture_->showTouchMap()
+                                   ? tr("The navigator's touch map and plan are drawn (T: off)")
+                                   : tr("The navigator's touch map and plan are hidden (T: on)"),
+                               3000);
+      break;
     case SimKeyAction::TogglePause:
       togglePause();
       break;

@@ -8,6 +8,7 @@
 
 #include "app/gui/common/plot_style.h"
 #include "app/gui/sim/sim_session.h"
+#include "nav/navigator.h"
 #include "run/robot_geometry.h"
 #include "sim/simulator.h"
 
@@ -40,6 +41,18 @@ struct Frame {
 
 }  // namespace
 
+QColor StatusPictureView::touchedColour() {
+  return {150, 60, 0};
+}
+
+QColor StatusPictureView::closedColour() {
+  return {255, 150, 40};
+}
+
+QColor StatusPictureView::planColour() {
+  return {130, 40, 170};
+}
+
 StatusPictureView::StatusPictureView(SimSession* session, QWidget* parent)
     : QWidget(parent), session_(session) {
   setMinimumSize(320, 320);
@@ -48,6 +61,7 @@ StatusPictureView::StatusPictureView(SimSession* session, QWidget* parent)
   connect(session_, &SimSession::stepped, this, qOverload<>(&QWidget::update));
   connect(session_, &SimSession::started, this, [this] {
     if (!session_->mayShowScene()) setWholeScene(false);
+    mapImage_ = QImage();  // a new run has a new navigator and map
     update();
   });
 }
@@ -65,6 +79,12 @@ bool StatusPictureView::setWholeScene(bool whole) {
 bool StatusPictureView::toggle() {
   const bool before = wholeScene_;
   return setWholeScene(!wholeScene_) != before;
+}
+
+void StatusPictureView::setShowTouchMap(bool show) {
+  if (show == showTouchMap_) return;
+  showTouchMap_ = show;
+  update();
 }
 
 void StatusPictureView::paintEvent(QPaintEvent*) {
@@ -144,6 +164,44 @@ void StatusPictureView::paintEvent(QPaintEvent*) {
       p.drawLine(f.map(wx - halfW, y), f.map(wx + halfW, y));
   }
 
+  frame_ = f.qt();
+
+  // The navigator's touch map, its plan and its odometry pose.
+  touchMapDrawn_ = false;
+  const auto* navigator = session_->mode() == SimMode::Autonomous
+                              ? dynamic_cast<const nav::Navigator*>(session_->setup().driver.get())
+                              : nullptr;
+  if (showTouchMap_ && navigator != nullptr && !navigator->touchMap().empty()) {
+    const nav::TouchMap& map = navigator->touchMap();
+    if (mapOf_ != &map || mapRevision_ != map.revision() || mapImage_.isNull()) {
+      mapImage_ = QImage(map.cols(), map.rows(), QImage::Format_ARGB32);
+      mapImage_.fill(Qt::transparent);
+      QColor closed = closedColour();
+      closed.setAlpha(90);
+      const QRgb closedRgb = closed.rgba();
+      const QRgb touchedRgb = touchedColour().rgba();
+      for (int row = 0; row < map.rows(); ++row) {
+        auto* line = reinterpret_cast<QRgb*>(mapImage_.scanLine(map.rows() - 1 - row));
+        for (int col = 0; col < map.cols(); ++col) {
+          if (map.cellTouched(col, row))
+            line[col] = touchedRgb;
+          else if (map.cellClosed(col, row))
+            line[col] = closedRgb;
+        }
+      }
+      mapOf_ = &map;
+      mapRevision_ = map.revision();
+    }
+    const double cell = map.config().cellUnits;
+    const sim::Vec2 first = map.cellCentre(0, 0);
+    const double x0 = first.x() - 0.5 * cell;
+    const double y0 = first.y() - 0.5 * cell;
+    p.setRenderHint(QPainter::SmoothPixmapTransform, false);
+    p.drawImage(QRectF(f.map(x0, y0 + map.rows() * cell), f.map(x0 + map.cols() * cell, y0)),
+                mapImage_);
+    touchMapDrawn_ = true;
+  }
+
   // The robot.
   const double c = std::cos(pose.theta);
   const double s = std::sin(pose.theta);
@@ -176,6 +234,28 @@ void StatusPictureView::paintEvent(QPaintEvent*) {
     drawArrow(p, centre, centre + to / toLen * len, QColor(210, 40, 40), 3.0);
   }
 
+  // Over the robot: the navigator's plan and where its odometry puts the robot.
+  if (touchMapDrawn_) {
+    if (const auto& plan = navigator->plan(); plan && !plan->points.empty()) {
+      QPolygonF line;
+      const Pose2d& odo = navigator->odometry();
+      line << f.map(odo.x, odo.y);
+      for (const sim::Vec2& pt : plan->points)
+        line << f.map(pt.x(), pt.y());
+      p.setPen(QPen(planColour(), 2.0, Qt::DashLine, Qt::RoundCap));
+      p.setBrush(Qt::NoBrush);
+      p.drawPolyline(line);
+    }
+    // Where the odometry puts the robot: a ring with its heading.
+    const Pose2d& odo = navigator->odometry();
+    const QPointF at = f.map(odo.x, odo.y);
+    const double ring = std::max(4.0, 10.0 * f.scale);
+    p.setPen(QPen(planColour(), 2.0));
+    p.setBrush(Qt::NoBrush);
+    p.drawEllipse(at, ring, ring);
+    p.drawLine(at, at + QPointF(std::cos(odo.theta), -std::sin(odo.theta)) * 2.0 * ring);
+  }
+
   // The distance at the bottom, as in the thesis's picture.
   QFont font = p.font();
   font.setPointSizeF(font.pointSizeF() * 1.4);
@@ -185,6 +265,23 @@ void StatusPictureView::paintEvent(QPaintEvent*) {
   p.drawText(QRectF(0, height() - 38, width(), 30), Qt::AlignCenter,
              tr("%1 units to the goal").arg(qRound(session_->goalDistance())));
   p.setFont(this->font());
+  if (touchMapDrawn_) {
+    // A legend at the top right: touched, closed, plan.
+    const QFontMetrics fm(p.font());
+    const QString items[3] = {tr("touched"), tr("closed to the plan"), tr("plan, odometry (T)")};
+    const QColor colours[3] = {touchedColour(), closedColour(), planColour()};
+    double x = width() - 8;
+    for (int k = 2; k >= 0; --k) {
+      x -= fm.horizontalAdvance(items[k]);
+      p.setPen(QColor(70, 70, 70));
+      p.drawText(QPointF(x, 19), items[k]);
+      x -= 16;
+      p.setPen(Qt::NoPen);
+      p.setBrush(colours[k]);
+      p.drawRect(QRectF(x, 8, 12, 12));
+      x -= 14;
+    }
+  }
   p.setPen(QColor(110, 110, 110));
   p.drawText(QRectF(8, 6, width() - 16, 20), Qt::AlignLeft | Qt::AlignTop,
              wholeScene_ ? tr("Whole scene (M: robot close-up)")
