@@ -39,7 +39,7 @@ struct NavigateArgs {
   std::int64_t maxSteps = 6000;
   std::string outDir;
   unsigned threads = 0;
-  std::int64_t benchmark = 0;
+  std::int64_t benchmark = -1;  // -1: not given
   std::uint64_t seed = 1;
   bool json = false;
   bool quiet = false;
@@ -186,7 +186,7 @@ int runNavigate(const NavigateArgs& a) {
     throw UsageError("--max-steps must be between 1 and 1000000");
   const auto source = nav::parseStatusSource(a.status);
   if (!source) throw UsageError("--status must be model, truth or bumper, got '" + a.status + "'");
-  if (a.benchmark != 0) return runBenchmark(a);
+  if (a.benchmark != -1) return runBenchmark(a);
   if (a.scene.empty()) throw UsageError("give --scene (or --benchmark N)");
   if (auto problem = sim::sceneSpecError(a.scene)) throw UsageError(*problem);
   const std::vector<std::uint64_t> seeds = parseSeeds(a.seeds);

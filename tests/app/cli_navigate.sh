@@ -80,6 +80,9 @@ set +e
 [ $? = 2 ] || fail "unknown --status is not a usage error"
 "$T" navigate --scene chapter5 >/dev/null 2>&1
 [ $? = 2 ] || fail "model status without --model is not a usage error"
+"$T" navigate --benchmark 0 --model "$W/m.json" >/dev/null 2>"$W/err.txt"
+[ $? = 2 ] || fail "--benchmark 0 is not a usage error"
+grep -q -- "--benchmark must be between" "$W/err.txt" || fail "--benchmark 0: $(cat "$W/err.txt")"
 "$T" navigate --scene chapter5 --model "$W/missing.json" >/dev/null 2>"$W/err.txt"
 [ $? = 1 ] || fail "a missing model file is not a failure"
 grep -q "missing.json" "$W/err.txt" || fail "the error does not name the model file"
