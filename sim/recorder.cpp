@@ -98,6 +98,11 @@ std::optional<RunOutcome> RunLoop::step(const Command& command) {
   return afterStep(command, nullptr);
 }
 
+std::optional<RunOutcome> RunLoop::step(const Command& command, const Driver& driver) {
+  if (ended_) return ended_;
+  return afterStep(command, &driver);
+}
+
 std::optional<RunOutcome> RunLoop::afterStep(const Command& command, const Driver* driver) {
   sim_.step(command.v, command.omega);
   recorder_.record(sim_, command);

@@ -98,6 +98,10 @@ class RunLoop {
   std::optional<RunOutcome> step(Driver& driver);
   // Steps one given command (a driver that is asked nothing: manual driving).
   std::optional<RunOutcome> step(const Command& command);
+  // Steps a command the caller had from `driver` itself (fed more than observation() holds, e.g.
+  // the simulator's truth); the run ends as step(Driver&) ends it, the driver's finished()
+  // included.
+  std::optional<RunOutcome> step(const Command& command, const Driver& driver);
   // Ends the run now with `outcome` (e.g. the person gave up); no-op once ended.
   void end(RunOutcome outcome);
 

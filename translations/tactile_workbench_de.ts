@@ -343,6 +343,26 @@
         <source>With --simulate --mode experiment: the seed of start and goal; --mode autonomous: the seed of the start (as tactile navigate --seeds).</source>
         <translation>Mit --simulate --mode experiment: der Seed für Start und Ziel; --mode autonomous: der Seed des Starts (wie bei tactile navigate --seeds).</translation>
     </message>
+    <message>
+        <source>With --simulate --mode autonomous: what the navigator&apos;s status comes from, model (with --model), truth or bumper, as tactile navigate --status.</source>
+        <translation>Mit --simulate --mode autonomous: woher der Status des Navigators kommt, model (mit --model), truth oder bumper, wie bei tactile navigate --status.</translation>
+    </message>
+    <message>
+        <source>--status needs --simulate and --mode autonomous</source>
+        <translation>--status braucht --simulate und --mode autonomous</translation>
+    </message>
+    <message>
+        <source>--status %1 takes no --model</source>
+        <translation>--status %1 nimmt kein --model</translation>
+    </message>
+    <message>
+        <source>--status must be model, truth or bumper, got &apos;%1&apos;</source>
+        <translation>--status muss model, truth oder bumper sein, nicht &apos;%1&apos;</translation>
+    </message>
+    <message>
+        <source>--status model needs --model NAME</source>
+        <translation>--status model braucht --model NAME</translation>
+    </message>
 </context>
 <context>
     <name>tactile::gui::ExperimentPanel</name>
@@ -1618,6 +1638,10 @@ pausiert: „Abspielen“ (P) lässt den Navigator fahren, „Schritt“ (N) mac
     <message>
         <source>The navigator&apos;s touch map and plan are hidden (T: on)</source>
         <translation>Tastkarte und Plan des Navigators sind ausgeblendet (T: ein)</translation>
+    </message>
+    <message>
+        <source>Simulator truth (the ceiling, no model)</source>
+        <translation>Wahrheit des Simulators (die Obergrenze, kein Modell)</translation>
     </message>
 </context>
 <context>

@@ -343,6 +343,26 @@
         <source>With --simulate --mode experiment: the seed of start and goal; --mode autonomous: the seed of the start (as tactile navigate --seeds).</source>
         <translation>与 --simulate --mode experiment 一起使用：起点和目标的种子；--mode autonomous：起点的种子（与 tactile navigate --seeds 相同）。</translation>
     </message>
+    <message>
+        <source>With --simulate --mode autonomous: what the navigator&apos;s status comes from, model (with --model), truth or bumper, as tactile navigate --status.</source>
+        <translation>与 --simulate --mode autonomous 一起使用：导航器状态的来源，model（需 --model）、truth 或 bumper，同 tactile navigate --status。</translation>
+    </message>
+    <message>
+        <source>--status needs --simulate and --mode autonomous</source>
+        <translation>--status 需要 --simulate 和 --mode autonomous</translation>
+    </message>
+    <message>
+        <source>--status %1 takes no --model</source>
+        <translation>--status %1 不接受 --model</translation>
+    </message>
+    <message>
+        <source>--status must be model, truth or bumper, got &apos;%1&apos;</source>
+        <translation>--status 必须是 model、truth 或 bumper，而不是 &apos;%1&apos;</translation>
+    </message>
+    <message>
+        <source>--status model needs --model NAME</source>
+        <translation>--status model 需要 --model NAME</translation>
+    </message>
 </context>
 <context>
     <name>tactile::gui::ExperimentPanel</name>
@@ -1609,6 +1629,10 @@ paused: Play (P) lets the navigator drive, Step (N) takes one step</source>
     <message>
         <source>The navigator&apos;s touch map and plan are hidden (T: on)</source>
         <translation>已隐藏导航器的触觉地图和路径规划（T：显示）</translation>
+    </message>
+    <message>
+        <source>Simulator truth (the ceiling, no model)</source>
+        <translation>模拟器真值（上限，无模型）</translation>
     </message>
 </context>
 <context>

@@ -107,11 +107,19 @@ int main(int argc, char** argv) {
   const QCommandLineOption dataOption(
       QStringLiteral("data"),
       QApplication::translate("main", "With --simulate: show the data panel."));
+  const QCommandLineOption statusOption(
+      QStringLiteral("status"),
+      QApplication::translate("main",
+                              "With --simulate --mode autonomous: what the navigator's status "
+                              "comes from, model (with --model), truth or bumper, as tactile "
+                              "navigate --status."),
+      QStringLiteral("SOURCE"));
   const QCommandLineOption wholeOption(
       QStringLiteral("whole-scene"),
       QApplication::translate("main", "With --simulate: show the whole scene where allowed."));
-  for (const QCommandLineOption* o : {&simulateOption, &modeOption, &subjectOption, &seedOption,
-                                      &commandsOption, &rateOption, &dataOption, &wholeOption})
+  for (const QCommandLineOption* o :
+       {&simulateOption, &modeOption, &subjectOption, &seedOption, &commandsOption, &rateOption,
+        &dataOption, &wholeOption, &statusOption})
     parser.addOption(*o);
   parser.addOption(dbOption);
   parser.addOption(sweepOption);
@@ -167,6 +175,9 @@ int main(int argc, char** argv) {
   if (parser.isSet(stepOption) && !parser.isSet(simulateOption))
     window.session()->setCurrentStep(step);
   QWidget* shot = &window;
+  if (parser.isSet(statusOption) &&
+      (!parser.isSet(simulateOption) || parser.value(modeOption) != QStringLiteral("autonomous")))
+    return fail(QApplication::translate("main", "--status needs --simulate and --mode autonomous"));
   tactile::gui::SimWindow* simWindow = nullptr;
   if (parser.isSet(simulateOption)) {
     simWindow = window.openSimulator(parser.value(simulateOption));
@@ -175,6 +186,20 @@ int main(int argc, char** argv) {
       simWindow->setMode(tactile::gui::SimMode::Experiment);
     } else if (mode == QStringLiteral("autonomous")) {
       simWindow->setMode(tactile::gui::SimMode::Autonomous);
+      const QString status = parser.value(statusOption);
+      if (status == QStringLiteral("truth") || status == QStringLiteral("bumper")) {
+        if (parser.isSet(modelOption))
+          return fail(QApplication::translate("main", "--status %1 takes no --model").arg(status));
+        simWindow->setNavigatorSource(status == QStringLiteral("truth")
+                                          ? tactile::nav::StatusSource::Truth
+                                          : tactile::nav::StatusSource::Bumper);
+      } else if (!status.isEmpty() && status != QStringLiteral("model")) {
+        return fail(
+            QApplication::translate("main", "--status must be model, truth or bumper, got '%1'")
+                .arg(status));
+      } else if (status == QStringLiteral("model") && !parser.isSet(modelOption)) {
+        return fail(QApplication::translate("main", "--status model needs --model NAME"));
+      }
       if (parser.isSet(modelOption)) {
         if (!simWindow->navigatorModels().contains(parser.value(modelOption)))
           return fail(QApplication::translate("main", "no stored model named '%1'")

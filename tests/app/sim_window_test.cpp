@@ -533,6 +533,84 @@ class SimWindowTest : public QObject {
     session.setWorkspace(nullptr);
   }
 
+  void autonomousOnTheTruthDrivesAsNavigateStatusTruth() {
+    QTemporaryDir dir;
+    constexpr int kSeed = 1;  // a start from which the robot meets the wall
+    constexpr double kLimitSeconds = 90.0;
+    SimWindow window(dir.filePath(QStringLiteral("truth.db")));
+    window.setMode(SimMode::Autonomous);
+    window.setScene(QStringLiteral("chapter5"));
+    window.setNavigatorSource(nav::StatusSource::Truth);
+    QCOMPARE(window.navigatorSource(), nav::StatusSource::Truth);
+    QVERIFY(!window.navigatorModels().isEmpty());  // the bumper; truth is not a model
+    window.setSeed(kSeed);
+    window.setTimeLimitSeconds(kLimitSeconds);
+    QVERIFY(window.startRun().ok());
+    gui::SimSession* s = window.session();
+    while (!s->hasEnded() && s->advance(100) > 0) {
+    }
+    QVERIFY(s->hasEnded());
+    const RunData* run = s->run();
+    QCOMPARE(*run->meta("status_source"), std::string("truth"));
+
+    auto scene = sim::loadScene("chapter5");
+    QVERIFY(scene.ok());
+    auto world = std::make_shared<const sim::World>(std::move(scene.value()));
+    nav::NavigatorConfig config;
+    config.source = nav::StatusSource::Truth;
+    nav::NavigateOptions options;
+    options.maxSteps = static_cast<std::size_t>(kLimitSeconds / 0.1 + 0.5);
+    options.seed = kSeed;
+    auto reference = nav::navigate(world, "chapter5", nav::drawStart(world, kSeed),
+                                   world->scene().goal, config, options, true);
+    QVERIFY(reference.ok());
+    QCOMPARE(*s->outcome(), reference->outcome);
+    QCOMPARE(run->stepCount(), reference->run.stepCount());
+    QVERIFY(test_support::bitEqual(reference->run.x, run->x));
+    QVERIFY(reference->run.extraValues == run->extraValues);
+    // The truth reached the navigator: some step has a contact status.
+    bool contact = false;
+    for (std::size_t k = 0; k < run->stepCount() && !contact; ++k)
+      contact = run->extraValues[k * run->extraColumns.size() + 1] != "NoContact";
+    QVERIFY(contact);
+
+    // The workbench's --status truth stores the run as such; an unknown source is refused.
+    const QString db = dir.filePath(QStringLiteral("args.db"));
+    { auto ws = openWorkspace(db); }
+    const auto workbench = [&](const QStringList& args, QString* err) {
+      QProcess child;
+      QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
+      env.insert(QStringLiteral("QT_QPA_PLATFORM"), QStringLiteral("offscreen"));
+      env.insert(QStringLiteral("HOME"), dir.path());
+      env.insert(QStringLiteral("XDG_CONFIG_HOME"), dir.filePath(QStringLiteral("config")));
+      child.setProcessEnvironment(env);
+      child.start(
+          QStringLiteral(TACTILE_WORKBENCH),
+          QStringList{QStringLiteral("--db"), db, QStringLiteral("--simulate"),
+                      QStringLiteral("chapter5"), QStringLiteral("--mode"),
+                      QStringLiteral("autonomous"), QStringLiteral("--step"), QStringLiteral("50"),
+                      QStringLiteral("--screenshot"), dir.filePath(QStringLiteral("shot.png"))} +
+              args);
+      if (!child.waitForFinished(60000)) return -1;
+      *err = QString::fromUtf8(child.readAllStandardError());
+      return child.exitStatus() == QProcess::NormalExit ? child.exitCode() : -1;
+    };
+    QString err;
+    QCOMPARE(workbench({QStringLiteral("--status"), QStringLiteral("truth")}, &err), 0);
+    {
+      auto ws = openWorkspace(db);
+      auto runs = ws->database().listRuns();
+      QVERIFY(runs.ok());
+      QCOMPARE(runs->size(), std::size_t{1});
+      auto stored = ws->database().loadRun(runs->front().id);
+      QVERIFY(stored.ok());
+      QCOMPARE(*stored->meta("status_source"), std::string("truth"));
+      QCOMPARE(stored->stepCount(), std::size_t{50});
+    }
+    QVERIFY(workbench({QStringLiteral("--status"), QStringLiteral("sideways")}, &err) > 0);
+    QVERIFY2(err.contains(QStringLiteral("--status must be")), qPrintable(err));
+  }
+
   void autonomousStepByStepTakesOneStepAndPauseStops() {
     QTemporaryDir dir;
     SimWindow window(dir.filePath(QStringLiteral("steps.db")));

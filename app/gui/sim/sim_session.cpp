@@ -192,6 +192,9 @@ Status SimSession::start(const SimSetup& setup) {
   timer_.stop();
   setup_ = setup;
   navigator_ = navigator;
+  truthFed_ = navigator != nullptr && navigator->config().source == nav::StatusSource::Truth
+                  ? dynamic_cast<nav::Navigator*>(setup_.driver.get())
+                  : nullptr;
   loop_ = std::move(loop);
   recording_ = std::move(recording);
   finished_ = RunData();
@@ -290,7 +293,15 @@ bool SimSession::stepInternal() {
   if (!loop_ || hasFinished_) return false;
   std::optional<RunOutcome> ended;
   if (setup_.mode == SimMode::Autonomous) {
-    ended = loop_->step(*setup_.driver);
+    if (truthFed_ != nullptr) {
+      nav::Observation observation;
+      static_cast<sim::Observation&>(observation) = loop_->observation();
+      observation.truth = &loop_->simulator().truth();
+      const sim::Command command = truthFed_->step(observation);
+      ended = loop_->step(command, *truthFed_);
+    } else {
+      ended = loop_->step(*setup_.driver);
+    }
     sim::Recorder& recorder = loop_->recorder();
     if (navigator_ != nullptr) nav::appendNavigatorState(*navigator_, recorder.extraValues());
     command_ = {recorder.run().v.back(), recorder.run().omega.back()};

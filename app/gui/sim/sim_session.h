@@ -150,6 +150,9 @@ class SimSession : public QObject {
   workspace::Workspace* workspace_ = nullptr;
   SimSetup setup_;
   const nav::Navigator* navigator_ = nullptr;  // setup_.driver when it is the navigator
+  // setup_.driver when it is a navigator on the simulator's truth: fed the truth every step, as
+  // `tactile navigate --status truth` feeds it.
+  nav::Navigator* truthFed_ = nullptr;
   std::unique_ptr<sim::RunLoop> loop_;
   std::unique_ptr<workspace::RunRecording> recording_;
   RunData finished_;  // the whole run once it has ended

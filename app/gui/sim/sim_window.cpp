@@ -265,41 +265,73 @@ void SimWindow::buildUi() {
   reloadModels();
 }
 
+namespace {
+// The navigator box's entries: a stored model (Qt::UserRole: its name), the simulator's truth or
+// the bumper baseline (Qt::UserRole: empty); kSourceRole tells which.
+constexpr int kSourceRole = Qt::UserRole + 1;
+
+int findSource(const QComboBox* box, nav::StatusSource source, const QString& model) {
+  for (int i = 0; i < box->count(); ++i) {
+    if (box->itemData(i, kSourceRole).toInt() == static_cast<int>(source) &&
+        box->itemData(i).toString() == model)
+      return i;
+  }
+  return -1;
+}
+}  // namespace
+
 void SimWindow::reloadModels() {
   const QString current = modelBox_->currentData().toString();
+  const nav::StatusSource currentSource = navigatorSource();
   modelBox_->clear();
+  const auto add = [this](const QString& text, nav::StatusSource source, const QString& model) {
+    modelBox_->addItem(text, model);
+    modelBox_->setItemData(modelBox_->count() - 1, static_cast<int>(source), kSourceRole);
+  };
   if (workspace_) {
     if (auto models = workspace_->models(); models.ok()) {
       for (const storage::ModelInfo& m : models.value()) {
         const QString name = QString::fromStdString(m.name);
-        modelBox_->addItem(name, name);
+        add(name, nav::StatusSource::Model, name);
       }
     }
   }
-  modelBox_->addItem(tr("Bug2 bumper (no model)"), QString());
-  const int i = modelBox_->findData(current);
+  add(tr("Simulator truth (the ceiling, no model)"), nav::StatusSource::Truth, QString());
+  add(tr("Bug2 bumper (no model)"), nav::StatusSource::Bumper, QString());
+  const int i = findSource(modelBox_, currentSource, current);
   if (i >= 0) modelBox_->setCurrentIndex(i);
 }
 
 void SimWindow::setNavigatorModel(const QString& model) {
+  setNavigatorSource(model.isEmpty() ? nav::StatusSource::Bumper : nav::StatusSource::Model, model);
+}
+
+void SimWindow::setNavigatorSource(nav::StatusSource source, const QString& model) {
   reloadModels();
-  const int i = modelBox_->findData(model);
+  const int i =
+      findSource(modelBox_, source, source == nav::StatusSource::Model ? model : QString());
   if (i >= 0) modelBox_->setCurrentIndex(i);
+}
+
+nav::StatusSource SimWindow::navigatorSource() const {
+  if (modelBox_->currentIndex() < 0) return nav::StatusSource::Bumper;
+  return static_cast<nav::StatusSource>(modelBox_->currentData(kSourceRole).toInt());
 }
 
 QStringList SimWindow::navigatorModels() const {
   QStringList out;
-  for (int i = 0; i < modelBox_->count(); ++i)
-    out << modelBox_->itemData(i).toString();
+  for (int i = 0; i < modelBox_->count(); ++i) {
+    if (modelBox_->itemData(i, kSourceRole).toInt() != static_cast<int>(nav::StatusSource::Truth))
+      out << modelBox_->itemData(i).toString();
+  }
   return out;
 }
 
 Status SimWindow::makeNavigator(SimSetup& setup) {
   nav::NavigatorConfig config;
   const QString model = modelBox_->currentData().toString();
-  if (model.isEmpty()) {
-    config.source = nav::StatusSource::Bumper;
-  } else {
+  config.source = navigatorSource();
+  if (config.source == nav::StatusSource::Model) {
     if (!workspace_) return Error("no database is open");
     Result<analysis::ModelBundle> bundle = workspace_->loadModel(model.toStdString());
     if (!bundle) return bundle.error();
@@ -562,7 +594,7 @@ void SimWindow::updateControls() {
   seedBox_->setEnabled(experiment || autonomous);
   limitBox_->setEnabled(experiment || autonomous);
   modelBox_->setEnabled(autonomous);
-  controlBox_->setEnabled(autonomous && !modelBox_->currentData().toString().isEmpty());
+  controlBox_->setEnabled(autonomous && navigatorSource() != nav::StatusSource::Bumper);
   experimentBox_->setVisible(autonomous);
   if (session_->mode() == SimMode::Autonomous && session_->isStarted())
     pauseButton_->setText(session_->isPaused() ? tr("Play") : tr("Pause"));

@@ -17,6 +17,7 @@
 
 #include "app/gui/sim/sim_session.h"
 #include "base/error.h"
+#include "nav/navigator.h"
 
 class QComboBox;
 class QDoubleSpinBox;
@@ -75,6 +76,11 @@ class SimWindow : public QMainWindow {
   // Autonomous mode: the stored model the navigator classifies contacts with, or an empty name
   // for the Bug2 baseline that treats the skin as a bumper. Lists the database's models again.
   void setNavigatorModel(const QString& model);
+  // The navigator's status source: a stored model (`model`), the simulator's truth (the ceiling,
+  // as `tactile navigate --status truth`) or the bumper baseline.
+  void setNavigatorSource(nav::StatusSource source, const QString& model = QString());
+  nav::StatusSource navigatorSource() const;
+  // The stored models offered, and an empty name for the bumper baseline.
   QStringList navigatorModels() const;
   ExperimentPanel* experimentPanel() const { return experiment_; }
   // Starts a new run from the controls (the previous one, if running, ends as gave-up); the run
