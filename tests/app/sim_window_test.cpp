@@ -59,17 +59,38 @@ void writeCommandFile(const QString& path, std::size_t steps, double v, double o
   if (!written) qFatal("%s", written.errorText().c_str());
 }
 
+// `tactile navigate`'s run on the chapter-5 scene from seed `seed`'s start with at most
+// `maxSteps` steps: what a window's autonomous run must equal.
+Result<nav::NavigateResult> navigateChapter5(nav::StatusSource source, std::uint64_t seed,
+                                             std::size_t maxSteps) {
+  auto scene = sim::loadScene("chapter5");
+  if (!scene) return scene.error();
+  auto world = std::make_shared<const sim::World>(std::move(scene.value()));
+  nav::NavigatorConfig config;
+  config.source = source;
+  nav::NavigateOptions options;
+  options.maxSteps = maxSteps;
+  options.seed = seed;
+  return nav::navigate(world, "chapter5", nav::drawStart(world, seed), world->scene().goal, config,
+                       options, true);
+}
+
+// The real workbench's process, on its own settings (not the user's) and offscreen.
+void isolateWorkbench(QProcess& child, const QTemporaryDir& dir) {
+  QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
+  env.insert(QStringLiteral("QT_QPA_PLATFORM"), QStringLiteral("offscreen"));
+  env.insert(QStringLiteral("HOME"), dir.path());  // its own settings
+  env.insert(QStringLiteral("XDG_CONFIG_HOME"), dir.filePath(QStringLiteral("config")));
+  child.setProcessEnvironment(env);
+}
+
 // Starts the real workbench on `db` with `args`, waits until the database holds at least
 // `minSteps` steps of one run, then kills it with SIGKILL. Returns the steps seen before the kill
 // (fewer than `minSteps` when the window stored too few within 30 s; -1 when the process failed).
 std::int64_t killWorkbenchAfterSteps(const QTemporaryDir& dir, const QString& db,
                                      const QStringList& args, std::int64_t minSteps) {
   QProcess child;
-  QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
-  env.insert(QStringLiteral("QT_QPA_PLATFORM"), QStringLiteral("offscreen"));
-  env.insert(QStringLiteral("HOME"), dir.path());  // its own settings
-  env.insert(QStringLiteral("XDG_CONFIG_HOME"), dir.filePath(QStringLiteral("config")));
-  child.setProcessEnvironment(env);
+  isolateWorkbench(child, dir);
   child.start(QStringLiteral(TACTILE_WORKBENCH), QStringList{QStringLiteral("--db"), db} + args);
   if (!child.waitForStarted(10000)) return -1;
   auto ws = openWorkspace(db);
@@ -395,16 +416,7 @@ class SimWindowTest : public QObject {
     const std::size_t steps = kept->stepCount();
     QVERIFY(steps >= static_cast<std::size_t>(seen));
     // Every step kept has the navigator's columns, equal to tactile navigate's first steps.
-    auto scene = sim::loadScene("chapter5");
-    QVERIFY(scene.ok());
-    auto world = std::make_shared<const sim::World>(std::move(scene.value()));
-    nav::NavigatorConfig config;
-    config.source = nav::StatusSource::Bumper;
-    nav::NavigateOptions options;
-    options.maxSteps = steps;
-    options.seed = 9;
-    auto reference = nav::navigate(world, "chapter5", nav::drawStart(world, 9), world->scene().goal,
-                                   config, options, true);
+    auto reference = navigateChapter5(nav::StatusSource::Bumper, 9, steps);
     QVERIFY(reference.ok());
     QCOMPARE(reference->run.stepCount(), steps);  // the navigator had not finished there
     QVERIFY(kept->extraColumns == reference->run.extraColumns);
@@ -491,17 +503,8 @@ class SimWindowTest : public QObject {
     QCOMPARE(*stored->meta("status_source"), std::string("bumper"));
     QCOMPARE(*stored->meta("seed"), std::to_string(kSeed));
 
-    auto scene = sim::loadScene("chapter5");
-    QVERIFY(scene.ok());
-    auto world = std::make_shared<const sim::World>(std::move(scene.value()));
-    nav::NavigatorConfig config;
-    config.source = nav::StatusSource::Bumper;
-    nav::NavigateOptions options;
-    options.maxSteps = static_cast<std::size_t>(kLimitSeconds / 0.1 + 0.5);
-    options.seed = kSeed;
-    const Pose2d start = nav::drawStart(world, kSeed);
-    auto reference =
-        nav::navigate(world, "chapter5", start, world->scene().goal, config, options, true);
+    auto reference = navigateChapter5(nav::StatusSource::Bumper, kSeed,
+                                      static_cast<std::size_t>(kLimitSeconds / 0.1 + 0.5));
     QVERIFY(reference.ok());
     QCOMPARE(std::string(runOutcomeName(reference->outcome)), runs->front().outcome);
     QCOMPARE(reference->run.stepCount(), steps);
@@ -553,16 +556,8 @@ class SimWindowTest : public QObject {
     const RunData* run = s->run();
     QCOMPARE(*run->meta("status_source"), std::string("truth"));
 
-    auto scene = sim::loadScene("chapter5");
-    QVERIFY(scene.ok());
-    auto world = std::make_shared<const sim::World>(std::move(scene.value()));
-    nav::NavigatorConfig config;
-    config.source = nav::StatusSource::Truth;
-    nav::NavigateOptions options;
-    options.maxSteps = static_cast<std::size_t>(kLimitSeconds / 0.1 + 0.5);
-    options.seed = kSeed;
-    auto reference = nav::navigate(world, "chapter5", nav::drawStart(world, kSeed),
-                                   world->scene().goal, config, options, true);
+    auto reference = navigateChapter5(nav::StatusSource::Truth, kSeed,
+                                      static_cast<std::size_t>(kLimitSeconds / 0.1 + 0.5));
     QVERIFY(reference.ok());
     QCOMPARE(*s->outcome(), reference->outcome);
     QCOMPARE(run->stepCount(), reference->run.stepCount());
@@ -579,11 +574,7 @@ class SimWindowTest : public QObject {
     { auto ws = openWorkspace(db); }
     const auto workbench = [&](const QStringList& args, QString* err) {
       QProcess child;
-      QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
-      env.insert(QStringLiteral("QT_QPA_PLATFORM"), QStringLiteral("offscreen"));
-      env.insert(QStringLiteral("HOME"), dir.path());
-      env.insert(QStringLiteral("XDG_CONFIG_HOME"), dir.filePath(QStringLiteral("config")));
-      child.setProcessEnvironment(env);
+      isolateWorkbench(child, dir);
       child.start(
           QStringLiteral(TACTILE_WORKBENCH),
           QStringList{QStringLiteral("--db"), db, QStringLiteral("--simulate"),
