@@ -338,6 +338,7 @@ struct Navigator::Impl {
   // Plan drive: how far to back off, where the last contact ahead was and how many in a row were
   // there, and the way the next turn in place must go (0: toward the plan).
   double driveBack = kDriveBackUnits;
+  double driveAway = -1.0;  // -1: backing off a contact ahead; +1: moving forward off one behind
   Vec2 driveHitAt = Vec2(1e300, 1e300);
   int driveRepeats = 0;
   double driveSpin = 0.0;
@@ -1320,10 +1321,16 @@ struct Navigator::Impl {
   Command planDrive() {
     ++phaseSteps;
     if (strategy == Strategy::CheckContact) {
-      const bool stop = anyContact({SensorGroup::Back, SensorGroup::RearLeftCorner,
-                                    SensorGroup::RearRightCorner}) ||
-                        (blockedStreak > 0 && last.v < 0.0);
-      if (phaseUnits < driveBack && !stop && phaseSteps < 60) return {-0.5 * cruise(), 0.0};
+      // Moving off the contact: stopped by a contact or a blocked step the way it moves.
+      const bool stop = driveAway < 0.0
+                            ? anyContact({SensorGroup::Back, SensorGroup::RearLeftCorner,
+                                          SensorGroup::RearRightCorner}) ||
+                                  (blockedStreak > 0 && last.v < 0.0)
+                            : anyContact({SensorGroup::Front, SensorGroup::FrontLeftCorner,
+                                          SensorGroup::FrontRightCorner}) ||
+                                  (blockedStreak > 0 && last.v > 0.0);
+      if (phaseUnits < driveBack && !stop && phaseSteps < 60)
+        return {driveAway * 0.5 * cruise(), 0.0};
       setStrategy(Strategy::HeadToDestination);
       updatePlan(true);
     }
@@ -1439,9 +1446,16 @@ struct Navigator::Impl {
     driveHitAt = p;
     driveBack = std::min(kDriveBackUnits + kDriveBackMoreUnits * driveRepeats, kDriveBackMaxUnits);
     if (last.v == 0.0 && last.omega != 0.0) driveSpin = -last.omega;
+    // Off the contact: back off from what is ahead; forward from what the back alone touches (a
+    // turn in place blocked by the back corners sweeping into a wall behind).
+    using G = SensorGroup;
+    driveAway = anyContact({G::Back, G::RearLeftCorner, G::RearRightCorner}) &&
+                        !anyContact({G::Front, G::FrontLeftCorner, G::FrontRightCorner})
+                    ? 1.0
+                    : -1.0;
     setStrategy(Strategy::CheckContact, Phase::Back);
     ++phaseSteps;
-    return {-0.5 * cruise(), 0.0};
+    return {driveAway * 0.5 * cruise(), 0.0};
   }
 
   Command escapeMove() {

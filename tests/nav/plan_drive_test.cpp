@@ -131,6 +131,34 @@ TEST(PlanDrive, SideEasingFollowsTheStatus) {
   }
 }
 
+// A turn in place blocked by the back sweeping into something behind (only the back groups in
+// contact): the robot moves forward off it, not back into it; blocked with the front in contact it
+// backs off as ever.
+TEST(PlanDrive, BlockedTurnWithTheBackTouchingMovesForward) {
+  for (bool back : {true, false}) {
+    Script s(false, Vec2(-2000.0, 0.0), true);  // the goal behind: it turns in place
+    Command c{};
+    for (int k = 0; k < 3; ++k)
+      c = s.step(Values{});
+    ASSERT_EQ(c.v, 0.0);
+    ASSERT_NE(c.omega, 0.0);
+    Values v{};
+    if (back)
+      press(v, {22, 23, 30}, 2.0);
+    else
+      press(v, {3, 4}, 2.0);
+    c = s.step(v, true);
+    EXPECT_EQ(s.nav().strategy(), Strategy::CheckContact) << "back " << back;
+    if (back)
+      EXPECT_GT(c.v, 0.0);
+    else
+      EXPECT_LT(c.v, 0.0);
+    // It keeps moving that way while nothing stops it.
+    c = s.step(Values{});
+    EXPECT_EQ(c.v > 0.0, back) << "back " << back;
+  }
+}
+
 // A front corner in contact is a contact ahead when a dome of it facing ahead touches (the one 30
 // degrees off the heading), however lightly; touched only on its dome facing the side (60 degrees
 // off), however hard, the robot grazes something beside it: it eases away and drives on. Either
