@@ -76,7 +76,7 @@ constexpr double kSearchPitchUnits = 80.0;
 constexpr double kSearchRadiusUnits = 400.0;
 // Plan drive's search: a spiral point counts as reached within kSearchReachUnits of the body
 // centre and is passed over after kSearchPointSteps; the points lie kSearchSpacingUnits apart.
-constexpr double kSearchReachUnits = 25.0;
+constexpr double kSearchReachUnits = 15.0;
 constexpr std::size_t kSearchPointSteps = 150;
 constexpr double kSearchSpacingUnits = 40.0;
 // The touch map: replan at most every kReplanSteps steps when the map changed, and at least every
@@ -130,7 +130,10 @@ constexpr double kDriveRepeatUnits = 40.0;
 constexpr double kAheadDomeCosine = 0.7071;
 // Plan drive: a contact ahead with the goal within kGoalBehindUnits of the body centre and on a
 // closed cell of the map starts the search round the goal.
+// So does a contact ahead there that repeats the one before (within kDriveRepeatUnits) for the
+// kGoalBehindRepeats-th time (the fourth contact in a row at one place).
 constexpr double kGoalBehindUnits = 150.0;
+constexpr int kGoalBehindRepeats = 3;
 // Bug2's bumper following: the arc back toward an obstacle no longer touched.
 constexpr double kBumperArcUnits = 90.0;
 
@@ -1392,7 +1395,10 @@ struct Navigator::Impl {
   // stand; its odometry has drifted (or the goal is walled in).
   bool goalBehindContact() const {
     if ((goal - bodyCentre()).norm() > kGoalBehindUnits) return false;
-    return touch.closed(goal);
+    if (touch.closed(goal)) return true;
+    // Or the contacts keep stopping the robot at one place there: as near as it comes.
+    return (position() - driveHitAt).norm() < kDriveRepeatUnits &&
+           driveRepeats + 1 >= kGoalBehindRepeats;
   }
 
   // The plan's farthest point in clear sight (or the goal when nothing touched is in the way).
