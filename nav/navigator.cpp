@@ -459,10 +459,7 @@ struct Navigator::Impl {
       const bool left = side.firstSensor == analysis::kSides[1].firstSensor;
       const bool right = side.firstSensor == analysis::kSides[3].firstSensor;
       if (!left && !right) continue;
-      // A side its status source calls NoContact has no hole to measure.
       const SensorGroup sideG = left ? SensorGroup::Left : SensorGroup::Right;
-      if (status[static_cast<std::size_t>(groupIndex(sideG))].kind == StatusKind::NoContact)
-        continue;
       const analysis::HoleScan scan =
           analysis::scanSide(contact, side.firstSensor, side.count, domes);
       if (scan.holes.empty()) continue;
