@@ -74,6 +74,11 @@ constexpr int kCheckBudgetSteps = 300;
 // Arrived by odometry without reaching the goal: the search spiral round it.
 constexpr double kSearchPitchUnits = 80.0;
 constexpr double kSearchRadiusUnits = 400.0;
+// Plan drive's search: a spiral point counts as reached within kSearchReachUnits of the body
+// centre and is passed over after kSearchPointSteps; the points lie kSearchSpacingUnits apart.
+constexpr double kSearchReachUnits = 15.0;
+constexpr std::size_t kSearchPointSteps = 150;
+constexpr double kSearchSpacingUnits = 40.0;
 // The touch map: replan at most every kReplanSteps steps when the map changed, and at least every
 // kReplanIdleSteps; Head to Destination steers to the farthest plan point in sight up to
 // kLookAheadUnits along the plan. The body clears touched cells within kClearUnits of three
@@ -113,17 +118,22 @@ constexpr double kDriveClearInsetUnits = 40.0;
 constexpr double kDriveLookAheadUnits = 150.0;
 constexpr double kDriveTurnRadians = 0.5;
 // Plan drive, at a contact ahead: back off kDriveBackUnits (kDriveBackMoreUnits more for every
-// contact within kDriveRepeatUnits of the last one, up to kDriveBackMaxUnits), then replan. A
-// front corner pressed above kDriveCornerPressed counts as a contact ahead; lighter, it and the
-// sides only ease the robot away.
+// contact within kDriveRepeatUnits of the last one, up to kDriveBackMaxUnits), then replan.
 constexpr double kDriveBackUnits = 20.0;
 constexpr double kDriveBackMoreUnits = 15.0;
 constexpr double kDriveBackMaxUnits = 80.0;
 constexpr double kDriveRepeatUnits = 40.0;
-constexpr double kDriveCornerPressed = 1.0;
+// Plan drive: a front corner in contact is a contact ahead when a dome of it facing ahead touches:
+// one whose outward normal lies within this cosine of the heading (each front corner has one dome
+// 30 degrees off the heading and one 60 degrees off it); touched only on the other, it and the
+// sides only ease the robot away.
+constexpr double kAheadDomeCosine = 0.7071;
 // Plan drive: a contact ahead with the goal within kGoalBehindUnits of the body centre and on a
 // closed cell of the map starts the search round the goal.
+// So does a contact ahead there that repeats the one before (within kDriveRepeatUnits) for the
+// kGoalBehindRepeats-th time (the fourth contact in a row at one place).
 constexpr double kGoalBehindUnits = 150.0;
+constexpr int kGoalBehindRepeats = 3;
 // Bug2's bumper following: the arc back toward an obstacle no longer touched.
 constexpr double kBumperArcUnits = 90.0;
 
@@ -200,6 +210,16 @@ std::optional<ContactStatus> parseStatusText(std::string_view text) {
     return ContactStatus{StatusKind::Hole, w};
   }
   return std::nullopt;
+}
+
+Vec2 domeContactPoint(const DomePlacement& dome, double normalValue, double shearValue,
+                      double domeRadiusUnits) {
+  const Vec2 normal = toVec(dome.normal);
+  const Vec2 tangent(-normal.y(), normal.x());
+  const double push = std::hypot(normalValue, shearValue);
+  if (!(push > 0.0) || !std::isfinite(push)) return toVec(dome.centre) + domeRadiusUnits * normal;
+  const Vec2 towards = (normalValue * normal - shearValue * tangent) / push;
+  return toVec(dome.centre) + std::max(domeRadiusUnits - push, 0.0) * towards;
 }
 
 Observation observe(const sim::Simulator& simulator, std::size_t step, const Pose2d& start,
@@ -321,9 +341,14 @@ struct Navigator::Impl {
   // Plan drive: how far to back off, where the last contact ahead was and how many in a row were
   // there, and the way the next turn in place must go (0: toward the plan).
   double driveBack = kDriveBackUnits;
+  double driveAway = -1.0;  // -1: backing off a contact ahead; +1: moving forward off one behind
   Vec2 driveHitAt = Vec2(1e300, 1e300);
   int driveRepeats = 0;
   double driveSpin = 0.0;
+  std::array<double, kSensorCount> previousNormal{};
+  // Plan drive, searching round the goal: the spiral point it drives to and since when.
+  std::optional<Vec2> searchAim;
+  std::size_t searchAimStep = 0;
 
   const std::array<double, kValuesPerStep>* values = nullptr;
 
@@ -382,6 +407,26 @@ struct Navigator::Impl {
   ContactStatus groupStatus(SensorGroup g) const {
     return status[static_cast<std::size_t>(groupIndex(g))];
   }
+  // Plan drive: whether a group touches something is its status's to say (per the source: the
+  // models' online decision, the simulator's truth); the readings only say where.
+  bool inContact(SensorGroup g) const {
+    const StatusKind k = groupStatus(g).kind;
+    return k != StatusKind::NoContact && k != StatusKind::Undecided;
+  }
+  bool anyContact(std::initializer_list<SensorGroup> groups) const {
+    return std::any_of(groups.begin(), groups.end(), [&](SensorGroup g) { return inContact(g); });
+  }
+  // A front corner in contact meets something ahead (rather than grazing it beside the robot)
+  // when a dome of it facing ahead touches.
+  bool cornerAhead(SensorGroup corner) const {
+    if (!inContact(corner)) return false;
+    const GroupInfo& info = groupInfo(corner);
+    for (int s = info.firstSensor; s < info.firstSensor + info.sensorCount; ++s)
+      if (domes[static_cast<std::size_t>(s)].normal.x > kAheadDomeCosine &&
+          normalOf(*values, s) > 0.0)
+        return true;
+    return false;
+  }
 
   void setStrategy(Strategy s, Phase p = Phase::None) {
     if (s == Strategy::CheckContact && p == Phase::Back &&
@@ -414,6 +459,7 @@ struct Navigator::Impl {
       const bool left = side.firstSensor == analysis::kSides[1].firstSensor;
       const bool right = side.firstSensor == analysis::kSides[3].firstSensor;
       if (!left && !right) continue;
+      const SensorGroup sideG = left ? SensorGroup::Left : SensorGroup::Right;
       const analysis::HoleScan scan =
           analysis::scanSide(contact, side.firstSensor, side.count, domes);
       if (scan.holes.empty()) continue;
@@ -423,8 +469,7 @@ struct Navigator::Impl {
       for (const analysis::Hole& h : scan.holes)
         if (h.widthUnits > best->widthUnits) best = &h;
       const double width = 0.5 * (best->widthUnits + best->freeSpanUnits);
-      status[static_cast<std::size_t>(groupIndex(left ? SensorGroup::Left : SensorGroup::Right))] =
-          ContactStatus{StatusKind::Hole, width};
+      status[static_cast<std::size_t>(groupIndex(sideG))] = ContactStatus{StatusKind::Hole, width};
       if (wall >= 0 && (strategy == Strategy::FollowWall || strategy == Strategy::GoStraight) &&
           left == wallOnLeft) {
         const Vec2 centre =
@@ -462,6 +507,8 @@ struct Navigator::Impl {
     }
     return TouchMap(startPoint, goal, m);
   }
+  // Where plans lead: the goal, or while plan drive searches round it the spiral point.
+  Vec2 aim() const { return searchAim ? *searchAim : goal; }
   Vec2 bodyPoint(double x) const { return sim::bodyToWorld(odo, Vec2(x, 0.0)); }
   Vec2 bodyCentre() const {
     return bodyPoint(0.5 * (cfg.geometry.frontX() + cfg.geometry.backX()));
@@ -481,13 +528,31 @@ struct Navigator::Impl {
         touch.clear(bodyPoint(x), radius);
     }
     for (int s = 0; s < kSensorCount; ++s) {
-      if (normalOf(*values, s) <= kTouching) continue;
-      const StatusKind k = status[static_cast<std::size_t>(groupIndex(groupOfSensor(s)))].kind;
-      if (k == StatusKind::NoContact) continue;
+      // Plan drive: every reading dome of a group its status calls a contact marks; the thesis
+      // strategies with the map: the domes above kTouching of such a group.
+      if (normalOf(*values, s) <= (planMode() ? 0.0 : kTouching)) continue;
+      const SensorGroup g = groupOfSensor(s);
+      if (planMode() ? !inContact(g) : groupStatus(g).kind == StatusKind::NoContact) continue;
+      // Plan drive: a reading that fell since the step before is a dome leaving what it touched
+      // (or its value decaying after the release): where the dome is now is not where that is.
+      if (planMode() && normalOf(*values, s) < previousNormal[static_cast<std::size_t>(s)])
+        continue;
       const DomePlacement& d = domes[static_cast<std::size_t>(s)];
-      const Vec2 surface = toVec(d.centre) + cfg.geometry.domeRadiusUnits * toVec(d.normal);
+      // Plan drive: where the normal and shear values put the touch; otherwise a dome radius out
+      // along the dome's normal.
+      const Vec2 surface =
+          planMode() ? contactPoint(s)
+                     : Vec2(toVec(d.centre) + cfg.geometry.domeRadiusUnits * toVec(d.normal));
       touch.mark(sim::bodyToWorld(odo, surface));
     }
+    for (int s = 0; s < kSensorCount; ++s)
+      previousNormal[static_cast<std::size_t>(s)] = normalOf(*values, s);
+  }
+
+  Vec2 contactPoint(int sensor) const {
+    return domeContactPoint(domes[static_cast<std::size_t>(sensor)], normalOf(*values, sensor),
+                            (*values)[static_cast<std::size_t>(shearOffset(sensor))],
+                            cfg.geometry.domeRadiusUnits);
   }
 
   // Replans when the map has changed (at most every kReplanSteps) or the plan is old; `force`
@@ -499,7 +564,7 @@ struct Navigator::Impl {
         age < kReplanIdleSteps)
       return;
     bool snapFailed = false;
-    plan = touch.plan(bodyCentre(), goal, 80.0, &snapFailed);
+    plan = touch.plan(bodyCentre(), aim(), 80.0, &snapFailed);
     planned = true;
     planRevision = touch.revision();
     planStep = stepIndex;
@@ -568,16 +633,13 @@ struct Navigator::Impl {
 
   // Arrived by odometry while the run goes on: the odometry has drifted (blocked steps). Search
   // round the goal on a spiral of pitch kSearchPitchUnits out to kSearchRadiusUnits (then again),
-  // skipping ahead on the spiral at a contact.
+  // skipping ahead on the spiral at a contact. (Plan drive searches by its plans: planSearch.)
   Command searchGoal() {
     if (escapeSteps > 0) {
       --escapeSteps;
       return escape;
     }
-    // Plan drive: a blocked step while backing off is not met by backing on (the robot would push
-    // its back into what it touches for the rest of the run).
-    const bool blockedBack = planMode() && blockedStreak > 0 && last.v < 0.0;
-    if ((frontMax() > kTouching || blockedStreak > 0) && !blockedBack) {
+    if (frontMax() > kTouching || blockedStreak > 0) {
       searchAngle += 0.8;
       escape = {-0.5 * cruise(), 0.0};
       escapeSteps = 4;
@@ -607,7 +669,24 @@ struct Navigator::Impl {
   Command nextEscape() {
     static constexpr std::array<std::array<double, 2>, 6> kMoves{
         {{-0.5, 0.0}, {0.0, 0.6}, {-0.4, -0.6}, {0.6, 0.0}, {0.0, -0.6}, {-0.4, 0.6}}};
-    const auto& m = kMoves[static_cast<std::size_t>(escapeIndex++) % kMoves.size()];
+    // Plan drive adds arcs about points of the rear axle's line close to the body (radius about
+    // 20 and 40 units, forward and backward, either way): a robot wedged across a passage between
+    // a front corner and the opposite rear corner frees both only by such a pivot.
+    static constexpr std::array<std::array<double, 2>, 12> kDriveMoves{{{-0.5, 0.0},
+                                                                        {0.0, 0.6},
+                                                                        {-0.4, -0.6},
+                                                                        {0.6, 0.0},
+                                                                        {0.0, -0.6},
+                                                                        {-0.4, 0.6},
+                                                                        {0.2, 0.6},
+                                                                        {-0.2, -0.6},
+                                                                        {0.2, -0.6},
+                                                                        {-0.2, 0.6},
+                                                                        {0.4, 0.6},
+                                                                        {0.4, -0.6}}};
+    const auto& m = planMode()
+                        ? kDriveMoves[static_cast<std::size_t>(escapeIndex++) % kDriveMoves.size()]
+                        : kMoves[static_cast<std::size_t>(escapeIndex++) % kMoves.size()];
     // Turns are mirrored so the first turn goes away from the followed wall.
     escape = {m[0] * cruise(), m[1] * away() * cfg.turnRadiansPerSecond / 0.8 * 0.8};
     escapeSteps = 4;
@@ -1171,6 +1250,11 @@ struct Navigator::Impl {
     }
     if (arrived) {
       integrated = integratedOf();
+      if (planMode()) {
+        Command c = planSearch();
+        if (finished) c = {};
+        return last = c;
+      }
       return last = searchGoal();
     }
     // A Check Contact that has not settled in kCheckBudgetSteps (a pocket it keeps backing out
@@ -1237,24 +1321,29 @@ struct Navigator::Impl {
   Command planDrive() {
     ++phaseSteps;
     if (strategy == Strategy::CheckContact) {
-      const bool stop = backMax() > kTouching || (blockedStreak > 0 && last.v < 0.0);
-      if (phaseUnits < driveBack && !stop && phaseSteps < 60) return {-0.5 * cruise(), 0.0};
+      // Moving off the contact: stopped by a contact or a blocked step the way it moves.
+      const bool stop = driveAway < 0.0
+                            ? anyContact({SensorGroup::Back, SensorGroup::RearLeftCorner,
+                                          SensorGroup::RearRightCorner}) ||
+                                  (blockedStreak > 0 && last.v < 0.0)
+                            : anyContact({SensorGroup::Front, SensorGroup::FrontLeftCorner,
+                                          SensorGroup::FrontRightCorner}) ||
+                                  (blockedStreak > 0 && last.v > 0.0);
+      if (phaseUnits < driveBack && !stop && phaseSteps < 60)
+        return {driveAway * 0.5 * cruise(), 0.0};
       setStrategy(Strategy::HeadToDestination);
       updatePlan(true);
     }
     strategy = Strategy::HeadToDestination;
     using G = SensorGroup;
-    const double flc = groupMax(*values, G::FrontLeftCorner);
-    const double frc = groupMax(*values, G::FrontRightCorner);
-    const bool ahead = groupMax(*values, G::Front) > kTouching ||
-                       std::max(flc, frc) > kDriveCornerPressed ||
-                       (blockedStreak > 0 && last.v >= 0.0);
-    if (ahead && goalBehindContact()) {
+    const bool ahead = inContact(G::Front) || cornerAhead(G::FrontLeftCorner) ||
+                       cornerAhead(G::FrontRightCorner) || (blockedStreak > 0 && last.v >= 0.0);
+    if (ahead && !arrived && goalBehindContact()) {
       // As near as the odometry lets it come: search round the goal from here.
       arrived = true;
       searchAngle = 0.0;
       escapeSteps = 0;
-      return searchGoal();
+      return planSearch();
     }
     if (ahead) return driveBackOff();
     if (noStart && !moved.empty()) {
@@ -1290,13 +1379,11 @@ struct Navigator::Impl {
     driveSpin = 0.0;
     Command c{std::abs(err) < 0.2 ? cruise() : 0.6 * cruise(), std::clamp(2.0 * err, -turn, turn)};
     // A side or a front corner brushing something: ease away from it.
-    const double l =
-        std::max({groupMax(*values, G::Left), groupMax(*values, G::RearLeftCorner), flc});
-    const double r =
-        std::max({groupMax(*values, G::Right), groupMax(*values, G::RearRightCorner), frc});
+    const bool l = anyContact({G::Left, G::RearLeftCorner, G::FrontLeftCorner});
+    const bool r = anyContact({G::Right, G::RearRightCorner, G::FrontRightCorner});
     const double ease = 2.0 * cfg.slightTurnRadiansPerSecond;
-    if (l > kTouching && r <= kTouching) c.omega = std::min(c.omega, -ease);
-    if (r > kTouching && l <= kTouching) c.omega = std::max(c.omega, ease);
+    if (l && !r) c.omega = std::min(c.omega, -ease);
+    if (r && !l) c.omega = std::max(c.omega, ease);
     return c;
   }
 
@@ -1305,15 +1392,52 @@ struct Navigator::Impl {
   // stand; its odometry has drifted (or the goal is walled in).
   bool goalBehindContact() const {
     if ((goal - bodyCentre()).norm() > kGoalBehindUnits) return false;
-    return touch.closed(goal);
+    if (touch.closed(goal)) return true;
+    // Or the contacts keep stopping the robot at one place there: as near as it comes.
+    return (position() - driveHitAt).norm() < kDriveRepeatUnits &&
+           driveRepeats + 1 >= kGoalBehindRepeats;
   }
 
   // The plan's farthest point in clear sight (or the goal when nothing touched is in the way).
   Vec2 driveTarget() const {
-    if (!plan || plan->points.size() < 2) return goal;
+    if (!plan || plan->points.size() < 2) return aim();
     const Vec2 p = touch.lookAhead(*plan, bodyCentre(), kDriveLookAheadUnits);
-    if ((p - plan->points.back()).norm() < 1e-9) return goal;
+    if ((p - plan->points.back()).norm() < 1e-9) return aim();
     return p;
+  }
+
+  // Plan drive, arrived by odometry while the run goes on: search round the goal on the spiral
+  // (pitch kSearchPitchUnits, out to kSearchRadiusUnits) by driving to its points one after the
+  // other on plans of the touch map, as to the goal. A point on a closed cell, one the plan finds
+  // no way to, and one not reached in kSearchPointSteps steps are passed over; kMapSearchRounds
+  // spirals without the goal end the run as unreachable.
+  Command planSearch() {
+    for (int i = 0; i < 2000; ++i) {
+      const double r = kSearchPitchUnits * searchAngle / (2.0 * kPi);
+      if (r > kSearchRadiusUnits) {
+        searchAngle = 0.0;
+        searchAim.reset();
+        if (++searchRounds >= kMapSearchRounds) {
+          finished = RunOutcome::Unreachable;
+          return {};
+        }
+        continue;
+      }
+      const Vec2 point = goal + r * Vec2(std::cos(searchAngle), std::sin(searchAngle));
+      const bool current = searchAim && (*searchAim - point).norm() < 1e-9;
+      bool pass = (point - bodyCentre()).norm() < kSearchReachUnits || touch.closed(point);
+      if (!pass && current)
+        pass = (noWay && !noStart) || stepIndex - searchAimStep > kSearchPointSteps;
+      if (!pass && !current) {
+        searchAim = point;
+        searchAimStep = stepIndex;
+        updatePlan(true);
+        pass = noWay && !noStart;
+      }
+      if (!pass) break;
+      searchAngle += std::max(0.05, kSearchSpacingUnits / std::max(r, 20.0));
+    }
+    return choose();
   }
 
   // A contact ahead: its domes are marked (updateMap); back off, the further the more often the
@@ -1325,9 +1449,16 @@ struct Navigator::Impl {
     driveHitAt = p;
     driveBack = std::min(kDriveBackUnits + kDriveBackMoreUnits * driveRepeats, kDriveBackMaxUnits);
     if (last.v == 0.0 && last.omega != 0.0) driveSpin = -last.omega;
+    // Off the contact: back off from what is ahead; forward from what the back alone touches (a
+    // turn in place blocked by the back corners sweeping into a wall behind).
+    using G = SensorGroup;
+    driveAway = anyContact({G::Back, G::RearLeftCorner, G::RearRightCorner}) &&
+                        !anyContact({G::Front, G::FrontLeftCorner, G::FrontRightCorner})
+                    ? 1.0
+                    : -1.0;
     setStrategy(Strategy::CheckContact, Phase::Back);
     ++phaseSteps;
-    return {-0.5 * cruise(), 0.0};
+    return {driveAway * 0.5 * cruise(), 0.0};
   }
 
   Command escapeMove() {

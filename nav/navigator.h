@@ -137,6 +137,14 @@ struct NavigatorConfig {
 struct Observation : sim::Observation {
   const std::array<ContactClass, kGroupCount>* truth = nullptr;
 };
+// Where a dome touches, in the body frame, from its normal and shear values: the simulator pushes
+// a dome back along the line from the touched point to its centre (docs/sim.md#dome-model), so
+// the point lies in the direction n * normal - s * tangent (tangent: the normal turned a quarter
+// counter-clockwise) from the centre, the dome radius less the push, sqrt(n^2 + s^2), away. A dome
+// reading nothing gives the point a dome radius out along its normal.
+Vec2 domeContactPoint(const DomePlacement& dome, double normalValue, double shearValue,
+                      double domeRadiusUnits);
+
 // The observation of the simulator's current step (values, blocked flag, truth).
 Observation observe(const sim::Simulator& simulator, std::size_t step, const Pose2d& start,
                     const Vec2& goal);

@@ -58,8 +58,12 @@ class Script {
   }
   Command step(const Values& values, bool blocked = false,
                ContactClass touching = ContactClass::Wall) {
+    return step(values, truthOf(values, touching), blocked);
+  }
+  // A step whose status (the truth source's classes) is given apart from the readings.
+  Command step(const Values& values, const Truth& truth, bool blocked = false) {
     values_ = values;
-    truth_ = truthOf(values, touching);
+    truth_ = truth;
     Observation o;
     o.step = step_++;
     o.dtSeconds = 0.1;
