@@ -423,42 +423,34 @@ PlannedRun planTrainingRun(std::uint64_t seed, std::size_t index) {
   const std::size_t round = index / kTrainingPlanKinds;
   PlannedRun run;
   switch (kind) {
-    case 0: {
+    case 0:
+    case 1: {
       static constexpr std::array<const char*, 4> kScenes{"room1", "room2", "room3", "chapter5"};
-      run.sceneName = kScenes[round % kScenes.size()];
+      run.sceneName = kind == 0 ? kScenes[round % kScenes.size()]
+                                : "random:" + std::to_string(draw.integer(20, 60)) + ":" +
+                                      std::to_string(draw.next() % 100000);
       auto loaded = loadScene(run.sceneName);
       if (loaded) run.scene = std::move(loaded.value());
       const std::uint64_t driverSeed = draw.next();
       run.driver = makeDriver("wall-follow", driverSeed);
       run.options.seed = driverSeed;
       run.options.maxSteps = 3000;
-      run.kind = "wall-follow";
+      run.kind = kind == 0 ? "wall-follow" : "cluttered";
       return run;
     }
-    case 1:
     case 10:
     case 11: {
-      // Driving in a generated office map: the Bug-2 driver heads for the map's goal, meeting
-      // walls, door jambs, bumps and furniture on the way; the two wall followers of a round
-      // follow the walls on opposite sides (kind 11 on the left in even rounds) for the whole
-      // run, past the goal, as a wall-following robot scored in a room does. Map seeds stay below
-      // kFirstBenchmarkSceneSeed, which benchmarks keep for themselves.
+      // Driving in a generated office map: the Bug-2 driver or the wall follower heads for the
+      // map's goal, meeting walls, door jambs, bumps and furniture on the way. Map seeds stay
+      // below kFirstBenchmarkSceneSeed, which benchmarks keep for themselves.
       run.sceneName = "random:office:" + std::to_string(draw.next() % kFirstBenchmarkSceneSeed);
       auto loaded = loadScene(run.sceneName);
       if (loaded) run.scene = std::move(loaded.value());
       const std::uint64_t driverSeed = draw.next();
+      run.driver = makeDriver(kind == 10 ? "bug" : "wall-follow", driverSeed);
       run.options.seed = driverSeed;
       run.options.maxSteps = 4000;
-      if (kind == 10) {
-        run.driver = makeDriver("bug", driverSeed);
-        run.kind = "office bug";
-      } else {
-        const bool left = (round % 2 == 0) == (kind == 11);
-        run.driver =
-            makeDriver("wall-follow", driverSeed, left ? FollowSide::Left : FollowSide::Right);
-        run.options.stopAtGoal = false;
-        run.kind = "office wall-follow";
-      }
+      run.kind = kind == 10 ? "office bug" : "office wall-follow";
       return run;
     }
     case 2:

