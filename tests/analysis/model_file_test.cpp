@@ -183,8 +183,10 @@ TEST(ModelFileValidation, WrongFormat) {
 
 TEST(ModelFileValidation, WrongVersion) {
   json j = validModelJson();
-  j["version"] = 3;  // versions 1 and 2 read
-  EXPECT_NE(errorOf(j).find("version"), std::string::npos);
+  j["version"] = 4;  // versions 1 to 3 read
+  EXPECT_NE(errorOf(j).find("expected version 1 to 3"), std::string::npos) << errorOf(j);
+  j["version"] = 0;
+  EXPECT_NE(errorOf(j).find("expected version 1 to 3"), std::string::npos) << errorOf(j);
 }
 
 TEST(ModelFileValidation, MissingField) {
