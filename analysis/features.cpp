@@ -20,6 +20,8 @@ std::string_view featureKindName(FeatureKind kind) {
       return "normal+shear+touch";
     case FeatureKind::Context:
       return "normal+shear+touch+context";
+    case FeatureKind::Neighbours:
+      return "normal+shear+touch+context+neighbours";
   }
   return "normal";
 }
@@ -40,11 +42,19 @@ int featureDimension(SensorGroup group, FeatureKind kind) {
       return 2 * n + kTouchFlags;
     case FeatureKind::Context:
       return 3 * n + kTouchFlags + 3;
+    case FeatureKind::Neighbours:
+      return 3 * n + kTouchFlags + 3 + kNeighbourFeatures;
     case FeatureKind::Normal:
     case FeatureKind::Magnitude:
       break;
   }
   return n;
+}
+
+std::array<SensorGroup, 2> neighbourGroups(SensorGroup group) {
+  const int g = groupIndex(group);
+  return {kSensorGroups[static_cast<std::size_t>((g + 1) % kGroupCount)].group,
+          kSensorGroups[static_cast<std::size_t>((g + kGroupCount - 1) % kGroupCount)].group};
 }
 
 bool groupIsZero(const double* stepValues, SensorGroup group) {
@@ -94,12 +104,13 @@ void groupFeatures(const StepContext& context, SensorGroup group, FeatureKind ki
       case FeatureKind::NormalShear:
       case FeatureKind::NormalShearTouch:
       case FeatureKind::Context:
+      case FeatureKind::Neighbours:
         out[2 * i] = n;
         out[2 * i + 1] = s;
         break;
     }
   }
-  if (kind != FeatureKind::NormalShearTouch && kind != FeatureKind::Context) return;
+  if (kind != FeatureKind::NormalShearTouch && !usesHistory(kind)) return;
   // Flags, not values: the dead-path rule asks whether F, L and R touch, not how hard, and a
   // pocket of another width presses them differently.
   double* flags = out + 2 * info.sensorCount;
@@ -112,7 +123,7 @@ void groupFeatures(const StepContext& context, SensorGroup group, FeatureKind ki
       touches = values[normalOffset(other.firstSensor + i)] > 0.0;
     flags[c] = touches ? 1.0 : 0.0;
   }
-  if (kind != FeatureKind::Context) return;
+  if (!usesHistory(kind)) return;
   double* extra = flags + kTouchFlags;
   for (int i = 0; i < info.sensorCount; ++i) {
     const int sensor = info.firstSensor + i;
@@ -124,11 +135,24 @@ void groupFeatures(const StepContext& context, SensorGroup group, FeatureKind ki
   extra[info.sensorCount + 1] = context.omega;
   extra[info.sensorCount + 2] =
       static_cast<double>(std::min(context.contactSteps, kContextCap)) / kContextCap;
+  if (kind != FeatureKind::Neighbours) return;
+  double* side = extra + info.sensorCount + 3;
+  for (SensorGroup other : neighbourGroups(group)) {
+    const GroupInfo& o = groupInfo(other);
+    double largest = 0.0, sum = 0.0;
+    for (int i = 0; i < o.sensorCount; ++i) {
+      const double n = values[normalOffset(o.firstSensor + i)];
+      largest = std::max(largest, n);
+      sum += n;
+    }
+    *side++ = largest;
+    *side++ = sum / o.sensorCount;
+  }
 }
 
 void groupFeatures(const RunData& run, std::size_t step, SensorGroup group, FeatureKind kind,
                    double* out) {
-  if (kind != FeatureKind::Context) {
+  if (!usesHistory(kind)) {
     StepContext c;
     c.values = run.stepSensors(step);
     groupFeatures(c, group, kind, out);

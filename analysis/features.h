@@ -34,20 +34,36 @@ enum class FeatureKind : std::uint8_t {
   // v and omega, and the steps since the group's contact began (0 at its first step), capped at
   // kContextCap and divided by it.
   Context,
+  // normal+shear+touch+context, then the two neighbouring groups round the body (F: FLC and FRC,
+  // L: FLC and RLC, FLC: F and L, ...), each by the largest and the mean of its n values, the
+  // neighbour counter-clockwise first: the same contact seen from the side (a vertex on F's face
+  // presses a front corner group too; a wall's end passing back along L reaches RLC).
+  Neighbours,
 };
 inline constexpr int kTouchFlags = 3;
+inline constexpr int kNeighbourFeatures = 4;
 inline constexpr int kContextLag = 3;
 inline constexpr int kContextCap = 20;
-inline constexpr std::array<FeatureKind, 5> kFeatureKinds{
-    FeatureKind::Normal, FeatureKind::Magnitude, FeatureKind::NormalShear,
-    FeatureKind::NormalShearTouch, FeatureKind::Context};
+inline constexpr std::array<FeatureKind, 6> kFeatureKinds{
+    FeatureKind::Normal,           FeatureKind::Magnitude, FeatureKind::NormalShear,
+    FeatureKind::NormalShearTouch, FeatureKind::Context,   FeatureKind::Neighbours};
 
-// "normal", "magnitude", "normal+shear", "normal+shear+touch", "normal+shear+touch+context".
+// True for the kinds that read the steps before (the context and neighbours kinds).
+constexpr bool usesHistory(FeatureKind kind) {
+  return kind == FeatureKind::Context || kind == FeatureKind::Neighbours;
+}
+
+// The two groups next to `group` round the body: counter-clockwise (F -> FLC -> L -> ...) first.
+std::array<SensorGroup, 2> neighbourGroups(SensorGroup group);
+
+// "normal", "magnitude", "normal+shear", "normal+shear+touch", "normal+shear+touch+context",
+// "normal+shear+touch+context+neighbours".
 std::string_view featureKindName(FeatureKind kind);
 std::optional<FeatureKind> parseFeatureKind(std::string_view name);
 
 // Dimension D of a group's feature vector: sensorCount, 2 * sensorCount for normal+shear, plus
-// kTouchFlags with the touch flags, plus sensorCount + 3 with the context.
+// kTouchFlags with the touch flags, plus sensorCount + 3 with the context, plus
+// kNeighbourFeatures with the neighbours.
 int featureDimension(SensorGroup group, FeatureKind kind);
 
 // True when every n and s value of the group is exactly zero at `step`: NoContact by rule, and no

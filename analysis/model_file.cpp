@@ -1,5 +1,6 @@
 #include "analysis/model_file.h"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <set>
@@ -483,9 +484,14 @@ GroupModel modelOf(const json& v, const std::string& path) {
   const std::optional<FeatureKind> kind = parseFeatureKind(featureName);
   if (!kind) {
     fail(path + ".features",
-         "expected normal, magnitude, normal+shear, normal+shear+touch or "
-         "normal+shear+touch+context, found '" +
+         "expected normal, magnitude, normal+shear, normal+shear+touch, "
+         "normal+shear+touch+context or normal+shear+touch+context+neighbours, found '" +
              featureName + "'");
+  }
+  if (*kind == FeatureKind::Neighbours && fileVersion < modelVersionFor(*kind)) {
+    fail(path + ".features", featureName + " needs version " +
+                                 std::to_string(modelVersionFor(*kind)) + ", the file has " +
+                                 std::to_string(fileVersion));
   }
   model.features = *kind;
   const int dim = featureDimension(model.group, model.features);
@@ -597,11 +603,15 @@ const GroupModel* ModelBundle::find(SensorGroup group) const {
   return nullptr;
 }
 
+int modelVersionFor(FeatureKind features) {
+  return features == FeatureKind::Neighbours ? 3 : 2;
+}
+
 json modelToJson(const GroupModel& model) {
   const ClassModelSet& set = model.classifier;
   json out;
   out["format"] = kModelFormat;
-  out["version"] = kModelVersion;
+  out["version"] = modelVersionFor(model.features);
   out["group"] = groupInfo(model.group).shortName;
   out["features"] = featureKindName(model.features);
   json classes = json::array();
@@ -751,10 +761,13 @@ json bundleMetricsToJson(const ModelBundle& bundle) {
 json bundleToJson(const ModelBundle& bundle) {
   json out;
   out["format"] = kModelBundleFormat;
-  out["version"] = kModelVersion;
+  int version = 2;
   json models = json::array();
-  for (const GroupModel& m : bundle.models)
+  for (const GroupModel& m : bundle.models) {
+    version = std::max(version, modelVersionFor(m.features));
     models.push_back(modelToJson(m));
+  }
+  out["version"] = version;
   out["models"] = std::move(models);
   return out;
 }

@@ -109,18 +109,22 @@ struct GroupDefault {
 // group's emission weight (1, 0.3, 0.1; F, L, R also 0.03, F also over +touch and context, orders
 // 8 and 16), keeping only settings that lose at most 0.02 on the recipe's own held-out draws:
 // each step's evidence weighted by 0.3 won in F, L, R, RRC and B; FLC, RLC and FRC keep the plain
-// chain (weight 1).
+// chain (weight 1). Then the neighbours kind (context plus the largest and mean n value of the
+// two groups beside) against each group's setting, same order, floor and weight, median of fit
+// seeds 1-3: it won in F, L, RLC, RRC, R and FRC (scores +0.006 to +0.034), not in FLC; F and
+// FRC lost more than 0.02 with it on the recipe's own held-out draws and keep their setting.
 constexpr FeatureKind kShear = FeatureKind::NormalShear;
 constexpr FeatureKind kTouch = FeatureKind::NormalShearTouch;
 constexpr FeatureKind kContext = FeatureKind::Context;
+constexpr FeatureKind kNeighbours = FeatureKind::Neighbours;
 constexpr std::array<GroupDefault, kGroupCount> kGroupDefaults{{
     {SensorGroup::Front, kContext, 8, 0.01, 0.3},
     {SensorGroup::FrontLeftCorner, kContext, 8, 0.01, 1.0},
-    {SensorGroup::Left, kContext, 8, 0.01, 0.3},
-    {SensorGroup::RearLeftCorner, kContext, 8, 0.01, 1.0},
+    {SensorGroup::Left, kNeighbours, 8, 0.01, 0.3},
+    {SensorGroup::RearLeftCorner, kNeighbours, 8, 0.01, 1.0},
     {SensorGroup::Back, kShear, 4, 0.01, 0.3},
-    {SensorGroup::RearRightCorner, kContext, 8, 0.01, 0.3},
-    {SensorGroup::Right, kContext, 8, 0.01, 0.3},
+    {SensorGroup::RearRightCorner, kNeighbours, 8, 0.01, 0.3},
+    {SensorGroup::Right, kNeighbours, 8, 0.01, 0.3},
     {SensorGroup::FrontRightCorner, kTouch, 8, 0.01, 1.0},
 }};
 

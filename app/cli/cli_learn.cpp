@@ -206,7 +206,7 @@ FeatureKind parseFeatures(const std::string& name) {
   if (!f)
     throw UsageError("unknown --features '" + name +
                      "' (normal, magnitude, normal+shear, normal+shear+touch, "
-                     "normal+shear+touch+context)");
+                     "normal+shear+touch+context, normal+shear+touch+context+neighbours)");
   return *f;
 }
 
@@ -1044,8 +1044,9 @@ void registerLearnVerbs(CLI::App& app, CLI::App& /*bench*/) {
       o->description(o->get_description() + " (default: each group's own)");
     }
     cmd->add_option("--features", args->features,
-                    "normal, magnitude, normal+shear, normal+shear+touch or "
-                    "normal+shear+touch+context (default: each group's own)");
+                    "normal, magnitude, normal+shear, normal+shear+touch, "
+                    "normal+shear+touch+context or normal+shear+touch+context+neighbours "
+                    "(default: each group's own)");
     cmd->add_option("--decision", args->decision,
                     "The models' default decision: online (HMM forward filter, causal) or step "
                     "(per-step argmax); scores are given for step, online and offline either way")

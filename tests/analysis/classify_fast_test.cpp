@@ -284,6 +284,10 @@ TEST(ClassifyRun, EqualsAStepByStepReference) {
   ASSERT_EQ(bundle.models.size(), 4u);
   expectStepByStep(testdata::makeLabelledRun(1337, 77, 0.3, 0.9), bundle);
   expectStepByStep(testdata::makeLabelledRun(3, 78, 0.3, 1.0), bundle);
+  // The neighbours kind reads the other groups' values of the same step.
+  const ModelBundle neighbours = trainBundle(FeatureKind::Neighbours, 3);
+  ASSERT_EQ(neighbours.models.size(), 4u);
+  expectStepByStep(testdata::makeLabelledRun(1337, 79, 0.3, 0.9), neighbours);
 }
 
 TEST(ClassifyRun, EmptyAndContactFreeRuns) {

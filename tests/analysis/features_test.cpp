@@ -38,7 +38,75 @@ TEST(Features, DimensionPerGroupAndKind) {
     EXPECT_EQ(featureDimension(info.group, FeatureKind::NormalShear), 2 * info.sensorCount);
     EXPECT_EQ(featureDimension(info.group, FeatureKind::NormalShearTouch),
               2 * info.sensorCount + 3);
+    EXPECT_EQ(featureDimension(info.group, FeatureKind::Neighbours),
+              featureDimension(info.group, FeatureKind::Context) + 4);
   }
+}
+
+// Every group's neighbours are the groups beside it round the body, counter-clockwise first, and
+// each group is the neighbour of both of its neighbours.
+TEST(Features, NeighbourGroupsAreTheGroupsBesideIt) {
+  const auto f = neighbourGroups(SensorGroup::Front);
+  EXPECT_EQ(f[0], SensorGroup::FrontLeftCorner);
+  EXPECT_EQ(f[1], SensorGroup::FrontRightCorner);
+  const auto l = neighbourGroups(SensorGroup::Left);
+  EXPECT_EQ(l[0], SensorGroup::RearLeftCorner);
+  EXPECT_EQ(l[1], SensorGroup::FrontLeftCorner);
+  const auto frc = neighbourGroups(SensorGroup::FrontRightCorner);
+  EXPECT_EQ(frc[0], SensorGroup::Front);
+  EXPECT_EQ(frc[1], SensorGroup::Right);
+  for (const GroupInfo& info : kSensorGroups) {
+    const auto n = neighbourGroups(info.group);
+    EXPECT_NE(n[0], n[1]);
+    EXPECT_EQ(neighbourGroups(n[0])[1], info.group) << info.shortName;
+    EXPECT_EQ(neighbourGroups(n[1])[0], info.group) << info.shortName;
+  }
+}
+
+// The neighbours kind is the context kind followed by the largest and the mean n value of each
+// neighbouring group; shear and groups further away do not count.
+TEST(Features, NeighboursAddTheLargestAndMeanNormalOfTheGroupsBeside) {
+  RunData run;
+  auto values = testdata::zeroStep();
+  values[static_cast<std::size_t>(normalOffset(2))] = 1.5;   // front
+  values[static_cast<std::size_t>(normalOffset(8))] = 2.0;   // front-left corner
+  values[static_cast<std::size_t>(normalOffset(9))] = 4.0;   // front-left corner
+  values[static_cast<std::size_t>(shearOffset(42))] = 9.0;   // front-right corner: shear only
+  values[static_cast<std::size_t>(normalOffset(43))] = 1.0;  // front-right corner
+  values[static_cast<std::size_t>(normalOffset(12))] = 5.0;  // left side: not F's neighbour
+  values[static_cast<std::size_t>(normalOffset(21))] = 3.0;  // rear-left corner
+  run.appendStep(0, 0, 0, 0, 0, false, values.data(), nullptr);
+  run.appendStep(0, 0, 25.0, -0.5, 0, false, values.data(), nullptr);
+
+  const int dc = featureDimension(SensorGroup::Front, FeatureKind::Context);
+  std::vector<double> context(static_cast<std::size_t>(dc));
+  std::vector<double> f(static_cast<std::size_t>(dc + 4), -1.0);
+  groupFeatures(run, 1, SensorGroup::Front, FeatureKind::Context, context.data());
+  groupFeatures(run, 1, SensorGroup::Front, FeatureKind::Neighbours, f.data());
+  for (int i = 0; i < dc; ++i)
+    EXPECT_EQ(f[static_cast<std::size_t>(i)], context[static_cast<std::size_t>(i)]) << i;
+  EXPECT_EQ(f[static_cast<std::size_t>(dc)], 4.0);      // FLC largest
+  EXPECT_EQ(f[static_cast<std::size_t>(dc + 1)], 3.0);  // FLC mean of 2 and 4
+  EXPECT_EQ(f[static_cast<std::size_t>(dc + 2)], 1.0);  // FRC largest
+  EXPECT_EQ(f[static_cast<std::size_t>(dc + 3)], 0.5);  // FRC mean of 0 and 1
+
+  // The left side: FLC first, then RLC (sensors 20, 21).
+  const int dl = featureDimension(SensorGroup::Left, FeatureKind::Neighbours);
+  std::vector<double> g(static_cast<std::size_t>(dl), -1.0);
+  groupFeatures(run, 1, SensorGroup::Left, FeatureKind::Neighbours, g.data());
+  EXPECT_EQ(g[static_cast<std::size_t>(dl - 4)], 3.0);  // RLC largest
+  EXPECT_EQ(g[static_cast<std::size_t>(dl - 3)], 1.5);  // RLC mean
+  EXPECT_EQ(g[static_cast<std::size_t>(dl - 2)], 4.0);  // FLC largest
+  EXPECT_EQ(g[static_cast<std::size_t>(dl - 1)], 3.0);  // FLC mean
+
+  // Neighbours without contact read 0.
+  const int db = featureDimension(SensorGroup::Back, FeatureKind::Neighbours);
+  std::vector<double> b(static_cast<std::size_t>(db), -1.0);
+  groupFeatures(run, 1, SensorGroup::Back, FeatureKind::Neighbours, b.data());
+  EXPECT_EQ(b[static_cast<std::size_t>(db - 4)], 0.0);  // RRC
+  EXPECT_EQ(b[static_cast<std::size_t>(db - 3)], 0.0);
+  EXPECT_EQ(b[static_cast<std::size_t>(db - 2)], 3.0);  // RLC
+  EXPECT_EQ(b[static_cast<std::size_t>(db - 1)], 1.5);
 }
 
 TEST(Features, NormalIsTheGroupsNValues) {

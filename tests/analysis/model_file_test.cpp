@@ -183,8 +183,10 @@ TEST(ModelFileValidation, WrongFormat) {
 
 TEST(ModelFileValidation, WrongVersion) {
   json j = validModelJson();
-  j["version"] = 3;  // versions 1 and 2 read
-  EXPECT_NE(errorOf(j).find("version"), std::string::npos);
+  j["version"] = 4;  // versions 1 to 3 read
+  EXPECT_NE(errorOf(j).find("expected version 1 to 3"), std::string::npos) << errorOf(j);
+  j["version"] = 0;
+  EXPECT_NE(errorOf(j).find("expected version 1 to 3"), std::string::npos) << errorOf(j);
 }
 
 TEST(ModelFileValidation, MissingField) {
@@ -324,6 +326,44 @@ TEST(ModelFile, TrainedModelHasTransitionsAndDecidesOnline) {
   EXPECT_EQ(j["version"], 2);
   EXPECT_EQ(j["decision"], "online");
   EXPECT_EQ(j["transitions"]["log_matrix"].size(), model.classes.size());
+}
+
+// A model on the neighbours features is written as version 3, reads back with the same
+// predictions, and a version-2 file that claims those features is refused by name; a bundle takes
+// the highest version of its models.
+TEST(ModelFile, NeighbourFeaturesNeedVersionThree) {
+  static const RunData run = testdata::makeLabelledRun(1500, 11);
+  std::vector<LabelledRun> runs{{&run, labelsFromTruth(run)}};
+  const GroupDataSet data = buildGroupDataSet(runs, SensorGroup::Right, FeatureKind::Neighbours);
+  TrainSettings settings;
+  settings.classifier.method = ClassifierMethod::Gmm;
+  settings.classifier.gmm.components = 2;
+  settings.classifier.gmm.form = CovarianceForm::NodalFull;
+  settings.classifier.gmm.varianceFloor = 0.01;
+  settings.features = FeatureKind::Neighbours;
+  GroupTrainResult r = trainGroupModel(data, settings);
+  ASSERT_TRUE(r.ok) << r.reason;
+  ASSERT_EQ(r.model.features, FeatureKind::Neighbours);
+  const json j = modelToJson(r.model);
+  EXPECT_EQ(j["version"], 3);
+  EXPECT_EQ(j["features"], "normal+shear+touch+context+neighbours");
+  const Result<ModelBundle> read = parseModelJson(j.dump(1), "n.json");
+  ASSERT_TRUE(read.ok()) << read.errorText();
+  ASSERT_EQ(read->models.size(), 1u);
+  EXPECT_EQ(read->models[0].features, FeatureKind::Neighbours);
+  EXPECT_EQ(modelToJson(read->models[0]).dump(), j.dump());
+
+  json old = j;
+  old["version"] = 2;
+  const Result<ModelBundle> refused = parseModelJson(old.dump(1), "n2.json");
+  ASSERT_FALSE(refused.ok());
+  EXPECT_NE(refused.errorText().find("needs version 3"), std::string::npos) << refused.errorText();
+
+  ModelBundle bundle;
+  bundle.models.push_back(trainedModel(ClassifierMethod::Gmm, CovarianceForm::NodalDiag));
+  EXPECT_EQ(bundleToJson(bundle)["version"], 2);
+  bundle.models.push_back(std::move(r.model));
+  EXPECT_EQ(bundleToJson(bundle)["version"], 3);
 }
 
 // Version-1 files (no transitions, no decision) still load and decide per step.

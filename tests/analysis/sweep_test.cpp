@@ -53,19 +53,17 @@ TEST(Training, DefaultsAreEachGroupsOwnTunedGmm) {
   bool ordersDiffer = false;
   for (const GroupInfo& g : kSensorGroups) {
     const TrainSettings& s = d.of(g.group);
-    // The touch flags of F, L and R (alone or within the context kind) in every group that can
+    // The touch flags of F, L and R (alone or within the context kinds) in every group that can
     // see a dead path: the flags are the dead-path rule itself; the others choose.
     const bool seesDeadPath = g.group == SensorGroup::Front || g.group == SensorGroup::Left ||
                               g.group == SensorGroup::Right ||
                               g.group == SensorGroup::FrontLeftCorner ||
                               g.group == SensorGroup::FrontRightCorner;
+    const bool flags = s.features == FeatureKind::NormalShearTouch || usesHistory(s.features);
     if (seesDeadPath) {
-      EXPECT_TRUE(s.features == FeatureKind::NormalShearTouch || s.features == FeatureKind::Context)
-          << g.shortName;
+      EXPECT_TRUE(flags) << g.shortName;
     }
-    EXPECT_TRUE(s.features == FeatureKind::NormalShearTouch ||
-                s.features == FeatureKind::NormalShear || s.features == FeatureKind::Context)
-        << g.shortName;
+    EXPECT_TRUE(flags || s.features == FeatureKind::NormalShear) << g.shortName;
     // A model's default decision is one a navigator may use.
     EXPECT_TRUE(isCausal(s.decision)) << g.shortName;
     EXPECT_EQ(s.decision, DecisionMode::Online) << g.shortName;
@@ -100,11 +98,11 @@ TEST(Training, DefaultsAreTheDocumentedTable) {
   const std::array<Row, 8> table{{
       {SensorGroup::Front, FeatureKind::Context, 8, 0.01, 0.3},
       {SensorGroup::FrontLeftCorner, FeatureKind::Context, 8, 0.01, 1.0},
-      {SensorGroup::Left, FeatureKind::Context, 8, 0.01, 0.3},
-      {SensorGroup::RearLeftCorner, FeatureKind::Context, 8, 0.01, 1.0},
+      {SensorGroup::Left, FeatureKind::Neighbours, 8, 0.01, 0.3},
+      {SensorGroup::RearLeftCorner, FeatureKind::Neighbours, 8, 0.01, 1.0},
       {SensorGroup::Back, FeatureKind::NormalShear, 4, 0.01, 0.3},
-      {SensorGroup::RearRightCorner, FeatureKind::Context, 8, 0.01, 0.3},
-      {SensorGroup::Right, FeatureKind::Context, 8, 0.01, 0.3},
+      {SensorGroup::RearRightCorner, FeatureKind::Neighbours, 8, 0.01, 0.3},
+      {SensorGroup::Right, FeatureKind::Neighbours, 8, 0.01, 0.3},
       {SensorGroup::FrontRightCorner, FeatureKind::NormalShearTouch, 8, 0.01, 1.0},
   }};
   for (const Row& r : table) {

@@ -239,6 +239,23 @@ TEST(ClassifyRun, ChunkedEvaluationEqualsTheWholeMatrixAtOnce) {
 TEST(ContextFeatures, RunAndStreamAgree) {
   const RunData run = testdata::makeLabelledRun(200, 5);
   const SensorGroup g = SensorGroup::Right;
+  for (FeatureKind kind : {FeatureKind::Context, FeatureKind::Neighbours}) {
+    const int d = featureDimension(g, kind);
+    std::vector<double> a(static_cast<std::size_t>(d)), b(static_cast<std::size_t>(d));
+    int touched = 0;
+    for (std::size_t t = 0; t < run.stepCount(); ++t) {
+      groupFeatures(run, t, g, kind, a.data());
+      StepContext c;
+      c.values = run.stepSensors(t);
+      c.laggedValues = t >= kContextLag ? run.stepSensors(t - kContextLag) : nullptr;
+      c.v = run.v[t];
+      c.omega = run.omega[t];
+      c.contactSteps = touched;
+      groupFeatures(c, g, kind, b.data());
+      ASSERT_EQ(a, b) << t;
+      touched = groupIsZero(run, t, g) ? 0 : touched + 1;
+    }
+  }
   const int d = featureDimension(g, FeatureKind::Context);
   EXPECT_EQ(d, 3 * groupInfo(g).sensorCount + kTouchFlags + 3);
   std::vector<double> a(static_cast<std::size_t>(d)), b(static_cast<std::size_t>(d));

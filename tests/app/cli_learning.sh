@@ -88,12 +88,13 @@ lacks train.json '"dropped_components":0'
 "$T" train --runs runs/run_0000.csv runs/run_0001.csv --groups R,RRC,FRC --order 4 --min-rows 1 \
   --out d.json > /dev/null 2>&1 || fail "train --order 4 exited $?"
 "$T" report d.json > d.txt || fail "report exited $?"
-grep -Eq '^R +normal\+shear\+touch\+context +gmm +nodal-full +4 +0\.01 ' d.txt || fail "R defaults: $(cat d.txt)"
+grep -Eq '^R +normal\+shear\+touch\+context\+neighbours +gmm +nodal-full +4 +0\.01 ' d.txt ||
+  fail "R defaults: $(cat d.txt)"
 # RRC's and FRC's defaults may need more rows per class than these short runs have; when they
 # train, they keep their own feature kind and floor (FRC's kind, normal+shear+touch, differs from
-# R's context features).
+# R's neighbours features).
 if grep -q '^RRC ' d.txt; then
-  grep -Eq '^RRC +normal\+shear\+touch\+context +gmm +nodal-full +4 +0\.01 ' d.txt ||
+  grep -Eq '^RRC +normal\+shear\+touch\+context\+neighbours +gmm +nodal-full +4 +0\.01 ' d.txt ||
     fail "RRC defaults: $(cat d.txt)"
 fi
 if grep -q '^FRC ' d.txt; then
