@@ -440,6 +440,24 @@ TEST(PlanDriveNavigate, EnclosedGoalEndsUnreachable) {
   }
 }
 
+// The only way round lies far outside the box round start and goal (a wall between them whose
+// end is 1,600 units beyond both): the touch map must reach that far, or the robot ends
+// `unreachable` beside the goal's room.
+TEST(PlanDriveNavigate, AWayFarOutsideTheStartGoalBoxIsFound) {
+  sim::Scene s;
+  s.name = "far way round";
+  s.bounds = {0, 0, 900, 2000};
+  s.obstacles = {box(440, 0, 460, 1750)};
+  s.start = {200, 150, 0};
+  s.goal = Vec2(700, 150);
+  const auto world = std::make_shared<const sim::World>(std::move(s));
+  for (double theta : {0.0, 1.2}) {
+    const NavigateResult r = drive(world, {200, 150, theta}, 12000);
+    EXPECT_EQ(r.outcome, RunOutcome::Success)
+        << "heading " << theta << ": " << runOutcomeName(r.outcome) << " after " << r.steps;
+  }
+}
+
 // The bumper source keeps its Bug2: plan drive does not apply to it.
 TEST(PlanDriveNavigate, BumperSourceKeepsItsBug2) {
   const auto world = worldOf({box(600, 300, 700, 600)}, 1400, 900, Vec2(1200, 450));
