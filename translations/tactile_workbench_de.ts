@@ -363,6 +363,10 @@
         <source>--status model needs --model NAME</source>
         <translation>--status model braucht --model NAME</translation>
     </message>
+    <message>
+        <source>no display to open a window on (DISPLAY and WAYLAND_DISPLAY are not set). Run it in a desktop session, or with --screenshot FILE to render without a display; the command-line tool is tactile.</source>
+        <translation>keine Anzeige, auf der sich ein Fenster öffnen ließe (DISPLAY und WAYLAND_DISPLAY sind nicht gesetzt). Starten Sie es in einer Desktop-Sitzung oder mit --screenshot FILE, um ohne Anzeige zu rendern; das Kommandozeilenwerkzeug ist tactile.</translation>
+    </message>
 </context>
 <context>
     <name>tactile::gui::ExperimentPanel</name>

@@ -363,6 +363,10 @@
         <source>--status model needs --model NAME</source>
         <translation>--status model 需要 --model NAME</translation>
     </message>
+    <message>
+        <source>no display to open a window on (DISPLAY and WAYLAND_DISPLAY are not set). Run it in a desktop session, or with --screenshot FILE to render without a display; the command-line tool is tactile.</source>
+        <translation>没有可打开窗口的显示（未设置 DISPLAY 和 WAYLAND_DISPLAY）。请在桌面会话中运行，或使用 --screenshot FILE 在无显示的情况下渲染；命令行工具是 tactile。</translation>
+    </message>
 </context>
 <context>
     <name>tactile::gui::ExperimentPanel</name>
