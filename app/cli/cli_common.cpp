@@ -1,9 +1,12 @@
 #include "app/cli/cli_common.h"
 
+#include <unistd.h>
+
 #include <cstdio>
 #include <exception>
 #include <new>
 #include <string>
+#include <utility>
 
 #include "base/text_rules.h"
 
@@ -72,6 +75,24 @@ CLI::App* addPlannedVerb(CLI::App& parent, const std::string& name,
     return kExitUsage;
   });
   return command;
+}
+
+ProgressLine::ProgressLine(std::string verb, std::string unit)
+    : verb_(std::move(verb)), unit_(std::move(unit)), terminal_(isatty(2) != 0) {}
+
+void ProgressLine::show(std::size_t done, std::size_t total) {
+  // Workers may report out of order: the count only goes up.
+  if (total == 0 || (shown_ != kNone && done <= shown_)) return;
+  shown_ = done;
+  if (terminal_) {
+    std::fprintf(stderr, "\r%s: %zu/%zu %s", verb_.c_str(), done, total, unit_.c_str());
+    if (done >= total) std::fputc('\n', stderr);
+    return;
+  }
+  const std::size_t tenth = done * 10 / total;
+  if (done < total && tenth == lastTenth_) return;
+  lastTenth_ = tenth;
+  std::fprintf(stderr, "%s: %zu/%zu %s\n", verb_.c_str(), done, total, unit_.c_str());
 }
 
 }  // namespace tactile::cli

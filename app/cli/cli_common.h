@@ -3,6 +3,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include <cstddef>
 #include <functional>
 #include <memory>
 #include <string>
@@ -40,6 +41,23 @@ void requireValidName(const std::string& value, std::string_view option, std::st
 // Names given as `A B` or `A,B` (or both), split at commas: no valid name holds one. Only for
 // names; file paths are never split.
 std::vector<std::string> splitNames(const std::vector<std::string>& given);
+
+// Progress of a long verb on stderr: "VERB: DONE/TOTAL UNIT". On a terminal one line rewritten in
+// place; otherwise (a log file, a pipe) a line at every tenth of the way and at the end, so logs
+// stay readable. Not thread-safe: callers from several threads hold a lock.
+class ProgressLine {
+ public:
+  ProgressLine(std::string verb, std::string unit);
+  void show(std::size_t done, std::size_t total);
+
+ private:
+  std::string verb_;
+  std::string unit_;
+  bool terminal_;
+  static constexpr std::size_t kNone = static_cast<std::size_t>(-1);
+  std::size_t shown_ = kNone;
+  std::size_t lastTenth_ = 0;
+};
 
 // Makes `fn` the action of a parsed subcommand. Its return value becomes the exit status; a
 // UsageError exits 2, any other exception prints `tactile: error:` and exits 1.

@@ -565,11 +565,8 @@ struct SweepArgs {
 ProgressFn sweepProgress(bool show) {
   if (!show) return {};
   // Also called after every EM iteration of the running fits: print only when a cell finishes.
-  return [shown = std::size_t(-1)](std::size_t done, std::size_t total) mutable {
-    if (done == shown) return true;
-    shown = done;
-    std::fprintf(stderr, "\rsweep: %zu / %zu cells", done, total);
-    if (done == total) std::fputc('\n', stderr);
+  return [line = ProgressLine("sweep", "cells")](std::size_t done, std::size_t total) mutable {
+    line.show(done, total);
     return true;
   };
 }

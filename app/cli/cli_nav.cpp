@@ -120,9 +120,9 @@ int runBenchmark(const NavigateArgs& a) {
   }
   ProgressFn progress;
   if (!a.quiet) {
-    progress = [](std::size_t done, std::size_t total) {
-      std::fprintf(stderr, "\rnavigate: %zu/%zu runs", done, total);
-      if (done == total) std::fprintf(stderr, "\n");
+    progress = [line = ProgressLine("navigate", "runs")](std::size_t done,
+                                                         std::size_t total) mutable {
+      line.show(done, total);
       return true;
     };
   }
@@ -220,7 +220,8 @@ int runNavigate(const NavigateArgs& a) {
   };
   std::vector<Row> rows(seeds.size());
   std::atomic<std::size_t> next{0};
-  std::atomic<std::size_t> done{0};
+  std::size_t done = 0;  // under `mutex`
+  ProgressLine line("navigate", "runs");
   std::mutex mutex;
   const auto t0 = std::chrono::steady_clock::now();
   const auto worker = [&] {
@@ -248,11 +249,9 @@ int runNavigate(const NavigateArgs& a) {
           row.result.run = RunData();  // written: free the memory
         }
       }
-      const std::size_t n = ++done;
       if (!a.quiet) {
         std::lock_guard lock(mutex);
-        std::fprintf(stderr, "\rnavigate: %zu/%zu runs", n, seeds.size());
-        if (n == seeds.size()) std::fprintf(stderr, "\n");
+        line.show(++done, seeds.size());
       }
     }
   };

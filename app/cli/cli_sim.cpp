@@ -1,5 +1,4 @@
 // Simulator verbs: simulate, bench sim (navigate lives in cli_nav.cpp).
-#include <unistd.h>
 
 #include <chrono>
 #include <cmath>
@@ -132,6 +131,7 @@ int runPlan(const SimulateArgs& a) {
   std::size_t totalSteps = 0;
   std::map<std::string, int> kinds;
   nlohmann::json runList = nlohmann::json::array();
+  ProgressLine planLine("simulate", "runs");
   for (std::size_t i = 0; i < runs; ++i) {
     PlannedRun planned = planTrainingRun(a.seed, i);
     std::string number = std::to_string(i);
@@ -169,9 +169,8 @@ int runPlan(const SimulateArgs& a) {
                        {"scene", label},
                        {"steps", run.stepCount()},
                        {"outcome", *run.meta("outcome")}});
-    if (!a.quiet) std::fprintf(stderr, "\rsimulate: %zu/%zu runs", i + 1, runs);
+    if (!a.quiet) planLine.show(i + 1, runs);
   }
-  if (!a.quiet) std::fprintf(stderr, "\n");
   const double seconds = secondsSince(t0);
   if (a.json) {
     nlohmann::json j;
@@ -319,17 +318,16 @@ int runSimulate(const SimulateArgs& a) {
   std::map<std::string, int> outcomes;
   std::vector<std::string> files;
   TruthStats stats;
-  const bool tty = isatty(2) != 0;
   if (!batch) {
     ProgressFn progress;
-    if (!a.quiet && tty) {
-      progress = [](std::size_t done, std::size_t total) {
-        std::fprintf(stderr, "\rsimulate: step %zu/%zu", done, total);
+    if (!a.quiet) {
+      progress = [line = ProgressLine("simulate", "steps")](std::size_t done,
+                                                            std::size_t total) mutable {
+        line.show(done, total);
         return true;
       };
     }
     RunResult result = simulateRun(world, label, options, progress);
-    if (!a.quiet && tty) std::fprintf(stderr, "\n");
     if (!result.ok()) throw std::runtime_error(result.errorText());
     const Status written = writeRunCsv(result->run, a.out);
     if (!written) throw std::runtime_error(written.errorText());
@@ -362,16 +360,9 @@ int runSimulate(const SimulateArgs& a) {
       stepsOf[i] = r.run.stepCount();
       return Status::success();
     };
-    std::size_t lastShown = 0;
+    ProgressLine line("simulate", "runs");
     const ProgressFn progress = [&](std::size_t done, std::size_t total) {
-      if (a.quiet) return true;
-      if (tty) {
-        std::fprintf(stderr, "\rsimulate: %zu/%zu runs", done, total);
-        if (done == total) std::fprintf(stderr, "\n");
-      } else if (done == total || done * 10 / total != lastShown * 10 / total) {
-        std::fprintf(stderr, "simulate: %zu/%zu runs\n", done, total);
-      }
-      lastShown = done;
+      if (!a.quiet) line.show(done, total);
       return true;
     };
     const Status batch = simulateBatch(world, label, options, runs, a.threads, sink, progress);

@@ -12,6 +12,13 @@ command -v python3 > /dev/null || fail "python3 is needed to read the JSON outpu
 "$T" simulate --scene chapter5 --runs 4 --steps 300 --out-dir b2 --prefix ch5 --quiet > /dev/null
 [ -f b1/room1_0000.csv ] && [ -f b2/ch5_0003.csv ] || fail "simulated files: $(ls b1 b2)"
 
+# Progress to a file (not a terminal): whole lines, one at each tenth of the way and the last.
+"$T" simulate --scene room1 --runs 20 --steps 20 --out-dir b3 > /dev/null 2> progress.err ||
+  fail "simulate with progress exited $?"
+! grep -q "$(printf '\r')" progress.err || fail "progress to a file has carriage returns"
+[ "$(tail -n 1 progress.err)" = "simulate: 20/20 runs" ] || fail "progress: $(cat progress.err)"
+[ "$(grep -c '^simulate: [0-9]*/20 runs$' progress.err)" -eq 10 ] || fail "progress: $(cat progress.err)"
+
 "$T" import --db w.db b1 b2 > import.out || fail "import exited $?"
 grep -q "8 imported, 0 skipped, 0 failed" import.out || fail "import: $(cat import.out)"
 "$T" autolabel --db w.db --all --set truth > autolabel.out || fail "autolabel exited $?"
