@@ -81,7 +81,10 @@ std::vector<std::uint64_t> parseSeeds(const std::string& text) {
 
 std::shared_ptr<const analysis::ModelBundle> loadModels(const NavigateArgs& a) {
   if (a.model.empty())
-    throw UsageError("--status model needs --model FILE (or a stored NAME with --db)");
+    throw UsageError(a.benchmark != -1
+                         ? "--benchmark needs --model FILE (or a stored NAME with --db): it "
+                           "runs the models beside the truth and the bumper"
+                         : "--status model needs --model FILE (or a stored NAME with --db)");
   if (!a.db.empty()) {
     workspace::Workspace ws(openDatabaseForRead(a.db));
     auto m = ws.loadModel(a.model);
@@ -317,10 +320,12 @@ void registerNavigateVerb(CLI::App& app) {
                   "Model bundle JSON, or a stored model's name with --db (needed by --status "
                   "model and --benchmark)");
   cmd->add_option("--db", args->db, "Database holding the model named by --model");
-  cmd->add_option("--status", args->status,
-                  "Status source: model (trained models, online decision), truth (the "
-                  "simulator's ground truth) or bumper (Bug2 with the skin as a bumper)");
-  cmd->add_option("--seeds", args->seeds, "Seeds of the start poses: A-B, A or A,B,C (default 1)");
+  CLI::Option* status =
+      cmd->add_option("--status", args->status,
+                      "Status source: model (trained models, online decision), truth (the "
+                      "simulator's ground truth) or bumper (Bug2 with the skin as a bumper)");
+  CLI::Option* seeds = cmd->add_option("--seeds", args->seeds,
+                                       "Seeds of the start poses: A-B, A or A,B,C (default 1)");
   cmd->add_option(
       "--max-steps", args->maxSteps,
       "Step budget per run (then `timeout`); with --benchmark the least budget of a map, "
@@ -329,10 +334,16 @@ void registerNavigateVerb(CLI::App& app) {
                   "Write each run as navigate_STATUS_SEED.csv here (importable); with --benchmark "
                   "as benchmark_STATUS_MAPSEED.csv");
   cmd->add_option("--threads", args->threads, "Worker threads (0 = all cores)");
-  cmd->add_option("--benchmark", args->benchmark,
-                  "Benchmark the three status sources on N generated office maps");
+  CLI::Option* benchmark =
+      cmd->add_option("--benchmark", args->benchmark,
+                      "Benchmark the three status sources on N generated office maps");
   cmd->add_option("--seed", args->seed,
-                  "--benchmark: map i is random:office:(900000 + SEED + i) (default 1)");
+                  "--benchmark: map i is random:office:(900000 + SEED + i) (default 1)")
+      ->needs(benchmark);
+  // The benchmark runs every source from its own starts: a source or start seeds given with it
+  // would be ignored, so they are refused.
+  status->excludes(benchmark);
+  seeds->excludes(benchmark);
   cmd->add_flag("--json", args->json, "Print one JSON object on stdout");
   cmd->add_flag("--quiet", args->quiet, "No progress on stderr");
   cmd->add_flag("--touch-map", args->touchMap,

@@ -80,6 +80,15 @@ set +e
 [ $? = 2 ] || fail "unknown --status is not a usage error"
 "$T" navigate --scene chapter5 >/dev/null 2>&1
 [ $? = 2 ] || fail "model status without --model is not a usage error"
+# Options the benchmark would ignore are refused; without --model it says what the model is for.
+"$T" navigate --benchmark 2 --status truth --model "$W/m.json" >/dev/null 2>"$W/err.txt"
+[ $? = 2 ] || fail "--benchmark with --status is not a usage error"
+grep -q -- "--status excludes --benchmark" "$W/err.txt" || fail "--status: $(cat "$W/err.txt")"
+"$T" navigate --scene chapter5 --status truth --seed 3 >/dev/null 2>"$W/err.txt"
+[ $? = 2 ] || fail "--seed without --benchmark is not a usage error"
+"$T" navigate --benchmark 2 >/dev/null 2>"$W/err.txt"
+[ $? = 2 ] || fail "--benchmark without --model is not a usage error"
+grep -q -- "--benchmark needs --model" "$W/err.txt" || fail "no model: $(cat "$W/err.txt")"
 "$T" navigate --benchmark 0 --model "$W/m.json" >/dev/null 2>"$W/err.txt"
 [ $? = 2 ] || fail "--benchmark 0 is not a usage error"
 grep -q -- "--benchmark must be between" "$W/err.txt" || fail "--benchmark 0: $(cat "$W/err.txt")"
