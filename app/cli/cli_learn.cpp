@@ -471,8 +471,8 @@ int runTrain(const TrainArgs& a) {
   }
   if (a.runs.empty()) throw UsageError("give --runs FILES (run files) or --db DB --set SET");
   if (a.out.empty()) throw UsageError("--runs needs --out MODEL.json");
-  if (!a.set.empty() || !a.trainRuns.empty()) {
-    throw UsageError("--set and --train-runs need --db");
+  if (!a.set.empty() || !a.trainRuns.empty() || !a.name.empty()) {
+    throw UsageError("--set, --train-runs and --name need --db (run files: --out names the file)");
   }
   checkOutput(a.out);
   if (a.holdout < 0.0 || a.holdout >= 1.0) throw UsageError("--holdout must be in [0, 1)");
@@ -649,6 +649,9 @@ int runSweepVerb(const SweepArgs& a) {
   if (!a.db.empty()) return runSweepDb(a, grid);
   if (a.runs.empty()) throw UsageError("give --runs FILES (run files) or --db DB --set SET");
   if (a.out.empty()) throw UsageError("--runs needs --out SWEEP.json");
+  if (!a.set.empty() || !a.trainRuns.empty() || !a.name.empty()) {
+    throw UsageError("--set, --train-runs and --name need --db (run files: --out names the file)");
+  }
   if (a.holdout <= 0.0 || a.holdout >= 1.0) throw UsageError("--holdout must be in (0, 1)");
   checkOutput(a.out);
 

@@ -120,6 +120,25 @@ for bad in 0 -1 nan; do
   [ "$code" -eq 2 ] || fail "--emission-weight $bad exited $code"
   grep -q "emission-weight" bad.err || fail "--emission-weight $bad: $(cat bad.err)"
 done
+# Options of the database form are refused with run files, not ignored; no file is written.
+for opt in "--name m" "--set truth" "--train-runs a"; do
+  code=0
+  # shellcheck disable=SC2086
+  "$T" train --runs runs/run_0000.csv --groups R $opt --out db-only.json > /dev/null \
+    2> db-only.err || code=$?
+  [ "$code" -eq 2 ] || fail "train --runs with $opt exited $code"
+  grep -q "need --db" db-only.err || fail "train --runs with $opt: $(cat db-only.err)"
+  [ ! -e db-only.json ] || fail "train --runs with $opt wrote a model"
+done
+for opt in "--name s" "--set truth" "--train-runs a"; do
+  code=0
+  # shellcheck disable=SC2086
+  "$T" sweep --runs runs/run_0000.csv --groups R --orders 2 $opt --out db-only.json > /dev/null \
+    2> db-only.err || code=$?
+  [ "$code" -eq 2 ] || fail "sweep --runs with $opt exited $code"
+  grep -q "need --db" db-only.err || fail "sweep --runs with $opt: $(cat db-only.err)"
+  [ ! -e db-only.json ] || fail "sweep --runs with $opt wrote a sweep"
+done
 "$T" sweep --runs runs/run_0000.csv runs/run_0001.csv --groups R --orders 1,64 \
   --covs nodal-diag --floors 0.03 --out s.json --json > sweep.json || fail "sweep exited $?"
 has sweep.json '"warnings":'
