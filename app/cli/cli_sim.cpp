@@ -525,29 +525,37 @@ void registerSimVerbs(CLI::App& app, CLI::App& bench) {
   sim->add_option("--scene", args->scene,
                   "Built-in scene name, scene JSON file, random:N:SEED (procedural) or "
                   "random:office:SEED (generated office map)");
-  sim->add_option("--plan", args->plan,
-                  "training: N runs from the standard training recipe (needs --out-dir; scenes "
-                  "and drivers come from the recipe, docs/sim.md#training-corpus)");
-  sim->add_option("--driver", args->driver,
-                  "wall-follow (Bug-2 explorer), bug (Bug-2, side per obstacle) or random");
+  CLI::Option* plan =
+      sim->add_option("--plan", args->plan,
+                      "training: N runs from the standard training recipe (needs --out-dir; scenes "
+                      "and drivers come from the recipe, docs/sim.md#training-corpus)");
+  CLI::Option* driver =
+      sim->add_option("--driver", args->driver,
+                      "wall-follow (Bug-2 explorer), bug (Bug-2, side per obstacle) or random");
   sim->add_option("--follow-side", args->followSide,
                   "left or right: the wall followers (wall-follow, bug) keep the wall on this side "
                   "(default: drawn from the seed; bug: the side it takes first at each obstacle)");
   sim->add_option("--commands", args->commands,
                   "Replay the v, omega commands of this run file, one a step, from its start "
                   "pose to its goal (one run, --out; docs/cli.md#simulate)");
-  sim->add_option("--steps", args->steps, "Maximum steps per run (1..1000000)");
+  CLI::Option* steps =
+      sim->add_option("--steps", args->steps, "Maximum steps per run (1..1000000)");
   sim->add_option("--seed", args->seed, "Seed; run i of a batch uses SEED+i");
-  sim->add_option("--out", args->out, "Output run file (single run)");
+  CLI::Option* out = sim->add_option("--out", args->out, "Output run file (single run)");
   sim->add_option("--out-dir", args->outDir, "Output directory (batch: run_0000.csv, ...)");
   sim->add_option("--prefix", args->prefix,
                   "Batch file names P_0000.csv, ... (default run); imported, the runs are named "
                   "by these stems, so batches with different prefixes never clash");
   sim->add_option("--runs", args->runs, "Number of runs in a batch (needs --out-dir)");
-  sim->add_option("--threads", args->threads, "Worker threads for a batch (0 = all cores)");
-  sim->add_option("--dt", args->dt, "Step length in seconds");
+  CLI::Option* threads =
+      sim->add_option("--threads", args->threads, "Worker threads for a batch (0 = all cores)");
+  CLI::Option* dt = sim->add_option("--dt", args->dt, "Step length in seconds");
   sim->add_flag("--json", args->json, "Print one JSON summary object on stdout");
   sim->add_flag("--quiet", args->quiet, "No progress on stderr");
+  // The recipe chooses each run's driver, length and step, and runs them one after another: these
+  // options would be ignored with it, so they are refused.
+  for (CLI::Option* o : {driver, steps, out, threads, dt})
+    plan->excludes(o);
   setAction(sim, [args] { return runSimulate(*args); });
 
   registerNavigateVerb(app);  // cli_nav.cpp

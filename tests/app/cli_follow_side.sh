@@ -36,5 +36,14 @@ usage() {
 usage --scene room1 --driver random --follow-side left
 usage --scene room1 --follow-side up
 usage --plan training --runs 2 --follow-side left
+# The recipe chooses driver, length and step itself: those options are refused with it.
+for opt in "--driver random" "--steps 100" "--dt 0.05" "--threads 2"; do
+  status=0
+  # shellcheck disable=SC2086
+  "$T" simulate --plan training --runs 2 $opt --out-dir "$W/plan" --quiet >/dev/null \
+    2>"$W/usage.err" || status=$?
+  [ "$status" -eq 2 ] || fail "exit $status (not 2) for --plan with $opt"
+  grep -q "excludes" "$W/usage.err" || fail "--plan with $opt: $(cat "$W/usage.err")"
+done
 "$T" simulate --help | grep -q -- "--follow-side" || fail "--help does not name --follow-side"
 echo "ok: follow-side"
