@@ -359,7 +359,18 @@ struct Navigator::Impl {
   double away() const { return wallOnLeft ? -1.0 : 1.0; }
 
   void integrate(bool blocked) {
-    if (blocked) return;  // a cancelled step: the pose stays (as far as the robot knows)
+    if (blocked) {
+      // The simulator ends a blocked step somewhere between its start and its end, where the
+      // robot cannot tell. The thesis navigators count no motion; plan drive counts the share
+      // cfg.blockedStepShare of the step (by default half: the estimate whose error is at most
+      // half the step either way, where counting none may be wrong by the whole step).
+      if (planMode() && cfg.blockedStepShare > 0.0) {
+        odo = sim::integratePose(odo, cfg.blockedStepShare * last.v,
+                                 cfg.blockedStepShare * last.omega, dt);
+        odo.theta = sim::wrapAngle(odo.theta);
+      }
+      return;
+    }
     if (!backtracking && (last.v != 0.0 || last.omega != 0.0)) {
       moved.push_back(last);
       if (moved.size() > kBacktrackMemory) moved.pop_front();

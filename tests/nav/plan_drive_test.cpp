@@ -81,6 +81,37 @@ TEST(PlanDrive, ContactAheadMarksBacksOffAndReplansRoundIt) {
   EXPECT_FALSE(s.nav().finished());
 }
 
+// The simulator ends a blocked step somewhere along it, where the robot cannot tell: plan drive's
+// odometry counts half the step (wrong by at most half a step either way), the wall-follow
+// navigator none; with the share set to 0, plan drive counts none as well.
+TEST(PlanDrive, ABlockedStepCountsAsHalfItsCommand) {
+  struct Case {
+    bool planDrive;
+    double share;
+    double counted;  // the share of the command the odometry should move
+  };
+  for (const Case& k : {Case{true, 0.5, 0.5}, Case{true, 0.0, 0.0}, Case{false, 0.5, 0.0}}) {
+    SCOPED_TRACE(::testing::Message() << "planDrive " << k.planDrive << " share " << k.share);
+    Script s(false, Vec2(2000.0, 300.0), k.planDrive, k.share);
+    Command c{};
+    for (int i = 0; i < 8; ++i)
+      c = s.step(Values{});
+    ASSERT_TRUE(c.v != 0.0 || c.omega != 0.0);
+    const Pose2d before = s.nav().odometry();
+    s.step(Values{}, true);  // the command c was blocked
+    const Pose2d after = s.nav().odometry();
+    const Pose2d expected = sim::integratePose(before, k.counted * c.v, k.counted * c.omega, 0.1);
+    EXPECT_NEAR(after.x, expected.x, 1e-9);
+    EXPECT_NEAR(after.y, expected.y, 1e-9);
+    EXPECT_NEAR(sim::wrapAngle(after.theta - expected.theta), 0.0, 1e-9);
+    if (k.counted > 0.0) {
+      EXPECT_GT(std::hypot(after.x - before.x, after.y - before.y) +
+                    std::abs(sim::wrapAngle(after.theta - before.theta)),
+                1e-3);
+    }
+  }
+}
+
 // Whether a group touches is its status's to say (per the source); the readings only say which
 // domes. A front reading hard but called NoContact neither marks the map nor stops the robot; a
 // front reading faintly (below any pressure threshold) but called a contact marks its domes and
