@@ -112,6 +112,61 @@ TEST(PlanDrive, ABlockedStepCountsAsHalfItsCommand) {
   }
 }
 
+// A contact ahead met at one place for the third time in a row: the marks of the touching domes
+// have not turned the plan away, so the front edge is marked from side to side (not before).
+TEST(PlanDrive, TheThirdContactInARowAtOnePlaceMarksTheWholeFront) {
+  Script s(false, Vec2(2000.0, 0.0), true);
+  for (int k = 0; k < 5; ++k)
+    s.step(Values{});
+  Values front{};
+  press(front, {4}, 2.0);  // one dome near the middle of the front
+  const RobotGeometry g;
+  const auto edge = [&g](const Pose2d& pose, double y) {
+    return sim::bodyToWorld(pose, Vec2(g.frontX() + g.domeRadiusUnits, y));
+  };
+  std::vector<Pose2d> hits;
+  for (int k = 0; k < 200 && hits.size() < 3; ++k) {
+    const std::size_t before = s.nav().checkContactStarts();
+    s.step(front);
+    if (s.nav().checkContactStarts() > before) hits.push_back(s.nav().odometry());
+    if (hits.size() < 3) {
+      for (const Pose2d& h : hits) {
+        EXPECT_FALSE(s.nav().touchMap().touched(edge(h, g.halfWidth())));
+        EXPECT_FALSE(s.nav().touchMap().touched(edge(h, -g.halfWidth())));
+      }
+    }
+  }
+  ASSERT_EQ(hits.size(), 3u);
+  // Each contact lies within the repeat distance of the one before (the back-offs are short).
+  for (std::size_t i = 1; i < hits.size(); ++i)
+    EXPECT_LT(std::hypot(hits[i].x - hits[i - 1].x, hits[i].y - hits[i - 1].y), 40.0);
+  for (double y : {-g.halfWidth(), -0.5 * g.halfWidth(), 0.0, 0.5 * g.halfWidth(), g.halfWidth()})
+    EXPECT_TRUE(s.nav().touchMap().touched(edge(hits[2], y))) << "y " << y;
+}
+
+// Contacts ahead at places apart never mark the whole front.
+TEST(PlanDrive, ContactsAtDifferentPlacesDoNotMarkTheWholeFront) {
+  Script s(false, Vec2(4000.0, 0.0), true);
+  const RobotGeometry g;
+  Values front{};
+  press(front, {4}, 2.0);
+  int contacts = 0;
+  for (int round = 0; round < 4; ++round) {
+    // Drive on well past the last contact (more than the repeat distance), then touch.
+    for (int k = 0; k < 60; ++k)
+      s.step(Values{});
+    const std::size_t before = s.nav().checkContactStarts();
+    s.step(front);
+    ASSERT_GT(s.nav().checkContactStarts(), before);
+    ++contacts;
+    const Pose2d hit = s.nav().odometry();
+    for (double y : {-g.halfWidth(), g.halfWidth()})
+      EXPECT_FALSE(s.nav().touchMap().touched(
+          sim::bodyToWorld(hit, Vec2(g.frontX() + g.domeRadiusUnits, y))));
+  }
+  EXPECT_EQ(contacts, 4);
+}
+
 // Whether a group touches is its status's to say (per the source); the readings only say which
 // domes. A front reading hard but called NoContact neither marks the map nor stops the robot; a
 // front reading faintly (below any pressure threshold) but called a contact marks its domes and
