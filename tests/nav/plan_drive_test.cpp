@@ -13,6 +13,7 @@
 #include "nav/navigator.h"
 #include "nav/touch_map.h"
 #include "sim/robot.h"
+#include "sim/scene_source.h"
 #include "sim/simulator.h"
 #include "tests/nav/scripted_readings.h"
 
@@ -352,6 +353,20 @@ TEST(PlanDriveNavigate, ReachesTheGoalRoundABoxAndIsDeterministic) {
     const NavigateResult b = drive(world, {200, y, 0}, 6000);
     EXPECT_EQ(a.steps, b.steps);
     EXPECT_TRUE(a.run == b.run);  // byte for byte the same run
+  }
+}
+
+// The chapter-5 scene from 50 seeded starts (the truth source): every run reaches the goal. From
+// seed 4, with blocked steps counted as half their command but the front never marked at a
+// repeated contact, the robot drove the same line into one corner over and over (timeout).
+TEST(PlanDriveNavigate, Chapter5IsReachedFromFiftyStarts) {
+  auto loaded = sim::loadScene("chapter5");
+  ASSERT_TRUE(loaded.ok());
+  const auto world = std::make_shared<const sim::World>(std::move(loaded.value()));
+  for (std::uint64_t seed = 1; seed <= 50; ++seed) {
+    const NavigateResult r = drive(world, drawStart(world, seed), 6000);
+    EXPECT_EQ(r.outcome, RunOutcome::Success)
+        << "seed " << seed << ": " << runOutcomeName(r.outcome) << " after " << r.steps;
   }
 }
 
