@@ -135,6 +135,10 @@ constexpr double kAheadDomeCosine = 0.7071;
 // kGoalBehindRepeats-th time (the fourth contact in a row at one place).
 constexpr double kGoalBehindUnits = 150.0;
 constexpr int kGoalBehindRepeats = 3;
+// Plan drive: the kFrontRepeats-th repeat of a contact ahead at one place (the third contact in a
+// row there) marks the front edge across the body's width: the touching domes' marks have twice
+// not turned the plan away, so what stops the robot there is wider than the points they felt.
+constexpr int kFrontRepeats = 2;
 // Bug2's bumper following: the arc back toward an obstacle no longer touched.
 constexpr double kBumperArcUnits = 90.0;
 
@@ -359,7 +363,18 @@ struct Navigator::Impl {
   double away() const { return wallOnLeft ? -1.0 : 1.0; }
 
   void integrate(bool blocked) {
-    if (blocked) return;  // a cancelled step: the pose stays (as far as the robot knows)
+    if (blocked) {
+      // The simulator ends a blocked step somewhere between its start and its end, where the
+      // robot cannot tell. The thesis navigators count no motion; plan drive counts the share
+      // cfg.blockedStepShare of the step (by default half: the estimate whose error is at most
+      // half the step either way, where counting none may be wrong by the whole step).
+      if (planMode() && cfg.blockedStepShare > 0.0) {
+        odo = sim::integratePose(odo, cfg.blockedStepShare * last.v,
+                                 cfg.blockedStepShare * last.omega, dt);
+        odo.theta = sim::wrapAngle(odo.theta);
+      }
+      return;
+    }
     if (!backtracking && (last.v != 0.0 || last.omega != 0.0)) {
       moved.push_back(last);
       if (moved.size() > kBacktrackMemory) moved.pop_front();
@@ -1448,6 +1463,16 @@ struct Navigator::Impl {
     const Vec2 p = position();
     driveRepeats = (p - driveHitAt).norm() < kDriveRepeatUnits ? driveRepeats + 1 : 0;
     driveHitAt = p;
+    if (driveRepeats >= kFrontRepeats) {
+      // Met here again and again: the marks so far leave the plan a line into it (a dome touching
+      // a corner marks a point; the plan passes it within half a body width). Mark the front edge,
+      // a dome radius out, from side to side.
+      const double x = cfg.geometry.frontX() + cfg.geometry.domeRadiusUnits;
+      const double w = cfg.geometry.halfWidth();
+      const int n = static_cast<int>(std::ceil(2.0 * w / kDriveCellUnits));
+      for (int i = 0; i <= n; ++i)
+        touch.mark(sim::bodyToWorld(odo, Vec2(x, -w + 2.0 * w * i / n)));
+    }
     driveBack = std::min(kDriveBackUnits + kDriveBackMoreUnits * driveRepeats, kDriveBackMaxUnits);
     if (last.v == 0.0 && last.omega != 0.0) driveSpin = -last.omega;
     // Off the contact: back off from what is ahead; forward from what the back alone touches (a

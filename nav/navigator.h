@@ -130,6 +130,10 @@ struct NavigatorConfig {
   // replans. false: the thesis strategies (wall following, with or without `touchMap`). The
   // bumper Bug2 never uses it.
   bool planDrive = true;
+  // Plan drive's odometry: a blocked step counts as this share of its command (the simulator stops
+  // it somewhere along the way, where the robot cannot tell; half errs by at most half a step).
+  // 0: no motion, as the thesis navigators count it (they always do).
+  double blockedStepShare = 0.5;
 };
 
 // One step's input. The base holds what every driver sees (its `pose` is the simulator's and is

@@ -13,6 +13,7 @@
 #include "nav/navigator.h"
 #include "nav/touch_map.h"
 #include "sim/robot.h"
+#include "sim/scene_source.h"
 #include "sim/simulator.h"
 #include "tests/nav/scripted_readings.h"
 
@@ -79,6 +80,92 @@ TEST(PlanDrive, ContactAheadMarksBacksOffAndReplansRoundIt) {
   for (const Vec2& m : marks)
     EXPECT_TRUE(s.nav().touchMap().touched(m));
   EXPECT_FALSE(s.nav().finished());
+}
+
+// The simulator ends a blocked step somewhere along it, where the robot cannot tell: plan drive's
+// odometry counts half the step (wrong by at most half a step either way), the wall-follow
+// navigator none; with the share set to 0, plan drive counts none as well.
+TEST(PlanDrive, ABlockedStepCountsAsHalfItsCommand) {
+  struct Case {
+    bool planDrive;
+    double share;
+    double counted;  // the share of the command the odometry should move
+  };
+  for (const Case& k : {Case{true, 0.5, 0.5}, Case{true, 0.0, 0.0}, Case{false, 0.5, 0.0}}) {
+    SCOPED_TRACE(::testing::Message() << "planDrive " << k.planDrive << " share " << k.share);
+    Script s(false, Vec2(2000.0, 300.0), k.planDrive, k.share);
+    Command c{};
+    for (int i = 0; i < 8; ++i)
+      c = s.step(Values{});
+    ASSERT_TRUE(c.v != 0.0 || c.omega != 0.0);
+    const Pose2d before = s.nav().odometry();
+    s.step(Values{}, true);  // the command c was blocked
+    const Pose2d after = s.nav().odometry();
+    const Pose2d expected = sim::integratePose(before, k.counted * c.v, k.counted * c.omega, 0.1);
+    EXPECT_NEAR(after.x, expected.x, 1e-9);
+    EXPECT_NEAR(after.y, expected.y, 1e-9);
+    EXPECT_NEAR(sim::wrapAngle(after.theta - expected.theta), 0.0, 1e-9);
+    if (k.counted > 0.0) {
+      EXPECT_GT(std::hypot(after.x - before.x, after.y - before.y) +
+                    std::abs(sim::wrapAngle(after.theta - before.theta)),
+                1e-3);
+    }
+  }
+}
+
+// A contact ahead met at one place for the third time in a row: the marks of the touching domes
+// have not turned the plan away, so the front edge is marked from side to side (not before).
+TEST(PlanDrive, TheThirdContactInARowAtOnePlaceMarksTheWholeFront) {
+  Script s(false, Vec2(2000.0, 0.0), true);
+  for (int k = 0; k < 5; ++k)
+    s.step(Values{});
+  Values front{};
+  press(front, {4}, 2.0);  // one dome near the middle of the front
+  const RobotGeometry g;
+  const auto edge = [&g](const Pose2d& pose, double y) {
+    return sim::bodyToWorld(pose, Vec2(g.frontX() + g.domeRadiusUnits, y));
+  };
+  std::vector<Pose2d> hits;
+  for (int k = 0; k < 200 && hits.size() < 3; ++k) {
+    const std::size_t before = s.nav().checkContactStarts();
+    s.step(front);
+    if (s.nav().checkContactStarts() > before) hits.push_back(s.nav().odometry());
+    if (hits.size() < 3) {
+      for (const Pose2d& h : hits) {
+        EXPECT_FALSE(s.nav().touchMap().touched(edge(h, g.halfWidth())));
+        EXPECT_FALSE(s.nav().touchMap().touched(edge(h, -g.halfWidth())));
+      }
+    }
+  }
+  ASSERT_EQ(hits.size(), 3u);
+  // Each contact lies within the repeat distance of the one before (the back-offs are short).
+  for (std::size_t i = 1; i < hits.size(); ++i)
+    EXPECT_LT(std::hypot(hits[i].x - hits[i - 1].x, hits[i].y - hits[i - 1].y), 40.0);
+  for (double y : {-g.halfWidth(), -0.5 * g.halfWidth(), 0.0, 0.5 * g.halfWidth(), g.halfWidth()})
+    EXPECT_TRUE(s.nav().touchMap().touched(edge(hits[2], y))) << "y " << y;
+}
+
+// Contacts ahead at places apart never mark the whole front.
+TEST(PlanDrive, ContactsAtDifferentPlacesDoNotMarkTheWholeFront) {
+  Script s(false, Vec2(4000.0, 0.0), true);
+  const RobotGeometry g;
+  Values front{};
+  press(front, {4}, 2.0);
+  int contacts = 0;
+  for (int round = 0; round < 4; ++round) {
+    // Drive on well past the last contact (more than the repeat distance), then touch.
+    for (int k = 0; k < 60; ++k)
+      s.step(Values{});
+    const std::size_t before = s.nav().checkContactStarts();
+    s.step(front);
+    ASSERT_GT(s.nav().checkContactStarts(), before);
+    ++contacts;
+    const Pose2d hit = s.nav().odometry();
+    for (double y : {-g.halfWidth(), g.halfWidth()})
+      EXPECT_FALSE(s.nav().touchMap().touched(
+          sim::bodyToWorld(hit, Vec2(g.frontX() + g.domeRadiusUnits, y))));
+  }
+  EXPECT_EQ(contacts, 4);
 }
 
 // Whether a group touches is its status's to say (per the source); the readings only say which
@@ -266,6 +353,20 @@ TEST(PlanDriveNavigate, ReachesTheGoalRoundABoxAndIsDeterministic) {
     const NavigateResult b = drive(world, {200, y, 0}, 6000);
     EXPECT_EQ(a.steps, b.steps);
     EXPECT_TRUE(a.run == b.run);  // byte for byte the same run
+  }
+}
+
+// The chapter-5 scene from 50 seeded starts (the truth source): every run reaches the goal. From
+// seed 4, with blocked steps counted as half their command but the front never marked at a
+// repeated contact, the robot drove the same line into one corner over and over (timeout).
+TEST(PlanDriveNavigate, Chapter5IsReachedFromFiftyStarts) {
+  auto loaded = sim::loadScene("chapter5");
+  ASSERT_TRUE(loaded.ok());
+  const auto world = std::make_shared<const sim::World>(std::move(loaded.value()));
+  for (std::uint64_t seed = 1; seed <= 50; ++seed) {
+    const NavigateResult r = drive(world, drawStart(world, seed), 6000);
+    EXPECT_EQ(r.outcome, RunOutcome::Success)
+        << "seed " << seed << ": " << runOutcomeName(r.outcome) << " after " << r.steps;
   }
 }
 

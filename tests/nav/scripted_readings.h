@@ -46,12 +46,14 @@ inline Truth truthOf(const Values& values, ContactClass touching = ContactClass:
 // drive), one step at a time, from the origin toward `goal`.
 class Script {
  public:
-  explicit Script(bool touchMap = false, Vec2 goal = Vec2(2000.0, 0.0), bool planDrive = false)
+  explicit Script(bool touchMap = false, Vec2 goal = Vec2(2000.0, 0.0), bool planDrive = false,
+                  double blockedStepShare = NavigatorConfig{}.blockedStepShare)
       : goal_(goal) {
     NavigatorConfig config;
     config.source = StatusSource::Truth;
     config.touchMap = touchMap;
     config.planDrive = planDrive;
+    config.blockedStepShare = blockedStepShare;
     auto made = Navigator::create(config);
     EXPECT_TRUE(made.ok());
     nav_ = std::move(made.value());
