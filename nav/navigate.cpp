@@ -106,6 +106,7 @@ Result<NavigateResult> navigate(std::shared_ptr<const sim::World> world, std::st
 
 Pose2d drawStart(const std::shared_ptr<const sim::World>& world, std::uint64_t seed) {
   const sim::Scene& scene = world->scene();
+  if (seed == 0) return scene.start;
   std::mt19937_64 rng(seed * 0x9E3779B97F4A7C15ull + 0x5851F42D4C957F2Dull);
   sim::Simulator probe(world);
   const double pi = std::numbers::pi;

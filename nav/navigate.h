@@ -65,7 +65,8 @@ Result<NavigateResult> navigate(std::shared_ptr<const sim::World> world, std::st
 // The start pose of seed `seed` in a scene: for the chapter-5 scene (a wall across the scene
 // between start and goal) a free pose on the start's side of the wall, at least a body length
 // from it, facing anywhere within 90 degrees of the goal; elsewhere a free pose near the scene's
-// start. Deterministic per (scene, seed).
+// start. Deterministic per (scene, seed). Seed 0 is the scene's own start pose, where the map
+// benchmark starts each map, so a benchmark map's run can be driven again (and watched).
 Pose2d drawStart(const std::shared_ptr<const sim::World>& world, std::uint64_t seed);
 
 }  // namespace tactile::nav

@@ -328,20 +328,12 @@
         <translation>--mode muss practice, experiment oder autonomous sein, erhalten: „%1“</translation>
     </message>
     <message>
-        <source>--seed needs a positive number, got &apos;%1&apos;</source>
-        <translation>--seed braucht eine positive Zahl, erhalten: „%1“</translation>
-    </message>
-    <message>
         <source>--rate needs a number &gt;= 0, got &apos;%1&apos;</source>
         <translation>--rate braucht eine Zahl &gt;= 0, erhalten: „%1“</translation>
     </message>
     <message>
         <source>Show the stored model NAME&apos;s predictions under the labels (needs --run); with --simulate --mode autonomous: the navigator&apos;s model.</source>
         <translation>Die Vorhersagen des gespeicherten Modells NAME unter den Labels zeigen (braucht --run); mit --simulate --mode autonomous: das Modell des Navigators.</translation>
-    </message>
-    <message>
-        <source>With --simulate --mode experiment: the seed of start and goal; --mode autonomous: the seed of the start (as tactile navigate --seeds).</source>
-        <translation>Mit --simulate --mode experiment: der Seed für Start und Ziel; --mode autonomous: der Seed des Starts (wie bei tactile navigate --seeds).</translation>
     </message>
     <message>
         <source>With --simulate --mode autonomous: what the navigator&apos;s status comes from, model (with --model), truth or bumper, as tactile navigate --status.</source>
@@ -366,6 +358,14 @@
     <message>
         <source>no display to open a window on (DISPLAY and WAYLAND_DISPLAY are not set). Run it in a desktop session, or with --screenshot FILE to render without a display; the command-line tool is tactile.</source>
         <translation>keine Anzeige, auf der sich ein Fenster öffnen ließe (DISPLAY und WAYLAND_DISPLAY sind nicht gesetzt). Starten Sie es in einer Desktop-Sitzung oder mit --screenshot FILE, um ohne Anzeige zu rendern; das Kommandozeilenwerkzeug ist tactile.</translation>
+    </message>
+    <message>
+        <source>With --simulate --mode experiment: the seed of start and goal; --mode autonomous: the seed of the start (as tactile navigate --seeds); 0: the scene&apos;s own start and goal.</source>
+        <translation>Mit --simulate --mode experiment: der Seed für Start und Ziel; --mode autonomous: der Seed des Starts (wie bei tactile navigate --seeds); 0: Start und Ziel der Szene selbst.</translation>
+    </message>
+    <message>
+        <source>--seed needs a number &gt;= 0, got &apos;%1&apos;</source>
+        <translation>--seed braucht eine Zahl &gt;= 0, erhalten: „%1“</translation>
     </message>
 </context>
 <context>
@@ -1606,10 +1606,6 @@ pausiert: eine Fahrtaste oder „Los“ startet die Uhr</translation>
         <translation>Tasten des Simulators</translation>
     </message>
     <message>
-        <source>Experiment mode: the seed of start and goal. Autonomous mode: the seed of the start, as in tactile navigate --seeds.</source>
-        <translation>Experimentmodus: der Seed für Start und Ziel. Autonomer Modus: der Seed des Starts, wie bei tactile navigate --seeds.</translation>
-    </message>
-    <message>
         <source>Run %1 ready: Play (P) lets the navigator drive, Step (N) takes one step</source>
         <translation>Lauf %1 bereit: „Abspielen“ (P) lässt den Navigator fahren, „Schritt“ (N) macht einen Schritt</translation>
     </message>
@@ -1646,6 +1642,14 @@ pausiert: „Abspielen“ (P) lässt den Navigator fahren, „Schritt“ (N) mac
     <message>
         <source>Simulator truth (the ceiling, no model)</source>
         <translation>Wahrheit des Simulators (die Obergrenze, kein Modell)</translation>
+    </message>
+    <message>
+        <source>0: the scene&apos;s own</source>
+        <translation>0: die der Szene</translation>
+    </message>
+    <message>
+        <source>Experiment mode: the seed of start and goal. Autonomous mode: the seed of the start, as in tactile navigate --seeds. 0: the scene&apos;s own start and goal (where the map benchmark starts).</source>
+        <translation>Experimentmodus: der Seed für Start und Ziel. Autonomer Modus: der Seed des Starts, wie bei tactile navigate --seeds. 0: Start und Ziel der Szene selbst (wo der Karten-Benchmark startet).</translation>
     </message>
 </context>
 <context>

@@ -328,20 +328,12 @@
         <translation>--mode 必须是 practice、experiment 或 autonomous，收到的是“%1”</translation>
     </message>
     <message>
-        <source>--seed needs a positive number, got &apos;%1&apos;</source>
-        <translation>--seed 需要一个正数，收到的是“%1”</translation>
-    </message>
-    <message>
         <source>--rate needs a number &gt;= 0, got &apos;%1&apos;</source>
         <translation>--rate 需要一个 &gt;= 0 的数，收到的是“%1”</translation>
     </message>
     <message>
         <source>Show the stored model NAME&apos;s predictions under the labels (needs --run); with --simulate --mode autonomous: the navigator&apos;s model.</source>
         <translation>在标注下方显示已存储模型 NAME 的预测（需要 --run）；与 --simulate --mode autonomous 一起使用时：导航器使用的模型。</translation>
-    </message>
-    <message>
-        <source>With --simulate --mode experiment: the seed of start and goal; --mode autonomous: the seed of the start (as tactile navigate --seeds).</source>
-        <translation>与 --simulate --mode experiment 一起使用：起点和目标的种子；--mode autonomous：起点的种子（与 tactile navigate --seeds 相同）。</translation>
     </message>
     <message>
         <source>With --simulate --mode autonomous: what the navigator&apos;s status comes from, model (with --model), truth or bumper, as tactile navigate --status.</source>
@@ -366,6 +358,14 @@
     <message>
         <source>no display to open a window on (DISPLAY and WAYLAND_DISPLAY are not set). Run it in a desktop session, or with --screenshot FILE to render without a display; the command-line tool is tactile.</source>
         <translation>没有可打开窗口的显示（未设置 DISPLAY 和 WAYLAND_DISPLAY）。请在桌面会话中运行，或使用 --screenshot FILE 在无显示的情况下渲染；命令行工具是 tactile。</translation>
+    </message>
+    <message>
+        <source>With --simulate --mode experiment: the seed of start and goal; --mode autonomous: the seed of the start (as tactile navigate --seeds); 0: the scene&apos;s own start and goal.</source>
+        <translation>与 --simulate --mode experiment 一起使用：起点和目标的种子；--mode autonomous：起点的种子（与 tactile navigate --seeds 相同）；0：场景自身的起点和目标。</translation>
+    </message>
+    <message>
+        <source>--seed needs a number &gt;= 0, got &apos;%1&apos;</source>
+        <translation>--seed 需要一个 &gt;= 0 的数，收到的是“%1”</translation>
     </message>
 </context>
 <context>
@@ -1597,10 +1597,6 @@ paused: a drive key or Go starts the clock</source>
         <translation>模拟器按键</translation>
     </message>
     <message>
-        <source>Experiment mode: the seed of start and goal. Autonomous mode: the seed of the start, as in tactile navigate --seeds.</source>
-        <translation>实验模式：起点和目标的种子。自主模式：起点的种子，与 tactile navigate --seeds 相同。</translation>
-    </message>
-    <message>
         <source>Run %1 ready: Play (P) lets the navigator drive, Step (N) takes one step</source>
         <translation>运行 %1 已就绪：“播放”（P）让导航器驾驶，“单步”（N）走一步</translation>
     </message>
@@ -1637,6 +1633,14 @@ paused: Play (P) lets the navigator drive, Step (N) takes one step</source>
     <message>
         <source>Simulator truth (the ceiling, no model)</source>
         <translation>模拟器真值（上限，无模型）</translation>
+    </message>
+    <message>
+        <source>0: the scene&apos;s own</source>
+        <translation>0：场景自身的</translation>
+    </message>
+    <message>
+        <source>Experiment mode: the seed of start and goal. Autonomous mode: the seed of the start, as in tactile navigate --seeds. 0: the scene&apos;s own start and goal (where the map benchmark starts).</source>
+        <translation>实验模式：起点和目标的种子。自主模式：起点的种子，与 tactile navigate --seeds 相同。0：场景自身的起点和目标（地图基准测试的起点）。</translation>
     </message>
 </context>
 <context>

@@ -324,8 +324,10 @@ void registerNavigateVerb(CLI::App& app) {
       cmd->add_option("--status", args->status,
                       "Status source: model (trained models, online decision), truth (the "
                       "simulator's ground truth) or bumper (Bug2 with the skin as a bumper)");
-  CLI::Option* seeds = cmd->add_option("--seeds", args->seeds,
-                                       "Seeds of the start poses: A-B, A or A,B,C (default 1)");
+  CLI::Option* seeds =
+      cmd->add_option("--seeds", args->seeds,
+                      "Seeds of the start poses: A-B, A or A,B,C (default 1); 0 is the "
+                      "scene's own start, where --benchmark starts a map");
   cmd->add_option(
       "--max-steps", args->maxSteps,
       "Step budget per run (then `timeout`); with --benchmark the least budget of a map, "

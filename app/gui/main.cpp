@@ -75,7 +75,7 @@ struct WorkbenchOptions {
                  "main",
                  "With --simulate --mode experiment: the seed of start and goal; "
                  "--mode autonomous: the seed of the start (as tactile navigate "
-                 "--seeds)."),
+                 "--seeds); 0: the scene's own start and goal."),
              QStringLiteral("N")),
         commands(QStringLiteral("commands"),
                  QApplication::translate(
@@ -261,8 +261,8 @@ int main(int argc, char** argv) {
     if (parser.isSet(options.seed)) {
       bool ok = true;
       const int seed = parser.value(options.seed).toInt(&ok);
-      if (!ok || seed < 1)
-        return fail(QApplication::translate("main", "--seed needs a positive number, got '%1'")
+      if (!ok || seed < 0)
+        return fail(QApplication::translate("main", "--seed needs a number >= 0, got '%1'")
                         .arg(parser.value(options.seed)));
       simWindow->setSeed(seed);
     }

@@ -72,6 +72,20 @@ for source in ("model", "truth", "bumper"):
         assert rows == r["steps"], (f, rows, r["steps"])
 PY
 
+# Seed 0 is the scene's own start, where the benchmark starts a map: with the map's budget the
+# run is the benchmark's, for every source (so a benchmark map can be driven again and watched).
+for source in model truth bumper; do
+  budget=$(python3 -c "import json,sys; r=json.load(open(sys.argv[1]))['$source']['map_runs'][1]; print(r['budget'])" "$W/bench.json")
+  "$T" navigate --scene random:office:900002 --status "$source" --model "$W/m.json" --seeds 0 \
+    --max-steps "$budget" --out-dir "$W/again" --json --quiet >"$W/again.json" ||
+    fail "navigate --seeds 0 ($source) failed"
+  # Every line but the seed's (0 here, the map's seed there).
+  grep -v '^# seed:' "$W/again/navigate_${source}_0000.csv" >"$W/again.csv"
+  grep -v '^# seed:' "$W/bench/benchmark_${source}_900002.csv" >"$W/bench.csv"
+  [ "$(wc -l <"$W/again.csv")" -gt 20 ] || fail "seed 0 ($source): a short run"
+  cmp -s "$W/again.csv" "$W/bench.csv" || fail "seed 0 ($source): the run differs from the benchmark's"
+done
+
 # Usage errors exit 2; a model source without a model too.
 set +e
 "$T" navigate --scene chapter5 --status truth --seeds 5-2 >/dev/null 2>&1

@@ -11,6 +11,7 @@
 #include <QProcess>
 #include <QPushButton>
 #include <QSignalSpy>
+#include <QSpinBox>
 #include <QTemporaryDir>
 #include <QtTest>
 
@@ -600,6 +601,50 @@ class SimWindowTest : public QObject {
     }
     QVERIFY(workbench({QStringLiteral("--status"), QStringLiteral("sideways")}, &err) > 0);
     QVERIFY2(err.contains(QStringLiteral("--status must be")), qPrintable(err));
+  }
+
+  // Seed 0 is the scene's own start and goal: the window drives a benchmark map's run as the
+  // benchmark (and `tactile navigate --seeds 0`) does.
+  void seedZeroStartsWhereTheBenchmarkDoes() {
+    QTemporaryDir dir;
+    const QString spec = QStringLiteral("random:office:900002");
+    constexpr double kLimitSeconds = 40.0;
+    SimWindow window(dir.filePath(QStringLiteral("zero.db")));
+    window.setMode(SimMode::Autonomous);
+    window.setScene(spec);
+    window.setNavigatorSource(nav::StatusSource::Truth);
+    window.setSeed(0);
+    auto* seedBox = window.findChild<QSpinBox*>(QStringLiteral("seedBox"));
+    QVERIFY(seedBox != nullptr);
+    QCOMPARE(seedBox->text(), QStringLiteral("0: the scene's own"));
+    window.setTimeLimitSeconds(kLimitSeconds);
+    QVERIFY(window.startRun().ok());
+    gui::SimSession* s = window.session();
+    while (!s->hasEnded() && s->advance(100) > 0) {
+    }
+    const RunData* run = s->run();
+
+    auto scene = sim::loadScene(spec.toStdString());
+    QVERIFY(scene.ok());
+    auto world = std::make_shared<const sim::World>(std::move(scene.value()));
+    nav::NavigatorConfig config;
+    config.source = nav::StatusSource::Truth;
+    nav::NavigateOptions options;
+    options.maxSteps = static_cast<std::size_t>(kLimitSeconds / 0.1 + 0.5);
+    options.seed = 0;
+    auto reference = nav::navigate(world, spec.toStdString(), world->scene().start,
+                                   world->scene().goal, config, options, true);
+    QVERIFY(reference.ok());
+    QVERIFY(run->stepCount() > 100);
+    QCOMPARE(run->stepCount(), reference->run.stepCount());
+    QVERIFY(test_support::bitEqual(reference->run.x, run->x));
+    QVERIFY(reference->run.extraValues == run->extraValues);
+
+    // Seed 1 starts elsewhere (drawn near the scene's start).
+    window.setSeed(1);
+    QVERIFY(window.startRun().ok());
+    s->advance(1);
+    QVERIFY(!test_support::bitEqual(reference->run.x, s->run()->x));
   }
 
   void autonomousStepByStepTakesOneStepAndPauseStops() {

@@ -100,7 +100,8 @@ Status SimSession::start(const SimSetup& setup) {
   Result<sim::Scene> loaded = sim::loadScene(spec);
   if (!loaded) return loaded.error();
   sim::Scene scene = std::move(loaded.value());
-  if (setup.mode == SimMode::Experiment) {
+  // Seed 0: the scene's own start and goal.
+  if (setup.mode == SimMode::Experiment && setup.seed != 0) {
     Result<sim::Scene> drawn = sim::drawStartGoal(scene, setup.seed);
     if (!drawn) return drawn.error();
     scene = std::move(drawn.value());

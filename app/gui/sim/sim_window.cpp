@@ -149,7 +149,8 @@ void SimWindow::buildUi() {
   subjectEdit_->setPlaceholderText(tr("needed in experiment mode"));
   subjectEdit_->setMaxLength(100);
   seedBox_ = new QSpinBox;
-  seedBox_->setRange(1, 1000000);
+  seedBox_->setRange(0, 1000000);
+  seedBox_->setSpecialValueText(tr("0: the scene's own"));
   seedBox_->setValue(1);
   limitBox_ = new QDoubleSpinBox;
   limitBox_->setRange(10, 7200);
@@ -183,7 +184,8 @@ void SimWindow::buildUi() {
   seedBox_->setObjectName(QStringLiteral("seedBox"));
   seedBox_->setToolTip(
       tr("Experiment mode: the seed of start and goal. Autonomous mode: the seed "
-         "of the start, as in tactile navigate --seeds."));
+         "of the start, as in tactile navigate --seeds. 0: the scene's own start and goal "
+         "(where the map benchmark starts)."));
   form->addRow(tr("Time limit"), limitBox_);
   form->addRow(tr("Step rate"), rateBox_);
   form->addRow(tr("Navigator model"), modelBox_);
