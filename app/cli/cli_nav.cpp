@@ -302,7 +302,9 @@ int runNavigate(const NavigateArgs& a) {
     }
     std::printf("success rate %.1f%% (%zu of %zu) on %s with %s status in %.1f s\n", 100.0 * rate,
                 successes, rows.size(), label.c_str(), a.status.c_str(), seconds);
-    if (!a.outDir.empty()) std::printf("wrote %zu runs to %s\n", rows.size(), a.outDir.c_str());
+    if (!a.outDir.empty())
+      std::printf("wrote %zu run%s to %s\n", rows.size(), rows.size() == 1 ? "" : "s",
+                  a.outDir.c_str());
   }
   return kExitOk;
 }
