@@ -83,6 +83,8 @@ struct GroupPoint {
   double x = 0.0;  // mean dome centre, body frame
   double y = 0.0;
   double arm = 0.0;  // its distance from the rear axle
+  double nx = 0.0;   // the group's outward normal (unit mean of its domes' normals)
+  double ny = 0.0;
 };
 
 const std::array<GroupPoint, kGroupCount>& groupPoints() {
@@ -94,7 +96,12 @@ const std::array<GroupPoint, kGroupCount>& groupPoints() {
       for (int i = 0; i < info.sensorCount; ++i) {
         p.x += domes[static_cast<std::size_t>(info.firstSensor + i)].centre.x;
         p.y += domes[static_cast<std::size_t>(info.firstSensor + i)].centre.y;
+        p.nx += domes[static_cast<std::size_t>(info.firstSensor + i)].normal.x;
+        p.ny += domes[static_cast<std::size_t>(info.firstSensor + i)].normal.y;
       }
+      const double norm = std::sqrt(p.nx * p.nx + p.ny * p.ny);
+      p.nx /= norm;
+      p.ny /= norm;
       p.x /= info.sensorCount;
       p.y /= info.sensorCount;
       p.arm = std::sqrt(p.x * p.x + p.y * p.y);
@@ -121,6 +128,17 @@ double groupStepMotion(SensorGroup group, double v, double omega, double dtSecon
   const double vy = omega * p.x;
   const double m = std::sqrt(vx * vx + vy * vy) * dtSeconds;
   return std::isfinite(m) ? m : 0.0;
+}
+
+std::array<double, 2> groupMotionDirection(SensorGroup group, double v, double omega) {
+  if (!std::isfinite(v) || !std::isfinite(omega)) return {0.0, 0.0};
+  const GroupPoint& p = groupPoints()[static_cast<std::size_t>(groupIndex(group))];
+  const double vx = v - omega * p.y;
+  const double vy = omega * p.x;
+  const double speed = std::sqrt(vx * vx + vy * vy);
+  if (!(speed > 0.0) || !std::isfinite(speed)) return {0.0, 0.0};
+  // Outward (into what the group touches) and along the outline counter-clockwise.
+  return {(vx * p.nx + vy * p.ny) / speed, (-vx * p.ny + vy * p.nx) / speed};
 }
 
 double stepSecondsOf(const RunData& run) {
@@ -234,13 +252,11 @@ void groupFeatures(const StepContext& context, SensorGroup group, FeatureKind ki
     extra[i] = (values[normalOffset(sensor)] - before) * scale;
   }
   if (usesMotion(kind)) {
-    // Which way the domes move, not how fast: the forward and the turning share of the motion.
-    const double arm = groupLeverArm(group);
-    const double v = std::isfinite(context.v) ? context.v : 0.0;
-    const double omega = std::isfinite(context.omega) ? context.omega : 0.0;
-    const double total = std::abs(v) + std::abs(omega) * arm;
-    extra[info.sensorCount] = total > 0.0 ? v / total : 0.0;
-    extra[info.sensorCount + 1] = total > 0.0 ? omega * arm / total : 0.0;
+    // Which way the domes move, not how fast: the unit direction of the group's motion in its own
+    // frame (into the obstacle, along the outline).
+    const std::array<double, 2> direction = groupMotionDirection(group, context.v, context.omega);
+    extra[info.sensorCount] = direction[0];
+    extra[info.sensorCount + 1] = direction[1];
     extra[info.sensorCount + 2] =
         std::min(std::max(context.contactTravel, 0.0), kMotionContactCap) / kMotionContactCap;
   } else {

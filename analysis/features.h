@@ -43,10 +43,10 @@ enum class FeatureKind : std::uint8_t {
   // speed in it (docs/analysis.md#motion-features): per sensor the change of its n value since
   // the step at which the group's domes were at least kMotionSpan units back along their path,
   // scaled to kMotionSpan units of travel (n_t - n_lag) * kMotionSpan / max(travel, kMotionSpan);
-  // the forward and the turning share of the group's motion, v / (|v| + |omega| r) and
-  // omega r / (|v| + |omega| r) (r: the group's distance from the rear axle; 0 and 0 standing
-  // still); the units the group's domes travelled during the contact (over at most its last
-  // kContextCap steps), capped at kMotionContactCap and divided by it.
+  // the unit direction of the group's motion in the group's own frame (groupMotionDirection:
+  // into the obstacle, along the outline; 0 and 0 standing still); the units the group's domes
+  // travelled during the contact (over at most its last kContextCap steps), capped at
+  // kMotionContactCap and divided by it.
   Motion,
   // normal+shear+touch+motion and the neighbours' readings of the neighbours kind.
   MotionNeighbours,
@@ -89,6 +89,10 @@ constexpr bool usesNeighbours(FeatureKind kind) {
 double groupStepMotion(SensorGroup group, double v, double omega, double dtSeconds);
 // The distance of the mean of the group's dome centres from the rear axle.
 double groupLeverArm(SensorGroup group);
+// The unit direction in which the mean of the group's dome centres moves under (v, omega), in the
+// group's own frame: {along its outward normal (into what it touches), along the outline
+// counter-clockwise}; {0, 0} standing still or for non-finite input.
+std::array<double, 2> groupMotionDirection(SensorGroup group, double v, double omega);
 // A run's step length: its `dt` metadata when positive and finite, else kDefaultStepSeconds.
 double stepSecondsOf(const RunData& run);
 

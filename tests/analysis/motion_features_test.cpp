@@ -21,17 +21,17 @@ constexpr SensorGroup kRight = SensorGroup::Right;
 // Where the motion kinds' feature blocks begin in a group's row.
 struct Layout {
   int change = 0;   // first of sensorCount scaled changes
-  int forward = 0;  // forward share
-  int turn = 0;     // turning share
+  int into = 0;     // direction of motion: into what the group touches
+  int along = 0;    // direction of motion: along the outline, counter-clockwise
   int contact = 0;  // contact travel / cap
 };
 Layout layoutOf(SensorGroup g) {
   const int n = groupInfo(g).sensorCount;
   Layout l;
   l.change = 2 * n + kTouchFlags;
-  l.forward = l.change + n;
-  l.turn = l.forward + 1;
-  l.contact = l.turn + 1;
+  l.into = l.change + n;
+  l.along = l.into + 1;
+  l.contact = l.along + 1;
   return l;
 }
 
@@ -105,8 +105,8 @@ TEST(MotionFeatures, GroupMotionFollowsTheBody) {
 }
 
 // The point of the kind: the same wall passed at 10 and at 50 units/s gives the same features
-// (the change per kMotionSpan units of travel, the shares, the travel since contact), where the
-// context kind's change grows with the speed.
+// (the change per kMotionSpan units of travel, the direction, the travel since contact), where
+// the context kind's change grows with the speed.
 TEST(MotionFeatures, TheSameContactAtAnySpeedReadsTheSame) {
   const double slope = 0.05;                           // n per unit travelled
   const RunData slow = rampRun(60, 10.0, 0.0, slope);  // 1 unit a step
@@ -122,8 +122,11 @@ TEST(MotionFeatures, TheSameContactAtAnySpeedReadsTheSame) {
       EXPECT_NEAR(a[static_cast<std::size_t>(l.change + i)], slope * kMotionSpan, 1e-9) << t;
       EXPECT_NEAR(c[static_cast<std::size_t>(l.change + i)], slope * kMotionSpan, 1e-9) << t;
     }
-    EXPECT_EQ(a[static_cast<std::size_t>(l.forward)], 1.0);
-    EXPECT_EQ(a[static_cast<std::size_t>(l.turn)], 0.0);
+    // Driving forward, the right side's domes move along its outline (counter-clockwise), not
+    // into the wall.
+    EXPECT_NEAR(a[static_cast<std::size_t>(l.into)], 0.0, 1e-12);
+    EXPECT_NEAR(a[static_cast<std::size_t>(l.along)], 1.0, 1e-12);
+    EXPECT_EQ(b[static_cast<std::size_t>(l.along)], a[static_cast<std::size_t>(l.along)]);
     // 20 units travelled: the contact travel is at its cap.
     EXPECT_EQ(a[static_cast<std::size_t>(l.contact)], 1.0);
     EXPECT_EQ(c[static_cast<std::size_t>(l.contact)], 1.0);
@@ -145,7 +148,7 @@ TEST(MotionFeatures, TheSameContactAtAnySpeedReadsTheSame) {
               5.0 * ctxSlow[static_cast<std::size_t>(l.change)], 1e-9);
 }
 
-// Standing still: the lag is kMotionLagCap steps, the change unscaled, both shares and the
+// Standing still: the lag is kMotionLagCap steps, the change unscaled, the direction and the
 // contact travel 0; nothing is NaN.
 TEST(MotionFeatures, StandingStill) {
   RunData run;
@@ -168,24 +171,36 @@ TEST(MotionFeatures, StandingStill) {
     EXPECT_NEAR(f[static_cast<std::size_t>(l.change)], 1.0 + 0.01 * static_cast<double>(t) - before,
                 1e-12)
         << t;
-    EXPECT_EQ(f[static_cast<std::size_t>(l.forward)], 0.0);
-    EXPECT_EQ(f[static_cast<std::size_t>(l.turn)], 0.0);
+    EXPECT_EQ(f[static_cast<std::size_t>(l.into)], 0.0);
+    EXPECT_EQ(f[static_cast<std::size_t>(l.along)], 0.0);
     EXPECT_EQ(f[static_cast<std::size_t>(l.contact)], 0.0);
   }
 }
 
-// Turning in place: the turning share is the sign of omega, the forward share 0, and the lag is
-// the steps the group's domes take to travel kMotionSpan on their arc; backing off straight
-// gives a forward share of -1.
+// Turning in place: the direction is the group point's (its arc's tangent), opposite for the
+// opposite turn, and the lag is the steps the group's domes take to travel kMotionSpan on their
+// arc. The front moves purely along its face turning in place and purely into what it touches
+// driving forward; backing off reverses the direction.
 TEST(MotionFeatures, TurningInPlaceAndBackingOff) {
+  const Layout l = layoutOf(kRight);
+  std::array<double, 2> left{};
   for (double omega : {0.8, -0.8}) {
     const double perStep = groupStepMotion(kRight, 0.0, omega, kDefaultStepSeconds);
     ASSERT_GT(perStep, 0.0);
     const RunData run = rampRun(40, 0.0, omega, 0.02);
-    const Layout l = layoutOf(kRight);
     const auto f = featuresAt(run, 30, kRight, FeatureKind::Motion);
-    EXPECT_EQ(f[static_cast<std::size_t>(l.forward)], 0.0);
-    EXPECT_DOUBLE_EQ(f[static_cast<std::size_t>(l.turn)], omega > 0 ? 1.0 : -1.0);
+    const double into = f[static_cast<std::size_t>(l.into)];
+    const double along = f[static_cast<std::size_t>(l.along)];
+    EXPECT_NEAR(into * into + along * along, 1.0, 1e-12);
+    if (omega > 0) {
+      // Turning left, the right side swings away from what it touches and forward.
+      EXPECT_LT(into, -0.3);
+      EXPECT_GT(along, 0.3);
+      left = {into, along};
+    } else {
+      EXPECT_DOUBLE_EQ(into, -left[0]);
+      EXPECT_DOUBLE_EQ(along, -left[1]);
+    }
     const auto lagSteps = static_cast<int>(std::ceil(kMotionSpan / perStep - 1e-9));
     const double travel = lagSteps * perStep;
     EXPECT_NEAR(f[static_cast<std::size_t>(l.change)],
@@ -193,18 +208,24 @@ TEST(MotionFeatures, TurningInPlaceAndBackingOff) {
     const StepContext c = stepContextOf(run, 30, kRight, FeatureKind::Motion);
     EXPECT_EQ(c.laggedValues, run.stepSensors(30 - static_cast<std::size_t>(lagSteps)));
   }
+  const auto turnF = groupMotionDirection(SensorGroup::Front, 0.0, 0.5);
+  EXPECT_NEAR(turnF[0], 0.0, 1e-12);
+  EXPECT_NEAR(turnF[1], 1.0, 1e-12);
+  const auto driveF = groupMotionDirection(SensorGroup::Front, 30.0, 0.0);
+  EXPECT_NEAR(driveF[0], 1.0, 1e-12);
+  EXPECT_NEAR(driveF[1], 0.0, 1e-12);
+  const auto backF = groupMotionDirection(SensorGroup::Front, -30.0, 0.0);
+  EXPECT_NEAR(backF[0], -1.0, 1e-12);
+  EXPECT_EQ(groupMotionDirection(SensorGroup::Front, 0.0, 0.0), (std::array<double, 2>{0.0, 0.0}));
+  EXPECT_EQ(groupMotionDirection(SensorGroup::Front, NAN, 0.0), (std::array<double, 2>{0.0, 0.0}));
   const RunData back = rampRun(30, -20.0, 0.0, 0.02);
   const auto f = featuresAt(back, 20, kRight, FeatureKind::Motion);
-  EXPECT_EQ(f[static_cast<std::size_t>(layoutOf(kRight).forward)], -1.0);
-  // Driving and turning: the shares add up to 1 in magnitude.
-  const RunData arc = rampRun(30, 20.0, -0.3, 0.02);
-  const auto g = featuresAt(arc, 20, kRight, FeatureKind::Motion);
-  const Layout l = layoutOf(kRight);
-  EXPECT_GT(g[static_cast<std::size_t>(l.forward)], 0.0);
-  EXPECT_LT(g[static_cast<std::size_t>(l.turn)], 0.0);
-  EXPECT_NEAR(std::abs(g[static_cast<std::size_t>(l.forward)]) +
-                  std::abs(g[static_cast<std::size_t>(l.turn)]),
-              1.0, 1e-12);
+  EXPECT_NEAR(f[static_cast<std::size_t>(l.along)], -1.0, 1e-12);
+  // A slight steer while driving turns the direction slightly: the direction does not blow small
+  // corrections up.
+  const auto steer = groupMotionDirection(kRight, 30.0, 0.1);
+  EXPECT_GT(steer[1], 0.99);
+  EXPECT_LT(std::abs(steer[0]), 0.15);
 }
 
 // The run's dt: 20 units/s at dt 0.05 moves the domes as far per step as 10 at 0.1.
