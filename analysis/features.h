@@ -40,7 +40,7 @@ enum class FeatureKind : std::uint8_t {
   // presses a front corner group too; a wall's end passing back along L reaches RLC).
   Neighbours,
   // normal+shear+touch, then context taken over the group's MOTION instead of its steps, with no
-  // speed in it (docs/analysis.md#motion-features): per sensor the change of its n value since
+  // speed in it (docs/analysis.md#features-featuresh): per sensor the change of its n value since
   // the step at which the group's domes were at least kMotionSpan units back along their path,
   // scaled to kMotionSpan units of travel (n_t - n_lag) * kMotionSpan / max(travel, kMotionSpan);
   // the unit direction of the group's motion in the group's own frame (groupMotionDirection:

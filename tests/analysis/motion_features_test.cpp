@@ -1,5 +1,5 @@
 // The motion feature kinds: context taken over how far the domes moved, not over steps, and
-// without the robot's speed (docs/analysis.md#motion-features).
+// without the robot's speed (docs/analysis.md#features-featuresh).
 #include <gtest/gtest.h>
 
 #include <cmath>
