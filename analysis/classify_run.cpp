@@ -129,6 +129,7 @@ RunClassification classifyRun(const RunData& run, const ModelBundle& bundle,
   // read from memory once for all groups (the context features and touch flags of one group read
   // the values of others). Each row's log-likelihoods depend neither on the slicing nor on the
   // blocks (the density is evaluated row by row).
+  const double dt = stepSecondsOf(run);
   for (std::size_t s0 = 0; s0 < steps; s0 += kClassifySliceSteps) {
     const std::size_t s1 = std::min(steps, s0 + kClassifySliceSteps);
     for (GroupPass& p : passes) {
@@ -146,13 +147,18 @@ RunClassification classifyRun(const RunData& run, const ModelBundle& bundle,
           // The context of stepContextOf, kept as the walk goes (contact steps counted here
           // instead of back from every step).
           StepContext context;
-          context.values = values;
-          context.laggedValues = t >= static_cast<std::size_t>(kContextLag)
-                                     ? run.stepSensors(t - static_cast<std::size_t>(kContextLag))
-                                     : nullptr;
-          context.v = t < run.v.size() ? run.v[t] : 0.0;
-          context.omega = t < run.omega.size() ? run.omega[t] : 0.0;
-          context.contactSteps = p.contactSteps;
+          if (usesMotion(p.kind)) {
+            // The motion kinds look back over up to kMotionLagCap steps' commands.
+            context = stepContextOf(run, t, p.group, p.kind, dt);
+          } else {
+            context.values = values;
+            context.laggedValues = t >= static_cast<std::size_t>(kContextLag)
+                                       ? run.stepSensors(t - static_cast<std::size_t>(kContextLag))
+                                       : nullptr;
+            context.v = t < run.v.size() ? run.v[t] : 0.0;
+            context.omega = t < run.omega.size() ? run.omega[t] : 0.0;
+            context.contactSteps = p.contactSteps;
+          }
           groupFeatures(context, p.group, p.kind, p.row.data());
           const Eigen::Index i = static_cast<Eigen::Index>(p.blockSteps.size());
           double* to = p.block.data() + i;

@@ -5,6 +5,7 @@
 #include <map>
 
 #include "base/text_parse.h"
+#include "run/robot_geometry.h"
 
 namespace tactile::analysis {
 
@@ -22,6 +23,10 @@ std::string_view featureKindName(FeatureKind kind) {
       return "normal+shear+touch+context";
     case FeatureKind::Neighbours:
       return "normal+shear+touch+context+neighbours";
+    case FeatureKind::Motion:
+      return "normal+shear+touch+motion";
+    case FeatureKind::MotionNeighbours:
+      return "normal+shear+touch+motion+neighbours";
   }
   return "normal";
 }
@@ -41,8 +46,10 @@ int featureDimension(SensorGroup group, FeatureKind kind) {
     case FeatureKind::NormalShearTouch:
       return 2 * n + kTouchFlags;
     case FeatureKind::Context:
+    case FeatureKind::Motion:
       return 3 * n + kTouchFlags + 3;
     case FeatureKind::Neighbours:
+    case FeatureKind::MotionNeighbours:
       return 3 * n + kTouchFlags + 3 + kNeighbourFeatures;
     case FeatureKind::Normal:
     case FeatureKind::Magnitude:
@@ -70,7 +77,97 @@ bool groupIsZero(const RunData& run, std::size_t step, SensorGroup group) {
   return groupIsZero(run.stepSensors(step), group);
 }
 
-StepContext stepContextOf(const RunData& run, std::size_t step, SensorGroup group) {
+namespace {
+
+struct GroupPoint {
+  double x = 0.0;  // mean dome centre, body frame
+  double y = 0.0;
+  double arm = 0.0;  // its distance from the rear axle
+  double nx = 0.0;   // the group's outward normal (unit mean of its domes' normals)
+  double ny = 0.0;
+};
+
+const std::array<GroupPoint, kGroupCount>& groupPoints() {
+  static const std::array<GroupPoint, kGroupCount> points = [] {
+    std::array<GroupPoint, kGroupCount> out{};
+    const auto domes = domePlacements();
+    for (const GroupInfo& info : kSensorGroups) {
+      GroupPoint& p = out[static_cast<std::size_t>(groupIndex(info.group))];
+      for (int i = 0; i < info.sensorCount; ++i) {
+        p.x += domes[static_cast<std::size_t>(info.firstSensor + i)].centre.x;
+        p.y += domes[static_cast<std::size_t>(info.firstSensor + i)].centre.y;
+        p.nx += domes[static_cast<std::size_t>(info.firstSensor + i)].normal.x;
+        p.ny += domes[static_cast<std::size_t>(info.firstSensor + i)].normal.y;
+      }
+      const double norm = std::sqrt(p.nx * p.nx + p.ny * p.ny);
+      p.nx /= norm;
+      p.ny /= norm;
+      p.x /= info.sensorCount;
+      p.y /= info.sensorCount;
+      p.arm = std::sqrt(p.x * p.x + p.y * p.y);
+    }
+    return out;
+  }();
+  return points;
+}
+
+static_assert(kMotionLagCap == kContextCap, "one history length for lag and contact travel");
+
+}  // namespace
+
+double groupLeverArm(SensorGroup group) {
+  return groupPoints()[static_cast<std::size_t>(groupIndex(group))].arm;
+}
+
+double groupStepMotion(SensorGroup group, double v, double omega, double dtSeconds) {
+  if (!std::isfinite(v) || !std::isfinite(omega) || !std::isfinite(dtSeconds) || dtSeconds <= 0.0)
+    return 0.0;
+  // The velocity of a body point p under (v, omega): (v - omega p.y, omega p.x).
+  const GroupPoint& p = groupPoints()[static_cast<std::size_t>(groupIndex(group))];
+  const double vx = v - omega * p.y;
+  const double vy = omega * p.x;
+  const double m = std::sqrt(vx * vx + vy * vy) * dtSeconds;
+  return std::isfinite(m) ? m : 0.0;
+}
+
+std::array<double, 2> groupMotionDirection(SensorGroup group, double v, double omega) {
+  if (!std::isfinite(v) || !std::isfinite(omega)) return {0.0, 0.0};
+  const GroupPoint& p = groupPoints()[static_cast<std::size_t>(groupIndex(group))];
+  const double vx = v - omega * p.y;
+  const double vy = omega * p.x;
+  const double speed = std::sqrt(vx * vx + vy * vy);
+  if (!(speed > 0.0) || !std::isfinite(speed)) return {0.0, 0.0};
+  // Outward (into what the group touches) and along the outline counter-clockwise.
+  return {(vx * p.nx + vy * p.ny) / speed, (-vx * p.ny + vy * p.nx) / speed};
+}
+
+double stepSecondsOf(const RunData& run) {
+  const std::optional<double> dt = run.dtSeconds();
+  return dt && std::isfinite(*dt) && *dt > 0.0 ? *dt : kDefaultStepSeconds;
+}
+
+MotionLag motionLagOf(const double* motionsNewestFirst, int available) {
+  MotionLag lag;
+  // Walk back step by step until the domes had travelled kMotionSpan units, the run began, or
+  // kMotionLagCap steps were looked at (standing still).
+  while (lag.travel < kMotionSpan && lag.steps < kMotionLagCap && lag.steps < available) {
+    lag.travel += motionsNewestFirst[lag.steps];
+    ++lag.steps;
+  }
+  lag.beforeStart = lag.steps >= available;
+  return lag;
+}
+
+double contactTravelOf(const double* motionsNewestFirst, int available, int contactSteps) {
+  const int k = std::min({contactSteps, kContextCap, available});
+  double travel = 0.0;
+  for (int i = k - 1; i >= 0; --i)
+    travel += motionsNewestFirst[i];
+  return travel;
+}
+
+StepContext stepContextOf(const RunData& run, std::size_t step, SensorGroup group, FeatureKind kind,
+                          double dtSeconds) {
   StepContext c;
   c.values = run.stepSensors(step);
   c.laggedValues = step >= static_cast<std::size_t>(kContextLag)
@@ -84,6 +181,23 @@ StepContext stepContextOf(const RunData& run, std::size_t step, SensorGroup grou
     ++touched;
   }
   c.contactSteps = touched;
+  if (usesMotion(kind)) {
+    // The group's motion of this step and the kMotionLagCap - 1 before it, newest first.
+    const double dt = dtSeconds > 0.0 ? dtSeconds : stepSecondsOf(run);
+    std::array<double, kMotionLagCap> motions{};
+    const int available = static_cast<int>(std::min<std::size_t>(step + 1, kMotionLagCap));
+    for (int i = 0; i < available; ++i) {
+      const std::size_t s = step - static_cast<std::size_t>(i);
+      motions[static_cast<std::size_t>(i)] = groupStepMotion(
+          group, s < run.v.size() ? run.v[s] : 0.0, s < run.omega.size() ? run.omega[s] : 0.0, dt);
+    }
+    const int known = static_cast<int>(std::min<std::size_t>(step + 1, 1u << 30));
+    const MotionLag lag = motionLagOf(motions.data(), known);
+    c.laggedValues =
+        lag.beforeStart ? nullptr : run.stepSensors(step - static_cast<std::size_t>(lag.steps));
+    c.laggedTravel = lag.travel;
+    c.contactTravel = contactTravelOf(motions.data(), known, c.contactSteps);
+  }
   return c;
 }
 
@@ -105,6 +219,8 @@ void groupFeatures(const StepContext& context, SensorGroup group, FeatureKind ki
       case FeatureKind::NormalShearTouch:
       case FeatureKind::Context:
       case FeatureKind::Neighbours:
+      case FeatureKind::Motion:
+      case FeatureKind::MotionNeighbours:
         out[2 * i] = n;
         out[2 * i + 1] = s;
         break;
@@ -125,17 +241,31 @@ void groupFeatures(const StepContext& context, SensorGroup group, FeatureKind ki
   }
   if (!usesHistory(kind)) return;
   double* extra = flags + kTouchFlags;
+  // The motion kinds scale the change to kMotionSpan units of travel: a lag that took one long
+  // step (fast driving) reads as one of kMotionSpan; a robot standing still gives the plain change.
+  const double scale =
+      usesMotion(kind) ? kMotionSpan / std::max(context.laggedTravel, kMotionSpan) : 1.0;
   for (int i = 0; i < info.sensorCount; ++i) {
     const int sensor = info.firstSensor + i;
     const double before =
         context.laggedValues != nullptr ? context.laggedValues[normalOffset(sensor)] : 0.0;
-    extra[i] = values[normalOffset(sensor)] - before;
+    extra[i] = (values[normalOffset(sensor)] - before) * scale;
   }
-  extra[info.sensorCount] = context.v;
-  extra[info.sensorCount + 1] = context.omega;
-  extra[info.sensorCount + 2] =
-      static_cast<double>(std::min(context.contactSteps, kContextCap)) / kContextCap;
-  if (kind != FeatureKind::Neighbours) return;
+  if (usesMotion(kind)) {
+    // Which way the domes move, not how fast: the unit direction of the group's motion in its own
+    // frame (into the obstacle, along the outline).
+    const std::array<double, 2> direction = groupMotionDirection(group, context.v, context.omega);
+    extra[info.sensorCount] = direction[0];
+    extra[info.sensorCount + 1] = direction[1];
+    extra[info.sensorCount + 2] =
+        std::min(std::max(context.contactTravel, 0.0), kMotionContactCap) / kMotionContactCap;
+  } else {
+    extra[info.sensorCount] = context.v;
+    extra[info.sensorCount + 1] = context.omega;
+    extra[info.sensorCount + 2] =
+        static_cast<double>(std::min(context.contactSteps, kContextCap)) / kContextCap;
+  }
+  if (!usesNeighbours(kind)) return;
   double* side = extra + info.sensorCount + 3;
   for (SensorGroup other : neighbourGroups(group)) {
     const GroupInfo& o = groupInfo(other);
@@ -158,7 +288,7 @@ void groupFeatures(const RunData& run, std::size_t step, SensorGroup group, Feat
     groupFeatures(c, group, kind, out);
     return;
   }
-  groupFeatures(stepContextOf(run, step, group), group, kind, out);
+  groupFeatures(stepContextOf(run, step, group, kind), group, kind, out);
 }
 
 void groupFeatures(const double* stepValues, SensorGroup group, FeatureKind kind, double* out) {

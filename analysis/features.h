@@ -39,30 +39,74 @@ enum class FeatureKind : std::uint8_t {
   // neighbour counter-clockwise first: the same contact seen from the side (a vertex on F's face
   // presses a front corner group too; a wall's end passing back along L reaches RLC).
   Neighbours,
+  // normal+shear+touch, then context taken over the group's MOTION instead of its steps, with no
+  // speed in it (docs/analysis.md#features-featuresh): per sensor the change of its n value since
+  // the step at which the group's domes were at least kMotionSpan units back along their path,
+  // scaled to kMotionSpan units of travel (n_t - n_lag) * kMotionSpan / max(travel, kMotionSpan);
+  // the unit direction of the group's motion in the group's own frame (groupMotionDirection:
+  // into the obstacle, along the outline; 0 and 0 standing still); the units the group's domes
+  // travelled during the contact (over at most its last kContextCap steps), capped at
+  // kMotionContactCap and divided by it.
+  Motion,
+  // normal+shear+touch+motion and the neighbours' readings of the neighbours kind.
+  MotionNeighbours,
 };
 inline constexpr int kTouchFlags = 3;
 inline constexpr int kNeighbourFeatures = 4;
 inline constexpr int kContextLag = 3;
 inline constexpr int kContextCap = 20;
-inline constexpr std::array<FeatureKind, 6> kFeatureKinds{
-    FeatureKind::Normal,           FeatureKind::Magnitude, FeatureKind::NormalShear,
-    FeatureKind::NormalShearTouch, FeatureKind::Context,   FeatureKind::Neighbours};
+// The motion kinds' lag: half a dome's radius of travel (3 steps at the training recipe's typical
+// 10 units/s and dt 0.1 s, the context kind's lag there), looked back at most kMotionLagCap steps
+// (a robot standing still).
+inline constexpr double kMotionSpan = 3.0;
+inline constexpr int kMotionLagCap = 20;
+// The motion kinds' contact length cap: 20 units (20 steps at the recipe's typical speed, the
+// context kind's cap there).
+inline constexpr double kMotionContactCap = 20.0;
+// The step length assumed where a run or a stream does not give one (the simulator's default).
+inline constexpr double kDefaultStepSeconds = 0.1;
+inline constexpr std::array<FeatureKind, 8> kFeatureKinds{
+    FeatureKind::Normal,           FeatureKind::Magnitude,       FeatureKind::NormalShear,
+    FeatureKind::NormalShearTouch, FeatureKind::Context,         FeatureKind::Neighbours,
+    FeatureKind::Motion,           FeatureKind::MotionNeighbours};
 
-// True for the kinds that read the steps before (the context and neighbours kinds).
-constexpr bool usesHistory(FeatureKind kind) {
-  return kind == FeatureKind::Context || kind == FeatureKind::Neighbours;
+// True for the kinds taken over the robot's motion (motion, motion+neighbours).
+constexpr bool usesMotion(FeatureKind kind) {
+  return kind == FeatureKind::Motion || kind == FeatureKind::MotionNeighbours;
 }
+// True for the kinds that read the steps before (context, neighbours and the motion kinds).
+constexpr bool usesHistory(FeatureKind kind) {
+  return kind == FeatureKind::Context || kind == FeatureKind::Neighbours || usesMotion(kind);
+}
+// True for the kinds that end with the neighbours' readings.
+constexpr bool usesNeighbours(FeatureKind kind) {
+  return kind == FeatureKind::Neighbours || kind == FeatureKind::MotionNeighbours;
+}
+
+// How far the group's domes move during one step of the command (v, omega) over dtSeconds: the
+// speed of the mean of the group's dome centres (body frame, rear-axle origin) times dt, >= 0
+// (0 for non-finite input or a non-positive dt).
+double groupStepMotion(SensorGroup group, double v, double omega, double dtSeconds);
+// The distance of the mean of the group's dome centres from the rear axle.
+double groupLeverArm(SensorGroup group);
+// The unit direction in which the mean of the group's dome centres moves under (v, omega), in the
+// group's own frame: {along its outward normal (into what it touches), along the outline
+// counter-clockwise}; {0, 0} standing still or for non-finite input.
+std::array<double, 2> groupMotionDirection(SensorGroup group, double v, double omega);
+// A run's step length: its `dt` metadata when positive and finite, else kDefaultStepSeconds.
+double stepSecondsOf(const RunData& run);
 
 // The two groups next to `group` round the body: counter-clockwise (F -> FLC -> L -> ...) first.
 std::array<SensorGroup, 2> neighbourGroups(SensorGroup group);
 
 // "normal", "magnitude", "normal+shear", "normal+shear+touch", "normal+shear+touch+context",
-// "normal+shear+touch+context+neighbours".
+// "normal+shear+touch+context+neighbours", "normal+shear+touch+motion",
+// "normal+shear+touch+motion+neighbours".
 std::string_view featureKindName(FeatureKind kind);
 std::optional<FeatureKind> parseFeatureKind(std::string_view name);
 
 // Dimension D of a group's feature vector: sensorCount, 2 * sensorCount for normal+shear, plus
-// kTouchFlags with the touch flags, plus sensorCount + 3 with the context, plus
+// kTouchFlags with the touch flags, plus sensorCount + 3 with the context or the motion, plus
 // kNeighbourFeatures with the neighbours.
 int featureDimension(SensorGroup group, FeatureKind kind);
 
@@ -74,18 +118,39 @@ bool groupIsZero(const RunData& run, std::size_t step, SensorGroup group);
 bool groupIsZero(const double* stepValues, SensorGroup group);
 
 // What a feature vector is computed from at one step: the step's kValuesPerStep sensor values
-// and, for the context kind, the values kContextLag steps before (null before the run's first
-// step: zeros), the commanded v and omega, and how many steps the group has touched before this
-// one without a break (0 at the first step of contact).
+// and, for the context kinds, the values of the lagged step (context: kContextLag steps before;
+// motion: see motionLagOf; null before the run's first step: zeros), the commanded v and omega,
+// and how many steps the group has touched before this one without a break (0 at the first step
+// of contact). The motion kinds also read how far the group's domes travelled since the lagged
+// step (laggedTravel) and during the contact (contactTravel, over at most kContextCap steps).
 struct StepContext {
   const double* values = nullptr;
   const double* laggedValues = nullptr;
   double v = 0.0;
   double omega = 0.0;
   int contactSteps = 0;
+  double laggedTravel = 0.0;
+  double contactTravel = 0.0;
 };
-// The context of `step` of a run (steps since contact counted back at most kContextCap steps).
-StepContext stepContextOf(const RunData& run, std::size_t step, SensorGroup group);
+// The context of `step` of a run for the given kind (steps since contact counted back at most
+// kContextCap steps; the motion kinds' lag and travel from the run's commands and dtSeconds,
+// which is stepSecondsOf(run) when 0).
+StepContext stepContextOf(const RunData& run, std::size_t step, SensorGroup group,
+                          FeatureKind kind = FeatureKind::Context, double dtSeconds = 0.0);
+
+// The motion kinds' history from the group's motion of the steps before, newest first:
+// motions[i] is how far the domes moved during the step that led to step t - i (i = 0: to this
+// step), for i < available (available = t + 1 in a run: the first step's motion is the move that
+// led to it). The lag is the smallest k with motions[0] + ... + motions[k - 1] >= kMotionSpan, at
+// most kMotionLagCap; `before` is true when the run has no step t - k (then the lagged values are
+// zeros). contactTravel sums the last contactSteps motions, oldest first.
+struct MotionLag {
+  int steps = 0;
+  bool beforeStart = false;
+  double travel = 0.0;
+};
+MotionLag motionLagOf(const double* motionsNewestFirst, int available);
+double contactTravelOf(const double* motionsNewestFirst, int available, int contactSteps);
 
 // Writes the group's feature vector into out[0 .. featureDimension): the one feature function;
 // the run form and the online decider both call it.

@@ -485,10 +485,12 @@ GroupModel modelOf(const json& v, const std::string& path) {
   if (!kind) {
     fail(path + ".features",
          "expected normal, magnitude, normal+shear, normal+shear+touch, "
-         "normal+shear+touch+context or normal+shear+touch+context+neighbours, found '" +
+         "normal+shear+touch+context, normal+shear+touch+context+neighbours, "
+         "normal+shear+touch+motion or normal+shear+touch+motion+neighbours, found '" +
              featureName + "'");
   }
-  if (*kind == FeatureKind::Neighbours && fileVersion < modelVersionFor(*kind)) {
+  // Kinds newer than version 2 need the version that brought them (earlier kinds read from 1 on).
+  if (modelVersionFor(*kind) > 2 && fileVersion < modelVersionFor(*kind)) {
     fail(path + ".features", featureName + " needs version " +
                                  std::to_string(modelVersionFor(*kind)) + ", the file has " +
                                  std::to_string(fileVersion));
@@ -604,6 +606,7 @@ const GroupModel* ModelBundle::find(SensorGroup group) const {
 }
 
 int modelVersionFor(FeatureKind features) {
+  if (usesMotion(features)) return 4;
   return features == FeatureKind::Neighbours ? 3 : 2;
 }
 

@@ -49,9 +49,10 @@ namespace tactile::analysis {
 inline constexpr std::string_view kModelFormat = "tactile-model";
 inline constexpr std::string_view kModelBundleFormat = "tactile-model-bundle";
 // The newest version this program reads. Files are written as version 2 unless a model takes the
-// neighbours features (normal+shear+touch+context+neighbours, new in version 3), so that older
-// programs read every file they can use and refuse the others by version.
-inline constexpr int kModelVersion = 3;
+// neighbours features (normal+shear+touch+context+neighbours, new in version 3) or a motion kind
+// (normal+shear+touch+motion[+neighbours], new in version 4), so that older programs read every
+// file they can use and refuse the others by version.
+inline constexpr int kModelVersion = 4;
 inline constexpr int kOldestModelVersion = 1;
 // The version a file with these models is written as.
 int modelVersionFor(FeatureKind features);

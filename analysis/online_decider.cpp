@@ -22,6 +22,7 @@ std::optional<ContactClass> decideStep(const GroupModel& model, const StepContex
                                        DecisionMode mode, OnlineGroupState& state) {
   if (groupIsZero(context.values, model.group)) {
     state.logAlpha.resize(0);
+    state.features.resize(0);
     state.contactSteps = 0;
     state.perStep.reset();
     state.decided.reset();
@@ -34,6 +35,7 @@ std::optional<ContactClass> decideStep(const GroupModel& model, const StepContex
   here.contactSteps = state.noContact ? 0 : state.contactSteps + 1;
   Eigen::MatrixXd x(1, featureDimension(model.group, model.features));
   groupFeatures(here, model.group, model.features, x.data());
+  state.features = x.row(0);
   Eigen::MatrixXd ll;
   // The batch evaluation (not GaussianMixture::logDensity): bit for bit what classifyRun computes.
   model.classifier.logLikelihoods(x, ll);
@@ -73,12 +75,22 @@ OnlineDecider::OnlineDecider(const ModelBundle& bundle, DecisionMode mode) : Onl
 }
 
 void OnlineDecider::update(const double* stepValues, double v, double omega) {
+  constexpr auto history = static_cast<std::size_t>(kHistory);
+  if (pastValues_.empty()) pastValues_.assign(history * kValuesPerStep, 0.0);
+  const std::size_t t = steps_;
+  pastV_[t % history] = v;
+  pastOmega_[t % history] = omega;
+  const auto valuesOf = [&](std::size_t s) {
+    return pastValues_.data() + (s % history) * kValuesPerStep;
+  };
   StepContext context;
   context.values = stepValues;
   context.laggedValues =
-      history_.size() == static_cast<std::size_t>(kContextLag) ? history_.front().data() : nullptr;
+      t >= static_cast<std::size_t>(kContextLag) ? valuesOf(t - kContextLag) : nullptr;
   context.v = v;
   context.omega = omega;
+  // Steps fed so far with this one, as the run form's step + 1.
+  const int known = static_cast<int>(std::min<std::size_t>(t + 1, 1u << 30));
   for (std::size_t g = 0; g < models_.size(); ++g) {
     const GroupModel* model = models_[g];
     if (model == nullptr) {
@@ -88,7 +100,25 @@ void OnlineDecider::update(const double* stepValues, double v, double omega) {
       continue;
     }
     const DecisionMode mode = mode_.value_or(model->decision);
-    decided_[g] = decideStep(*model, context, mode, states_[g]);
+    StepContext here = context;
+    if (usesMotion(model->features)) {
+      // The group's motion of this step and the ones before it, newest first.
+      std::array<double, kMotionLagCap> motions{};
+      const int n = std::min(known, kMotionLagCap);
+      for (int i = 0; i < n; ++i) {
+        const std::size_t s = (t - static_cast<std::size_t>(i)) % history;
+        motions[static_cast<std::size_t>(i)] =
+            groupStepMotion(model->group, pastV_[s], pastOmega_[s], stepSeconds_);
+      }
+      const MotionLag lag = motionLagOf(motions.data(), known);
+      here.laggedValues =
+          lag.beforeStart ? nullptr : valuesOf(t - static_cast<std::size_t>(lag.steps));
+      here.laggedTravel = lag.travel;
+      const OnlineGroupState& s = states_[g];
+      here.contactTravel =
+          contactTravelOf(motions.data(), known, s.noContact ? 0 : s.contactSteps + 1);
+    }
+    decided_[g] = decideStep(*model, here, mode, states_[g]);
     const OnlineGroupState& s = states_[g];
     perStep_[g] =
         s.noContact ? std::optional<ContactClass>(ContactClass::NoContact)
@@ -96,11 +126,14 @@ void OnlineDecider::update(const double* stepValues, double v, double omega) {
             ? std::optional<ContactClass>(model->classes[static_cast<std::size_t>(*s.perStep)])
             : std::nullopt;
   }
-  // Keep the last kContextLag steps (oldest first).
-  std::vector<double> values(stepValues, stepValues + kValuesPerStep);
-  if (history_.size() == static_cast<std::size_t>(kContextLag)) history_.erase(history_.begin());
-  history_.push_back(std::move(values));
+  // Keep this step's values for the steps after it.
+  std::copy(stepValues, stepValues + kValuesPerStep,
+            pastValues_.data() + (t % history) * kValuesPerStep);
   ++steps_;
+}
+
+void OnlineDecider::setStepSeconds(double dtSeconds) {
+  stepSeconds_ = std::isfinite(dtSeconds) && dtSeconds > 0.0 ? dtSeconds : kDefaultStepSeconds;
 }
 
 std::optional<ContactClass> OnlineDecider::decided(SensorGroup group) const {
@@ -115,7 +148,9 @@ void OnlineDecider::reset() {
   states_ = {};
   decided_ = {};
   perStep_ = {};
-  history_.clear();
+  pastValues_.clear();
+  pastV_ = {};
+  pastOmega_ = {};
   steps_ = 0;
 }
 

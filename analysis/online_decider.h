@@ -29,11 +29,12 @@ namespace tactile::analysis {
 
 // The state of one group's online filter: what it keeps between steps.
 struct OnlineGroupState {
-  Eigen::VectorXd logAlpha;    // filtered log posterior of the last step; empty between contacts
-  int contactSteps = 0;        // steps of the current contact before this one
-  std::optional<int> perStep;  // the last step's per-step argmax (class index into the model)
-  std::optional<int> decided;  // the last step's decision (class index into the model)
-  bool noContact = true;       // the last step had the group all zero
+  Eigen::VectorXd logAlpha;     // filtered log posterior of the last step; empty between contacts
+  int contactSteps = 0;         // steps of the current contact before this one
+  std::optional<int> perStep;   // the last step's per-step argmax (class index into the model)
+  std::optional<int> decided;   // the last step's decision (class index into the model)
+  bool noContact = true;        // the last step had the group all zero
+  Eigen::RowVectorXd features;  // the last step's feature row (empty when it had no contact)
 };
 
 // One group, one step: updates `state` with the step and returns the decided class (NoContact
@@ -51,8 +52,12 @@ class OnlineDecider {
   OnlineDecider(const ModelBundle& bundle, DecisionMode mode);
 
   // Feeds one step: kValuesPerStep sensor values (normal and shear of every dome, in the layout of
-  // RunData::stepSensors), the commanded speed v and turn rate omega.
+  // RunData::stepSensors), the commanded speed v and turn rate omega that led to them.
   void update(const double* stepValues, double v = 0.0, double omega = 0.0);
+  // The length of a step in seconds, for the motion feature kinds (default kDefaultStepSeconds,
+  // the simulator's; a run's `dt`). Non-positive or non-finite values mean the default.
+  void setStepSeconds(double dtSeconds);
+  double stepSeconds() const { return stepSeconds_; }
   // The decision of the last step fed: NoContact by rule, the model's class, or nullopt (no
   // model for the group, or no step fed yet).
   std::optional<ContactClass> decided(SensorGroup group) const;
@@ -72,8 +77,13 @@ class OnlineDecider {
   std::array<OnlineGroupState, kGroupCount> states_{};
   std::array<std::optional<ContactClass>, kGroupCount> decided_{};
   std::array<std::optional<ContactClass>, kGroupCount> perStep_{};
-  // The last kContextLag steps' values, oldest first, for the context features.
-  std::vector<std::vector<double>> history_;
+  // The values of the last kHistory steps before this one and the commands of the last kHistory
+  // steps with this one, step s in slot s % kHistory, for the context and motion features.
+  static constexpr int kHistory = kMotionLagCap > kContextLag ? kMotionLagCap : kContextLag;
+  std::vector<double> pastValues_;
+  std::array<double, kHistory> pastV_{};
+  std::array<double, kHistory> pastOmega_{};
+  double stepSeconds_ = kDefaultStepSeconds;
   std::size_t steps_ = 0;
 };
 

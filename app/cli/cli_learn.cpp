@@ -206,7 +206,8 @@ FeatureKind parseFeatures(const std::string& name) {
   if (!f)
     throw UsageError("unknown --features '" + name +
                      "' (normal, magnitude, normal+shear, normal+shear+touch, "
-                     "normal+shear+touch+context, normal+shear+touch+context+neighbours)");
+                     "normal+shear+touch+context, normal+shear+touch+context+neighbours, "
+                     "normal+shear+touch+motion, normal+shear+touch+motion+neighbours)");
   return *f;
 }
 
@@ -1045,7 +1046,8 @@ void registerLearnVerbs(CLI::App& app, CLI::App& /*bench*/) {
     }
     cmd->add_option("--features", args->features,
                     "normal, magnitude, normal+shear, normal+shear+touch, "
-                    "normal+shear+touch+context or normal+shear+touch+context+neighbours "
+                    "normal+shear+touch+context, normal+shear+touch+context+neighbours, "
+                    "normal+shear+touch+motion or normal+shear+touch+motion+neighbours "
                     "(default: each group's own)");
     cmd->add_option("--decision", args->decision,
                     "The models' default decision: online (HMM forward filter, causal) or step "

@@ -23,6 +23,10 @@ struct BenchData {
   RunData run;
   RunData sparse;  // the same length, 15% of the steps in contact per group
   ModelBundle bundle;
+  // The same settings with the motion features in every group (the synthetic run's commands move
+  // the domes 0.1 units a step: every lag walks back the whole kMotionLagCap steps, the worst
+  // case).
+  ModelBundle motion;
 };
 
 const BenchData& benchData() {
@@ -38,18 +42,21 @@ const BenchData& benchData() {
       s.classifier.gmm.restarts = 1;
     auto out = trainAndEvaluate(job);
     if (out) b.bundle = std::move(out->bundle);
+    for (TrainSettings& s : job.settings.byGroup)
+      s.features = FeatureKind::Motion;
+    auto motion = trainAndEvaluate(job);
+    if (motion) b.motion = std::move(motion->bundle);
     return b;
   }();
   return d;
 }
 
-void classify(benchmark::State& state, const RunData& run) {
-  const BenchData& d = benchData();
+void classify(benchmark::State& state, const RunData& run, const ModelBundle& bundle) {
   ClassifyOptions options;
   options.decision = static_cast<DecisionMode>(state.range(0));
   std::size_t contact = 0;
   for (auto _ : state) {
-    const RunClassification r = classifyRun(run, d.bundle, options);
+    const RunClassification r = classifyRun(run, bundle, options);
     benchmark::DoNotOptimize(r.groups.data());
     contact = 0;
     for (const GroupClassification& g : r.groups)
@@ -59,14 +66,18 @@ void classify(benchmark::State& state, const RunData& run) {
   state.SetLabel(std::string(decisionModeName(options.decision.value())));
   state.counters["steps"] = static_cast<double>(run.stepCount());
   state.counters["group_contact_steps"] = static_cast<double>(contact);
-  state.counters["models"] = static_cast<double>(d.bundle.models.size());
+  state.counters["models"] = static_cast<double>(bundle.models.size());
 }
 void BM_ClassifyRun(benchmark::State& state) {
-  classify(state, benchData().run);
+  classify(state, benchData().run, benchData().bundle);
 }
 // A run in which each group touches in 15% of the steps (a simulated wall-following run: 5-20%).
 void BM_ClassifyRunSparse(benchmark::State& state) {
-  classify(state, benchData().sparse);
+  classify(state, benchData().sparse, benchData().bundle);
+}
+// The sparse run with the motion features in every group.
+void BM_ClassifyRunSparseMotion(benchmark::State& state) {
+  classify(state, benchData().sparse, benchData().motion);
 }
 BENCHMARK(BM_ClassifyRun)
     ->Arg(static_cast<int>(DecisionMode::Step))
@@ -79,6 +90,13 @@ BENCHMARK(BM_ClassifyRun)
     ->UseRealTime();
 BENCHMARK(BM_ClassifyRunSparse)
     ->Arg(static_cast<int>(DecisionMode::Step))
+    ->Arg(static_cast<int>(DecisionMode::Online))
+    ->Unit(benchmark::kSecond)
+    ->Iterations(1)
+    ->Repetitions(3)
+    ->MeasureProcessCPUTime()
+    ->UseRealTime();
+BENCHMARK(BM_ClassifyRunSparseMotion)
     ->Arg(static_cast<int>(DecisionMode::Online))
     ->Unit(benchmark::kSecond)
     ->Iterations(1)

@@ -27,7 +27,8 @@ import json
 import sys
 
 FEATURE_SIZE = {"normal": 0, "normal+shear": 1, "normal+shear+touch": 2, "normal+shear+touch+context": 3,
-                "normal+shear+touch+context+neighbours": 4}
+                "normal+shear+touch+context+neighbours": 4, "normal+shear+touch+motion": 3,
+                "normal+shear+touch+motion+neighbours": 4}
 
 
 def pooled(cell, recipe):

@@ -288,6 +288,14 @@ TEST(ClassifyRun, EqualsAStepByStepReference) {
   const ModelBundle neighbours = trainBundle(FeatureKind::Neighbours, 3);
   ASSERT_EQ(neighbours.models.size(), 4u);
   expectStepByStep(testdata::makeLabelledRun(1337, 79, 0.3, 0.9), neighbours);
+  // The motion kind looks back over the commands: a run whose speed and turn change often.
+  const ModelBundle motion = trainBundle(FeatureKind::Motion, 3);
+  RunData moving = testdata::makeLabelledRun(1337, 80, 0.3, 0.9);
+  for (std::size_t t = 0; t < moving.stepCount(); ++t) {
+    moving.v[t] = static_cast<double>((t / 7) % 5) * 12.0 - 10.0;  // -10 .. 38 units/s
+    moving.omega[t] = (t / 11) % 3 == 0 ? 0.7 : 0.0;
+  }
+  expectStepByStep(moving, motion);
 }
 
 TEST(ClassifyRun, EmptyAndContactFreeRuns) {

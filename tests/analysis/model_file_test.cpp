@@ -183,10 +183,10 @@ TEST(ModelFileValidation, WrongFormat) {
 
 TEST(ModelFileValidation, WrongVersion) {
   json j = validModelJson();
-  j["version"] = 4;  // versions 1 to 3 read
-  EXPECT_NE(errorOf(j).find("expected version 1 to 3"), std::string::npos) << errorOf(j);
+  j["version"] = 5;  // versions 1 to 4 read
+  EXPECT_NE(errorOf(j).find("expected version 1 to 4"), std::string::npos) << errorOf(j);
   j["version"] = 0;
-  EXPECT_NE(errorOf(j).find("expected version 1 to 3"), std::string::npos) << errorOf(j);
+  EXPECT_NE(errorOf(j).find("expected version 1 to 4"), std::string::npos) << errorOf(j);
 }
 
 TEST(ModelFileValidation, MissingField) {

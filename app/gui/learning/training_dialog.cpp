@@ -4,6 +4,7 @@
 #include <QComboBox>
 #include <QDialogButtonBox>
 #include <QFormLayout>
+#include <QGridLayout>
 #include <QGroupBox>
 #include <QHBoxLayout>
 #include <QHeaderView>
@@ -179,14 +180,18 @@ void TrainingDialog::buildUi() {
   floors_->setToolTip(tr("Variance floors, comma-separated"));
   form->addRow(tr("Variance floors:"), floors_);
 
-  auto* featureRow = new QHBoxLayout;
+  // Two rows of four: eight kinds in one row would make the dialog wider than a laptop screen.
+  auto* featureRow = new QGridLayout;
+  constexpr int kFeatureColumns = 4;
+  int featureIndex = 0;
   for (analysis::FeatureKind k : analysis::kFeatureKinds) {
     auto* box = new QCheckBox(qs(analysis::featureKindName(k)));
     box->setChecked(k == analysis::FeatureKind::Normal);
     features_.push_back(box);
-    featureRow->addWidget(box);
+    featureRow->addWidget(box, featureIndex / kFeatureColumns, featureIndex % kFeatureColumns);
+    ++featureIndex;
   }
-  featureRow->addStretch();
+  featureRow->setColumnStretch(kFeatureColumns, 1);
   form->addRow(tr("Features:"), featureRow);
 
   seeds_ = new QLineEdit(QStringLiteral("1"));
