@@ -28,6 +28,9 @@ class StatusEstimator {
   // The command that led to the next update's values (the model source's context features use
   // it; the others ignore it).
   virtual void command(double /*v*/, double /*omega*/) {}
+  // The run's step length in seconds, given before the first update (the model source's motion
+  // features measure the domes' travel with it; the others ignore it).
+  virtual void setStepSeconds(double /*dtSeconds*/) {}
 };
 
 // Trained models with the learning part's online decision (each model's own decision: the
@@ -43,6 +46,8 @@ class ModelStatusEstimator : public StatusEstimator {
     v_ = v;
     omega_ = omega;
   }
+  void setStepSeconds(double dtSeconds) override { decider_.setStepSeconds(dtSeconds); }
+  const analysis::OnlineDecider& decider() const { return decider_; }
 
  private:
   std::shared_ptr<const analysis::ModelBundle> models_;

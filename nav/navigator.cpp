@@ -1240,6 +1240,7 @@ struct Navigator::Impl {
       initialised = true;
       odo = obs.start;
       dt = obs.dtSeconds;
+      estimator->setStepSeconds(dt);
       // The goal as the robot knows it: its offset from the start (thesis ch. 5: direction and
       // distance to the destination).
       goal = obs.goal;

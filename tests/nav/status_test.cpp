@@ -1,13 +1,18 @@
 // The online decision of the model source and the hole memory.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <random>
+#include <string>
 
 #include "analysis/classify_run.h"
 #include "analysis/training.h"
 #include "nav/contact_status.h"
 #include "nav/hole_memory.h"
+#include "nav/navigate.h"
+#include "sim/scene_source.h"
+#include "sim/world.h"
 #include "tests/analysis/learn_test_data.h"
 
 namespace tactile::nav {
@@ -59,6 +64,68 @@ TEST(ModelStatusEstimator, DecidesAsTheOnlineClassificationOfTheRun) {
   }
   EXPECT_GT(compared, 100u);
   EXPECT_GT(leftTouching, 0u);
+}
+
+// With the motion features at dt 0.05 the navigator's model statuses are the online decisions
+// `tactile classify` takes on the recorded run (which reads the run's dt), one row later; and the
+// estimator hands the step length on to its decider.
+TEST(ModelStatusEstimator, NavigatorDecidesAsClassifyOnItsRunAtAnotherStepLength) {
+  const RunData train = testdata::makeLabelledRun(3000, 12);
+  std::vector<analysis::LabelledRun> runs{{&train, analysis::labelsFromTruth(train)}};
+  auto bundle = std::make_shared<analysis::ModelBundle>();
+  for (SensorGroup g : {SensorGroup::Right, SensorGroup::Left}) {
+    const analysis::GroupDataSet data =
+        analysis::buildGroupDataSet(runs, g, analysis::FeatureKind::Motion);
+    analysis::TrainSettings settings;
+    settings.features = analysis::FeatureKind::Motion;
+    settings.classifier.method = analysis::ClassifierMethod::Gmm;
+    settings.classifier.gmm.components = 2;
+    settings.classifier.gmm.seed = 5;
+    analysis::GroupTrainResult trained = analysis::trainGroupModel(data, settings);
+    ASSERT_TRUE(trained.ok) << trained.reason;
+    bundle->models.push_back(std::move(trained.model));
+  }
+  auto scene = sim::loadScene("chapter5");
+  ASSERT_TRUE(scene.ok());
+  auto world = std::make_shared<const sim::World>(std::move(scene.value()));
+  NavigatorConfig config;
+  config.source = StatusSource::Model;
+  config.models = bundle;
+  NavigateOptions options;
+  options.maxSteps = 4000;
+  options.sim.dtSeconds = 0.05;
+  auto r = navigate(world, "chapter5", drawStart(world, 1), world->scene().goal, config, options);
+  ASSERT_TRUE(r.ok()) << r.errorText();
+  const RunData& run = r->run;
+  const analysis::RunClassification batch =
+      analysis::classifyRun(run, *bundle, analysis::ClassifyOptions{});
+  std::size_t compared = 0;
+  for (SensorGroup g : {SensorGroup::Right, SensorGroup::Left}) {
+    const analysis::GroupClassification& c = batch.groups[groupIndex(g)];
+    const std::string column = "x_status_" + std::string(groupInfo(g).shortName);
+    const auto it = std::find(run.extraColumns.begin(), run.extraColumns.end(), column);
+    ASSERT_NE(it, run.extraColumns.end()) << column;
+    const auto col = static_cast<std::size_t>(it - run.extraColumns.begin());
+    // Row t + 1 carries the status the navigator chose row t + 1's command by: its decision on
+    // the readings of row t.
+    for (std::size_t t = 0; t + 1 < run.stepCount(); ++t) {
+      if (!c.decided[t]) continue;
+      const std::string& recorded = run.extraValues[(t + 1) * run.extraColumns.size() + col];
+      const ContactClass expected = c.model->classes[static_cast<std::size_t>(*c.decided[t])];
+      // A side's status may read as a hole instead (its width); every class reading must agree.
+      if (!parseContactClass(recorded)) continue;
+      EXPECT_EQ(recorded, contactClassName(expected)) << column << " step " << t;
+      ++compared;
+    }
+  }
+  EXPECT_GT(compared, 30u);
+
+  // The estimator hands the step length to its decider (non-positive: the simulator's default).
+  ModelStatusEstimator estimator(bundle);
+  estimator.setStepSeconds(0.05);
+  EXPECT_DOUBLE_EQ(estimator.decider().stepSeconds(), 0.05);
+  estimator.setStepSeconds(0.0);
+  EXPECT_DOUBLE_EQ(estimator.decider().stepSeconds(), analysis::kDefaultStepSeconds);
 }
 
 TEST(HoleMemory, ReadingsOfOneOpeningMergeIntoTheMeanWidth) {
