@@ -79,30 +79,26 @@ void BM_ClassifyRunSparse(benchmark::State& state) {
 void BM_ClassifyRunSparseMotion(benchmark::State& state) {
   classify(state, benchData().sparse, benchData().motion);
 }
+// Every case: one timed pass per repetition, three repetitions, the process's CPU time.
+void onePassThreeTimes(benchmark::internal::Benchmark* b) {
+  b->Unit(benchmark::kSecond)
+      ->Iterations(1)
+      ->Repetitions(3)
+      ->MeasureProcessCPUTime()
+      ->UseRealTime();
+}
 BENCHMARK(BM_ClassifyRun)
     ->Arg(static_cast<int>(DecisionMode::Step))
     ->Arg(static_cast<int>(DecisionMode::Online))
     ->Arg(static_cast<int>(DecisionMode::Offline))
-    ->Unit(benchmark::kSecond)
-    ->Iterations(1)
-    ->Repetitions(3)
-    ->MeasureProcessCPUTime()
-    ->UseRealTime();
+    ->Apply(onePassThreeTimes);
 BENCHMARK(BM_ClassifyRunSparse)
     ->Arg(static_cast<int>(DecisionMode::Step))
     ->Arg(static_cast<int>(DecisionMode::Online))
-    ->Unit(benchmark::kSecond)
-    ->Iterations(1)
-    ->Repetitions(3)
-    ->MeasureProcessCPUTime()
-    ->UseRealTime();
+    ->Apply(onePassThreeTimes);
 BENCHMARK(BM_ClassifyRunSparseMotion)
     ->Arg(static_cast<int>(DecisionMode::Online))
-    ->Unit(benchmark::kSecond)
-    ->Iterations(1)
-    ->Repetitions(3)
-    ->MeasureProcessCPUTime()
-    ->UseRealTime();
+    ->Apply(onePassThreeTimes);
 
 }  // namespace
 
