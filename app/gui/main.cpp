@@ -117,10 +117,15 @@ void setIdentity() {
   QCoreApplication::setApplicationVersion(QStringLiteral(TACTILE_VERSION));
 }
 
+// True when an argument is one of `names`, or NAME=VALUE for one of them.
 bool hasArgument(int argc, char** argv, std::initializer_list<std::string_view> names) {
-  for (int i = 1; i < argc; ++i)
+  for (int i = 1; i < argc; ++i) {
+    const std::string_view arg = argv[i];
     for (std::string_view name : names)
-      if (argv[i] == name) return true;
+      if (arg == name ||
+          (arg.starts_with(name) && arg.size() > name.size() && arg[name.size()] == '='))
+        return true;
+  }
   return false;
 }
 

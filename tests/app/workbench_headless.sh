@@ -24,4 +24,6 @@ grep -q 'error: no display' "$O/open.err" || fail "no display: message was: $(ca
 
 nodisplay "$W" --screenshot "$O/shot.png" >"$O/shot.out" 2>&1 || fail "--screenshot exited $?: $(cat "$O/shot.out")"
 head -c 8 "$O/shot.png" | od -An -c | grep -q 'P   N   G' || fail "--screenshot wrote no PNG"
+nodisplay "$W" --screenshot="$O/shot2.png" >"$O/shot2.out" 2>&1 || fail "--screenshot=FILE exited $?"
+[ -s "$O/shot2.png" ] || fail "--screenshot=FILE wrote nothing"
 echo "ok: the workbench without a display"
