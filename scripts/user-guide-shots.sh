@@ -74,7 +74,7 @@ simshot guide-sim-experiment.png --simulate room2 --mode experiment --subject "A
   --seed 5 --commands "$work/experiment.csv" --rate 0
 # Autonomous: the navigator with a model by the standard recipe (docs/navigation-bench.md) on the
 # chapter-5 scene, from the first start (seed) it reaches the goal from after following a wall.
-"$T" simulate --plan training --runs 40 --seed 1 --out-dir "$work/train" --quiet >/dev/null
+"$T" simulate --plan training --runs 80 --seed 1 --out-dir "$work/train" --quiet >/dev/null
 "$T" train --runs "$work"/train/*.csv --out "$work/navigator.json" --threads 2 >/dev/null
 "$T" models import --db "$db" --name navigator "$work/navigator.json" >/dev/null
 nav_seed=$("$T" navigate --scene chapter5 --model "$work/navigator.json" --seeds 1-40 --threads 2 \

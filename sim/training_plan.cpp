@@ -415,7 +415,52 @@ std::size_t ScriptDriver::totalSteps() const {
   return n;
 }
 
-PlannedRun planTrainingRun(std::uint64_t seed, std::size_t index) {
+PlanSlot trainingPlanSlot(std::size_t index) {
+  if (index % 2 == 0) return {PlanSlot::Kind::Numbered, index / 2};
+  const std::size_t extra = index / 2;
+  if (extra % 3 == 2) return {PlanSlot::Kind::ExtraPocket, extra / 3};
+  return {PlanSlot::Kind::OfficeDrive, extra / 3 * 2 + extra % 3};
+}
+
+namespace {
+
+// The wall follower in a generated office map of its own, on the side given: driving as a robot
+// in use drives, walls on the followed side most of the time, the front meeting walls and
+// furniture at an angle while it turns, wall ends passed at the driver's own speed.
+PlannedRun officeDrive(std::uint64_t seed, std::size_t number) {
+  Draw draw(seed * 0x9E3779B97F4A7C15ull + number * 0xD1B54A32D192ED03ull + 0x6A09E667F3BCC909ull);
+  PlannedRun run;
+  run.sceneName = "random:office:" + std::to_string(draw.next() % kFirstBenchmarkSceneSeed);
+  auto loaded = loadScene(run.sceneName);
+  if (loaded) run.scene = std::move(loaded.value());
+  const std::uint64_t driverSeed = draw.next();
+  const FollowSide side = number % 2 == 0 ? FollowSide::Left : FollowSide::Right;
+  run.driver = makeDriver("wall-follow", driverSeed, side);
+  run.options.seed = driverSeed;
+  run.options.followSide = side;
+  run.options.maxSteps = 4000;
+  run.kind = side == FollowSide::Left ? kOfficeDriveKindLeft : kOfficeDriveKindRight;
+  return run;
+}
+
+}  // namespace
+
+PlannedRun planTrainingRun(std::uint64_t seed, std::size_t planIndex) {
+  const PlanSlot slot = trainingPlanSlot(planIndex);
+  if (slot.kind == PlanSlot::Kind::OfficeDrive) return officeDrive(seed, slot.number);
+  if (slot.kind == PlanSlot::Kind::ExtraPocket) {
+    // Its own stream; the extra pockets take the four press bands in turn, as the numbered ones
+    // do.
+    Draw draw(seed * 0x9E3779B97F4A7C15ull + slot.number * 0xD1B54A32D192ED03ull +
+              0xBB67AE8584CAA73Bull);
+    PlannedRun run = pocket(draw, slot.number);
+    run.kind = kExtraPocketKind;
+    const auto* script = static_cast<const ScriptDriver*>(run.driver.get());
+    run.options.maxSteps = script->totalSteps();
+    run.options.stopAtGoal = false;
+    return run;
+  }
+  const std::size_t index = slot.number;
   // One stream per run, so a run does not depend on how many came before it.
   Draw draw(seed * 0x9E3779B97F4A7C15ull + index * 0xD1B54A32D192ED03ull + 1);
   const int kind = static_cast<int>(index % kTrainingPlanKinds);

@@ -24,8 +24,12 @@
 //                 corner groups)
 //   office bug    the Bug-2 driver in a generated office map (random:office:SEED), to its goal
 //   office wall-follow  the wall follower in another generated office map
-// Start poses, speeds, angles, gaps and sizes are drawn from the seed; the corridor and pocket
-// widths are stratified over a kind's runs, so that a few runs cover their whole range.
+// Between them, every second run is an extra: of every three extras, two are *office drives* (the
+// wall follower in a generated office map of its own, keeping the wall on the left and on the
+// right in turn: driving as the robot drives when it is used) and one is another pocket run (with
+// the drives' many Wall rows, the few pockets of the numbered kinds left DeadPath under-shown).
+// The other runs are numbered on their own: the j-th of them is kind j mod kTrainingPlanKinds,
+// and it does not depend on the extras around it.
 #pragma once
 
 #include <cstdint>
@@ -49,9 +53,23 @@ struct PlannedRun {
 };
 
 inline constexpr int kTrainingPlanKinds = 12;
+// The recipe's documented size: its first 40 numbered runs and the 40 extras between them
+// (`tactile simulate --plan training` without --runs).
+inline constexpr int kTrainingPlanRuns = 80;
+inline constexpr const char* kOfficeDriveKindLeft = "office drive left";
+inline constexpr const char* kOfficeDriveKindRight = "office drive right";
+inline constexpr const char* kExtraPocketKind = "extra pocket";
 
 // Run `index` of the plan with `seed`; the same (seed, index) always gives the same run.
 PlannedRun planTrainingRun(std::uint64_t seed, std::size_t index);
+
+// Where run `index` sits in the recipe: the how-manieth office drive, extra pocket or numbered run.
+struct PlanSlot {
+  enum class Kind { Numbered, OfficeDrive, ExtraPocket };
+  Kind kind = Kind::Numbered;
+  std::size_t number = 0;
+};
+PlanSlot trainingPlanSlot(std::size_t index);
 
 // A driver that plays a fixed list of (v, omega, steps) legs, then stops (gives up).
 class ScriptDriver : public Driver {

@@ -528,7 +528,9 @@ void registerSimVerbs(CLI::App& app, CLI::App& bench) {
   CLI::Option* plan =
       sim->add_option("--plan", args->plan,
                       "training: N runs from the standard training recipe (needs --out-dir; scenes "
-                      "and drivers come from the recipe, docs/sim.md#training-corpus)");
+                      "and drivers come from the recipe, docs/sim.md#training-corpus; without "
+                      "--runs, the recipe's documented " +
+                          std::to_string(kTrainingPlanRuns) + " runs)");
   CLI::Option* driver =
       sim->add_option("--driver", args->driver,
                       "wall-follow (Bug-2 explorer), bug (Bug-2, side per obstacle) or random");
@@ -546,7 +548,8 @@ void registerSimVerbs(CLI::App& app, CLI::App& bench) {
   sim->add_option("--prefix", args->prefix,
                   "Batch file names P_0000.csv, ... (default run); imported, the runs are named "
                   "by these stems, so batches with different prefixes never clash");
-  sim->add_option("--runs", args->runs, "Number of runs in a batch (needs --out-dir)");
+  CLI::Option* runs =
+      sim->add_option("--runs", args->runs, "Number of runs in a batch (needs --out-dir)");
   CLI::Option* threads =
       sim->add_option("--threads", args->threads, "Worker threads for a batch (0 = all cores)");
   CLI::Option* dt = sim->add_option("--dt", args->dt, "Step length in seconds");
@@ -556,7 +559,10 @@ void registerSimVerbs(CLI::App& app, CLI::App& bench) {
   // options would be ignored with it, so they are refused.
   for (CLI::Option* o : {driver, steps, out, threads, dt})
     plan->excludes(o);
-  setAction(sim, [args] { return runSimulate(*args); });
+  setAction(sim, [args, runs] {
+    if (!args->plan.empty() && runs->count() == 0) args->runs = kTrainingPlanRuns;
+    return runSimulate(*args);
+  });
 
   registerNavigateVerb(app);  // cli_nav.cpp
 

@@ -8,7 +8,7 @@
 #   OUTDIR     working folder (runs, models, per-seed JSON, table.md); runs already there are reused
 #   FIT_SEEDS  fit seeds, default "1 2 3" (the tables give the median over them)
 #
-# Environment: RECIPE_RUNS (40), RECIPE_SEED (1), SCORE_RUNS (3), SCORE_STEPS (4000),
+# Environment: RECIPE_RUNS (80, the recipe's documented size), RECIPE_SEED (1), SCORE_RUNS (3), SCORE_STEPS (4000),
 # SCORE_SEED (7001), ROOMS (four generated office rooms with benchmark seeds, >= 900000, which
 # neither the training recipe nor any choice of a default uses), MIN_STEPS (30), TRAIN_ARGS
 # (extra `tactile train` options, empty: the product's defaults), REPORT_ONLY (1: only print the
@@ -25,7 +25,7 @@ set -eu
 T=$1
 OUT=$2
 FIT_SEEDS=${3:-"1 2 3"}
-RECIPE_RUNS=${RECIPE_RUNS:-40}
+RECIPE_RUNS=${RECIPE_RUNS:-80}
 RECIPE_SEED=${RECIPE_SEED:-1}
 SCORE_RUNS=${SCORE_RUNS:-3}
 SCORE_STEPS=${SCORE_STEPS:-4000}

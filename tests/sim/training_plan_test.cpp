@@ -26,34 +26,105 @@ RunData simulatePlanned(std::uint64_t seed, std::size_t index) {
   return result.ok() ? std::move(result->run) : RunData{};
 }
 
+// The plan index of the j-th run of the numbered kinds (the runs that are not office drives).
+std::size_t numbered(std::size_t j) {
+  for (std::size_t index = 0;; ++index) {
+    const PlanSlot slot = trainingPlanSlot(index);
+    if (slot.kind == PlanSlot::Kind::Numbered && slot.number == j) return index;
+  }
+}
+
+
 TEST(TrainingPlan, SameSeedAndIndexGiveTheSameRun) {
-  for (std::size_t i : {2u, 3u, 6u}) {
+  for (std::size_t i : {numbered(2), numbered(3), numbered(6), std::size_t{1}, std::size_t{5}}) {
     const RunData a = simulatePlanned(7, i);
     const RunData b = simulatePlanned(7, i);
     ASSERT_GT(a.stepCount(), 0u);
     EXPECT_TRUE(a == b) << "run " << i;
   }
   // Another seed gives another run of the same kind.
-  EXPECT_EQ(planTrainingRun(7, 2).kind, planTrainingRun(8, 2).kind);
-  EXPECT_FALSE(simulatePlanned(7, 2) == simulatePlanned(8, 2));
+  EXPECT_EQ(planTrainingRun(7, numbered(2)).kind, planTrainingRun(8, numbered(2)).kind);
+  EXPECT_FALSE(simulatePlanned(7, numbered(2)) == simulatePlanned(8, numbered(2)));
 }
 
 TEST(TrainingPlan, KindsComeInTurn) {
-  EXPECT_EQ(planTrainingRun(1, 0).kind, "wall-follow");
-  EXPECT_EQ(planTrainingRun(1, 1).kind, "cluttered");
-  EXPECT_EQ(planTrainingRun(1, 2).kind, "wall-end");
-  EXPECT_EQ(planTrainingRun(1, 6).kind, "pocket");
-  EXPECT_EQ(planTrainingRun(1, kTrainingPlanKinds).kind, "wall-follow");
+  EXPECT_EQ(planTrainingRun(1, numbered(0)).kind, "wall-follow");
+  EXPECT_EQ(planTrainingRun(1, numbered(1)).kind, "cluttered");
+  EXPECT_EQ(planTrainingRun(1, numbered(2)).kind, "wall-end");
+  EXPECT_EQ(planTrainingRun(1, numbered(6)).kind, "pocket");
+  EXPECT_EQ(planTrainingRun(1, numbered(kTrainingPlanKinds)).kind, "wall-follow");
   // Generated scenes have no name to resolve; built-in and procedural ones do.
-  EXPECT_EQ(planTrainingRun(1, 0).sceneName, "room1");
-  EXPECT_TRUE(planTrainingRun(1, 1).sceneName.starts_with("random:"));
-  EXPECT_TRUE(planTrainingRun(1, 2).sceneName.empty());
+  EXPECT_EQ(planTrainingRun(1, numbered(0)).sceneName, "room1");
+  EXPECT_TRUE(planTrainingRun(1, numbered(1)).sceneName.starts_with("random:"));
+  EXPECT_TRUE(planTrainingRun(1, numbered(2)).sceneName.empty());
+}
+
+// Every second run is an extra: two office drives (left, then right, in turn over the drives) and
+// then a pocket. The numbered kinds between them are counted on their own.
+TEST(TrainingPlan, EverySecondRunIsAnOfficeDriveOrAnExtraPocket) {
+  // The documented size holds the first 40 numbered runs and an extra after the last of them.
+  EXPECT_EQ(numbered(39), static_cast<std::size_t>(kTrainingPlanRuns) - 2);
+  EXPECT_NE(trainingPlanSlot(static_cast<std::size_t>(kTrainingPlanRuns) - 1).kind,
+            PlanSlot::Kind::Numbered);
+  int left = 0, right = 0, pockets = 0;
+  for (std::size_t index = 0; index < 24; ++index) {
+    const PlannedRun run = planTrainingRun(3, index);
+    const PlanSlot slot = trainingPlanSlot(index);
+    if (index % 2 == 0) {
+      EXPECT_EQ(slot.kind, PlanSlot::Kind::Numbered) << index;
+      EXPECT_EQ(slot.number, index / 2) << index;
+      EXPECT_FALSE(run.kind.starts_with("office drive") || run.kind == kExtraPocketKind) << index;
+      continue;
+    }
+    if ((index / 2) % 3 == 2) {
+      EXPECT_EQ(slot.kind, PlanSlot::Kind::ExtraPocket) << index;
+      EXPECT_EQ(run.kind, kExtraPocketKind) << index;
+      EXPECT_TRUE(run.sceneName.empty()) << index;
+      ++pockets;
+      continue;
+    }
+    ASSERT_EQ(slot.kind, PlanSlot::Kind::OfficeDrive) << index;
+    const bool onLeft = slot.number % 2 == 0;
+    EXPECT_EQ(run.kind, onLeft ? kOfficeDriveKindLeft : kOfficeDriveKindRight) << index;
+    ASSERT_TRUE(run.options.followSide.has_value()) << index;
+    EXPECT_EQ(*run.options.followSide, onLeft ? FollowSide::Left : FollowSide::Right);
+    EXPECT_EQ(run.driver->name(), "wall-follow");
+    EXPECT_TRUE(run.sceneName.starts_with("random:office:")) << run.sceneName;
+    left += onLeft;
+    right += !onLeft;
+  }
+  EXPECT_EQ(left, 4);
+  EXPECT_EQ(right, 4);
+  EXPECT_EQ(pockets, 4);
+}
+
+// The drives keep the wall on the side they are given: the left drives touch with L far more than
+// with R, the right ones the other way round. The extra pockets show DeadPath like the numbered.
+TEST(TrainingPlan, OfficeDrivesFollowTheWallOnTheirSideAndExtraPocketsShowDeadPath) {
+  TruthStats left, right, pockets;
+  for (std::size_t index = 1; index < 24; index += 2) {
+    const PlanSlot slot = trainingPlanSlot(index);
+    if (slot.kind == PlanSlot::Kind::ExtraPocket) {
+      pockets.add(simulatePlanned(1, index));
+    } else {
+      (slot.number % 2 == 0 ? left : right).add(simulatePlanned(1, index));
+    }
+  }
+  EXPECT_GT(left.contactSteps(SensorGroup::Left), 5 * left.contactSteps(SensorGroup::Right));
+  EXPECT_GT(right.contactSteps(SensorGroup::Right), 5 * right.contactSteps(SensorGroup::Left));
+  for (SensorGroup g : {SensorGroup::Front, SensorGroup::Left, SensorGroup::Right}) {
+    EXPECT_GT(pockets.classSteps[static_cast<std::size_t>(groupIndex(g))]
+                                [static_cast<std::size_t>(ContactClass::DeadPath)],
+              4 * 20)
+        << groupInfo(g).shortName;
+  }
 }
 
 TEST(TrainingPlan, OfficeRunsDriveInGeneratedOfficesWithSeedsBelowTheBenchmarkRange) {
-  EXPECT_EQ(planTrainingRun(1, 10).kind, "office bug");
-  EXPECT_EQ(planTrainingRun(1, 11).kind, "office wall-follow");
+  EXPECT_EQ(planTrainingRun(1, numbered(10)).kind, "office bug");
+  EXPECT_EQ(planTrainingRun(1, numbered(11)).kind, "office wall-follow");
   std::set<std::string> scenes;
+  std::size_t officeRuns = 0;
   for (std::uint64_t seed : {1ull, 2ull, 99ull}) {
     for (std::size_t index = 0; index < 120; ++index) {
       const PlannedRun run = planTrainingRun(seed, index);
@@ -67,15 +138,17 @@ TEST(TrainingPlan, OfficeRunsDriveInGeneratedOfficesWithSeedsBelowTheBenchmarkRa
         EXPECT_EQ(run.driver->name(), run.kind == "office bug" ? "bug" : "wall-follow");
         EXPECT_EQ(sceneToJson(run.scene), sceneToJson(generateOfficeScene(sceneSeed).scene));
         scenes.insert(run.sceneName);
+        ++officeRuns;
       }
     }
   }
-  // Every office run of these plans has a map of its own.
-  EXPECT_EQ(scenes.size(), 3u * 20u);
+  // Every office run of these plans (bug, wall-follow and the drives) has a map of its own.
+  EXPECT_GT(officeRuns, 3u * 20u);
+  EXPECT_EQ(scenes.size(), officeRuns);
 }
 
 TEST(TrainingPlan, ThePocketRunShowsDeadPathInFrontAndSideGroups) {
-  const RunData run = simulatePlanned(1, 6);
+  const RunData run = simulatePlanned(1, numbered(6));
   TruthStats stats;
   stats.add(run);
   for (SensorGroup g : {SensorGroup::Front, SensorGroup::FrontLeftCorner,
@@ -94,7 +167,7 @@ TEST(TrainingPlan, ThePocketRunShowsDeadPathInFrontAndSideGroups) {
 // own lateral offset: every approach ends in contact, and between approaches the robot comes back
 // to the start, so the tips' reach (140 units and more) stays clear of a turn in place.
 TEST(TrainingPlan, TipsRunsMeetEveryTipWithTheFrontAndTheBack) {
-  for (std::size_t index : {4u, 8u}) {
+  for (std::size_t index : {numbered(4), numbered(8)}) {
     ASSERT_EQ(planTrainingRun(1, index).kind, "tips");
     const RunData run = simulatePlanned(1, index);
     int episodes = 0;
@@ -121,7 +194,7 @@ TEST(TrainingPlan, TipsRunsMeetEveryTipWithTheFrontAndTheBack) {
 // The reverse runs with a corner behind turn the back wall so that its end at the side wall is
 // the nearer: the corner group backs into the concave corner, both its domes pressed.
 TEST(TrainingPlan, ReverseRunsWithACornerPressTheCornerGroupOnBothWalls) {
-  const RunData run = simulatePlanned(1, 5);  // the first reverse run: corner on the left
+  const RunData run = simulatePlanned(1, numbered(5));  // the first reverse run: corner on the left
   int both = 0;
   for (std::size_t k = 0; k < run.stepCount(); ++k) {
     both += run.truthAt(k, SensorGroup::RearLeftCorner) == ContactClass::Corner &&
@@ -130,12 +203,13 @@ TEST(TrainingPlan, ReverseRunsWithACornerPressTheCornerGroupOnBothWalls) {
   EXPECT_GT(both, 30);
 }
 
-// The corpus recipe at N = 40: every group has at least 1,000 contact steps of each class it
+// The corpus recipe at its documented size (the first 40 numbered runs and the drives between
+// them): every group has at least 1,000 contact steps of each class it
 // shows, and DeadPath at least 300 in the groups that can see it; F, FLC and FRC never leave a
 // wall, and only L, R, RLC and RRC may.
-TEST(TrainingPlan, FortyRunsShowEachClassOfEveryGroupAThousandTimes) {
+TEST(TrainingPlan, TheDocumentedRecipeShowsEachClassOfEveryGroupAThousandTimes) {
   TruthStats stats;
-  for (std::size_t i = 0; i < 40; ++i)
+  for (std::size_t i = 0; i < static_cast<std::size_t>(kTrainingPlanRuns); ++i)
     stats.add(simulatePlanned(1, i));
   for (const GroupInfo& info : kSensorGroups) {
     const auto& row = stats.classSteps[static_cast<std::size_t>(groupIndex(info.group))];
