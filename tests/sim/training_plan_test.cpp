@@ -34,7 +34,6 @@ std::size_t numbered(std::size_t j) {
   }
 }
 
-
 TEST(TrainingPlan, SameSeedAndIndexGiveTheSameRun) {
   for (std::size_t i : {numbered(2), numbered(3), numbered(6), std::size_t{1}, std::size_t{5}}) {
     const RunData a = simulatePlanned(7, i);
