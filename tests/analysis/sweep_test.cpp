@@ -101,9 +101,9 @@ TEST(Training, DefaultsAreTheDocumentedTable) {
       {SensorGroup::Left, FeatureKind::Neighbours, 8, 0.01, 0.3},
       {SensorGroup::RearLeftCorner, FeatureKind::Neighbours, 8, 0.01, 1.0},
       {SensorGroup::Back, FeatureKind::NormalShear, 4, 0.01, 0.3},
-      {SensorGroup::RearRightCorner, FeatureKind::Neighbours, 8, 0.01, 0.3},
-      {SensorGroup::Right, FeatureKind::Neighbours, 8, 0.01, 0.3},
-      {SensorGroup::FrontRightCorner, FeatureKind::NormalShearTouch, 8, 0.01, 1.0},
+      {SensorGroup::RearRightCorner, FeatureKind::Context, 8, 0.01, 0.3},
+      {SensorGroup::Right, FeatureKind::Neighbours, 8, 0.01, 0.1},
+      {SensorGroup::FrontRightCorner, FeatureKind::Neighbours, 16, 0.01, 1.0},
   }};
   for (const Row& r : table) {
     const TrainSettings s = defaultTrainSettings(r.group);
