@@ -88,17 +88,17 @@ lacks train.json '"dropped_components":0'
 "$T" train --runs runs/run_0000.csv runs/run_0001.csv --groups R,RRC,FRC --order 4 --min-rows 1 \
   --out d.json > /dev/null 2>&1 || fail "train --order 4 exited $?"
 "$T" report d.json > d.txt || fail "report exited $?"
-grep -Eq '^R +normal\+shear\+touch\+context\+neighbours +gmm +nodal-full +4 +0\.01 ' d.txt ||
+grep -Eq '^R +normal\+shear\+touch\+context\+neighbours +gmm +nodal-full +4 +0\.01 .*online \(evidence x 0\.1\)$' d.txt ||
   fail "R defaults: $(cat d.txt)"
 # RRC's and FRC's defaults may need more rows per class than these short runs have; when they
-# train, they keep their own feature kind and floor (FRC's kind, normal+shear+touch, differs from
-# R's neighbours features).
+# train, they keep their own feature kind, floor and evidence weight (RRC's kind,
+# normal+shear+touch+context, differs from R's neighbours features; FRC's weight, 1, from R's 0.1).
 if grep -q '^RRC ' d.txt; then
-  grep -Eq '^RRC +normal\+shear\+touch\+context\+neighbours +gmm +nodal-full +4 +0\.01 ' d.txt ||
+  grep -Eq '^RRC +normal\+shear\+touch\+context +gmm +nodal-full +4 +0\.01 .*online \(evidence x 0\.3\)$' d.txt ||
     fail "RRC defaults: $(cat d.txt)"
 fi
 if grep -q '^FRC ' d.txt; then
-  grep -Eq '^FRC +normal\+shear\+touch +gmm +nodal-full +4 +0\.01 ' d.txt ||
+  grep -Eq '^FRC +normal\+shear\+touch\+context\+neighbours +gmm +nodal-full +4 +0\.01 .*online$' d.txt ||
     fail "FRC defaults: $(cat d.txt)"
 fi
 "$T" train --runs runs/run_0000.csv runs/run_0001.csv --groups R,RRC --floor 0.5 --cov nodal-diag \
