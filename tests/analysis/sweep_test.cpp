@@ -97,9 +97,9 @@ TEST(Training, DefaultsAreTheDocumentedTable) {
   };
   const std::array<Row, 8> table{{
       {SensorGroup::Front, FeatureKind::Context, 8, 0.01, 0.3},
-      {SensorGroup::FrontLeftCorner, FeatureKind::Context, 8, 0.01, 1.0},
+      {SensorGroup::FrontLeftCorner, FeatureKind::Neighbours, 8, 0.01, 1.0},
       {SensorGroup::Left, FeatureKind::Neighbours, 8, 0.01, 0.3},
-      {SensorGroup::RearLeftCorner, FeatureKind::Neighbours, 8, 0.01, 1.0},
+      {SensorGroup::RearLeftCorner, FeatureKind::Neighbours, 16, 0.01, 1.0},
       {SensorGroup::Back, FeatureKind::NormalShear, 4, 0.01, 0.3},
       {SensorGroup::RearRightCorner, FeatureKind::Context, 8, 0.01, 0.3},
       {SensorGroup::Right, FeatureKind::Neighbours, 8, 0.01, 0.1},
