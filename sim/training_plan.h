@@ -30,6 +30,8 @@
 // the drives' many Wall rows, the few pockets of the numbered kinds left DeadPath under-shown).
 // The other runs are numbered on their own: the j-th of them is kind j mod kTrainingPlanKinds,
 // and it does not depend on the extras around it.
+// Start poses, speeds, angles, gaps and sizes are drawn from the seed; the corridor and pocket
+// widths are stratified over a kind's runs, so that a few runs cover their whole range.
 #pragma once
 
 #include <cstdint>
