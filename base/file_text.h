@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "base/error.h"
 
@@ -39,12 +40,31 @@ class FileText {
 // Reads a whole file into memory; an error names the file.
 Result<std::string> readFileText(const std::filesystem::path& path);
 
-// Checks, before any long work, that `path` could be written: its folder exists and a file can be
-// created in it, and the path is not a folder. Creates nothing that stays.
+// Checks, before any long work, that `path` could be written (docs/cli.md#output-files): a new
+// name in an existing folder where a file can be created, a regular file, or a stream (a character
+// device, a FIFO, anything under /dev or /proc); not a folder, block device or socket, and not a
+// file this process has read as an input. Creates nothing that stays.
 Status checkWritable(const std::filesystem::path& path);
 
-// Writes text atomically (temporary file, then rename): a failure never leaves a partial file. An
+// Writes text to `path`. A new name or a regular file is replaced atomically: a temporary file in
+// the same folder (created with O_EXCL | O_NOFOLLOW under an unpredictable name), written, synced
+// and renamed over it, keeping the replaced file's permission bits; a failure leaves the old file
+// and no temporary one. A link at `path` is replaced, never followed. A character device, a FIFO
+// or a path under /dev or /proc (/dev/stdout, /dev/null) is written in place as a stream. A
+// folder, a block device, a socket or a file read as an input of this process is refused. An
 // error names the file.
 Status writeFileAtomically(const std::filesystem::path& path, std::string_view text);
+
+// Remembers that this process read `path` (by device and inode) once guardInputFiles(true) ran;
+// FileText::load, readFileText and the run database's open call it, so no output of a command
+// replaces one of its inputs. Off by default: a program that keeps running (the workbench) may
+// save over a file it read earlier at the user's request. The command line turns it on.
+void guardInputFiles(bool on);
+void noteInputFile(const std::filesystem::path& path);
+
+// Refuses an output that is the same file (device and inode) as one of `inputs` or as any file
+// this process has read. An error names both.
+Status checkNotAnInput(const std::filesystem::path& output,
+                       const std::vector<std::filesystem::path>& inputs);
 
 }  // namespace tactile

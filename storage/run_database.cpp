@@ -3,6 +3,7 @@
 #include "storage/run_database.h"
 
 #include <sqlite3.h>
+#include <unistd.h>
 
 #include <algorithm>
 #include <chrono>
@@ -10,9 +11,12 @@
 #include <cstring>
 #include <ctime>
 #include <iterator>
+#include <random>
 #include <thread>
 
+#include "base/file_text.h"
 #include "storage/database_impl.h"
+#include "storage/file_guard.h"
 #include "storage/schema.h"
 #include "storage/step_checksum.h"
 
@@ -193,6 +197,63 @@ void removeFailedCreation(const std::filesystem::path& path) {
   std::filesystem::remove(path, ec);
 }
 
+// Gives a database without one its random identity on page 1 (db::kIdentityViewPrefix).
+void stampIdentity(db::Connection& c) {
+  constexpr const char* kCount =
+      "SELECT count(*) FROM sqlite_schema WHERE name = 'tactile_identity'";
+  if (c.queryInt(kCount) != 0) return;
+  std::random_device random;
+  std::string id;
+  while (id.size() < db::kIdentityHexDigits) {
+    char part[9];
+    std::snprintf(part, sizeof part, "%08x", static_cast<unsigned>(random()));
+    id += part;
+  }
+  db::Transaction transaction(c);
+  if (c.queryInt(kCount) != 0) return;  // another process made it meanwhile
+  c.exec(std::string(db::kIdentityViewPrefix) + id + "' AS id");
+  transaction.commit();
+}
+
+// Refuses, before SQLite opens anything, a write-ahead log that does not belong to the file and a
+// file cut short (docs/storage.md#a-leftover-write-ahead-log); both are left as they are.
+Status guardFiles(const std::filesystem::path& path, const std::string& name) {
+  const db::WalState wal = db::inspectWal(path);
+  switch (wal.kind) {
+    case db::WalState::Kind::Foreign:
+      return Error(name, db::foreignWalMessage(path, wal.reason));
+    case db::WalState::Kind::Unproven: {
+      // No page-1 frame to compare (a log written by another program): read the database through
+      // the log, without writing either, and refuse it when that reading finds damage.
+      db::Connection c;
+      try {
+        c = db::Connection::open(path, false, db::Access::ReadOnly);
+      } catch (const db::DbError&) {
+        return Status::success();  // cannot read it here; the open that follows says why
+      }
+      std::string first;
+      try {
+        db::Statement s(c, "PRAGMA quick_check(1)");
+        if (s.step()) first = s.columnText(0);
+      } catch (const db::DbError& e) {
+        first = e.what();
+      }
+      if (first != "ok") {
+        return Error(name, db::foreignWalMessage(
+                               path, "reading the database through it finds damage: " + first));
+      }
+      return Status::success();
+    }
+    case db::WalState::Kind::None:
+      if (const auto cut = db::truncationProblem(path)) return Error(name, *cut);
+      return Status::success();
+    case db::WalState::Kind::Live:
+    case db::WalState::Kind::Belongs:
+      return Status::success();
+  }
+  return Status::success();
+}
+
 }  // namespace
 
 Result<std::unique_ptr<RunDatabase>> RunDatabase::open(const std::filesystem::path& path,
@@ -227,6 +288,15 @@ Result<std::unique_ptr<RunDatabase>> RunDatabase::openFile(const std::filesystem
     impl->path = inMemory ? std::filesystem::path(":memory:") : path;
     impl->readOnly = mode == OpenMode::ReadOnly && !inMemory;
     if (!inMemory) {
+      if (const auto what = db::notRegularFile(path)) {
+        return R(Error(name, "is " + *what + ", not a database file; left unchanged"));
+      }
+      if (const auto what = db::notRegularFile(name + "-wal")) {
+        return R(Error(name, "its write-ahead log " + name + "-wal is " + *what +
+                                 ", not a file; left unchanged"));
+      }
+      if (Status guarded = guardFiles(path, name); !guarded) return R(guarded.error());
+      noteInputFile(path);
       const Probe probe = probeFile(path);
       switch (probe.kind) {
         case FileKind::Absent:
@@ -250,10 +320,29 @@ Result<std::unique_ptr<RunDatabase>> RunDatabase::openFile(const std::filesystem
       }
     }
     if (impl->readOnly) {
-      impl->connection = db::Connection::open(impl->path, false, db::Access::ReadOnly);
+      // A read leaves no files behind (docs/storage.md#read-only-opening). Where this account may
+      // write the file, a read-write connection that SQL may not write (query_only) reads it: as
+      // the last connection it removes the -wal and -shm files at close, as every writer does.
+      // Where it may not, a database without -wal and -shm is read as it is (immutable), so another
+      // account's read never leaves files the owner cannot write.
+      const std::filesystem::path folder =
+          path.parent_path().empty() ? std::filesystem::path(".") : path.parent_path();
+      const bool mayWrite =
+          ::access(path.c_str(), W_OK) == 0 && ::access(folder.c_str(), W_OK | X_OK) == 0;
+      std::error_code existsError;
+      const bool logFiles = std::filesystem::exists(name + "-wal", existsError) ||
+                            std::filesystem::exists(name + "-shm", existsError);
+      if (mayWrite) {
+        impl->connection = db::Connection::open(impl->path, false, db::Access::ReadWrite);
+        impl->connection.exec("PRAGMA query_only = ON");
+      } else {
+        impl->connection = db::Connection::open(
+            impl->path, false, logFiles ? db::Access::ReadOnly : db::Access::Immutable);
+      }
       try {
         checkIdentity(impl->connection, name, false);
       } catch (const db::DbError& e) {
+        if (mayWrite) throw;
         // SQLITE_READONLY_CANTINIT and friends: WAL needs a -shm file this process cannot make
         // (read-only folder). Without a -wal holding changes, `immutable` reads the file as it is.
         const int code = sqlite3_extended_errcode(impl->connection.handle());
@@ -322,6 +411,7 @@ Result<std::unique_ptr<RunDatabase>> RunDatabase::openFile(const std::filesystem
     c.exec("PRAGMA mmap_size = " + std::to_string(options.mmapBytes));
     const db::MigrationReport report = db::migrate(c, impl->path);
     impl->backup = report.backupPath;
+    if (!inMemory) stampIdentity(c);
     std::unique_ptr<RunDatabase> database(new RunDatabase(std::move(impl)));
     if (options.refuseDamaged && !inMemory) {
       const IntegrityReport check = database->check();
@@ -522,6 +612,13 @@ IntegrityReport RunDatabase::check() {
       }
     } snapshot(c);
     report.schemaVersion = db::schemaVersion(c);
+    // A file cut short since it was opened: pages past its end read as zeros, which neither
+    // SQLite's checks nor the row checksums see in every table.
+    if (!impl_->path.empty() && impl_->path != ":memory:" &&
+        db::inspectWal(impl_->path).commitFrames == 0) {
+      if (const auto cut = db::truncationProblem(impl_->path))
+        addProblem(report, "file size", *cut);
+    }
     {
       db::Statement s(c, "PRAGMA integrity_check");
       while (s.step()) {

@@ -293,6 +293,11 @@ Transaction::~Transaction() {
 
 void Transaction::commit() {
   if (connection_ == nullptr) throw DbError("commit of an inactive transaction");
+  // Every commit carries page 1 (the file's header, with its change counter) into the write-ahead
+  // log, so that a log left behind by a killed process can always be matched to the file it
+  // continues (file_guard.h). Writing the application id with its own value marks page 1 changed.
+  const std::int64_t applicationId = connection_->queryInt("PRAGMA application_id");
+  connection_->exec("PRAGMA application_id = " + std::to_string(applicationId));
   connection_->exec("COMMIT");
   connection_ = nullptr;
 }
@@ -305,6 +310,15 @@ void Transaction::rollback() noexcept {
 }
 
 // ---------------------------------------------------------------------------------------------
+
+bool isOpenInThisProcess(const std::filesystem::path& path) {
+  std::lock_guard lock(gFilesMutex);
+  for (const auto& [handle, file] : openFiles()) {
+    std::error_code ec;
+    if (file != ":memory:" && std::filesystem::equivalent(file, path, ec)) return true;
+  }
+  return false;
+}
 
 void backupTo(Connection& source, const std::filesystem::path& target) {
   Connection destination = Connection::open(target, true);

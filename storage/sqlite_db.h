@@ -138,6 +138,9 @@ class Transaction {
   Connection* connection_ = nullptr;
 };
 
+// Whether a connection of this process has `path` open (the same file, by device and inode).
+bool isOpenInThisProcess(const std::filesystem::path& path);
+
 // Copies a whole database (any journal mode) into `target` with the online backup API.
 // Throws DbError.
 void backupTo(Connection& source, const std::filesystem::path& target);

@@ -613,9 +613,25 @@ Result<SweepOutcome> Workspace::sweep(
   };
   SweepOutcome outcome;
   outcome.sweepId = sweepId.value();
-  outcome.result =
-      byScene ? analysis::runSweepByScene(train->labelled, sceneOfRun, request.grid, options, guard)
-              : analysis::runSweep(train->labelled, test->labelled, request.grid, options, guard);
+  // A sweep that stops on an error is stored as "failed" with the error, never left "running".
+  const auto markFailed = [&](const std::string& error) {
+    json failed = configuration;
+    failed["state"] = "failed";
+    failed["error"] = error;
+    (void)db_->updateSweep(sweepId.value(), dumpJson(failed));  // best effort (a full disk)
+  };
+  try {
+    outcome.result =
+        byScene
+            ? analysis::runSweepByScene(train->labelled, sceneOfRun, request.grid, options, guard)
+            : analysis::runSweep(train->labelled, test->labelled, request.grid, options, guard);
+  } catch (const std::bad_alloc&) {
+    markFailed("out of memory");
+    return failure("sweep " + std::to_string(sweepId.value()) + ": out of memory");
+  } catch (const std::exception& e) {
+    markFailed(e.what());
+    return failure("sweep " + std::to_string(sweepId.value()) + ": " + e.what());
+  }
 
   json final = analysis::sweepToJson(outcome.result);
   final.erase("cells");
@@ -625,7 +641,11 @@ Result<SweepOutcome> Workspace::sweep(
   final["split"] = configuration["split"];
   final["state"] = storeFailed ? "failed" : outcome.result.cancelled ? "cancelled" : "finished";
   final["program_version"] = programVersion();
-  if (Status s = db_->updateSweep(sweepId.value(), dumpJson(final)); !s) return s.error();
+  if (storeFailed) final["error"] = storeError.text();
+  if (Status s = db_->updateSweep(sweepId.value(), dumpJson(final)); !s) {
+    markFailed(s.errorText());
+    return s.error();
+  }
   if (storeFailed) return storeError;
   return outcome;
 }

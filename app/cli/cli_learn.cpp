@@ -255,10 +255,22 @@ std::unique_ptr<workspace::Workspace> openWorkspace(const std::string& path, boo
                                                        : openDatabaseForRead(path));
 }
 
-void checkOutput(const std::string& path) {
+// Before any long work: the output can be written and is none of the verb's inputs
+// (docs/cli.md#output-files).
+void checkOutput(const std::string& path, const std::vector<std::string>& inputs) {
   if (path.empty() || path == "-") return;
   const Status writable = checkWritable(path);
   if (!writable) throw std::runtime_error(writable.errorText());
+  const Status distinct =
+      checkNotAnInput(path, std::vector<std::filesystem::path>(inputs.begin(), inputs.end()));
+  if (!distinct) throw std::runtime_error(distinct.errorText());
+}
+
+std::vector<std::string> joined(std::vector<std::string> a, const std::vector<std::string>& b,
+                                const std::string& c = {}) {
+  a.insert(a.end(), b.begin(), b.end());
+  if (!c.empty()) a.push_back(c);
+  return a;
 }
 
 json optionalJson(const std::optional<double>& v) {
@@ -404,7 +416,7 @@ int runTrainDb(const TrainArgs& a, const analysis::GroupSettings& settings,
   if (!split) {
     throw UsageError("unknown --split '" + a.split + "' (by-run, leave-one-run-out, by-scene)");
   }
-  checkOutput(a.out);
+  checkOutput(a.out, {a.db});
   auto ws = openWorkspace(a.db, true);
   workspace::TrainRequest request;
   request.labelSet = a.set;
@@ -475,7 +487,7 @@ int runTrain(const TrainArgs& a) {
   if (!a.set.empty() || !a.trainRuns.empty() || !a.name.empty()) {
     throw UsageError("--set, --train-runs and --name need --db (run files: --out names the file)");
   }
-  checkOutput(a.out);
+  checkOutput(a.out, joined(a.runs, a.testRuns, a.labels));
   if (a.holdout < 0.0 || a.holdout >= 1.0) throw UsageError("--holdout must be in [0, 1)");
   if (!a.testRuns.empty() && a.holdout > 0.0) {
     throw UsageError("give either --test-runs or --holdout, not both");
@@ -585,7 +597,7 @@ int runSweepDb(const SweepArgs& a, const analysis::SweepGrid& grid) {
         "--db needs --train-runs and --test-runs (stored run names), or "
         "--train-runs and --split by-scene");
   }
-  checkOutput(a.out);
+  checkOutput(a.out, {a.db});
   auto ws = openWorkspace(a.db, true);
   workspace::SweepRequest request;
   request.labelSet = a.set;
@@ -654,7 +666,7 @@ int runSweepVerb(const SweepArgs& a) {
     throw UsageError("--set, --train-runs and --name need --db (run files: --out names the file)");
   }
   if (a.holdout <= 0.0 || a.holdout >= 1.0) throw UsageError("--holdout must be in (0, 1)");
-  checkOutput(a.out);
+  checkOutput(a.out, joined(a.runs, a.testRuns, a.labels));
 
   LoadedRuns loaded, loadedTest;
   readRuns(a.runs, loaded);
@@ -756,7 +768,7 @@ int runReportDb(const ReportArgs& a) {
   const std::string format = a.format.empty() ? "text" : a.format;
   const auto style = analysis::parseTableStyle(format);
   if (!style) throw UsageError("unknown --format '" + format + "' (md, csv, html, text)");
-  checkOutput(a.out);
+  checkOutput(a.out, {a.db});
   auto ws = openWorkspace(a.db, false);
   auto sweep = ws->loadSweep(a.sweep);
   if (!sweep) throw std::runtime_error(a.db + ": " + sweep.errorText());
@@ -827,7 +839,7 @@ int runReport(const ReportArgs& r) {
     if (!parsed) throw UsageError("unknown --format '" + r.format + "' (md, csv, html, text)");
     style = *parsed;
   }
-  checkOutput(r.out);
+  checkOutput(r.out, {r.path});
   const std::string format = value.is_object() ? value.value("format", "") : "";
   if (format == "tactile-sweep") {
     const Result<analysis::SweepResult> sweep = analysis::sweepFromJson(value);
@@ -982,7 +994,7 @@ int runClassify(const ClassifyArgs& a) {
   options.threshold = a.threshold;
   options.window = a.window;
   options.stay = a.stay;
-  checkOutput(a.out);
+  checkOutput(a.out, {a.db, a.model, a.run});
   if (!a.db.empty()) {
     // --model and --run name a stored model and a stored run.
     auto ws = openWorkspace(a.db, false);

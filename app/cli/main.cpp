@@ -1,8 +1,10 @@
 // `tactile`: the headless twin of the workbench. Its contract: docs/cli.md.
+#include <csignal>
 #include <cstdio>
 #include <exception>
 
 #include "app/cli/cli_common.h"
+#include "base/file_text.h"
 
 namespace tactile::cli {
 void registerCatalogVerbs(CLI::App& app);    // cli_catalog.cpp
@@ -11,6 +13,11 @@ void registerWorkspaceVerbs(CLI::App& app);  // cli_workspace.cpp
 
 int main(int argc, char** argv) {
   using namespace tactile::cli;
+  // A file-size limit (ulimit -f) makes a write fail with EFBIG, which every writer reports and
+  // cleans up after, instead of killing the process half-way with SIGXFSZ.
+  std::signal(SIGXFSZ, SIG_IGN);
+  // No output of a command replaces one of its inputs (docs/cli.md#output-files).
+  tactile::guardInputFiles(true);
   CLI::App app{
       "tactile: simulate, import, label, train and evaluate tactile-navigation runs.\n"
       "Run 'tactile VERB --help' for the options of a verb."};

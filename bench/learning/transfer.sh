@@ -96,7 +96,8 @@ for SEED in $FIT_LOOP; do
     t1=$(now)
     # Scoring alone: classify every scored run with the model's default (online) decision.
     for r in "$OUT/score/$TAG"/*.csv; do
-      "$T" classify --model "$OUT/model_${TAG}_$SEED.json" --run "$r" --out /dev/null 2> /dev/null
+      "$T" classify --model "$OUT/model_${TAG}_$SEED.json" --run "$r" \
+        --out "$OUT/classified_${TAG}.csv" 2> /dev/null
     done
     t2=$(now)
     awk -v s="$S" -v seed="$SEED" -v a="$t0" -v b="$t1" -v c="$t2" -v n="$(wc -l < "$LIST")" \
