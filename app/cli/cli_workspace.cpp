@@ -174,6 +174,7 @@ int sweepsList(const Common& c) {
     if (configuration.is_object()) {
       entry["state"] = configuration.value("state", "");
       entry["label_set"] = configuration.value("label_set", "");
+      if (configuration.contains("error")) entry["error"] = configuration.value("error", "");
     }
     list.push_back(std::move(entry));
   }
@@ -189,6 +190,7 @@ int sweepsList(const Common& c) {
         w["name"].get<std::string>().c_str(), w["created"].get<std::string>().c_str(),
         static_cast<long long>(w["cells"].get<std::int64_t>()),
         w.value("state", std::string()).c_str(), w.value("label_set", std::string()).c_str());
+    if (w.contains("error")) std::printf("       error: %s\n", w.value("error", "").c_str());
   }
   return kExitOk;
 }

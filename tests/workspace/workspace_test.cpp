@@ -869,6 +869,33 @@ TEST(WorkspaceSweep, CancelledOnTwoThreadsStoresExactlyTheResultCells) {
   EXPECT_TRUE(loaded->cells.empty());
 }
 
+// A sweep that stops on an error (here out of memory, thrown where the sweep reports progress)
+// is stored as "failed" with the error; it once stayed "running" for ever.
+TEST(WorkspaceSweep, ASweepStoppedByAnErrorIsStoredAsFailedWithIt) {
+  TrainFixture f;
+  ASSERT_TRUE(f.ws);
+  SweepRequest request = smallSweep();
+  request.threads = 1;
+  std::size_t finished = 0;
+  auto outcome = f.ws->sweep(
+      request, [&](const analysis::SweepCellResult&) { ++finished; },
+      [&](std::size_t, std::size_t) -> bool {
+        if (finished >= 2) throw std::bad_alloc();
+        return true;
+      });
+  ASSERT_FALSE(outcome.ok());
+  EXPECT_NE(outcome.errorText().find("out of memory"), std::string::npos) << outcome.errorText();
+  auto sweeps = f.ws->database().listSweeps();
+  ASSERT_TRUE(sweeps.ok());
+  ASSERT_EQ(sweeps->size(), 1u);
+  const json stored = json::parse(sweeps->front().configurationJson);
+  EXPECT_EQ(stored["state"], "failed");
+  EXPECT_EQ(stored.value("error", ""), "out of memory");
+  auto cells = f.ws->database().sweepCells(sweeps->front().id);
+  ASSERT_TRUE(cells.ok());
+  EXPECT_EQ(cells->size(), finished) << "the cells finished before the error are kept";
+}
+
 // Whole runs are held out: a run both trained and scored on would score the cells on their own
 // training rows, so it is refused like in train (and nothing is stored).
 TEST(WorkspaceSweep, RunGivenForTrainingAndTestingIsRefused) {
