@@ -116,6 +116,28 @@ chmod 600 private.csv
 [ "$(stat -c %a private.csv)" = 600 ] || fail "a 0600 output became $(stat -c %a private.csv)"
 ls ./*.tmp-* > /dev/null 2>&1 && fail "temporary files left: $(ls ./*.tmp-*)"
 
+"$T" export-run --db crashed.db --run run_0000 --out /dev/stdout > stdout.csv
+cmp -s stdout.csv run0.csv || fail "--out /dev/stdout did not stream the run"
+[ -L /dev/stdout ] || [ -c /dev/stdout ] || fail "/dev/stdout was replaced"
+
+# A file-size limit: the write fails, the old file stays, no temporary file is left.
+cp run0.csv limited.csv
+set +e
+(ulimit -f 100 && "$T" simulate --scene room1 --driver wall-follow --steps 3000 --out limited.csv \
+  --quiet) > /dev/null 2> limit.err
+rc=$?
+set -e
+[ "$rc" -eq 1 ] || fail "a write past ulimit -f exited $rc: $(cat limit.err)"
+cmp -s limited.csv run0.csv || fail "a failed write changed the old file"
+ls ./*.tmp-* > /dev/null 2>&1 && fail "temporary files left after ulimit -f: $(ls ./*.tmp-*)"
+
+# Reading verbs leave no -wal or -shm behind.
+for verb in "runs list" "db check" "labels list"; do
+  # shellcheck disable=SC2086
+  "$T" $verb --db crashed.db > /dev/null
+  [ ! -e crashed.db-wal ] && [ ! -e crashed.db-shm ] || fail "$verb left -wal or -shm behind"
+done
+
 cp crashed.db cut.db
 "$T" db check --db cut.db > /dev/null
 truncate -s -5000 cut.db
