@@ -124,24 +124,35 @@ std::optional<std::string> notRegularFile(const std::filesystem::path& path) {
   return std::string("not a regular file");
 }
 
-WalState inspectWal(const std::filesystem::path& database) {
+namespace {
+
+// The log's valid frames (see inspectWal): the page size, the committed frame count and the
+// committed page-1 images.
+struct WalScan {
+  std::int64_t pageSize = 0;
+  std::int64_t commitFrames = 0;
+  std::vector<std::vector<unsigned char>> pageOnes;
+};
+
+WalScan scanWal(const std::filesystem::path& database) {
+  WalScan scan;
   WalState state;
   const std::filesystem::path wal = database.string() + "-wal";
   const Fd log(wal);
-  if (!log.ok() || !log.regular()) return state;
+  if (!log.ok() || !log.regular()) return scan;
   const std::int64_t walBytes = log.size();
   unsigned char header[32];
-  if (walBytes < 32 || !log.readAt(header, sizeof header, 0)) return state;
+  if (walBytes < 32 || !log.readAt(header, sizeof header, 0)) return scan;
   const std::uint32_t magic = big32(header);
   const std::int64_t pageSize = big32(header + 8);
   if ((magic != kWalMagicLittle && magic != kWalMagicBig) || big32(header + 4) != kWalVersion ||
       pageSize < 512 || pageSize > 65536 || (pageSize & (pageSize - 1)) != 0) {
-    return state;  // SQLite ignores a log without a valid header and starts it afresh
+    return scan;  // SQLite ignores a log without a valid header and starts it afresh
   }
   WalChecksum sum;
   sum.bigEndianWords = magic == kWalMagicBig;
   sum.add(header, 24);
-  if (sum.s1 != big32(header + 24) || sum.s2 != big32(header + 28)) return state;
+  if (sum.s1 != big32(header + 24) || sum.s2 != big32(header + 28)) return scan;
   const std::uint32_t salt1 = big32(header + 16);
   const std::uint32_t salt2 = big32(header + 20);
 
@@ -166,10 +177,33 @@ WalState inspectWal(const std::filesystem::path& database) {
       pending.clear();
     }
   }
-  if (state.commitFrames == 0) return state;
+  scan.pageSize = pageSize;
+  scan.commitFrames = state.commitFrames;
+  scan.pageOnes = std::move(pageOnes);
+  return scan;
+}
 
-  // A log in use by another process (or by another connection of this one) belongs to the file.
-  if (otherProcessHasShm(database.string() + "-shm") || isOpenInThisProcess(database)) {
+}  // namespace
+
+std::int64_t walCommitFrames(const std::filesystem::path& database) {
+  return scanWal(database).commitFrames;
+}
+
+WalState inspectWal(const std::filesystem::path& database) {
+  WalState state;
+  if (isOpenInThisProcess(database)) {
+    state.kind = WalState::Kind::Live;  // never a descriptor beside a live connection of ours
+    state.commitFrames = walCommitFrames(database);
+    return state;
+  }
+  WalScan scan = scanWal(database);
+  state.commitFrames = scan.commitFrames;
+  if (state.commitFrames == 0) return state;
+  const std::int64_t pageSize = scan.pageSize;
+  const std::vector<std::vector<unsigned char>>& pageOnes = scan.pageOnes;
+
+  // A log in use by another process belongs to the file.
+  if (otherProcessHasShm(database.string() + "-shm")) {
     state.kind = WalState::Kind::Live;
     return state;
   }

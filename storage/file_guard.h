@@ -40,6 +40,12 @@ inline constexpr std::size_t kIdentityHexDigits = 32;
 // Reads `database`-wal (and `database`'s page 1): see WalState. Never blocks on a FIFO.
 WalState inspectWal(const std::filesystem::path& database);
 
+// Committed frames in the log's current generation (0 without a log); reads the -wal file alone,
+// so it may be called while a connection of this process has the database open (SQLite holds no
+// locks on the -wal file itself). inspectWal returns Live at once in that case: it would open the
+// database and its -shm, and closing those descriptors would drop the connection's POSIX locks.
+std::int64_t walCommitFrames(const std::filesystem::path& database);
+
 // The one-line message for a log that does not belong (names the log and what to do).
 std::string foreignWalMessage(const std::filesystem::path& database, const std::string& reason);
 

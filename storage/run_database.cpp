@@ -295,9 +295,15 @@ Result<std::unique_ptr<RunDatabase>> RunDatabase::openFile(const std::filesystem
         return R(Error(name, "its write-ahead log " + name + "-wal is " + *what +
                                  ", not a file; left unchanged"));
       }
-      if (Status guarded = guardFiles(path, name); !guarded) return R(guarded.error());
+      // Opening and closing any descriptor of a file drops every POSIX lock this process holds on
+      // it, SQLite's among them: while a connection of this process has the database open, the
+      // files are not looked at here (that connection proved them) and SQLite alone decides.
+      const bool openHere = db::isOpenInThisProcess(path);
+      if (!openHere) {
+        if (Status guarded = guardFiles(path, name); !guarded) return R(guarded.error());
+      }
       noteInputFile(path);
-      const Probe probe = probeFile(path);
+      const Probe probe = openHere ? Probe{} : probeFile(path);
       switch (probe.kind) {
         case FileKind::Absent:
           if (mode != OpenMode::Create) return R(Error(name, "no such database"));
@@ -613,11 +619,21 @@ IntegrityReport RunDatabase::check() {
     } snapshot(c);
     report.schemaVersion = db::schemaVersion(c);
     // A file cut short since it was opened: pages past its end read as zeros, which neither
-    // SQLite's checks nor the row checksums see in every table.
+    // SQLite's checks nor the row checksums see in every table. Read through SQLite and stat
+    // alone (a descriptor opened and closed here would drop this connection's locks); without
+    // committed frames in the log, SQLite's page count is the file's.
     if (!impl_->path.empty() && impl_->path != ":memory:" &&
-        db::inspectWal(impl_->path).commitFrames == 0) {
-      if (const auto cut = db::truncationProblem(impl_->path))
-        addProblem(report, "file size", *cut);
+        db::walCommitFrames(impl_->path) == 0) {
+      std::error_code ec;
+      const auto bytes = std::filesystem::file_size(impl_->path, ec);
+      const std::int64_t pageSize = c.queryInt("PRAGMA page_size");
+      const std::int64_t pages = c.queryInt("PRAGMA page_count");
+      if (!ec && static_cast<std::int64_t>(bytes) < pages * pageSize) {
+        addProblem(report, "file size",
+                   "cut short: " + std::to_string(pages) + " pages of " + std::to_string(pageSize) +
+                       " bytes, the file holds " + std::to_string(bytes) +
+                       "; restore it from a backup");
+      }
     }
     {
       db::Statement s(c, "PRAGMA integrity_check");

@@ -31,21 +31,9 @@ Error failure(std::string message) {
 Status Workspace::exportModel(std::string_view name, const std::filesystem::path& out) {
   auto bundle = loadModel(name);
   if (!bundle) return bundle.error();
-  // Written beside the target and renamed into place: a failed write leaves no half file.
-  std::filesystem::path partial = out;
-  partial += ".partial";
-  if (Status written = analysis::writeModelBundleFile(partial, bundle.value()); !written) {
-    std::error_code ignored;
-    std::filesystem::remove(partial, ignored);
-    return written;
-  }
-  std::error_code ec;
-  std::filesystem::rename(partial, out, ec);
-  if (ec) {
-    std::filesystem::remove(partial, ec);
-    return failure(out.string() + ": cannot write: " + ec.message());
-  }
-  return {};
+  // Atomic for a file, a stream for a device or FIFO (base/file_text.h): a failed write leaves
+  // no half file.
+  return analysis::writeModelBundleFile(out, bundle.value());
 }
 
 Result<std::string> Workspace::importModel(const std::filesystem::path& file, std::string name) {

@@ -8,6 +8,7 @@
 #include <unistd.h>
 
 #include <csignal>
+#include <cstdlib>
 
 #include "storage/file_guard.h"
 #include "storage_test_util.h"
@@ -174,6 +175,32 @@ TEST(LeftoverLog, ALiveLogOfAnotherConnectionIsNotJudged) {
   EXPECT_TRUE(second.ok()) << second.errorText();
   sqlite3_exec(reader, "COMMIT", nullptr, nullptr, nullptr);
   sqlite3_close(reader);
+}
+
+// Closing any descriptor of a file drops every POSIX lock the process holds on it. A second open
+// of a database this process already has open must not look at its files: the first
+// connection's SQLite locks would vanish, and another process closing the database would take
+// itself for the last connection and remove the log the first one still writes into.
+TEST(LeftoverLog, ASecondOpenInTheSameProcessKeepsTheFirstConnectionsLocks) {
+  TempDir dir;
+  const fs::path path = dir / "shared.db";
+  importInto(path, "one", 1);
+  auto first = RunDatabase::open(path, OpenMode::ReadWrite);
+  ASSERT_TRUE(first.ok()) << first.errorText();
+  ASSERT_EQ(first.value()->importRun(makeRun(20, true, 20), "two").status, ImportStatus::Imported);
+  {
+    auto second = RunDatabase::open(path, OpenMode::ReadWrite);
+    ASSERT_TRUE(second.ok()) << second.errorText();
+  }
+  // Another process opens, reads and closes it (the sqlite3 shell, as a user might).
+  const std::string command =
+      "sqlite3 '" + path.string() + "' 'SELECT count(*) FROM runs' > /dev/null";
+  ASSERT_EQ(std::system(command.c_str()), 0);
+  EXPECT_TRUE(fs::exists(path.string() + "-wal")) << "the log was removed under a live connection";
+  ASSERT_EQ(first.value()->importRun(makeRun(20, true, 21), "three").status,
+            ImportStatus::Imported);
+  first.value().reset();
+  EXPECT_EQ(runCount(path), 3u) << "a commit of the first connection was lost";
 }
 
 TEST(ShortFile, ADatabaseCutShortIsRefusedInEveryMode) {
