@@ -10,7 +10,7 @@ TACTILE_PACKAGES=(
   libqcustomplot-dev libqcustomplot2.1-qt6
   libeigen3-dev libsqlite3-dev sqlite3 nlohmann-json3-dev libcli11-dev
   libgtest-dev libgmock-dev libbenchmark-dev
-  xvfb xauth fonts-noto-cjk qt6-translations-l10n
+  xvfb xauth fonts-noto-cjk qt6-translations-l10n locales
 )
 
 tactile_missing_packages() {
@@ -40,6 +40,26 @@ tactile_install_deps() {
   else
     echo "These Debian packages are missing. Install them as root, then run this script again:" >&2
     echo "  apt-get install $missing" >&2
+    return 1
+  fi
+}
+
+# Generates the German locale (de_DE.UTF-8) if it is missing: the tests check that a decimal comma
+# in the process's locale never reaches the figures and tables (ReportSvg.NumbersIgnoreTheLocale).
+# As root it generates it, with sudo it asks, otherwise it prints the exact command and fails.
+tactile_install_locale() {
+  if locale -a 2>/dev/null | grep -qix 'de_DE\.utf-\?8'; then
+    return 0
+  fi
+  local make=(localedef -i de_DE -f UTF-8 de_DE.UTF-8)
+  echo "Generating the locale de_DE.UTF-8 for the tests"
+  if [ "$(id -u)" -eq 0 ]; then
+    "${make[@]}"
+  elif command -v sudo >/dev/null 2>&1 && sudo -n true 2>/dev/null; then
+    sudo "${make[@]}"
+  else
+    echo "The locale de_DE.UTF-8 is missing. Generate it as root, then run this script again:" >&2
+    echo "  ${make[*]}" >&2
     return 1
   fi
 }

@@ -5,6 +5,7 @@ root=$(cd "$(dirname "$0")/.." && pwd)
 # shellcheck source=scripts/deps.sh
 source "$root/scripts/deps.sh"
 tactile_install_deps
+tactile_install_locale
 # Warnings are errors here (developers and CI), never in scripts/run.sh.
 tactile_build "$root" -DTACTILE_WERROR=ON
 cd "$root/build"

@@ -21,8 +21,11 @@ namespace {
 
 using nlohmann::json;
 
-// A trained model of the right side group for the given method and covariance form.
-GroupModel trainedModel(ClassifierMethod method, CovarianceForm form, int order = 3) {
+// A trained model of the right side group for the given method and covariance form, into `out`.
+// Everything after the training depends on it: a failed training stops here (ASSERT_), and
+// callers wrap the call in ASSERT_NO_FATAL_FAILURE so that the test stops too instead of going on
+// with an empty model.
+void trainModel(GroupModel& out, ClassifierMethod method, CovarianceForm form, int order = 3) {
   static const RunData run = testdata::makeLabelledRun(1500, 11);
   std::vector<LabelledRun> runs{{&run, labelsFromTruth(run)}};
   const GroupDataSet data = buildGroupDataSet(runs, SensorGroup::Right, FeatureKind::Normal);
@@ -33,14 +36,14 @@ GroupModel trainedModel(ClassifierMethod method, CovarianceForm form, int order 
   settings.classifier.gmm.varianceFloor = 0.01;
   settings.classifier.gmm.seed = 5;
   GroupTrainResult r = trainGroupModel(data, settings);
-  EXPECT_TRUE(r.ok) << r.reason;
+  ASSERT_TRUE(r.ok) << r.reason;
   r.model.provenance.trainRuns = {{"synthetic", 1500, "", "room1"}};
   r.model.provenance.labels = "truth columns";
   r.model.provenance.classifier = settings.classifier;
   r.model.evaluation.evaluatedOn = "test runs";
   r.model.evaluation.byDecision[0].add(ContactClass::Wall, ContactClass::Wall, 7);
   r.model.evaluation.byDecision[1].add(ContactClass::Wall, ContactClass::Corner, 2);
-  return std::move(r.model);
+  out = std::move(r.model);
 }
 
 Eigen::MatrixXd probeRows() {
@@ -90,7 +93,8 @@ void expectSamePredictions(const GroupModel& original, const GroupModel& loaded)
 TEST(ModelFile, RoundTripIsBitIdenticalForEveryForm) {
   for (CovarianceForm form : kAllCovarianceForms) {
     SCOPED_TRACE(std::string(covarianceFormName(form)));
-    const GroupModel model = trainedModel(ClassifierMethod::Gmm, form);
+    GroupModel model;
+    ASSERT_NO_FATAL_FAILURE(trainModel(model, ClassifierMethod::Gmm, form));
     const std::string text = modelToJson(model).dump(1);
     const Result<ModelBundle> read = parseModelJson(text, "m.json");
     ASSERT_TRUE(read.ok()) << read.errorText();
@@ -100,7 +104,8 @@ TEST(ModelFile, RoundTripIsBitIdenticalForEveryForm) {
 }
 
 TEST(ModelFile, GaussianWithRestModelsRoundTrips) {
-  const GroupModel model = trainedModel(ClassifierMethod::Gaussian, CovarianceForm::NodalFull);
+  GroupModel model;
+  ASSERT_NO_FATAL_FAILURE(trainModel(model, ClassifierMethod::Gaussian, CovarianceForm::NodalFull));
   ASSERT_TRUE(model.classifier.hasRestModels());
   const Result<ModelBundle> read = parseModelJson(modelToJson(model).dump(), "m.json");
   ASSERT_TRUE(read.ok()) << read.errorText();
@@ -115,8 +120,11 @@ TEST(ModelFile, GaussianWithRestModelsRoundTrips) {
 
 TEST(ModelFile, BundleFileRoundTripThroughDisk) {
   ModelBundle bundle;
-  bundle.models.push_back(trainedModel(ClassifierMethod::Gmm, CovarianceForm::NodalDiag));
-  GroupModel second = trainedModel(ClassifierMethod::Gmm, CovarianceForm::GrandFull, 2);
+  GroupModel first;
+  ASSERT_NO_FATAL_FAILURE(trainModel(first, ClassifierMethod::Gmm, CovarianceForm::NodalDiag));
+  bundle.models.push_back(std::move(first));
+  GroupModel second;
+  ASSERT_NO_FATAL_FAILURE(trainModel(second, ClassifierMethod::Gmm, CovarianceForm::GrandFull, 2));
   second.group = SensorGroup::Left;  // same dimension (10), so it stays valid
   bundle.models.push_back(std::move(second));
   const auto path = std::filesystem::temp_directory_path() /
@@ -152,9 +160,13 @@ TEST(ModelFile, JsonDoublesReadBackBitForBit) {
 
 // --- validation: each defect its own test ----------------------------------------------------
 
+// Null (the training's failure recorded) when the model cannot be trained.
 json validModelJson() {
-  static const json j =
-      modelToJson(trainedModel(ClassifierMethod::Gmm, CovarianceForm::NodalFull, 2));
+  static const json j = [] {
+    GroupModel model;
+    trainModel(model, ClassifierMethod::Gmm, CovarianceForm::NodalFull, 2);
+    return ::testing::Test::HasFatalFailure() ? json() : modelToJson(model);
+  }();
   return j;
 }
 
@@ -254,7 +266,9 @@ TEST(ModelFileValidation, WrongCovarianceCountForForm) {
 }
 
 TEST(ModelFileValidation, DiagonalFormWithOffDiagonalEntries) {
-  json j = modelToJson(trainedModel(ClassifierMethod::Gmm, CovarianceForm::NodalDiag, 2));
+  GroupModel model;
+  ASSERT_NO_FATAL_FAILURE(trainModel(model, ClassifierMethod::Gmm, CovarianceForm::NodalDiag, 2));
+  json j = modelToJson(model);
   const std::string c = firstClass(j);
   json diag = j["components"][c]["covariances"][0];
   json full = json::array();
@@ -298,8 +312,9 @@ TEST(ModelFileValidation, MissingFileIsError) {
 // Regression: a number too large for a double (1e400) escaped the reader as a bare nlohmann
 // exception, without the file's name.
 TEST(ModelFileHostile, NumberOverflowNamesFileLineAndColumn) {
-  std::string text =
-      dumpJson(modelToJson(trainedModel(ClassifierMethod::Gaussian, CovarianceForm::NodalFull)), 1);
+  GroupModel model;
+  ASSERT_NO_FATAL_FAILURE(trainModel(model, ClassifierMethod::Gaussian, CovarianceForm::NodalFull));
+  std::string text = dumpJson(modelToJson(model), 1);
   const std::size_t at = text.find("\"variance_floor\": ");
   ASSERT_NE(at, std::string::npos);
   const std::size_t value = at + std::string("\"variance_floor\": ").size();
@@ -318,7 +333,8 @@ TEST(ModelFileHostile, NumberOverflowNamesFileLineAndColumn) {
 
 // A model trained now carries its class chain and decides online by default.
 TEST(ModelFile, TrainedModelHasTransitionsAndDecidesOnline) {
-  const GroupModel model = trainedModel(ClassifierMethod::Gmm, CovarianceForm::NodalDiag);
+  GroupModel model;
+  ASSERT_NO_FATAL_FAILURE(trainModel(model, ClassifierMethod::Gmm, CovarianceForm::NodalDiag));
   ASSERT_FALSE(model.transitions.empty());
   EXPECT_EQ(model.transitions.classCount(), static_cast<int>(model.classes.size()));
   EXPECT_EQ(model.decision, DecisionMode::Online);
@@ -360,7 +376,9 @@ TEST(ModelFile, NeighbourFeaturesNeedVersionThree) {
   EXPECT_NE(refused.errorText().find("needs version 3"), std::string::npos) << refused.errorText();
 
   ModelBundle bundle;
-  bundle.models.push_back(trainedModel(ClassifierMethod::Gmm, CovarianceForm::NodalDiag));
+  GroupModel first;
+  ASSERT_NO_FATAL_FAILURE(trainModel(first, ClassifierMethod::Gmm, CovarianceForm::NodalDiag));
+  bundle.models.push_back(std::move(first));
   EXPECT_EQ(bundleToJson(bundle)["version"], 2);
   bundle.models.push_back(std::move(r.model));
   EXPECT_EQ(bundleToJson(bundle)["version"], 3);
@@ -368,7 +386,8 @@ TEST(ModelFile, NeighbourFeaturesNeedVersionThree) {
 
 // Version-1 files (no transitions, no decision) still load and decide per step.
 TEST(ModelFile, VersionOneFilesLoad) {
-  const GroupModel model = trainedModel(ClassifierMethod::Gmm, CovarianceForm::NodalFull);
+  GroupModel model;
+  ASSERT_NO_FATAL_FAILURE(trainModel(model, ClassifierMethod::Gmm, CovarianceForm::NodalFull));
   json j = modelToJson(model);
   j["version"] = 1;
   j.erase("transitions");
@@ -404,7 +423,8 @@ TEST(ModelFile, VersionOneFilesLoad) {
 // A model's default decision must be causal; "online" needs transitions; the chain's rows must
 // be distributions.
 TEST(ModelFile, DecisionAndTransitionsAreValidated) {
-  const GroupModel model = trainedModel(ClassifierMethod::Gmm, CovarianceForm::NodalDiag);
+  GroupModel model;
+  ASSERT_NO_FATAL_FAILURE(trainModel(model, ClassifierMethod::Gmm, CovarianceForm::NodalDiag));
   json j = modelToJson(model);
   j["decision"] = "offline";
   Result<ModelBundle> r = modelsFromJson(j, "m.json");
@@ -425,7 +445,8 @@ TEST(ModelFile, DecisionAndTransitionsAreValidated) {
 // The chain's emission weight is written and read back; a file without it (written before it
 // existed) reads as 1 (the plain HMM); a weight that is not a finite number > 0 is an error.
 TEST(ModelFile, EmissionWeightRoundTripsAndIsValidated) {
-  GroupModel model = trainedModel(ClassifierMethod::Gmm, CovarianceForm::NodalDiag);
+  GroupModel model;
+  ASSERT_NO_FATAL_FAILURE(trainModel(model, ClassifierMethod::Gmm, CovarianceForm::NodalDiag));
   model.transitions.emissionWeight = 0.3;
   json j = modelToJson(model);
   EXPECT_EQ(j["transitions"]["emission_weight"], 0.3);
@@ -454,7 +475,8 @@ TEST(ModelFile, EmissionWeightRoundTripsAndIsValidated) {
 
 // A group with no test rows reports null, never 0.
 TEST(ModelFile, NoTestRowsIsNullNotZero) {
-  GroupModel model = trainedModel(ClassifierMethod::Gmm, CovarianceForm::NodalDiag);
+  GroupModel model;
+  ASSERT_NO_FATAL_FAILURE(trainModel(model, ClassifierMethod::Gmm, CovarianceForm::NodalDiag));
   model.evaluation.byDecision = {};
   const json metrics = evaluationToJson(model);
   EXPECT_TRUE(metrics["balanced_accuracy"].is_null());

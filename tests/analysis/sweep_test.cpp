@@ -274,14 +274,17 @@ TEST(Sweep, OnlineCellsDecideWithTheGroupsDefaultEmissionWeight) {
   const GroupDataSet trainData = buildGroupDataSet(train, SensorGroup::Right, settings.features);
   const GroupDataSet testData = buildGroupDataSet(test, SensorGroup::Right, settings.features);
   const auto online = static_cast<std::size_t>(DecisionMode::Online);
-  auto onlineConfusion = [&](double w) {
+  // The evaluation needs a trained model: a failed training stops the test (ASSERT_).
+  auto onlineConfusion = [&](double w, ConfusionMatrix& out) {
     settings.emissionWeight = w;
     const GroupTrainResult trained = trainGroupModel(trainData, settings);
-    EXPECT_TRUE(trained.ok) << trained.reason;
-    return evaluateGroupModel(trained.model, testData).byDecision[online];
+    ASSERT_TRUE(trained.ok) << trained.reason;
+    out = evaluateGroupModel(trained.model, testData).byDecision[online];
   };
-  const ConfusionMatrix withDefault = onlineConfusion(weight);
-  const ConfusionMatrix withOne = onlineConfusion(1.0);
+  ConfusionMatrix withDefault;
+  ConfusionMatrix withOne;
+  ASSERT_NO_FATAL_FAILURE(onlineConfusion(weight, withDefault));
+  ASSERT_NO_FATAL_FAILURE(onlineConfusion(1.0, withOne));
   ASSERT_NE(withDefault, withOne) << "the data does not tell the weights apart";
   EXPECT_EQ(cell.confusion, withDefault);
 }
