@@ -262,6 +262,12 @@ WalState inspectWal(const std::filesystem::path& database) {
   return state;
 }
 
+bool removeUnusedIndex(const std::filesystem::path& database) {
+  const std::filesystem::path shm = database.string() + "-shm";
+  if (isOpenInThisProcess(database) || otherProcessHasShm(shm)) return false;
+  return ::unlink(shm.c_str()) == 0;
+}
+
 std::string foreignWalMessage(const std::filesystem::path& database, const std::string& reason) {
   const std::string name = database.string();
   return "the write-ahead log " + name + "-wal does not belong to this database (" + reason +

@@ -46,6 +46,10 @@ WalState inspectWal(const std::filesystem::path& database);
 // database and its -shm, and closing those descriptors would drop the connection's POSIX locks.
 std::int64_t walCommitFrames(const std::filesystem::path& database);
 
+// Removes the database's -shm index when no process has it open (after a read-only connection of
+// this process made it and closed); true when it was removed.
+bool removeUnusedIndex(const std::filesystem::path& database);
+
 // The one-line message for a log that does not belong (names the log and what to do).
 std::string foreignWalMessage(const std::filesystem::path& database, const std::string& reason);
 

@@ -225,19 +225,25 @@ Status guardFiles(const std::filesystem::path& path, const std::string& name) {
     case db::WalState::Kind::Unproven: {
       // No page-1 frame to compare (a log written by another program): read the database through
       // the log, without writing either, and refuse it when that reading finds damage.
-      db::Connection c;
-      try {
-        c = db::Connection::open(path, false, db::Access::ReadOnly);
-      } catch (const db::DbError&) {
-        return Status::success();  // cannot read it here; the open that follows says why
-      }
+      // The index SQLite makes for that read is removed again when it was not there before.
+      std::error_code ec;
+      const bool hadIndex = std::filesystem::exists(name + "-shm", ec);
       std::string first;
-      try {
-        db::Statement s(c, "PRAGMA quick_check(1)");
-        if (s.step()) first = s.columnText(0);
-      } catch (const db::DbError& e) {
-        first = e.what();
+      {
+        db::Connection c;
+        try {
+          c = db::Connection::open(path, false, db::Access::ReadOnly);
+        } catch (const db::DbError&) {
+          return Status::success();  // cannot read it here; the open that follows says why
+        }
+        try {
+          db::Statement s(c, "PRAGMA integrity_check(1)");
+          if (s.step()) first = s.columnText(0);
+        } catch (const db::DbError& e) {
+          first = e.what();
+        }
       }
+      if (!hadIndex) db::removeUnusedIndex(path);
       if (first != "ok") {
         return Error(name, db::foreignWalMessage(
                                path, "reading the database through it finds damage: " + first));

@@ -147,6 +147,20 @@ TEST(LeftoverLog, ALogWithoutPageOneIsReadThroughAndOpensWhenSound) {
   EXPECT_EQ(run->subject, "changed");
 }
 
+// The same log beside another database: reading through it finds tables and indexes that no
+// longer agree, so it is refused, and the index made for that reading is removed again.
+TEST(LeftoverLog, ALogWithoutPageOneBesideAnotherDatabaseIsRefused) {
+  TempDir dir;
+  const fs::path live = dir / "live.db";
+  importInto(live, "one", 1);
+  leaveLog(live, dir / "crashed.db", "UPDATE runs SET subject = 'changed' WHERE name = 'one'");
+  importInto(dir / "other.db", "first", 5);
+  importInto(dir / "other.db", "second", 6);
+  copyFile(dir / "crashed.db-wal", dir / "other.db-wal");
+  ASSERT_EQ(db::inspectWal(dir / "other.db").kind, db::WalState::Kind::Unproven);
+  expectRefusedUnchanged(dir / "other.db", "does not belong");
+}
+
 TEST(LeftoverLog, ALogWithoutItsDatabaseIsNeverTurnedIntoOne) {
   TempDir dir;
   const fs::path live = dir / "live.db";
