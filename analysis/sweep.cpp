@@ -588,7 +588,7 @@ std::string readSweep(const json& value, SweepResult& out) {
         const json classes = d.value(key, json::object());
         for (const auto& [name, count] : classes.items()) {
           const auto c = parseContactClass(name);
-          if (!c) return std::string("data: unknown class '") + name + "'";
+          if (!c) return "data: unknown class " + quotedInput(name);
           (*counts)[static_cast<std::size_t>(*c)] = count.get<std::size_t>();
         }
       }
@@ -630,7 +630,7 @@ std::string readSweep(const json& value, SweepResult& out) {
            {std::pair{"classes", &r.classes}, std::pair{"unmodelled", &r.unmodelled}}) {
         for (const json& n : c.value(key, json::array())) {
           const auto cls = parseContactClass(n.get<std::string>());
-          if (!cls) return where + "unknown class '" + n.get<std::string>() + "'";
+          if (!cls) return where + "unknown class " + quotedInput(n.get<std::string>());
           list->push_back(*cls);
         }
       }

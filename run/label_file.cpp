@@ -30,20 +30,20 @@ std::string fillRecord(LabelRecord& record, std::string_view group, std::string_
   if (Status name = checkName(record.run, "run"); !name) return name.error().message;
   const auto g = parseSensorGroup(group);
   if (!g) {
-    return "unknown group '" + shownText(group, 40) + "' (expected F, FLC, L, RLC, B, RRC, R, FRC)";
+    return "unknown group " + quotedInput(group) + " (expected F, FLC, L, RLC, B, RRC, R, FRC)";
   }
   record.group = *g;
   if (!parseCount(first, record.firstStep)) {
-    return "first_step '" + shownText(first, 40) +
-           "' is not a step number (digits only: no sign, no leading zero)";
+    return "first_step " + quotedInput(first) +
+           " is not a step number (digits only: no sign, no leading zero)";
   }
   if (!parseCount(last, record.lastStep) || record.lastStep < record.firstStep) {
-    return "last_step '" + shownText(last, 40) + "' is not a step number >= first_step";
+    return "last_step " + quotedInput(last) + " is not a step number >= first_step";
   }
   const auto c = parseContactClass(cls);
   if (!c) {
-    return "unknown class '" + shownText(cls, 40) +
-           "' (expected NoContact, Wall, Corner, LeavingWall or DeadPath)";
+    return "unknown class " + quotedInput(cls) +
+           " (expected NoContact, Wall, Corner, LeavingWall or DeadPath)";
   }
   record.cls = *c;
   return {};
@@ -59,13 +59,15 @@ bool isChecksum(std::string_view text) {
 std::string addProvenance(std::vector<LabelRunProvenance>& runs, LabelRunProvenance entry) {
   if (entry.name.empty()) return "provenance without a run name";
   if (Status name = checkName(entry.name, "run"); !name) return name.error().message;
-  if (entry.steps < 0) return "run '" + entry.name + "': step count must not be negative";
+  if (entry.steps < 0)
+    return "run " + quotedInput(entry.name) + ": step count must not be negative";
   if (!isChecksum(entry.checksum)) {
-    return "run '" + entry.name + "': checksum '" + shownText(entry.checksum, 40) +
-           "' is not 16 lower-case hex digits";
+    return "run " + quotedInput(entry.name) + ": checksum " + quotedInput(entry.checksum) +
+           " is not 16 lower-case hex digits";
   }
   for (const LabelRunProvenance& other : runs) {
-    if (other.name == entry.name) return "second provenance entry for run '" + entry.name + "'";
+    if (other.name == entry.name)
+      return "second provenance entry for run " + quotedInput(entry.name);
   }
   runs.push_back(std::move(entry));
   return {};
@@ -87,8 +89,8 @@ std::string parseProvenanceLine(std::string_view line, LabelRunProvenance& entry
   }
   entry.name = std::string(rest);
   if (!parseCount(tail[1], entry.steps)) {
-    return "run '" + shownText(entry.name, 60) + "': step count '" + shownText(tail[1], 40) +
-           "' is not a number (digits only: no sign, no leading zero)";
+    return "run " + quotedInput(entry.name) + ": step count " + quotedInput(tail[1]) +
+           " is not a number (digits only: no sign, no leading zero)";
   }
   entry.checksum = std::string(tail[3]);
   return {};
@@ -138,15 +140,15 @@ Result<LabelFile> parseLabelCsv(std::string_view text, std::string_view fileName
       for (std::size_t i = 0; i < names.size(); ++i) {
         const auto it = std::find(kNames.begin(), kNames.end(), names[i]);
         if (it == kNames.end()) {
-          return fail(lineNo, "column " + std::to_string(i + 1) + ": unknown column '" +
-                                  shownText(names[i], 40) +
-                                  "' (expected run, group, first_step, last_step, class and "
+          return fail(lineNo, "column " + std::to_string(i + 1) + ": unknown column " +
+                                  quotedInput(names[i]) +
+                                  " (expected run, group, first_step, last_step, class and "
                                   "optionally annotator)");
         }
         int& slot = position[it - kNames.begin()];
         if (slot >= 0) {
-          return fail(lineNo, "column " + std::to_string(i + 1) + ": duplicate column '" +
-                                  shownText(names[i], 40) + "'");
+          return fail(lineNo, "column " + std::to_string(i + 1) + ": duplicate column " +
+                                  quotedInput(names[i]));
         }
         slot = static_cast<int>(i);
       }

@@ -127,11 +127,11 @@ std::string controlCharacterIn(std::string_view text) {
   return {};
 }
 
-// The field in quotes for a message: control characters and bytes that are not UTF-8 as \xHH, and
-// the first control character named, so a form feed is never shown as nothing.
+// The field in quotes for a message (quotedInput(): control characters and bytes that are not UTF-8
+// as \xHH, cut after kMaxQuotedBytes), and the first control character named, so a form feed is
+// never shown as nothing.
 std::string shown(std::string_view text) {
-  constexpr std::size_t kMaxShown = 40;
-  std::string out = "'" + shownText(text, kMaxShown) + "'";
+  std::string out = quotedInput(text);
   if (std::string control = controlCharacterIn(text); !control.empty()) {
     out += " (holds " + control + ")";
   }
@@ -249,7 +249,7 @@ class Parser {
     if (column >= 0) {
       e.column = static_cast<std::size_t>(column) + 1;
       e.message = (column < static_cast<int>(columns_.size())
-                       ? "column '" + columns_[column].name + "' (position " +
+                       ? "column " + quotedInput(columns_[column].name) + " (position " +
                              std::to_string(e.column) + "): "
                        : "field " + std::to_string(e.column) + ": ") +
                   e.message;
@@ -271,7 +271,7 @@ class Parser {
         const std::size_t colon = line.find(':');
         std::string what = "the metadata line";
         if (colon != std::string_view::npos && colon < bad) {
-          what = "the value of metadata key '" + std::string(trim(line.substr(1, colon - 1))) + "'";
+          what = "the value of metadata key " + quotedInput(trim(line.substr(1, colon - 1)));
         }
         return setError(lineNo, utf8Message(what, line, bad, "of the line"));
       }
@@ -339,7 +339,7 @@ class Parser {
       const int position = static_cast<int>(columns_.size());
       Column column{ColumnKind::Extra, 0, std::string(name)};
       if (const std::size_t bad = invalidUtf8At(name); bad != std::string_view::npos) {
-        columns_.push_back(Column{ColumnKind::Extra, 0, shownText(name, 40)});
+        columns_.push_back(Column{ColumnKind::Extra, 0, std::string(name)});
         return setError(headerLine_, utf8Message("the column name", name, bad), position);
       }
       if (name.empty()) {
