@@ -801,7 +801,7 @@ Result<ModelBundle> modelsFromJson(const json& value, std::string_view fileName)
   } catch (const ModelError& e) {
     return Error(std::string(fileName), shownText(e.path + ": " + e.message, 400));
   } catch (const json::exception& e) {
-    return Error(std::string(fileName), e.what());
+    return Error(std::string(fileName), plainJsonError(e));
   }
   return bundle;
 }

@@ -9,6 +9,9 @@
 #include <thread>
 
 #include "analysis/training.h"
+#include "base/text_rules.h"
+#include "base/worker_threads.h"
+#include "run/json_text.h"
 
 namespace tactile::analysis {
 
@@ -662,7 +665,7 @@ std::string readSweep(const json& value, SweepResult& out) {
       out.cells.push_back(std::move(r));
     }
   } catch (const json::exception& e) {
-    return std::string("malformed sweep file: ") + e.what();
+    return "malformed sweep file: " + plainJsonError(e);
   }
   return {};
 }

@@ -12,6 +12,7 @@
 
 namespace tactile::cli {
 namespace {
+#include "run/json_text.h"
 int gExitCode = kExitOk;
 }  // namespace
 
@@ -96,3 +97,8 @@ void ProgressLine::show(std::size_t done, std::size_t total) {
 }
 
 }  // namespace tactile::cli
+    } catch (const nlohmann::json::exception& e) {
+      // A JSON document of an unexpected shape that no reader caught: plain words, never the
+      // library's own text.
+      printError("unexpected JSON content: " + plainJsonError(e));
+      gExitCode = kExitFailure;

@@ -24,6 +24,7 @@
 #include "app/cli/cli_classifier_options.h"
 #include "app/cli/cli_common.h"
 #include "base/file_text.h"
+#include "base/text_rules.h"
 #include "run/json_text.h"
 #include "run/label_file.h"
 #include "run/run_csv.h"
@@ -812,15 +813,14 @@ int runReport(const ReportArgs& r) {
   const Result<std::string> read = readFileText(path);
   if (!read) throw std::runtime_error(read.errorText());
   const std::string& text = read.value();
-  json value;
-  try {
-    value = json::parse(text);
-  } catch (const json::parse_error& e) {
-    std::size_t line = 1;
-    for (std::size_t i = 0; i + 1 < e.byte && i < text.size(); ++i)
-      line += text[i] == '\n';
-    throw std::runtime_error(path + ":" + std::to_string(line) + ": invalid JSON: " + e.what());
+  // The one JSON reader: syntax errors as FILE:LINE: column C: ..., in plain words.
+  Result<json> parsed = parseJsonText(text, path);
+  if (!parsed) {
+    Error error = parsed.error();
+    error.message = "invalid JSON: " + error.message;
+    throw std::runtime_error(error.text());
   }
+  const json& value = parsed.value();
   analysis::TableStyle style = csv ? analysis::TableStyle::Csv : analysis::TableStyle::Text;
   if (!r.format.empty()) {
     const auto parsed = analysis::parseTableStyle(r.format);
@@ -828,7 +828,10 @@ int runReport(const ReportArgs& r) {
     style = *parsed;
   }
   checkOutput(r.out);
-  const std::string format = value.is_object() ? value.value("format", "") : "";
+  const std::string format =
+      value.is_object() && value.contains("format") && value["format"].is_string()
+          ? value["format"].get<std::string>()
+          : "";
   if (format == "tactile-sweep") {
     const Result<analysis::SweepResult> sweep = analysis::sweepFromJson(value);
     if (!sweep) throw std::runtime_error(path + ": " + sweep.errorText());
@@ -854,7 +857,8 @@ int runReport(const ReportArgs& r) {
       std::cout << dumpJson(json{{"file", path}, {"kind", "model"}, {"out", r.out}}) << "\n";
     return kExitOk;
   }
-  throw std::runtime_error(path + ": not a sweep or model file (format '" + format + "')");
+  throw std::runtime_error(path + ": not a sweep or model file (format " + quotedInput(format) +
+                           ")");
 }
 
 // ---------------------------------------------------------------------------------------------
