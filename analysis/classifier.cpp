@@ -16,6 +16,7 @@
 #include <thread>
 
 #include "analysis/gaussian.h"
+#include "base/worker_threads.h"
 
 namespace tactile::analysis {
 
@@ -316,12 +317,8 @@ ClassifierFit trainClassifier(const std::vector<Eigen::MatrixXd>& samplesPerClas
   if (workers == 1) {
     worker();
   } else {
-    std::vector<std::thread> pool;
-    for (int w = 1; w < workers; ++w)
-      pool.emplace_back(worker);
-    worker();
-    for (auto& th : pool)
-      th.join();
+    // An exception in any worker (out of memory) reaches the caller after every worker stopped.
+    runWorkers(static_cast<unsigned>(workers), worker);
   }
   fit.fitSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   if (cancelled.load()) return fail("cancelled");

@@ -286,12 +286,8 @@ SweepResult runSweep(const std::vector<LabelledRun>& train, const std::vector<La
       if (!cancel.load() && progress && !progress(done, cells.size())) cancel = true;
     }
   };
-  std::vector<std::thread> pool;
-  for (int t = 1; t < threads; ++t)
-    pool.emplace_back(worker);
-  worker();
-  for (std::thread& t : pool)
-    t.join();
+  // An exception in any worker (out of memory) reaches the caller after every worker has stopped.
+  runWorkers(static_cast<unsigned>(std::max(threads, 1)), worker);
 
   result.cancelled = cancel.load();
   for (std::optional<SweepCellResult>& s : slots) {

@@ -12,11 +12,12 @@
 #include <cstring>
 #include <string>
 #include <system_error>
-#include <thread>
+#include <unordered_map>
 
 #include "base/file_text.h"
 #include "base/text_parse.h"
 #include "base/text_rules.h"
+#include "base/worker_threads.h"
 
 namespace tactile {
 namespace {
@@ -811,13 +812,8 @@ RunCsvResult parseRunCsvParallel(std::string_view text, std::string_view fileNam
     for (std::size_t i = next++; i < chunks.size(); i = next++)
       parsed[i].emplace(chunks.parse(i));
   };
-  std::vector<std::thread> workers;
   threads = std::clamp<unsigned>(threads, 1, static_cast<unsigned>(chunks.size()));
-  for (unsigned t = 1; t < threads; ++t)
-    workers.emplace_back(work);
-  work();
-  for (std::thread& worker : workers)
-    worker.join();
+  runWorkers(threads, work);
   std::vector<RunCsvResult> parts;
   parts.reserve(parsed.size());
   for (auto& part : parsed)

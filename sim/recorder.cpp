@@ -7,6 +7,9 @@
 #include <thread>
 #include <vector>
 
+#include "base/worker_threads.h"
+#include "sim/scene_source.h"
+
 namespace tactile::sim {
 
 std::string formatNumber(double value) {
@@ -192,12 +195,8 @@ Status simulateBatch(std::shared_ptr<const World> world, std::string_view sceneN
       }
     }
   };
-  std::vector<std::thread> pool;
-  for (unsigned t = 1; t < threads; ++t)
-    pool.emplace_back(worker);
-  worker();
-  for (std::thread& t : pool)
-    t.join();
+  // An exception in any worker (out of memory) reaches the caller after every worker stopped.
+  runWorkers(threads, worker);
   if (!firstError.empty()) return Error(firstError);
   return Status::success();
 }

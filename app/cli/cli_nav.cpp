@@ -16,6 +16,7 @@
 #include "analysis/model_file.h"
 #include "app/cli/cli_common.h"
 #include "base/file_text.h"
+#include "base/worker_threads.h"
 #include "nav/benchmark.h"
 #include "nav/navigate.h"
 #include "run/builtin_scenes.h"
@@ -258,13 +259,8 @@ int runNavigate(const NavigateArgs& a) {
       }
     }
   };
-  std::vector<std::thread> pool;
-  const unsigned threads = threadCount(a.threads, seeds.size());
-  for (unsigned t = 1; t < threads; ++t)
-    pool.emplace_back(worker);
-  worker();
-  for (std::thread& t : pool)
-    t.join();
+  // An exception in any worker (out of memory) reaches the caller after every worker stopped.
+  runWorkers(threadCount(a.threads, seeds.size()), worker);
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   for (const Row& row : rows)
