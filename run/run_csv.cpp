@@ -284,12 +284,14 @@ class Parser {
         return setError(lineNo, "expected a metadata line '# key: value', found " + shown(line));
       }
       const std::string value(trim(body.substr(colon + 1)));
-      for (std::size_t i = 0; i < run_.metadata.size(); ++i) {
-        if (run_.metadata[i].first == key) {
-          return setError(lineNo, "repeated metadata key '" + std::string(key) +
-                                      "' (first given on line " +
-                                      std::to_string(metadataLines_[i]) + ")");
-        }
+      if (run_.metadata.size() >= kMaxRunMetadataLines) {
+        return setError(lineNo, "too many metadata lines: a run file holds at most " +
+                                    std::to_string(kMaxRunMetadataLines));
+      }
+      // Keys point into the text, which outlives the parser.
+      if (const auto [at, added] = metadataLines_.emplace(key, lineNo); !added) {
+        return setError(lineNo, "repeated metadata key " + shown(key) + " (first given on line " +
+                                    std::to_string(at->second) + ")");
       }
       if (key == "format" && value != kRunFormat) {
         return setError(lineNo,
@@ -314,7 +316,6 @@ class Parser {
                 shown(value));
       }
       run_.metadata.emplace_back(std::string(key), value);
-      metadataLines_.push_back(lineNo);
     }
     return true;
   }
@@ -333,11 +334,19 @@ class Parser {
     poseSeen.fill(-1);
     sensorSeen.fill(-1);
     truthSeen.fill(-1);
+    // `x_` columns by name (views into the text), with their positions: one look-up per column.
+    std::unordered_map<std::string_view, int> extraSeen;
     while (true) {
       const std::size_t comma = line.find(',', start);
       const std::string_view name = line.substr(
           start, comma == std::string_view::npos ? std::string_view::npos : comma - start);
       const int position = static_cast<int>(columns_.size());
+      if (columns_.size() >= kMaxRunColumns) {
+        return setError(headerLine_, "too many columns: a run file holds at most " +
+                                         std::to_string(kMaxRunColumns) +
+                                         " (found more at position " +
+                                         std::to_string(position + 1) + ")");
+      }
       Column column{ColumnKind::Extra, 0, std::string(name)};
       if (const std::size_t bad = invalidUtf8At(name); bad != std::string_view::npos) {
         columns_.push_back(Column{ColumnKind::Extra, 0, std::string(name)});
@@ -367,11 +376,12 @@ class Parser {
           seen = &truthSeen[column.index];
           break;
         case ColumnKind::Extra:
-          for (const Column& other : columns_) {
-            if (other.name == name) {
-              columns_.push_back(column);
-              return setError(headerLine_, "duplicate column " + shown(name), position);
-            }
+          if (const auto [at, added] = extraSeen.emplace(name, position); !added) {
+            columns_.push_back(column);
+            return setError(headerLine_,
+                            "duplicate column " + shown(name) + " (first at position " +
+                                std::to_string(at->second + 1) + ")",
+                            position);
           }
           column.index = static_cast<int>(run_.extraColumns.size());
           run_.extraColumns.emplace_back(name);
@@ -656,7 +666,8 @@ class Parser {
   const ProgressFn& progress_;
   LineCursor cursor_;
   RunData run_;
-  std::vector<std::size_t> metadataLines_;
+  // Metadata keys (views into the text) and the line each was given on.
+  std::unordered_map<std::string_view, std::size_t> metadataLines_;
   std::vector<Column> columns_;
   std::size_t headerLine_ = 0;
   std::size_t firstStep_ = 0;
