@@ -71,9 +71,9 @@ Result<std::unique_ptr<RunLoop>> RunLoop::start(std::shared_ptr<const World> wor
   if (options.maxSteps > kMaxStepsPerRun) {
     return Error("at most " + std::to_string(kMaxStepsPerRun) + " steps per run");
   }
-  {
-    Simulator probe(world, options.config);
-    if (probe.isBlocked(world->scene().start)) return Error("the start pose overlaps an obstacle");
+  // The robot's body at the start: not overlapping an obstacle, nor wholly inside one.
+  if (Status start = checkStartPose(world->scene(), options.config.geometry); !start) {
+    return start.error();
   }
   return std::unique_ptr<RunLoop>(new RunLoop(std::move(world), sceneName, subject, options));
 }
