@@ -164,6 +164,11 @@ Result<GaussianMixture> fitGaussian(const Eigen::MatrixXd& samples, double varia
   if (!samples.allFinite()) return fail("the samples contain a non-finite value");
   if (!(varianceFloor >= 0.0) || !std::isfinite(varianceFloor))
     return fail("the variance floor must be >= 0");
+  if (varianceFloor > 0.0 && varianceFloor < kMinVarianceFloor) {
+    return fail(
+        "the variance floor is too small to hold: use 0 for no floor, or at least "
+        "2.2250738585072014e-308 (the smallest normal double)");
+  }
   const Eigen::RowVectorXd mean = samples.colwise().mean();
   const Eigen::MatrixXd centred = samples.rowwise() - mean;
   Eigen::MatrixXd cov = (centred.transpose() * centred) / static_cast<double>(n - 1);

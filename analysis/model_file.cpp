@@ -141,13 +141,17 @@ GaussianMixture mixtureOf(const json& v, const std::string& path, CovarianceForm
       for (Eigen::Index q = r + 1; q < dim; ++q) {
         const double a = m(r, q), b = m(q, r);
         if (std::abs(a - b) > 1e-12 * std::max({1.0, std::abs(a), std::abs(b)})) {
-          fail(cpath, "not symmetric at (" + std::to_string(r) + "," + std::to_string(q) + ")");
+          fail(cpath, "not symmetric at row " + std::to_string(r + 1) + ", column " +
+                          std::to_string(q + 1) + " (rows and columns count from 1)");
         }
         if (isDiagonal(form) && (a != 0.0 || b != 0.0)) {
           fail(cpath, "off-diagonal entry in a diagonal covariance form");
         }
       }
-      if (!(m(r, r) > 0.0)) fail(cpath, "variance " + std::to_string(r) + " is not positive");
+      if (!(m(r, r) > 0.0)) {
+        fail(cpath, "the variance of feature " + std::to_string(r + 1) + " of " +
+                        std::to_string(dim) + " (counting from 1) is not positive");
+      }
     }
     matrices.push_back(std::move(m));
   }

@@ -49,12 +49,12 @@ ClassifierOptions toClassifierOptions(const ClassifierArgs& a) {
   if (!rule) throw UsageError("--tol-rule must be relative or absolute, got '" + a.tolRule + "'");
   const auto priors = parsePriorMode(a.priors);
   if (!priors) throw UsageError("--priors must be equal or empirical, got '" + a.priors + "'");
-  if (a.order < 1 || a.order > 4096) throw UsageError("--order must be between 1 and 4096");
-  if (!(a.floor >= 0.0) || !std::isfinite(a.floor)) throw UsageError("--floor must be >= 0");
+  checkOrderOption("--order", a.order);
+  checkFloorOption("--floor", a.floor);
   if (a.restarts < 1) throw UsageError("--restarts must be at least 1");
   if (a.threads < 0) throw UsageError("--threads must be >= 0");
   if (a.maxIterations < 1) throw UsageError("--max-iter must be at least 1");
-  if (!(a.tolerance >= 0.0)) throw UsageError("--tol must be >= 0");
+  checkNumberOption("--tol", a.tolerance, 0.0, RangeEnd::Closed, HUGE_VAL, RangeEnd::Open);
   if (a.kmeansIterations < 0) throw UsageError("--kmeans-iter must be >= 0");
   o.gmm.components = a.order;
   o.gmm.form = *form;

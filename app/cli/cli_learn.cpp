@@ -456,9 +456,8 @@ analysis::GroupSettings trainSettings(const TrainArgs& a) {
     }
     s.decision = *decision;
     if (a.emissionWeight) {
-      if (!std::isfinite(*a.emissionWeight) || *a.emissionWeight <= 0.0) {
-        throw UsageError("--emission-weight must be a finite number > 0");
-      }
+      checkNumberOption("--emission-weight", *a.emissionWeight, 0.0, RangeEnd::Open, HUGE_VAL,
+                        RangeEnd::Open);
       s.emissionWeight = *a.emissionWeight;
     }
   }
@@ -477,7 +476,7 @@ int runTrain(const TrainArgs& a) {
     throw UsageError("--set, --train-runs and --name need --db (run files: --out names the file)");
   }
   checkOutput(a.out);
-  if (a.holdout < 0.0 || a.holdout >= 1.0) throw UsageError("--holdout must be in [0, 1)");
+  checkNumberOption("--holdout", a.holdout, 0.0, RangeEnd::Closed, 1.0, RangeEnd::Open);
   if (!a.testRuns.empty() && a.holdout > 0.0) {
     throw UsageError("give either --test-runs or --holdout, not both");
   }
@@ -633,12 +632,14 @@ int runSweepVerb(const SweepArgs& a) {
   grid.seeds = a.seeds;
   grid.decisions =
       parseNames<analysis::DecisionMode>(a.decisions, analysis::parseDecisionMode, "decision");
-  for (int k : grid.orders) {
-    if (k < 1) throw UsageError("--orders must be >= 1");
-  }
-  for (double f : grid.varianceFloors) {
-    if (f < 0.0) throw UsageError("--floors must be >= 0");
-  }
+  // The same checks as train's --order and --floor.
+  for (int k : grid.orders)
+    checkOrderOption("--orders", k);
+  for (double f : grid.varianceFloors)
+    checkFloorOption("--floors", f);
+  if (a.restarts < 1) throw UsageError("--restarts must be at least 1");
+  if (a.maxIterations < 1) throw UsageError("--max-iter must be at least 1");
+  checkNumberOption("--tol", a.tolerance, 0.0, RangeEnd::Closed, HUGE_VAL, RangeEnd::Open);
   const auto reg = parseRegularization(a.reg);
   if (!reg) throw UsageError("unknown --reg '" + a.reg + "'");
   const auto init = parseGmmInit(a.init);
@@ -654,7 +655,7 @@ int runSweepVerb(const SweepArgs& a) {
   if (!a.set.empty() || !a.trainRuns.empty() || !a.name.empty()) {
     throw UsageError("--set, --train-runs and --name need --db (run files: --out names the file)");
   }
-  if (a.holdout <= 0.0 || a.holdout >= 1.0) throw UsageError("--holdout must be in (0, 1)");
+  checkNumberOption("--holdout", a.holdout, 0.0, RangeEnd::Open, 1.0, RangeEnd::Open);
   checkOutput(a.out);
 
   LoadedRuns loaded, loadedTest;
@@ -971,7 +972,8 @@ int runClassify(const ClassifyArgs& a) {
   const auto rule = analysis::parseTemporalRule(a.temporal);
   if (!rule) throw UsageError("unknown --temporal '" + a.temporal + "' (none, count, sum, hmm)");
   if (a.count < 1) throw UsageError("--count must be >= 1");
-  if (a.stay < 0.0 || a.stay > 1.0) throw UsageError("--stay must be in [0, 1]");
+  checkNumberOption("--stay", a.stay, 0.0, RangeEnd::Closed, 1.0, RangeEnd::Closed);
+  checkNumberOption("--threshold", a.threshold, 0.0, RangeEnd::Closed, HUGE_VAL, RangeEnd::Open);
   analysis::ClassifyOptions options;
   if (!a.decision.empty()) {
     const auto decision = analysis::parseDecisionMode(a.decision);

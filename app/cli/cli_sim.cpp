@@ -201,7 +201,7 @@ int runReplay(const SimulateArgs& a) {
   if (a.out.empty() || !a.outDir.empty() || a.runs != 1) {
     throw UsageError("--commands records one run: give --out FILE (not --out-dir or --runs)");
   }
-  if (!(a.dt > 0.0 && a.dt <= 1.0)) throw UsageError("--dt must be in (0, 1] seconds");
+  checkNumberOption("--dt", a.dt, 0.0, RangeEnd::Open, 1.0, RangeEnd::Closed);
   RunCsvResult source = readRunCsv(a.commands);
   if (!source) throw std::runtime_error(source.errorText());
   const RunData& commands = source.value();
@@ -273,7 +273,7 @@ int runSimulate(const SimulateArgs& a) {
   if (a.runs <= 0 || static_cast<std::uint64_t>(a.runs) > kMaxRunsPerBatch) {
     throw UsageError("--runs must be between 1 and " + std::to_string(kMaxRunsPerBatch));
   }
-  if (!(a.dt > 0.0 && a.dt <= 1.0)) throw UsageError("--dt must be in (0, 1] seconds");
+  checkNumberOption("--dt", a.dt, 0.0, RangeEnd::Open, 1.0, RangeEnd::Closed);
   if (a.driver != "wall-follow" && a.driver != "random" && a.driver != "bug") {
     throw UsageError("--driver must be wall-follow, bug or random, got '" + a.driver + "'");
   }
