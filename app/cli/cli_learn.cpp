@@ -185,7 +185,9 @@ std::vector<SensorGroup> parseGroups(const std::vector<std::string>& names) {
   std::vector<SensorGroup> out;
   for (const std::string& n : names) {
     const auto g = parseSensorGroup(n);
-    if (!g) throw UsageError("unknown group '" + n + "' (expected F, FLC, L, RLC, B, RRC, R, FRC)");
+    if (!g)
+      throw UsageError("unknown group " + quotedInput(n) +
+                       " (expected F, FLC, L, RLC, B, RRC, R, FRC)");
     out.push_back(*g);
   }
   return out;
@@ -196,7 +198,7 @@ std::vector<T> parseNames(const std::vector<std::string>& names, Parse parse, co
   std::vector<T> out;
   for (const std::string& n : names) {
     const auto v = parse(n);
-    if (!v) throw UsageError(std::string("unknown ") + what + " '" + n + "'");
+    if (!v) throw UsageError(std::string("unknown ") + what + " " + quotedInput(n));
     out.push_back(*v);
   }
   return out;
@@ -389,7 +391,8 @@ analysis::EvaluationSplit parseFileSplit(const std::string& name) {
   if (name == "by-run") return analysis::EvaluationSplit::TestRuns;
   if (name == "leave-one-run-out") return analysis::EvaluationSplit::LeaveOneRunOut;
   if (name == "by-scene") return analysis::EvaluationSplit::ByScene;
-  throw UsageError("unknown --split '" + name + "' (by-run, leave-one-run-out, by-scene)");
+  throw UsageError("unknown --split " + quotedInput(name) +
+                   " (by-run, leave-one-run-out, by-scene)");
 }
 
 int runTrainDb(const TrainArgs& a, const analysis::GroupSettings& settings,
@@ -403,7 +406,8 @@ int runTrainDb(const TrainArgs& a, const analysis::GroupSettings& settings,
   }
   const auto split = workspace::parseSplitMode(a.split);
   if (!split) {
-    throw UsageError("unknown --split '" + a.split + "' (by-run, leave-one-run-out, by-scene)");
+    throw UsageError("unknown --split " + quotedInput(a.split) +
+                     " (by-run, leave-one-run-out, by-scene)");
   }
   checkOutput(a.out);
   auto ws = openWorkspace(a.db, true);
@@ -596,7 +600,7 @@ int runSweepDb(const SweepArgs& a, const analysis::SweepGrid& grid) {
   request.threads = a.threads;
   const auto split = workspace::parseSplitMode(a.split);
   if (!split || *split == workspace::SplitMode::LeaveOneRunOut)
-    throw UsageError("unknown --split '" + a.split + "' for a sweep (by-run, by-scene)");
+    throw UsageError("unknown --split " + quotedInput(a.split) + " for a sweep (by-run, by-scene)");
   request.split = *split;
   auto outcome = ws->sweep(request, {}, sweepProgress(a.progress));
   if (!outcome) throw std::runtime_error(a.db + ": " + outcome.errorText());
@@ -641,9 +645,9 @@ int runSweepVerb(const SweepArgs& a) {
   if (a.maxIterations < 1) throw UsageError("--max-iter must be at least 1");
   checkNumberOption("--tol", a.tolerance, 0.0, RangeEnd::Closed, HUGE_VAL, RangeEnd::Open);
   const auto reg = parseRegularization(a.reg);
-  if (!reg) throw UsageError("unknown --reg '" + a.reg + "'");
+  if (!reg) throw UsageError("unknown --reg " + quotedInput(a.reg));
   const auto init = parseGmmInit(a.init);
-  if (!init) throw UsageError("unknown --init '" + a.init + "'");
+  if (!init) throw UsageError("unknown --init " + quotedInput(a.init));
   grid.regularization = *reg;
   grid.init = *init;
   grid.restarts = a.restarts;
@@ -664,7 +668,7 @@ int runSweepVerb(const SweepArgs& a) {
   std::vector<LabelledRun> train, test;
   const bool byScene = a.split == "by-scene";
   if (!byScene && a.split != "by-run") {
-    throw UsageError("unknown --split '" + a.split + "' for a sweep (by-run, by-scene)");
+    throw UsageError("unknown --split " + quotedInput(a.split) + " for a sweep (by-run, by-scene)");
   }
   if (byScene && !a.testRuns.empty()) {
     throw UsageError("--split by-scene scores every scene of --runs in turn; give no --test-runs");
@@ -757,7 +761,8 @@ int runReportDb(const ReportArgs& a) {
   checkReportJson(a);
   const std::string format = a.format.empty() ? "text" : a.format;
   const auto style = analysis::parseTableStyle(format);
-  if (!style) throw UsageError("unknown --format '" + format + "' (md, csv, html, text)");
+  if (!style)
+    throw UsageError("unknown --format " + quotedInput(format) + " (md, csv, html, text)");
   checkOutput(a.out);
   auto ws = openWorkspace(a.db, false);
   auto sweep = ws->loadSweep(a.sweep);
@@ -825,7 +830,8 @@ int runReport(const ReportArgs& r) {
   analysis::TableStyle style = csv ? analysis::TableStyle::Csv : analysis::TableStyle::Text;
   if (!r.format.empty()) {
     const auto parsed = analysis::parseTableStyle(r.format);
-    if (!parsed) throw UsageError("unknown --format '" + r.format + "' (md, csv, html, text)");
+    if (!parsed)
+      throw UsageError("unknown --format " + quotedInput(r.format) + " (md, csv, html, text)");
     style = *parsed;
   }
   checkOutput(r.out);
@@ -970,7 +976,8 @@ int printClassification(const ClassifyArgs& a, const analysis::RunClassification
 
 int runClassify(const ClassifyArgs& a) {
   const auto rule = analysis::parseTemporalRule(a.temporal);
-  if (!rule) throw UsageError("unknown --temporal '" + a.temporal + "' (none, count, sum, hmm)");
+  if (!rule)
+    throw UsageError("unknown --temporal " + quotedInput(a.temporal) + " (none, count, sum, hmm)");
   if (a.count < 1) throw UsageError("--count must be >= 1");
   checkNumberOption("--stay", a.stay, 0.0, RangeEnd::Closed, 1.0, RangeEnd::Closed);
   checkNumberOption("--threshold", a.threshold, 0.0, RangeEnd::Closed, HUGE_VAL, RangeEnd::Open);
@@ -978,7 +985,8 @@ int runClassify(const ClassifyArgs& a) {
   if (!a.decision.empty()) {
     const auto decision = analysis::parseDecisionMode(a.decision);
     if (!decision)
-      throw UsageError("unknown --decision '" + a.decision + "' (step, online, offline)");
+      throw UsageError("unknown --decision " + quotedInput(a.decision) +
+                       " (step, online, offline)");
     if (*rule != analysis::TemporalRule::None)
       throw UsageError("give either --decision or --temporal, not both");
     options.decision = *decision;
