@@ -16,6 +16,7 @@
 #include <thread>
 
 #include "analysis/gaussian.h"
+#include "base/worker_threads.h"
 
 namespace tactile::analysis {
 
@@ -163,6 +164,11 @@ Result<GaussianMixture> fitGaussian(const Eigen::MatrixXd& samples, double varia
   if (!samples.allFinite()) return fail("the samples contain a non-finite value");
   if (!(varianceFloor >= 0.0) || !std::isfinite(varianceFloor))
     return fail("the variance floor must be >= 0");
+  if (varianceFloor > 0.0 && varianceFloor < kMinVarianceFloor) {
+    return fail(
+        "the variance floor is too small to hold: use 0 for no floor, or at least "
+        "2.2250738585072014e-308 (the smallest normal double)");
+  }
   const Eigen::RowVectorXd mean = samples.colwise().mean();
   const Eigen::MatrixXd centred = samples.rowwise() - mean;
   Eigen::MatrixXd cov = (centred.transpose() * centred) / static_cast<double>(n - 1);
@@ -316,12 +322,8 @@ ClassifierFit trainClassifier(const std::vector<Eigen::MatrixXd>& samplesPerClas
   if (workers == 1) {
     worker();
   } else {
-    std::vector<std::thread> pool;
-    for (int w = 1; w < workers; ++w)
-      pool.emplace_back(worker);
-    worker();
-    for (auto& th : pool)
-      th.join();
+    // An exception in any worker (out of memory) reaches the caller after every worker stopped.
+    runWorkers(static_cast<unsigned>(workers), worker);
   }
   fit.fitSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   if (cancelled.load()) return fail("cancelled");

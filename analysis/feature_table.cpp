@@ -6,6 +6,7 @@
 #include <unordered_map>
 
 #include "base/file_text.h"
+#include "base/text_rules.h"
 #include "run/run_csv.h"
 
 namespace tactile::analysis {
@@ -57,8 +58,8 @@ Result<FeatureTable> parseFeatureTable(std::string_view text, std::string_view f
   for (std::size_t j = 0; j < d; ++j) {
     if (names[j] != "f" + std::to_string(j)) {
       return located(fileName, lineNo,
-                     "column " + std::to_string(j + 1) + ": header '" + std::string(names[j]) +
-                         "', expected 'f" + std::to_string(j) + "'");
+                     "column " + std::to_string(j + 1) + ": header " + quotedInput(names[j]) +
+                         ", expected 'f" + std::to_string(j) + "'");
     }
   }
   std::vector<double> values;
@@ -84,9 +85,11 @@ Result<FeatureTable> parseFeatureTable(std::string_view text, std::string_view f
       double v = 0.0;
       const auto [ptr, ec] = std::from_chars(p, fieldEnd, v, std::chars_format::general);
       if (ec != std::errc() || ptr != fieldEnd || !std::isfinite(v)) {
-        return located(fileName, lineNo,
-                       "column " + std::to_string(j + 1) + " (f" + std::to_string(j) + "): '" +
-                           std::string(p, fieldEnd) + "' is not a finite number");
+        return located(
+            fileName, lineNo,
+            "column " + std::to_string(j + 1) + " (f" + std::to_string(j) +
+                "): " + quotedInput(std::string_view(p, static_cast<std::size_t>(fieldEnd - p))) +
+                " is not a finite number");
       }
       values.push_back(v);
       p = fieldEnd + 1;
@@ -168,8 +171,9 @@ Status remapLabels(FeatureTable& table, const std::vector<std::string>& classNam
       const std::size_t line =
           r < table.lines.size() ? static_cast<std::size_t>(table.lines[r]) : r + 2;
       return located(fileName, line,
-                     "label '" + table.classNames[static_cast<std::size_t>(table.labels[r])] +
-                         "' does not occur in the training table");
+                     "label " +
+                         quotedInput(table.classNames[static_cast<std::size_t>(table.labels[r])]) +
+                         " does not occur in the training table");
     }
     table.labels[r] = m;
   }

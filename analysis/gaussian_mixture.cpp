@@ -64,13 +64,19 @@ Result<GaussianMixture> GaussianMixture::create(const Eigen::VectorXd& weights,
   if (!weights.allFinite()) return fail("weights are not all finite");
   if (!means.allFinite()) return fail("means are not all finite");
   for (Eigen::Index i = 0; i < k; ++i)
-    if (weights(i) < 0.0) return fail("weight " + std::to_string(i) + " is negative");
+    if (weights(i) < 0.0) {
+      return fail("the weight of component " + std::to_string(i + 1) + " of " + std::to_string(k) +
+                  " (counting from 1) is negative");
+    }
   const double sum = weights.sum();
   if (!(std::abs(sum - 1.0) <= 1e-9))
     return fail("weights sum to " + formatDouble(sum) + ", not 1");
   for (std::size_t i = 0; i < covCount; ++i) {
     const Eigen::MatrixXd& c = covariances[i];
-    const std::string which = "covariance " + std::to_string(i);
+    const std::string which = covCount == 1
+                                  ? std::string("the covariance")
+                                  : "the covariance of component " + std::to_string(i + 1) +
+                                        " of " + std::to_string(covCount) + " (counting from 1)";
     if (c.rows() != d || c.cols() != d)
       return fail(which + " is " + std::to_string(c.rows()) + "x" + std::to_string(c.cols()) +
                   ", expected " + std::to_string(d) + "x" + std::to_string(d));
@@ -101,7 +107,12 @@ bool GaussianMixture::buildCache(std::string* error) {
   int bad = -1;
   if (!buildDensityCache(weights_, shifted, covariances_, isDiagonal(form_), isNodal(form_), cache_,
                          &bad)) {
-    if (error) *error = "covariance " + std::to_string(bad) + " is not positive definite";
+    if (error) {
+      *error = (isNodal(form_) ? "the covariance of component " + std::to_string(bad + 1) +
+                                     " (counting from 1)"
+                               : std::string("the covariance")) +
+               " is not positive definite";
+    }
     return false;
   }
   return true;

@@ -623,6 +623,11 @@ GmmFit fitGmm(const Eigen::MatrixXd& samples, const GmmOptions& o, const Progres
   if (o.components < 1) return fail("the model order must be at least 1");
   if (!(o.varianceFloor >= 0.0) || !std::isfinite(o.varianceFloor))
     return fail("the variance floor must be finite and >= 0");
+  if (o.varianceFloor > 0.0 && o.varianceFloor < kMinVarianceFloor) {
+    return fail("the variance floor " + formatDouble(o.varianceFloor) +
+                " is too small to hold: use 0 for no floor, or at least " +
+                formatDouble(kMinVarianceFloor) + " (the smallest normal double)");
+  }
   if (o.maxIterations < 1) return fail("the iteration limit must be at least 1");
   if (!(o.tolerance >= 0.0)) return fail("the tolerance must be >= 0");
   if (o.restarts < 1) return fail("restarts must be at least 1");

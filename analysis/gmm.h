@@ -10,6 +10,7 @@
 
 #include <cstdint>
 #include <functional>
+#include <limits>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -47,10 +48,19 @@ enum class ConvergenceRule { Relative, Absolute };
 std::string_view convergenceRuleName(ConvergenceRule rule);
 std::optional<ConvergenceRule> parseConvergenceRule(std::string_view name);
 
+// The largest model order (components per class) a fit takes: every component holds a mean and a
+// covariance, so a larger order is a typing mistake, not a model, and could not be held in memory.
+inline constexpr int kMaxModelOrder = 4096;
+
+// The smallest nonzero variance floor: the smallest normal double. Below it (a subnormal such as
+// 1e-320) the floor is lost to rounding and cannot keep a variance away from zero; 0 means no
+// floor.
+inline constexpr double kMinVarianceFloor = std::numeric_limits<double>::min();
+
 struct GmmOptions {
   int components = 1;  // model order M
   CovarianceForm form = CovarianceForm::NodalDiag;
-  double varianceFloor = 1e-3;  // clamp (Floor) or reg_covar (Add); >= 0
+  double varianceFloor = 1e-3;  // clamp (Floor) or reg_covar (Add); 0 or >= kMinVarianceFloor
   Regularization reg = Regularization::Floor;
   GmmInit init = GmmInit::KMeansPlusPlus;
   std::uint64_t seed = 1;

@@ -141,13 +141,17 @@ GaussianMixture mixtureOf(const json& v, const std::string& path, CovarianceForm
       for (Eigen::Index q = r + 1; q < dim; ++q) {
         const double a = m(r, q), b = m(q, r);
         if (std::abs(a - b) > 1e-12 * std::max({1.0, std::abs(a), std::abs(b)})) {
-          fail(cpath, "not symmetric at (" + std::to_string(r) + "," + std::to_string(q) + ")");
+          fail(cpath, "not symmetric at row " + std::to_string(r + 1) + ", column " +
+                          std::to_string(q + 1) + " (rows and columns count from 1)");
         }
         if (isDiagonal(form) && (a != 0.0 || b != 0.0)) {
           fail(cpath, "off-diagonal entry in a diagonal covariance form");
         }
       }
-      if (!(m(r, r) > 0.0)) fail(cpath, "variance " + std::to_string(r) + " is not positive");
+      if (!(m(r, r) > 0.0)) {
+        fail(cpath, "the variance of feature " + std::to_string(r + 1) + " of " +
+                        std::to_string(dim) + " (counting from 1) is not positive");
+      }
     }
     matrices.push_back(std::move(m));
   }
@@ -478,7 +482,7 @@ GroupModel modelOf(const json& v, const std::string& path) {
   GroupModel model;
   const std::string groupName = stringField(v, path, "group");
   const std::optional<SensorGroup> group = parseSensorGroup(groupName);
-  if (!group) fail(path + ".group", "unknown sensor group '" + groupName + "'");
+  if (!group) fail(path + ".group", "unknown sensor group " + quotedInput(groupName));
   model.group = *group;
   const std::string featureName = stringField(v, path, "features");
   const std::optional<FeatureKind> kind = parseFeatureKind(featureName);
@@ -486,8 +490,8 @@ GroupModel modelOf(const json& v, const std::string& path) {
     fail(path + ".features",
          "expected normal, magnitude, normal+shear, normal+shear+touch, "
          "normal+shear+touch+context, normal+shear+touch+context+neighbours, "
-         "normal+shear+touch+motion or normal+shear+touch+motion+neighbours, found '" +
-             featureName + "'");
+         "normal+shear+touch+motion or normal+shear+touch+motion+neighbours, found " +
+             quotedInput(featureName));
   }
   // Kinds newer than version 2 need the version that brought them (earlier kinds read from 1 on).
   if (modelVersionFor(*kind) > 2 && fileVersion < modelVersionFor(*kind)) {
@@ -499,16 +503,16 @@ GroupModel modelOf(const json& v, const std::string& path) {
   const int dim = featureDimension(model.group, model.features);
   const std::string methodName = stringField(v, path, "method");
   const std::optional<ClassifierMethod> method = parseClassifierMethod(methodName);
-  if (!method) fail(path + ".method", "expected gaussian or gmm, found '" + methodName + "'");
+  if (!method) fail(path + ".method", "expected gaussian or gmm, found " + quotedInput(methodName));
   const std::string covName = stringField(v, path, "covariance");
   const std::optional<CovarianceForm> form = parseCovarianceForm(covName);
-  if (!form) fail(path + ".covariance", "unknown covariance form '" + covName + "'");
+  if (!form) fail(path + ".covariance", "unknown covariance form " + quotedInput(covName));
   model.covariance = *form;
   model.varianceFloor = numberOf(field(v, path, "variance_floor"), path + ".variance_floor");
   if (model.varianceFloor < 0.0) fail(path + ".variance_floor", "must be >= 0");
   const std::string regName = stringField(v, path, "regularization");
   const std::optional<Regularization> reg = parseRegularization(regName);
-  if (!reg) fail(path + ".regularization", "expected floor or add, found '" + regName + "'");
+  if (!reg) fail(path + ".regularization", "expected floor or add, found " + quotedInput(regName));
   model.regularization = *reg;
 
   const json& classes = field(v, path, "classes");
@@ -522,8 +526,8 @@ GroupModel modelOf(const json& v, const std::string& path) {
     if (!classes[i].is_string()) fail(cpath, "expected a class name");
     const std::string name = classes[i].get<std::string>();
     const std::optional<ContactClass> cls = parseContactClass(name);
-    if (!cls) fail(cpath, "unknown contact class '" + name + "'");
-    if (!seen.insert(name).second) fail(cpath, "class '" + name + "' listed twice");
+    if (!cls) fail(cpath, "unknown contact class " + quotedInput(name));
+    if (!seen.insert(name).second) fail(cpath, "class " + quotedInput(name) + " listed twice");
     model.classes.push_back(*cls);
     names.push_back(name);
   }
@@ -539,7 +543,7 @@ GroupModel modelOf(const json& v, const std::string& path) {
   for (const std::string& name : names) {
     const std::string cpath = path + ".components." + name;
     auto it = components.find(name);
-    if (it == components.end()) fail(path + ".components", "missing class '" + name + "'");
+    if (it == components.end()) fail(path + ".components", "missing class " + quotedInput(name));
     mixtures.push_back(mixtureOf(*it, cpath, storedForm, dim));
   }
   std::vector<GaussianMixture> rest;
@@ -549,7 +553,7 @@ GroupModel modelOf(const json& v, const std::string& path) {
     }
     for (const std::string& name : names) {
       auto r = it->find(name);
-      if (r == it->end()) fail(path + ".rest_components", "missing class '" + name + "'");
+      if (r == it->end()) fail(path + ".rest_components", "missing class " + quotedInput(name));
       rest.push_back(mixtureOf(*r, path + ".rest_components." + name, storedForm, dim));
     }
   }
@@ -574,7 +578,7 @@ GroupModel modelOf(const json& v, const std::string& path) {
     if (auto it = v.find("decision"); it != v.end()) {
       const std::string name = it->is_string() ? it->get<std::string>() : std::string();
       const std::optional<DecisionMode> mode = parseDecisionMode(name);
-      if (!mode) fail(path + ".decision", "expected step or online, found '" + name + "'");
+      if (!mode) fail(path + ".decision", "expected step or online, found " + quotedInput(name));
       if (!isCausal(*mode)) {
         fail(path + ".decision",
              "a model's default decision must be causal (step or online), not offline");
@@ -801,7 +805,7 @@ Result<ModelBundle> modelsFromJson(const json& value, std::string_view fileName)
   } catch (const ModelError& e) {
     return Error(std::string(fileName), shownText(e.path + ": " + e.message, 400));
   } catch (const json::exception& e) {
-    return Error(std::string(fileName), e.what());
+    return Error(std::string(fileName), plainJsonError(e));
   }
   return bundle;
 }

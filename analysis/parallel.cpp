@@ -4,8 +4,10 @@
 #include <atomic>
 #include <condition_variable>
 #include <cstdint>
+#include <exception>
 #include <mutex>
 #include <thread>
+#include <utility>
 #include <vector>
 
 namespace tactile::analysis {
@@ -56,17 +58,33 @@ class Pool {
       done_.wait(lock, [this] { return pending_.load(std::memory_order_acquire) == 0; });
     }
     job_ = nullptr;
+    // A part that threw (on any thread): every thread has left the job, so throw it here.
+    std::exception_ptr failure;
+    {
+      std::lock_guard<std::mutex> lock(failureMutex_);
+      failure = std::exchange(failure_, nullptr);
+    }
+    if (failure) std::rethrow_exception(failure);
   }
 
   std::mutex busy;
 
  private:
+  // Runs parts until none is left. An exception from a part is kept for run() to throw on the
+  // calling thread (never let out of a pool thread, which would end the process), and no further
+  // part is handed out.
   void work() {
     const bool wasInside = tInsidePart;
     tInsidePart = true;
-    for (int p = next_.fetch_add(1, std::memory_order_relaxed); p < parts_;
-         p = next_.fetch_add(1, std::memory_order_relaxed))
-      (*job_)(p);
+    try {
+      for (int p = next_.fetch_add(1, std::memory_order_relaxed); p < parts_;
+           p = next_.fetch_add(1, std::memory_order_relaxed))
+        (*job_)(p);
+    } catch (...) {
+      std::lock_guard<std::mutex> lock(failureMutex_);
+      if (!failure_) failure_ = std::current_exception();
+      next_.store(parts_, std::memory_order_relaxed);
+    }
     tInsidePart = wasInside;
   }
 
@@ -105,6 +123,8 @@ class Pool {
   std::atomic<int> next_{0};
   std::atomic<int> pending_{0};
   std::atomic<std::uint64_t> generation_{0};
+  std::mutex failureMutex_;
+  std::exception_ptr failure_;  // the first exception of the current job's parts
 };
 
 // Created on first use and never destroyed (its threads wait for work until the process ends).

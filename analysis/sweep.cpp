@@ -9,6 +9,9 @@
 #include <thread>
 
 #include "analysis/training.h"
+#include "base/text_rules.h"
+#include "base/worker_threads.h"
+#include "run/json_text.h"
 
 namespace tactile::analysis {
 
@@ -283,12 +286,8 @@ SweepResult runSweep(const std::vector<LabelledRun>& train, const std::vector<La
       if (!cancel.load() && progress && !progress(done, cells.size())) cancel = true;
     }
   };
-  std::vector<std::thread> pool;
-  for (int t = 1; t < threads; ++t)
-    pool.emplace_back(worker);
-  worker();
-  for (std::thread& t : pool)
-    t.join();
+  // An exception in any worker (out of memory) reaches the caller after every worker has stopped.
+  runWorkers(static_cast<unsigned>(std::max(threads, 1)), worker);
 
   result.cancelled = cancel.load();
   for (std::optional<SweepCellResult>& s : slots) {
@@ -588,7 +587,7 @@ std::string readSweep(const json& value, SweepResult& out) {
         const json classes = d.value(key, json::object());
         for (const auto& [name, count] : classes.items()) {
           const auto c = parseContactClass(name);
-          if (!c) return std::string("data: unknown class '") + name + "'";
+          if (!c) return "data: unknown class " + quotedInput(name);
           (*counts)[static_cast<std::size_t>(*c)] = count.get<std::size_t>();
         }
       }
@@ -630,7 +629,7 @@ std::string readSweep(const json& value, SweepResult& out) {
            {std::pair{"classes", &r.classes}, std::pair{"unmodelled", &r.unmodelled}}) {
         for (const json& n : c.value(key, json::array())) {
           const auto cls = parseContactClass(n.get<std::string>());
-          if (!cls) return where + "unknown class '" + n.get<std::string>() + "'";
+          if (!cls) return where + "unknown class " + quotedInput(n.get<std::string>());
           list->push_back(*cls);
         }
       }
@@ -662,7 +661,7 @@ std::string readSweep(const json& value, SweepResult& out) {
       out.cells.push_back(std::move(r));
     }
   } catch (const json::exception& e) {
-    return std::string("malformed sweep file: ") + e.what();
+    return "malformed sweep file: " + plainJsonError(e);
   }
   return {};
 }

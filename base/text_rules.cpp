@@ -127,7 +127,13 @@ std::string nameFromFileStem(std::string_view stem) {
 
 std::string shownText(std::string_view text, std::size_t maxBytes) {
   const bool cut = text.size() > maxBytes;
-  if (cut) text = text.substr(0, maxBytes);
+  if (cut) {
+    // Not inside a UTF-8 sequence: back off over at most three continuation bytes.
+    std::size_t end = maxBytes;
+    for (int k = 0; k < 3 && end > 0 && (static_cast<unsigned char>(text[end]) & 0xC0) == 0x80; ++k)
+      --end;
+    text = text.substr(0, end == 0 ? maxBytes : end);
+  }
   const auto* s = reinterpret_cast<const unsigned char*>(text.data());
   const std::size_t n = text.size();
   std::string out;
@@ -147,6 +153,10 @@ std::string shownText(std::string_view text, std::size_t maxBytes) {
   }
   if (cut) out += "...";
   return out;
+}
+
+std::string quotedInput(std::string_view text) {
+  return "'" + shownText(text, kMaxQuotedBytes) + "'";
 }
 
 std::string validUtf8(std::string_view text) {

@@ -43,6 +43,13 @@ std::string nameFromFileStem(std::string_view stem);
 // `maxBytes` bytes of input with "...".
 std::string shownText(std::string_view text, std::size_t maxBytes = 200);
 
+// The most bytes of input a message quotes: a 10 MB line gives a short message, not a 10 MB one.
+inline constexpr std::size_t kMaxQuotedBytes = 200;
+
+// Input quoted in a message, the one way every reader does it: "'" + shownText(text,
+// kMaxQuotedBytes) + "'", so at most kMaxQuotedBytes bytes of it, then "...".
+std::string quotedInput(std::string_view text);
+
 // `text` with every byte that is not part of well-formed UTF-8 replaced by U+FFFD, so that it can
 // go into JSON or a terminal.
 std::string validUtf8(std::string_view text);

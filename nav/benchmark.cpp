@@ -11,6 +11,7 @@
 #include <random>
 #include <thread>
 
+#include "base/worker_threads.h"
 #include "nav/astar.h"
 #include "nav/navigate.h"
 #include "run/run_csv.h"
@@ -171,12 +172,8 @@ Result<BenchmarkResult> runMapBenchmark(const BenchmarkOptions& options,
       options.threads == 0 ? std::max(1u, std::thread::hardware_concurrency()) : options.threads;
   threads =
       static_cast<unsigned>(std::min<std::size_t>({threads, 256u, std::max<std::size_t>(jobs, 1)}));
-  std::vector<std::thread> pool;
-  for (unsigned t = 1; t < threads; ++t)
-    pool.emplace_back(worker);
-  worker();
-  for (std::thread& t : pool)
-    t.join();
+  // An exception in any worker (out of memory) reaches the caller after every worker stopped.
+  runWorkers(threads, worker);
   if (!firstError.empty()) return Error(firstError);
   if (done < jobs) return Error("cancelled");
 

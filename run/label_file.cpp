@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cstdint>
+#include <initializer_list>
 #include <limits>
 
 #include "base/text_parse.h"
@@ -30,20 +31,20 @@ std::string fillRecord(LabelRecord& record, std::string_view group, std::string_
   if (Status name = checkName(record.run, "run"); !name) return name.error().message;
   const auto g = parseSensorGroup(group);
   if (!g) {
-    return "unknown group '" + shownText(group, 40) + "' (expected F, FLC, L, RLC, B, RRC, R, FRC)";
+    return "unknown group " + quotedInput(group) + " (expected F, FLC, L, RLC, B, RRC, R, FRC)";
   }
   record.group = *g;
   if (!parseCount(first, record.firstStep)) {
-    return "first_step '" + shownText(first, 40) +
-           "' is not a step number (digits only: no sign, no leading zero)";
+    return "first_step " + quotedInput(first) +
+           " is not a step number (digits only: no sign, no leading zero)";
   }
   if (!parseCount(last, record.lastStep) || record.lastStep < record.firstStep) {
-    return "last_step '" + shownText(last, 40) + "' is not a step number >= first_step";
+    return "last_step " + quotedInput(last) + " is not a step number >= first_step";
   }
   const auto c = parseContactClass(cls);
   if (!c) {
-    return "unknown class '" + shownText(cls, 40) +
-           "' (expected NoContact, Wall, Corner, LeavingWall or DeadPath)";
+    return "unknown class " + quotedInput(cls) +
+           " (expected NoContact, Wall, Corner, LeavingWall or DeadPath)";
   }
   record.cls = *c;
   return {};
@@ -59,13 +60,15 @@ bool isChecksum(std::string_view text) {
 std::string addProvenance(std::vector<LabelRunProvenance>& runs, LabelRunProvenance entry) {
   if (entry.name.empty()) return "provenance without a run name";
   if (Status name = checkName(entry.name, "run"); !name) return name.error().message;
-  if (entry.steps < 0) return "run '" + entry.name + "': step count must not be negative";
+  if (entry.steps < 0)
+    return "run " + quotedInput(entry.name) + ": step count must not be negative";
   if (!isChecksum(entry.checksum)) {
-    return "run '" + entry.name + "': checksum '" + shownText(entry.checksum, 40) +
-           "' is not 16 lower-case hex digits";
+    return "run " + quotedInput(entry.name) + ": checksum " + quotedInput(entry.checksum) +
+           " is not 16 lower-case hex digits";
   }
   for (const LabelRunProvenance& other : runs) {
-    if (other.name == entry.name) return "second provenance entry for run '" + entry.name + "'";
+    if (other.name == entry.name)
+      return "second provenance entry for run " + quotedInput(entry.name);
   }
   runs.push_back(std::move(entry));
   return {};
@@ -87,8 +90,8 @@ std::string parseProvenanceLine(std::string_view line, LabelRunProvenance& entry
   }
   entry.name = std::string(rest);
   if (!parseCount(tail[1], entry.steps)) {
-    return "run '" + shownText(entry.name, 60) + "': step count '" + shownText(tail[1], 40) +
-           "' is not a number (digits only: no sign, no leading zero)";
+    return "run " + quotedInput(entry.name) + ": step count " + quotedInput(tail[1]) +
+           " is not a number (digits only: no sign, no leading zero)";
   }
   entry.checksum = std::string(tail[3]);
   return {};
@@ -138,15 +141,15 @@ Result<LabelFile> parseLabelCsv(std::string_view text, std::string_view fileName
       for (std::size_t i = 0; i < names.size(); ++i) {
         const auto it = std::find(kNames.begin(), kNames.end(), names[i]);
         if (it == kNames.end()) {
-          return fail(lineNo, "column " + std::to_string(i + 1) + ": unknown column '" +
-                                  shownText(names[i], 40) +
-                                  "' (expected run, group, first_step, last_step, class and "
+          return fail(lineNo, "column " + std::to_string(i + 1) + ": unknown column " +
+                                  quotedInput(names[i]) +
+                                  " (expected run, group, first_step, last_step, class and "
                                   "optionally annotator)");
         }
         int& slot = position[it - kNames.begin()];
         if (slot >= 0) {
-          return fail(lineNo, "column " + std::to_string(i + 1) + ": duplicate column '" +
-                                  shownText(names[i], 40) + "'");
+          return fail(lineNo, "column " + std::to_string(i + 1) + ": duplicate column " +
+                                  quotedInput(names[i]));
         }
         slot = static_cast<int>(i);
       }
@@ -191,38 +194,98 @@ Result<LabelFile> parseLabelCsv(std::string_view text, std::string_view fileName
   return result;
 }
 
+namespace {
+
+// A JSON value's type in words, for "holds a string where an integer is needed".
+std::string jsonTypeWords(const nlohmann::json& v) {
+  if (v.is_string()) return "a string";
+  if (v.is_number_float()) return "a number with a fraction or exponent";
+  if (v.is_number()) return "a number";
+  if (v.is_boolean()) return "true or false";
+  if (v.is_null()) return "null";
+  if (v.is_array()) return "an array";
+  return "an object";
+}
+
+// The keys an object may have; the first other one, or nullptr.
+const std::string* unknownKey(const nlohmann::json& object,
+                              std::initializer_list<std::string_view> allowed) {
+  for (auto it = object.begin(); it != object.end(); ++it) {
+    if (std::find(allowed.begin(), allowed.end(), it.key()) == allowed.end()) return &it.key();
+  }
+  return nullptr;
+}
+
+}  // namespace
+
 Result<LabelFile> parseLabelJson(std::string_view text, std::string_view fileName) {
   LabelFile result;
   const std::string name(fileName);
-  Result<nlohmann::json> parsed = parseJsonText(text, fileName);
+  JsonLines lines;
+  Result<nlohmann::json> parsed = parseJsonText(text, fileName, &lines);
   if (!parsed) return parsed.error();
+  // Every error names the line of the element it is about (the line of its key in an object).
+  auto at = [&](const std::string& pointer, const std::string& message) {
+    return Error(name, std::max<std::size_t>(lines.lineOf(pointer), 1), 0, message);
+  };
+  // "-0" is no step number (the CSV reader refuses it as a literal with a sign): so here too.
+  if (!lines.negativeZeros.empty()) {
+    const std::string& pointer = lines.negativeZeros.front();
+    return at(pointer, pointer.substr(pointer.rfind('/') + 1) +
+                           " is -0: an integer is written without a sign");
+  }
   const nlohmann::json& doc = parsed.value();
   const nlohmann::json* segments = &doc;
+  std::string segmentsPointer;
   if (doc.is_object()) {
+    if (const std::string* key =
+            unknownKey(doc, {"format", "version", "set", "annotator", "runs", "segments"})) {
+      return at("/" + *key, "unknown key " + quotedInput(*key) +
+                                " (expected format, version, set, annotator, runs, segments)");
+    }
     if (doc.contains("format") && doc["format"] != "tactile-labels") {
-      return Error(name, "format is not \"tactile-labels\"");
+      return at("/format", "format is not \"tactile-labels\"");
     }
     if (doc.contains("version") && doc["version"] != 1) {
-      return Error(name, "unsupported label file version " + dumpJson(doc["version"]));
+      return at("/version", "unsupported label file version " + dumpJson(doc["version"]));
+    }
+    for (const char* key : {"set", "annotator"}) {
+      if (doc.contains(key) && !doc[key].is_string()) {
+        return at(std::string("/") + key, std::string("\"") + key + "\" holds " +
+                                              jsonTypeWords(doc[key]) + " where text is needed");
+      }
     }
     if (!doc.contains("segments")) {
-      return Error(name, "missing \"segments\"");
+      return at("", "missing \"segments\"");
     }
     segments = &doc["segments"];
+    segmentsPointer = "/segments";
     if (doc.contains("runs")) {
       if (!doc["runs"].is_array()) {
-        return Error(name, "\"runs\" is not an array");
+        return at("/runs", "\"runs\" is not an array");
       }
       std::size_t index = 0;
       for (const nlohmann::json& item : doc["runs"]) {
+        const std::string pointer = "/runs/" + std::to_string(index);
         ++index;
         LabelRunProvenance entry;
-        entry.line = index;
+        entry.line = std::max<std::size_t>(lines.lineOf(pointer), 1);
         std::string error;
+        const std::string* unknown =
+            item.is_object() ? unknownKey(item, {"name", "steps", "checksum"}) : nullptr;
+        if (unknown != nullptr) {
+          return at(pointer + "/" + *unknown, "runs entry " + std::to_string(index) +
+                                                  ": unknown key " + quotedInput(*unknown) +
+                                                  " (expected name, steps, checksum)");
+        }
         if (!item.is_object() || !item.contains("name") || !item["name"].is_string() ||
             !item.contains("steps") || !item["steps"].is_number_integer() ||
             !item.contains("checksum") || !item["checksum"].is_string()) {
           error = "expected {\"name\": text, \"steps\": integer, \"checksum\": text}";
+          if (item.is_object() && item.contains("steps") && !item["steps"].is_number_integer()) {
+            error =
+                "\"steps\" holds " + jsonTypeWords(item["steps"]) + " where an integer is needed";
+          }
         } else if (item["steps"].is_number_unsigned() &&
                    item["steps"].get<std::uint64_t>() >
                        static_cast<std::uint64_t>(std::numeric_limits<std::int64_t>::max())) {
@@ -234,41 +297,56 @@ Result<LabelFile> parseLabelJson(std::string_view text, std::string_view fileNam
           error = addProvenance(result.runs, std::move(entry));
         }
         if (!error.empty()) {
-          return Error(name, "runs entry " + std::to_string(index) + ": " + error);
+          return at(pointer, "runs entry " + std::to_string(index) + ": " + error);
         }
       }
     }
   }
   if (!segments->is_array()) {
-    return Error(name, "\"segments\" is not an array");
+    return at(segmentsPointer, "\"segments\" is not an array");
   }
   std::size_t index = 0;
   for (const nlohmann::json& item : *segments) {
+    const std::string pointer = segmentsPointer + "/" + std::to_string(index);
     ++index;
-    auto fail = [&](const std::string& message) {
+    auto fail = [&](const std::string& message, const std::string& member = {}) {
       result.records.clear();
       result.runs.clear();
-      return Error(name, "segment " + std::to_string(index) + ": " + message);
+      const std::string where = member.empty() ? pointer : pointer + "/" + member;
+      return at(lines.lineOf(where) != 0 ? where : pointer,
+                "segment " + std::to_string(index) + ": " + message);
     };
     if (!item.is_object()) return fail("not an object");
+    if (const std::string* key =
+            unknownKey(item, {"run", "group", "first_step", "last_step", "class", "annotator"})) {
+      return fail("unknown key " + quotedInput(*key) +
+                      " (expected run, group, first_step, last_step, class, annotator)",
+                  *key);
+    }
     for (const char* key : {"run", "group", "class"}) {
-      if (!item.contains(key) || !item[key].is_string()) {
-        return fail(std::string("missing text field \"") + key + "\"");
+      if (!item.contains(key)) return fail(std::string("missing text field \"") + key + "\"");
+      if (!item[key].is_string()) {
+        return fail(std::string("\"") + key + "\" holds " + jsonTypeWords(item[key]) +
+                        " where text is needed",
+                    key);
       }
     }
     for (const char* key : {"first_step", "last_step"}) {
-      if (!item.contains(key) || !item[key].is_number_integer()) {
-        return fail(std::string("missing integer field \"") + key + "\"");
+      if (!item.contains(key)) return fail(std::string("missing integer field \"") + key + "\"");
+      if (!item[key].is_number_integer()) {
+        return fail(std::string("\"") + key + "\" holds " + jsonTypeWords(item[key]) +
+                        " where an integer is needed",
+                    key);
       }
       // Beyond int64 (e.g. 18446744073709551615) is no step number; shown as written.
       if (item[key].is_number_unsigned() &&
           item[key].get<std::uint64_t>() >
               static_cast<std::uint64_t>(std::numeric_limits<std::int64_t>::max())) {
-        return fail(std::string(key) + " " + dumpJson(item[key]) + " is not a step number");
+        return fail(std::string(key) + " " + dumpJson(item[key]) + " is not a step number", key);
       }
     }
     LabelRecord record;
-    record.line = index;
+    record.line = std::max<std::size_t>(lines.lineOf(pointer), 1);
     record.run = item["run"].get<std::string>();
     const std::string first = std::to_string(item["first_step"].get<std::int64_t>());
     const std::string last = std::to_string(item["last_step"].get<std::int64_t>());
@@ -278,11 +356,15 @@ Result<LabelFile> parseLabelJson(std::string_view text, std::string_view fileNam
       return fail(error);
     }
     if (item.contains("annotator")) {
-      if (!item["annotator"].is_string()) return fail("\"annotator\" is not text");
+      if (!item["annotator"].is_string()) {
+        return fail(
+            "\"annotator\" holds " + jsonTypeWords(item["annotator"]) + " where text is needed",
+            "annotator");
+      }
       record.annotator = item["annotator"].get<std::string>();
       if (!record.annotator.empty()) {
         if (Status annotator = checkName(record.annotator, "annotator"); !annotator) {
-          return fail(annotator.error().message);
+          return fail(annotator.error().message, "annotator");
         }
       }
     }

@@ -23,7 +23,7 @@ struct LabelRecord {
   std::int64_t lastStep = 0;
   ContactClass cls = ContactClass::NoContact;
   std::string annotator;
-  std::size_t line = 0;  // 1-based source line (CSV) or 1-based segment index (JSON)
+  std::size_t line = 0;  // 1-based source line (JSON: the line the segment's object starts on)
 };
 
 // The run a label file was made for: its name, step count and checksum (the 16 hex digits of the
@@ -33,7 +33,7 @@ struct LabelRunProvenance {
   std::string name;
   std::int64_t steps = 0;
   std::string checksum;
-  std::size_t line = 0;  // 1-based source line (CSV) or 1-based index in `runs` (JSON)
+  std::size_t line = 0;  // 1-based source line (JSON: the line the `runs` entry starts on)
   bool operator==(const LabelRunProvenance& o) const {
     return name == o.name && steps == o.steps && checksum == o.checksum;
   }
@@ -54,7 +54,9 @@ struct LabelFile {
 Result<LabelFile> parseLabelCsv(std::string_view text, std::string_view fileName);
 // JSON: {"format":"tactile-labels","version":1,"set":...,["runs":[{"name","steps","checksum"}],]
 // "segments":[{"run","group","first_step","last_step","class"[,"annotator"]}]} or a bare array of
-// such segment objects.
+// such segment objects. The CSV reader's rules hold here too: a repeated key, a key the format does
+// not have, and an integer written "-0" are refused. Errors name the file and the line of the
+// element they are about.
 Result<LabelFile> parseLabelJson(std::string_view text, std::string_view fileName);
 
 // The annotator column is written only when some record has one; provenance lines (CSV) or the

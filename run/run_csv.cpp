@@ -12,11 +12,12 @@
 #include <cstring>
 #include <string>
 #include <system_error>
-#include <thread>
+#include <unordered_map>
 
 #include "base/file_text.h"
 #include "base/text_parse.h"
 #include "base/text_rules.h"
+#include "base/worker_threads.h"
 
 namespace tactile {
 namespace {
@@ -127,11 +128,11 @@ std::string controlCharacterIn(std::string_view text) {
   return {};
 }
 
-// The field in quotes for a message: control characters and bytes that are not UTF-8 as \xHH, and
-// the first control character named, so a form feed is never shown as nothing.
+// The field in quotes for a message (quotedInput(): control characters and bytes that are not UTF-8
+// as \xHH, cut after kMaxQuotedBytes), and the first control character named, so a form feed is
+// never shown as nothing.
 std::string shown(std::string_view text) {
-  constexpr std::size_t kMaxShown = 40;
-  std::string out = "'" + shownText(text, kMaxShown) + "'";
+  std::string out = quotedInput(text);
   if (std::string control = controlCharacterIn(text); !control.empty()) {
     out += " (holds " + control + ")";
   }
@@ -249,7 +250,7 @@ class Parser {
     if (column >= 0) {
       e.column = static_cast<std::size_t>(column) + 1;
       e.message = (column < static_cast<int>(columns_.size())
-                       ? "column '" + columns_[column].name + "' (position " +
+                       ? "column " + quotedInput(columns_[column].name) + " (position " +
                              std::to_string(e.column) + "): "
                        : "field " + std::to_string(e.column) + ": ") +
                   e.message;
@@ -271,7 +272,7 @@ class Parser {
         const std::size_t colon = line.find(':');
         std::string what = "the metadata line";
         if (colon != std::string_view::npos && colon < bad) {
-          what = "the value of metadata key '" + std::string(trim(line.substr(1, colon - 1))) + "'";
+          what = "the value of metadata key " + quotedInput(trim(line.substr(1, colon - 1)));
         }
         return setError(lineNo, utf8Message(what, line, bad, "of the line"));
       }
@@ -283,12 +284,14 @@ class Parser {
         return setError(lineNo, "expected a metadata line '# key: value', found " + shown(line));
       }
       const std::string value(trim(body.substr(colon + 1)));
-      for (std::size_t i = 0; i < run_.metadata.size(); ++i) {
-        if (run_.metadata[i].first == key) {
-          return setError(lineNo, "repeated metadata key '" + std::string(key) +
-                                      "' (first given on line " +
-                                      std::to_string(metadataLines_[i]) + ")");
-        }
+      if (run_.metadata.size() >= kMaxRunMetadataLines) {
+        return setError(lineNo, "too many metadata lines: a run file holds at most " +
+                                    std::to_string(kMaxRunMetadataLines));
+      }
+      // Keys point into the text, which outlives the parser.
+      if (const auto [at, added] = metadataLines_.emplace(key, lineNo); !added) {
+        return setError(lineNo, "repeated metadata key " + shown(key) + " (first given on line " +
+                                    std::to_string(at->second) + ")");
       }
       if (key == "format" && value != kRunFormat) {
         return setError(lineNo,
@@ -313,7 +316,6 @@ class Parser {
                 shown(value));
       }
       run_.metadata.emplace_back(std::string(key), value);
-      metadataLines_.push_back(lineNo);
     }
     return true;
   }
@@ -332,14 +334,22 @@ class Parser {
     poseSeen.fill(-1);
     sensorSeen.fill(-1);
     truthSeen.fill(-1);
+    // `x_` columns by name (views into the text), with their positions: one look-up per column.
+    std::unordered_map<std::string_view, int> extraSeen;
     while (true) {
       const std::size_t comma = line.find(',', start);
       const std::string_view name = line.substr(
           start, comma == std::string_view::npos ? std::string_view::npos : comma - start);
       const int position = static_cast<int>(columns_.size());
+      if (columns_.size() >= kMaxRunColumns) {
+        return setError(headerLine_, "too many columns: a run file holds at most " +
+                                         std::to_string(kMaxRunColumns) +
+                                         " (found more at position " +
+                                         std::to_string(position + 1) + ")");
+      }
       Column column{ColumnKind::Extra, 0, std::string(name)};
       if (const std::size_t bad = invalidUtf8At(name); bad != std::string_view::npos) {
-        columns_.push_back(Column{ColumnKind::Extra, 0, shownText(name, 40)});
+        columns_.push_back(Column{ColumnKind::Extra, 0, std::string(name)});
         return setError(headerLine_, utf8Message("the column name", name, bad), position);
       }
       if (name.empty()) {
@@ -366,11 +376,12 @@ class Parser {
           seen = &truthSeen[column.index];
           break;
         case ColumnKind::Extra:
-          for (const Column& other : columns_) {
-            if (other.name == name) {
-              columns_.push_back(column);
-              return setError(headerLine_, "duplicate column " + shown(name), position);
-            }
+          if (const auto [at, added] = extraSeen.emplace(name, position); !added) {
+            columns_.push_back(column);
+            return setError(headerLine_,
+                            "duplicate column " + shown(name) + " (first at position " +
+                                std::to_string(at->second + 1) + ")",
+                            position);
           }
           column.index = static_cast<int>(run_.extraColumns.size());
           run_.extraColumns.emplace_back(name);
@@ -655,7 +666,8 @@ class Parser {
   const ProgressFn& progress_;
   LineCursor cursor_;
   RunData run_;
-  std::vector<std::size_t> metadataLines_;
+  // Metadata keys (views into the text) and the line each was given on.
+  std::unordered_map<std::string_view, std::size_t> metadataLines_;
   std::vector<Column> columns_;
   std::size_t headerLine_ = 0;
   std::size_t firstStep_ = 0;
@@ -811,13 +823,8 @@ RunCsvResult parseRunCsvParallel(std::string_view text, std::string_view fileNam
     for (std::size_t i = next++; i < chunks.size(); i = next++)
       parsed[i].emplace(chunks.parse(i));
   };
-  std::vector<std::thread> workers;
   threads = std::clamp<unsigned>(threads, 1, static_cast<unsigned>(chunks.size()));
-  for (unsigned t = 1; t < threads; ++t)
-    workers.emplace_back(work);
-  work();
-  for (std::thread& worker : workers)
-    worker.join();
+  runWorkers(threads, work);
   std::vector<RunCsvResult> parts;
   parts.reserve(parsed.size());
   for (auto& part : parsed)

@@ -21,6 +21,13 @@ namespace tactile {
 // position and the message starts with its name: "column 'n3' (position 10): expected ...".
 using RunCsvResult = Result<RunData>;
 
+// Limits of the readers, so that a hostile header or a flood of metadata lines is refused at once
+// instead of being held in memory: at most kMaxRunColumns columns in the header (the 103 columns of
+// the format plus `x_` columns) and at most kMaxRunMetadataLines metadata lines. Past either the
+// reader fails at the line that goes past it.
+inline constexpr std::size_t kMaxRunColumns = 10'000;
+inline constexpr std::size_t kMaxRunMetadataLines = 10'000;
+
 // Parses run-file text. `fileName` is used in error messages only. `progress` is called with
 // bytes parsed and total bytes; returning false cancels (the result is then an error).
 RunCsvResult parseRunCsv(std::string_view text, std::string_view fileName,

@@ -7,6 +7,9 @@
 #include <thread>
 #include <vector>
 
+#include "base/worker_threads.h"
+#include "sim/scene_source.h"
+
 namespace tactile::sim {
 
 std::string formatNumber(double value) {
@@ -68,9 +71,9 @@ Result<std::unique_ptr<RunLoop>> RunLoop::start(std::shared_ptr<const World> wor
   if (options.maxSteps > kMaxStepsPerRun) {
     return Error("at most " + std::to_string(kMaxStepsPerRun) + " steps per run");
   }
-  {
-    Simulator probe(world, options.config);
-    if (probe.isBlocked(world->scene().start)) return Error("the start pose overlaps an obstacle");
+  // The robot's body at the start: not overlapping an obstacle, nor wholly inside one.
+  if (Status start = checkStartPose(world->scene(), options.config.geometry); !start) {
+    return start.error();
   }
   return std::unique_ptr<RunLoop>(new RunLoop(std::move(world), sceneName, subject, options));
 }
@@ -192,12 +195,8 @@ Status simulateBatch(std::shared_ptr<const World> world, std::string_view sceneN
       }
     }
   };
-  std::vector<std::thread> pool;
-  for (unsigned t = 1; t < threads; ++t)
-    pool.emplace_back(worker);
-  worker();
-  for (std::thread& t : pool)
-    t.join();
+  // An exception in any worker (out of memory) reaches the caller after every worker stopped.
+  runWorkers(threads, worker);
   if (!firstError.empty()) return Error(firstError);
   return Status::success();
 }

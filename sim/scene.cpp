@@ -1,5 +1,7 @@
 #include "sim/scene.h"
 
+#include <algorithm>
+#include <charconv>
 #include <cmath>
 #include <nlohmann/json.hpp>
 
@@ -12,20 +14,49 @@ namespace {
 
 using nlohmann::json;
 
+// Shortest round-trip text of a number ("1e+07" is written "10000000", "1.7e308" as is).
+std::string formatShortest(double v) {
+  char buffer[64];
+  const auto [end, ec] = std::to_chars(buffer, buffer + sizeof buffer, v);
+  return ec == std::errc() ? std::string(buffer, end) : std::to_string(v);
+}
+
+// A problem and the JSON pointer of the element it is about ("" for the whole document).
 struct SchemaError {
   std::string message;
+  std::string pointer;
 };
 
-double number(const json& j, const std::string& what) {
-  if (!j.is_number()) throw SchemaError{what + " must be a number"};
+// A limit as written in the docs ("10000000", not "1e+07").
+std::string limitText(double limit) {
+  char buffer[64];
+  const auto [end, ec] =
+      std::to_chars(buffer, buffer + sizeof buffer, limit, std::chars_format::fixed);
+  return ec == std::errc() ? std::string(buffer, end) : formatShortest(limit);
+}
+
+// "within +-10000000" for messages.
+std::string coordinateRange() {
+  return "within +-" + limitText(kMaxSceneCoordinate);
+}
+
+double number(const json& j, const std::string& what, const std::string& pointer,
+              double limit = kMaxSceneCoordinate) {
+  if (!j.is_number()) throw SchemaError{what + " must be a number", pointer};
   const double v = j.get<double>();
-  if (!std::isfinite(v)) throw SchemaError{what + " must be finite"};
+  if (!std::isfinite(v)) throw SchemaError{what + " must be finite", pointer};
+  if (!(std::abs(v) <= limit)) {
+    throw SchemaError{
+        what + " is " + formatShortest(v) + ": scene values lie within +-" + limitText(limit),
+        pointer};
+  }
   return v;
 }
 
-const json& member(const json& obj, const char* key, const std::string& where) {
+const json& member(const json& obj, const char* key, const std::string& where,
+                   const std::string& pointer) {
   auto it = obj.find(key);
-  if (it == obj.end()) throw SchemaError{where + "missing \"" + key + "\""};
+  if (it == obj.end()) throw SchemaError{where + "missing \"" + key + "\"", pointer};
   return *it;
 }
 
@@ -75,24 +106,60 @@ std::string sceneNameProblem(std::string_view name) {
 
 namespace {
 
-// The first geometry problem, or "".
-std::string geometryProblem(const Scene& scene) {
+// Whether every coordinate is finite and within +-kMaxSceneCoordinate (theta within
+// +-kMaxSceneAngle); the first one that is not, as a problem, or an empty message.
+SchemaError rangeProblem(const Scene& scene) {
+  const auto out = [](double v, double limit) { return !(std::abs(v) <= limit); };
+  const SceneBounds& b = scene.bounds;
+  for (double v : {b.xmin, b.ymin, b.xmax, b.ymax}) {
+    if (out(v, kMaxSceneCoordinate)) {
+      return {"bounds: " + formatShortest(v) + " is not " + coordinateRange(), "/bounds"};
+    }
+  }
+  for (std::size_t i = 0; i < scene.obstacles.size(); ++i) {
+    const std::vector<Vec2>& poly = scene.obstacles[i].polygon;
+    for (std::size_t v = 0; v < poly.size(); ++v) {
+      if (out(poly[v].x(), kMaxSceneCoordinate) || out(poly[v].y(), kMaxSceneCoordinate)) {
+        return {obstacleLabel(i) + " vertex " + std::to_string(v) + ": not " + coordinateRange(),
+                "/obstacles/" + std::to_string(i) + "/polygon/" + std::to_string(v)};
+      }
+    }
+  }
+  if (out(scene.start.x, kMaxSceneCoordinate) || out(scene.start.y, kMaxSceneCoordinate) ||
+      out(scene.start.theta, kMaxSceneAngle)) {
+    return {"start: (x, y) not " + coordinateRange() + " or theta not within +-" +
+                limitText(kMaxSceneAngle),
+            "/start"};
+  }
+  if (out(scene.goal.x(), kMaxSceneCoordinate) || out(scene.goal.y(), kMaxSceneCoordinate)) {
+    return {"goal: (x, y) not " + coordinateRange(), "/goal"};
+  }
+  return {};
+}
+
+// The first geometry problem, or one with an empty message.
+SchemaError geometryProblem(const Scene& scene) {
+  if (SchemaError range = rangeProblem(scene); !range.message.empty()) return range;
   const SceneBounds& b = scene.bounds;
   if (!(b.xmin < b.xmax) || !(b.ymin < b.ymax)) {
-    return "bounds: need xmin < xmax and ymin < ymax";
+    return {"bounds: need xmin < xmax and ymin < ymax", "/bounds"};
   }
   for (std::size_t i = 0; i < scene.obstacles.size(); ++i) {
     std::string error = validatePolygon(scene.obstacles[i].polygon, i, b);
-    if (!error.empty()) return error;
+    if (!error.empty()) return {error, "/obstacles/" + std::to_string(i)};
   }
   const auto inside = [&](double x, double y) {
     return x > b.xmin && x < b.xmax && y > b.ymin && y < b.ymax;
   };
-  if (!inside(scene.start.x, scene.start.y)) return "start: (x, y) lies outside the bounds";
-  if (!inside(scene.goal.x(), scene.goal.y())) return "goal: (x, y) lies outside the bounds";
+  if (!inside(scene.start.x, scene.start.y)) {
+    return {"start: (x, y) lies outside the bounds", "/start"};
+  }
+  if (!inside(scene.goal.x(), scene.goal.y())) {
+    return {"goal: (x, y) lies outside the bounds", "/goal"};
+  }
   for (std::size_t i = 0; i < scene.obstacles.size(); ++i) {
     if (pointInPolygon(scene.goal, scene.obstacles[i].polygon)) {
-      return "goal: lies inside " + obstacleLabel(i);
+      return {"goal: lies inside " + obstacleLabel(i), "/goal"};
     }
   }
   return {};
@@ -101,13 +168,16 @@ std::string geometryProblem(const Scene& scene) {
 }  // namespace
 
 Status validateSceneGeometry(const Scene& scene) {
-  if (std::string problem = geometryProblem(scene); !problem.empty()) return Error(problem);
+  if (SchemaError problem = geometryProblem(scene); !problem.message.empty()) {
+    return Error(problem.message);
+  }
   return Status::success();
 }
 
 Result<Scene> parseSceneJson(std::string_view text, std::string_view sourceName) {
   const std::string source(sourceName);
-  Result<json> parsed = parseJsonText(text, sourceName);
+  JsonLines lines;
+  Result<json> parsed = parseJsonText(text, sourceName, &lines);
   if (!parsed) {
     Error error = parsed.error();
     error.message = "not valid JSON: " + error.message;
@@ -115,53 +185,72 @@ Result<Scene> parseSceneJson(std::string_view text, std::string_view sourceName)
   }
   const json& doc = parsed.value();
   Scene scene;
+  // An error at the line of the element it is about (or of the nearest enclosing one).
+  const auto located = [&](const SchemaError& e) {
+    std::string pointer = e.pointer;
+    while (!pointer.empty() && lines.lineOf(pointer) == 0)
+      pointer.erase(pointer.rfind('/'));
+    return Error(source, std::max<std::size_t>(lines.lineOf(pointer), 1), 0, e.message);
+  };
   try {
-    if (!doc.is_object()) throw SchemaError{"the scene must be a JSON object"};
-    const json& name = member(doc, "name", "");
-    if (!name.is_string()) throw SchemaError{"\"name\" must be a string"};
+    if (!doc.is_object()) throw SchemaError{"the scene must be a JSON object", ""};
+    const json& name = member(doc, "name", "", "");
+    if (!name.is_string()) throw SchemaError{"\"name\" must be a string", "/name"};
     scene.name = name.get<std::string>();
     if (std::string problem = sceneNameProblem(scene.name); !problem.empty()) {
-      throw SchemaError{"\"name\": " + problem};
+      throw SchemaError{"\"name\": " + problem, "/name"};
     }
-    const json& bounds = member(doc, "bounds", "");
+    const json& bounds = member(doc, "bounds", "", "");
     if (!bounds.is_array() || bounds.size() != 4) {
-      throw SchemaError{"\"bounds\" must be [xmin, ymin, xmax, ymax]"};
+      throw SchemaError{"\"bounds\" must be [xmin, ymin, xmax, ymax]", "/bounds"};
     }
-    scene.bounds = {number(bounds[0], "bounds[0]"), number(bounds[1], "bounds[1]"),
-                    number(bounds[2], "bounds[2]"), number(bounds[3], "bounds[3]")};
-    const json& obstacles = member(doc, "obstacles", "");
-    if (!obstacles.is_array()) throw SchemaError{"\"obstacles\" must be an array"};
+    scene.bounds = {
+        number(bounds[0], "bounds[0]", "/bounds/0"), number(bounds[1], "bounds[1]", "/bounds/1"),
+        number(bounds[2], "bounds[2]", "/bounds/2"), number(bounds[3], "bounds[3]", "/bounds/3")};
+    const json& obstacles = member(doc, "obstacles", "", "");
+    if (!obstacles.is_array()) throw SchemaError{"\"obstacles\" must be an array", "/obstacles"};
     for (std::size_t i = 0; i < obstacles.size(); ++i) {
       const std::string label = obstacleLabel(i);
+      const std::string pointer = "/obstacles/" + std::to_string(i);
       const json& o = obstacles[i];
-      if (!o.is_object()) throw SchemaError{label + ": must be an object with a \"polygon\""};
-      const json& poly = member(o, "polygon", label + ": ");
-      if (!poly.is_array()) throw SchemaError{label + ": \"polygon\" must be an array of [x, y]"};
+      if (!o.is_object()) {
+        throw SchemaError{label + ": must be an object with a \"polygon\"", pointer};
+      }
+      const json& poly = member(o, "polygon", label + ": ", pointer);
+      if (!poly.is_array()) {
+        throw SchemaError{label + ": \"polygon\" must be an array of [x, y]", pointer + "/polygon"};
+      }
       Obstacle obstacle;
+      obstacle.line = lines.lineOf(pointer);
       for (std::size_t v = 0; v < poly.size(); ++v) {
         const std::string where = label + " vertex " + std::to_string(v);
+        const std::string at = pointer + "/polygon/" + std::to_string(v);
         if (!poly[v].is_array() || poly[v].size() != 2) {
-          throw SchemaError{where + ": must be [x, y]"};
+          throw SchemaError{where + ": must be [x, y]", at};
         }
-        obstacle.polygon.emplace_back(number(poly[v][0], where + " x"),
-                                      number(poly[v][1], where + " y"));
+        obstacle.polygon.emplace_back(number(poly[v][0], where + " x", at + "/0"),
+                                      number(poly[v][1], where + " y", at + "/1"));
       }
       scene.obstacles.push_back(std::move(obstacle));
     }
-    const json& start = member(doc, "start", "");
-    if (!start.is_object()) throw SchemaError{"\"start\" must be {\"x\", \"y\", \"theta\"}"};
-    scene.start.x = number(member(start, "x", "start: "), "start.x");
-    scene.start.y = number(member(start, "y", "start: "), "start.y");
-    scene.start.theta = number(member(start, "theta", "start: "), "start.theta");
-    const json& goal = member(doc, "goal", "");
-    if (!goal.is_object()) throw SchemaError{"\"goal\" must be {\"x\", \"y\"}"};
-    scene.goal = Vec2(number(member(goal, "x", "goal: "), "goal.x"),
-                      number(member(goal, "y", "goal: "), "goal.y"));
+    const json& start = member(doc, "start", "", "");
+    if (!start.is_object()) {
+      throw SchemaError{"\"start\" must be {\"x\", \"y\", \"theta\"}", "/start"};
+    }
+    scene.startLine = lines.lineOf("/start");
+    scene.start.x = number(member(start, "x", "start: ", "/start"), "start.x", "/start/x");
+    scene.start.y = number(member(start, "y", "start: ", "/start"), "start.y", "/start/y");
+    scene.start.theta = number(member(start, "theta", "start: ", "/start"), "start.theta",
+                               "/start/theta", kMaxSceneAngle);
+    const json& goal = member(doc, "goal", "", "");
+    if (!goal.is_object()) throw SchemaError{"\"goal\" must be {\"x\", \"y\"}", "/goal"};
+    scene.goal = Vec2(number(member(goal, "x", "goal: ", "/goal"), "goal.x", "/goal/x"),
+                      number(member(goal, "y", "goal: ", "/goal"), "goal.y", "/goal/y"));
   } catch (const SchemaError& e) {
-    return Error(source, e.message);
+    return located(e);
   }
-  if (Status valid = validateSceneGeometry(scene); !valid) {
-    return Error(source, valid.error().message);
+  if (SchemaError problem = geometryProblem(scene); !problem.message.empty()) {
+    return located(problem);
   }
   return scene;
 }

@@ -22,6 +22,7 @@ struct SceneBounds {
 
 struct Obstacle {
   std::vector<Vec2> polygon;  // closed implicitly (last vertex joins the first), any orientation
+  std::size_t line = 0;       // where it is in the scene's JSON text (1-based), 0 when not read
 };
 
 struct Scene {
@@ -30,14 +31,22 @@ struct Scene {
   std::vector<Obstacle> obstacles;
   Pose2d start;
   Vec2 goal = Vec2::Zero();
+  std::size_t startLine = 0;  // the line of "start" in the scene's JSON text, 0 when not read
 };
 
-// Parses scene JSON. `sourceName` (file or scene name) prefixes every error message. Checks the
-// schema and the polygons (validateSceneGeometry) but not the start pose (that needs the robot:
-// see checkStartPose in sim/world.h).
+// Scene coordinates (bounds, vertices, start and goal) lie within +-kMaxSceneCoordinate, so widths,
+// heights and distances stay finite and exact enough; theta within +-kMaxSceneAngle radians.
+inline constexpr double kMaxSceneCoordinate = 1e7;
+inline constexpr double kMaxSceneAngle = 1e3;
+
+// Parses scene JSON. `sourceName` (file or scene name) prefixes every error message, with the line
+// of the element at fault. Checks the schema, the coordinate range and the polygons
+// (validateSceneGeometry) but not the robot at the start pose (that needs the robot: see
+// checkStartPose in sim/scene_source.h). Records the lines of the obstacles and the start.
 Result<Scene> parseSceneJson(std::string_view text, std::string_view sourceName);
 
-// Polygon and pose checks that need no robot: bounds non-empty; every obstacle has at least three
+// Polygon and pose checks that need no robot: every coordinate within +-kMaxSceneCoordinate and
+// theta within +-kMaxSceneAngle; bounds non-empty; every obstacle has at least three
 // finite vertices inside the bounds, no two consecutive vertices equal, non-zero area, and no two
 // non-adjacent edges that touch (not self-intersecting); start and goal inside the bounds; goal
 // not inside an obstacle. Fails with the first problem, e.g.

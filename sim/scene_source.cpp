@@ -1,5 +1,6 @@
 #include "sim/scene_source.h"
 
+#include <algorithm>
 #include <cmath>
 #include <memory>
 #include <numbers>
@@ -9,6 +10,7 @@
 #include "base/text_parse.h"
 #include "run/builtin_scenes.h"
 #include "run/run_csv.h"
+#include "sim/geometry.h"
 #include "sim/office_scene.h"
 #include "sim/recorder.h"
 #include "sim/simulator.h"
@@ -96,16 +98,76 @@ Scene generateProceduralScene(std::size_t obstacles, std::uint64_t seed) {
   return scene;
 }
 
+namespace {
+
+// "obstacle 3 (line 12)": the obstacle as the scene's errors name it, with its line when read
+// from a file.
+std::string obstacleName(const Scene& scene, std::size_t i) {
+  std::string out = "obstacle " + std::to_string(i);
+  if (scene.obstacles[i].line > 0) out += " (line " + std::to_string(scene.obstacles[i].line) + ")";
+  return out;
+}
+
+// The obstacles whose bounding box comes within `reach` of `p`.
+std::vector<std::size_t> obstaclesNear(const Scene& scene, const Vec2& p, double reach) {
+  std::vector<std::size_t> out;
+  for (std::size_t i = 0; i < scene.obstacles.size(); ++i) {
+    const std::vector<Vec2>& poly = scene.obstacles[i].polygon;
+    if (poly.empty()) continue;
+    Vec2 lo = poly.front();
+    Vec2 hi = poly.front();
+    for (const Vec2& v : poly) {
+      lo = lo.cwiseMin(v);
+      hi = hi.cwiseMax(v);
+    }
+    if (p.x() >= lo.x() - reach && p.x() <= hi.x() + reach && p.y() >= lo.y() - reach &&
+        p.y() <= hi.y() + reach) {
+      out.push_back(i);
+    }
+  }
+  return out;
+}
+
+}  // namespace
+
 Status checkStartPose(const Scene& scene, const RobotGeometry& geometry) {
+  const std::string at = "start: the robot at (" + formatNumber(scene.start.x) + ", " +
+                         formatNumber(scene.start.y) + ", " + formatNumber(scene.start.theta) + ")";
+  const auto error = [&](const std::string& message) {
+    return Error(std::string(), scene.startLine, 0, at + " " + message);
+  };
+  const Vec2 centre(scene.start.x, scene.start.y);
+  // A body wholly inside an obstacle touches none of its edges: the edge test below cannot see it.
+  for (std::size_t i = 0; i < scene.obstacles.size(); ++i) {
+    if (pointInPolygon(centre, scene.obstacles[i].polygon)) {
+      return error("stands inside " + obstacleName(scene, i));
+    }
+  }
   SimConfig config;
   config.geometry = geometry;
   Simulator sim(std::make_shared<const World>(scene), config);
-  if (sim.isBlocked(scene.start)) {
-    return Error("start: the robot at (" + formatNumber(scene.start.x) + ", " +
-                 formatNumber(scene.start.y) + ", " + formatNumber(scene.start.theta) +
-                 ") overlaps an obstacle or the bounds");
+  if (!sim.isBlocked(scene.start)) return Status::success();
+  // Which obstacle: each one near the start alone, in a room far larger than the robot.
+  const double reach = std::hypot(std::max(std::abs(geometry.frontX()), std::abs(geometry.backX())),
+                                  geometry.halfWidth()) +
+                       geometry.domeRadiusUnits + 1.0;
+  for (std::size_t i : obstaclesNear(scene, centre, reach)) {
+    Scene alone;
+    alone.name = scene.name;
+    alone.obstacles.push_back(scene.obstacles[i]);
+    alone.start = scene.start;
+    alone.goal = centre;
+    Vec2 lo = centre - Vec2::Constant(4.0 * reach);
+    Vec2 hi = centre + Vec2::Constant(4.0 * reach);
+    for (const Vec2& v : scene.obstacles[i].polygon) {
+      lo = lo.cwiseMin(v - Vec2(reach, reach));
+      hi = hi.cwiseMax(v + Vec2(reach, reach));
+    }
+    alone.bounds = {lo.x(), lo.y(), hi.x(), hi.y()};
+    Simulator one(std::make_shared<const World>(alone), config);
+    if (one.isBlocked(scene.start)) return error("overlaps " + obstacleName(scene, i));
   }
-  return Status::success();
+  return error("overlaps the bounds (the walls)");
 }
 
 namespace {
@@ -193,7 +255,7 @@ Result<Scene> loadScene(std::string_view spec, const RobotGeometry& geometry) {
   }
   if (!result.ok()) return result;
   if (Status start = checkStartPose(result.value(), geometry); !start) {
-    return Error(std::string(spec), start.error().message);
+    return Error(std::string(spec), start.error().line, 0, start.error().message);
   }
   return result;
 }

@@ -7,11 +7,13 @@
 #include <deque>
 #include <functional>
 #include <mutex>
+#include <new>
 #include <optional>
 #include <thread>
 #include <unordered_set>
 
 #include "base/file_text.h"
+#include "base/worker_threads.h"
 #include "run/run_csv.h"
 #include "storage/import_pieces.h"
 
@@ -188,7 +190,10 @@ std::vector<ImportOutcome> RunDatabase::importFiles(const std::vector<std::files
     job.headReady = true;
   };
 
-  auto worker = [&] {
+  // An exception that escapes a task (out of memory outside a file's own parsing) stops the
+  // workers; the writer then throws it on this thread once they are joined.
+  FirstException workerFailure;
+  auto workerLoop = [&] {
     std::unique_lock lock(mutex);
     while (true) {
       std::size_t j = 0;
@@ -202,7 +207,16 @@ std::vector<ImportOutcome> RunDatabase::importFiles(const std::vector<std::files
         std::shared_ptr<const Source> source = jobs[j].source;
         const std::string file = jobs[j].head.file;
         lock.unlock();
-        StepChunk chunk = parseChunk(*source->chunks, c, file);
+        StepChunk chunk;
+        try {
+          chunk = parseChunk(*source->chunks, c, file);
+        } catch (const std::bad_alloc&) {
+          chunk = StepChunk{};
+          chunk.error = file + ": out of memory: the file is too large for this machine's memory";
+        } catch (const std::exception& e) {
+          chunk = StepChunk{};
+          chunk.error = file + ": " + e.what();
+        }
         source.reset();
         lock.lock();
         if (jobs[j].abandoned) {
@@ -224,17 +238,26 @@ std::vector<ImportOutcome> RunDatabase::importFiles(const std::vector<std::files
     }
     changed.notify_all();
   };
+  auto worker = [&] {
+    if (!workerFailure.capture(workerLoop)) stopWorkers();
+  };
   std::vector<std::thread> workers;
   // Stops and joins the workers on every way out, exceptions included.
   struct Joiner {
     std::vector<std::thread>& threads;
     const std::function<void()> stop;
-    ~Joiner() {
+    void join() {
       stop();
       for (std::thread& t : threads)
-        t.join();
+        if (t.joinable()) t.join();
     }
+    ~Joiner() { join(); }
   } joiner{workers, stopWorkers};
+  // After a wait woken by a failed worker: join them all, then throw its exception here.
+  auto throwWorkerFailure = [&] {
+    joiner.join();
+    workerFailure.rethrow();
+  };
   for (unsigned t = 0; t < threads; ++t)
     workers.emplace_back(worker);
 
@@ -249,11 +272,16 @@ std::vector<ImportOutcome> RunDatabase::importFiles(const std::vector<std::files
       std::unique_lock lock(mutex);
       current = i;
       changed.notify_all();
-      changed.wait(lock, [&] { return job.headReady; });
+      changed.wait(lock, [&] { return job.headReady || workerFailure.failed(); });
     }
+    if (workerFailure.failed()) throwWorkerFailure();
     auto take = [&](std::size_t c) {
       std::unique_lock lock(mutex);
-      changed.wait(lock, [&] { return job.parsed[c].has_value(); });
+      changed.wait(lock, [&] { return job.parsed[c].has_value() || workerFailure.failed(); });
+      if (!job.parsed[c].has_value()) {
+        lock.unlock();
+        throwWorkerFailure();
+      }
       StepChunk chunk = std::move(*job.parsed[c]);
       job.parsed[c].reset();
       ++job.taken;
@@ -282,6 +310,9 @@ std::vector<ImportOutcome> RunDatabase::importFiles(const std::vector<std::files
       stopWorkers();
     }
   }
+  // A worker's exception that the writer met inside a file's write (reported there as that
+  // file's failure) is thrown here all the same.
+  if (workerFailure.failed()) throwWorkerFailure();
   return outcomes;
 }
 

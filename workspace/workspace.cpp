@@ -663,7 +663,8 @@ Result<analysis::SweepResult> Workspace::loadSweep(std::int64_t sweepId) {
       list.push_back(json::parse(c.metricsJson));
     doc["cells"] = std::move(list);
   } catch (const json::exception& e) {
-    return failure("sweep " + std::to_string(sweepId) + ": stored JSON is malformed: " + e.what());
+    return failure("sweep " + std::to_string(sweepId) +
+                   ": stored JSON is malformed: " + plainJsonError(e));
   }
   auto result = analysis::sweepFromJson(doc);
   if (!result) return failure("sweep " + std::to_string(sweepId) + ": " + result.errorText());

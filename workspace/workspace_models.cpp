@@ -77,7 +77,8 @@ Result<TrainOutcome> Workspace::trainSweepCell(std::int64_t sweepId, std::size_t
   try {
     configuration = json::parse(info->configurationJson);
   } catch (const json::exception& e) {
-    return failure("sweep " + std::to_string(sweepId) + ": stored JSON is malformed: " + e.what());
+    return failure("sweep " + std::to_string(sweepId) +
+                   ": stored JSON is malformed: " + plainJsonError(e));
   }
   if (!sweep->cells[cellIndex].ok) {
     return failure("cell " + std::to_string(cellIndex) + " of sweep " + std::to_string(sweepId) +

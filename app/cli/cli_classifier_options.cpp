@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include "base/text_rules.h"
+
 namespace tactile::cli {
 
 using namespace tactile::analysis;
@@ -35,26 +37,29 @@ void addClassifierOptions(CLI::App* cmd, ClassifierArgs& a, bool withMethodAndFo
 ClassifierOptions toClassifierOptions(const ClassifierArgs& a) {
   ClassifierOptions o;
   const auto method = parseClassifierMethod(a.method);
-  if (!method) throw UsageError("--method must be gmm or gaussian, got '" + a.method + "'");
+  if (!method) throw UsageError("--method must be gmm or gaussian, got " + quotedInput(a.method));
   o.method = *method;
   const auto form = parseCovarianceForm(a.cov);
   if (!form)
-    throw UsageError("--cov must be nodal-full, nodal-diag, grand-full or grand-diag, got '" +
-                     a.cov + "'");
+    throw UsageError("--cov must be nodal-full, nodal-diag, grand-full or grand-diag, got " +
+                     quotedInput(a.cov));
   const auto reg = parseRegularization(a.reg);
-  if (!reg) throw UsageError("--reg must be floor or add, got '" + a.reg + "'");
+  if (!reg) throw UsageError("--reg must be floor or add, got " + quotedInput(a.reg));
   const auto init = parseGmmInit(a.init);
-  if (!init) throw UsageError("--init must be kmeans++ or random-from-data, got '" + a.init + "'");
+  if (!init)
+    throw UsageError("--init must be kmeans++ or random-from-data, got " + quotedInput(a.init));
   const auto rule = parseConvergenceRule(a.tolRule);
-  if (!rule) throw UsageError("--tol-rule must be relative or absolute, got '" + a.tolRule + "'");
+  if (!rule)
+    throw UsageError("--tol-rule must be relative or absolute, got " + quotedInput(a.tolRule));
   const auto priors = parsePriorMode(a.priors);
-  if (!priors) throw UsageError("--priors must be equal or empirical, got '" + a.priors + "'");
-  if (a.order < 1 || a.order > 4096) throw UsageError("--order must be between 1 and 4096");
-  if (!(a.floor >= 0.0) || !std::isfinite(a.floor)) throw UsageError("--floor must be >= 0");
+  if (!priors)
+    throw UsageError("--priors must be equal or empirical, got " + quotedInput(a.priors));
+  checkOrderOption("--order", a.order);
+  checkFloorOption("--floor", a.floor);
   if (a.restarts < 1) throw UsageError("--restarts must be at least 1");
   if (a.threads < 0) throw UsageError("--threads must be >= 0");
   if (a.maxIterations < 1) throw UsageError("--max-iter must be at least 1");
-  if (!(a.tolerance >= 0.0)) throw UsageError("--tol must be >= 0");
+  checkNumberOption("--tol", a.tolerance, 0.0, RangeEnd::Closed, HUGE_VAL, RangeEnd::Open);
   if (a.kmeansIterations < 0) throw UsageError("--kmeans-iter must be >= 0");
   o.gmm.components = a.order;
   o.gmm.form = *form;

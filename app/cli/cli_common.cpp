@@ -2,13 +2,17 @@
 
 #include <unistd.h>
 
+#include <charconv>
+#include <cmath>
 #include <cstdio>
 #include <exception>
 #include <new>
 #include <string>
 #include <utility>
 
+#include "analysis/gmm.h"
 #include "base/text_rules.h"
+#include "run/json_text.h"
 
 namespace tactile::cli {
 namespace {
@@ -48,6 +52,52 @@ std::vector<std::string> splitNames(const std::vector<std::string>& given) {
   return names;
 }
 
+namespace {
+
+// A number for a message: shortest round-trip text ("nan", "inf", "1e-320").
+std::string optionNumber(double v) {
+  if (std::isnan(v)) return "nan";
+  if (std::isinf(v)) return v > 0 ? "inf" : "-inf";
+  char buffer[64];
+  const auto [end, ec] = std::to_chars(buffer, buffer + sizeof buffer, v);
+  return ec == std::errc() ? std::string(buffer, end) : std::to_string(v);
+}
+
+}  // namespace
+
+void checkNumberOption(std::string_view option, double value, double low, RangeEnd lowEnd,
+                       double high, RangeEnd highEnd) {
+  const bool aboveLow = lowEnd == RangeEnd::Closed ? value >= low : value > low;
+  const bool belowHigh =
+      std::isinf(high) || (highEnd == RangeEnd::Closed ? value <= high : value < high);
+  if (std::isfinite(value) && aboveLow && belowHigh) return;
+  std::string range;
+  if (std::isinf(high)) {
+    range = "a finite number " + std::string(lowEnd == RangeEnd::Closed ? ">= " : "> ") +
+            optionNumber(low);
+  } else {
+    range = "a number in " + std::string(lowEnd == RangeEnd::Closed ? "[" : "(") +
+            optionNumber(low) + ", " + optionNumber(high) +
+            (highEnd == RangeEnd::Closed ? "]" : ")");
+  }
+  throw UsageError(std::string(option) + " must be " + range + ", got " + optionNumber(value));
+}
+
+void checkOrderOption(std::string_view option, int order) {
+  if (order >= 1 && order <= analysis::kMaxModelOrder) return;
+  throw UsageError(std::string(option) + " must be between 1 and " +
+                   std::to_string(analysis::kMaxModelOrder) + ", got " + std::to_string(order));
+}
+
+void checkFloorOption(std::string_view option, double floor) {
+  checkNumberOption(option, floor, 0.0, RangeEnd::Closed, HUGE_VAL, RangeEnd::Open);
+  if (floor == 0.0 || floor >= analysis::kMinVarianceFloor) return;
+  throw UsageError(std::string(option) + " must be 0 (no floor) or at least " +
+                   optionNumber(analysis::kMinVarianceFloor) +
+                   " (the smallest normal double; a smaller floor is lost to rounding), got " +
+                   optionNumber(floor));
+}
+
 void setAction(CLI::App* command, std::function<int()> fn) {
   command->callback([fn = std::move(fn)] {
     try {
@@ -57,6 +107,11 @@ void setAction(CLI::App* command, std::function<int()> fn) {
       gExitCode = kExitUsage;
     } catch (const std::bad_alloc&) {
       printError("out of memory: the input is too large for this machine's memory");
+      gExitCode = kExitFailure;
+    } catch (const nlohmann::json::exception& e) {
+      // A JSON document of an unexpected shape that no reader caught: plain words, never the
+      // library's own text.
+      printError("unexpected JSON content: " + plainJsonError(e));
       gExitCode = kExitFailure;
     } catch (const std::exception& e) {
       printError(e.what());

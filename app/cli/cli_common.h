@@ -38,6 +38,19 @@ struct UsageError : std::runtime_error {
 // "model", "sweep" or "annotator".
 void requireValidName(const std::string& value, std::string_view option, std::string_view what);
 
+// The numeric option checks, one wording for every verb. NaN never passes any of them, nor does
+// infinity (no option of the CLI means anything at infinity). Each throws a UsageError naming the
+// option and the value given.
+enum class RangeEnd { Closed, Open };
+// `value` in the range from `low` to `high` (each end included or not; an infinite `high` means no
+// upper bound): "--holdout must be a number in (0, 1), got nan".
+void checkNumberOption(std::string_view option, double value, double low, RangeEnd lowEnd,
+                       double high, RangeEnd highEnd);
+// A model order: 1 to analysis::kMaxModelOrder.
+void checkOrderOption(std::string_view option, int order);
+// A variance floor: 0 (none) or from analysis::kMinVarianceFloor (the smallest normal double) up.
+void checkFloorOption(std::string_view option, double floor);
+
 // Names given as `A B` or `A,B` (or both), split at commas: no valid name holds one. Only for
 // names; file paths are never split.
 std::vector<std::string> splitNames(const std::vector<std::string>& given);

@@ -14,6 +14,7 @@
 #include "app/cli/cli_classifier_options.h"
 #include "app/cli/cli_common.h"
 #include "base/file_text.h"
+#include "base/text_rules.h"
 #include "run/json_text.h"
 #include "run/run_csv.h"
 
@@ -242,7 +243,7 @@ int runBenchLearn(const BenchArgs& b, const ClassifierArgs& a) {
   } else {
     for (const auto& name : b.forms) {
       const auto f = parseCovarianceForm(name);
-      if (!f) throw UsageError("--forms: unknown covariance form '" + name + "'");
+      if (!f) throw UsageError("--forms: unknown covariance form " + quotedInput(name));
       forms.push_back(*f);
     }
   }

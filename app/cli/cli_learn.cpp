@@ -24,6 +24,7 @@
 #include "app/cli/cli_classifier_options.h"
 #include "app/cli/cli_common.h"
 #include "base/file_text.h"
+#include "base/text_rules.h"
 #include "run/json_text.h"
 #include "run/label_file.h"
 #include "run/run_csv.h"
@@ -184,7 +185,9 @@ std::vector<SensorGroup> parseGroups(const std::vector<std::string>& names) {
   std::vector<SensorGroup> out;
   for (const std::string& n : names) {
     const auto g = parseSensorGroup(n);
-    if (!g) throw UsageError("unknown group '" + n + "' (expected F, FLC, L, RLC, B, RRC, R, FRC)");
+    if (!g)
+      throw UsageError("unknown group " + quotedInput(n) +
+                       " (expected F, FLC, L, RLC, B, RRC, R, FRC)");
     out.push_back(*g);
   }
   return out;
@@ -195,7 +198,7 @@ std::vector<T> parseNames(const std::vector<std::string>& names, Parse parse, co
   std::vector<T> out;
   for (const std::string& n : names) {
     const auto v = parse(n);
-    if (!v) throw UsageError(std::string("unknown ") + what + " '" + n + "'");
+    if (!v) throw UsageError(std::string("unknown ") + what + " " + quotedInput(n));
     out.push_back(*v);
   }
   return out;
@@ -400,7 +403,8 @@ analysis::EvaluationSplit parseFileSplit(const std::string& name) {
   if (name == "by-run") return analysis::EvaluationSplit::TestRuns;
   if (name == "leave-one-run-out") return analysis::EvaluationSplit::LeaveOneRunOut;
   if (name == "by-scene") return analysis::EvaluationSplit::ByScene;
-  throw UsageError("unknown --split '" + name + "' (by-run, leave-one-run-out, by-scene)");
+  throw UsageError("unknown --split " + quotedInput(name) +
+                   " (by-run, leave-one-run-out, by-scene)");
 }
 
 int runTrainDb(const TrainArgs& a, const analysis::GroupSettings& settings,
@@ -414,7 +418,8 @@ int runTrainDb(const TrainArgs& a, const analysis::GroupSettings& settings,
   }
   const auto split = workspace::parseSplitMode(a.split);
   if (!split) {
-    throw UsageError("unknown --split '" + a.split + "' (by-run, leave-one-run-out, by-scene)");
+    throw UsageError("unknown --split " + quotedInput(a.split) +
+                     " (by-run, leave-one-run-out, by-scene)");
   }
   checkOutput(a.out, {a.db});
   auto ws = openWorkspace(a.db, true);
@@ -467,9 +472,8 @@ analysis::GroupSettings trainSettings(const TrainArgs& a) {
     }
     s.decision = *decision;
     if (a.emissionWeight) {
-      if (!std::isfinite(*a.emissionWeight) || *a.emissionWeight <= 0.0) {
-        throw UsageError("--emission-weight must be a finite number > 0");
-      }
+      checkNumberOption("--emission-weight", *a.emissionWeight, 0.0, RangeEnd::Open, HUGE_VAL,
+                        RangeEnd::Open);
       s.emissionWeight = *a.emissionWeight;
     }
   }
@@ -488,7 +492,7 @@ int runTrain(const TrainArgs& a) {
     throw UsageError("--set, --train-runs and --name need --db (run files: --out names the file)");
   }
   checkOutput(a.out, joined(a.runs, a.testRuns, a.labels));
-  if (a.holdout < 0.0 || a.holdout >= 1.0) throw UsageError("--holdout must be in [0, 1)");
+  checkNumberOption("--holdout", a.holdout, 0.0, RangeEnd::Closed, 1.0, RangeEnd::Open);
   if (!a.testRuns.empty() && a.holdout > 0.0) {
     throw UsageError("give either --test-runs or --holdout, not both");
   }
@@ -608,7 +612,7 @@ int runSweepDb(const SweepArgs& a, const analysis::SweepGrid& grid) {
   request.threads = a.threads;
   const auto split = workspace::parseSplitMode(a.split);
   if (!split || *split == workspace::SplitMode::LeaveOneRunOut)
-    throw UsageError("unknown --split '" + a.split + "' for a sweep (by-run, by-scene)");
+    throw UsageError("unknown --split " + quotedInput(a.split) + " for a sweep (by-run, by-scene)");
   request.split = *split;
   auto outcome = ws->sweep(request, {}, sweepProgress(a.progress));
   if (!outcome) throw std::runtime_error(a.db + ": " + outcome.errorText());
@@ -644,16 +648,18 @@ int runSweepVerb(const SweepArgs& a) {
   grid.seeds = a.seeds;
   grid.decisions =
       parseNames<analysis::DecisionMode>(a.decisions, analysis::parseDecisionMode, "decision");
-  for (int k : grid.orders) {
-    if (k < 1) throw UsageError("--orders must be >= 1");
-  }
-  for (double f : grid.varianceFloors) {
-    if (f < 0.0) throw UsageError("--floors must be >= 0");
-  }
+  // The same checks as train's --order and --floor.
+  for (int k : grid.orders)
+    checkOrderOption("--orders", k);
+  for (double f : grid.varianceFloors)
+    checkFloorOption("--floors", f);
+  if (a.restarts < 1) throw UsageError("--restarts must be at least 1");
+  if (a.maxIterations < 1) throw UsageError("--max-iter must be at least 1");
+  checkNumberOption("--tol", a.tolerance, 0.0, RangeEnd::Closed, HUGE_VAL, RangeEnd::Open);
   const auto reg = parseRegularization(a.reg);
-  if (!reg) throw UsageError("unknown --reg '" + a.reg + "'");
+  if (!reg) throw UsageError("unknown --reg " + quotedInput(a.reg));
   const auto init = parseGmmInit(a.init);
-  if (!init) throw UsageError("unknown --init '" + a.init + "'");
+  if (!init) throw UsageError("unknown --init " + quotedInput(a.init));
   grid.regularization = *reg;
   grid.init = *init;
   grid.restarts = a.restarts;
@@ -665,7 +671,7 @@ int runSweepVerb(const SweepArgs& a) {
   if (!a.set.empty() || !a.trainRuns.empty() || !a.name.empty()) {
     throw UsageError("--set, --train-runs and --name need --db (run files: --out names the file)");
   }
-  if (a.holdout <= 0.0 || a.holdout >= 1.0) throw UsageError("--holdout must be in (0, 1)");
+  checkNumberOption("--holdout", a.holdout, 0.0, RangeEnd::Open, 1.0, RangeEnd::Open);
   checkOutput(a.out, joined(a.runs, a.testRuns, a.labels));
 
   LoadedRuns loaded, loadedTest;
@@ -674,7 +680,7 @@ int runSweepVerb(const SweepArgs& a) {
   std::vector<LabelledRun> train, test;
   const bool byScene = a.split == "by-scene";
   if (!byScene && a.split != "by-run") {
-    throw UsageError("unknown --split '" + a.split + "' for a sweep (by-run, by-scene)");
+    throw UsageError("unknown --split " + quotedInput(a.split) + " for a sweep (by-run, by-scene)");
   }
   if (byScene && !a.testRuns.empty()) {
     throw UsageError("--split by-scene scores every scene of --runs in turn; give no --test-runs");
@@ -767,7 +773,8 @@ int runReportDb(const ReportArgs& a) {
   checkReportJson(a);
   const std::string format = a.format.empty() ? "text" : a.format;
   const auto style = analysis::parseTableStyle(format);
-  if (!style) throw UsageError("unknown --format '" + format + "' (md, csv, html, text)");
+  if (!style)
+    throw UsageError("unknown --format " + quotedInput(format) + " (md, csv, html, text)");
   checkOutput(a.out, {a.db});
   auto ws = openWorkspace(a.db, false);
   auto sweep = ws->loadSweep(a.sweep);
@@ -824,23 +831,26 @@ int runReport(const ReportArgs& r) {
   const Result<std::string> read = readFileText(path);
   if (!read) throw std::runtime_error(read.errorText());
   const std::string& text = read.value();
-  json value;
-  try {
-    value = json::parse(text);
-  } catch (const json::parse_error& e) {
-    std::size_t line = 1;
-    for (std::size_t i = 0; i + 1 < e.byte && i < text.size(); ++i)
-      line += text[i] == '\n';
-    throw std::runtime_error(path + ":" + std::to_string(line) + ": invalid JSON: " + e.what());
+  // The one JSON reader: syntax errors as FILE:LINE: column C: ..., in plain words.
+  Result<json> parsed = parseJsonText(text, path);
+  if (!parsed) {
+    Error error = parsed.error();
+    error.message = "invalid JSON: " + error.message;
+    throw std::runtime_error(error.text());
   }
+  const json& value = parsed.value();
   analysis::TableStyle style = csv ? analysis::TableStyle::Csv : analysis::TableStyle::Text;
   if (!r.format.empty()) {
     const auto parsed = analysis::parseTableStyle(r.format);
-    if (!parsed) throw UsageError("unknown --format '" + r.format + "' (md, csv, html, text)");
+    if (!parsed)
+      throw UsageError("unknown --format " + quotedInput(r.format) + " (md, csv, html, text)");
     style = *parsed;
   }
   checkOutput(r.out, {r.path});
-  const std::string format = value.is_object() ? value.value("format", "") : "";
+  const std::string format =
+      value.is_object() && value.contains("format") && value["format"].is_string()
+          ? value["format"].get<std::string>()
+          : "";
   if (format == "tactile-sweep") {
     const Result<analysis::SweepResult> sweep = analysis::sweepFromJson(value);
     if (!sweep) throw std::runtime_error(path + ": " + sweep.errorText());
@@ -866,7 +876,8 @@ int runReport(const ReportArgs& r) {
       std::cout << dumpJson(json{{"file", path}, {"kind", "model"}, {"out", r.out}}) << "\n";
     return kExitOk;
   }
-  throw std::runtime_error(path + ": not a sweep or model file (format '" + format + "')");
+  throw std::runtime_error(path + ": not a sweep or model file (format " + quotedInput(format) +
+                           ")");
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -977,14 +988,17 @@ int printClassification(const ClassifyArgs& a, const analysis::RunClassification
 
 int runClassify(const ClassifyArgs& a) {
   const auto rule = analysis::parseTemporalRule(a.temporal);
-  if (!rule) throw UsageError("unknown --temporal '" + a.temporal + "' (none, count, sum, hmm)");
+  if (!rule)
+    throw UsageError("unknown --temporal " + quotedInput(a.temporal) + " (none, count, sum, hmm)");
   if (a.count < 1) throw UsageError("--count must be >= 1");
-  if (a.stay < 0.0 || a.stay > 1.0) throw UsageError("--stay must be in [0, 1]");
+  checkNumberOption("--stay", a.stay, 0.0, RangeEnd::Closed, 1.0, RangeEnd::Closed);
+  checkNumberOption("--threshold", a.threshold, 0.0, RangeEnd::Closed, HUGE_VAL, RangeEnd::Open);
   analysis::ClassifyOptions options;
   if (!a.decision.empty()) {
     const auto decision = analysis::parseDecisionMode(a.decision);
     if (!decision)
-      throw UsageError("unknown --decision '" + a.decision + "' (step, online, offline)");
+      throw UsageError("unknown --decision " + quotedInput(a.decision) +
+                       " (step, online, offline)");
     if (*rule != analysis::TemporalRule::None)
       throw UsageError("give either --decision or --temporal, not both");
     options.decision = *decision;

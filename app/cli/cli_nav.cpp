@@ -16,6 +16,8 @@
 #include "analysis/model_file.h"
 #include "app/cli/cli_common.h"
 #include "base/file_text.h"
+#include "base/text_rules.h"
+#include "base/worker_threads.h"
 #include "nav/benchmark.h"
 #include "nav/navigate.h"
 #include "run/builtin_scenes.h"
@@ -54,7 +56,7 @@ std::vector<std::uint64_t> parseSeeds(const std::string& text) {
     std::uint64_t v = 0;
     const auto [end, ec] = std::from_chars(part.data(), part.data() + part.size(), v);
     if (ec != std::errc() || end != part.data() + part.size() || part.empty())
-      throw UsageError("--seeds: '" + std::string(part) + "' is not a seed (use A-B or A,B,C)");
+      throw UsageError("--seeds: " + quotedInput(part) + " is not a seed (use A-B or A,B,C)");
     return v;
   };
   std::string_view rest = text;
@@ -188,7 +190,8 @@ int runNavigate(const NavigateArgs& a) {
   if (a.maxSteps < 1 || static_cast<std::uint64_t>(a.maxSteps) > 1'000'000)
     throw UsageError("--max-steps must be between 1 and 1000000");
   const auto source = nav::parseStatusSource(a.status);
-  if (!source) throw UsageError("--status must be model, truth or bumper, got '" + a.status + "'");
+  if (!source)
+    throw UsageError("--status must be model, truth or bumper, got " + quotedInput(a.status));
   if (a.benchmark != -1) return runBenchmark(a);
   if (a.scene.empty()) throw UsageError("give --scene (or --benchmark N)");
   if (auto problem = sim::sceneSpecError(a.scene)) throw UsageError(*problem);
@@ -258,13 +261,8 @@ int runNavigate(const NavigateArgs& a) {
       }
     }
   };
-  std::vector<std::thread> pool;
-  const unsigned threads = threadCount(a.threads, seeds.size());
-  for (unsigned t = 1; t < threads; ++t)
-    pool.emplace_back(worker);
-  worker();
-  for (std::thread& t : pool)
-    t.join();
+  // An exception in any worker (out of memory) reaches the caller after every worker stopped.
+  runWorkers(threadCount(a.threads, seeds.size()), worker);
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   for (const Row& row : rows)

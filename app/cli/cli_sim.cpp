@@ -16,6 +16,7 @@
 
 #include "app/cli/cli_common.h"
 #include "base/file_text.h"
+#include "base/text_rules.h"
 #include "run/builtin_scenes.h"
 #include "run/json_text.h"
 #include "run/run_csv.h"
@@ -115,7 +116,7 @@ std::string classTable(const TruthStats& stats) {
 // `simulate --plan training`: run i of the recipe for every i < runs, one after another (the runs
 // are short); generated scenes are written beside their runs as P_0000.scene.json.
 int runPlan(const SimulateArgs& a) {
-  if (a.plan != "training") throw UsageError("--plan must be training, got '" + a.plan + "'");
+  if (a.plan != "training") throw UsageError("--plan must be training, got " + quotedInput(a.plan));
   if (a.outDir.empty()) throw UsageError("--plan needs --out-dir");
   if (!a.scene.empty()) throw UsageError("give --scene or --plan, not both");
   if (a.runs <= 0 || static_cast<std::uint64_t>(a.runs) > kMaxRunsPerBatch) {
@@ -201,7 +202,7 @@ int runReplay(const SimulateArgs& a) {
   if (a.out.empty() || !a.outDir.empty() || a.runs != 1) {
     throw UsageError("--commands records one run: give --out FILE (not --out-dir or --runs)");
   }
-  if (!(a.dt > 0.0 && a.dt <= 1.0)) throw UsageError("--dt must be in (0, 1] seconds");
+  checkNumberOption("--dt", a.dt, 0.0, RangeEnd::Open, 1.0, RangeEnd::Closed);
   RunCsvResult source = readRunCsv(a.commands);
   if (!source) throw std::runtime_error(source.errorText());
   const RunData& commands = source.value();
@@ -249,7 +250,8 @@ int runSimulate(const SimulateArgs& a) {
   std::optional<FollowSide> side;
   if (!a.followSide.empty()) {
     side = parseFollowSide(a.followSide);
-    if (!side) throw UsageError("--follow-side must be left or right, got '" + a.followSide + "'");
+    if (!side)
+      throw UsageError("--follow-side must be left or right, got " + quotedInput(a.followSide));
     if (!a.commands.empty() || !a.plan.empty())
       throw UsageError(
           "--follow-side goes with --driver wall-follow or bug, not with --commands "
@@ -273,9 +275,9 @@ int runSimulate(const SimulateArgs& a) {
   if (a.runs <= 0 || static_cast<std::uint64_t>(a.runs) > kMaxRunsPerBatch) {
     throw UsageError("--runs must be between 1 and " + std::to_string(kMaxRunsPerBatch));
   }
-  if (!(a.dt > 0.0 && a.dt <= 1.0)) throw UsageError("--dt must be in (0, 1] seconds");
+  checkNumberOption("--dt", a.dt, 0.0, RangeEnd::Open, 1.0, RangeEnd::Closed);
   if (a.driver != "wall-follow" && a.driver != "random" && a.driver != "bug") {
-    throw UsageError("--driver must be wall-follow, bug or random, got '" + a.driver + "'");
+    throw UsageError("--driver must be wall-follow, bug or random, got " + quotedInput(a.driver));
   }
   const bool batch = !a.outDir.empty();
   if (batch == !a.out.empty()) throw UsageError("give exactly one of --out FILE or --out-dir DIR");
@@ -283,8 +285,8 @@ int runSimulate(const SimulateArgs& a) {
   if (!batch && a.prefix != "run") throw UsageError("--prefix needs --out-dir");
   if (a.prefix.empty() || a.prefix.find_first_of("/\\,\r\n") != std::string::npos ||
       a.prefix == "." || a.prefix == "..") {
-    throw UsageError("--prefix must be a non-empty file-name part without '/', '\\' or ',', got '" +
-                     a.prefix + "'");
+    throw UsageError("--prefix must be a non-empty file-name part without '/', '\\' or ',', got " +
+                     quotedInput(a.prefix));
   }
 
   std::shared_ptr<const World> world = loadWorld(a.scene);

@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include <atomic>
+#include <new>
 #include <thread>
 #include <vector>
 
@@ -46,6 +47,25 @@ TEST(ParallelFor, CallersOnSeveralThreadsAtOnceAllFinish) {
   for (auto& t : callers)
     t.join();
   EXPECT_EQ(total.load(), 4L * 200 * (15 * 16 / 2));
+}
+
+// Two parts that each wait for the other to start run on two threads, so one of them surely runs
+// on a pool thread; that one throws. The exception reaches the caller (a pool thread must never let
+// it out: that ends the process), and the pool works on afterwards.
+TEST(ParallelFor, AnExceptionInAPartOnAPoolThreadReachesTheCaller) {
+  const std::thread::id caller = std::this_thread::get_id();
+  std::atomic<int> started{0};
+  const auto part = [&](int) {
+    ++started;
+    while (started.load() < 2)
+      std::this_thread::yield();
+    if (std::this_thread::get_id() != caller) throw std::bad_alloc();
+  };
+  EXPECT_THROW(parallelFor(2, 2, part), std::bad_alloc);
+  EXPECT_EQ(started.load(), 2);
+  std::atomic<int> runs{0};
+  parallelFor(8, 2, [&](int) { ++runs; });
+  EXPECT_EQ(runs.load(), 8);
 }
 
 }  // namespace

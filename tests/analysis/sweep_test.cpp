@@ -5,6 +5,7 @@
 #include <array>
 #include <atomic>
 #include <cmath>
+#include <new>
 
 #include "analysis/report.h"
 #include "analysis/sweep.h"
@@ -222,6 +223,24 @@ TEST(Sweep, ResultsDoNotDependOnThreadCount) {
     EXPECT_EQ(x.iterations, y.iterations);
     EXPECT_EQ(x.meanLogLikelihood, y.meanLogLikelihood);  // bit for bit
   }
+}
+
+// An exception in a worker thread (out of memory, here thrown by the progress callback the
+// workers call after the first call, which the calling thread makes before they start) reaches the
+// caller instead of ending the process.
+TEST(Sweep, AnExceptionInAWorkerReachesTheCaller) {
+  const Fixture& f = fixture();
+  std::vector<LabelledRun> train, test;
+  splitLabelledRuns(f.runs, 0.3, train, test);
+  SweepOptions two;
+  two.threads = 2;
+  std::atomic<int> calls{0};
+  const ProgressFn progress = [&](std::size_t, std::size_t) -> bool {
+    if (calls++ == 0) return true;
+    throw std::bad_alloc();
+  };
+  EXPECT_THROW((void)runSweep(train, test, smallGrid(), two, progress), std::bad_alloc);
+  EXPECT_GE(calls.load(), 2);
 }
 
 TEST(Sweep, CellsRecordMetricsAndTimes) {

@@ -81,6 +81,23 @@ TEST(ShownText, EscapesWhatCannotBePrinted) {
   EXPECT_EQ(shownText("abcdef", 3), "abc...");
 }
 
+// The one way readers quote input: at most kMaxQuotedBytes of it, so a 10 MB line gives a short
+// message; a cut never splits a UTF-8 character.
+TEST(QuotedInput, CutsLongInput) {
+  EXPECT_EQ(quotedInput("n3"), "'n3'");
+  EXPECT_EQ(quotedInput("0\f"), "'0\\x0C'");
+  const std::string big(10'000'000, 'a');
+  const std::string q = quotedInput(big);
+  EXPECT_EQ(q, "'" + std::string(kMaxQuotedBytes, 'a') + "...'");
+  std::string accents;
+  for (int i = 0; i < 150; ++i)
+    accents += "\xC3\xA9";
+  const std::string cut = quotedInput(accents);
+  EXPECT_TRUE(isValidUtf8(cut)) << cut;
+  EXPECT_EQ(cut.find("\\x"), std::string::npos) << cut;
+  EXPECT_LE(cut.size(), kMaxQuotedBytes + 5);
+}
+
 TEST(ValidUtf8, ReplacesEachBadByte) {
   EXPECT_EQ(validUtf8("caf\xE9!"), "caf\xEF\xBF\xBD!");
   EXPECT_EQ(validUtf8("ok \xC3\xA9"), "ok \xC3\xA9");

@@ -10,6 +10,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -255,6 +256,82 @@ TEST(Fuzz, RunFiles) {
   }
   EXPECT_GT(accepted, kRunMutants / 50);
   EXPECT_LT(accepted, kRunMutants / 2);
+}
+
+// Header and metadata shapes: many columns and many metadata lines (around the limits), with a
+// repeat put first, last or anywhere. Every file is refused or read in full, at once (one look-up
+// per column and key), with the file and line named, and chunked parsing agrees.
+TEST(Fuzz, HeaderAndMetadataShapes) {
+  const std::string seed = runSeeds().front();
+  const std::size_t headerAt = seed.find("\nstep,") + 1;
+  const std::string metadata = seed.substr(0, headerAt);
+  const std::size_t headerEnd = seed.find('\n', headerAt);
+  const std::string header = seed.substr(headerAt, headerEnd - headerAt);
+  const std::string rows = seed.substr(headerEnd);
+  const std::size_t baseColumns =
+      static_cast<std::size_t>(std::count(header.begin(), header.end(), ',')) + 1;
+  Rng rng(7);
+  int refusedForSize = 0;
+  int refusedForRepeat = 0;
+  for (int i = 0; i < 60; ++i) {
+    SCOPED_TRACE(i);
+    // Columns: a few, up to the limit, or past it.
+    const std::size_t extras =
+        pick(rng, 3) == 0 ? pick(rng, 20) : kMaxRunColumns - baseColumns - 5 + pick(rng, 12);
+    std::vector<std::string> names;
+    std::size_t at = 0;
+    for (std::size_t start = 0;; start = at + 1) {
+      at = header.find(',', start);
+      names.push_back(
+          header.substr(start, at == std::string::npos ? std::string::npos : at - start));
+      if (at == std::string::npos) break;
+    }
+    for (std::size_t e = 0; e < extras; ++e)
+      names.push_back("x_" + std::to_string(e));
+    // Metadata: the seed's lines, then none, a few or about the limit more.
+    std::string head = metadata;
+    const std::size_t keys =
+        pick(rng, 3) == 0 ? kMaxRunMetadataLines - 8 + pick(rng, 12) : pick(rng, 5);
+    for (std::size_t k = 0; k < keys; ++k)
+      head += "# key" + std::to_string(k) + ": v\n";
+    const int repeat = static_cast<int>(pick(rng, 4));  // 0: none, 1: a column, 2: a key, 3: both
+    if (repeat & 1) {
+      const std::size_t from = pick(rng, 2) == 0 ? 0 : pick(rng, names.size());
+      const std::string copy = names[from];
+      if (pick(rng, 2) == 0) {
+        names.push_back(copy);
+      } else {
+        names.insert(names.begin() + static_cast<std::ptrdiff_t>(pick(rng, names.size() + 1)),
+                     copy);
+      }
+    }
+    if (repeat & 2) head += "# scene: again\n";
+    std::string line;
+    for (const std::string& n : names)
+      line += (line.empty() ? "" : ",") + n;
+    const std::string text = head + line + rows;
+    const RunCsvResult result = parseRunCsv(text, "m.csv");
+    const RunCsvResult chunked = parseRunCsvParallel(text, "m.csv", 2, 64 + pick(rng, 300));
+    ASSERT_EQ(result.ok(), chunked.ok());
+    if (result.ok()) continue;  // a few extras and no repeat: the rows lack the extra fields
+    EXPECT_EQ(result.errorText(), chunked.errorText());
+    expectNamedError(result.error(), "m.csv", true, text.substr(0, 400));
+    const std::string& m = result.error().message;
+    if (m.find("too many") != std::string::npos) ++refusedForSize;
+    if (m.find("duplicate column") != std::string::npos ||
+        m.find("repeated metadata key") != std::string::npos)
+      ++refusedForRepeat;
+    // Past the limit the header is refused for its size, unless a repeat comes first.
+    if (names.size() > kMaxRunColumns && m.find("metadata") == std::string::npos) {
+      if (m.find("duplicate column") != std::string::npos) {
+        EXPECT_LE(result.error().column, kMaxRunColumns) << m;
+      } else {
+        EXPECT_NE(m.find("too many columns"), std::string::npos) << m;
+      }
+    }
+  }
+  EXPECT_GT(refusedForSize, 0);
+  EXPECT_GT(refusedForRepeat, 0);
 }
 
 TEST(Fuzz, LabelFiles) {

@@ -156,9 +156,74 @@ TEST(LabelFile, MalformedJsonProvenanceIsAnError) {
       R"({"runs":[{"name":"r","steps":1,"checksum":"0123456789abcdef"},{"name":"s","steps":"1","checksum":"0123456789abcdef"}],"segments":[]})",
       "l.json");
   EXPECT_EQ(r.errorText(),
-            "l.json: runs entry 2: expected {\"name\": text, \"steps\": integer, "
-            "\"checksum\": text}");
+            "l.json:1: runs entry 2: \"steps\" holds a string where an integer is needed");
   EXPECT_EQ(r.error().file, "l.json");
+  const auto missing =
+      parseLabelJson(R"({"runs":[{"name":"r","steps":1}],"segments":[]})", "l.json");
+  EXPECT_EQ(missing.errorText(),
+            "l.json:1: runs entry 1: expected {\"name\": text, \"steps\": integer, "
+            "\"checksum\": text}");
+}
+
+// One rule for CSV and JSON label files: a repeated key (CSV: column), a key the format does not
+// have (CSV: an unknown column) and a step written -0 are refused, each at the file and line.
+TEST(LabelFileHostile, JsonRefusesWhatCsvRefuses) {
+  const std::string head = "{\"format\": \"tactile-labels\", \"version\": 1,\n \"segments\": [\n";
+  const std::string good =
+      R"(  {"run": "r", "group": "F", "first_step": 0, "last_step": 3, "class": "Wall"})";
+  ASSERT_TRUE(parseLabelJson(head + good + "\n]}\n", "l.json").ok());
+
+  auto r = parseLabelJson(head + good + ",\n" +
+                              R"(  {"run": "r", "group": "F", "first_step": 4, "last_step": 5,)" +
+                              "\n   \"class\": \"Wall\", \"class\": \"Corner\"}\n]}\n",
+                          "l.json");
+  ASSERT_FALSE(r.ok());
+  EXPECT_EQ(r.error().line, 5u) << r.errorText();
+  EXPECT_NE(r.errorText().find("duplicate key 'class' (first on line 5)"), std::string::npos)
+      << r.errorText();
+
+  r = parseLabelJson(head + good + ",\n" +
+                         R"(  {"run": "r", "group": "F", "first_step": 4, "last_step": 5,)" +
+                         "\n   \"class\": \"Wall\", \"colour\": \"red\"}\n]}\n",
+                     "l.json");
+  ASSERT_FALSE(r.ok());
+  EXPECT_EQ(r.error().line, 5u) << r.errorText();
+  EXPECT_NE(r.errorText().find("segment 2: unknown key 'colour'"), std::string::npos)
+      << r.errorText();
+
+  r = parseLabelJson(head + good + ",\n" +
+                         R"(  {"run": "r", "group": "F", "first_step": -0, "last_step": 5,)" +
+                         "\n   \"class\": \"Wall\"}\n]}\n",
+                     "l.json");
+  ASSERT_FALSE(r.ok());
+  EXPECT_EQ(r.error().line, 4u) << r.errorText();
+  EXPECT_NE(r.errorText().find("-0"), std::string::npos) << r.errorText();
+
+  r = parseLabelJson("{\"segments\": [],\n \"extra\": 1}", "l.json");
+  ASSERT_FALSE(r.ok());
+  EXPECT_EQ(r.error().line, 2u) << r.errorText();
+  EXPECT_NE(r.errorText().find("unknown key 'extra'"), std::string::npos) << r.errorText();
+
+  r = parseLabelJson("{\"segments\": [],\n \"segments\": []}", "l.json");
+  ASSERT_FALSE(r.ok());
+  EXPECT_EQ(r.error().line, 2u) << r.errorText();
+
+  // The CSV reader: the same three.
+  EXPECT_FALSE(parseLabelCsv("run,group,first_step,last_step,class,class\n", "l.csv").ok());
+  EXPECT_FALSE(parseLabelCsv("run,group,first_step,last_step,class,colour\n", "l.csv").ok());
+  EXPECT_FALSE(
+      parseLabelCsv("run,group,first_step,last_step,class\nr,F,-0,3,Wall\n", "l.csv").ok());
+}
+
+// A field of the wrong type says what it holds and what is needed.
+TEST(LabelFileHostile, JsonFieldOfTheWrongTypeSaysSo) {
+  const auto r = parseLabelJson(
+      "[\n{\"run\": \"r\", \"group\": \"F\", \"first_step\": \"3\", \"last_step\": 5, "
+      "\"class\": \"Wall\"}]",
+      "l.json");
+  ASSERT_FALSE(r.ok());
+  EXPECT_EQ(r.errorText(),
+            "l.json:2: segment 1: \"first_step\" holds a string where an integer is needed");
 }
 
 // Regression: a JSON first_step of 2^64-1 was read as -1 and reported as "'-1' is not a step".

@@ -1,5 +1,6 @@
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <filesystem>
@@ -223,6 +224,76 @@ TEST(Errors, DuplicateColumn) {
   // step..blocked are 7 columns, then n0 s0 n1 s1 n2 s2 n3 s3: s3 is the 15th, s2 the 13th.
   EXPECT_EQ(e.column, 15u);
   EXPECT_NE(e.message.find("first at position 13"), std::string::npos);
+}
+
+// The duplicate check covers the first and the last column too: a header that starts with `x`
+// and repeats it at the end, and the same with an `x_` column.
+TEST(Errors, DuplicateOfTheFirstColumnAtTheEnd) {
+  const std::string text = validText();
+  std::string header = lineAt(text, kHeader);  // step,x,y,...
+  header.replace(0, header.find(",y,"), "x,step");
+  const std::size_t columns =
+      static_cast<std::size_t>(std::count(header.begin(), header.end(), ',')) + 1;
+  const Error e =
+      expectError(replaceLine(text, kHeader, header + ",x"), kHeader, "x", "duplicate column 'x'");
+  EXPECT_EQ(e.column, columns + 1);
+  EXPECT_NE(e.message.find("first at position 1)"), std::string::npos) << e.text();
+
+  const Error extra =
+      expectError(replaceLine(text, kHeader, "x_a," + lineAt(text, kHeader) + ",x_a"), kHeader,
+                  "x_a", "duplicate column 'x_a'");
+  EXPECT_EQ(extra.column, columns + 2);
+  EXPECT_NE(extra.message.find("first at position 1)"), std::string::npos) << extra.text();
+}
+
+// Many `x_` columns are checked for repeats with one look-up each; past kMaxRunColumns the header
+// is refused at the column that goes past it. (200,000 columns took over a minute when every
+// column was compared with every other; now the check stops at the limit.)
+TEST(Errors, TooManyColumns) {
+  const std::string text = validText();
+  std::string header = lineAt(text, kHeader);
+  const std::size_t base =
+      static_cast<std::size_t>(std::count(header.begin(), header.end(), ',')) + 1;
+  std::string many = header;
+  for (std::size_t i = 0; i < 200'000; ++i)
+    many += ",x_" + std::to_string(i);
+  const RunCsvResult r = parseRunCsv(replaceLine(text, kHeader, many), "bad.csv");
+  ASSERT_FALSE(r.ok());
+  EXPECT_EQ(r.error().line, kHeader);
+  EXPECT_NE(r.error().message.find("too many columns"), std::string::npos) << r.errorText();
+  EXPECT_NE(r.error().message.find("at most " + std::to_string(kMaxRunColumns)), std::string::npos);
+  EXPECT_NE(r.error().message.find("position " + std::to_string(kMaxRunColumns + 1)),
+            std::string::npos)
+      << r.errorText();
+
+  // Up to the limit is fine, and a repeat among them is found and named.
+  std::string full = header;
+  for (std::size_t i = base; i < kMaxRunColumns; ++i)
+    full += ",x_" + std::to_string(i);
+  const std::string repeated = full.substr(0, full.rfind(',')) + ",x_" + std::to_string(base);
+  const Error e =
+      expectError(replaceLine(text, kHeader, repeated), kHeader, "*", "duplicate column");
+  EXPECT_EQ(e.column, kMaxRunColumns);
+  EXPECT_NE(e.message.find("first at position " + std::to_string(base + 1)), std::string::npos)
+      << e.text();
+}
+
+TEST(Errors, TooManyMetadataLines) {
+  std::string head;
+  for (std::size_t i = 0; i < 200'000; ++i)
+    head += "# key" + std::to_string(i) + ": value\n";
+  const RunCsvResult r = parseRunCsv(head + validText(), "bad.csv");
+  ASSERT_FALSE(r.ok());
+  EXPECT_EQ(r.error().line, kMaxRunMetadataLines + 1);
+  EXPECT_NE(r.error().message.find("too many metadata lines"), std::string::npos) << r.errorText();
+
+  // Below the limit a repeat is found among thousands and names the first line.
+  std::string some;
+  for (std::size_t i = 0; i < 5'000; ++i)
+    some += "# key" + std::to_string(i) + ": value\n";
+  const Error e = expectError(some + "# key0: again\n" + validText(), 5'001, "",
+                              "repeated metadata key 'key0'");
+  EXPECT_NE(e.message.find("first given on line 1)"), std::string::npos) << e.text();
 }
 
 TEST(Errors, UnknownColumn) {

@@ -1,5 +1,12 @@
 #include <gtest/gtest.h>
 
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <vector>
+
 #include "run/builtin_scenes.h"
 #include "sim/scene.h"
 #include "sim/scene_source.h"
@@ -216,6 +223,95 @@ TEST(SceneHostile, NumberOverflowNamesFileAndLine) {
   EXPECT_EQ(r.error().file, "big.json");
   EXPECT_EQ(r.error().line, 2u) << r.errorText();
   EXPECT_NE(r.errorText().find("overflow"), std::string::npos) << r.errorText();
+}
+
+// A scene text with one obstacle per line, the start on its own line, for line numbers.
+std::string sceneLines(const std::vector<std::string>& obstacles, const std::string& start) {
+  std::string s = "{\"name\": \"t\",\n \"bounds\": [0, 0, 1000, 1000],\n \"obstacles\": [\n";
+  for (std::size_t i = 0; i < obstacles.size(); ++i)
+    s += "  {\"polygon\": " + obstacles[i] + (i + 1 < obstacles.size() ? "},\n" : "}\n");
+  s += " ],\n \"start\": " + start + ",\n \"goal\": {\"x\": 900, \"y\": 500}}\n";
+  return s;
+}
+
+Result<Scene> loadSceneText(const std::string& text, const std::string& name) {
+  const std::filesystem::path path =
+      std::filesystem::temp_directory_path() /
+      ("tactile_scene_test_" + std::to_string(::getpid()) + "_" + name);
+  std::ofstream(path) << text;
+  Result<Scene> r = loadScene(path.string());
+  std::filesystem::remove(path);
+  return r;
+}
+
+// Regression: a start wholly inside a solid box touched none of its edges and was accepted; the
+// robot then drove inside the box with domes pressed while truth said NoContact.
+TEST(SceneSource, StartInsideAnObstacleIsRefusedNamingItAndItsLine) {
+  const std::string box = "[[50, 50], [700, 50], [700, 950], [50, 950]]";
+  const std::string small = "[[800, 800], [850, 800], [850, 850]]";
+  const std::string text = sceneLines({small, box}, "{\"x\": 200, \"y\": 500, \"theta\": 0}");
+  const Result<Scene> r = loadSceneText(text, "inside.json");
+  ASSERT_FALSE(r.ok());
+  EXPECT_EQ(r.error().line, 7u) << r.errorText();  // the line of "start"
+  EXPECT_NE(r.errorText().find("inside obstacle 1 (line 5)"), std::string::npos) << r.errorText();
+  EXPECT_NE(r.errorText().find("inside.json:7: start:"), std::string::npos) << r.errorText();
+
+  // The edge-overlap case names the obstacle too.
+  const std::string post = "[[250, 450], [300, 450], [300, 550], [250, 550]]";
+  const Result<Scene> o =
+      loadSceneText(sceneLines({small, post}, "{\"x\": 200, \"y\": 500, \"theta\": 0}"), "o.json");
+  ASSERT_FALSE(o.ok());
+  EXPECT_NE(o.errorText().find("overlaps obstacle 1 (line 5)"), std::string::npos) << o.errorText();
+  // And the walls are named as such.
+  const Result<Scene> w =
+      loadSceneText(sceneLines({small}, "{\"x\": 10, \"y\": 500, \"theta\": 0}"), "w.json");
+  ASSERT_FALSE(w.ok());
+  EXPECT_NE(w.errorText().find("overlaps the bounds"), std::string::npos) << w.errorText();
+  // The same scene with the robot beside the box loads.
+  EXPECT_TRUE(
+      loadSceneText(sceneLines({small, box}, "{\"x\": 800, \"y\": 500, \"theta\": 0}"), "ok.json")
+          .ok());
+}
+
+// Regression: bounds of +-1.7e308 were accepted (the width overflowed to infinity).
+TEST(SceneHostile, CoordinatesBeyondTheDocumentedRangeAreRefusedAtTheirLine) {
+  const std::string text =
+      "{\"name\": \"s\",\n \"bounds\": [-1.7e308, -1.7e308,\n 1.7e308, 1.7e308],\n"
+      " \"obstacles\": [],\n \"start\": {\"x\": 1, \"y\": 1, \"theta\": 0},\n"
+      " \"goal\": {\"x\": 2, \"y\": 2}}\n";
+  const auto r = parseSceneJson(text, "huge.json");
+  ASSERT_FALSE(r.ok());
+  EXPECT_EQ(r.error().line, 2u) << r.errorText();
+  EXPECT_NE(r.errorText().find("bounds[0]"), std::string::npos) << r.errorText();
+  EXPECT_NE(r.errorText().find("within +-10000000"), std::string::npos) << r.errorText();
+  const std::string vertex =
+      "{\"name\": \"s\",\n \"bounds\": [0, 0, 100, 100],\n \"obstacles\": [\n"
+      "  {\"polygon\": [[1, 1], [2, 1],\n [2, 2e9]]}],\n \"start\": {\"x\": 50, \"y\": 50, "
+      "\"theta\": 0},\n"
+      " \"goal\": {\"x\": 60, \"y\": 60}}\n";
+  const auto v = parseSceneJson(vertex, "v.json");
+  ASSERT_FALSE(v.ok());
+  EXPECT_EQ(v.error().line, 5u) << v.errorText();
+  EXPECT_NE(v.errorText().find("obstacle 0 vertex 2 y"), std::string::npos) << v.errorText();
+  // The limit itself is in range; so is every coordinate of a scene built in memory.
+  Scene s;
+  s.name = "s";
+  s.bounds = {-kMaxSceneCoordinate, -kMaxSceneCoordinate, kMaxSceneCoordinate, kMaxSceneCoordinate};
+  s.start = {0, 0, 0};
+  s.goal = Vec2(1000, 0);
+  EXPECT_TRUE(validateSceneGeometry(s).ok());
+  s.bounds.xmax = 1.7e308;
+  EXPECT_FALSE(validateSceneGeometry(s).ok());
+}
+
+// A scene that is not the product's own: the error says where.
+TEST(SceneHostile, SchemaErrorsNameTheLine) {
+  const std::string text =
+      "{\"name\": \"s\",\n \"bounds\": [0, 0, 100, 100],\n \"obstacles\": [],\n"
+      " \"start\": {\"x\": 1, \"y\": \"one\", \"theta\": 0},\n \"goal\": {\"x\": 2, \"y\": 2}}\n";
+  const auto r = parseSceneJson(text, "s.json");
+  ASSERT_FALSE(r.ok());
+  EXPECT_EQ(r.errorText(), "s.json:4: start.y must be a number");
 }
 
 }  // namespace
