@@ -361,4 +361,61 @@ void splitLabelledRuns(const std::vector<LabelledRun>& runs, double holdoutFract
   }
 }
 
+nlohmann::json groupReportJson(const GroupJobReport& r, const GroupModel* m) {
+  using nlohmann::json;
+  const auto optionalJson = [](const std::optional<double>& v) {
+    return v ? json(*v) : json(nullptr);
+  };
+  json gj{{"group", std::string(groupInfo(r.group).shortName)},
+          {"trained", r.trained},
+          {"samples_train", r.samplesTrain},
+          {"warnings", r.warnings}};
+  if (!r.trained || m == nullptr) {
+    gj["samples_test"] = 0;
+    gj["skipped"] = r.skippedBecause;
+    return gj;
+  }
+  const ModelEvaluation& e = m->evaluation;
+  // No test rows: nothing was scored, which is not an accuracy of 0.
+  gj["samples_test"] = e.samplesTest();
+  gj["decision"] = decisionModeName(m->decision);
+  gj["accuracy"] = optionalJson(e.accuracy(m->decision));
+  gj["balanced_accuracy"] = optionalJson(e.balancedAccuracy(m->decision));
+  json by = json::object();
+  for (DecisionMode mode : kDecisionModes)
+    by[std::string(decisionModeName(mode))] = optionalJson(e.balancedAccuracy(mode));
+  gj["balanced_accuracy_by_decision"] = std::move(by);
+  gj["classes"] = m->classifier.classNames();
+  gj["fit_s"] = e.fitSeconds;
+  gj["mean_loglik"] = optionalJson(e.meanLogLikelihood);
+  gj["neg_inf_rows"] = e.negInfRows;
+  int dropped = 0;
+  for (const ClassFitRecord& f : e.fit)
+    dropped += f.droppedComponents;
+  gj["dropped_components"] = dropped;
+  if (!e.scenes.empty()) {
+    json scenes = json::array();
+    for (const SceneScore& sc : e.scenes) {
+      json byScene = json::object();
+      for (DecisionMode mode : kDecisionModes) {
+        const ConfusionMatrix& c = sc.byDecision[decisionIndex(mode)];
+        byScene[std::string(decisionModeName(mode))] =
+            c.total() > 0 ? json(computeMetrics(c).balancedAccuracy) : json(nullptr);
+      }
+      const std::size_t n = sc.byDecision[0].total();
+      scenes.push_back({{"scene", sc.scene},
+                        {"samples_test", n},
+                        {"balanced_accuracy", byScene[std::string(decisionModeName(m->decision))]},
+                        {"balanced_accuracy_by_decision", std::move(byScene)}});
+    }
+    gj["scenes"] = std::move(scenes);
+    json means = json::object();
+    for (DecisionMode mode : kDecisionModes)
+      means[std::string(decisionModeName(mode))] =
+          optionalJson(meanSceneBalancedAccuracy(e.scenes, mode));
+    gj["scene_mean_balanced_accuracy"] = std::move(means);
+  }
+  return gj;
+}
+
 }  // namespace tactile::analysis

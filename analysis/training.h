@@ -174,6 +174,13 @@ struct TrainJobOutcome {
 // where no group could be trained (naming each group's reason).
 Result<TrainJobOutcome> trainAndEvaluate(const TrainJob& job, const ProgressFn& progress = {});
 
+// One group's entry of a training summary (`tactile train --json`, the Python module's
+// `train(...).report`): group, trained, sample counts, the default decision's scores and every
+// decision's balanced accuracy, classes, fit time, held-out log-likelihood, dropped components and
+// per-scene scores; for a group not trained, why. `model` is the bundle's model of the group (null
+// when not trained).
+nlohmann::json groupReportJson(const GroupJobReport& report, const GroupModel* model);
+
 // Splits each run's labelled steps in time: the first (1 - holdout) of its steps for training,
 // the rest for testing (a random row split would leak neighbouring, nearly identical steps).
 void splitLabelledRuns(const std::vector<LabelledRun>& runs, double holdoutFraction,

@@ -704,4 +704,18 @@ Result<Workspace::Classified> Workspace::classify(std::string_view modelName,
   return out;
 }
 
+nlohmann::json trainReportJson(const TrainOutcome& outcome, const TrainRequest& request) {
+  nlohmann::json groups = nlohmann::json::array();
+  for (const GroupTrainReport& r : outcome.groups) {
+    const analysis::GroupJobReport job{r.group, r.trained, r.skippedBecause, r.samplesTrain,
+                                       r.warnings};
+    groups.push_back(analysis::groupReportJson(job, outcome.bundle.find(r.group)));
+  }
+  return nlohmann::json{
+      {"model", outcome.modelName},          {"id", outcome.modelId},
+      {"label_set", request.labelSet},       {"train_runs", outcome.trainRuns},
+      {"test_runs", outcome.testRuns},       {"split", std::string(splitModeName(request.split))},
+      {"evaluated_on", outcome.evaluatedOn}, {"groups", std::move(groups)}};
+}
+
 }  // namespace tactile::workspace

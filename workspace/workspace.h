@@ -95,6 +95,11 @@ struct TrainOutcome {
   nlohmann::json provenance;          // as stored with the model
 };
 
+// The summary `tactile train --db ... --json` prints and the Python module's `train(...).report`:
+// {"model","id","label_set","train_runs","test_runs","split","evaluated_on","groups":[...]} with
+// one analysis::groupReportJson entry per requested group.
+nlohmann::json trainReportJson(const TrainOutcome& outcome, const TrainRequest& request);
+
 struct SweepRequest {
   std::string labelSet;
   std::vector<std::string> trainRuns;

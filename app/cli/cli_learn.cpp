@@ -276,70 +276,11 @@ std::vector<std::string> joined(std::vector<std::string> a, const std::vector<st
   return a;
 }
 
-json optionalJson(const std::optional<double>& v) {
-  return v ? json(*v) : json(nullptr);
-}
-
 std::string percentText(const std::optional<double>& v) {
   if (!v) return "  n/a ";
   char buffer[32];
   std::snprintf(buffer, sizeof buffer, "%5.1f%%", 100.0 * *v);
   return buffer;
-}
-
-// One group's line of the train summary (JSON), the same for both forms.
-json groupSummary(const analysis::GroupJobReport& r, const analysis::GroupModel* m) {
-  json gj{{"group", std::string(groupInfo(r.group).shortName)},
-          {"trained", r.trained},
-          {"samples_train", r.samplesTrain},
-          {"warnings", r.warnings}};
-  if (!r.trained || m == nullptr) {
-    gj["samples_test"] = 0;
-    gj["skipped"] = r.skippedBecause;
-    return gj;
-  }
-  const analysis::ModelEvaluation& e = m->evaluation;
-  // No test rows: nothing was scored, which is not an accuracy of 0.
-  gj["samples_test"] = e.samplesTest();
-  gj["decision"] = analysis::decisionModeName(m->decision);
-  gj["accuracy"] = optionalJson(e.accuracy(m->decision));
-  gj["balanced_accuracy"] = optionalJson(e.balancedAccuracy(m->decision));
-  json by = json::object();
-  for (analysis::DecisionMode mode : analysis::kDecisionModes)
-    by[std::string(analysis::decisionModeName(mode))] = optionalJson(e.balancedAccuracy(mode));
-  gj["balanced_accuracy_by_decision"] = std::move(by);
-  gj["classes"] = m->classifier.classNames();
-  gj["fit_s"] = e.fitSeconds;
-  gj["mean_loglik"] = optionalJson(e.meanLogLikelihood);
-  gj["neg_inf_rows"] = e.negInfRows;
-  int dropped = 0;
-  for (const analysis::ClassFitRecord& f : e.fit)
-    dropped += f.droppedComponents;
-  gj["dropped_components"] = dropped;
-  if (!e.scenes.empty()) {
-    json scenes = json::array();
-    for (const analysis::SceneScore& sc : e.scenes) {
-      json byScene = json::object();
-      for (analysis::DecisionMode mode : analysis::kDecisionModes) {
-        const analysis::ConfusionMatrix& c = sc.byDecision[analysis::decisionIndex(mode)];
-        byScene[std::string(analysis::decisionModeName(mode))] =
-            c.total() > 0 ? json(analysis::computeMetrics(c).balancedAccuracy) : json(nullptr);
-      }
-      const std::size_t n = sc.byDecision[0].total();
-      scenes.push_back(
-          {{"scene", sc.scene},
-           {"samples_test", n},
-           {"balanced_accuracy", byScene[std::string(analysis::decisionModeName(m->decision))]},
-           {"balanced_accuracy_by_decision", std::move(byScene)}});
-    }
-    gj["scenes"] = std::move(scenes);
-    json means = json::object();
-    for (analysis::DecisionMode mode : analysis::kDecisionModes)
-      means[std::string(analysis::decisionModeName(mode))] =
-          optionalJson(analysis::meanSceneBalancedAccuracy(e.scenes, mode));
-    gj["scene_mean_balanced_accuracy"] = std::move(means);
-  }
-  return gj;
 }
 
 // Warnings (skipped groups, fit warnings) on stderr, then the summary: one JSON object, or text.
@@ -359,11 +300,11 @@ void printTrainSummary(const std::vector<analysis::GroupJobReport>& reports,
     }
     for (const std::string& w : r.warnings)
       printWarning("group " + g + ": " + w);
-    groupsJson.push_back(groupSummary(r, bundle.find(r.group)));
+    groupsJson.push_back(analysis::groupReportJson(r, bundle.find(r.group)));
   }
   if (asJson) {
     doc["evaluated_on"] = evaluatedOn;
-    doc["groups"] = std::move(groupsJson);
+    if (!doc.contains("groups")) doc["groups"] = std::move(groupsJson);
     std::cout << dumpJson(doc) << "\n";
     return;
   }
@@ -442,8 +383,8 @@ int runTrainDb(const TrainArgs& a, const analysis::GroupSettings& settings,
   std::vector<analysis::GroupJobReport> reports;
   for (const workspace::GroupTrainReport& r : o.groups)
     reports.push_back({r.group, r.trained, r.skippedBecause, r.samplesTrain, r.warnings});
-  json doc{{"model", o.modelName},      {"id", o.modelId},         {"label_set", a.set},
-           {"train_runs", o.trainRuns}, {"test_runs", o.testRuns}, {"split", a.split}};
+  // The same summary as the Python module's train(...).report.
+  json doc = workspace::trainReportJson(o, request);
   if (!a.out.empty()) doc["out"] = a.out;
   std::string headline = "stored model '" + o.modelName + "' (" +
                          std::to_string(o.bundle.models.size()) + " group model(s)) in " + a.db +
