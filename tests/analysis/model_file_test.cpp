@@ -256,7 +256,10 @@ TEST(ModelFileValidation, CovarianceNotPositiveDefinite) {
 TEST(ModelFileValidation, NonPositiveVariance) {
   json j = validModelJson();
   j["components"][firstClass(j)]["covariances"][0][2][2] = 0.0;
-  EXPECT_NE(errorOf(j).find("not positive"), std::string::npos);
+  const std::string error = errorOf(j);
+  EXPECT_NE(error.find("not positive"), std::string::npos);
+  // The third feature counted from 1 (it once said "variance 2", an index from 0).
+  EXPECT_NE(error.find("the variance of feature 3 of "), std::string::npos) << error;
 }
 
 TEST(ModelFileValidation, WrongCovarianceCountForForm) {
