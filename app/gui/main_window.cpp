@@ -591,7 +591,7 @@ void MainWindow::chooseDatabase(bool create) {
                                             tr("Tactile databases (*.db *.sqlite);;All files (*)"));
   if (path.isEmpty()) return;
   Status s = openDatabase(path, create);
-  if (!s) showError(QString::fromStdString(s.errorText()));
+  if (!s) showOpenError(QString::fromStdString(s.errorText()));
 }
 
 void MainWindow::chooseRunFiles() {
@@ -630,9 +630,18 @@ void MainWindow::dropEvent(QDropEvent* event) {
                         static_cast<int>(dropped.databases.size())));
   if (!dropped.databases.isEmpty()) {
     Status s = openDatabase(dropped.databases.front());
-    if (!s) return showError(QString::fromStdString(s.errorText()));
+    if (!s) return showOpenError(QString::fromStdString(s.errorText()));
   }
   if (!dropped.runInputs.isEmpty()) importRuns(dropped.runInputs);
+}
+
+void MainWindow::showOpenError(const QString& message) {
+  showError(message);
+  auto* box =
+      new QMessageBox(QMessageBox::Warning, tr("Open database"), message, QMessageBox::Ok, this);
+  box->setObjectName(QStringLiteral("openError"));
+  box->setAttribute(Qt::WA_DeleteOnClose);
+  box->open();
 }
 
 void MainWindow::showError(const QString& message) {
@@ -686,7 +695,7 @@ void MainWindow::rebuildRecentMenu() {
   for (const QString& path : recent) {
     recentMenu_->addAction(path, this, [this, path] {
       Status s = openDatabase(path);
-      if (!s) showError(QString::fromStdString(s.errorText()));
+      if (!s) showOpenError(QString::fromStdString(s.errorText()));
     });
   }
   recentMenu_->setEnabled(!recent.isEmpty());

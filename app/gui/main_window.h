@@ -115,6 +115,9 @@ class MainWindow : public QMainWindow {
   void bindShortcut(QAction* action, const QString& id);
   void restoreSettings();
   void showError(const QString& message);
+  // A database that cannot be opened: the status bar and a message box with the whole text (what
+  // is wrong and what to do, e.g. a write-ahead log that does not belong), which does not block.
+  void showOpenError(const QString& message);
   void showMessage(const QString& message);
   void updateTitle();
   void updateStatus();

@@ -10,6 +10,7 @@
 #include <QImage>
 #include <QLineEdit>
 #include <QMenuBar>
+#include <QMessageBox>
 #include <QMimeData>
 #include <QProcess>
 #include <QRadioButton>
@@ -369,6 +370,55 @@ class MainWindowTest : public QObject {
     drop(csv);
     QTRY_COMPARE_WITH_TIMEOUT(window.runList()->table()->model()->rowCount(), 2, 10000);
     QVERIFY(fx.workspace->database().findRun("dropped").ok());
+  }
+
+  // A database restored beside a write-ahead log that does not belong to it: nothing opens, and
+  // the whole message (which log, what to do) is shown, not only a cut status line.
+  void openingADatabaseWithALogThatDoesNotBelongSaysWhatToDo() {
+    GuiFixture fx(120);
+    auto run = fx.workspace->loadRun(fx.runName);
+    QVERIFY(run.ok());
+    const std::string live = fx.dir.filePath(QStringLiteral("live.db")).toStdString();
+    const std::string restored = fx.dir.filePath(QStringLiteral("restored.db")).toStdString();
+    auto importAs = [&](const std::string& name) {
+      auto db = tactile::storage::RunDatabase::open(live, tactile::storage::OpenMode::Create);
+      QVERIFY2(db.ok(), db.ok() ? "" : db.errorText().c_str());
+      run->setMeta("subject", name);
+      QCOMPARE(db.value()->importRun(run.value(), name).status,
+               tactile::storage::ImportStatus::Imported);
+    };
+    importAs("first");
+    QVERIFY(QFile::copy(QString::fromStdString(live), QString::fromStdString(restored)));
+    importAs("second");
+    // Another process holds a read transaction, so the next import's commit stays in the log.
+    QProcess holder;
+    holder.start(QStringLiteral("sqlite3"), {QString::fromStdString(live)});
+    QVERIFY(holder.waitForStarted(10000));
+    holder.write("BEGIN; SELECT count(*) FROM runs;\n");
+    QTest::qWait(500);
+    importAs("third");
+    QVERIFY(QFile::copy(QString::fromStdString(live + "-wal"),
+                        QString::fromStdString(restored + "-wal")));
+    holder.kill();
+    holder.waitForFinished(10000);
+
+    struct DropTarget : MainWindow {
+      using MainWindow::dropEvent;
+    } window;
+    window.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&window));
+    QMimeData mime;
+    mime.setUrls({QUrl::fromLocalFile(QString::fromStdString(restored))});
+    QDropEvent event(QPointF(100, 100), Qt::CopyAction, &mime, Qt::LeftButton, Qt::NoModifier);
+    window.dropEvent(&event);
+    QVERIFY2(window.lastError().contains(QStringLiteral("restored.db-wal does not belong")),
+             qPrintable(window.lastError()));
+    QVERIFY(window.databasePath().isEmpty());
+    auto* box = window.findChild<QMessageBox*>(QStringLiteral("openError"));
+    QVERIFY(box != nullptr);
+    QTRY_VERIFY(box->isVisible());
+    QVERIFY(box->text().contains(QStringLiteral("move")));
+    box->accept();
   }
 
   void droppingAFolderImportsItsCsvFilesAndADatabaseWithRunsOpensItFirst() {
