@@ -423,7 +423,11 @@ Result<std::unique_ptr<RunDatabase>> RunDatabase::openFile(const std::filesystem
     c.exec("PRAGMA mmap_size = " + std::to_string(options.mmapBytes));
     const db::MigrationReport report = db::migrate(c, impl->path);
     impl->backup = report.backupPath;
-    if (!inMemory) stampIdentity(c);
+    if (!inMemory) {
+      stampIdentity(c);
+      // From here on the file is a Tactile database: every commit writes page 1 (file_guard.h).
+      c.stampPageOneOnCommit(db::kApplicationId);
+    }
     std::unique_ptr<RunDatabase> database(new RunDatabase(std::move(impl)));
     if (options.refuseDamaged && !inMemory) {
       const IntegrityReport check = database->check();

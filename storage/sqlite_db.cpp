@@ -96,13 +96,16 @@ Connection Connection::open(const std::filesystem::path& path, bool create, Acce
 }
 
 Connection::Connection(Connection&& other) noexcept
-    : db_(std::exchange(other.db_, nullptr)), file_(std::move(other.file_)) {}
+    : db_(std::exchange(other.db_, nullptr)),
+      file_(std::move(other.file_)),
+      stamp_(std::exchange(other.stamp_, nullptr)) {}
 
 Connection& Connection::operator=(Connection&& other) noexcept {
   if (this != &other) {
     close();
     db_ = std::exchange(other.db_, nullptr);
     file_ = std::move(other.file_);
+    stamp_ = std::exchange(other.stamp_, nullptr);
   }
   return *this;
 }
@@ -113,6 +116,8 @@ Connection::~Connection() {
 
 void Connection::close() noexcept {
   if (db_ == nullptr) return;
+  sqlite3_finalize(stamp_);
+  stamp_ = nullptr;
   {
     std::lock_guard lock(gFilesMutex);
     openFiles().erase(db_);
@@ -123,6 +128,22 @@ void Connection::close() noexcept {
 
 const std::string& Connection::file() const {
   return file_;
+}
+
+void Connection::stampPageOneOnCommit(std::int64_t applicationId) {
+  sqlite3_finalize(stamp_);
+  stamp_ = nullptr;
+  const std::string sql = "PRAGMA application_id = " + std::to_string(applicationId);
+  if (sqlite3_prepare_v2(db_, sql.c_str(), -1, &stamp_, nullptr) != SQLITE_OK) {
+    fail(db_, "cannot prepare statement", sql);
+  }
+}
+
+void Connection::stampPageOne() {
+  if (stamp_ == nullptr) return;
+  const int rc = sqlite3_step(stamp_);
+  sqlite3_reset(stamp_);
+  if (rc != SQLITE_DONE && rc != SQLITE_ROW) fail(db_, "cannot write the file's header");
 }
 
 void Connection::exec(std::string_view sql) {
@@ -294,10 +315,8 @@ Transaction::~Transaction() {
 void Transaction::commit() {
   if (connection_ == nullptr) throw DbError("commit of an inactive transaction");
   // Every commit carries page 1 (the file's header, with its change counter) into the write-ahead
-  // log, so that a log left behind by a killed process can always be matched to the file it
-  // continues (file_guard.h). Writing the application id with its own value marks page 1 changed.
-  const std::int64_t applicationId = connection_->queryInt("PRAGMA application_id");
-  connection_->exec("PRAGMA application_id = " + std::to_string(applicationId));
+  // log where the connection asks for it (Connection::stampPageOneOnCommit).
+  connection_->stampPageOne();
   connection_->exec("COMMIT");
   connection_ = nullptr;
 }

@@ -64,12 +64,20 @@ class Connection {
   std::string errorMessage() const;
   // The database file as given to open() (":memory:" for a private in-memory one).
   const std::string& file() const;
+  // From now on every Transaction on this connection also writes page 1 when it commits, by
+  // setting the application id to `applicationId` again (its value must be the file's), so that
+  // a log left behind by a killed process can be matched to the file it continues
+  // (file_guard.h). The statement is prepared once. Throws DbError.
+  void stampPageOneOnCommit(std::int64_t applicationId);
+  // Runs that statement when it is set (Transaction::commit). Throws DbError.
+  void stampPageOne();
 
  private:
   Connection(sqlite3* db, std::string file) : db_(db), file_(std::move(file)) {}
   void close() noexcept;
   sqlite3* db_ = nullptr;
   std::string file_;
+  sqlite3_stmt* stamp_ = nullptr;  // PRAGMA application_id = ..., see stampPageOneOnCommit
 };
 
 // A prepared statement. Bind indices are 1-based, column indices 0-based (as in SQLite). step()
