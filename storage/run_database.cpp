@@ -297,8 +297,12 @@ Result<std::unique_ptr<RunDatabase>> RunDatabase::openFile(const std::filesystem
       if (const auto what = db::notRegularFile(path)) {
         return R(Error(name, "is " + *what + ", not a database file; left unchanged"));
       }
-      if (const auto what = db::notRegularFile(name + "-wal")) {
-        return R(Error(name, "its write-ahead log " + name + "-wal is " + *what +
+      // SQLite keeps the log beside the file a link leads to; so are the checks below.
+      std::error_code linkError;
+      std::filesystem::path real = std::filesystem::canonical(path, linkError);
+      if (linkError) real = path;
+      if (const auto what = db::notRegularFile(real.string() + "-wal")) {
+        return R(Error(name, "its write-ahead log " + real.string() + "-wal is " + *what +
                                  ", not a file; left unchanged"));
       }
       // Opening and closing any descriptor of a file drops every POSIX lock this process holds on
@@ -306,7 +310,7 @@ Result<std::unique_ptr<RunDatabase>> RunDatabase::openFile(const std::filesystem
       // files are not looked at here (that connection proved them) and SQLite alone decides.
       const bool openHere = db::isOpenInThisProcess(path);
       if (!openHere) {
-        if (Status guarded = guardFiles(path, name); !guarded) return R(guarded.error());
+        if (Status guarded = guardFiles(real, name); !guarded) return R(guarded.error());
       }
       noteInputFile(path);
       const Probe probe = openHere ? Probe{} : probeFile(path);

@@ -100,6 +100,23 @@ TEST(LeftoverLog, ABackupRestoredBesideANewerLogIsRefusedAndLeftAlone) {
   EXPECT_EQ(runCount(dir / "X.db"), 1u);
 }
 
+// Opened through a link, the log that counts is the one beside the file the link leads to (where
+// SQLite looks for it).
+TEST(LeftoverLog, ALogBesideTheFileALinkLeadsToIsJudged) {
+  TempDir dir;
+  const fs::path live = dir / "live.db";
+  importInto(live, "one", 1);
+  copyFile(live, dir / "backup.db");
+  importInto(live, "two", 2);
+  fs::create_directories(dir / "real");
+  leaveLog(live, dir / "real" / "X.db");
+  copyFile(dir / "backup.db", dir / "real" / "X.db");
+  fs::create_symlink(dir / "real" / "X.db", dir / "link.db");
+  auto db = RunDatabase::open(dir / "link.db", OpenMode::ReadOnly);
+  ASSERT_FALSE(db.ok()) << "a log that does not belong was applied through a link";
+  EXPECT_NE(db.errorText().find("does not belong"), std::string::npos) << db.errorText();
+}
+
 TEST(LeftoverLog, AnotherDatabasesLogIsRefused) {
   TempDir dir;
   const fs::path live = dir / "live.db";
