@@ -126,19 +126,47 @@ std::optional<std::string> notRegularFile(const std::filesystem::path& path) {
 
 namespace {
 
-// The log's valid frames (see inspectWal): the page size, the committed frame count and the
-// committed page-1 images.
+// What the committed page-1 images of a log say, gathered frame by frame (a log may hold tens of
+// thousands of them; none is kept).
+struct PageOneFacts {
+  bool any = false;
+  std::uint32_t firstCounter = 0;  // change counter of the first image
+  bool equalsFile = false;         // some image is byte for byte the file's page 1
+  std::string otherIdentity;       // an identity other than the file's, when one was seen
+
+  void add(const std::vector<unsigned char>& image, const std::vector<unsigned char>& filePage,
+           const std::string& fileIdentity) {
+    if (!any) firstCounter = big32(image.data() + 24);
+    any = true;
+    equalsFile = equalsFile || (!filePage.empty() && image == filePage);
+    const std::string identity = identityOf(image);
+    if (otherIdentity.empty() && !identity.empty() && !fileIdentity.empty() &&
+        identity != fileIdentity) {
+      otherIdentity = identity;
+    }
+  }
+  void merge(const PageOneFacts& later) {
+    if (!later.any) return;
+    if (!any) firstCounter = later.firstCounter;
+    any = true;
+    equalsFile = equalsFile || later.equalsFile;
+    if (otherIdentity.empty()) otherIdentity = later.otherIdentity;
+  }
+};
+
+// The log's valid frames: those of its current generation (salts) whose running checksum holds,
+// up to the last commit frame, as SQLite would apply them. `filePage` (the file's page 1, or
+// empty) is compared with every committed page-1 image.
 struct WalScan {
   std::int64_t pageSize = 0;
   std::int64_t commitFrames = 0;
-  std::vector<std::vector<unsigned char>> pageOnes;
+  PageOneFacts pageOnes;
 };
 
-WalScan scanWal(const std::filesystem::path& database) {
+WalScan scanWal(const std::filesystem::path& database, const std::vector<unsigned char>& filePage,
+                const std::string& fileIdentity) {
   WalScan scan;
-  WalState state;
-  const std::filesystem::path wal = database.string() + "-wal";
-  const Fd log(wal);
+  const Fd log(std::filesystem::path(database.string() + "-wal"));
   if (!log.ok() || !log.regular()) return scan;
   const std::int64_t walBytes = log.size();
   unsigned char header[32];
@@ -155,12 +183,11 @@ WalScan scanWal(const std::filesystem::path& database) {
   if (sum.s1 != big32(header + 24) || sum.s2 != big32(header + 28)) return scan;
   const std::uint32_t salt1 = big32(header + 16);
   const std::uint32_t salt2 = big32(header + 20);
+  scan.pageSize = pageSize;
 
-  // The frames SQLite would apply: those of this generation (salts) whose running checksum holds,
-  // up to the last commit frame. Page-1 images among them are kept for the comparison below.
   std::vector<unsigned char> frame(static_cast<std::size_t>(24 + pageSize));
-  std::vector<std::vector<unsigned char>> pageOnes;  // in log order, committed ones only
-  std::vector<std::vector<unsigned char>> pending;   // page-1 images since the last commit
+  std::vector<unsigned char> image;
+  PageOneFacts pending;  // page-1 images since the last commit frame
   std::int64_t frames = 0;
   for (std::int64_t offset = 32; offset + 24 + pageSize <= walBytes; offset += 24 + pageSize) {
     if (!log.readAt(frame.data(), frame.size(), offset)) break;
@@ -169,95 +196,89 @@ WalScan scanWal(const std::filesystem::path& database) {
     sum.add(frame.data() + 24, static_cast<std::size_t>(pageSize));
     if (sum.s1 != big32(frame.data() + 16) || sum.s2 != big32(frame.data() + 20)) break;
     ++frames;
-    if (big32(frame.data()) == 1) pending.emplace_back(frame.begin() + 24, frame.end());
+    if (big32(frame.data()) == 1) {
+      image.assign(frame.begin() + 24, frame.end());
+      pending.add(image, filePage, fileIdentity);
+    }
     if (big32(frame.data() + 4) != 0) {  // a commit frame: everything before it is applied
-      state.commitFrames = frames;
-      for (auto& image : pending)
-        pageOnes.push_back(std::move(image));
-      pending.clear();
+      scan.commitFrames = frames;
+      scan.pageOnes.merge(pending);
+      pending = PageOneFacts{};
     }
   }
-  scan.pageSize = pageSize;
-  scan.commitFrames = state.commitFrames;
-  scan.pageOnes = std::move(pageOnes);
   return scan;
 }
 
 }  // namespace
 
 std::int64_t walCommitFrames(const std::filesystem::path& database) {
-  return scanWal(database).commitFrames;
+  return scanWal(database, {}, {}).commitFrames;
 }
 
 WalState inspectWal(const std::filesystem::path& database) {
   WalState state;
   if (isOpenInThisProcess(database)) {
     state.kind = WalState::Kind::Live;  // never a descriptor beside a live connection of ours
-    state.commitFrames = walCommitFrames(database);
     return state;
   }
-  WalScan scan = scanWal(database);
+  // The file's header and page 1 first, so the log is read once.
+  const Fd file(database);
+  const bool fileThere = file.ok() && file.regular();
+  unsigned char dbHeader[100] = {};
+  const bool headerRead = fileThere && file.readAt(dbHeader, sizeof dbHeader, 0);
+  std::vector<unsigned char> pageOne;
+  if (headerRead) {
+    pageOne.resize(static_cast<std::size_t>(pageSizeOf(dbHeader)));
+    if (pageOne.size() < 100 || !file.readAt(pageOne.data(), pageOne.size(), 0)) pageOne.clear();
+  }
+  const std::string fileIdentity = pageOne.empty() ? std::string() : identityOf(pageOne);
+  const WalScan scan = scanWal(database, pageOne, fileIdentity);
   state.commitFrames = scan.commitFrames;
   if (state.commitFrames == 0) return state;
-  const std::int64_t pageSize = scan.pageSize;
-  const std::vector<std::vector<unsigned char>>& pageOnes = scan.pageOnes;
 
   // A log in use by another process belongs to the file.
   if (otherProcessHasShm(database.string() + "-shm")) {
     state.kind = WalState::Kind::Live;
     return state;
   }
-
-  const Fd file(database);
-  if (!file.ok() || !file.regular() || file.size() == 0) {
+  if (!fileThere || file.size() == 0) {
     // A new database's first commits, before any checkpoint: nothing in the file to lose.
-    state.kind = file.ok() && file.regular() ? WalState::Kind::Belongs : WalState::Kind::Foreign;
-    if (state.kind == WalState::Kind::Foreign) state.reason = "its database file is missing";
+    state.kind = fileThere ? WalState::Kind::Belongs : WalState::Kind::Foreign;
+    if (!fileThere) state.reason = "its database file is missing";
     return state;
   }
-  std::vector<unsigned char> pageOne(static_cast<std::size_t>(pageSize));
-  unsigned char dbHeader[100];
-  if (!file.readAt(dbHeader, sizeof dbHeader, 0)) {
+  if (!headerRead) {
     state.kind = WalState::Kind::Foreign;
     state.reason = "the database file is shorter than its 100-byte header";
     return state;
   }
-  if (pageSizeOf(dbHeader) != pageSize) {
+  if (pageSizeOf(dbHeader) != scan.pageSize) {
     state.kind = WalState::Kind::Foreign;
-    state.reason = "the log's pages are " + std::to_string(pageSize) + " bytes, the file's " +
+    state.reason = "the log's pages are " + std::to_string(scan.pageSize) + " bytes, the file's " +
                    std::to_string(pageSizeOf(dbHeader));
     return state;
   }
-  if (pageOnes.empty()) {
+  const PageOneFacts& facts = scan.pageOnes;
+  if (!facts.any) {
     state.kind = WalState::Kind::Unproven;
+    return state;
+  }
+  if (!facts.otherIdentity.empty()) {
+    state.kind = WalState::Kind::Foreign;
+    state.reason = "the log was written by another database: identity " + facts.otherIdentity +
+                   ", the file's " + fileIdentity;
     return state;
   }
   // The file's page 1 is either the state the log started from (its change counter one below the
   // log's first page 1) or one of the log's own page-1 images (a checkpoint copied it back).
-  const bool readPageOne = file.readAt(pageOne.data(), pageOne.size(), 0);
-  const std::string fileIdentity = readPageOne ? identityOf(pageOne) : std::string();
-  for (const auto& image : pageOnes) {
-    const std::string logIdentity = identityOf(image);
-    if (!fileIdentity.empty() && !logIdentity.empty() && logIdentity != fileIdentity) {
-      state.kind = WalState::Kind::Foreign;
-      state.reason = "the log was written by another database: identity " + logIdentity +
-                     ", the file's " + fileIdentity;
-      return state;
-    }
-  }
   const std::uint32_t fileCounter = big32(dbHeader + 24);
-  const std::uint32_t firstCounter = big32(pageOnes.front().data() + 24);
-  bool matches = fileCounter + 1 == firstCounter;
-  for (const auto& image : pageOnes) {
-    if (matches) break;
-    matches = readPageOne && image == pageOne;
-  }
-  if (matches) {
+  if (fileCounter + 1 == facts.firstCounter || facts.equalsFile) {
     state.kind = WalState::Kind::Belongs;
   } else {
     state.kind = WalState::Kind::Foreign;
-    state.reason = "it continues the file at change counter " + std::to_string(firstCounter - 1) +
-                   ", but the file is at " + std::to_string(fileCounter);
+    state.reason = "it continues the file at change counter " +
+                   std::to_string(facts.firstCounter - 1) + ", but the file is at " +
+                   std::to_string(fileCounter);
   }
   return state;
 }

@@ -28,7 +28,7 @@ struct WalState {
   };
   Kind kind = Kind::None;
   std::string reason;             // for Foreign: what does not match
-  std::int64_t commitFrames = 0;  // committed frames in the log's current generation
+  std::int64_t commitFrames = 0;  // committed frames in the log's current generation (0 for Live)
 };
 
 // Every Tactile database carries a random identity on page 1: a view in the schema, whose text
