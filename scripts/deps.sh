@@ -11,7 +11,6 @@ TACTILE_PACKAGES=(
   libeigen3-dev libsqlite3-dev sqlite3 nlohmann-json3-dev libcli11-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   python3-dev pybind11-dev python3-numpy python3-pandas python3-sklearn python3-pytest
-  python3-matplotlib
   xvfb xauth fonts-noto-cjk qt6-translations-l10n locales
 )
 
