@@ -488,6 +488,14 @@ std::vector<std::size_t> bestCells(const SweepResult& sweep, std::size_t minTest
   return out;
 }
 
+// A cell's rate as the tables show it: empty for a cell without a model, "no test data" for one
+// scored on no test rows (which is not a rate of 0, as the JSON's null says), else the figure.
+std::string cellRate(const SweepCellResult& r, double value, int digits) {
+  if (!r.ok) return "";
+  if (r.confusion.total() == 0) return "no test data";
+  return fixed(value, digits);
+}
+
 Table bestCellsTable(const SweepResult& sweep) {
   Table t;
   t.title = "Best cell per group (balanced accuracy on held-out rows)";
@@ -499,9 +507,9 @@ Table bestCellsTable(const SweepResult& sweep) {
     row.push_back(std::to_string(r->cell.order));
     row.push_back(floorText(r->cell.varianceFloor));
     row.push_back(std::to_string(r->cell.seed));
-    row.push_back(fixed(100.0 * r->metrics.balancedAccuracy, 1));
-    row.push_back(fixed(100.0 * r->metrics.accuracy, 1));
-    row.push_back(fixed(r->metrics.macroF1, 3));
+    row.push_back(cellRate(*r, 100.0 * r->metrics.balancedAccuracy, 1));
+    row.push_back(cellRate(*r, 100.0 * r->metrics.accuracy, 1));
+    row.push_back(cellRate(*r, r->metrics.macroF1, 3));
     row.push_back(r->meanLogLikelihood ? fixed(*r->meanLogLikelihood, 4) : "");
     row.push_back(fixed(r->fitSeconds, 3));
     row.push_back(std::to_string(r->droppedComponents));
@@ -530,9 +538,9 @@ Table sweepCellsTable(const SweepResult& sweep) {
     row.push_back(fixed(r.predictSeconds, 4));
     row.push_back(std::to_string(r.iterations));
     row.push_back(r.converged ? "yes" : "no");
-    row.push_back(r.ok ? fixed(100.0 * r.metrics.accuracy, 2) : "");
-    row.push_back(r.ok ? fixed(100.0 * r.metrics.balancedAccuracy, 2) : "");
-    row.push_back(r.ok ? fixed(r.metrics.macroF1, 4) : "");
+    row.push_back(cellRate(r, 100.0 * r.metrics.accuracy, 2));
+    row.push_back(cellRate(r, 100.0 * r.metrics.balancedAccuracy, 2));
+    row.push_back(cellRate(r, r.metrics.macroF1, 4));
     row.push_back(r.meanLogLikelihood ? fixed(*r.meanLogLikelihood, 4) : "");
     row.push_back(r.ok ? std::to_string(r.negInfRows) : "");
     row.push_back(r.ok ? std::to_string(r.droppedComponents) : "");

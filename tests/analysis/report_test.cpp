@@ -320,6 +320,37 @@ TEST(ReportBest, TooFewTestStepsNeverDecide) {
 
 // Two cells of group F equal in balanced accuracy: the one with fewer components is the best,
 // and then the faster; the best-cells table and the report's detailed section agree.
+// A group whose test runs hold none of its steps: a model, but nothing scored. Every table says
+// "no test data" where a rate would stand (it once said 0.0 % and macro-F1 0.000).
+TEST(ReportBest, ACellScoredOnNoTestRowsSaysNoTestDataInEveryFormat) {
+  SweepResult s = handSweep();
+  SweepCellResult unscored = cellWith(SensorGroup::Right, 2, 0.1, 0.05, {});
+  s.cells.push_back(unscored);
+  const Table best = bestCellsTable(s);
+  bool found = false;
+  for (const std::vector<std::string>& row : best.rows) {
+    if (row[0] != "R") continue;
+    found = true;
+    EXPECT_EQ(row[7], "no test data");  // balanced_%
+    EXPECT_EQ(row[8], "no test data");  // accuracy_%
+    EXPECT_EQ(row[9], "no test data");  // macro_f1
+  }
+  EXPECT_TRUE(found) << "the unscored group has no best-cell row";
+  const Table cells = sweepCellsTable(s);
+  const std::vector<std::string>& last = cells.rows.back();
+  EXPECT_EQ(last[8], "yes");  // a model was fitted
+  EXPECT_EQ(last[13], "no test data");
+  EXPECT_EQ(last[14], "no test data");
+  EXPECT_EQ(last[15], "no test data");
+  for (TableStyle style :
+       {TableStyle::Text, TableStyle::Markdown, TableStyle::Csv, TableStyle::Html}) {
+    const std::string report = sweepReport(s, style);
+    EXPECT_NE(report.find("no test data"), std::string::npos) << static_cast<int>(style);
+  }
+  const nlohmann::json cell = sweepCellToJson(unscored);
+  EXPECT_TRUE(cell["balanced_accuracy"].is_null());
+}
+
 TEST(ReportBest, OneRuleForTheBestCellOfEachGroup) {
   SweepResult s = handSweep();
   SweepCellResult twin = s.cells[3];  // balanced accuracy as cell 3 (the best of F), order 1
