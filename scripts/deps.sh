@@ -8,7 +8,7 @@ TACTILE_PACKAGES=(
   cmake g++ make pkg-config clang-format binutils
   qt6-base-dev qt6-tools-dev qt6-l10n-tools qt6-tools-dev-tools libgl-dev
   libqcustomplot-dev libqcustomplot2.1-qt6
-  libeigen3-dev libsqlite3-dev sqlite3 nlohmann-json3-dev libcli11-dev
+  libeigen3-dev libsqlite3-dev sqlite3 libpq-dev postgresql nlohmann-json3-dev libcli11-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   python3-dev pybind11-dev python3-numpy python3-pandas python3-sklearn python3-pytest
   xvfb xauth fonts-noto-cjk qt6-translations-l10n locales

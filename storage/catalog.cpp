@@ -5,6 +5,7 @@
 #include <set>
 
 #include "storage/database_impl.h"
+#include "storage/step_checksum.h"
 
 namespace tactile::storage {
 namespace {
@@ -96,16 +97,26 @@ Status RunDatabase::renameRun(std::string_view name, const std::string& newName)
     }
     taken.reset();
     // The checksum covers the name; a row that did not match before still does not after.
-    impl_
-        ->statement(
-            "UPDATE runs SET name = ?1, crc = CASE WHEN crc IS tactile_run_crc(id, name, "
-            "step_count, "
-            "has_truth, metadata, extra_columns) THEN tactile_run_crc(id, ?1, step_count, "
-            "has_truth, "
-            "metadata, extra_columns) END WHERE id = ?2")
-        .bind(1, newName)
-        .bind(2, id)
-        .run();
+    db::Statement& row = impl_->statement(
+        "SELECT name, step_count, has_truth, metadata, extra_columns, crc FROM runs WHERE id = ?");
+    row.bind(1, id);
+    if (!row.step()) throw db::DbError("no run with id " + std::to_string(id));
+    const auto checksumWith = [&](std::string_view runName) {
+      return runChecksum(id, runName, row.columnInt(1), row.columnInt(2) != 0, row.columnBlob(3),
+                         row.columnBytes(3), row.columnBlob(4), row.columnBytes(4));
+    };
+    const bool matched =
+        !row.columnIsNull(5) && row.columnInt(5) == checksumWith(row.columnTextView(0));
+    const std::int64_t after = checksumWith(newName);
+    row.reset();
+    db::Statement& update = impl_->statement("UPDATE runs SET name = ?, crc = ? WHERE id = ?");
+    update.bind(1, newName).bind(3, id);
+    if (matched) {
+      update.bind(2, after);
+    } else {
+      update.bindNull(2);
+    }
+    update.run();
     transaction.commit();
   });
 }

@@ -1,13 +1,14 @@
 // Internal: the state behind RunDatabase, shared by its implementation files.
 #pragma once
 
+#include <cassert>
 #include <exception>
 #include <string>
 #include <unordered_map>
 
 #include "base/text_rules.h"
 #include "storage/run_database.h"
-#include "storage/sqlite_db.h"
+#include "storage/sqlite/sqlite_connection.h"
 
 namespace tactile::storage {
 
@@ -15,6 +16,7 @@ struct RunDatabase::Impl {
   std::filesystem::path path;
   std::filesystem::path backup;
   bool readOnly = false;
+  bool created = false;
   db::Connection connection;
   // Prepared statements reused across calls, keyed by the address of their SQL literal.
   std::unordered_map<const char*, db::Statement> statements;
@@ -57,6 +59,12 @@ class ResetStatements {
     if (--impl_.callDepth > 0) return;
     for (auto& [sql, statement] : impl_.statements)
       statement.reset();
+    // No public call leaves a transaction open: it would hold locks and an old snapshot. One still
+    // open here was abandoned by a failure (nothing of it was committed): it is rolled back.
+    if (impl_.connection.isOpen() && impl_.connection.inTransaction()) {
+      assert(!"a storage call left a transaction open");
+      impl_.connection.backend().rollback();
+    }
   }
   ResetStatements(const ResetStatements&) = delete;
   ResetStatements& operator=(const ResetStatements&) = delete;

@@ -8,7 +8,7 @@
 #include <cstring>
 #include <vector>
 
-#include "storage/sqlite_db.h"
+#include "storage/sqlite/sqlite_connection.h"
 
 namespace tactile::storage::db {
 namespace {

@@ -34,11 +34,10 @@ std::int64_t RunDatabase::Impl::ensureLabelSet(const std::string& name) {
   requireName(name, "label set");
   if (const std::int64_t id = labelSetIdByName(name); id != 0) return id;
   const std::string now = utcNow();
-  statement("INSERT INTO label_sets(name, created_at) VALUES(?, ?)")
+  return statement("INSERT INTO label_sets(name, created_at) VALUES(?, ?) RETURNING id")
       .bind(1, name)
       .bind(2, now)
-      .run();
-  return connection.lastInsertRowId();
+      .runReturningId();
 }
 
 std::int64_t RunDatabase::Impl::insertSegmentNewestWins(std::int64_t setId,
@@ -105,24 +104,26 @@ std::int64_t RunDatabase::Impl::insertSegmentNewestWins(std::int64_t setId,
     }
   }
   const std::string now = utcNow();
-  db::Statement& insert = statement(
-      "INSERT INTO label_segments(id, set_id, run_id, grp, first_step, last_step, class, "
-      "annotator, created_at) VALUES(?, ?, ?, ?, ?, ?, ?, ?, ?)");
-  if (keepId != 0) {
-    insert.bind(1, keepId);
-  } else {
-    insert.bindNull(1);
-  }
-  insert.bind(2, setId)
-      .bind(3, runId)
-      .bind(4, group)
-      .bind(5, a)
-      .bind(6, b)
-      .bind(7, contactClassName(segment.cls))
-      .bind(8, segment.annotator)
-      .bind(9, now)
-      .run();
-  return connection.lastInsertRowId();
+  // A new segment takes its id from the database (a sequence on PostgreSQL), a kept one its own.
+  db::Statement& insert =
+      keepId != 0 ? statement(
+                        "INSERT INTO label_segments(set_id, run_id, grp, first_step, last_step, "
+                        "class, annotator, created_at, id) "
+                        "VALUES(?, ?, ?, ?, ?, ?, ?, ?, ?) RETURNING id")
+                  : statement(
+                        "INSERT INTO label_segments(set_id, run_id, grp, first_step, last_step, "
+                        "class, annotator, created_at) "
+                        "VALUES(?, ?, ?, ?, ?, ?, ?, ?) RETURNING id");
+  if (keepId != 0) insert.bind(9, keepId);
+  return insert.bind(1, setId)
+      .bind(2, runId)
+      .bind(3, group)
+      .bind(4, a)
+      .bind(5, b)
+      .bind(6, contactClassName(segment.cls))
+      .bind(7, segment.annotator)
+      .bind(8, now)
+      .runReturningId();
 }
 
 Result<std::vector<LabelSetInfo>> RunDatabase::listLabelSets() {
@@ -160,12 +161,14 @@ Result<std::int64_t> RunDatabase::createLabelSet(const std::string& name,
       throw db::DbError("a label set named '" + name + "' already exists");
     }
     const std::string now = utcNow();
-    impl_->statement("INSERT INTO label_sets(name, annotator, created_at) VALUES(?, ?, ?)")
-        .bind(1, name)
-        .bind(2, annotator)
-        .bind(3, now)
-        .run();
-    const std::int64_t id = impl_->connection.lastInsertRowId();
+    const std::int64_t id =
+        impl_
+            ->statement(
+                "INSERT INTO label_sets(name, annotator, created_at) VALUES(?, ?, ?) RETURNING id")
+            .bind(1, name)
+            .bind(2, annotator)
+            .bind(3, now)
+            .runReturningId();
     transaction.commit();
     return id;
   });
@@ -198,18 +201,13 @@ Result<std::int64_t> RunDatabase::copyLabelSet(std::int64_t setId, const std::st
       throw db::DbError("a label set named '" + newName + "' already exists");
     }
     const std::string now = utcNow();
-    impl_
-        ->statement(
-            "INSERT INTO label_sets(name, annotator, created_at) "
-            "SELECT ?, annotator, ? FROM label_sets WHERE id = ?")
-        .bind(1, newName)
-        .bind(2, now)
-        .bind(3, setId)
-        .run();
-    if (impl_->connection.changes() == 0) {
-      throw db::DbError("no label set with id " + std::to_string(setId));
-    }
-    const std::int64_t id = impl_->connection.lastInsertRowId();
+    db::Statement& copy = impl_->statement(
+        "INSERT INTO label_sets(name, annotator, created_at) "
+        "SELECT ?, annotator, ? FROM label_sets WHERE id = ? RETURNING id");
+    copy.bind(1, newName).bind(2, now).bind(3, setId);
+    if (!copy.step()) throw db::DbError("no label set with id " + std::to_string(setId));
+    const std::int64_t id = copy.columnInt(0);
+    copy.reset();
     impl_
         ->statement(
             "INSERT INTO label_segments(set_id, run_id, grp, first_step, last_step, class, "
@@ -278,7 +276,8 @@ Result<std::vector<std::pair<std::int64_t, std::int64_t>>> RunDatabase::labelled
     std::int64_t setId) {
   return guarded<std::vector<std::pair<std::int64_t, std::int64_t>>>(*impl_, [&] {
     db::Statement& s = impl_->statement(
-        "SELECT run_id, SUM(last_step - first_step + 1) FROM label_segments WHERE set_id = ? "
+        "SELECT run_id, CAST(SUM(last_step - first_step + 1) AS BIGINT) FROM label_segments WHERE "
+        "set_id = ? "
         "GROUP BY run_id ORDER BY run_id");
     s.bind(1, setId);
     std::vector<std::pair<std::int64_t, std::int64_t>> out;

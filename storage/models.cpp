@@ -89,17 +89,16 @@ Result<std::int64_t> RunDatabase::addModel(const std::string& name, const std::s
       throw db::DbError("a model named '" + name +
                         "' is already stored; choose another name or delete it first");
     }
-    impl_
-        ->statement(
-            "INSERT INTO models(name, json, trained_on, metrics, created_at) "
-            "VALUES(?, ?, ?, ?, ?)")
-        .bind(1, name)
-        .bind(2, json)
-        .bind(3, trainedOnJson)
-        .bind(4, metricsJson)
-        .bind(5, utcNow())
-        .run();
-    const std::int64_t id = impl_->connection.lastInsertRowId();
+    const std::int64_t id = impl_
+                                ->statement(
+                                    "INSERT INTO models(name, json, trained_on, metrics, "
+                                    "created_at) VALUES(?, ?, ?, ?, ?) RETURNING id")
+                                .bind(1, name)
+                                .bind(2, json)
+                                .bind(3, trainedOnJson)
+                                .bind(4, metricsJson)
+                                .bind(5, utcNow())
+                                .runReturningId();
     transaction.commit();
     return id;
   });
@@ -110,12 +109,14 @@ Result<std::int64_t> RunDatabase::createSweep(const std::string& name,
   return guarded<std::int64_t>(*impl_, [&] {
     requireName(name, "sweep");
     db::Transaction transaction(impl_->connection);
-    impl_->statement("INSERT INTO sweeps(name, configuration, created_at) VALUES(?, ?, ?)")
-        .bind(1, name)
-        .bind(2, configurationJson)
-        .bind(3, utcNow())
-        .run();
-    const std::int64_t id = impl_->connection.lastInsertRowId();
+    const std::int64_t id =
+        impl_
+            ->statement(
+                "INSERT INTO sweeps(name, configuration, created_at) VALUES(?, ?, ?) RETURNING id")
+            .bind(1, name)
+            .bind(2, configurationJson)
+            .bind(3, utcNow())
+            .runReturningId();
     transaction.commit();
     return id;
   });
@@ -126,12 +127,14 @@ Result<std::int64_t> RunDatabase::addSweepCell(std::int64_t sweepId,
                                                const std::string& metricsJson) {
   return guarded<std::int64_t>(*impl_, [&] {
     db::Transaction transaction(impl_->connection);
-    impl_->statement("INSERT INTO sweep_cells(sweep_id, configuration, metrics) VALUES(?, ?, ?)")
-        .bind(1, sweepId)
-        .bind(2, configurationJson)
-        .bind(3, metricsJson)
-        .run();
-    const std::int64_t id = impl_->connection.lastInsertRowId();
+    const std::int64_t id = impl_
+                                ->statement(
+                                    "INSERT INTO sweep_cells(sweep_id, configuration, metrics) "
+                                    "VALUES(?, ?, ?) RETURNING id")
+                                .bind(1, sweepId)
+                                .bind(2, configurationJson)
+                                .bind(3, metricsJson)
+                                .runReturningId();
     transaction.commit();
     return id;
   });

@@ -17,6 +17,8 @@
 #include "base/file_text.h"
 #include "storage/database_impl.h"
 #include "storage/file_guard.h"
+#include "storage/postgres/pg_connection.h"
+#include "storage/postgres/pg_schema.h"
 #include "storage/schema.h"
 #include "storage/step_checksum.h"
 
@@ -157,7 +159,8 @@ std::string switchToWal(db::Connection& c, const std::string& name) {
   const auto deadline = std::chrono::steady_clock::now() + 60s;
   while (true) {
     sqlite3_stmt* statement = nullptr;
-    int rc = sqlite3_prepare_v2(c.handle(), "PRAGMA journal_mode = WAL", -1, &statement, nullptr);
+    int rc = sqlite3_prepare_v2(db::sqliteHandle(c), "PRAGMA journal_mode = WAL", -1, &statement,
+                                nullptr);
     std::string journal;
     if (rc == SQLITE_OK) {
       rc = sqlite3_step(statement);
@@ -275,6 +278,7 @@ Result<std::unique_ptr<RunDatabase>> RunDatabase::open(const std::filesystem::pa
   const std::string name = path.string();
   OpenMode mode = options.mode;
   if (mode == OpenMode::Create && !options.create) mode = OpenMode::ReadWrite;
+  if (db::isServerAddress(name)) return openServer(name, mode);
   const bool inMemoryPath = path.empty() || path == ":memory:";
   std::error_code absentError;
   const bool wasAbsent = mode == OpenMode::Create && !inMemoryPath &&
@@ -361,7 +365,7 @@ Result<std::unique_ptr<RunDatabase>> RunDatabase::openFile(const std::filesystem
         if (mayWrite) throw;
         // SQLITE_READONLY_CANTINIT and friends: WAL needs a -shm file this process cannot make
         // (read-only folder). Without a -wal holding changes, `immutable` reads the file as it is.
-        const int code = sqlite3_extended_errcode(impl->connection.handle());
+        const int code = sqlite3_extended_errcode(db::sqliteHandle(impl->connection));
         if ((code & 0xff) != SQLITE_READONLY && (code & 0xff) != SQLITE_CANTOPEN) throw;
         std::error_code ec;
         const auto walBytes = std::filesystem::file_size(name + "-wal", ec);
@@ -405,6 +409,7 @@ Result<std::unique_ptr<RunDatabase>> RunDatabase::openFile(const std::filesystem
     if (!inMemory) checkIdentity(c, name, mode == OpenMode::Create);
     const bool fresh = c.queryInt("PRAGMA user_version") == 0 &&
                        c.queryInt("SELECT count(*) FROM sqlite_schema") == 0;
+    impl->created = fresh && !inMemory;
     if (fresh) {
       // Step rows are 60-200 bytes (sparse sensors; ~800 at most), within the 1/20 of a page
       // that SQLite advises for WITHOUT ROWID tables; block rows (at most ~1.4 KB) are few. The
@@ -430,7 +435,7 @@ Result<std::unique_ptr<RunDatabase>> RunDatabase::openFile(const std::filesystem
     if (!inMemory) {
       stampIdentity(c);
       // From here on the file is a Tactile database: every commit writes page 1 (file_guard.h).
-      c.stampPageOneOnCommit(db::kApplicationId);
+      db::stampPageOneOnCommit(c, db::kApplicationId);
     }
     std::unique_ptr<RunDatabase> database(new RunDatabase(std::move(impl)));
     if (options.refuseDamaged && !inMemory) {
@@ -451,6 +456,68 @@ Result<std::unique_ptr<RunDatabase>> RunDatabase::openFile(const std::filesystem
   } catch (const std::exception& e) {
     return R(Error(name, e.what()));
   }
+}
+
+Result<std::unique_ptr<RunDatabase>> RunDatabase::openServer(const std::string& address,
+                                                             OpenMode mode) {
+  using R = Result<std::unique_ptr<RunDatabase>>;
+  const std::string shown = db::redactedAddress(address);
+  try {
+    auto impl = std::make_unique<Impl>();
+    impl->path = shown;
+    impl->readOnly = mode == OpenMode::ReadOnly;
+    impl->connection = db::connectServer(address);
+    db::Connection& c = impl->connection;
+    db::ServerContent content = db::inspectServer(c);
+    if (!content.tactile) {
+      if (content.tables != 0) {
+        return R(
+            Error(shown, "holds " + std::to_string(content.tables) +
+                             (content.tables == 1 ? " table" : " tables") +
+                             " but no Tactile schema; not a Tactile database; left unchanged"));
+      }
+      if (mode != OpenMode::Create) {
+        return R(Error(shown,
+                       "an empty database without the Tactile schema (`tactile db create --db "
+                       "ADDRESS` makes it)"));
+      }
+      db::createServerSchema(c);
+      content = db::inspectServer(c);
+      impl->created = true;
+    }
+    if (content.version > db::kSchemaVersion) {
+      return R(Error(shown, "schema version " + std::to_string(content.version) +
+                                ", newer than version " + std::to_string(db::kSchemaVersion) +
+                                " that this program understands; use a newer tactile"));
+    }
+    if (content.version < db::kSchemaVersion) {
+      return R(Error(shown, "schema version " + std::to_string(content.version) +
+                                ", older than this program's " +
+                                std::to_string(db::kSchemaVersion) +
+                                "; `tactile db create --db ADDRESS` migrates it"));
+    }
+    // A read-only open never writes, whatever the account may do on the server.
+    if (impl->readOnly) c.exec("SET default_transaction_read_only = on");
+    return R(std::unique_ptr<RunDatabase>(new RunDatabase(std::move(impl))));
+  } catch (const db::DbError& e) {
+    return R(Error(e.file.empty() ? shown : e.file, e.what()));
+  } catch (const std::exception& e) {
+    return R(Error(shown, e.what()));
+  }
+}
+
+bool RunDatabase::created() const {
+  return impl_->created;
+}
+bool RunDatabase::onServer() const {
+  return !impl_->connection.isSqlite();
+}
+
+bool isServerAddress(std::string_view address) {
+  return db::isServerAddress(address);
+}
+std::string shownAddress(std::string_view address) {
+  return db::isServerAddress(address) ? db::redactedAddress(address) : std::string(address);
 }
 
 bool RunDatabase::readOnly() const {
@@ -522,6 +589,10 @@ Result<RunInfo> RunDatabase::runInfo(std::int64_t runId) {
 Status RunDatabase::deleteRun(std::int64_t runId) {
   return guardedStatus(*impl_, [&] {
     db::Transaction transaction(impl_->connection);
+    // The child rows by name too: a server's step rows have no cascading foreign key.
+    impl_->statement("DELETE FROM label_segments WHERE run_id = ?").bind(1, runId).run();
+    impl_->statement("DELETE FROM step_blocks WHERE run_id = ?").bind(1, runId).run();
+    impl_->statement("DELETE FROM steps WHERE run_id = ?").bind(1, runId).run();
     db::Statement& s = impl_->statement("DELETE FROM runs WHERE id = ?");
     s.bind(1, runId).run();
     if (impl_->connection.changes() == 0) {
@@ -569,8 +640,107 @@ void addProblem(IntegrityReport& report, const std::string& kind, const std::str
   }
 }
 
+// Every run, steps and summary block row against its checksum (docs/storage.md#checksums), each
+// row read and its checksum computed here: a server has no checksum functions of its own.
+void checkChecksumsRowByRow(db::Connection& c, IntegrityReport& report) {
+  const auto runName = [](const db::Statement& s) {
+    return s.columnIsNull(0) ? std::string("(missing run)") : "'" + s.columnText(0) + "'";
+  };
+  const auto differs = [](const db::Statement& s, int column, std::int64_t want) {
+    return s.columnIsNull(column) || s.columnInt(column) != want;
+  };
+  {
+    db::Statement s(c,
+                    "SELECT name, id, step_count, has_truth, metadata, extra_columns, crc "
+                    "FROM runs ORDER BY id");
+    while (s.step()) {
+      const std::int64_t want =
+          runChecksum(s.columnInt(1), s.columnTextView(0), s.columnInt(2), s.columnInt(3) != 0,
+                      s.columnBlob(4), s.columnBytes(4), s.columnBlob(5), s.columnBytes(5));
+      if (differs(s, 6, want)) {
+        addProblem(report, "checksum",
+                   "run " + runName(s) + " (id " + std::to_string(s.columnInt(1)) +
+                       "): its row (name, step count, metadata) does not match its checksum");
+      }
+    }
+  }
+  {
+    // Run by run, so that no result holds more than one run's rows.
+    std::vector<std::pair<std::int64_t, std::string>> runs;
+    {
+      db::Statement ids(c, "SELECT DISTINCT run_id FROM steps ORDER BY run_id");
+      while (ids.step())
+        runs.emplace_back(ids.columnInt(0), std::string());
+    }
+    db::Statement names(c, "SELECT name FROM runs WHERE id = ?");
+    db::Statement s(c,
+                    "SELECT step, x, y, theta, v, omega, blocked, sensors, extra, truth, crc "
+                    "FROM steps WHERE run_id = ? ORDER BY step");
+    db::Statement blocks(c,
+                         "SELECT level, block, minmax, crc FROM step_blocks WHERE run_id = ? "
+                         "ORDER BY level, block");
+    for (auto& [runId, name] : runs) {
+      names.bind(1, runId);
+      name = names.step() ? "'" + names.columnText(0) + "'" : std::string("(missing run)");
+      names.reset();
+      s.bind(1, runId);
+      while (s.step()) {
+        StepRow row;
+        row.runId = runId;
+        row.step = s.columnInt(0);
+        row.x = s.columnDouble(1);
+        row.y = s.columnDouble(2);
+        row.theta = s.columnDouble(3);
+        row.v = s.columnDouble(4);
+        row.omega = s.columnDouble(5);
+        row.blocked = s.columnInt(6);
+        row.sensors = s.columnBlob(7);
+        row.sensorBytes = s.columnBytes(7);
+        if (!s.columnIsNull(8)) {
+          row.extra = s.columnBlob(8);
+          row.extraBytes = s.columnBytes(8);
+        }
+        row.hasTruth = !s.columnIsNull(9);
+        row.truth = s.columnInt(9);
+        if (differs(s, 10, stepChecksum(row))) {
+          addProblem(report, "checksum",
+                     "run " + name + " (id " + std::to_string(runId) + ") step " +
+                         std::to_string(row.step) + ": stored data does not match its checksum");
+        }
+      }
+      s.reset();
+    }
+    db::Statement blockRuns(c, "SELECT DISTINCT run_id FROM step_blocks ORDER BY run_id");
+    std::vector<std::int64_t> blockRunIds;
+    while (blockRuns.step())
+      blockRunIds.push_back(blockRuns.columnInt(0));
+    for (const std::int64_t runId : blockRunIds) {
+      names.bind(1, runId);
+      const std::string name =
+          names.step() ? "'" + names.columnText(0) + "'" : std::string("(missing run)");
+      names.reset();
+      blocks.bind(1, runId);
+      while (blocks.step()) {
+        const std::int64_t want = blockChecksum(runId, blocks.columnInt(0), blocks.columnInt(1),
+                                                blocks.columnBlob(2), blocks.columnBytes(2));
+        if (differs(blocks, 3, want)) {
+          addProblem(report, "checksum",
+                     "run " + name + " (id " + std::to_string(runId) + ") summary block " +
+                         std::to_string(blocks.columnInt(1)) + " of level " +
+                         std::to_string(blocks.columnInt(0)) + ": does not match its checksum");
+        }
+      }
+      blocks.reset();
+    }
+  }
+}
+
 // Every run, steps and summary block row against its checksum (docs/storage.md#checksums).
 void checkChecksums(db::Connection& c, IntegrityReport& report) {
+  if (!c.isSqlite()) {
+    checkChecksumsRowByRow(c, report);
+    return;
+  }
   const auto runName = [](const db::Statement& s) {
     return s.columnIsNull(0) ? std::string("(missing run)") : "'" + s.columnText(0) + "'";
   };
@@ -621,22 +791,15 @@ IntegrityReport RunDatabase::check() {
     // time must not make the runs' step counts and the steps table look inconsistent.
     struct Snapshot {
       db::Connection& c;
-      explicit Snapshot(db::Connection& connection) : c(connection) {
-        c.exec("SAVEPOINT tactile_check");
-      }
-      ~Snapshot() {
-        try {
-          c.exec("RELEASE tactile_check");
-        } catch (...) {  // nothing was written; the connection stays usable
-        }
-      }
+      explicit Snapshot(db::Connection& connection) : c(connection) { c.backend().beginSnapshot(); }
+      ~Snapshot() { c.backend().endSnapshot(); }
     } snapshot(c);
-    report.schemaVersion = db::schemaVersion(c);
+    report.schemaVersion = c.isSqlite() ? db::schemaVersion(c) : db::inspectServer(c).version;
     // A file cut short since it was opened: pages past its end read as zeros, which neither
     // SQLite's checks nor the row checksums see in every table. Read through SQLite and stat
     // alone (a descriptor opened and closed here would drop this connection's locks); without
     // committed frames in the log, SQLite's page count is the file's.
-    if (!impl_->path.empty() && impl_->path != ":memory:" &&
+    if (c.isSqlite() && !impl_->path.empty() && impl_->path != ":memory:" &&
         db::walCommitFrames(impl_->path) == 0) {
       std::error_code ec;
       const auto bytes = std::filesystem::file_size(impl_->path, ec);
@@ -649,14 +812,15 @@ IntegrityReport RunDatabase::check() {
                        "; restore it from a backup");
       }
     }
-    {
+    // A server checks its pages and foreign keys itself; a file is checked here.
+    if (c.isSqlite()) {
       db::Statement s(c, "PRAGMA integrity_check");
       while (s.step()) {
         std::string line = s.columnText(0);
         if (line != "ok") addProblem(report, "integrity", line);
       }
     }
-    {
+    if (c.isSqlite()) {
       db::Statement s(c, "PRAGMA foreign_key_check");
       while (s.step()) {
         const std::string table = s.columnText(0);
@@ -670,7 +834,7 @@ IntegrityReport RunDatabase::check() {
       }
     }
     report.runs = c.queryInt("SELECT count(*) FROM runs");
-    report.steps = c.queryInt("SELECT coalesce(sum(step_count), 0) FROM runs");
+    report.steps = c.queryInt("SELECT CAST(coalesce(sum(step_count), 0) AS BIGINT) FROM runs");
     report.labelSets = c.queryInt("SELECT count(*) FROM label_sets");
     const std::int64_t storedSteps = c.queryInt("SELECT count(*) FROM steps");
     if (storedSteps != report.steps) {
@@ -732,12 +896,14 @@ Result<std::int64_t> RunDatabase::saveSweep(
     requireName(name, "sweep");
     db::Transaction transaction(impl_->connection);
     const std::string now = utcNow();
-    impl_->statement("INSERT INTO sweeps(name, configuration, created_at) VALUES(?, ?, ?)")
-        .bind(1, name)
-        .bind(2, configurationJson)
-        .bind(3, now)
-        .run();
-    const std::int64_t sweepId = impl_->connection.lastInsertRowId();
+    const std::int64_t sweepId =
+        impl_
+            ->statement(
+                "INSERT INTO sweeps(name, configuration, created_at) VALUES(?, ?, ?) RETURNING id")
+            .bind(1, name)
+            .bind(2, configurationJson)
+            .bind(3, now)
+            .runReturningId();
     db::Statement& cell = impl_->statement(
         "INSERT INTO sweep_cells(sweep_id, configuration, metrics) VALUES(?, ?, ?)");
     for (const auto& [configuration, metrics] : cells) {

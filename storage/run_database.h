@@ -206,6 +206,27 @@ struct IntegrityReport {
   std::int64_t labelSets = 0;
 };
 
+// ---- copies between databases (storage/copy.cpp, docs/team.md#copies) -------------------------
+
+struct CopyOptions {
+  std::vector<std::string> runs;  // run names; empty: every run
+  std::vector<std::string> sets;  // label set names; empty: every set
+  bool models = true;
+  bool sweeps = true;
+};
+
+struct CopyReport {
+  std::int64_t runsCopied = 0;
+  std::int64_t runsPresent = 0;  // already in the target with the same checksum
+  std::int64_t stepsCopied = 0;
+  std::int64_t setsCreated = 0;
+  std::int64_t segmentsCopied = 0;
+  std::int64_t segmentsWithoutRun = 0;  // on runs the target does not hold
+  std::int64_t modelsCopied = 0;
+  std::int64_t sweepsCopied = 0;
+  std::vector<std::string> warnings;
+};
+
 // How RunDatabase::open treats the file (docs/storage.md#opening).
 enum class OpenMode {
   // Makes the file (and its schema) when absent or empty; migrates an older one.
@@ -251,6 +272,10 @@ class RunDatabase {
   const std::filesystem::path& path() const;
   // True when opened with OpenMode::ReadOnly.
   bool readOnly() const;
+  // True when this open made the database (a new file, or the schema in an empty server database).
+  bool created() const;
+  // True for a PostgreSQL server, false for an SQLite file.
+  bool onServer() const;
   // The backup written when opening migrated an older file (empty otherwise).
   const std::filesystem::path& migrationBackup() const;
 
@@ -404,16 +429,35 @@ class RunDatabase {
 
   IntegrityReport check();
 
+  // Copies runs (row by row with their stored bytes: the copy exports byte for byte as the source
+  // does), label sets, models and sweeps from `source` into this database; either may be SQLite or
+  // PostgreSQL. Each run is one transaction, checked against its checksums when read and again in
+  // this database before it commits; a run already here with the same checksum is left as it is,
+  // one with the same name and other content is an error. A label set's segments go onto the runs
+  // of the same name here, newest wins, segments already here are not added again; models are
+  // copied by name (another model of that name here is a warning), sweeps when not already here.
+  // So a second copy adds nothing. `progress` gets (runs done, runs total).
+  Result<CopyReport> copyFrom(RunDatabase& source, const CopyOptions& options = {},
+                              const ProgressFn& progress = {});
+
   struct Impl;
 
  private:
   explicit RunDatabase(std::unique_ptr<Impl> impl);
+  // open() of a PostgreSQL server address (docs/team.md).
+  static Result<std::unique_ptr<RunDatabase>> openServer(const std::string& address, OpenMode mode);
   // open() without the clean-up of a failed creation.
   static Result<std::unique_ptr<RunDatabase>> openFile(const std::filesystem::path& path,
                                                        const OpenOptions& options, OpenMode mode,
                                                        const std::string& name);
   std::unique_ptr<Impl> impl_;
 };
+
+// Whether `address` names a PostgreSQL server (a postgresql:// or postgres:// URI, or a libpq
+// key=value string such as "host=/run/pg dbname=lab") rather than a file (docs/team.md#addresses).
+bool isServerAddress(std::string_view address);
+// `address` as it may be shown in messages and output: a password in it replaced by "***".
+std::string shownAddress(std::string_view address);
 
 // Fast 64-bit checksum of bytes as 16 hex digits (not cryptographic; detects re-imports).
 std::string checksumHex(std::string_view bytes);

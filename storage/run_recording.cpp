@@ -15,6 +15,30 @@ using namespace importing;
 
 namespace {
 
+// A step row read by "SELECT x, y, theta, v, omega, blocked, sensors, extra", with `truth`; valid
+// until `s` steps on.
+StepRow stepRowAt(const db::Statement& s, std::int64_t runId, std::int64_t step,
+                  std::int64_t truth) {
+  StepRow row;
+  row.runId = runId;
+  row.step = step;
+  row.x = s.columnDouble(0);
+  row.y = s.columnDouble(1);
+  row.theta = s.columnDouble(2);
+  row.v = s.columnDouble(3);
+  row.omega = s.columnDouble(4);
+  row.blocked = s.columnInt(5);
+  row.sensors = s.columnBlob(6);
+  row.sensorBytes = s.columnBytes(6);
+  if (!s.columnIsNull(7)) {
+    row.extra = s.columnBlob(7);
+    row.extraBytes = s.columnBytes(7);
+  }
+  row.hasTruth = true;
+  row.truth = truth;
+  return row;
+}
+
 // A run's stored state as the recorder needs it.
 struct StoredRun {
   std::int64_t steps = 0;
@@ -37,11 +61,18 @@ StoredRun storedRun(RunDatabase::Impl& impl, std::int64_t runId) {
 
 // Sets the run's step count and recomputes its row checksum from the row as stored.
 void updateRunChecksum(RunDatabase::Impl& impl, std::int64_t runId, std::int64_t steps) {
-  impl.statement(
-          "UPDATE runs SET step_count = ?1, crc = tactile_run_crc(id, name, ?1, has_truth, "
-          "metadata, extra_columns) WHERE id = ?2")
+  db::Statement& row =
+      impl.statement("SELECT name, has_truth, metadata, extra_columns FROM runs WHERE id = ?");
+  row.bind(1, runId);
+  if (!row.step()) throw db::DbError("no run with id " + std::to_string(runId));
+  const std::int64_t crc =
+      runChecksum(runId, row.columnTextView(0), steps, row.columnInt(1) != 0, row.columnBlob(2),
+                  row.columnBytes(2), row.columnBlob(3), row.columnBytes(3));
+  row.reset();
+  impl.statement("UPDATE runs SET step_count = ?, crc = ? WHERE id = ?")
       .bind(1, steps)
-      .bind(2, runId)
+      .bind(2, crc)
+      .bind(3, runId)
       .run();
 }
 
@@ -109,8 +140,9 @@ void writeSummaryBlocks(RunDatabase::Impl& impl, std::int64_t runId, const RunDa
       }
       const std::size_t bytes = encodeValues(values.data(), kSummaryValues, encoded.data());
       impl.statement(
-              "INSERT OR REPLACE INTO step_blocks(run_id, level, block, minmax, crc) "
-              "VALUES(?, ?, ?, ?, ?)")
+              "INSERT INTO step_blocks(run_id, level, block, minmax, crc) "
+              "VALUES(?, ?, ?, ?, ?) ON CONFLICT(run_id, level, block) DO UPDATE SET "
+              "minmax = excluded.minmax, crc = excluded.crc")
           .bind(1, runId)
           .bind(2, static_cast<std::int64_t>(level))
           .bind(3, static_cast<std::int64_t>(block))
@@ -166,7 +198,9 @@ Result<std::int64_t> RunDatabase::beginRun(const std::string& name, const RunDat
     taken.reset();
     std::int64_t sceneId = 0;
     if (!head.sceneJson.empty()) {
-      impl_->statement("INSERT OR IGNORE INTO scenes(name, checksum, json) VALUES(?, ?, ?)")
+      impl_
+          ->statement(
+              "INSERT INTO scenes(name, checksum, json) VALUES(?, ?, ?) ON CONFLICT DO NOTHING")
           .bind(1, head.sceneName)
           .bind(2, head.sceneChecksum)
           .bind(3, head.sceneJson)
@@ -182,7 +216,7 @@ Result<std::int64_t> RunDatabase::beginRun(const std::string& name, const RunDat
     db::Statement& insert = impl_->statement(
         "INSERT INTO runs(name, source_file, checksum, scene, scene_id, subject, outcome, dt, "
         "step_count, has_truth, metadata, extra_columns, imported_at) "
-        "VALUES(?, ?, 'recording', ?, ?, ?, ?, ?, 0, ?, ?, ?, ?)");
+        "VALUES(?, ?, 'recording', ?, ?, ?, ?, ?, 0, ?, ?, ?, ?) RETURNING id");
     insert.bind(1, name).bind(2, name);
     if (head.sceneValue.empty()) {
       insert.bindNull(3);
@@ -208,9 +242,8 @@ Result<std::int64_t> RunDatabase::beginRun(const std::string& name, const RunDat
     insert.bind(8, withTruth ? 1 : 0)
         .bindBlob(9, head.metadataBlob.data(), head.metadataBlob.size())
         .bindBlob(10, head.extraColumnsBlob.data(), head.extraColumnsBlob.size())
-        .bind(11, utcNow())
-        .run();
-    const std::int64_t runId = impl_->connection.lastInsertRowId();
+        .bind(11, utcNow());
+    const std::int64_t runId = insert.runReturningId();
     updateRunChecksum(*impl_, runId, 0);
     transaction.commit();
     return runId;
@@ -249,11 +282,17 @@ Status RunDatabase::finishRun(std::int64_t runId, const RunData& run) {
         if (s.columnIsNull(1) || s.columnInt(1) != want) changed.emplace_back(step, want);
       }
       s.reset();
-      db::Statement& update = impl_->statement(
-          "UPDATE steps SET truth = ?1, crc = tactile_step_crc(run_id, step, x, y, theta, v, "
-          "omega, blocked, sensors, extra, ?1) WHERE run_id = ?2 AND step = ?3");
+      db::Statement& read = impl_->statement(
+          "SELECT x, y, theta, v, omega, blocked, sensors, extra FROM steps "
+          "WHERE run_id = ? AND step = ?");
+      db::Statement& update =
+          impl_->statement("UPDATE steps SET truth = ?, crc = ? WHERE run_id = ? AND step = ?");
       for (const auto& [step, packed] : changed) {
-        update.bind(1, packed).bind(2, runId).bind(3, step).run();
+        read.bind(1, runId).bind(2, step);
+        if (!read.step()) throw db::DbError("step " + std::to_string(step) + " vanished");
+        const std::int64_t crc = stepChecksum(stepRowAt(read, runId, step, packed));
+        read.reset();
+        update.bind(1, packed).bind(2, crc).bind(3, runId).bind(4, step).run();
       }
     }
     std::vector<std::string> pairs;

@@ -6,16 +6,18 @@
 
 namespace tactile::storage::importing {
 
-void writeStepChunk(RunDatabase::Impl& impl, std::int64_t runId, const StepChunk& chunk,
-                    bool hasTruth, std::int64_t failAfterSteps) {
-  db::Statement& step = impl.statement(
-      "INSERT INTO steps(run_id, step, x, y, theta, v, omega, blocked, sensors, extra, truth, crc) "
-      "VALUES(?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?)");
+namespace {
+
+// Binds and writes the chunk's rows to `target`: a cached INSERT statement (SQLite) or a bulk row
+// writer (PostgreSQL's COPY); both take the same 1-based columns.
+template <class Target, class Emit>
+void writeRows(Target& target, Emit emit, std::int64_t runId, const StepChunk& chunk, bool hasTruth,
+               std::int64_t failAfterSteps) {
   const RunData& rows = chunk.rows;
   const bool hasExtra = !chunk.extraBlobs.empty();
-  step.bind(1, runId);
-  if (!hasExtra) step.bindNull(10);
-  if (!hasTruth) step.bindNull(11);
+  target.bind(1, runId);
+  if (!hasExtra) target.bindNull(10);
+  if (!hasTruth) target.bindNull(11);
   StepRow row;
   row.runId = runId;
   row.hasTruth = hasTruth;
@@ -38,7 +40,8 @@ void writeStepChunk(RunDatabase::Impl& impl, std::int64_t runId, const StepChunk
       row.extraBytes = chunk.extraBlobs[i].size();
     }
     if (hasTruth) row.truth = chunk.packedTruth[i];
-    step.bind(2, row.step)
+    target.bind(1, runId)
+        .bind(2, row.step)
         .bind(3, row.x)
         .bind(4, row.y)
         .bind(5, row.theta)
@@ -46,11 +49,32 @@ void writeStepChunk(RunDatabase::Impl& impl, std::int64_t runId, const StepChunk
         .bind(7, row.omega)
         .bind(8, row.blocked)
         .bindBlob(9, row.sensors, row.sensorBytes);
-    if (hasExtra) step.bindBlob(10, row.extra, row.extraBytes);
-    if (hasTruth) step.bind(11, row.truth);
-    step.bind(12, static_cast<std::int64_t>(stepChecksum(row)));
-    step.step();
+    if (hasExtra) target.bindBlob(10, row.extra, row.extraBytes);
+    if (hasTruth) target.bind(11, row.truth);
+    target.bind(12, static_cast<std::int64_t>(stepChecksum(row)));
+    emit();
   }
+}
+
+constexpr const char* kStepColumns =
+    "run_id, step, x, y, theta, v, omega, blocked, sensors, extra, truth, crc";
+
+}  // namespace
+
+void writeStepChunk(RunDatabase::Impl& impl, std::int64_t runId, const StepChunk& chunk,
+                    bool hasTruth, std::int64_t failAfterSteps) {
+  if (!impl.connection.isSqlite()) {
+    db::RowWriter bulk(impl.connection, "steps", kStepColumns, 12);
+    writeRows(
+        bulk, [&] { bulk.add(); }, runId, chunk, hasTruth, failAfterSteps);
+    bulk.finish();
+    return;
+  }
+  db::Statement& step = impl.statement(
+      "INSERT INTO steps(run_id, step, x, y, theta, v, omega, blocked, sensors, extra, truth, crc) "
+      "VALUES(?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?)");
+  writeRows(
+      step, [&] { step.step(); }, runId, chunk, hasTruth, failAfterSteps);
   step.reset();
 }
 
@@ -78,14 +102,15 @@ ImportOutcome writeRun(RunDatabase::Impl& impl, FileHead& head,
     // The steps and block rows reference the run row written in this same transaction, so their
     // per-row foreign-key lookups can be skipped; the pragma only works outside a transaction and
     // is restored on every path.
+    // (SQLite only: a PostgreSQL server checks them once per COPY batch anyway.)
     struct ForeignKeysOff {
       db::Connection& c;
       explicit ForeignKeysOff(db::Connection& connection) : c(connection) {
-        c.exec("PRAGMA foreign_keys = OFF");
+        if (c.isSqlite()) c.exec("PRAGMA foreign_keys = OFF");
       }
       ~ForeignKeysOff() {
         try {
-          c.exec("PRAGMA foreign_keys = ON");
+          if (c.isSqlite()) c.exec("PRAGMA foreign_keys = ON");
         } catch (const std::exception&) {
         }
       }
@@ -128,7 +153,8 @@ ImportOutcome writeRun(RunDatabase::Impl& impl, FileHead& head,
 
     std::int64_t sceneId = 0;
     if (!head.sceneJson.empty()) {
-      impl.statement("INSERT OR IGNORE INTO scenes(name, checksum, json) VALUES(?, ?, ?)")
+      impl.statement(
+              "INSERT INTO scenes(name, checksum, json) VALUES(?, ?, ?) ON CONFLICT DO NOTHING")
           .bind(1, head.sceneName)
           .bind(2, head.sceneChecksum)
           .bind(3, head.sceneJson)
@@ -144,7 +170,7 @@ ImportOutcome writeRun(RunDatabase::Impl& impl, FileHead& head,
     db::Statement& insertRun = impl.statement(
         "INSERT INTO runs(name, source_file, checksum, scene, scene_id, subject, outcome, dt, "
         "step_count, has_truth, metadata, extra_columns, imported_at) "
-        "VALUES(?, ?, ?, ?, ?, ?, ?, ?, 0, ?, ?, ?, ?)");
+        "VALUES(?, ?, ?, ?, ?, ?, ?, ?, 0, ?, ?, ?, ?) RETURNING id");
     insertRun.bind(1, head.name).bind(2, head.file).bind(3, head.checksum);
     if (head.sceneValue.empty()) {
       insertRun.bindNull(4);
@@ -171,9 +197,8 @@ ImportOutcome writeRun(RunDatabase::Impl& impl, FileHead& head,
     insertRun.bind(9, head.hasTruth ? 1 : 0)
         .bindBlob(10, head.metadataBlob.data(), head.metadataBlob.size())
         .bindBlob(11, head.extraColumnsBlob.data(), head.extraColumnsBlob.size())
-        .bind(12, now)
-        .run();
-    const std::int64_t runId = impl.connection.lastInsertRowId();
+        .bind(12, now);
+    const std::int64_t runId = insertRun.runReturningId();
 
     SummaryBuilder summary;
     std::int64_t steps = 0;
@@ -197,22 +222,32 @@ ImportOutcome writeRun(RunDatabase::Impl& impl, FileHead& head,
     }
 
     const std::vector<EncodedBlobs> levels = encodeSummaryBlocks(std::move(summary).finish());
-    db::Statement& block = impl.statement(
-        "INSERT INTO step_blocks(run_id, level, block, minmax, crc) VALUES(?, ?, ?, ?, ?)");
-    block.bind(1, runId);
-    for (std::size_t level = 0; level < levels.size(); ++level) {
-      const EncodedBlobs& blobs = levels[level];
-      block.bind(2, static_cast<std::int64_t>(level));
-      for (std::size_t b = 0; b < blobs.size(); ++b) {
-        block.bind(3, static_cast<std::int64_t>(b))
-            .bindBlob(4, blobs.data(b), blobs.bytes(b))
-            .bind(5, static_cast<std::int64_t>(blockChecksum(
-                         runId, static_cast<std::int64_t>(level), static_cast<std::int64_t>(b),
-                         blobs.data(b), blobs.bytes(b))))
-            .step();
+    const auto writeBlocks = [&](auto& block, auto emit) {
+      block.bind(1, runId);
+      for (std::size_t level = 0; level < levels.size(); ++level) {
+        const EncodedBlobs& blobs = levels[level];
+        for (std::size_t b = 0; b < blobs.size(); ++b) {
+          block.bind(1, runId)
+              .bind(2, static_cast<std::int64_t>(level))
+              .bind(3, static_cast<std::int64_t>(b))
+              .bindBlob(4, blobs.data(b), blobs.bytes(b))
+              .bind(5, static_cast<std::int64_t>(blockChecksum(
+                           runId, static_cast<std::int64_t>(level), static_cast<std::int64_t>(b),
+                           blobs.data(b), blobs.bytes(b))));
+          emit();
+        }
       }
+    };
+    if (impl.connection.isSqlite()) {
+      db::Statement& block = impl.statement(
+          "INSERT INTO step_blocks(run_id, level, block, minmax, crc) VALUES(?, ?, ?, ?, ?)");
+      writeBlocks(block, [&] { block.step(); });
+      block.reset();
+    } else {
+      db::RowWriter block(impl.connection, "step_blocks", "run_id, level, block, minmax, crc", 5);
+      writeBlocks(block, [&] { block.add(); });
+      block.finish();
     }
-    block.reset();
     impl.statement("UPDATE runs SET step_count = ?, crc = ? WHERE id = ?")
         .bind(1, steps)
         .bind(2, static_cast<std::int64_t>(

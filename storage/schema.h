@@ -10,7 +10,7 @@
 #include <string>
 #include <string_view>
 
-#include "storage/sqlite_db.h"
+#include "storage/sqlite/sqlite_connection.h"
 
 namespace tactile::storage::db {
 

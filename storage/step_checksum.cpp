@@ -174,7 +174,7 @@ void registerChecksumFunctions(db::Connection& connection) {
   for (const Function& f :
        {Function{"tactile_step_crc", 11, sqlStepCrc}, Function{"tactile_block_crc", 4, sqlBlockCrc},
         Function{"tactile_run_crc", 6, sqlRunCrc}}) {
-    const int rc = sqlite3_create_function_v2(connection.handle(), f.name, f.arguments,
+    const int rc = sqlite3_create_function_v2(sqliteHandle(connection), f.name, f.arguments,
                                               SQLITE_UTF8 | SQLITE_DETERMINISTIC, nullptr, f.fn,
                                               nullptr, nullptr, nullptr);
     if (rc != SQLITE_OK) {

@@ -8,7 +8,7 @@
 #include <cstdint>
 #include <string_view>
 
-#include "storage/sqlite_db.h"
+#include "storage/sqlite/sqlite_connection.h"
 
 namespace tactile::storage {
 

@@ -174,7 +174,9 @@ void addRenameDelete(CLI::App* parent, const std::string& what, const std::strin
   auto renameArgs = std::make_shared<CatalogArgs>();
   CLI::App* ren =
       parent->add_subcommand("rename", "Rename a " + what + " (with its " + contents + ")");
-  ren->add_option("--db", renameArgs->db, "Database file (must exist)")->required();
+  ren->add_option("--db", renameArgs->db, "Database: a file or a PostgreSQL address (must exist)")
+      ->envname("TACTILE_DB")
+      ->required();
   ren->add_option("names", renameArgs->names, "The " + what + "'s name, then the new name")
       ->required()
       ->expected(2);
@@ -187,7 +189,9 @@ void addRenameDelete(CLI::App* parent, const std::string& what, const std::strin
   const std::string deleteHelp = "Delete " + what + "s by name with their " + contents +
                                  ", all in one transaction (an unknown name deletes nothing)";
   CLI::App* del = parent->add_subcommand("delete", deleteHelp);
-  del->add_option("--db", deleteArgs->db, "Database file (must exist)")->required();
+  del->add_option("--db", deleteArgs->db, "Database: a file or a PostgreSQL address (must exist)")
+      ->envname("TACTILE_DB")
+      ->required();
   del->add_option("names", deleteArgs->names, std::string("Names (A B or A,B)"))
       ->required()
       ->delimiter(',');
@@ -206,7 +210,9 @@ void registerCatalogVerbs(CLI::App& app) {
     auto listArgs = std::make_shared<CatalogArgs>();
     CLI::App* list =
         runs->add_subcommand("list", "List runs with their steps, scene and label sets");
-    list->add_option("--db", listArgs->db, "Database file (must exist; opened read-only)")
+    list->add_option("--db", listArgs->db,
+                     "Database: a file or a PostgreSQL address (must exist; opened read-only)")
+        ->envname("TACTILE_DB")
         ->required();
     list->add_flag("--json", listArgs->json,
                    R"(Print {"runs":[{"name","id","steps","scene","label_sets"}]})");
@@ -221,7 +227,9 @@ void registerCatalogVerbs(CLI::App& app) {
     auto listArgs = std::make_shared<CatalogArgs>();
     CLI::App* list = labels->add_subcommand(
         "list", "List label sets with their annotator, segment count and runs covered");
-    list->add_option("--db", listArgs->db, "Database file (must exist; opened read-only)")
+    list->add_option("--db", listArgs->db,
+                     "Database: a file or a PostgreSQL address (must exist; opened read-only)")
+        ->envname("TACTILE_DB")
         ->required();
     list->add_flag("--json", listArgs->json,
                    R"(Print {"label_sets":[{"name","id","annotator","segments","runs"}]})");
@@ -237,7 +245,9 @@ void registerCatalogVerbs(CLI::App& app) {
         "import",
         "Add a label file's segments to a set (created when absent); newest wins. Provenance "
         "lines must match the stored runs' step counts and checksums");
-    imp->add_option("--db", importArgs->db, "Database file")->required();
+    imp->add_option("--db", importArgs->db, "Database: a file or a PostgreSQL address")
+        ->envname("TACTILE_DB")
+        ->required();
     imp->add_option("--set", importArgs->set, "Label set name")->required();
     imp->add_option("file", importArgs->file, "Label file: .json, otherwise CSV")->required();
     imp->add_flag("--json", importArgs->json, R"(Print {"set","segments"})");
@@ -247,7 +257,9 @@ void registerCatalogVerbs(CLI::App& app) {
     auto exportArgs = std::make_shared<LabelArgs>();
     CLI::App* exp = labels->add_subcommand(
         "export", "Write a label set to a file, with each run's step count and checksum");
-    exp->add_option("--db", exportArgs->db, "Database file (must exist; opened read-only)")
+    exp->add_option("--db", exportArgs->db,
+                    "Database: a file or a PostgreSQL address (must exist; opened read-only)")
+        ->envname("TACTILE_DB")
         ->required();
     exp->add_option("--set", exportArgs->set, "Label set name")->required();
     exp->add_option("file", exportArgs->file, "Label file: .json, otherwise CSV")->required();

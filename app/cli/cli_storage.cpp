@@ -36,7 +36,8 @@ std::unique_ptr<RunDatabase> openDatabase(const std::string& path, OpenMode mode
   if (!db) {
     // Every open error names the file (Error::file); the CLI prints "DB: message".
     const Error& error = db.error();
-    throw std::runtime_error(error.file.empty() ? path + ": " + error.message : error.text());
+    throw std::runtime_error(error.file.empty() ? storage::shownAddress(path) + ": " + error.message
+                                                : error.text());
   }
   if (!db.value()->migrationBackup().empty()) {
     printWarning("migrated '" + path + "' to the current schema; the old file was copied to " +
@@ -49,7 +50,7 @@ std::unique_ptr<RunDatabase> openDatabase(const std::string& path, OpenMode mode
 // (Error::file), others (e.g. "no run named ...") get it here; errors about another file (an
 // output file) keep theirs.
 std::string databaseError(const std::string& dbPath, const Error& error) {
-  return error.file.empty() ? dbPath + ": " + error.message : error.text();
+  return error.file.empty() ? storage::shownAddress(dbPath) + ": " + error.message : error.text();
 }
 
 }  // namespace
@@ -267,20 +268,67 @@ int runCheck(const std::string& dbPath, bool json) {
 // Makes a new, empty database (or an empty file into one); an existing Tactile database is left
 // as it is (migrated when older). Anything else is refused unchanged.
 int runCreate(const std::string& dbPath, bool json) {
-  std::error_code ec;
-  const bool existed = fs::exists(dbPath, ec) && fs::file_size(dbPath, ec) > 0;
   auto db = openDatabaseOrCreate(dbPath);
+  const std::string shown = db->path().string();
   const storage::IntegrityReport report = db->check();
   if (json) {
-    printJson({{"db", dbPath},
-               {"created", !existed},
+    printJson({{"db", shown},
+               {"created", db->created()},
                {"schema_version", report.schemaVersion},
                {"runs", report.runs}});
-  } else if (existed) {
+  } else if (!db->created()) {
     std::printf("%s: already a Tactile database (schema version %d, %lld runs); left as it is\n",
-                dbPath.c_str(), report.schemaVersion, static_cast<long long>(report.runs));
+                shown.c_str(), report.schemaVersion, static_cast<long long>(report.runs));
   } else {
-    std::printf("created %s (schema version %d)\n", dbPath.c_str(), report.schemaVersion);
+    std::printf("created %s (schema version %d)\n", shown.c_str(), report.schemaVersion);
+  }
+  return kExitOk;
+}
+
+// ---- db copy -----------------------------------------------------------------------------------
+
+int runCopy(const std::string& from, const std::string& to, const std::vector<std::string>& runs,
+            const std::vector<std::string>& sets, bool json) {
+  if (storage::shownAddress(from) == storage::shownAddress(to)) {
+    throw UsageError("--from and --to name the same database");
+  }
+  auto source = openDatabaseForRead(from);
+  auto target = openDatabaseOrCreate(to);
+  storage::CopyOptions options;
+  options.runs = splitNames(runs);
+  options.sets = splitNames(sets);
+  const auto started = std::chrono::steady_clock::now();
+  auto report = target->copyFrom(*source, options);
+  if (!report) throw std::runtime_error(report.errorText());
+  const double seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+  for (const std::string& warning : report->warnings)
+    printWarning(warning);
+  if (json) {
+    printJson({{"from", source->path().string()},
+               {"to", target->path().string()},
+               {"runs_copied", report->runsCopied},
+               {"runs_present", report->runsPresent},
+               {"steps_copied", report->stepsCopied},
+               {"label_sets_created", report->setsCreated},
+               {"segments_copied", report->segmentsCopied},
+               {"segments_without_run", report->segmentsWithoutRun},
+               {"models_copied", report->modelsCopied},
+               {"sweeps_copied", report->sweepsCopied},
+               {"seconds", seconds}});
+  } else {
+    std::printf(
+        "%lld runs copied (%lld steps), %lld already there; %lld label segments copied, %lld "
+        "models, %lld sweeps; %.3f s\n",
+        static_cast<long long>(report->runsCopied), static_cast<long long>(report->stepsCopied),
+        static_cast<long long>(report->runsPresent), static_cast<long long>(report->segmentsCopied),
+        static_cast<long long>(report->modelsCopied), static_cast<long long>(report->sweepsCopied),
+        seconds);
+    if (report->segmentsWithoutRun > 0) {
+      printWarning(std::to_string(report->segmentsWithoutRun) +
+                   " label segments not copied: their runs are not in the target (copy the runs "
+                   "too)");
+    }
   }
   return kExitOk;
 }
@@ -293,6 +341,7 @@ struct BenchArgs {
   std::int64_t bigSteps = 1000000;
   int repeats = 15;
   std::string dir;
+  std::string server;  // also import into this database (a PostgreSQL address)
   bool keep = false;
   bool compare = true;
   bool json = false;
@@ -338,6 +387,80 @@ double timeSqliteShellImport(const std::vector<fs::path>& files, const fs::path&
   const double seconds = secondsSince(t0);
   cpuOut = cpuSeconds(RUSAGE_CHILDREN) - cpu0;
   return rc == 0 ? seconds : -1.0;
+}
+
+// The server figures of `bench storage --server`: the same imports into a PostgreSQL database,
+// the big run copied into it from the file, and what the workbench reads to open that run.
+void benchServer(const BenchArgs& a, const std::vector<fs::path>& files, const fs::path& big,
+                 RunDatabase& file, nlohmann::json& result) {
+  auto server = openDatabaseOrCreate(a.server);
+  if (!server->onServer()) throw UsageError("--server must be a PostgreSQL address");
+  auto runs = server->listRuns();
+  if (!runs) throw std::runtime_error(runs.errorText());
+  if (!runs->empty()) {
+    throw UsageError(
+        "--server must name a database without runs (the benchmark deletes what it "
+        "imports)");
+  }
+  const auto timed = [](auto&& fn) {
+    const auto t0 = std::chrono::steady_clock::now();
+    fn();
+    return secondsSince(t0);
+  };
+  const double cpu0 = cpuSeconds(RUSAGE_SELF);
+  const double many = timed([&] {
+    for (const auto& outcome : server->importFiles(files)) {
+      if (outcome.status != ImportStatus::Imported) throw std::runtime_error(outcome.message);
+    }
+  });
+  result["server_import_seconds"] = many;
+  result["server_import_cpu_seconds"] = cpuSeconds(RUSAGE_SELF) - cpu0;
+  result["server_import_steps_per_second"] = static_cast<double>(a.steps) / many;
+  const double single = timed([&] {
+    const auto outcomes = server->importFiles({big});
+    if (outcomes[0].status != ImportStatus::Imported) throw std::runtime_error(outcomes[0].message);
+  });
+  result["server_single_file_import_seconds"] = single;
+  result["server_single_file_steps_per_second"] = static_cast<double>(a.bigSteps) / single;
+  if (Status gone = server->deleteRuns({"big"}); !gone) throw std::runtime_error(gone.errorText());
+  storage::CopyOptions only;
+  only.runs = {"big"};
+  only.models = false;
+  only.sweeps = false;
+  const double copy = timed([&] {
+    auto copied = server->copyFrom(file, only);
+    if (!copied) throw std::runtime_error(copied.errorText());
+  });
+  result["server_copy_big_run_seconds"] = copy;
+  const auto run = server->findRun("big");
+  if (!run) throw std::runtime_error(run.errorText());
+  // What the workbench reads to paint a run first: the track, a summary, the cursor's step.
+  const double open = timed([&] {
+    if (!server->loadTrack(run->id) || !server->loadSummary(run->id, 0, -1, 2000) ||
+        !server->loadWindow(run->id, 0, 1)) {
+      throw std::runtime_error("reading the run from the server failed");
+    }
+  });
+  result["server_open_run_reads_seconds"] = open;
+  std::vector<double> cursorMs;
+  std::mt19937_64 rng(5);
+  for (int r = 0; r < a.repeats; ++r) {
+    const std::int64_t step = std::uniform_int_distribution<std::int64_t>(0, a.bigSteps - 1)(rng);
+    const auto t0 = std::chrono::steady_clock::now();
+    if (!server->loadWindow(run->id, step, 1)) throw std::runtime_error("window failed");
+    cursorMs.push_back(1e3 * secondsSince(t0));
+  }
+  result["server_cursor_step_ms_median"] = median(cursorMs);
+  if (!a.keep) {
+    std::vector<std::string> names;
+    const auto stored = server->listRuns();
+    if (!stored) throw std::runtime_error(stored.errorText());
+    for (const auto& info : stored.value())
+      names.push_back(info.name);
+    if (Status gone = names.empty() ? Status::success() : server->deleteRuns(names); !gone) {
+      throw std::runtime_error(gone.errorText());
+    }
+  }
 }
 
 int runBenchStorage(const BenchArgs& a) {
@@ -447,6 +570,7 @@ int runBenchStorage(const BenchArgs& a) {
     result["load_whole_run_seconds"] = secondsSince(t0);
     if (!whole) throw std::runtime_error(whole.errorText());
   }
+  if (!a.server.empty()) benchServer(a, files, big, *db, result);
   db.reset();
   if (!a.keep) {
     // Only what this benchmark wrote; a folder given by the user stays.
@@ -476,6 +600,17 @@ int runBenchStorage(const BenchArgs& a) {
           result["sqlite3_shell_cpu_seconds"].get<double>(),
           result["speedup_vs_sqlite3_shell"].get<double>());
     }
+    if (result.contains("server_import_seconds")) {
+      std::printf(
+          "server: import, %d files: %.3f s = %.0f steps/s; 1 file: %.0f steps/s; copy of the "
+          "big run from the file: %.3f s; reads to open it: %.3f s; one cursor step: %.2f ms\n",
+          a.files, result["server_import_seconds"].get<double>(),
+          result["server_import_steps_per_second"].get<double>(),
+          result["server_single_file_steps_per_second"].get<double>(),
+          result["server_copy_big_run_seconds"].get<double>(),
+          result["server_open_run_reads_seconds"].get<double>(),
+          result["server_cursor_step_ms_median"].get<double>());
+    }
     std::printf("import, 1 file, %lld steps: %.3f s wall = %.0f steps/s, %.3f s CPU\n",
                 static_cast<long long>(a.bigSteps),
                 result["single_file_import_seconds"].get<double>(),
@@ -495,7 +630,10 @@ void registerStorageVerbs(CLI::App& app, CLI::App& bench) {
   {
     auto args = std::make_shared<ImportArgs>();
     CLI::App* cmd = app.add_subcommand("import", "Import run CSV files into a database");
-    cmd->add_option("--db", args->db, "Database file (created when absent)")->required();
+    cmd->add_option("--db", args->db,
+                    "Database: a file (created when absent) or a PostgreSQL address")
+        ->envname("TACTILE_DB")
+        ->required();
     cmd->add_option("files", args->files,
                     "Run files, or folders of *.csv run files (A B; a path is never split at a "
                     "comma). A name already stored with other content fails that file only")
@@ -514,7 +652,9 @@ void registerStorageVerbs(CLI::App& app, CLI::App& bench) {
     auto out = std::make_shared<std::string>();
     auto json = std::make_shared<bool>(false);
     CLI::App* cmd = app.add_subcommand("export-run", "Export a stored run back to a run CSV file");
-    cmd->add_option("--db", *db, "Database file")->required();
+    cmd->add_option("--db", *db, "Database: a file or a PostgreSQL address")
+        ->envname("TACTILE_DB")
+        ->required();
     cmd->add_option("--run", *run, "Run name")->required();
     cmd->add_option("--out", *out, "Output run file (written atomically)")->required();
     cmd->add_flag("--json", *json, R"(Print {"run","id","steps","out"})");
@@ -529,7 +669,9 @@ void registerStorageVerbs(CLI::App& app, CLI::App& bench) {
     auto args = std::make_shared<AutoArgs>();
     CLI::App* cmd = app.add_subcommand(
         "autolabel", "Turn runs' truth columns into a label set (NoContact ranges included)");
-    cmd->add_option("--db", args->db, "Database file")->required();
+    cmd->add_option("--db", args->db, "Database: a file or a PostgreSQL address")
+        ->envname("TACTILE_DB")
+        ->required();
     cmd->add_option("--run", args->run, "Run name");
     cmd->add_flag("--all", args->all, "Every run with truth columns");
     cmd->add_option("--set", args->set, "Label set name (created when absent)")->required();
@@ -545,16 +687,40 @@ void registerStorageVerbs(CLI::App& app, CLI::App& bench) {
     auto json = std::make_shared<bool>(false);
     CLI::App* check = dbCmd->add_subcommand(
         "check", "Check a database's integrity and schema version (opened read-only)");
-    check->add_option("--db", *path, "Database file")->required();
+    check->add_option("--db", *path, "Database: a file or a PostgreSQL address")
+        ->envname("TACTILE_DB")
+        ->required();
     check->add_flag("--json", *json, "Print a JSON report");
     setAction(check, [path, json] { return runCheck(*path, *json); });
     auto createPath = std::make_shared<std::string>();
     auto createJson = std::make_shared<bool>(false);
     CLI::App* create = dbCmd->add_subcommand(
         "create", "Create an empty database (the verbs that read a database never create one)");
-    create->add_option("--db", *createPath, "Database file to create")->required();
+    create
+        ->add_option("--db", *createPath,
+                     "Database to create: a file, or a PostgreSQL address (an empty database)")
+        ->envname("TACTILE_DB")
+        ->required();
     create->add_flag("--json", *createJson, "Print a JSON summary");
     setAction(create, [createPath, createJson] { return runCreate(*createPath, *createJson); });
+    struct CopyArgs {
+      std::string from, to;
+      std::vector<std::string> runs, sets;
+      bool json = false;
+    };
+    auto copyArgs = std::make_shared<CopyArgs>();
+    CLI::App* copy = dbCmd->add_subcommand(
+        "copy",
+        "Copy runs, label sets, models and sweeps between two databases (files or PostgreSQL "
+        "servers, either way); a second copy adds nothing");
+    copy->add_option("--from", copyArgs->from, "Source database (opened read-only)")->required();
+    copy->add_option("--to", copyArgs->to, "Target database (created when absent)")->required();
+    copy->add_option("--runs", copyArgs->runs, "Only these runs (names, comma-separated)");
+    copy->add_option("--sets", copyArgs->sets, "Only these label sets (names, comma-separated)");
+    copy->add_flag("--json", copyArgs->json, "Print a JSON summary");
+    setAction(copy, [copyArgs] {
+      return runCopy(copyArgs->from, copyArgs->to, copyArgs->runs, copyArgs->sets, copyArgs->json);
+    });
   }
   {
     auto args = std::make_shared<BenchArgs>();
@@ -565,6 +731,9 @@ void registerStorageVerbs(CLI::App& app, CLI::App& bench) {
     cmd->add_option("--big-steps", args->bigSteps, "Steps of the big run for windows/summaries");
     cmd->add_option("--repeats", args->repeats, "Window and summary loads to take the median of");
     cmd->add_option("--dir", args->dir, "Work folder (default: a new temporary folder)");
+    cmd->add_option("--server", args->server,
+                    "Also import into this PostgreSQL database (an address; it must hold no "
+                    "runs), copy the big run into it and read it back, timed beside the file");
     cmd->add_flag("--keep", args->keep, "Keep the generated files and database");
     cmd->add_flag("!--no-compare", args->compare, "Skip the sqlite3 shell comparison");
     cmd->add_flag("--json", args->json, "Print the figures as JSON");

@@ -210,7 +210,9 @@ int sweepsDelete(const Common& c, std::vector<std::int64_t> ids) {
 }
 
 CLI::App* withCommon(CLI::App* cmd, Common& c) {
-  cmd->add_option("--db", c.db, "Database file")->required();
+  cmd->add_option("--db", c.db, "Database: a file or a PostgreSQL address")
+      ->envname("TACTILE_DB")
+      ->required();
   cmd->add_flag("--json", c.json, "Print one JSON object");
   return cmd;
 }

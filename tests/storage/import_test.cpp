@@ -7,7 +7,7 @@
 
 #include "base/file_text.h"
 #include "run/run_csv.h"
-#include "storage/sqlite_db.h"
+#include "storage/sqlite/sqlite_connection.h"
 #include "storage_test_util.h"
 
 namespace tactile::storage {

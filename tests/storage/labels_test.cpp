@@ -18,10 +18,12 @@ struct Range {
   bool operator==(const Range&) const = default;
 };
 
-class LabelsTest : public ::testing::Test {
+class LabelsTest : public ::testing::TestWithParam<test::Backend> {
  protected:
   void SetUp() override {
-    db_ = test::openDb(dir_ / "labels.db");
+    const std::string address = test::databaseAddress(GetParam(), dir_, "labels.db");
+    if (address.empty()) GTEST_SKIP() << "no PostgreSQL test server (the tests start one in ctest)";
+    db_ = test::openDb(address);
     ASSERT_NE(db_, nullptr);
     const auto a = db_->importRun(makeRun(200, true, 1), "runA");
     const auto b = db_->importRun(makeRun(100, false, 2), "runB");
@@ -68,27 +70,27 @@ constexpr auto kWall = ContactClass::Wall;
 constexpr auto kCorner = ContactClass::Corner;
 constexpr auto kNone = ContactClass::NoContact;
 
-TEST_F(LabelsTest, NewerSegmentInsideSplitsTheOlderOne) {
+TEST_P(LabelsTest, NewerSegmentInsideSplitsTheOlderOne) {
   add(10, 50, kWall);
   add(20, 30, kCorner);
   EXPECT_EQ(ranges(), (std::vector<Range>{{10, 19, kWall}, {20, 30, kCorner}, {31, 50, kWall}}));
 }
 
-TEST_F(LabelsTest, NewerSegmentTrimsOverlappedEnds) {
+TEST_P(LabelsTest, NewerSegmentTrimsOverlappedEnds) {
   add(10, 30, kWall);
   add(40, 60, kWall);
   add(25, 45, kCorner);
   EXPECT_EQ(ranges(), (std::vector<Range>{{10, 24, kWall}, {25, 45, kCorner}, {46, 60, kWall}}));
 }
 
-TEST_F(LabelsTest, NewerSegmentRemovesCoveredOnes) {
+TEST_P(LabelsTest, NewerSegmentRemovesCoveredOnes) {
   add(10, 20, kWall);
   add(30, 40, kCorner);
   add(0, 199, kNone);
   EXPECT_EQ(ranges(), (std::vector<Range>{{0, 199, kNone}}));
 }
 
-TEST_F(LabelsTest, OtherGroupsRunsAndSetsAreUntouched) {
+TEST_P(LabelsTest, OtherGroupsRunsAndSetsAreUntouched) {
   add(0, 100, kWall, SensorGroup::Left);
   add(0, 50, kWall, SensorGroup::Front, runB_);
   auto other = db_->createLabelSet("other");
@@ -100,7 +102,7 @@ TEST_F(LabelsTest, OtherGroupsRunsAndSetsAreUntouched) {
   EXPECT_EQ(db_->segments(set_, runB_)->size(), 1u);
 }
 
-TEST_F(LabelsTest, SegmentOutsideTheRunIsRejected) {
+TEST_P(LabelsTest, SegmentOutsideTheRunIsRejected) {
   LabelSegment s;
   s.runId = runA_;
   s.firstStep = 150;
@@ -112,7 +114,7 @@ TEST_F(LabelsTest, SegmentOutsideTheRunIsRejected) {
   EXPECT_TRUE(db_->segments(set_)->empty());
 }
 
-TEST_F(LabelsTest, SegmentByRunName) {
+TEST_P(LabelsTest, SegmentByRunName) {
   LabelSegment s;
   s.run = "runB";
   s.firstStep = 1;
@@ -123,7 +125,7 @@ TEST_F(LabelsTest, SegmentByRunName) {
   EXPECT_FALSE(db_->addSegment(set_, s).ok());
 }
 
-TEST_F(LabelsTest, ChangeKeepsTheIdAndWinsOverItsNewRange) {
+TEST_P(LabelsTest, ChangeKeepsTheIdAndWinsOverItsNewRange) {
   const std::int64_t a = add(0, 10, kWall);
   add(20, 30, kWall);
   LabelSegment changed;
@@ -140,14 +142,14 @@ TEST_F(LabelsTest, ChangeKeepsTheIdAndWinsOverItsNewRange) {
   EXPECT_TRUE(found);
 }
 
-TEST_F(LabelsTest, RemoveSegment) {
+TEST_P(LabelsTest, RemoveSegment) {
   const std::int64_t a = add(0, 10, kWall);
   ASSERT_TRUE(db_->removeSegment(a).ok());
   EXPECT_TRUE(ranges().empty());
   EXPECT_FALSE(db_->removeSegment(a).ok());
 }
 
-TEST_F(LabelsTest, RenameCopyDelete) {
+TEST_P(LabelsTest, RenameCopyDelete) {
   add(0, 10, kWall);
   ASSERT_TRUE(db_->renameLabelSet(set_, "renamed").ok());
   EXPECT_FALSE(db_->findLabelSet("main").ok());
@@ -166,12 +168,12 @@ TEST_F(LabelsTest, RenameCopyDelete) {
   EXPECT_FALSE(db_->deleteLabelSet(set_).ok());
 }
 
-TEST_F(LabelsTest, DuplicateSetNameIsRejected) {
+TEST_P(LabelsTest, DuplicateSetNameIsRejected) {
   EXPECT_FALSE(db_->createLabelSet("main").ok());
   EXPECT_FALSE(db_->createLabelSet("").ok());
 }
 
-TEST_F(LabelsTest, CsvAndJsonFilesRoundTrip) {
+TEST_P(LabelsTest, CsvAndJsonFilesRoundTrip) {
   add(0, 10, kWall);
   add(11, 20, kCorner, SensorGroup::RearRightCorner);
   add(3, 4, kWall, SensorGroup::Back, runB_);
@@ -195,7 +197,7 @@ TEST_F(LabelsTest, CsvAndJsonFilesRoundTrip) {
   }
 }
 
-TEST_F(LabelsTest, BadLabelFileChangesNothingAndNamesTheLine) {
+TEST_P(LabelsTest, BadLabelFileChangesNothingAndNamesTheLine) {
   std::ofstream(dir_ / "bad.csv") << "run,group,first_step,last_step,class\n"
                                      "runA,F,0,10,Wall\n"
                                      "runA,F,11,20,Wal\n";
@@ -205,7 +207,7 @@ TEST_F(LabelsTest, BadLabelFileChangesNothingAndNamesTheLine) {
   EXPECT_FALSE(db_->findLabelSet("fresh").ok());
 }
 
-TEST_F(LabelsTest, LabelFileWithUnknownRunChangesNothing) {
+TEST_P(LabelsTest, LabelFileWithUnknownRunChangesNothing) {
   std::ofstream(dir_ / "unknown.csv") << "run,group,first_step,last_step,class\n"
                                          "runA,F,0,10,Wall\n"
                                          "ghost,F,0,10,Wall\n";
@@ -216,7 +218,7 @@ TEST_F(LabelsTest, LabelFileWithUnknownRunChangesNothing) {
   EXPECT_TRUE(db_->segments(set_)->empty());
 }
 
-TEST_F(LabelsTest, LaterRowsOfALabelFileWin) {
+TEST_P(LabelsTest, LaterRowsOfALabelFileWin) {
   std::ofstream(dir_ / "order.csv") << "run,group,first_step,last_step,class,annotator\n"
                                        "runA,F,0,50,Wall,bob\n"
                                        "runA,front,10,20,Corner,carol\n";
@@ -230,7 +232,7 @@ std::string readText(const std::filesystem::path& file) {
   return std::string(std::istreambuf_iterator<char>(in), {});
 }
 
-TEST_F(LabelsTest, ExportCarriesEachRunsStepsAndChecksum) {
+TEST_P(LabelsTest, ExportCarriesEachRunsStepsAndChecksum) {
   add(0, 10, kWall);
   add(3, 4, kWall, SensorGroup::Back, runB_);
   const std::string a = db_->findRun("runA")->checksum;
@@ -249,7 +251,7 @@ TEST_F(LabelsTest, ExportCarriesEachRunsStepsAndChecksum) {
             (std::vector<LabelRunProvenance>{{"runA", 200, a, 0}, {"runB", 100, b, 0}}));
 }
 
-TEST_F(LabelsTest, LabelsForAnotherRunOfTheSameNameAreRefused) {
+TEST_P(LabelsTest, LabelsForAnotherRunOfTheSameNameAreRefused) {
   add(0, 10, kWall);
   // The same set exported from a database whose runA is a different recording.
   TempDir other;
@@ -278,7 +280,7 @@ TEST_F(LabelsTest, LabelsForAnotherRunOfTheSameNameAreRefused) {
   }
 }
 
-TEST_F(LabelsTest, ProvenanceWithAnotherStepCountIsRefused) {
+TEST_P(LabelsTest, ProvenanceWithAnotherStepCountIsRefused) {
   const std::string checksum = db_->findRun("runA")->checksum;
   std::ofstream(dir_ / "steps.csv") << "# run runA steps 199 checksum " << checksum
                                     << "\nrun,group,first_step,last_step,class\nrunA,F,0,10,Wall\n";
@@ -296,7 +298,7 @@ TEST_F(LabelsTest, ProvenanceWithAnotherStepCountIsRefused) {
   EXPECT_TRUE(db_->importLabels("fresh", dir_ / "good.csv").ok());
 }
 
-TEST_F(LabelsTest, LabelFileSegmentPastTheLastStepIsRefused) {
+TEST_P(LabelsTest, LabelFileSegmentPastTheLastStepIsRefused) {
   std::ofstream(dir_ / "past.csv") << "run,group,first_step,last_step,class\n"
                                       "runB,F,0,10,Wall\n"
                                       "runB,F,90,100,Wall\n";
@@ -309,7 +311,7 @@ TEST_F(LabelsTest, LabelFileSegmentPastTheLastStepIsRefused) {
   EXPECT_FALSE(db_->findLabelSet("fresh").ok());
 }
 
-TEST_F(LabelsTest, AutolabelReproducesTheTruthExactly) {
+TEST_P(LabelsTest, AutolabelReproducesTheTruthExactly) {
   auto count = db_->autolabel(runA_, "truth");
   ASSERT_TRUE(count.ok()) << count.errorText();
   const RunData run = makeRun(200, true, 1);
@@ -331,7 +333,7 @@ TEST_F(LabelsTest, AutolabelReproducesTheTruthExactly) {
   EXPECT_EQ(db_->segments(db_->findLabelSet("truth")->id, runA_)->size(), segments.size());
 }
 
-TEST_F(LabelsTest, AutolabelWithoutTruthFails) {
+TEST_P(LabelsTest, AutolabelWithoutTruthFails) {
   auto count = db_->autolabel(runB_, "truth");
   ASSERT_FALSE(count.ok());
   EXPECT_NE(count.errorText().find("no truth"), std::string::npos);
@@ -367,6 +369,10 @@ TEST(LabelFiles, JsonWithBadFieldNamesTheSegment) {
   EXPECT_NE(parsed.errorText().find("segment 2"), std::string::npos) << parsed.errorText();
   EXPECT_FALSE(parsed.ok());
 }
+
+INSTANTIATE_TEST_SUITE_P(Backends, LabelsTest,
+                         ::testing::Values(test::Backend::Sqlite, test::Backend::Postgres),
+                         test::backendName);
 
 }  // namespace
 }  // namespace tactile::storage

@@ -19,10 +19,12 @@ namespace {
 
 using test::makeRun;
 
-class ReadTest : public ::testing::Test {
+class ReadTest : public ::testing::TestWithParam<test::Backend> {
  protected:
   void SetUp() override {
-    db_ = test::openDb(":memory:");
+    const std::string address = test::databaseAddress(GetParam(), dir_, "read.db");
+    if (address.empty()) GTEST_SKIP() << "no PostgreSQL test server (the tests start one in ctest)";
+    db_ = test::openDb(address);
     ASSERT_NE(db_, nullptr);
     run_ = makeRun(20000, true, 5, 37);
     const auto outcome = db_->importRun(run_, "long");
@@ -67,12 +69,13 @@ class ReadTest : public ::testing::Test {
     }
   }
 
+  test::TempDir dir_;
   std::unique_ptr<RunDatabase> db_;
   RunData run_;
   std::int64_t runId_ = 0;
 };
 
-TEST_F(ReadTest, WindowEqualsTheSliceOfTheRun) {
+TEST_P(ReadTest, WindowEqualsTheSliceOfTheRun) {
   auto window = db_->loadWindow(runId_, 1234, 500);
   ASSERT_TRUE(window.ok()) << window.errorText();
   EXPECT_EQ(window->firstStep, 1234);
@@ -92,38 +95,38 @@ TEST_F(ReadTest, WindowEqualsTheSliceOfTheRun) {
   }
 }
 
-TEST_F(ReadTest, WindowIsClippedAtTheEnd) {
+TEST_P(ReadTest, WindowIsClippedAtTheEnd) {
   auto window = db_->loadWindow(runId_, 19990, 100);
   ASSERT_TRUE(window.ok());
   EXPECT_EQ(window->data.stepCount(), 10u);
   EXPECT_EQ(window->data.x.back(), run_.x.back());
 }
 
-TEST_F(ReadTest, WindowBeyondTheEndIsEmpty) {
+TEST_P(ReadTest, WindowBeyondTheEndIsEmpty) {
   auto window = db_->loadWindow(runId_, 50000, 100);
   ASSERT_TRUE(window.ok());
   EXPECT_EQ(window->data.stepCount(), 0u);
 }
 
-TEST_F(ReadTest, WindowOfUnknownRunFails) {
+TEST_P(ReadTest, WindowOfUnknownRunFails) {
   EXPECT_FALSE(db_->loadWindow(999, 0, 10).ok());
 }
 
-TEST_F(ReadTest, WholeRunSummaryUsesBlocksAndIsExact) {
+TEST_P(ReadTest, WholeRunSummaryUsesBlocksAndIsExact) {
   auto summary = db_->loadSummary(runId_, 0, -1, 100);
   ASSERT_TRUE(summary.ok());
   EXPECT_GT(summary->blockSteps, 1);
   expectSummary(0, -1, 100);
 }
 
-TEST_F(ReadTest, NarrowRangeSummaryComesFromSteps) {
+TEST_P(ReadTest, NarrowRangeSummaryComesFromSteps) {
   auto summary = db_->loadSummary(runId_, 100, 180, 40);
   ASSERT_TRUE(summary.ok());
   EXPECT_EQ(summary->blockSteps, 1);
   expectSummary(100, 180, 40);
 }
 
-TEST_F(ReadTest, MoreBucketsThanStepsGivesOneStepEach) {
+TEST_P(ReadTest, MoreBucketsThanStepsGivesOneStepEach) {
   auto summary = db_->loadSummary(runId_, 10, 14, 100);
   ASSERT_TRUE(summary.ok());
   ASSERT_EQ(summary->buckets.size(), 5u);
@@ -132,7 +135,7 @@ TEST_F(ReadTest, MoreBucketsThanStepsGivesOneStepEach) {
   expectSummary(10, 14, 100);
 }
 
-TEST_F(ReadTest, RaggedRangesAtManyBucketCountsAreExact) {
+TEST_P(ReadTest, RaggedRangesAtManyBucketCountsAreExact) {
   std::mt19937 rng(7);
   for (int trial = 0; trial < 25; ++trial) {
     const std::int64_t first = std::uniform_int_distribution<std::int64_t>(0, 15000)(rng);
@@ -145,11 +148,11 @@ TEST_F(ReadTest, RaggedRangesAtManyBucketCountsAreExact) {
   }
 }
 
-TEST_F(ReadTest, SummaryNeedsABucket) {
+TEST_P(ReadTest, SummaryNeedsABucket) {
   EXPECT_FALSE(db_->loadSummary(runId_, 0, -1, 0).ok());
 }
 
-TEST_F(ReadTest, SummaryOfEmptyRangeHasNoBuckets) {
+TEST_P(ReadTest, SummaryOfEmptyRangeHasNoBuckets) {
   auto summary = db_->loadSummary(runId_, 30000, -1, 10);
   ASSERT_TRUE(summary.ok());
   EXPECT_TRUE(summary->buckets.empty());
@@ -309,7 +312,7 @@ TEST(RunCodec, MalformedValueBlobsAreRejected) {
 namespace tactile::storage {
 namespace {
 
-TEST_F(ReadTest, TrackEqualsTheRunsColumnsWithoutSensors) {
+TEST_P(ReadTest, TrackEqualsTheRunsColumnsWithoutSensors) {
   const auto track = db_->loadTrack(runId_);
   ASSERT_TRUE(track.ok()) << track.errorText();
   EXPECT_EQ(track->x, run_.x);
@@ -322,7 +325,7 @@ TEST_F(ReadTest, TrackEqualsTheRunsColumnsWithoutSensors) {
   EXPECT_FALSE(db_->loadTrack(runId_ + 100).ok());
 }
 
-TEST_F(ReadTest, TrackOfARunWithoutTruthHasNoTruth) {
+TEST_P(ReadTest, TrackOfARunWithoutTruthHasNoTruth) {
   const auto outcome = db_->importRun(makeRun(50, false), "plain");
   ASSERT_EQ(outcome.status, ImportStatus::Imported) << outcome.message;
   const auto track = db_->loadTrack(outcome.runId);
@@ -356,6 +359,10 @@ TEST(ReadSnapshot, AFailedReadDoesNotPinTheConnectionToAnOldSnapshot) {
   ASSERT_TRUE(a->createLabelSet("new").ok());             // written by the other connection
   EXPECT_TRUE(b->findLabelSet("new").ok());               // and seen at once
 }
+
+INSTANTIATE_TEST_SUITE_P(Backends, ReadTest,
+                         ::testing::Values(test::Backend::Sqlite, test::Backend::Postgres),
+                         test::backendName);
 
 }  // namespace
 }  // namespace tactile::storage

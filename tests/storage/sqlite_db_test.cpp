@@ -1,6 +1,6 @@
 #include <gtest/gtest.h>
 
-#include "storage/sqlite_db.h"
+#include "storage/sqlite/sqlite_connection.h"
 
 namespace tactile::storage::db {
 namespace {

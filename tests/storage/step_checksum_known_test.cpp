@@ -15,7 +15,7 @@
 #include <string>
 #include <vector>
 
-#include "storage/sqlite_db.h"
+#include "storage/sqlite/sqlite_connection.h"
 #include "storage/step_checksum.h"
 
 namespace tactile::storage {

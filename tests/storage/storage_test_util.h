@@ -3,9 +3,12 @@
 
 #include <gtest/gtest.h>
 
+#include <libpq-fe.h>
 #include <sqlite3.h>
 #include <unistd.h>
 #include <array>
+#include <atomic>
+#include <cstdlib>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
@@ -92,6 +95,61 @@ inline std::unique_ptr<RunDatabase> openDb(const std::filesystem::path& path) {
   auto db = RunDatabase::open(path);
   EXPECT_TRUE(db.ok()) << (db.ok() ? "" : db.errorText());
   return db.ok() ? std::move(db.value()) : nullptr;
+}
+
+// ---- the same tests on both backends ------------------------------------------------------------
+
+enum class Backend { Sqlite, Postgres };
+
+inline void PrintTo(Backend backend, std::ostream* out) {
+  *out << (backend == Backend::Sqlite ? "Sqlite" : "Postgres");
+}
+
+inline std::string backendName(const ::testing::TestParamInfo<Backend>& info) {
+  return info.param == Backend::Sqlite ? "Sqlite" : "Postgres";
+}
+
+// The test server's address (tests/support/pg_cluster.sh writes it to the file named by
+// TACTILE_TEST_PG_FILE; ctest starts and stops that server), or empty when none was started.
+inline std::string testServerAddress() {
+  const char* file = std::getenv("TACTILE_TEST_PG_FILE");
+  if (file == nullptr || *file == '\0') return {};
+  std::ifstream in(file);
+  std::string address;
+  std::getline(in, address);
+  return address;
+}
+
+// Runs SQL on the test server as its superuser. Fails the test on an error.
+inline void serverExec(const std::string& address, const std::string& sql) {
+  PGconn* conn = PQconnectdb(address.c_str());
+  ASSERT_EQ(PQstatus(conn), CONNECTION_OK) << PQerrorMessage(conn);
+  PGresult* result = PQexec(conn, sql.c_str());
+  const ExecStatusType status = PQresultStatus(result);
+  EXPECT_TRUE(status == PGRES_COMMAND_OK || status == PGRES_TUPLES_OK)
+      << PQresultErrorMessage(result) << " in: " << sql;
+  PQclear(result);
+  PQfinish(conn);
+}
+
+// A new, empty PostgreSQL schema on the test server and the address that works in it (its name
+// first on the search path), or empty when no server runs.
+inline std::string freshServerSchema() {
+  const std::string server = testServerAddress();
+  if (server.empty()) return {};
+  static std::atomic<int> counter{0};
+  std::random_device device;
+  const std::string schema = "t" + std::to_string(::getpid()) + "_" +
+                             std::to_string(device() % 100000) + "_" + std::to_string(++counter);
+  serverExec(server, "CREATE SCHEMA " + schema);
+  return server + "&options=-csearch_path%3D" + schema;
+}
+
+// Where a test's database lives: a file in `dir` for SQLite, a fresh schema on the test server for
+// PostgreSQL (empty when no server runs: the test skips itself).
+inline std::string databaseAddress(Backend backend, const TempDir& dir, const std::string& file) {
+  if (backend == Backend::Sqlite) return (dir.path() / file).string();
+  return freshServerSchema();
 }
 
 }  // namespace tactile::storage::test

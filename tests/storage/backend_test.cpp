@@ -1,0 +1,308 @@
+// The storage API on both backends (SQLite files and a PostgreSQL server), and copies between them.
+#include <gtest/gtest.h>
+
+#include <bit>
+
+#include "run/run_csv.h"
+#include "storage_test_util.h"
+
+namespace tactile::storage {
+namespace {
+
+using test::Backend;
+using test::makeRun;
+using test::TempDir;
+
+bool sameBits(double a, double b) {
+  return std::bit_cast<std::uint64_t>(a) == std::bit_cast<std::uint64_t>(b);
+}
+
+class BackendTest : public ::testing::TestWithParam<Backend> {
+ protected:
+  void SetUp() override {
+    address_ = test::databaseAddress(GetParam(), dir_, "backend.db");
+    if (address_.empty())
+      GTEST_SKIP() << "no PostgreSQL test server (the tests start one in ctest)";
+    db_ = test::openDb(address_);
+    ASSERT_NE(db_, nullptr);
+  }
+
+  TempDir dir_;
+  std::string address_;
+  std::unique_ptr<RunDatabase> db_;
+};
+
+TEST_P(BackendTest, ARunReadsBackValueForValueWindowTrackAndExport) {
+  const RunData run = makeRun(3000, true, 11);
+  const ImportOutcome outcome = db_->importRun(run, "alpha");
+  ASSERT_EQ(outcome.status, ImportStatus::Imported) << outcome.message;
+  auto loaded = db_->loadRun(outcome.runId);
+  ASSERT_TRUE(loaded.ok()) << loaded.errorText();
+  test::expectSameRun(run, loaded.value());
+  auto window = db_->loadWindow(outcome.runId, 1234, 10);
+  ASSERT_TRUE(window.ok()) << window.errorText();
+  ASSERT_EQ(window->data.stepCount(), 10U);
+  EXPECT_TRUE(sameBits(window->data.x[3], run.x[1237]));
+  auto track = db_->loadTrack(outcome.runId);
+  ASSERT_TRUE(track.ok()) << track.errorText();
+  ASSERT_EQ(track->stepCount(), 3000U);
+  EXPECT_TRUE(sameBits(track->omega[2999], run.omega[2999]));
+  ASSERT_TRUE(db_->exportRun(outcome.runId, dir_ / "alpha.csv").ok());
+  EXPECT_EQ(test::readBytes(dir_ / "alpha.csv"), formatRunCsv(run));
+  const IntegrityReport check = db_->check();
+  EXPECT_TRUE(check.ok) << (check.problems.empty() ? "" : check.problems[0]);
+  EXPECT_EQ(check.steps, 3000);
+  EXPECT_EQ(check.runs, 1);
+}
+
+TEST_P(BackendTest, TheSameFileTwiceIsStoredOnce) {
+  const RunData run = makeRun(50, false, 3);
+  const std::string text = formatRunCsv(run);
+  EXPECT_EQ(db_->importText(text, "a.csv").status, ImportStatus::Imported);
+  const ImportOutcome again = db_->importText(text, "b.csv");
+  EXPECT_EQ(again.status, ImportStatus::Skipped) << again.message;
+  EXPECT_EQ(db_->listRuns()->size(), 1U);
+}
+
+TEST_P(BackendTest, AFailedImportLeavesNothing) {
+  ImportOptions options;
+  options.failAfterSteps = 700;
+  const ImportOutcome failed =
+      db_->importText(formatRunCsv(makeRun(1000, true, 4)), "cut.csv", options);
+  EXPECT_EQ(failed.status, ImportStatus::Failed);
+  EXPECT_TRUE(db_->listRuns()->empty());
+  const IntegrityReport check = db_->check();
+  EXPECT_TRUE(check.ok) << (check.problems.empty() ? "" : check.problems[0]);
+  EXPECT_EQ(check.steps, 0);
+}
+
+TEST_P(BackendTest, ModelsAndSweepsKeepTheirText) {
+  ASSERT_TRUE(db_->addModel("m1", R"({"a":1})", "{}", R"({"rate":0.5})").ok());
+  EXPECT_FALSE(db_->addModel("m1", "{}", "{}", "{}").ok());
+  EXPECT_EQ(db_->loadModel("m1").value(), R"({"a":1})");
+  auto sweep = db_->createSweep("s1", R"({"state":"running"})");
+  ASSERT_TRUE(sweep.ok()) << sweep.errorText();
+  ASSERT_TRUE(db_->addSweepCell(sweep.value(), R"({"order":2})", R"({"rate":0.9})").ok());
+  auto cells = db_->sweepCells(sweep.value());
+  ASSERT_TRUE(cells.ok());
+  ASSERT_EQ(cells->size(), 1U);
+  EXPECT_EQ(cells->front().metricsJson, R"({"rate":0.9})");
+}
+
+TEST_P(BackendTest, RenameKeepsTheRowChecksumAndTheCatalogSortsByteWise) {
+  ASSERT_EQ(db_->importRun(makeRun(40, false, 5), "b_run").status, ImportStatus::Imported);
+  ASSERT_EQ(db_->importRun(makeRun(40, false, 6), "B_run").status, ImportStatus::Imported);
+  ASSERT_EQ(db_->importRun(makeRun(40, false, 7), "a_run").status, ImportStatus::Imported);
+  ASSERT_TRUE(db_->renameRun("a_run", "Z_run").ok());
+  auto runs = db_->listRuns();
+  ASSERT_TRUE(runs.ok());
+  std::vector<std::string> names;
+  for (const RunInfo& r : runs.value())
+    names.push_back(r.name);
+  EXPECT_EQ(names, (std::vector<std::string>{"B_run", "Z_run", "b_run"}));
+  const IntegrityReport check = db_->check();
+  EXPECT_TRUE(check.ok) << (check.problems.empty() ? "" : check.problems[0]);
+}
+
+TEST_P(BackendTest, DeletingARunTakesItsStepsSummariesAndLabelsWithIt) {
+  const auto a = db_->importRun(makeRun(500, true, 8), "a");
+  const auto b = db_->importRun(makeRun(300, true, 9), "b");
+  ASSERT_TRUE(db_->autolabel(a.runId, "truth").ok());
+  ASSERT_TRUE(db_->deleteRun(a.runId).ok());
+  ASSERT_TRUE(db_->deleteRuns({"b"}).ok());
+  const IntegrityReport check = db_->check();
+  EXPECT_TRUE(check.ok) << (check.problems.empty() ? "" : check.problems[0]);
+  EXPECT_EQ(check.runs, 0);
+  EXPECT_EQ(check.steps, 0);
+  auto sets = db_->labelSetCatalog();
+  ASSERT_TRUE(sets.ok());
+  ASSERT_EQ(sets->size(), 1U);
+  EXPECT_TRUE(sets->front().runs.empty());
+}
+
+INSTANTIATE_TEST_SUITE_P(Backends, BackendTest,
+                         ::testing::Values(Backend::Sqlite, Backend::Postgres), test::backendName);
+
+// ---- copies ------------------------------------------------------------------------------------
+
+class CopyTest : public ::testing::TestWithParam<std::pair<Backend, Backend>> {
+ protected:
+  void SetUp() override {
+    const auto [from, to] = GetParam();
+    fromAddress_ = test::databaseAddress(from, dir_, "from.db");
+    toAddress_ = test::databaseAddress(to, dir_, "to.db");
+    if (fromAddress_.empty() || toAddress_.empty()) {
+      GTEST_SKIP() << "no PostgreSQL test server (the tests start one in ctest)";
+    }
+    from_ = test::openDb(fromAddress_);
+    to_ = test::openDb(toAddress_);
+    ASSERT_NE(from_, nullptr);
+    ASSERT_NE(to_, nullptr);
+  }
+
+  TempDir dir_;
+  std::string fromAddress_, toAddress_;
+  std::unique_ptr<RunDatabase> from_, to_;
+};
+
+TEST_P(CopyTest, RunsLabelsModelsAndSweepsArriveAndASecondCopyAddsNothing) {
+  const RunData one = makeRun(2500, true, 21);
+  const RunData two = makeRun(700, false, 22);
+  const auto a = from_->importRun(one, "one");
+  const auto b = from_->importRun(two, "two");
+  ASSERT_EQ(a.status, ImportStatus::Imported);
+  ASSERT_EQ(b.status, ImportStatus::Imported);
+  ASSERT_TRUE(from_->autolabel(a.runId, "truth").ok());
+  auto set = from_->createLabelSet("mine", "ann");
+  ASSERT_TRUE(set.ok());
+  LabelSegment segment;
+  segment.runId = b.runId;
+  segment.group = SensorGroup::Right;
+  segment.firstStep = 10;
+  segment.lastStep = 90;
+  segment.cls = ContactClass::Wall;
+  segment.annotator = "ann";
+  ASSERT_TRUE(from_->addSegment(set.value(), segment).ok());
+  ASSERT_TRUE(from_->addModel("model", R"({"m":1})", "{}", "{}").ok());
+  auto sweep = from_->createSweep("sweep", "{}");
+  ASSERT_TRUE(from_->addSweepCell(sweep.value(), "{}", R"({"r":1})").ok());
+
+  auto report = to_->copyFrom(*from_);
+  ASSERT_TRUE(report.ok()) << report.errorText();
+  EXPECT_EQ(report->runsCopied, 2);
+  EXPECT_EQ(report->stepsCopied, 3200);
+  EXPECT_GT(report->segmentsCopied, 8);
+  EXPECT_EQ(report->modelsCopied, 1);
+  EXPECT_EQ(report->sweepsCopied, 1);
+
+  // The copy exports byte for byte as the source does, labels included.
+  for (const char* name : {"one", "two"}) {
+    const auto source = from_->findRun(name);
+    const auto copied = to_->findRun(name);
+    ASSERT_TRUE(copied.ok()) << copied.errorText();
+    EXPECT_EQ(copied->checksum, source->checksum);
+    ASSERT_TRUE(from_->exportRun(source->id, dir_ / "s.csv").ok());
+    ASSERT_TRUE(to_->exportRun(copied->id, dir_ / "c.csv").ok());
+    EXPECT_EQ(test::readBytes(dir_ / "s.csv"), test::readBytes(dir_ / "c.csv")) << name;
+  }
+  for (const char* setName : {"truth", "mine"}) {
+    ASSERT_TRUE(from_->exportLabels(setName, dir_ / "s.labels.csv").ok());
+    ASSERT_TRUE(to_->exportLabels(setName, dir_ / "c.labels.csv").ok());
+    EXPECT_EQ(test::readBytes(dir_ / "s.labels.csv"), test::readBytes(dir_ / "c.labels.csv"))
+        << setName;
+  }
+  EXPECT_EQ(to_->loadModel("model").value(), R"({"m":1})");
+  EXPECT_TRUE(to_->check().ok);
+
+  auto again = to_->copyFrom(*from_);
+  ASSERT_TRUE(again.ok()) << again.errorText();
+  EXPECT_EQ(again->runsCopied, 0);
+  EXPECT_EQ(again->runsPresent, 2);
+  EXPECT_EQ(again->segmentsCopied, 0);
+  EXPECT_EQ(again->modelsCopied, 0);
+  EXPECT_EQ(again->sweepsCopied, 0);
+  EXPECT_EQ(to_->listSweeps()->size(), 1U);
+}
+
+TEST_P(CopyTest, ARunOfTheSameNameWithOtherContentStopsTheCopy) {
+  ASSERT_EQ(from_->importRun(makeRun(30, false, 1), "same").status, ImportStatus::Imported);
+  ASSERT_EQ(to_->importRun(makeRun(30, false, 2), "same").status, ImportStatus::Imported);
+  auto report = to_->copyFrom(*from_);
+  ASSERT_FALSE(report.ok());
+  EXPECT_NE(report.errorText().find("other content"), std::string::npos) << report.errorText();
+}
+
+TEST_P(CopyTest, OnlyTheNamedRunsAndAnUnknownNameCopiesNothing) {
+  ASSERT_EQ(from_->importRun(makeRun(30, false, 1), "r1").status, ImportStatus::Imported);
+  ASSERT_EQ(from_->importRun(makeRun(30, false, 2), "r2").status, ImportStatus::Imported);
+  CopyOptions options;
+  options.runs = {"r2", "nope"};
+  EXPECT_FALSE(to_->copyFrom(*from_, options).ok());
+  EXPECT_TRUE(to_->listRuns()->empty());
+  options.runs = {"r2"};
+  auto report = to_->copyFrom(*from_, options);
+  ASSERT_TRUE(report.ok()) << report.errorText();
+  ASSERT_EQ(to_->listRuns()->size(), 1U);
+  EXPECT_EQ(to_->listRuns()->front().name, "r2");
+}
+
+std::string copyName(const ::testing::TestParamInfo<std::pair<Backend, Backend>>& info) {
+  const auto name = [](Backend b) { return b == Backend::Sqlite ? "Sqlite" : "Postgres"; };
+  return std::string(name(info.param.first)) + "To" + name(info.param.second);
+}
+
+INSTANTIATE_TEST_SUITE_P(Backends, CopyTest,
+                         ::testing::Values(std::pair{Backend::Sqlite, Backend::Postgres},
+                                           std::pair{Backend::Postgres, Backend::Sqlite},
+                                           std::pair{Backend::Postgres, Backend::Postgres}),
+                         copyName);
+
+// ---- the server's own cases -------------------------------------------------------------------
+
+TEST(ServerDatabase, AnEmptyDatabaseIsOnlyMadeByACreatingOpen) {
+  const std::string address = test::freshServerSchema();
+  if (address.empty()) GTEST_SKIP() << "no PostgreSQL test server";
+  auto refused = RunDatabase::open(address, OpenMode::ReadWrite);
+  ASSERT_FALSE(refused.ok());
+  EXPECT_NE(refused.errorText().find("tactile db create"), std::string::npos)
+      << refused.errorText();
+  auto made = RunDatabase::open(address, OpenMode::Create);
+  ASSERT_TRUE(made.ok()) << made.errorText();
+  EXPECT_TRUE(made.value()->created());
+  EXPECT_TRUE(made.value()->onServer());
+  auto again = RunDatabase::open(address, OpenMode::Create);
+  ASSERT_TRUE(again.ok());
+  EXPECT_FALSE(again.value()->created());
+}
+
+TEST(ServerDatabase, ADatabaseOfAnotherApplicationIsRefusedAndLeftAlone) {
+  const std::string address = test::freshServerSchema();
+  if (address.empty()) GTEST_SKIP() << "no PostgreSQL test server";
+  const std::string schema = address.substr(address.rfind("%3D") + 3);
+  test::serverExec(test::testServerAddress(), "CREATE TABLE " + schema + ".invoices(id int)");
+  auto refused = RunDatabase::open(address, OpenMode::Create);
+  ASSERT_FALSE(refused.ok());
+  EXPECT_NE(refused.errorText().find("not a Tactile database"), std::string::npos)
+      << refused.errorText();
+}
+
+TEST(ServerDatabase, AReadOnlyOpenCannotWrite) {
+  const std::string address = test::freshServerSchema();
+  if (address.empty()) GTEST_SKIP() << "no PostgreSQL test server";
+  ASSERT_TRUE(RunDatabase::open(address, OpenMode::Create).ok());
+  auto db = RunDatabase::open(address, OpenMode::ReadOnly);
+  ASSERT_TRUE(db.ok()) << db.errorText();
+  EXPECT_FALSE(db.value()->createLabelSet("x").ok());
+  EXPECT_TRUE(db.value()->listLabelSets()->empty());
+}
+
+TEST(ServerDatabase, AWrongAddressSaysSoInOneLineWithoutThePassword) {
+  const std::string server = test::testServerAddress();
+  if (server.empty()) GTEST_SKIP() << "no PostgreSQL test server";
+  const std::string host = server.substr(server.find("host="));
+  auto missing =
+      RunDatabase::open("postgresql://someone:s3cret@/no_such_db?" + host, OpenMode::ReadWrite);
+  ASSERT_FALSE(missing.ok());
+  const std::string text = missing.errorText();
+  EXPECT_EQ(text.find("s3cret"), std::string::npos) << text;
+  EXPECT_EQ(text.find('\n'), std::string::npos) << text;
+  EXPECT_NE(text.find("***"), std::string::npos) << text;
+}
+
+TEST(ServerAddress, AddressesAndFilesAreTold) {
+  EXPECT_TRUE(isServerAddress("postgresql://lab@db.example.org/corpus"));
+  EXPECT_TRUE(isServerAddress("postgres:///corpus?host=/run/postgresql"));
+  EXPECT_TRUE(isServerAddress("host=/run/postgresql dbname=corpus"));
+  EXPECT_TRUE(isServerAddress("service=lab"));
+  EXPECT_FALSE(isServerAddress("runs.db"));
+  EXPECT_FALSE(isServerAddress("/data/a=b.db"));
+  EXPECT_FALSE(isServerAddress("data/host=x.db"));
+  EXPECT_EQ(shownAddress("postgresql://ann:pw@host:5432/db"), "postgresql://ann:***@host:5432/db");
+  EXPECT_EQ(shownAddress("postgresql://ann@host/db?password=pw&sslmode=require"),
+            "postgresql://ann@host/db?password=***&sslmode=require");
+  EXPECT_EQ(shownAddress("host=h password='a b' dbname=d"), "host=h password=*** dbname=d");
+  EXPECT_EQ(shownAddress("runs.db"), "runs.db");
+}
+
+}  // namespace
+}  // namespace tactile::storage
