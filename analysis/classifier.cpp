@@ -158,7 +158,8 @@ Result<GaussianMixture> fitGaussian(const Eigen::MatrixXd& samples, double varia
   const Eigen::Index d = samples.cols();
   if (d < 1) return fail("samples have no features");
   if (n < 2) return fail("a Gaussian needs at least 2 samples, got " + std::to_string(n));
-  if (n < d)
+  // Fewer samples than dimensions leave the covariance singular unless the floor holds it up.
+  if (n < d && !(varianceFloor > 0.0))
     return fail(std::to_string(n) + " samples are fewer than the " + std::to_string(d) +
                 " dimensions");
   if (!samples.allFinite()) return fail("the samples contain a non-finite value");
@@ -210,9 +211,13 @@ ClassifierFit trainClassifier(const std::vector<Eigen::MatrixXd>& samplesPerClas
     if (x.cols() != d)
       return fail(who + " has " + std::to_string(x.cols()) + " features, expected " +
                   std::to_string(d));
-    if (x.rows() < d)
+    if (x.rows() < d && !options.fewSamples)
       return fail(who + " has " + std::to_string(x.rows()) + " training samples, fewer than its " +
                   std::to_string(d) + " dimensions");
+    if (x.rows() < d && !(options.gmm.varianceFloor > 0.0))
+      return fail(who + " has " + std::to_string(x.rows()) + " training samples, fewer than its " +
+                  std::to_string(d) +
+                  " dimensions: its covariance would be singular without a variance floor > 0");
     if (!x.allFinite()) return fail(who + " has a non-finite feature value");
   }
 

@@ -37,6 +37,11 @@ struct ClassifierOptions {
   // one-vs-rest log-likelihood ratio of thesis 4.3.
   bool oneVsRest = true;
   int threads = 1;  // 0 = all cores; results do not depend on it
+  // Also fit a class with fewer training samples than dimensions, its covariance held up by the
+  // variance floor (which must then be > 0), as scikit-learn's estimators fit any data they are
+  // given. Off for the CLI and the workbench, which refuse such a class as too little to learn
+  // from.
+  bool fewSamples = false;
   // Names of the feature columns, used in warnings only (empty: "feature j").
   std::vector<std::string> featureNames;
 };
@@ -120,7 +125,8 @@ HeldOutLogLikelihood heldOutLogLikelihood(const Eigen::MatrixXd& logLik,
 
 // Trains one model per class. samplesPerClass[c] holds class c's training rows (N_c x D).
 // Errors (ok == false, reason naming the class): no classes, a class with zero samples, a class
-// with fewer samples than dimensions, mismatched dimensions, non-finite values, a failed fit.
+// with fewer samples than dimensions (unless options.fewSamples with a variance floor > 0),
+// mismatched dimensions, non-finite values, a failed fit.
 // Progress: (classes done, classes), called after each class and also after every EM iteration of
 // each running fit (with unchanged counts; serialised, never from two threads at once); returning
 // false cancels, and running fits stop within one EM iteration.
@@ -131,7 +137,7 @@ ClassifierFit trainClassifier(const std::vector<Eigen::MatrixXd>& samplesPerClas
 // Unbiased (N-1) maximum-likelihood Gaussian of thesis 4.3 as a one-component NodalFull mixture:
 // mu = (1/N) sum x_n, Sigma = 1/(N-1) sum (x_n - mu)(x_n - mu)^T (two-pass, centred). With a
 // variance floor > 0, reg Floor clamps the eigenvalues of Sigma at the floor, reg Add uses
-// Sigma + floor * I. Fails for N < 2, N < D, or a singular Sigma with floor 0.
+// Sigma + floor * I. Fails for N < 2, N < D with floor 0, or a singular Sigma with floor 0.
 Result<GaussianMixture> fitGaussian(const Eigen::MatrixXd& samples, double varianceFloor,
                                     Regularization reg = Regularization::Floor);
 

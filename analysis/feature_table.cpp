@@ -3,6 +3,7 @@
 #include <charconv>
 #include <cmath>
 #include <cstdio>
+#include <stdexcept>
 #include <unordered_map>
 
 #include "base/file_text.h"
@@ -144,17 +145,33 @@ std::string formatFeatureTable(const FeatureTable& table) {
 }
 
 std::vector<Eigen::MatrixXd> splitByClass(const FeatureTable& table) {
-  const std::size_t classes = table.classNames.size();
+  return splitByClass(table.features.data(), table.features.rows(), table.features.cols(), 1,
+                      table.features.rows(), table.labels.data(), table.classNames.size());
+}
+
+std::vector<Eigen::MatrixXd> splitByClass(const double* features, Eigen::Index rows,
+                                          Eigen::Index cols, Eigen::Index rowStride,
+                                          Eigen::Index colStride, const int* labels,
+                                          std::size_t classes) {
+  // Each row's place in its class first, then one column at a time: reads and writes run along
+  // columns, as both sides are stored in a column-major table.
   std::vector<Eigen::Index> counts(classes, 0);
-  for (int l : table.labels)
-    ++counts[static_cast<std::size_t>(l)];
+  std::vector<Eigen::Index> place(static_cast<std::size_t>(rows));
+  for (Eigen::Index r = 0; r < rows; ++r) {
+    const int l = labels[r];
+    if (l < 0 || static_cast<std::size_t>(l) >= classes)
+      throw std::invalid_argument("label " + std::to_string(l) + " of row " + std::to_string(r) +
+                                  " is not a class index below " + std::to_string(classes));
+    place[static_cast<std::size_t>(r)] = counts[static_cast<std::size_t>(l)]++;
+  }
   std::vector<Eigen::MatrixXd> out(classes);
   for (std::size_t c = 0; c < classes; ++c)
-    out[c].resize(counts[c], table.features.cols());
-  std::vector<Eigen::Index> fill(classes, 0);
-  for (Eigen::Index r = 0; r < table.features.rows(); ++r) {
-    const auto c = static_cast<std::size_t>(table.labels[static_cast<std::size_t>(r)]);
-    out[c].row(fill[c]++) = table.features.row(r);
+    out[c].resize(counts[c], cols);
+  for (Eigen::Index j = 0; j < cols; ++j) {
+    const double* column = features + j * colStride;
+    for (Eigen::Index r = 0; r < rows; ++r)
+      out[static_cast<std::size_t>(labels[r])](place[static_cast<std::size_t>(r)], j) =
+          column[r * rowStride];
   }
   return out;
 }

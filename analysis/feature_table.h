@@ -34,6 +34,13 @@ std::string formatFeatureTable(const FeatureTable& table);
 
 // Rows of each class of `table` in row order: result[c] is N_c x D.
 std::vector<Eigen::MatrixXd> splitByClass(const FeatureTable& table);
+// The same for a rows x cols matrix of any layout, value (r, j) at features[r * rowStride + j *
+// colStride] (a numpy array, C or Fortran order), with `labels` (`rows` of them) in [0, classes).
+// Throws std::invalid_argument for a label outside it.
+std::vector<Eigen::MatrixXd> splitByClass(const double* features, Eigen::Index rows,
+                                          Eigen::Index cols, Eigen::Index rowStride,
+                                          Eigen::Index colStride, const int* labels,
+                                          std::size_t classes);
 
 // Maps the labels of `table` onto `classNames` (e.g. a test table onto the training classes).
 // Fails naming the first unknown label and its line (header = line 1).

@@ -334,13 +334,6 @@ RunSummary readSummary(RunDatabase::Impl& impl, std::int64_t runId, std::int64_t
 
 }  // namespace
 
-Result<RunData> RunDatabase::loadRun(std::int64_t runId) {
-  return guarded<RunData>(*impl_, [&] {
-    const std::int64_t steps = impl_->runStepCount(runId);
-    return std::move(readWindow(*impl_, runId, 0, steps).data);
-  });
-}
-
 Result<RunWindow> RunDatabase::loadWindow(std::int64_t runId, std::int64_t firstStep,
                                           std::int64_t count) {
   return guarded<RunWindow>(*impl_, [&] { return readWindow(*impl_, runId, firstStep, count); });

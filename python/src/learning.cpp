@@ -10,6 +10,7 @@
 
 #include "analysis/classifier.h"
 #include "analysis/classify_run.h"
+#include "analysis/feature_table.h"
 #include "analysis/features.h"
 #include "analysis/sweep.h"
 #include "analysis/training.h"
@@ -116,6 +117,8 @@ ClassifierOptions classifierOptions(const std::string& method, int components,
   o.gmm.threads = threads;
   // As `tactile fit`: scored by the per-class likelihoods alone, no one-vs-rest models.
   o.oneVsRest = false;
+  // As scikit-learn's estimators: a class with fewer samples than features is fitted too.
+  o.fewSamples = true;
   if (components < 1) throw py::value_error("n_components must be at least 1");
   if (!(floor >= 0.0) || !std::isfinite(floor))
     throw py::value_error("variance_floor must be >= 0");
@@ -126,15 +129,32 @@ ClassifierOptions classifierOptions(const std::string& method, int components,
   return o;
 }
 
-std::shared_ptr<Classifier> fitClassifier(const py::list& perClass,
-                                          const std::vector<std::string>& classNames,
-                                          const ClassifierOptions& options) {
-  std::vector<Eigen::MatrixXd> samples;
-  for (const py::handle a : perClass)
-    samples.push_back(
-        toMatrix(a.cast<py::array_t<double, py::array::f_style | py::array::forcecast>>()));
+// Fits on the rows of `x` (n x D float64, any layout) whose class indices are `codes` (n of them,
+// into `classNames`): split by class with the core's splitByClass, as `tactile fit` does, and
+// trained, both with the GIL released.
+std::shared_ptr<Classifier> fitClassifier(
+    const py::array_t<double>& x,
+    const py::array_t<std::int64_t, py::array::c_style | py::array::forcecast>& codes,
+    const std::vector<std::string>& classNames, const ClassifierOptions& options) {
+  if (x.ndim() != 2) throw py::value_error("expected a 2-D array of samples (rows x features)");
+  if (codes.ndim() != 1 || codes.shape(0) != x.shape(0))
+    throw py::value_error("expected one class index per row");
+  if (x.strides(0) % 8 != 0 || x.strides(1) % 8 != 0)
+    throw py::value_error("the samples' strides are not whole float64 values");
+  const py::ssize_t n = x.shape(0);
+  std::vector<int> labels(static_cast<std::size_t>(n));
+  const std::int64_t* c = codes.data();
+  for (py::ssize_t r = 0; r < n; ++r) {
+    if (c[r] < 0 || c[r] >= static_cast<std::int64_t>(classNames.size()))
+      throw py::value_error("class index " + std::to_string(c[r]) + " of row " + std::to_string(r) +
+                            " names no class");
+    labels[static_cast<std::size_t>(r)] = static_cast<int>(c[r]);
+  }
   analysis::ClassifierFit fit;
   runInterruptible([&](const ProgressFn& progress) {
+    const std::vector<Eigen::MatrixXd> samples =
+        analysis::splitByClass(x.data(), n, x.shape(1), x.strides(0) / 8, x.strides(1) / 8,
+                               labels.data(), classNames.size());
     fit = analysis::trainClassifier(samples, classNames, options, progress);
   });
   if (!fit.ok) throw py::value_error(fit.reason);
@@ -553,7 +573,7 @@ void bindLearning(py::module_& m) {
            })
       .def(py::pickle([](const Classifier& c) { return classifierState(c); },
                       [](const py::tuple& t) { return classifierFromState(t); }));
-  m.def("fit_classifier", &fitClassifier, py::arg("per_class"), py::arg("class_names"),
+  m.def("fit_classifier", &fitClassifier, py::arg("x"), py::arg("codes"), py::arg("class_names"),
         py::arg("options"));
 
   py::class_<Model, std::shared_ptr<Model>>(m, "Model", "A model bundle: one model per group.")

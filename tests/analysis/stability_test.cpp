@@ -509,6 +509,58 @@ TEST(GmmStability, FewerSamplesThanDimensionsIsAClearError) {
   }
 }
 
+// Fewer samples than dimensions with fewSamples (the scikit-learn estimators): fitted when the
+// variance floor holds the covariance up, every log-likelihood finite; a clear error without a
+// floor. Classes with enough samples get the model they get without the option.
+TEST(GmmStability, FewSamplesFitsOnTheFloorAlone) {
+  const Eigen::MatrixXd big =
+      gaussianRows(50, Eigen::VectorXd::Zero(5), Eigen::VectorXd::Ones(5), 1);
+  const Eigen::MatrixXd test =
+      gaussianRows(40, Eigen::VectorXd::Constant(5, 0.5), Eigen::VectorXd::Ones(5), 3);
+  for (const Eigen::Index smallRows : {1, 2, 3}) {
+    const Eigen::MatrixXd small =
+        gaussianRows(smallRows, Eigen::VectorXd::Ones(5), Eigen::VectorXd::Ones(5), 2);
+    for (ClassifierMethod method : {ClassifierMethod::Gmm, ClassifierMethod::Gaussian}) {
+      SCOPED_TRACE(std::string(classifierMethodName(method)) + ", " + std::to_string(smallRows) +
+                   " rows");
+      ClassifierOptions o;
+      o.method = method;
+      o.oneVsRest = false;
+      o.fewSamples = true;
+      const ClassifierFit fit = trainClassifier({big, small}, {"Wall", "Corner"}, o);
+      if (method == ClassifierMethod::Gaussian && smallRows < 2) {
+        // One sample has no unbiased covariance: still an error.
+        EXPECT_FALSE(fit.ok);
+        EXPECT_NE(fit.reason.find("at least 2 samples"), std::string::npos) << fit.reason;
+        continue;
+      }
+      ASSERT_TRUE(fit.ok) << fit.reason;
+      Eigen::MatrixXd logLik;
+      fit.model.logLikelihoods(test, logLik);
+      EXPECT_TRUE(logLik.allFinite());
+      // The few samples are where their class is most likely.
+      Eigen::MatrixXd atSmall;
+      fit.model.logLikelihoods(small, atSmall);
+      for (Eigen::Index r = 0; r < small.rows(); ++r)
+        EXPECT_GT(atSmall(r, 1), atSmall(r, 0));
+      // The big class's model is the one fitted without the option.
+      ClassifierOptions plain = o;
+      plain.fewSamples = false;
+      const ClassifierFit alone = trainClassifier({big, big}, {"Wall", "Wall2"}, plain);
+      ASSERT_TRUE(alone.ok) << alone.reason;
+      Eigen::MatrixXd fromAlone;
+      alone.model.logLikelihoods(test, fromAlone);
+      EXPECT_TRUE(fromAlone.col(0) == logLik.col(0));
+
+      o.gmm.varianceFloor = 0.0;
+      const ClassifierFit noFloor = trainClassifier({big, small}, {"Wall", "Corner"}, o);
+      EXPECT_FALSE(noFloor.ok);
+      EXPECT_NE(noFloor.reason.find("'Corner'"), std::string::npos) << noFloor.reason;
+      EXPECT_NE(noFloor.reason.find("variance floor"), std::string::npos) << noFloor.reason;
+    }
+  }
+}
+
 // A class with zero samples: a clear error.
 TEST(GmmStability, ClassWithoutSamplesIsAClearError) {
   const Eigen::MatrixXd big =
