@@ -58,9 +58,9 @@ std::vector<std::int64_t> idsByName(RunDatabase::Impl& impl, const std::vector<s
 
 }  // namespace
 
-Result<std::vector<RunCatalogEntry>> RunDatabase::runCatalog() {
+Result<std::vector<RunCatalogEntry>> RunStore::catalog() {
   const ResetStatements reset{*impl_};
-  Result<std::vector<RunInfo>> runs = listRuns();
+  Result<std::vector<RunInfo>> runs = list();
   if (!runs) return Error(impl_->path.string(), runs.error().message);
   return aboutDatabase<std::vector<RunCatalogEntry>>(impl_->path, [&] {
     std::map<std::int64_t, std::set<std::string>> setsOfRun;
@@ -83,7 +83,7 @@ Result<std::vector<RunCatalogEntry>> RunDatabase::runCatalog() {
   });
 }
 
-Status RunDatabase::renameRun(std::string_view name, const std::string& newName) {
+Status RunStore::rename(std::string_view name, const std::string& newName) {
   const ResetStatements reset{*impl_};
   return aboutDatabase<void>(impl_->path, [&] {
     requireName(newName, "run");
@@ -121,7 +121,7 @@ Status RunDatabase::renameRun(std::string_view name, const std::string& newName)
   });
 }
 
-Status RunDatabase::deleteRuns(const std::vector<std::string>& names) {
+Status RunStore::remove(const std::vector<std::string>& names) {
   const ResetStatements reset{*impl_};
   return aboutDatabase<void>(impl_->path, [&] {
     db::Transaction transaction(impl_->connection);
@@ -142,9 +142,9 @@ Status RunDatabase::deleteRuns(const std::vector<std::string>& names) {
   });
 }
 
-Result<std::vector<LabelSetCatalogEntry>> RunDatabase::labelSetCatalog() {
+Result<std::vector<LabelSetCatalogEntry>> LabelStore::catalog() {
   const ResetStatements reset{*impl_};
-  Result<std::vector<LabelSetInfo>> sets = listLabelSets();
+  Result<std::vector<LabelSetInfo>> sets = list();
   if (!sets) return Error(impl_->path.string(), sets.error().message);
   return aboutDatabase<std::vector<LabelSetCatalogEntry>>(impl_->path, [&] {
     std::map<std::int64_t, std::set<std::string>> runsOfSet;
@@ -167,7 +167,7 @@ Result<std::vector<LabelSetCatalogEntry>> RunDatabase::labelSetCatalog() {
   });
 }
 
-Status RunDatabase::renameLabelSetNamed(std::string_view name, const std::string& newName) {
+Status LabelStore::rename(std::string_view name, const std::string& newName) {
   const ResetStatements reset{*impl_};
   return aboutDatabase<void>(impl_->path, [&] {
     requireName(newName, "label set");
@@ -187,7 +187,7 @@ Status RunDatabase::renameLabelSetNamed(std::string_view name, const std::string
   });
 }
 
-Status RunDatabase::deleteLabelSets(const std::vector<std::string>& names) {
+Status LabelStore::remove(const std::vector<std::string>& names) {
   const ResetStatements reset{*impl_};
   return aboutDatabase<void>(impl_->path, [&] {
     db::Transaction transaction(impl_->connection);

@@ -24,7 +24,7 @@ LabelSegment labelSegmentFromRow(db::Statement& s) {
   return segment;
 }
 
-Result<LabelSegment> RunDatabase::segment(std::int64_t setId, std::int64_t segmentId) {
+Result<LabelSegment> LabelStore::segment(std::int64_t setId, std::int64_t segmentId) {
   return guarded<LabelSegment>(*impl_, [&] {
     db::Statement& s = impl_->statement(
         "SELECT label_segments.id, runs.name, run_id, grp, first_step, last_step, class, "
@@ -41,11 +41,10 @@ Result<LabelSegment> RunDatabase::segment(std::int64_t setId, std::int64_t segme
   });
 }
 
-Result<std::vector<LabelSegment>> RunDatabase::segmentsInRange(std::int64_t setId,
-                                                               std::int64_t runId,
-                                                               SensorGroup group,
-                                                               std::int64_t firstStep,
-                                                               std::int64_t lastStep) {
+Result<std::vector<LabelSegment>> LabelStore::segmentsInRange(std::int64_t setId,
+                                                              std::int64_t runId, SensorGroup group,
+                                                              std::int64_t firstStep,
+                                                              std::int64_t lastStep) {
   return guarded<std::vector<LabelSegment>>(*impl_, [&] {
     db::Statement& s = impl_->statement(
         "SELECT label_segments.id, runs.name, run_id, grp, first_step, last_step, class, "
@@ -65,10 +64,9 @@ Result<std::vector<LabelSegment>> RunDatabase::segmentsInRange(std::int64_t setI
   });
 }
 
-Status RunDatabase::replaceSegmentsInRange(std::int64_t setId, std::int64_t runId,
-                                           SensorGroup group, std::int64_t firstStep,
-                                           std::int64_t lastStep,
-                                           const std::vector<LabelSegment>& with) {
+Status LabelStore::replaceSegmentsInRange(std::int64_t setId, std::int64_t runId, SensorGroup group,
+                                          std::int64_t firstStep, std::int64_t lastStep,
+                                          const std::vector<LabelSegment>& with) {
   return guardedStatus(*impl_, [&] {
     db::Transaction transaction(impl_->connection);
     const std::string_view groupName = groupInfo(group).shortName;

@@ -126,7 +126,7 @@ std::int64_t RunDatabase::Impl::insertSegmentNewestWins(std::int64_t setId,
       .runReturningId();
 }
 
-Result<std::vector<LabelSetInfo>> RunDatabase::listLabelSets() {
+Result<std::vector<LabelSetInfo>> LabelStore::list() {
   return guarded<std::vector<LabelSetInfo>>(*impl_, [&] {
     db::Statement& s = impl_->statement(
         "SELECT id, name, annotator, created_at, "
@@ -141,9 +141,9 @@ Result<std::vector<LabelSetInfo>> RunDatabase::listLabelSets() {
   });
 }
 
-Result<LabelSetInfo> RunDatabase::findLabelSet(std::string_view name) {
+Result<LabelSetInfo> LabelStore::find(std::string_view name) {
   const ResetStatements reset{*impl_};
-  Result<std::vector<LabelSetInfo>> sets = listLabelSets();
+  Result<std::vector<LabelSetInfo>> sets = list();
   if (!sets) return sets.error();
   for (LabelSetInfo& info : sets.value()) {
     if (info.name == name) return info;
@@ -151,8 +151,7 @@ Result<LabelSetInfo> RunDatabase::findLabelSet(std::string_view name) {
   return Result<LabelSetInfo>::failure("no label set named '" + std::string(name) + "'");
 }
 
-Result<std::int64_t> RunDatabase::createLabelSet(const std::string& name,
-                                                 const std::string& annotator) {
+Result<std::int64_t> LabelStore::create(const std::string& name, const std::string& annotator) {
   return guarded<std::int64_t>(*impl_, [&] {
     requireName(name, "label set");
     if (!annotator.empty()) requireName(annotator, "annotator");
@@ -174,26 +173,7 @@ Result<std::int64_t> RunDatabase::createLabelSet(const std::string& name,
   });
 }
 
-Status RunDatabase::renameLabelSet(std::int64_t setId, const std::string& newName) {
-  return guardedStatus(*impl_, [&] {
-    requireName(newName, "label set");
-    db::Transaction transaction(impl_->connection);
-    const std::int64_t existing = impl_->labelSetIdByName(newName);
-    if (existing != 0 && existing != setId) {
-      throw db::DbError("a label set named '" + newName + "' already exists");
-    }
-    impl_->statement("UPDATE label_sets SET name = ? WHERE id = ?")
-        .bind(1, newName)
-        .bind(2, setId)
-        .run();
-    if (impl_->connection.changes() == 0) {
-      throw db::DbError("no label set with id " + std::to_string(setId));
-    }
-    transaction.commit();
-  });
-}
-
-Result<std::int64_t> RunDatabase::copyLabelSet(std::int64_t setId, const std::string& newName) {
+Result<std::int64_t> LabelStore::copy(std::int64_t setId, const std::string& newName) {
   return guarded<std::int64_t>(*impl_, [&] {
     requireName(newName, "label set");
     db::Transaction transaction(impl_->connection);
@@ -221,18 +201,7 @@ Result<std::int64_t> RunDatabase::copyLabelSet(std::int64_t setId, const std::st
   });
 }
 
-Status RunDatabase::deleteLabelSet(std::int64_t setId) {
-  return guardedStatus(*impl_, [&] {
-    db::Transaction transaction(impl_->connection);
-    impl_->statement("DELETE FROM label_sets WHERE id = ?").bind(1, setId).run();
-    if (impl_->connection.changes() == 0) {
-      throw db::DbError("no label set with id " + std::to_string(setId));
-    }
-    transaction.commit();
-  });
-}
-
-Result<std::int64_t> RunDatabase::addSegment(std::int64_t setId, const LabelSegment& segment) {
+Result<std::int64_t> LabelStore::addSegment(std::int64_t setId, const LabelSegment& segment) {
   return guarded<std::int64_t>(*impl_, [&] {
     db::Transaction transaction(impl_->connection);
     db::Statement& set = impl_->statement("SELECT 1 FROM label_sets WHERE id = ?");
@@ -245,7 +214,7 @@ Result<std::int64_t> RunDatabase::addSegment(std::int64_t setId, const LabelSegm
   });
 }
 
-Status RunDatabase::changeSegment(std::int64_t segmentId, const LabelSegment& segment) {
+Status LabelStore::changeSegment(std::int64_t segmentId, const LabelSegment& segment) {
   return guardedStatus(*impl_, [&] {
     db::Transaction transaction(impl_->connection);
     db::Statement& s = impl_->statement("SELECT set_id, run_id FROM label_segments WHERE id = ?");
@@ -261,7 +230,7 @@ Status RunDatabase::changeSegment(std::int64_t segmentId, const LabelSegment& se
   });
 }
 
-Status RunDatabase::removeSegment(std::int64_t segmentId) {
+Status LabelStore::removeSegment(std::int64_t segmentId) {
   return guardedStatus(*impl_, [&] {
     db::Transaction transaction(impl_->connection);
     impl_->statement("DELETE FROM label_segments WHERE id = ?").bind(1, segmentId).run();
@@ -272,7 +241,7 @@ Status RunDatabase::removeSegment(std::int64_t segmentId) {
   });
 }
 
-Result<std::vector<std::pair<std::int64_t, std::int64_t>>> RunDatabase::labelledSteps(
+Result<std::vector<std::pair<std::int64_t, std::int64_t>>> LabelStore::labelledSteps(
     std::int64_t setId) {
   return guarded<std::vector<std::pair<std::int64_t, std::int64_t>>>(*impl_, [&] {
     db::Statement& s = impl_->statement(
@@ -287,7 +256,7 @@ Result<std::vector<std::pair<std::int64_t, std::int64_t>>> RunDatabase::labelled
   });
 }
 
-Result<std::vector<LabelSegment>> RunDatabase::segments(std::int64_t setId, std::int64_t runId) {
+Result<std::vector<LabelSegment>> LabelStore::segments(std::int64_t setId, std::int64_t runId) {
   return guarded<std::vector<LabelSegment>>(*impl_, [&] {
     db::Statement& s = impl_->statement(
         "SELECT label_segments.id, runs.name, run_id, grp, first_step, last_step, class, "
@@ -304,8 +273,8 @@ Result<std::vector<LabelSegment>> RunDatabase::segments(std::int64_t setId, std:
   });
 }
 
-Result<std::int64_t> RunDatabase::importLabels(const std::string& setName,
-                                               const std::filesystem::path& file) {
+Result<std::int64_t> LabelStore::importFile(const std::string& setName,
+                                            const std::filesystem::path& file) {
   return guarded<std::int64_t>(*impl_, [&] {
     Result<std::string> content = readFileText(file);
     if (!content) throw db::DbError(content.errorText());
@@ -363,9 +332,9 @@ Result<std::int64_t> RunDatabase::importLabels(const std::string& setName,
   });
 }
 
-Status RunDatabase::exportLabels(const std::string& setName, const std::filesystem::path& file) {
+Status LabelStore::exportFile(const std::string& setName, const std::filesystem::path& file) {
   const ResetStatements reset{*impl_};
-  Result<LabelSetInfo> set = findLabelSet(setName);
+  Result<LabelSetInfo> set = find(setName);
   if (!set) return set.error();
   Result<std::vector<LabelSegment>> all = segments(set->id);
   if (!all) return all.error();
@@ -375,7 +344,7 @@ Status RunDatabase::exportLabels(const std::string& setName, const std::filesyst
   for (const LabelSegment& s : all.value()) {
     records.push_back({s.run, s.group, s.firstStep, s.lastStep, s.cls, s.annotator, 0});
     if (runs.empty() || runs.back().name != s.run) {
-      Result<RunInfo> info = runInfo(s.runId);
+      Result<RunInfo> info = RunStore(*impl_).info(s.runId);
       if (!info) return info.error();
       runs.push_back({info->name, info->stepCount, info->checksum, 0});
     }
@@ -386,7 +355,7 @@ Status RunDatabase::exportLabels(const std::string& setName, const std::filesyst
   return writeFileAtomically(file, text);
 }
 
-Result<std::int64_t> RunDatabase::autolabel(std::int64_t runId, const std::string& setName) {
+Result<std::int64_t> LabelStore::autolabel(std::int64_t runId, const std::string& setName) {
   return guarded<std::int64_t>(*impl_, [&] {
     db::Transaction transaction(impl_->connection);
     db::Statement& s = impl_->statement("SELECT name, has_truth FROM runs WHERE id = ?");

@@ -35,7 +35,7 @@ constexpr const char* kSweepColumns =
 
 }  // namespace
 
-Result<std::vector<ModelInfo>> RunDatabase::listModels() {
+Result<std::vector<ModelInfo>> ModelStore::list() {
   return guarded<std::vector<ModelInfo>>(*impl_, [&] {
     std::vector<ModelInfo> out;
     db::Statement& s = impl_->statement(
@@ -47,7 +47,7 @@ Result<std::vector<ModelInfo>> RunDatabase::listModels() {
   });
 }
 
-Result<ModelInfo> RunDatabase::modelInfo(std::string_view name) {
+Result<ModelInfo> ModelStore::info(std::string_view name) {
   return guarded<ModelInfo>(*impl_, [&] {
     db::Statement& s = impl_->statement(
         "SELECT id, name, created_at, trained_on, metrics FROM models WHERE name = ?");
@@ -59,7 +59,7 @@ Result<ModelInfo> RunDatabase::modelInfo(std::string_view name) {
   });
 }
 
-Status RunDatabase::deleteModels(const std::vector<std::string>& names) {
+Status ModelStore::remove(const std::vector<std::string>& names) {
   return guardedStatus(*impl_, [&] {
     db::Transaction transaction(impl_->connection);
     db::Statement& s = impl_->statement("DELETE FROM models WHERE name = ?");
@@ -75,9 +75,9 @@ Status RunDatabase::deleteModels(const std::vector<std::string>& names) {
   });
 }
 
-Result<std::int64_t> RunDatabase::addModel(const std::string& name, const std::string& json,
-                                           const std::string& trainedOnJson,
-                                           const std::string& metricsJson) {
+Result<std::int64_t> ModelStore::add(const std::string& name, const std::string& json,
+                                     const std::string& trainedOnJson,
+                                     const std::string& metricsJson) {
   return guarded<std::int64_t>(*impl_, [&] {
     requireName(name, "model");
     db::Transaction transaction(impl_->connection);
@@ -104,8 +104,8 @@ Result<std::int64_t> RunDatabase::addModel(const std::string& name, const std::s
   });
 }
 
-Result<std::int64_t> RunDatabase::createSweep(const std::string& name,
-                                              const std::string& configurationJson) {
+Result<std::int64_t> SweepStore::create(const std::string& name,
+                                        const std::string& configurationJson) {
   return guarded<std::int64_t>(*impl_, [&] {
     requireName(name, "sweep");
     db::Transaction transaction(impl_->connection);
@@ -122,9 +122,8 @@ Result<std::int64_t> RunDatabase::createSweep(const std::string& name,
   });
 }
 
-Result<std::int64_t> RunDatabase::addSweepCell(std::int64_t sweepId,
-                                               const std::string& configurationJson,
-                                               const std::string& metricsJson) {
+Result<std::int64_t> SweepStore::addCell(std::int64_t sweepId, const std::string& configurationJson,
+                                         const std::string& metricsJson) {
   return guarded<std::int64_t>(*impl_, [&] {
     db::Transaction transaction(impl_->connection);
     const std::int64_t id = impl_
@@ -140,7 +139,7 @@ Result<std::int64_t> RunDatabase::addSweepCell(std::int64_t sweepId,
   });
 }
 
-Status RunDatabase::updateSweep(std::int64_t sweepId, const std::string& configurationJson) {
+Status SweepStore::update(std::int64_t sweepId, const std::string& configurationJson) {
   return guardedStatus(*impl_, [&] {
     db::Transaction transaction(impl_->connection);
     impl_->statement("UPDATE sweeps SET configuration = ? WHERE id = ?")
@@ -154,7 +153,7 @@ Status RunDatabase::updateSweep(std::int64_t sweepId, const std::string& configu
   });
 }
 
-Result<std::vector<SweepInfo>> RunDatabase::listSweeps() {
+Result<std::vector<SweepInfo>> SweepStore::list() {
   return guarded<std::vector<SweepInfo>>(*impl_, [&] {
     static const std::string sql = std::string(kSweepColumns) + " ORDER BY id";
     std::vector<SweepInfo> out;
@@ -166,7 +165,7 @@ Result<std::vector<SweepInfo>> RunDatabase::listSweeps() {
   });
 }
 
-Result<SweepInfo> RunDatabase::sweepInfo(std::int64_t sweepId) {
+Result<SweepInfo> SweepStore::info(std::int64_t sweepId) {
   return guarded<SweepInfo>(*impl_, [&] {
     static const std::string sql = std::string(kSweepColumns) + " WHERE id = ?";
     db::Statement& s = impl_->statement(sql.c_str());
@@ -178,7 +177,7 @@ Result<SweepInfo> RunDatabase::sweepInfo(std::int64_t sweepId) {
   });
 }
 
-Result<std::vector<SweepCellRecord>> RunDatabase::sweepCells(std::int64_t sweepId) {
+Result<std::vector<SweepCellRecord>> SweepStore::cells(std::int64_t sweepId) {
   return guarded<std::vector<SweepCellRecord>>(*impl_, [&] {
     std::vector<SweepCellRecord> out;
     db::Statement& s = impl_->statement(
@@ -191,7 +190,7 @@ Result<std::vector<SweepCellRecord>> RunDatabase::sweepCells(std::int64_t sweepI
   });
 }
 
-Status RunDatabase::deleteSweeps(const std::vector<std::int64_t>& sweepIds) {
+Status SweepStore::remove(const std::vector<std::int64_t>& sweepIds) {
   return guardedStatus(*impl_, [&] {
     db::Transaction transaction(impl_->connection);
     db::Statement& s = impl_->statement("DELETE FROM sweeps WHERE id = ?");

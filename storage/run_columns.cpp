@@ -398,7 +398,7 @@ void readRunColumns(RunDatabase::Impl& impl, std::int64_t runId,
   readSteps(impl, runId, shape, out);
 }
 
-Result<RunData> RunDatabase::loadRun(std::int64_t runId) {
+Result<RunData> RunStore::load(std::int64_t runId) {
   return guarded<RunData>(*impl_, [&] {
     RunData run;
     readRunColumns(*impl_, runId, [&](const RunShape& shape) {

@@ -506,6 +506,19 @@ Result<std::unique_ptr<RunDatabase>> RunDatabase::openServer(const std::string& 
   }
 }
 
+RunStore RunDatabase::runs() {
+  return RunStore(*impl_);
+}
+LabelStore RunDatabase::labels() {
+  return LabelStore(*impl_);
+}
+ModelStore RunDatabase::models() {
+  return ModelStore(*impl_);
+}
+SweepStore RunDatabase::sweeps() {
+  return SweepStore(*impl_);
+}
+
 bool RunDatabase::created() const {
   return impl_->created;
 }
@@ -551,7 +564,7 @@ RunInfo readRunInfo(const db::Statement& s) {
 
 }  // namespace
 
-Result<std::vector<RunInfo>> RunDatabase::listRuns() {
+Result<std::vector<RunInfo>> RunStore::list() {
   return guarded<std::vector<RunInfo>>(*impl_, [&] {
     static const std::string sql = std::string(kRunColumns) + "ORDER BY name";
     db::Statement& s = impl_->statement(sql.c_str());
@@ -562,7 +575,7 @@ Result<std::vector<RunInfo>> RunDatabase::listRuns() {
   });
 }
 
-Result<RunInfo> RunDatabase::findRun(std::string_view name) {
+Result<RunInfo> RunStore::find(std::string_view name) {
   return guarded<RunInfo>(*impl_, [&] {
     static const std::string sql = std::string(kRunColumns) + "WHERE name = ?";
     db::Statement& s = impl_->statement(sql.c_str());
@@ -574,7 +587,7 @@ Result<RunInfo> RunDatabase::findRun(std::string_view name) {
   });
 }
 
-Result<RunInfo> RunDatabase::runInfo(std::int64_t runId) {
+Result<RunInfo> RunStore::info(std::int64_t runId) {
   return guarded<RunInfo>(*impl_, [&] {
     static const std::string sql = std::string(kRunColumns) + "WHERE id = ?";
     db::Statement& s = impl_->statement(sql.c_str());
@@ -586,7 +599,7 @@ Result<RunInfo> RunDatabase::runInfo(std::int64_t runId) {
   });
 }
 
-Status RunDatabase::deleteRun(std::int64_t runId) {
+Status RunStore::remove(std::int64_t runId) {
   return guardedStatus(*impl_, [&] {
     db::Transaction transaction(impl_->connection);
     // The child rows by name too: a server's step rows have no cascading foreign key.
@@ -856,29 +869,7 @@ IntegrityReport RunDatabase::check() {
 
 // ---- models and sweeps -----------------------------------------------------------------------
 
-Result<std::int64_t> RunDatabase::saveModel(const std::string& name, const std::string& json,
-                                            const std::string& trainedOnJson,
-                                            const std::string& metricsJson) {
-  return guarded<std::int64_t>(*impl_, [&] {
-    requireName(name, "model");
-    db::Transaction transaction(impl_->connection);
-    const std::string now = utcNow();
-    db::Statement& s = impl_->statement(
-        "INSERT INTO models(name, json, trained_on, metrics, created_at) VALUES(?, ?, ?, ?, ?) "
-        "ON CONFLICT(name) DO UPDATE SET json = excluded.json, trained_on = excluded.trained_on, "
-        "metrics = excluded.metrics, created_at = excluded.created_at");
-    s.bind(1, name).bind(2, json).bind(3, trainedOnJson).bind(4, metricsJson).bind(5, now).run();
-    db::Statement& id = impl_->statement("SELECT id FROM models WHERE name = ?");
-    id.bind(1, name);
-    id.step();
-    const std::int64_t modelId = id.columnInt(0);
-    id.reset();
-    transaction.commit();
-    return modelId;
-  });
-}
-
-Result<std::string> RunDatabase::loadModel(const std::string& name) {
+Result<std::string> ModelStore::load(const std::string& name) {
   return guarded<std::string>(*impl_, [&] {
     db::Statement& s = impl_->statement("SELECT json FROM models WHERE name = ?");
     s.bind(1, name);
@@ -886,31 +877,6 @@ Result<std::string> RunDatabase::loadModel(const std::string& name) {
     std::string json = s.columnText(0);
     s.reset();
     return json;
-  });
-}
-
-Result<std::int64_t> RunDatabase::saveSweep(
-    const std::string& name, const std::string& configurationJson,
-    const std::vector<std::pair<std::string, std::string>>& cells) {
-  return guarded<std::int64_t>(*impl_, [&] {
-    requireName(name, "sweep");
-    db::Transaction transaction(impl_->connection);
-    const std::string now = utcNow();
-    const std::int64_t sweepId =
-        impl_
-            ->statement(
-                "INSERT INTO sweeps(name, configuration, created_at) VALUES(?, ?, ?) RETURNING id")
-            .bind(1, name)
-            .bind(2, configurationJson)
-            .bind(3, now)
-            .runReturningId();
-    db::Statement& cell = impl_->statement(
-        "INSERT INTO sweep_cells(sweep_id, configuration, metrics) VALUES(?, ?, ?)");
-    for (const auto& [configuration, metrics] : cells) {
-      cell.bind(1, sweepId).bind(2, configuration).bind(3, metrics).run();
-    }
-    transaction.commit();
-    return sweepId;
   });
 }
 

@@ -253,6 +253,11 @@ struct OpenOptions {
   bool refuseDamaged = true;
 };
 
+class RunStore;
+class LabelStore;
+class ModelStore;
+class SweepStore;
+
 class RunDatabase {
  public:
   // Opens or creates a database file (":memory:" for a private in-memory one): WAL journal,
@@ -279,7 +284,44 @@ class RunDatabase {
   // The backup written when opening migrated an older file (empty otherwise).
   const std::filesystem::path& migrationBackup() const;
 
-  // ---- runs ----
+  // The database's parts, one store each (below). A store is a light view of this database: take
+  // one when needed (`db.runs().list()`); it is valid while the database is open.
+  RunStore runs();
+  LabelStore labels();
+  ModelStore models();
+  SweepStore sweeps();
+
+  IntegrityReport check();
+
+  // Copies runs (row by row with their stored bytes: the copy exports byte for byte as the source
+  // does), label sets, models and sweeps from `source` into this database; either may be SQLite or
+  // PostgreSQL. Each run is one transaction, checked against its checksums when read and again in
+  // this database before it commits; a run already here with the same checksum is left as it is,
+  // one with the same name and other content is an error. A label set's segments go onto the runs
+  // of the same name here, newest wins, segments already here are not added again; models are
+  // copied by name (another model of that name here is a warning), sweeps when not already here.
+  // So a second copy adds nothing. `progress` gets (runs done, runs total).
+  Result<CopyReport> copyFrom(RunDatabase& source, const CopyOptions& options = {},
+                              const ProgressFn& progress = {});
+
+  struct Impl;
+
+ private:
+  explicit RunDatabase(std::unique_ptr<Impl> impl);
+  // open() of a PostgreSQL server address (docs/team.md).
+  static Result<std::unique_ptr<RunDatabase>> openServer(const std::string& address, OpenMode mode);
+  // open() without the clean-up of a failed creation.
+  static Result<std::unique_ptr<RunDatabase>> openFile(const std::filesystem::path& path,
+                                                       const OpenOptions& options, OpenMode mode,
+                                                       const std::string& name);
+  std::unique_ptr<Impl> impl_;
+};
+
+// Runs (storage/run_import.cpp, run_recording.cpp, run_read.cpp, run_columns.cpp, catalog.cpp).
+class RunStore {
+ public:
+  explicit RunStore(RunDatabase::Impl& impl) : impl_(&impl) {}
+
   // Imports run files. Each file is one transaction: it is stored completely or not at all. A
   // file whose checksum is already stored is skipped. Files are parsed on `options.threads`
   // threads and written by the calling thread, in the given order. `progress` gets (files done,
@@ -315,13 +357,13 @@ class RunDatabase {
   // as importRun would store it.
   Status finishRun(std::int64_t runId, const RunData& run);
 
-  Result<std::vector<RunInfo>> listRuns();
-  Result<RunInfo> findRun(std::string_view name);
-  Result<RunInfo> runInfo(std::int64_t runId);
-  Status deleteRun(std::int64_t runId);  // with its steps, truth and label segments
+  Result<std::vector<RunInfo>> list();
+  Result<RunInfo> find(std::string_view name);
+  Result<RunInfo> info(std::int64_t runId);
+  Status remove(std::int64_t runId);  // with its steps, truth and label segments
 
   // The whole run, equal value for value to what was imported.
-  Result<RunData> loadRun(std::int64_t runId);
+  Result<RunData> load(std::int64_t runId);
   // Steps [firstStep, firstStep + count) clipped to the run; reads only those rows.
   Result<RunWindow> loadWindow(std::int64_t runId, std::int64_t firstStep, std::int64_t count);
   // Every step's pose, command, blocked flag and truth, without reading a sensor value.
@@ -336,28 +378,36 @@ class RunDatabase {
   // Writes the run as a run CSV file (atomically).
   Status exportRun(std::int64_t runId, const std::filesystem::path& file);
 
-  // ---- catalog: runs and label sets by name (docs/storage.md#catalog); every change is one
-  // transaction, and an unknown name is an error naming it that changes nothing ----
+  // By name (docs/storage.md#catalog); every change is one transaction, and an unknown name is an
+  // error naming it that changes nothing.
   // Every run (sorted by name) with the label sets that have segments on it.
-  Result<std::vector<RunCatalogEntry>> runCatalog();
+  Result<std::vector<RunCatalogEntry>> catalog();
   // Renames a run; the new name must be free, non-empty and hold no comma or line break.
-  Status renameRun(std::string_view name, const std::string& newName);
+  Status rename(std::string_view name, const std::string& newName);
   // Deletes the named runs with their steps, truth, block summaries and label segments (and
   // scenes no other run uses), all in one transaction: all or nothing.
-  Status deleteRuns(const std::vector<std::string>& names);
-  // Every label set (sorted by name) with the runs it has segments on.
-  Result<std::vector<LabelSetCatalogEntry>> labelSetCatalog();
-  Status renameLabelSetNamed(std::string_view name, const std::string& newName);
-  // Deletes the named sets with their segments in one transaction: all or nothing.
-  Status deleteLabelSets(const std::vector<std::string>& names);
+  Status remove(const std::vector<std::string>& names);
 
-  // ---- label sets: every call below that changes something is one committed transaction ----
-  Result<std::vector<LabelSetInfo>> listLabelSets();
-  Result<LabelSetInfo> findLabelSet(std::string_view name);
-  Result<std::int64_t> createLabelSet(const std::string& name, const std::string& annotator = {});
-  Status renameLabelSet(std::int64_t setId, const std::string& newName);
-  Result<std::int64_t> copyLabelSet(std::int64_t setId, const std::string& newName);
-  Status deleteLabelSet(std::int64_t setId);
+ private:
+  RunDatabase::Impl* impl_;
+};
+
+// Label sets and their segments (storage/labels.cpp, label_scope.cpp, catalog.cpp).
+class LabelStore {
+ public:
+  explicit LabelStore(RunDatabase::Impl& impl) : impl_(&impl) {}
+
+  // Every label set (sorted by name) with the runs it has segments on.
+  Result<std::vector<LabelSetCatalogEntry>> catalog();
+  Status rename(std::string_view name, const std::string& newName);
+  // Deletes the named sets with their segments in one transaction: all or nothing.
+  Status remove(const std::vector<std::string>& names);
+
+  // Every call below that changes something is one committed transaction.
+  Result<std::vector<LabelSetInfo>> list();
+  Result<LabelSetInfo> find(std::string_view name);
+  Result<std::int64_t> create(const std::string& name, const std::string& annotator = {});
+  Result<std::int64_t> copy(std::int64_t setId, const std::string& newName);
 
   // Adds a segment. Newest wins: any older segment of the same set, run and group overlapping
   // [firstStep, lastStep] is trimmed, split or removed so that only the new one covers that range.
@@ -390,67 +440,53 @@ class RunDatabase {
   // nothing. A provenance entry for a stored run whose step count or checksum differs from the
   // stored one is an error naming the file, the run and both values. Export writes a provenance
   // entry for every run of the set. Returns the number of segments read.
-  Result<std::int64_t> importLabels(const std::string& setName, const std::filesystem::path& file);
-  Status exportLabels(const std::string& setName, const std::filesystem::path& file);
+  Result<std::int64_t> importFile(const std::string& setName, const std::filesystem::path& file);
+  Status exportFile(const std::string& setName, const std::filesystem::path& file);
 
   // Turns a run's truth columns into segments of the set (created when absent): maximal ranges of
   // one class per group, NoContact included, replacing the set's segments of that run. One
   // transaction per run. Returns the number of segments written; an error if the run has no truth.
   Result<std::int64_t> autolabel(std::int64_t runId, const std::string& setName);
 
-  // ---- models and sweeps (stored as JSON; the analysis part defines their content) ----
-  Result<std::int64_t> saveModel(const std::string& name, const std::string& json,
-                                 const std::string& trainedOnJson = "{}",
-                                 const std::string& metricsJson = "{}");
-  Result<std::string> loadModel(const std::string& name);
-  Result<std::int64_t> saveSweep(const std::string& name, const std::string& configurationJson,
-                                 const std::vector<std::pair<std::string, std::string>>& cells);
+ private:
+  RunDatabase::Impl* impl_;
+};
 
-  // PRAGMA integrity_check and foreign_key_check, schema version and counts.
-  // Models by name (sorted), one model's JSON with its record, deletes (all named or none, in one
-  // transaction; an unknown name is an error naming it).
-  Result<std::vector<ModelInfo>> listModels();
-  Result<ModelInfo> modelInfo(std::string_view name);
-  Status deleteModels(const std::vector<std::string>& names);
-  // Stores a new model; a name already in use is an error (saveModel replaces instead).
-  Result<std::int64_t> addModel(const std::string& name, const std::string& json,
-                                const std::string& trainedOnJson, const std::string& metricsJson);
-
-  // A sweep stored cell by cell as it runs: create it, add each cell in its own transaction (a
-  // stopped sweep keeps the cells it finished), then record its final configuration and state.
-  Result<std::int64_t> createSweep(const std::string& name, const std::string& configurationJson);
-  Result<std::int64_t> addSweepCell(std::int64_t sweepId, const std::string& configurationJson,
-                                    const std::string& metricsJson);
-  Status updateSweep(std::int64_t sweepId, const std::string& configurationJson);
-  Result<std::vector<SweepInfo>> listSweeps();
-  Result<SweepInfo> sweepInfo(std::int64_t sweepId);
-  Result<std::vector<SweepCellRecord>> sweepCells(std::int64_t sweepId);
-  Status deleteSweeps(const std::vector<std::int64_t>& sweepIds);
-
-  IntegrityReport check();
-
-  // Copies runs (row by row with their stored bytes: the copy exports byte for byte as the source
-  // does), label sets, models and sweeps from `source` into this database; either may be SQLite or
-  // PostgreSQL. Each run is one transaction, checked against its checksums when read and again in
-  // this database before it commits; a run already here with the same checksum is left as it is,
-  // one with the same name and other content is an error. A label set's segments go onto the runs
-  // of the same name here, newest wins, segments already here are not added again; models are
-  // copied by name (another model of that name here is a warning), sweeps when not already here.
-  // So a second copy adds nothing. `progress` gets (runs done, runs total).
-  Result<CopyReport> copyFrom(RunDatabase& source, const CopyOptions& options = {},
-                              const ProgressFn& progress = {});
-
-  struct Impl;
+class ModelStore {
+ public:
+  explicit ModelStore(RunDatabase::Impl& impl) : impl_(&impl) {}
+  // Stores a new model; a name already in use is an error naming it.
+  Result<std::int64_t> add(const std::string& name, const std::string& json,
+                           const std::string& trainedOnJson, const std::string& metricsJson);
+  // One model's JSON.
+  Result<std::string> load(const std::string& name);
+  // Models by name (sorted), one model's record, deletes (all named or none, in one transaction;
+  // an unknown name is an error naming it).
+  Result<std::vector<ModelInfo>> list();
+  Result<ModelInfo> info(std::string_view name);
+  Status remove(const std::vector<std::string>& names);
 
  private:
-  explicit RunDatabase(std::unique_ptr<Impl> impl);
-  // open() of a PostgreSQL server address (docs/team.md).
-  static Result<std::unique_ptr<RunDatabase>> openServer(const std::string& address, OpenMode mode);
-  // open() without the clean-up of a failed creation.
-  static Result<std::unique_ptr<RunDatabase>> openFile(const std::filesystem::path& path,
-                                                       const OpenOptions& options, OpenMode mode,
-                                                       const std::string& name);
-  std::unique_ptr<Impl> impl_;
+  RunDatabase::Impl* impl_;
+};
+
+// Sweeps (storage/models.cpp): stored cell by cell as they run: create one, add each cell in its
+// own transaction (a stopped sweep keeps the cells it finished), then record its final
+// configuration and state.
+class SweepStore {
+ public:
+  explicit SweepStore(RunDatabase::Impl& impl) : impl_(&impl) {}
+  Result<std::int64_t> create(const std::string& name, const std::string& configurationJson);
+  Result<std::int64_t> addCell(std::int64_t sweepId, const std::string& configurationJson,
+                               const std::string& metricsJson);
+  Status update(std::int64_t sweepId, const std::string& configurationJson);
+  Result<std::vector<SweepInfo>> list();
+  Result<SweepInfo> info(std::int64_t sweepId);
+  Result<std::vector<SweepCellRecord>> cells(std::int64_t sweepId);
+  Status remove(const std::vector<std::int64_t>& sweepIds);
+
+ private:
+  RunDatabase::Impl* impl_;
 };
 
 // Whether `address` names a PostgreSQL server (a postgresql:// or postgres:// URI, or a libpq

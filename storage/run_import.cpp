@@ -21,8 +21,8 @@ namespace tactile::storage {
 
 using namespace importing;
 
-ImportOutcome RunDatabase::importText(std::string_view text, const std::string& fileName,
-                                      const ImportOptions& options) {
+ImportOutcome RunStore::importText(std::string_view text, const std::string& fileName,
+                                   const ImportOptions& options) {
   const ResetStatements reset{*impl_};
   FileHead head;
   head.file = fileName;
@@ -41,9 +41,9 @@ ImportOutcome RunDatabase::importText(std::string_view text, const std::string& 
       options.failAfterSteps);
 }
 
-ImportOutcome RunDatabase::importRun(const RunData& run, const std::string& name,
-                                     const std::string& sourceFile,
-                                     const SceneResolver& sceneResolver) {
+ImportOutcome RunStore::importRun(const RunData& run, const std::string& name,
+                                  const std::string& sourceFile,
+                                  const SceneResolver& sceneResolver) {
   const ResetStatements reset{*impl_};
   FileHead head;
   head.file = sourceFile.empty() ? name : sourceFile;
@@ -70,9 +70,9 @@ ImportOutcome RunDatabase::importRun(const RunData& run, const std::string& name
       *impl_, head, [&](std::size_t) { return std::move(*chunk); }, -1);
 }
 
-std::vector<ImportOutcome> RunDatabase::importFiles(const std::vector<std::filesystem::path>& files,
-                                                    const ImportOptions& options,
-                                                    const ProgressFn& progress) {
+std::vector<ImportOutcome> RunStore::importFiles(const std::vector<std::filesystem::path>& files,
+                                                 const ImportOptions& options,
+                                                 const ProgressFn& progress) {
   const ResetStatements reset{*impl_};
   std::vector<ImportOutcome> outcomes;
   outcomes.reserve(files.size());

@@ -334,22 +334,22 @@ RunSummary readSummary(RunDatabase::Impl& impl, std::int64_t runId, std::int64_t
 
 }  // namespace
 
-Result<RunWindow> RunDatabase::loadWindow(std::int64_t runId, std::int64_t firstStep,
-                                          std::int64_t count) {
+Result<RunWindow> RunStore::loadWindow(std::int64_t runId, std::int64_t firstStep,
+                                       std::int64_t count) {
   return guarded<RunWindow>(*impl_, [&] { return readWindow(*impl_, runId, firstStep, count); });
 }
 
-Result<RunTrack> RunDatabase::loadTrack(std::int64_t runId) {
+Result<RunTrack> RunStore::loadTrack(std::int64_t runId) {
   return guarded<RunTrack>(*impl_, [&] { return readTrack(*impl_, runId); });
 }
 
-Result<RunSummary> RunDatabase::loadSummary(std::int64_t runId, std::int64_t firstStep,
-                                            std::int64_t lastStep, int buckets) {
+Result<RunSummary> RunStore::loadSummary(std::int64_t runId, std::int64_t firstStep,
+                                         std::int64_t lastStep, int buckets) {
   return guarded<RunSummary>(
       *impl_, [&] { return readSummary(*impl_, runId, firstStep, lastStep, buckets); });
 }
 
-Result<std::optional<std::string>> RunDatabase::sceneJson(std::int64_t runId) {
+Result<std::optional<std::string>> RunStore::sceneJson(std::int64_t runId) {
   return guarded<std::optional<std::string>>(*impl_, [&] {
     db::Statement& s = impl_->statement(
         "SELECT scenes.json FROM runs LEFT JOIN scenes ON scenes.id = runs.scene_id "
@@ -363,9 +363,9 @@ Result<std::optional<std::string>> RunDatabase::sceneJson(std::int64_t runId) {
   });
 }
 
-Status RunDatabase::exportRun(std::int64_t runId, const std::filesystem::path& file) {
+Status RunStore::exportRun(std::int64_t runId, const std::filesystem::path& file) {
   const ResetStatements reset{*impl_};
-  Result<RunData> run = loadRun(runId);
+  Result<RunData> run = load(runId);
   if (!run) return run.error();
   return writeRunCsv(run.value(), file);
 }

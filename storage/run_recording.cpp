@@ -180,8 +180,8 @@ void appendInside(RunDatabase::Impl& impl, std::int64_t runId, const RunData& ru
 
 }  // namespace
 
-Result<std::int64_t> RunDatabase::beginRun(const std::string& name, const RunData& header,
-                                           bool withTruth, const SceneResolver& sceneResolver) {
+Result<std::int64_t> RunStore::beginRun(const std::string& name, const RunData& header,
+                                        bool withTruth, const SceneResolver& sceneResolver) {
   return guarded<std::int64_t>(*impl_, [&] {
     requireName(name, "run");
     FileHead head;
@@ -250,7 +250,7 @@ Result<std::int64_t> RunDatabase::beginRun(const std::string& name, const RunDat
   });
 }
 
-Status RunDatabase::appendSteps(std::int64_t runId, const RunData& run, std::size_t firstStep) {
+Status RunStore::appendSteps(std::int64_t runId, const RunData& run, std::size_t firstStep) {
   return guardedStatus(*impl_, [&] {
     db::Transaction transaction(impl_->connection);
     appendInside(*impl_, runId, run, firstStep);
@@ -258,7 +258,7 @@ Status RunDatabase::appendSteps(std::int64_t runId, const RunData& run, std::siz
   });
 }
 
-Status RunDatabase::finishRun(std::int64_t runId, const RunData& run) {
+Status RunStore::finishRun(std::int64_t runId, const RunData& run) {
   return guardedStatus(*impl_, [&] {
     if (std::string problem = validateRun(run); !problem.empty()) throw db::DbError(problem);
     const std::string checksum = checksumHex(formatRunCsv(run));

@@ -8,7 +8,7 @@
 namespace tactile::workspace {
 
 Result<std::string> freeRunName(Workspace& workspace, const std::string& base) {
-  Result<std::vector<storage::RunInfo>> runs = workspace.database().listRuns();
+  Result<std::vector<storage::RunInfo>> runs = workspace.runStore().list();
   if (!runs) return runs.error();
   std::set<std::string> taken;
   for (const storage::RunInfo& info : runs.value())
@@ -24,7 +24,7 @@ Result<std::unique_ptr<RunRecording>> RunRecording::begin(Workspace& workspace,
                                                           const std::string& name,
                                                           const RunData& header, bool withTruth,
                                                           const storage::SceneResolver& resolver) {
-  Result<std::int64_t> id = workspace.database().beginRun(name, header, withTruth, resolver);
+  Result<std::int64_t> id = workspace.runStore().beginRun(name, header, withTruth, resolver);
   if (!id) return id.error();
   return std::unique_ptr<RunRecording>(new RunRecording(workspace, name, id.value()));
 }
@@ -36,7 +36,7 @@ Status RunRecording::append(const RunData& run, std::size_t minSteps) {
   if (steps == stored_ || steps - stored_ < std::max<std::size_t>(minSteps, 1)) {
     return Status::success();
   }
-  Status written = workspace_.database().appendSteps(runId_, run, stored_);
+  Status written = workspace_.runStore().appendSteps(runId_, run, stored_);
   if (!written) return written;
   stored_ = steps;
   return Status::success();
@@ -44,7 +44,7 @@ Status RunRecording::append(const RunData& run, std::size_t minSteps) {
 
 Status RunRecording::finish(const RunData& run) {
   if (finished_) return Error("run '" + name_ + "' is finished already");
-  Status done = workspace_.database().finishRun(runId_, run);
+  Status done = workspace_.runStore().finishRun(runId_, run);
   if (!done) return done;
   stored_ = run.stepCount();
   finished_ = true;

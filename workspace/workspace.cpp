@@ -81,28 +81,28 @@ Result<std::unique_ptr<Workspace>> Workspace::open(const std::filesystem::path& 
 Workspace::Workspace(std::unique_ptr<storage::RunDatabase> database) : db_(std::move(database)) {}
 
 Result<RunData> Workspace::loadRun(std::string_view name) {
-  auto info = db_->findRun(name);
+  auto info = db_->runs().find(name);
   if (!info) return info.error();
-  return db_->loadRun(info->id);
+  return db_->runs().load(info->id);
 }
 
 Result<storage::RunWindow> Workspace::loadWindow(std::string_view name, std::int64_t firstStep,
                                                  std::int64_t count) {
-  auto info = db_->findRun(name);
+  auto info = db_->runs().find(name);
   if (!info) return info.error();
-  return db_->loadWindow(info->id, firstStep, count);
+  return db_->runs().loadWindow(info->id, firstStep, count);
 }
 
 Result<storage::RunTrack> Workspace::loadTrack(std::string_view name) {
-  auto info = db_->findRun(name);
+  auto info = db_->runs().find(name);
   if (!info) return info.error();
-  return db_->loadTrack(info->id);
+  return db_->runs().loadTrack(info->id);
 }
 
 Result<std::vector<std::pair<std::int64_t, double>>> Workspace::labelCoverage(std::int64_t setId) {
-  auto covered = db_->labelledSteps(setId);
+  auto covered = db_->labels().labelledSteps(setId);
   if (!covered) return covered.error();
-  auto runs = db_->listRuns();
+  auto runs = db_->runs().list();
   if (!runs) return runs.error();
   std::vector<std::pair<std::int64_t, double>> out;
   for (const auto& [runId, groupSteps] : covered.value()) {
@@ -278,22 +278,22 @@ std::pair<std::int64_t, std::int64_t> widened(const std::vector<storage::LabelSe
 Result<LabelEdit> Workspace::addSegment(std::int64_t setId, const storage::LabelSegment& segment) {
   std::int64_t runId = segment.runId;
   if (runId == 0) {
-    auto info = db_->findRun(segment.run);
+    auto info = db_->runs().find(segment.run);
     if (!info) return info.error();
     runId = info->id;
   }
   LabelEdit edit{setId, runId, segment.group, {}, {}, 0};
-  auto before =
-      db_->segmentsInRange(setId, runId, segment.group, segment.firstStep, segment.lastStep);
+  auto before = db_->labels().segmentsInRange(setId, runId, segment.group, segment.firstStep,
+                                              segment.lastStep);
   if (!before) return before.error();
   edit.before = std::move(before.value());
   storage::LabelSegment toAdd = segment;
   toAdd.runId = runId;
-  auto id = db_->addSegment(setId, toAdd);
+  auto id = db_->labels().addSegment(setId, toAdd);
   if (!id) return id.error();
   edit.segmentId = id.value();
   const auto [first, last] = widened(edit.before, segment.firstStep, segment.lastStep);
-  auto after = db_->segmentsInRange(setId, runId, segment.group, first, last);
+  auto after = db_->labels().segmentsInRange(setId, runId, segment.group, first, last);
   if (!after) return after.error();
   edit.after = std::move(after.value());
   return edit;
@@ -301,7 +301,7 @@ Result<LabelEdit> Workspace::addSegment(std::int64_t setId, const storage::Label
 
 Result<LabelEdit> Workspace::changeSegment(std::int64_t setId, std::int64_t segmentId,
                                            const storage::LabelSegment& segment) {
-  auto old = db_->segment(setId, segmentId);
+  auto old = db_->labels().segment(setId, segmentId);
   if (!old) return old.error();
   if (segment.group != old->group || (segment.runId != 0 && segment.runId != old->runId)) {
     return failure("a segment keeps its run and group when changed; add a new one instead");
@@ -310,24 +310,24 @@ Result<LabelEdit> Workspace::changeSegment(std::int64_t setId, std::int64_t segm
   const std::int64_t first = std::min(old->firstStep, segment.firstStep);
   const std::int64_t last = std::max(old->lastStep, segment.lastStep);
   LabelEdit edit{setId, runId, old->group, {}, {}, segmentId};
-  auto before = db_->segmentsInRange(setId, runId, old->group, first, last);
+  auto before = db_->labels().segmentsInRange(setId, runId, old->group, first, last);
   if (!before) return before.error();
   edit.before = std::move(before.value());
   storage::LabelSegment changed = segment;
   changed.runId = runId;
-  if (Status s = db_->changeSegment(segmentId, changed); !s) return s.error();
+  if (Status s = db_->labels().changeSegment(segmentId, changed); !s) return s.error();
   const auto [wideFirst, wideLast] = widened(edit.before, first, last);
-  auto after = db_->segmentsInRange(setId, runId, old->group, wideFirst, wideLast);
+  auto after = db_->labels().segmentsInRange(setId, runId, old->group, wideFirst, wideLast);
   if (!after) return after.error();
   edit.after = std::move(after.value());
   return edit;
 }
 
 Result<LabelEdit> Workspace::removeSegment(std::int64_t setId, std::int64_t segmentId) {
-  auto old = db_->segment(setId, segmentId);
+  auto old = db_->labels().segment(setId, segmentId);
   if (!old) return old.error();
   LabelEdit edit{setId, old->runId, old->group, {old.value()}, {}, 0};
-  if (Status s = db_->removeSegment(segmentId); !s) return s.error();
+  if (Status s = db_->labels().removeSegment(segmentId); !s) return s.error();
   return edit;
 }
 
@@ -350,13 +350,15 @@ std::pair<std::int64_t, std::int64_t> extent(const LabelEdit& edit) {
 Status Workspace::undo(const LabelEdit& edit) {
   const auto [first, last] = extent(edit);
   if (first > last) return Status::success();
-  return db_->replaceSegmentsInRange(edit.setId, edit.runId, edit.group, first, last, edit.before);
+  return db_->labels().replaceSegmentsInRange(edit.setId, edit.runId, edit.group, first, last,
+                                              edit.before);
 }
 
 Status Workspace::redo(const LabelEdit& edit) {
   const auto [first, last] = extent(edit);
   if (first > last) return Status::success();
-  return db_->replaceSegmentsInRange(edit.setId, edit.runId, edit.group, first, last, edit.after);
+  return db_->labels().replaceSegmentsInRange(edit.setId, edit.runId, edit.group, first, last,
+                                              edit.after);
 }
 
 // ---- learning ----------------------------------------------------------------------------------
@@ -365,11 +367,11 @@ Result<Workspace::Labelled> Workspace::loadLabelled(std::int64_t setId,
                                                     const std::vector<std::string>& names) {
   Labelled out;
   for (const std::string& name : names) {
-    auto info = db_->findRun(name);
+    auto info = db_->runs().find(name);
     if (!info) return info.error();
-    auto run = db_->loadRun(info->id);
+    auto run = db_->runs().load(info->id);
     if (!run) return run.error();
-    auto segments = db_->segments(setId, info->id);
+    auto segments = db_->labels().segments(setId, info->id);
     if (!segments) return segments.error();
     std::vector<LabelRecord> records;
     records.reserve(segments->size());
@@ -399,11 +401,11 @@ RunSplit holdOutEveryFourth(std::vector<std::string> runs) {
 }
 
 Result<TrainOutcome> Workspace::train(const TrainRequest& request, const ProgressFn& progress) {
-  auto set = db_->findLabelSet(request.labelSet);
+  auto set = db_->labels().find(request.labelSet);
   if (!set) return set.error();
   if (!request.modelName.empty()) {
     // A taken name is found before the work, not after it.
-    if (auto taken = db_->modelInfo(request.modelName); taken) {
+    if (auto taken = db_->models().info(request.modelName); taken) {
       return failure("a model named '" + request.modelName +
                      "' is already stored; choose another name or delete it first");
     }
@@ -413,7 +415,7 @@ Result<TrainOutcome> Workspace::train(const TrainRequest& request, const Progres
   // Runs.
   std::vector<std::string> labelled;
   {
-    auto catalog = db_->labelSetCatalog();
+    auto catalog = db_->labels().catalog();
     if (!catalog) return catalog.error();
     for (const storage::LabelSetCatalogEntry& e : catalog.value())
       if (e.set.id == set->id) labelled = e.runs;
@@ -511,13 +513,13 @@ Result<TrainOutcome> Workspace::train(const TrainRequest& request, const Progres
 Result<TrainOutcome> Workspace::storeTrained(TrainOutcome outcome, const TrainRequest& request) {
   std::string name = request.modelName;
   if (!name.empty()) {
-    if (auto taken = db_->modelInfo(name); taken) {
+    if (auto taken = db_->models().info(name); taken) {
       return failure("a model named '" + name +
                      "' is already stored; choose another name or delete it first");
     }
   }
   if (name.empty()) {
-    auto models = db_->listModels();
+    auto models = db_->models().list();
     if (!models) return models.error();
     std::set<std::string> taken;
     for (const storage::ModelInfo& m : models.value())
@@ -527,9 +529,9 @@ Result<TrainOutcome> Workspace::storeTrained(TrainOutcome outcome, const TrainRe
       if (!taken.count(name)) break;
     }
   }
-  auto id = db_->addModel(name, dumpJson(analysis::bundleToJson(outcome.bundle)),
-                          dumpJson(outcome.provenance),
-                          dumpJson(analysis::bundleMetricsToJson(outcome.bundle)));
+  auto id = db_->models().add(name, dumpJson(analysis::bundleToJson(outcome.bundle)),
+                              dumpJson(outcome.provenance),
+                              dumpJson(analysis::bundleMetricsToJson(outcome.bundle)));
   if (!id) return id.error();
   outcome.modelName = name;
   outcome.modelId = id.value();
@@ -540,7 +542,7 @@ Result<SweepOutcome> Workspace::sweep(
     const SweepRequest& request,
     const std::function<void(const analysis::SweepCellResult&)>& onCell,
     const ProgressFn& progress) {
-  auto set = db_->findLabelSet(request.labelSet);
+  auto set = db_->labels().find(request.labelSet);
   if (!set) return set.error();
   const bool byScene = request.split == SplitMode::ByScene;
   if (request.split == SplitMode::LeaveOneRunOut) {
@@ -590,7 +592,7 @@ Result<SweepOutcome> Workspace::sweep(
   configuration["program_version"] = programVersion();
   const std::string name =
       request.name.empty() ? defaultSweepName(request.labelSet, request.grid) : request.name;
-  auto sweepId = db_->createSweep(name, dumpJson(configuration));
+  auto sweepId = db_->sweeps().create(name, dumpJson(configuration));
   if (!sweepId) return sweepId.error();
 
   Error storeError;
@@ -598,9 +600,9 @@ Result<SweepOutcome> Workspace::sweep(
   analysis::SweepOptions options;
   options.threads = request.threads;
   options.onCell = [&](const analysis::SweepCellResult& cell) {
-    auto stored =
-        db_->addSweepCell(sweepId.value(), dumpJson(analysis::sweepCellSettingsToJson(cell.cell)),
-                          dumpJson(analysis::sweepCellToJson(cell)));
+    auto stored = db_->sweeps().addCell(sweepId.value(),
+                                        dumpJson(analysis::sweepCellSettingsToJson(cell.cell)),
+                                        dumpJson(analysis::sweepCellToJson(cell)));
     if (!stored && !storeFailed) {
       storeFailed = true;
       storeError = stored.error();
@@ -618,7 +620,7 @@ Result<SweepOutcome> Workspace::sweep(
     json failed = configuration;
     failed["state"] = "failed";
     failed["error"] = error;
-    (void)db_->updateSweep(sweepId.value(), dumpJson(failed));  // best effort (a full disk)
+    (void)db_->sweeps().update(sweepId.value(), dumpJson(failed));  // best effort (a full disk)
   };
   try {
     outcome.result =
@@ -642,7 +644,7 @@ Result<SweepOutcome> Workspace::sweep(
   final["state"] = storeFailed ? "failed" : outcome.result.cancelled ? "cancelled" : "finished";
   final["program_version"] = programVersion();
   if (storeFailed) final["error"] = storeError.text();
-  if (Status s = db_->updateSweep(sweepId.value(), dumpJson(final)); !s) {
+  if (Status s = db_->sweeps().update(sweepId.value(), dumpJson(final)); !s) {
     markFailed(s.errorText());
     return s.error();
   }
@@ -651,9 +653,9 @@ Result<SweepOutcome> Workspace::sweep(
 }
 
 Result<analysis::SweepResult> Workspace::loadSweep(std::int64_t sweepId) {
-  auto info = db_->sweepInfo(sweepId);
+  auto info = db_->sweeps().info(sweepId);
   if (!info) return info.error();
-  auto cells = db_->sweepCells(sweepId);
+  auto cells = db_->sweeps().cells(sweepId);
   if (!cells) return cells.error();
   json doc;
   try {
@@ -685,7 +687,7 @@ Result<analysis::SweepResult> Workspace::loadSweep(std::int64_t sweepId) {
 }
 
 Result<analysis::ModelBundle> Workspace::loadModel(std::string_view name) {
-  auto text = db_->loadModel(std::string(name));
+  auto text = db_->models().load(std::string(name));
   if (!text) return text.error();
   return analysis::parseModelJson(text.value(), "model '" + std::string(name) + "'");
 }

@@ -162,13 +162,22 @@ class Workspace {
                                                  const storage::OpenOptions& options = {});
   explicit Workspace(std::unique_ptr<storage::RunDatabase> database);
 
-  storage::RunDatabase& database() { return *db_; }
+  // The database's stores (storage/run_database.h); what the workbench and the CLI edit or read
+  // beside the jobs below goes through these.
+  storage::RunStore runStore() { return db_->runs(); }
+  storage::LabelStore labelStore() { return db_->labels(); }
+  storage::ModelStore modelStore() { return db_->models(); }
+  storage::SweepStore sweepStore() { return db_->sweeps(); }
+  // Where the database is (a file, or a server address without password) and how it was opened.
+  const std::filesystem::path& databasePath() const { return db_->path(); }
+  bool readOnly() const { return db_->readOnly(); }
+  storage::IntegrityReport check() { return db_->check(); }
 
   // ---- listing ----
-  Result<std::vector<storage::RunCatalogEntry>> runs() { return db_->runCatalog(); }
-  Result<std::vector<storage::LabelSetCatalogEntry>> labelSets() { return db_->labelSetCatalog(); }
-  Result<std::vector<storage::ModelInfo>> models() { return db_->listModels(); }
-  Result<std::vector<storage::SweepInfo>> sweeps() { return db_->listSweeps(); }
+  Result<std::vector<storage::RunCatalogEntry>> runs() { return db_->runs().catalog(); }
+  Result<std::vector<storage::LabelSetCatalogEntry>> labelSets() { return db_->labels().catalog(); }
+  Result<std::vector<storage::ModelInfo>> models() { return db_->models().list(); }
+  Result<std::vector<storage::SweepInfo>> sweeps() { return db_->sweeps().list(); }
 
   // ---- runs ----
   Result<RunData> loadRun(std::string_view name);

@@ -45,9 +45,9 @@ Result<std::string> Workspace::importModel(const std::filesystem::path& file, st
   analysis::ModelBundle marked = read.value();
   for (analysis::GroupModel& m : marked.models)
     m.provenance.importedFrom = file.string();
-  auto id = db_->addModel(name, dumpJson(analysis::bundleToJson(read.value())),
-                          dumpJson(analysis::bundleProvenanceToJson(marked)),
-                          dumpJson(analysis::bundleMetricsToJson(read.value())));
+  auto id = db_->models().add(name, dumpJson(analysis::bundleToJson(read.value())),
+                              dumpJson(analysis::bundleProvenanceToJson(marked)),
+                              dumpJson(analysis::bundleMetricsToJson(read.value())));
   if (!id) return id.error();
   return name;
 }
@@ -64,7 +64,7 @@ std::string floorText(double floor) {
 
 Result<TrainOutcome> Workspace::trainSweepCell(std::int64_t sweepId, std::size_t cellIndex,
                                                std::string modelName, const ProgressFn& progress) {
-  auto info = db_->sweepInfo(sweepId);
+  auto info = db_->sweeps().info(sweepId);
   if (!info) return info.error();
   auto sweep = loadSweep(sweepId);
   if (!sweep) return sweep.error();
@@ -116,7 +116,7 @@ Result<TrainOutcome> Workspace::trainSweepCell(std::int64_t sweepId, std::size_t
                                   : std::string()) +
                              " floor " + floorText(cell.varianceFloor);
     modelName = base;
-    for (int n = 2; db_->modelInfo(modelName); ++n)
+    for (int n = 2; db_->models().info(modelName); ++n)
       modelName = base + " (" + std::to_string(n) + ")";
   }
   request.modelName = modelName;

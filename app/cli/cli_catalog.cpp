@@ -31,7 +31,7 @@ std::string joined(const std::vector<std::string>& names) {
 
 int runRunsList(const std::string& dbPath, bool json) {
   auto db = openDatabaseForRead(dbPath);
-  auto runs = db->runCatalog();
+  auto runs = db->runs().catalog();
   if (!runs) throw std::runtime_error(runs.errorText());
   if (json) {
     nlohmann::json list = nlohmann::json::array();
@@ -57,7 +57,7 @@ int runRunsList(const std::string& dbPath, bool json) {
 int runRunsRename(const std::string& dbPath, const std::string& from, const std::string& to,
                   bool json) {
   auto db = openDatabaseForWrite(dbPath);
-  const auto status = db->renameRun(from, to);
+  const auto status = db->runs().rename(from, to);
   if (!status) throw std::runtime_error(status.errorText());
   if (json) {
     printJson({{"renamed", {{"from", from}, {"to", to}}}});
@@ -69,7 +69,7 @@ int runRunsRename(const std::string& dbPath, const std::string& from, const std:
 
 int runRunsDelete(const std::string& dbPath, const std::vector<std::string>& names, bool json) {
   auto db = openDatabaseForWrite(dbPath);
-  const auto status = db->deleteRuns(names);
+  const auto status = db->runs().remove(names);
   if (!status) throw std::runtime_error(status.errorText());
   if (json) {
     printJson({{"deleted", names}});
@@ -83,7 +83,7 @@ int runRunsDelete(const std::string& dbPath, const std::vector<std::string>& nam
 
 int runLabelsList(const std::string& dbPath, bool json) {
   auto db = openDatabaseForRead(dbPath);
-  auto sets = db->labelSetCatalog();
+  auto sets = db->labels().catalog();
   if (!sets) throw std::runtime_error(sets.errorText());
   if (json) {
     nlohmann::json list = nlohmann::json::array();
@@ -110,7 +110,7 @@ int runLabelsList(const std::string& dbPath, bool json) {
 int runLabelsRename(const std::string& dbPath, const std::string& from, const std::string& to,
                     bool json) {
   auto db = openDatabaseForWrite(dbPath);
-  const auto status = db->renameLabelSetNamed(from, to);
+  const auto status = db->labels().rename(from, to);
   if (!status) throw std::runtime_error(status.errorText());
   if (json) {
     printJson({{"renamed", {{"from", from}, {"to", to}}}});
@@ -122,7 +122,7 @@ int runLabelsRename(const std::string& dbPath, const std::string& from, const st
 
 int runLabelsDelete(const std::string& dbPath, const std::vector<std::string>& names, bool json) {
   auto db = openDatabaseForWrite(dbPath);
-  const auto status = db->deleteLabelSets(names);
+  const auto status = db->labels().remove(names);
   if (!status) throw std::runtime_error(status.errorText());
   if (json) {
     printJson({{"deleted", names}});
@@ -136,7 +136,7 @@ int runLabelsImport(const std::string& dbPath, const std::string& set, const std
                     bool json) {
   requireValidName(set, "--set", "label set");
   auto db = openDatabaseOrCreate(dbPath);
-  auto count = db->importLabels(set, file);
+  auto count = db->labels().importFile(set, file);
   if (!count) throw std::runtime_error(count.errorText());
   if (json) {
     printJson({{"set", set}, {"segments", count.value()}});
@@ -150,7 +150,7 @@ int runLabelsImport(const std::string& dbPath, const std::string& set, const std
 int runLabelsExport(const std::string& dbPath, const std::string& set, const std::string& file,
                     bool json) {
   auto db = openDatabaseForRead(dbPath);
-  const auto status = db->exportLabels(set, file);
+  const auto status = db->labels().exportFile(set, file);
   if (!status) throw std::runtime_error(status.errorText());
   if (json) {
     printJson({{"set", set}, {"file", file}});

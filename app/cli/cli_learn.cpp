@@ -720,7 +720,7 @@ int runReportDb(const ReportArgs& a) {
   auto ws = openWorkspace(a.db, false);
   auto sweep = ws->loadSweep(a.sweep);
   if (!sweep) throw std::runtime_error(a.db + ": " + sweep.errorText());
-  auto info = ws->database().sweepInfo(a.sweep);
+  auto info = ws->sweepStore().info(a.sweep);
   json configuration = json::object();
   if (info) configuration = json::parse(info->configurationJson, nullptr, false);
   if (a.out.empty() || a.out == "-") {

@@ -106,7 +106,7 @@ int runImport(const ImportArgs& a) {
   options.threads = a.threads;
   options.sceneResolver = sim::proceduralSceneJson;
   const auto t0 = std::chrono::steady_clock::now();
-  const auto outcomes = db->importFiles(files, options);
+  const auto outcomes = db->runs().importFiles(files, options);
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   nlohmann::json runs = nlohmann::json::array();
@@ -160,9 +160,9 @@ int runImport(const ImportArgs& a) {
 int runExport(const std::string& dbPath, const std::string& runName, const std::string& out,
               bool json) {
   auto db = openDatabaseForRead(dbPath);
-  auto run = db->findRun(runName);
+  auto run = db->runs().find(runName);
   if (!run) throw std::runtime_error(databaseError(dbPath, run.error()));
-  const auto status = db->exportRun(run->id, out);
+  const auto status = db->runs().exportRun(run->id, out);
   // SQLite errors name the database (Error::file), write errors the output file.
   if (!status) throw std::runtime_error(status.errorText());
   if (json) {
@@ -180,11 +180,11 @@ int runAutolabel(const std::string& dbPath, const std::string& runName, bool all
   auto db = openDatabaseOrCreate(dbPath);
   std::vector<storage::RunInfo> runs;
   if (all) {
-    auto listed = db->listRuns();
+    auto listed = db->runs().list();
     if (!listed) throw std::runtime_error(databaseError(dbPath, listed.error()));
     runs = std::move(listed.value());
   } else {
-    auto run = db->findRun(runName);
+    auto run = db->runs().find(runName);
     if (!run) throw std::runtime_error(databaseError(dbPath, run.error()));
     runs.push_back(std::move(run.value()));
   }
@@ -196,7 +196,7 @@ int runAutolabel(const std::string& dbPath, const std::string& runName, bool all
       printWarning("run '" + run.name + "' has no truth columns; not labelled");
       continue;
     }
-    auto count = db->autolabel(run.id, set);
+    auto count = db->labels().autolabel(run.id, set);
     if (!count) {
       // One line per distinct error: a failure of the database (not of this run) would otherwise
       // repeat for every run.
@@ -395,7 +395,7 @@ void benchServer(const BenchArgs& a, const std::vector<fs::path>& files, const f
                  RunDatabase& file, nlohmann::json& result) {
   auto server = openDatabaseOrCreate(a.server);
   if (!server->onServer()) throw UsageError("--server must be a PostgreSQL address");
-  auto runs = server->listRuns();
+  auto runs = server->runs().list();
   if (!runs) throw std::runtime_error(runs.errorText());
   if (!runs->empty()) {
     throw UsageError(
@@ -409,7 +409,7 @@ void benchServer(const BenchArgs& a, const std::vector<fs::path>& files, const f
   };
   const double cpu0 = cpuSeconds(RUSAGE_SELF);
   const double many = timed([&] {
-    for (const auto& outcome : server->importFiles(files)) {
+    for (const auto& outcome : server->runs().importFiles(files)) {
       if (outcome.status != ImportStatus::Imported) throw std::runtime_error(outcome.message);
     }
   });
@@ -417,12 +417,13 @@ void benchServer(const BenchArgs& a, const std::vector<fs::path>& files, const f
   result["server_import_cpu_seconds"] = cpuSeconds(RUSAGE_SELF) - cpu0;
   result["server_import_steps_per_second"] = static_cast<double>(a.steps) / many;
   const double single = timed([&] {
-    const auto outcomes = server->importFiles({big});
+    const auto outcomes = server->runs().importFiles({big});
     if (outcomes[0].status != ImportStatus::Imported) throw std::runtime_error(outcomes[0].message);
   });
   result["server_single_file_import_seconds"] = single;
   result["server_single_file_steps_per_second"] = static_cast<double>(a.bigSteps) / single;
-  if (Status gone = server->deleteRuns({"big"}); !gone) throw std::runtime_error(gone.errorText());
+  if (Status gone = server->runs().remove({"big"}); !gone)
+    throw std::runtime_error(gone.errorText());
   storage::CopyOptions only;
   only.runs = {"big"};
   only.models = false;
@@ -432,12 +433,12 @@ void benchServer(const BenchArgs& a, const std::vector<fs::path>& files, const f
     if (!copied) throw std::runtime_error(copied.errorText());
   });
   result["server_copy_big_run_seconds"] = copy;
-  const auto run = server->findRun("big");
+  const auto run = server->runs().find("big");
   if (!run) throw std::runtime_error(run.errorText());
   // What the workbench reads to paint a run first: the track, a summary, the cursor's step.
   const double open = timed([&] {
-    if (!server->loadTrack(run->id) || !server->loadSummary(run->id, 0, -1, 2000) ||
-        !server->loadWindow(run->id, 0, 1)) {
+    if (!server->runs().loadTrack(run->id) || !server->runs().loadSummary(run->id, 0, -1, 2000) ||
+        !server->runs().loadWindow(run->id, 0, 1)) {
       throw std::runtime_error("reading the run from the server failed");
     }
   });
@@ -447,17 +448,17 @@ void benchServer(const BenchArgs& a, const std::vector<fs::path>& files, const f
   for (int r = 0; r < a.repeats; ++r) {
     const std::int64_t step = std::uniform_int_distribution<std::int64_t>(0, a.bigSteps - 1)(rng);
     const auto t0 = std::chrono::steady_clock::now();
-    if (!server->loadWindow(run->id, step, 1)) throw std::runtime_error("window failed");
+    if (!server->runs().loadWindow(run->id, step, 1)) throw std::runtime_error("window failed");
     cursorMs.push_back(1e3 * secondsSince(t0));
   }
   result["server_cursor_step_ms_median"] = median(cursorMs);
   if (!a.keep) {
     std::vector<std::string> names;
-    const auto stored = server->listRuns();
+    const auto stored = server->runs().list();
     if (!stored) throw std::runtime_error(stored.errorText());
     for (const auto& info : stored.value())
       names.push_back(info.name);
-    if (Status gone = names.empty() ? Status::success() : server->deleteRuns(names); !gone) {
+    if (Status gone = names.empty() ? Status::success() : server->runs().remove(names); !gone) {
       throw std::runtime_error(gone.errorText());
     }
   }
@@ -497,7 +498,7 @@ int runBenchStorage(const BenchArgs& a) {
     auto db = openDatabaseOrCreate(dbPath.string());
     const auto t0 = std::chrono::steady_clock::now();
     const double cpu0 = cpuSeconds(RUSAGE_SELF);
-    const auto outcomes = db->importFiles(files);
+    const auto outcomes = db->runs().importFiles(files);
     importSeconds = secondsSince(t0);
     importCpu = cpuSeconds(RUSAGE_SELF) - cpu0;
     for (const auto& outcome : outcomes) {
@@ -538,14 +539,14 @@ int runBenchStorage(const BenchArgs& a) {
   {
     const auto t0 = std::chrono::steady_clock::now();
     const double cpu0 = cpuSeconds(RUSAGE_SELF);
-    const auto outcomes = db->importFiles({big});
+    const auto outcomes = db->runs().importFiles({big});
     const double seconds = secondsSince(t0);
     result["single_file_cpu_seconds"] = cpuSeconds(RUSAGE_SELF) - cpu0;
     if (outcomes[0].status != ImportStatus::Imported) throw std::runtime_error(outcomes[0].message);
     result["single_file_import_seconds"] = seconds;
     result["single_file_steps_per_second"] = static_cast<double>(a.bigSteps) / seconds;
   }
-  const auto run = db->findRun("big");
+  const auto run = db->runs().find("big");
   if (!run) throw std::runtime_error(run.errorText());
   std::mt19937_64 rng(3);
   std::vector<double> windowMs;
@@ -554,11 +555,11 @@ int runBenchStorage(const BenchArgs& a) {
     const std::int64_t first =
         std::uniform_int_distribution<std::int64_t>(0, a.bigSteps - 10000)(rng);
     auto t0 = std::chrono::steady_clock::now();
-    auto window = db->loadWindow(run->id, first, 10000);
+    auto window = db->runs().loadWindow(run->id, first, 10000);
     windowMs.push_back(1e3 * secondsSince(t0));
     if (!window || window->data.stepCount() != 10000) throw std::runtime_error("window failed");
     t0 = std::chrono::steady_clock::now();
-    auto summary = db->loadSummary(run->id, 0, -1, 2000);
+    auto summary = db->runs().loadSummary(run->id, 0, -1, 2000);
     summaryMs.push_back(1e3 * secondsSince(t0));
     if (!summary || summary->buckets.empty()) throw std::runtime_error("summary failed");
   }
@@ -566,7 +567,7 @@ int runBenchStorage(const BenchArgs& a) {
   result["summary_2000_buckets_ms_median"] = median(summaryMs);
   {
     const auto t0 = std::chrono::steady_clock::now();
-    auto whole = db->loadRun(run->id);
+    auto whole = db->runs().load(run->id);
     result["load_whole_run_seconds"] = secondsSince(t0);
     if (!whole) throw std::runtime_error(whole.errorText());
   }

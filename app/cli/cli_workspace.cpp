@@ -35,7 +35,7 @@ struct Common {
 
 int modelsList(const Common& c) {
   auto db = openDatabaseForRead(c.db);
-  auto models = db->listModels();
+  auto models = db->models().list();
   if (!models) throw std::runtime_error(models.errorText());
   json list = json::array();
   for (const storage::ModelInfo& m : models.value()) {
@@ -95,7 +95,7 @@ int modelsImport(const Common& c, const std::string& file, const std::string& na
   const Result<std::string> stored = ws.importModel(file, name);
   if (!stored) throw std::runtime_error(stored.errorText());
   const std::size_t groups = ws.loadModel(stored.value()).value().models.size();
-  auto id = ws.database().modelInfo(stored.value());
+  auto id = ws.modelStore().info(stored.value());
   if (c.json) {
     std::cout << dumpJson(
                      json{{"model", stored.value()}, {"id", id ? id->id : 0}, {"groups", groups}})
@@ -153,7 +153,7 @@ int modelsDelete(const Common& c, std::vector<std::string> names) {
   std::sort(names.begin(), names.end());
   names.erase(std::unique(names.begin(), names.end()), names.end());
   auto db = openDatabaseForWrite(c.db);
-  const Status deleted = db->deleteModels(names);
+  const Status deleted = db->models().remove(names);
   if (!deleted) throw std::runtime_error(c.db + ": " + deleted.errorText());
   if (c.json) {
     std::cout << dumpJson(json{{"deleted", names}}) << "\n";
@@ -165,7 +165,7 @@ int modelsDelete(const Common& c, std::vector<std::string> names) {
 
 int sweepsList(const Common& c) {
   auto db = openDatabaseForRead(c.db);
-  auto sweeps = db->listSweeps();
+  auto sweeps = db->sweeps().list();
   if (!sweeps) throw std::runtime_error(sweeps.errorText());
   json list = json::array();
   for (const storage::SweepInfo& w : sweeps.value()) {
@@ -199,7 +199,7 @@ int sweepsDelete(const Common& c, std::vector<std::int64_t> ids) {
   std::sort(ids.begin(), ids.end());
   ids.erase(std::unique(ids.begin(), ids.end()), ids.end());
   auto db = openDatabaseForWrite(c.db);
-  const Status deleted = db->deleteSweeps(ids);
+  const Status deleted = db->sweeps().remove(ids);
   if (!deleted) throw std::runtime_error(c.db + ": " + deleted.errorText());
   if (c.json) {
     std::cout << dumpJson(json{{"deleted", ids}}) << "\n";

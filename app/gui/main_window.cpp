@@ -498,7 +498,7 @@ Status MainWindow::openDatabase(const QString& path, bool create) {
   settings.endGroup();
 
   if (!lastSet.isEmpty() && labels_->openSet(lastSet.toStdString()).ok()) {
-  } else if (auto sets = workspace_->database().listLabelSets(); sets && !sets->empty()) {
+  } else if (auto sets = workspace_->labelStore().list(); sets && !sets->empty()) {
     (void)labels_->openSet(sets->front().name);
   }
   Status listed = runModel_->reload(workspace_.get(), labels_->setId());
@@ -857,7 +857,7 @@ Status MainWindow::showPredictions(const PredictionModel::Choice& models) {
   if (!session_->isOpen()) return Error("no run is open");
   for (const QString& m : models) {
     if (m.isEmpty()) continue;
-    if (auto info = workspace_->database().modelInfo(m.toStdString()); !info) return info.error();
+    if (auto info = workspace_->modelStore().info(m.toStdString()); !info) return info.error();
   }
   predictions_->compute(dbPath_, QString::fromStdString(session_->info().name), models);
   return Status::success();

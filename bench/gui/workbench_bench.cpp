@@ -74,7 +74,7 @@ void makeDatabase() {
     if (!db) std::abort();
     tactile::RunData run =
         tactile::storage::makeSyntheticRun(static_cast<std::size_t>(benchSteps()), 7);
-    const auto out = db.value()->importRun(run, "long");
+    const auto out = db.value()->runs().importRun(run, "long");
     if (out.status != tactile::storage::ImportStatus::Imported) {
       std::fprintf(stderr, "%s\n", out.message.c_str());
       std::abort();
@@ -177,7 +177,7 @@ void ensureSweepRuns() {
   auto db = tactile::storage::RunDatabase::open(benchDatabase().toStdString());
   if (!db) std::abort();
   for (const char* name : kSweepRuns) {
-    if (db.value()->findRun(name)) continue;
+    if (db.value()->runs().find(name)) continue;
     const std::string scene = std::string(name).substr(6);
     auto loaded = tactile::sim::loadScene(scene);
     if (!loaded) std::abort();
@@ -187,11 +187,11 @@ void ensureSweepRuns() {
     options.stopAtGoal = false;
     auto run = tactile::sim::simulateRun(world, scene, options);
     if (!run) std::abort();
-    if (db.value()->importRun(run.value().run, name).status !=
+    if (db.value()->runs().importRun(run.value().run, name).status !=
         tactile::storage::ImportStatus::Imported)
       std::abort();
-    auto info = db.value()->findRun(name);
-    if (!info || !db.value()->autolabel(info->id, "truth")) std::abort();
+    auto info = db.value()->runs().find(name);
+    if (!info || !db.value()->labels().autolabel(info->id, "truth")) std::abort();
   }
 }
 
@@ -283,9 +283,9 @@ void BM_BaselineLoadWholeRun(benchmark::State& state) {
     state.SkipWithError("cannot open the database");
     return;
   }
-  auto info = db.value()->findRun("long");
+  auto info = db.value()->runs().find("long");
   for (auto _ : state) {
-    auto run = db.value()->loadRun(info->id);
+    auto run = db.value()->runs().load(info->id);
     benchmark::DoNotOptimize(run.ok());
     state.counters["run_mib"] =
         run.ok() ? static_cast<double>(run->sensors.size() * sizeof(double)) / (1 << 20) : 0.0;

@@ -38,7 +38,7 @@ BigRun& bigRun() {
   static BigRun big = [] {
     BigRun b;
     b.db = std::move(RunDatabase::open(benchDir() / "big.db").value());
-    const auto outcome = b.db->importRun(makeSyntheticRun(b.steps, 7), "big");
+    const auto outcome = b.db->runs().importRun(makeSyntheticRun(b.steps, 7), "big");
     if (outcome.status != ImportStatus::Imported) std::abort();
     b.runId = outcome.runId;
     return b;
@@ -57,7 +57,7 @@ void BM_ImportText(benchmark::State& state) {
     ImportOptions options;
     options.name = "r";
     state.ResumeTiming();
-    const auto outcome = db->importText(text, "run.csv", options);
+    const auto outcome = db->runs().importText(text, "run.csv", options);
     if (outcome.status != ImportStatus::Imported) state.SkipWithError(outcome.message.c_str());
     state.PauseTiming();
     db.reset();
@@ -76,7 +76,7 @@ void BM_LoadWindow10k(benchmark::State& state) {
   std::mt19937_64 rng(1);
   std::uniform_int_distribution<std::int64_t> pick(0, big.steps - 10000);
   for (auto _ : state) {
-    auto window = big.db->loadWindow(big.runId, pick(rng), 10000);
+    auto window = big.db->runs().loadWindow(big.runId, pick(rng), 10000);
     if (!window || window->data.stepCount() != 10000) state.SkipWithError("window failed");
     benchmark::DoNotOptimize(window);
   }
@@ -88,7 +88,7 @@ void BM_SummaryWholeRun(benchmark::State& state) {
   BigRun& big = bigRun();
   const int buckets = static_cast<int>(state.range(0));
   for (auto _ : state) {
-    auto summary = big.db->loadSummary(big.runId, 0, -1, buckets);
+    auto summary = big.db->runs().loadSummary(big.runId, 0, -1, buckets);
     if (!summary || summary->buckets.empty()) state.SkipWithError("summary failed");
     benchmark::DoNotOptimize(summary);
   }
@@ -102,7 +102,7 @@ void BM_SummaryNarrowRange(benchmark::State& state) {
   std::uniform_int_distribution<std::int64_t> pick(0, big.steps - length);
   for (auto _ : state) {
     const std::int64_t first = pick(rng);
-    auto summary = big.db->loadSummary(big.runId, first, first + length - 1, 2000);
+    auto summary = big.db->runs().loadSummary(big.runId, first, first + length - 1, 2000);
     if (!summary) state.SkipWithError("summary failed");
     benchmark::DoNotOptimize(summary);
   }

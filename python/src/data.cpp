@@ -96,17 +96,17 @@ py::dict runInfoDict(const storage::RunInfo& r) {
 }
 
 std::int64_t labelSetId(Database& db, const std::string& set) {
-  auto info = db.ws().database().findLabelSet(set);
+  auto info = db.ws().labelStore().find(set);
   if (!info) raiseValueError(info.error());
   return info->id;
 }
 
 py::dict labelsOf(Database& db, const std::string& set, const std::string& runName) {
-  storage::RunDatabase& rdb = db.ws().database();
-  auto run = rdb.findRun(runName);
+  workspace::Workspace& rws = db.ws();
+  auto run = rws.runStore().find(runName);
   if (!run) raiseValueError(run.error());
   const std::int64_t setId = labelSetId(db, set);
-  auto segments = rdb.segments(setId, run->id);
+  auto segments = rws.labelStore().segments(setId, run->id);
   if (!segments) raiseValueError(segments.error());
   const auto steps = static_cast<py::ssize_t>(run->stepCount);
   py::dict classes;
@@ -143,7 +143,7 @@ py::dict labelsOf(Database& db, const std::string& set, const std::string& runNa
 std::vector<std::int64_t> addSegments(Database& db, const std::string& set,
                                       const std::string& runName, const py::list& segments,
                                       const std::optional<std::string>& annotator) {
-  storage::RunDatabase& rdb = db.ws().database();
+  workspace::Workspace& rws = db.ws();
   std::vector<storage::LabelSegment> toAdd;
   for (const py::handle item : segments) {
     const auto t = item.cast<py::tuple>();
@@ -170,14 +170,14 @@ std::vector<std::int64_t> addSegments(Database& db, const std::string& set,
     }
     toAdd.push_back(std::move(s));
   }
-  auto found = rdb.findLabelSet(set);
+  auto found = rws.labelStore().find(set);
   std::int64_t setId = 0;
   std::string setAnnotator;
   if (found) {
     setId = found->id;
     setAnnotator = found->annotator;
   } else {
-    auto created = rdb.createLabelSet(set, annotator.value_or(""));
+    auto created = rws.labelStore().create(set, annotator.value_or(""));
     if (!created) raiseValueError(created.error());
     setId = created.value();
     setAnnotator = annotator.value_or("");

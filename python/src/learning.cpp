@@ -236,10 +236,10 @@ std::shared_ptr<Classifier> classifierFromState(const py::tuple& t) {
 // training: the set's segments through analysis::labelsFromSegments.
 std::vector<std::optional<ContactClass>> runLabels(Database& db, std::int64_t setId,
                                                    const Run& run) {
-  storage::RunDatabase& rdb = db.ws().database();
-  auto info = rdb.findRun(run.name);
+  workspace::Workspace& rws = db.ws();
+  auto info = rws.runStore().find(run.name);
   if (!info) raiseValueError(info.error());
-  auto segments = rdb.segments(setId, info->id);
+  auto segments = rws.labelStore().segments(setId, info->id);
   if (!segments) raiseValueError(segments.error());
   std::vector<LabelRecord> records;
   for (const storage::LabelSegment& s : segments.value())
@@ -254,7 +254,7 @@ std::vector<std::optional<ContactClass>> runLabels(Database& db, std::int64_t se
 py::tuple dataset(Database& db, const std::string& set,
                   const std::vector<std::shared_ptr<Run>>& runs, const std::string& group,
                   const std::string& kind) {
-  auto found = db.ws().database().findLabelSet(set);
+  auto found = db.ws().labelStore().find(set);
   if (!found) raiseValueError(found.error());
   std::vector<analysis::LabelledRun> labelled;
   for (const std::shared_ptr<Run>& r : runs)

@@ -26,7 +26,7 @@ std::vector<std::tuple<std::int64_t, std::int64_t, ContactClass>> stored(GuiFixt
                                                                          std::int64_t setId,
                                                                          SensorGroup group) {
   std::vector<std::tuple<std::int64_t, std::int64_t, ContactClass>> out;
-  auto all = fx.workspace->database().segments(setId);
+  auto all = fx.workspace->labelStore().segments(setId);
   if (!all) return out;
   for (const auto& s : all.value())
     if (s.group == group) out.emplace_back(s.firstStep, s.lastStep, s.cls);
@@ -158,7 +158,7 @@ class GuiCoreTest : public QObject {
     LabelModel labels;
     QVERIFY(openWithNewSet(fx, session, labels, "gone"));
     // The set vanishes underneath the model (another program deleted it).
-    QVERIFY(fx.workspace->database().deleteLabelSet(labels.setId()).ok());
+    QVERIFY(fx.workspace->labelStore().remove({"gone"}).ok());
     QVERIFY(!labels.label({SensorGroup::Back}, 1, 5, ContactClass::Wall).ok());
     QVERIFY(!labels.undoStack()->canUndo() || labels.undoStack()->command(0)->childCount() == 0);
   }
@@ -176,7 +176,7 @@ class GuiCoreTest : public QObject {
     QCOMPARE(labels.setName(), std::string("second"));
     QVERIFY(labels.label({SensorGroup::Right}, 81, 90, ContactClass::Corner).ok());
     QCOMPARE(stored(fx, labels.setId(), SensorGroup::Right).size(), std::size_t{2});
-    auto first = fx.workspace->database().findLabelSet("first");
+    auto first = fx.workspace->labelStore().find("first");
     QVERIFY(first.ok());
     QCOMPARE(stored(fx, first->id, SensorGroup::Right).size(), std::size_t{1});
     // Export, then import into a fresh set: the same segments.
@@ -308,9 +308,9 @@ class GuiCoreTest : public QObject {
 
   void runListShowsCoverageOfTheSet() {
     GuiFixture fx(200);
-    auto set = fx.workspace->database().createLabelSet("cov");
+    auto set = fx.workspace->labelStore().create("cov");
     QVERIFY(set.ok());
-    auto run = fx.workspace->database().findRun(fx.runName);
+    auto run = fx.workspace->runStore().find(fx.runName);
     QVERIFY(run.ok());
     tactile::storage::LabelSegment s;
     s.runId = run->id;

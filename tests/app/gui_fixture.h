@@ -35,7 +35,7 @@ struct GuiFixture {
     options.stopAtGoal = false;
     auto run = sim::simulateRun(world, scene, options);
     if (!run) throw std::runtime_error(run.errorText());
-    const storage::ImportOutcome out = workspace->database().importRun(run.value().run, runName);
+    const storage::ImportOutcome out = workspace->runStore().importRun(run.value().run, runName);
     if (out.status != storage::ImportStatus::Imported) throw std::runtime_error(out.message);
   }
 };

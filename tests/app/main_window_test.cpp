@@ -55,9 +55,9 @@ namespace {
 // Segments of the set stored in the database for one group.
 std::size_t storedSegments(GuiFixture& fx, const std::string& set, SensorGroup group,
                            ContactClass cls) {
-  auto info = fx.workspace->database().findLabelSet(set);
+  auto info = fx.workspace->labelStore().find(set);
   if (!info) return 0;
-  auto all = fx.workspace->database().segments(info->id);
+  auto all = fx.workspace->labelStore().segments(info->id);
   std::size_t n = 0;
   for (const auto& s : all.value()) {
     n += s.group == group && s.cls == cls ? 1 : 0;
@@ -314,7 +314,7 @@ class MainWindowTest : public QObject {
     QTRY_COMPARE_WITH_TIMEOUT(table->model()->rowCount(), 2, 10000);
     // The broken file is reported with its name, and the good one was kept.
     QTRY_VERIFY(window.lastError().contains(QStringLiteral("broken.csv")));
-    QVERIFY(fx.workspace->database().findRun("extra").ok());
+    QVERIFY(fx.workspace->runStore().find("extra").ok());
     // The filter narrows the list.
     window.runList()->setFilterText(QStringLiteral("extra"));
     QCOMPARE(table->model()->rowCount(), 1);
@@ -327,7 +327,7 @@ class MainWindowTest : public QObject {
     auto run = fx.workspace->loadRun(fx.runName);
     QVERIFY(run.ok());
     run->setMeta("subject", "second");
-    QCOMPARE(fx.workspace->database().importRun(run.value(), "zz_second").status,
+    QCOMPARE(fx.workspace->runStore().importRun(run.value(), "zz_second").status,
              tactile::storage::ImportStatus::Imported);
     {
       MainWindow window;
@@ -369,7 +369,7 @@ class MainWindowTest : public QObject {
     QCOMPARE(window.session()->info().name, fx.runName);
     drop(csv);
     QTRY_COMPARE_WITH_TIMEOUT(window.runList()->table()->model()->rowCount(), 2, 10000);
-    QVERIFY(fx.workspace->database().findRun("dropped").ok());
+    QVERIFY(fx.workspace->runStore().find("dropped").ok());
   }
 
   // A database restored beside a write-ahead log that does not belong to it: nothing opens, and
@@ -384,7 +384,7 @@ class MainWindowTest : public QObject {
       auto db = tactile::storage::RunDatabase::open(live, tactile::storage::OpenMode::Create);
       QVERIFY2(db.ok(), db.ok() ? "" : db.errorText().c_str());
       run->setMeta("subject", name);
-      QCOMPARE(db.value()->importRun(run.value(), name).status,
+      QCOMPARE(db.value()->runs().importRun(run.value(), name).status,
                tactile::storage::ImportStatus::Imported);
     };
     importAs("first");
@@ -479,13 +479,13 @@ class MainWindowTest : public QObject {
     QCOMPARE(window.databasePath(),
              QFileInfo(QString::fromStdString(fx.dbPath)).absoluteFilePath());
     QTRY_COMPARE_WITH_TIMEOUT(window.runList()->table()->model()->rowCount(), 2, 10000);
-    QVERIFY(fx.workspace->database().findRun("single").ok());
+    QVERIFY(fx.workspace->runStore().find("single").ok());
 
     // A folder: both of its run files, nothing else.
     drop({folder});
     QTRY_COMPARE_WITH_TIMEOUT(window.runList()->table()->model()->rowCount(), 4, 10000);
-    QVERIFY(fx.workspace->database().findRun("folder_a").ok());
-    QVERIFY(fx.workspace->database().findRun("folder_b").ok());
+    QVERIFY(fx.workspace->runStore().find("folder_a").ok());
+    QVERIFY(fx.workspace->runStore().find("folder_b").ok());
     QVERIFY2(window.lastError().isEmpty(), qPrintable(window.lastError()));
 
     // A file that is neither is reported and changes nothing.
@@ -498,7 +498,7 @@ class MainWindowTest : public QObject {
   // into it and Ctrl+Z did nothing to the labels.
   void keysWorkWhateverHasTheFocusExceptATextField() {
     GuiFixture fx(1000);
-    QVERIFY(fx.workspace->database().createLabelSet("mine").ok());
+    QVERIFY(fx.workspace->labelStore().create("mine").ok());
     MainWindow window;
     QVERIFY(window.openDatabase(QString::fromStdString(fx.dbPath)).ok());
     window.show();
@@ -650,7 +650,7 @@ class MainWindowTest : public QObject {
   // The annotator's name from the preferences is stored on every segment and exported.
   void annotatorIsStoredOnSegmentsAndExported() {
     GuiFixture fx(300);
-    QVERIFY(fx.workspace->database().createLabelSet("named").ok());
+    QVERIFY(fx.workspace->labelStore().create("named").ok());
     QSettings().setValue(tactile::gui::settings_keys::kAnnotator, QStringLiteral("ada"));
     MainWindow window;
     QVERIFY(window.openDatabase(QString::fromStdString(fx.dbPath)).ok());
@@ -658,9 +658,9 @@ class MainWindowTest : public QObject {
     QVERIFY(QTest::qWaitForWindowExposed(&window));
     window.session()->setSelection(10, 20);
     QTest::keyClick(QApplication::focusWidget(), Qt::Key_3);
-    auto set = fx.workspace->database().findLabelSet("named");
+    auto set = fx.workspace->labelStore().find("named");
     QVERIFY(set.ok());
-    auto stored = fx.workspace->database().segments(set->id);
+    auto stored = fx.workspace->labelStore().segments(set->id);
     QVERIFY(stored.ok());
     QCOMPARE(stored->size(), std::size_t{1});
     QCOMPARE(stored->front().annotator, std::string("ada"));
@@ -677,7 +677,7 @@ class MainWindowTest : public QObject {
     window.applyPreferences();
     window.session()->setSelection(30, 40);
     QTest::keyClick(QApplication::focusWidget(), Qt::Key_2);
-    stored = fx.workspace->database().segments(set->id);
+    stored = fx.workspace->labelStore().segments(set->id);
     QCOMPARE(stored->back().annotator, std::string("bob"));
   }
 

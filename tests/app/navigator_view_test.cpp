@@ -54,7 +54,7 @@ class NavigatorViewTest : public QObject {
     run_ = std::move(r.value().run);
     columns_ = run_.extraColumns.size();
     QCOMPARE(columns_, std::size_t{2 + tactile::kGroupCount});
-    const auto out = workspace_->database().importRun(run_, "nav_demo");
+    const auto out = workspace_->runStore().importRun(run_, "nav_demo");
     QVERIFY2(out.status == tactile::storage::ImportStatus::Imported, out.message.c_str());
   }
 

@@ -41,10 +41,10 @@ struct Predicted {
   std::int64_t runId = 0;
 
   Predicted() {
-    auto info = fx.workspace->database().findRun(fx.runName);
+    auto info = fx.workspace->runStore().find(fx.runName);
     if (!info) throw std::runtime_error(info.errorText());
     runId = info->id;
-    if (!fx.workspace->database().autolabel(runId, "truth"))
+    if (!fx.workspace->labelStore().autolabel(runId, "truth"))
       throw std::runtime_error("autolabel failed");
     workspace::TrainRequest request;
     request.labelSet = "truth";
@@ -69,7 +69,7 @@ struct Reviewed {
     labels.setWorkspace(p.fx.workspace.get());
     if (!(create ? labels.createSet(set) : labels.openSet(set)))
       throw std::runtime_error("no label set " + set);
-    auto info = p.fx.workspace->database().findRun(p.fx.runName);
+    auto info = p.fx.workspace->runStore().find(p.fx.runName);
     labels.setRun(info->id, info->name, info->stepCount);
     predictions = std::make_unique<PredictionModel>(&labels);
     predictions->compute(QString::fromStdString(p.fx.dbPath), QString::fromStdString(p.fx.runName),

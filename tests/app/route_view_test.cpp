@@ -228,7 +228,7 @@ class RouteViewTest : public QObject {
       const double t = static_cast<double>(i) * 0.05;
       run.appendStep(t, 0.6 * t, std::atan2(0.6, 1.0), 1.0, 0.0, false, values.data(), nullptr);
     }
-    const auto outcome = r.fx.workspace->database().importRun(run, "straight");
+    const auto outcome = r.fx.workspace->runStore().importRun(run, "straight");
     QCOMPARE(int(outcome.status), int(tactile::storage::ImportStatus::Imported));
     QVERIFY(r.open("straight"));
     const auto n = static_cast<std::int64_t>(kSteps);

@@ -98,7 +98,7 @@ std::int64_t killWorkbenchAfterSteps(const QTemporaryDir& dir, const QString& db
   std::int64_t seen = 0;
   for (int i = 0; i < 300 && seen < minSteps; ++i) {
     std::this_thread::sleep_for(std::chrono::milliseconds(100));
-    auto runs = ws->database().listRuns();
+    auto runs = ws->runStore().list();
     if (runs.ok() && !runs->empty()) seen = runs->front().stepCount;
   }
   if (::kill(static_cast<pid_t>(child.processId()), SIGKILL) != 0) return -1;
@@ -259,7 +259,7 @@ class SimWindowTest : public QObject {
       QVERIFY(!giveUp->isEnabled());
     }
     auto ws = openWorkspace(db);
-    auto runs = ws->database().listRuns();
+    auto runs = ws->runStore().list();
     QVERIFY(runs.ok());
     QCOMPARE(runs->size(), std::size_t{1});
     const storage::RunInfo& info = runs->front();
@@ -290,8 +290,8 @@ class SimWindowTest : public QObject {
     QVERIFY(window.startRun().ok());
     QCOMPARE(window.session()->advance(1000), std::size_t{100});
     QCOMPARE(window.session()->outcome(), RunOutcome::Timeout);
-    auto info = window.session()->workspace()->database().findRun(
-        window.session()->runName().toStdString());
+    auto info =
+        window.session()->workspace()->runStore().find(window.session()->runName().toStdString());
     QVERIFY(info.ok());
     QCOMPARE(info->outcome, std::string("timeout"));
     QCOMPARE(info->stepCount, std::int64_t{100});
@@ -332,8 +332,8 @@ class SimWindowTest : public QObject {
     QVERIFY(recorded.ok());
     QCOMPARE(recorded->stepCount(), std::size_t{14 * 60});
     const QString exported = dir.filePath(QStringLiteral("recorded.csv"));
-    auto info = ws->database().findRun(name.toStdString());
-    QVERIFY(ws->database().exportRun(info->id, exported.toStdString()).ok());
+    auto info = ws->runStore().find(name.toStdString());
+    QVERIFY(ws->runStore().exportRun(info->id, exported.toStdString()).ok());
     const QString replayed = dir.filePath(QStringLiteral("replayed.csv"));
     QProcess cli;
     cli.start(QStringLiteral(TACTILE_CLI),
@@ -371,7 +371,7 @@ class SimWindowTest : public QObject {
     QVERIFY2(seen >= 60, "the window stored no steps");
     auto ws = openWorkspace(db);
 
-    auto runs = ws->database().listRuns();
+    auto runs = ws->runStore().list();
     QVERIFY(runs.ok());
     QCOMPARE(runs->size(), std::size_t{1});
     const storage::RunInfo info = runs->front();
@@ -381,7 +381,7 @@ class SimWindowTest : public QObject {
     auto kept = ws->loadRun(info.name);
     QVERIFY(kept.ok());
     QCOMPARE(static_cast<std::int64_t>(kept->stepCount()), info.stepCount);
-    QVERIFY(ws->database().check().ok);
+    QVERIFY(ws->check().ok);
     // The steps kept are the steps the simulator took: the same commands stepped here.
     auto scene = sim::loadScene("practice");
     sim::RunOptions options;
@@ -408,7 +408,7 @@ class SimWindowTest : public QObject {
     QVERIFY2(seen >= 40, "the window stored no steps");
     auto ws = openWorkspace(db);
 
-    auto runs = ws->database().listRuns();
+    auto runs = ws->runStore().list();
     QVERIFY(runs.ok());
     QCOMPARE(runs->size(), std::size_t{1});
     QCOMPARE(runs->front().outcome, std::string("unknown"));  // killed mid-run
@@ -491,10 +491,10 @@ class SimWindowTest : public QObject {
     // The stored run: the x_ columns of `tactile navigate`, value for value, and the same route:
     // the navigator run by nav::navigate from the same seed's start.
     auto ws = openWorkspace(db);
-    auto runs = ws->database().listRuns();
+    auto runs = ws->runStore().list();
     QVERIFY(runs.ok());
     QCOMPARE(runs->size(), std::size_t{1});
-    auto stored = ws->database().loadRun(runs->front().id);
+    auto stored = ws->runStore().load(runs->front().id);
     QVERIFY(stored.ok());
     QCOMPARE(stored->stepCount(), steps);
     std::vector<std::string> expectedColumns{"x_strategy", "x_status"};
@@ -591,10 +591,10 @@ class SimWindowTest : public QObject {
     QCOMPARE(workbench({QStringLiteral("--status"), QStringLiteral("truth")}, &err), 0);
     {
       auto ws = openWorkspace(db);
-      auto runs = ws->database().listRuns();
+      auto runs = ws->runStore().list();
       QVERIFY(runs.ok());
       QCOMPARE(runs->size(), std::size_t{1});
-      auto stored = ws->database().loadRun(runs->front().id);
+      auto stored = ws->runStore().load(runs->front().id);
       QVERIFY(stored.ok());
       QCOMPARE(*stored->meta("status_source"), std::string("truth"));
       QCOMPARE(stored->stepCount(), std::size_t{50});

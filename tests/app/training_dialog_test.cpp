@@ -45,13 +45,13 @@ struct LearningFixture : gui::testing::GuiFixture {
       auto run = sim::simulateRun(world, scene, options);
       if (!run) throw std::runtime_error(run.errorText());
       const std::string name = std::string(scene) + "_demo";
-      const storage::ImportOutcome out = workspace->database().importRun(run.value().run, name);
+      const storage::ImportOutcome out = workspace->runStore().importRun(run.value().run, name);
       if (out.status != storage::ImportStatus::Imported) throw std::runtime_error(out.message);
     }
     for (const char* name : {"room1_demo", "room2_demo", "room3_demo"}) {
-      auto info = workspace->database().findRun(name);
+      auto info = workspace->runStore().find(name);
       if (!info) throw std::runtime_error(info.errorText());
-      auto written = workspace->database().autolabel(info->id, "truth");
+      auto written = workspace->labelStore().autolabel(info->id, "truth");
       if (!written) throw std::runtime_error(written.errorText());
     }
   }
@@ -465,7 +465,7 @@ void TrainingDialogTest::resultsWindowExportsReportAndCellModel() {
   QVERIFY(modelStored.wait(60000));
   QCOMPARE(modelStored.first().at(0).toString(), QStringLiteral("best cell"));
   QVERIFY(QFileInfo::exists(file));
-  auto model = f.workspace->database().modelInfo("best cell");
+  auto model = f.workspace->modelStore().info("best cell");
   QVERIFY(model.ok());
   const nlohmann::json metrics = nlohmann::json::parse(model->metricsJson);
   const analysis::SweepCellResult& chosen = window.sweep().cells[static_cast<std::size_t>(cell)];

@@ -34,20 +34,20 @@ class BackendTest : public ::testing::TestWithParam<Backend> {
 
 TEST_P(BackendTest, ARunReadsBackValueForValueWindowTrackAndExport) {
   const RunData run = makeRun(3000, true, 11);
-  const ImportOutcome outcome = db_->importRun(run, "alpha");
+  const ImportOutcome outcome = db_->runs().importRun(run, "alpha");
   ASSERT_EQ(outcome.status, ImportStatus::Imported) << outcome.message;
-  auto loaded = db_->loadRun(outcome.runId);
+  auto loaded = db_->runs().load(outcome.runId);
   ASSERT_TRUE(loaded.ok()) << loaded.errorText();
   test::expectSameRun(run, loaded.value());
-  auto window = db_->loadWindow(outcome.runId, 1234, 10);
+  auto window = db_->runs().loadWindow(outcome.runId, 1234, 10);
   ASSERT_TRUE(window.ok()) << window.errorText();
   ASSERT_EQ(window->data.stepCount(), 10U);
   EXPECT_TRUE(sameBits(window->data.x[3], run.x[1237]));
-  auto track = db_->loadTrack(outcome.runId);
+  auto track = db_->runs().loadTrack(outcome.runId);
   ASSERT_TRUE(track.ok()) << track.errorText();
   ASSERT_EQ(track->stepCount(), 3000U);
   EXPECT_TRUE(sameBits(track->omega[2999], run.omega[2999]));
-  ASSERT_TRUE(db_->exportRun(outcome.runId, dir_ / "alpha.csv").ok());
+  ASSERT_TRUE(db_->runs().exportRun(outcome.runId, dir_ / "alpha.csv").ok());
   EXPECT_EQ(test::readBytes(dir_ / "alpha.csv"), formatRunCsv(run));
   const IntegrityReport check = db_->check();
   EXPECT_TRUE(check.ok) << (check.problems.empty() ? "" : check.problems[0]);
@@ -58,43 +58,43 @@ TEST_P(BackendTest, ARunReadsBackValueForValueWindowTrackAndExport) {
 TEST_P(BackendTest, TheSameFileTwiceIsStoredOnce) {
   const RunData run = makeRun(50, false, 3);
   const std::string text = formatRunCsv(run);
-  EXPECT_EQ(db_->importText(text, "a.csv").status, ImportStatus::Imported);
-  const ImportOutcome again = db_->importText(text, "b.csv");
+  EXPECT_EQ(db_->runs().importText(text, "a.csv").status, ImportStatus::Imported);
+  const ImportOutcome again = db_->runs().importText(text, "b.csv");
   EXPECT_EQ(again.status, ImportStatus::Skipped) << again.message;
-  EXPECT_EQ(db_->listRuns()->size(), 1U);
+  EXPECT_EQ(db_->runs().list()->size(), 1U);
 }
 
 TEST_P(BackendTest, AFailedImportLeavesNothing) {
   ImportOptions options;
   options.failAfterSteps = 700;
   const ImportOutcome failed =
-      db_->importText(formatRunCsv(makeRun(1000, true, 4)), "cut.csv", options);
+      db_->runs().importText(formatRunCsv(makeRun(1000, true, 4)), "cut.csv", options);
   EXPECT_EQ(failed.status, ImportStatus::Failed);
-  EXPECT_TRUE(db_->listRuns()->empty());
+  EXPECT_TRUE(db_->runs().list()->empty());
   const IntegrityReport check = db_->check();
   EXPECT_TRUE(check.ok) << (check.problems.empty() ? "" : check.problems[0]);
   EXPECT_EQ(check.steps, 0);
 }
 
 TEST_P(BackendTest, ModelsAndSweepsKeepTheirText) {
-  ASSERT_TRUE(db_->addModel("m1", R"({"a":1})", "{}", R"({"rate":0.5})").ok());
-  EXPECT_FALSE(db_->addModel("m1", "{}", "{}", "{}").ok());
-  EXPECT_EQ(db_->loadModel("m1").value(), R"({"a":1})");
-  auto sweep = db_->createSweep("s1", R"({"state":"running"})");
+  ASSERT_TRUE(db_->models().add("m1", R"({"a":1})", "{}", R"({"rate":0.5})").ok());
+  EXPECT_FALSE(db_->models().add("m1", "{}", "{}", "{}").ok());
+  EXPECT_EQ(db_->models().load("m1").value(), R"({"a":1})");
+  auto sweep = db_->sweeps().create("s1", R"({"state":"running"})");
   ASSERT_TRUE(sweep.ok()) << sweep.errorText();
-  ASSERT_TRUE(db_->addSweepCell(sweep.value(), R"({"order":2})", R"({"rate":0.9})").ok());
-  auto cells = db_->sweepCells(sweep.value());
+  ASSERT_TRUE(db_->sweeps().addCell(sweep.value(), R"({"order":2})", R"({"rate":0.9})").ok());
+  auto cells = db_->sweeps().cells(sweep.value());
   ASSERT_TRUE(cells.ok());
   ASSERT_EQ(cells->size(), 1U);
   EXPECT_EQ(cells->front().metricsJson, R"({"rate":0.9})");
 }
 
 TEST_P(BackendTest, RenameKeepsTheRowChecksumAndTheCatalogSortsByteWise) {
-  ASSERT_EQ(db_->importRun(makeRun(40, false, 5), "b_run").status, ImportStatus::Imported);
-  ASSERT_EQ(db_->importRun(makeRun(40, false, 6), "B_run").status, ImportStatus::Imported);
-  ASSERT_EQ(db_->importRun(makeRun(40, false, 7), "a_run").status, ImportStatus::Imported);
-  ASSERT_TRUE(db_->renameRun("a_run", "Z_run").ok());
-  auto runs = db_->listRuns();
+  ASSERT_EQ(db_->runs().importRun(makeRun(40, false, 5), "b_run").status, ImportStatus::Imported);
+  ASSERT_EQ(db_->runs().importRun(makeRun(40, false, 6), "B_run").status, ImportStatus::Imported);
+  ASSERT_EQ(db_->runs().importRun(makeRun(40, false, 7), "a_run").status, ImportStatus::Imported);
+  ASSERT_TRUE(db_->runs().rename("a_run", "Z_run").ok());
+  auto runs = db_->runs().list();
   ASSERT_TRUE(runs.ok());
   std::vector<std::string> names;
   for (const RunInfo& r : runs.value())
@@ -105,16 +105,16 @@ TEST_P(BackendTest, RenameKeepsTheRowChecksumAndTheCatalogSortsByteWise) {
 }
 
 TEST_P(BackendTest, DeletingARunTakesItsStepsSummariesAndLabelsWithIt) {
-  const auto a = db_->importRun(makeRun(500, true, 8), "a");
-  const auto b = db_->importRun(makeRun(300, true, 9), "b");
-  ASSERT_TRUE(db_->autolabel(a.runId, "truth").ok());
-  ASSERT_TRUE(db_->deleteRun(a.runId).ok());
-  ASSERT_TRUE(db_->deleteRuns({"b"}).ok());
+  const auto a = db_->runs().importRun(makeRun(500, true, 8), "a");
+  const auto b = db_->runs().importRun(makeRun(300, true, 9), "b");
+  ASSERT_TRUE(db_->labels().autolabel(a.runId, "truth").ok());
+  ASSERT_TRUE(db_->runs().remove(a.runId).ok());
+  ASSERT_TRUE(db_->runs().remove({"b"}).ok());
   const IntegrityReport check = db_->check();
   EXPECT_TRUE(check.ok) << (check.problems.empty() ? "" : check.problems[0]);
   EXPECT_EQ(check.runs, 0);
   EXPECT_EQ(check.steps, 0);
-  auto sets = db_->labelSetCatalog();
+  auto sets = db_->labels().catalog();
   ASSERT_TRUE(sets.ok());
   ASSERT_EQ(sets->size(), 1U);
   EXPECT_TRUE(sets->front().runs.empty());
@@ -148,12 +148,12 @@ class CopyTest : public ::testing::TestWithParam<std::pair<Backend, Backend>> {
 TEST_P(CopyTest, RunsLabelsModelsAndSweepsArriveAndASecondCopyAddsNothing) {
   const RunData one = makeRun(2500, true, 21);
   const RunData two = makeRun(700, false, 22);
-  const auto a = from_->importRun(one, "one");
-  const auto b = from_->importRun(two, "two");
+  const auto a = from_->runs().importRun(one, "one");
+  const auto b = from_->runs().importRun(two, "two");
   ASSERT_EQ(a.status, ImportStatus::Imported);
   ASSERT_EQ(b.status, ImportStatus::Imported);
-  ASSERT_TRUE(from_->autolabel(a.runId, "truth").ok());
-  auto set = from_->createLabelSet("mine", "ann");
+  ASSERT_TRUE(from_->labels().autolabel(a.runId, "truth").ok());
+  auto set = from_->labels().create("mine", "ann");
   ASSERT_TRUE(set.ok());
   LabelSegment segment;
   segment.runId = b.runId;
@@ -162,10 +162,10 @@ TEST_P(CopyTest, RunsLabelsModelsAndSweepsArriveAndASecondCopyAddsNothing) {
   segment.lastStep = 90;
   segment.cls = ContactClass::Wall;
   segment.annotator = "ann";
-  ASSERT_TRUE(from_->addSegment(set.value(), segment).ok());
-  ASSERT_TRUE(from_->addModel("model", R"({"m":1})", "{}", "{}").ok());
-  auto sweep = from_->createSweep("sweep", "{}");
-  ASSERT_TRUE(from_->addSweepCell(sweep.value(), "{}", R"({"r":1})").ok());
+  ASSERT_TRUE(from_->labels().addSegment(set.value(), segment).ok());
+  ASSERT_TRUE(from_->models().add("model", R"({"m":1})", "{}", "{}").ok());
+  auto sweep = from_->sweeps().create("sweep", "{}");
+  ASSERT_TRUE(from_->sweeps().addCell(sweep.value(), "{}", R"({"r":1})").ok());
 
   auto report = to_->copyFrom(*from_);
   ASSERT_TRUE(report.ok()) << report.errorText();
@@ -177,21 +177,21 @@ TEST_P(CopyTest, RunsLabelsModelsAndSweepsArriveAndASecondCopyAddsNothing) {
 
   // The copy exports byte for byte as the source does, labels included.
   for (const char* name : {"one", "two"}) {
-    const auto source = from_->findRun(name);
-    const auto copied = to_->findRun(name);
+    const auto source = from_->runs().find(name);
+    const auto copied = to_->runs().find(name);
     ASSERT_TRUE(copied.ok()) << copied.errorText();
     EXPECT_EQ(copied->checksum, source->checksum);
-    ASSERT_TRUE(from_->exportRun(source->id, dir_ / "s.csv").ok());
-    ASSERT_TRUE(to_->exportRun(copied->id, dir_ / "c.csv").ok());
+    ASSERT_TRUE(from_->runs().exportRun(source->id, dir_ / "s.csv").ok());
+    ASSERT_TRUE(to_->runs().exportRun(copied->id, dir_ / "c.csv").ok());
     EXPECT_EQ(test::readBytes(dir_ / "s.csv"), test::readBytes(dir_ / "c.csv")) << name;
   }
   for (const char* setName : {"truth", "mine"}) {
-    ASSERT_TRUE(from_->exportLabels(setName, dir_ / "s.labels.csv").ok());
-    ASSERT_TRUE(to_->exportLabels(setName, dir_ / "c.labels.csv").ok());
+    ASSERT_TRUE(from_->labels().exportFile(setName, dir_ / "s.labels.csv").ok());
+    ASSERT_TRUE(to_->labels().exportFile(setName, dir_ / "c.labels.csv").ok());
     EXPECT_EQ(test::readBytes(dir_ / "s.labels.csv"), test::readBytes(dir_ / "c.labels.csv"))
         << setName;
   }
-  EXPECT_EQ(to_->loadModel("model").value(), R"({"m":1})");
+  EXPECT_EQ(to_->models().load("model").value(), R"({"m":1})");
   EXPECT_TRUE(to_->check().ok);
 
   auto again = to_->copyFrom(*from_);
@@ -201,29 +201,29 @@ TEST_P(CopyTest, RunsLabelsModelsAndSweepsArriveAndASecondCopyAddsNothing) {
   EXPECT_EQ(again->segmentsCopied, 0);
   EXPECT_EQ(again->modelsCopied, 0);
   EXPECT_EQ(again->sweepsCopied, 0);
-  EXPECT_EQ(to_->listSweeps()->size(), 1U);
+  EXPECT_EQ(to_->sweeps().list()->size(), 1U);
 }
 
 TEST_P(CopyTest, ARunOfTheSameNameWithOtherContentStopsTheCopy) {
-  ASSERT_EQ(from_->importRun(makeRun(30, false, 1), "same").status, ImportStatus::Imported);
-  ASSERT_EQ(to_->importRun(makeRun(30, false, 2), "same").status, ImportStatus::Imported);
+  ASSERT_EQ(from_->runs().importRun(makeRun(30, false, 1), "same").status, ImportStatus::Imported);
+  ASSERT_EQ(to_->runs().importRun(makeRun(30, false, 2), "same").status, ImportStatus::Imported);
   auto report = to_->copyFrom(*from_);
   ASSERT_FALSE(report.ok());
   EXPECT_NE(report.errorText().find("other content"), std::string::npos) << report.errorText();
 }
 
 TEST_P(CopyTest, OnlyTheNamedRunsAndAnUnknownNameCopiesNothing) {
-  ASSERT_EQ(from_->importRun(makeRun(30, false, 1), "r1").status, ImportStatus::Imported);
-  ASSERT_EQ(from_->importRun(makeRun(30, false, 2), "r2").status, ImportStatus::Imported);
+  ASSERT_EQ(from_->runs().importRun(makeRun(30, false, 1), "r1").status, ImportStatus::Imported);
+  ASSERT_EQ(from_->runs().importRun(makeRun(30, false, 2), "r2").status, ImportStatus::Imported);
   CopyOptions options;
   options.runs = {"r2", "nope"};
   EXPECT_FALSE(to_->copyFrom(*from_, options).ok());
-  EXPECT_TRUE(to_->listRuns()->empty());
+  EXPECT_TRUE(to_->runs().list()->empty());
   options.runs = {"r2"};
   auto report = to_->copyFrom(*from_, options);
   ASSERT_TRUE(report.ok()) << report.errorText();
-  ASSERT_EQ(to_->listRuns()->size(), 1U);
-  EXPECT_EQ(to_->listRuns()->front().name, "r2");
+  ASSERT_EQ(to_->runs().list()->size(), 1U);
+  EXPECT_EQ(to_->runs().list()->front().name, "r2");
 }
 
 std::string copyName(const ::testing::TestParamInfo<std::pair<Backend, Backend>>& info) {
@@ -272,8 +272,8 @@ TEST(ServerDatabase, AReadOnlyOpenCannotWrite) {
   ASSERT_TRUE(RunDatabase::open(address, OpenMode::Create).ok());
   auto db = RunDatabase::open(address, OpenMode::ReadOnly);
   ASSERT_TRUE(db.ok()) << db.errorText();
-  EXPECT_FALSE(db.value()->createLabelSet("x").ok());
-  EXPECT_TRUE(db.value()->listLabelSets()->empty());
+  EXPECT_FALSE(db.value()->labels().create("x").ok());
+  EXPECT_TRUE(db.value()->labels().list()->empty());
 }
 
 TEST(ServerDatabase, AWrongAddressSaysSoInOneLineWithoutThePassword) {

@@ -50,7 +50,7 @@ class CatalogTest : public ::testing::Test {
     ASSERT_NE(db_, nullptr);
     for (const auto& [name, steps, seed] :
          {std::tuple{"runA", 200, 1}, std::tuple{"runB", 100, 2}, std::tuple{"runC", 50, 3}}) {
-      const auto outcome = db_->importRun(makeRun(steps, true, seed), name);
+      const auto outcome = db_->runs().importRun(makeRun(steps, true, seed), name);
       ASSERT_EQ(outcome.status, ImportStatus::Imported) << outcome.message;
       ids_[name] = outcome.runId;
     }
@@ -61,10 +61,10 @@ class CatalogTest : public ::testing::Test {
 
   void label(const std::string& set, const std::string& run, std::int64_t first,
              std::int64_t last) {
-    auto setInfo = db_->findLabelSet(set);
+    auto setInfo = db_->labels().find(set);
     std::int64_t setId = setInfo.ok() ? setInfo->id : 0;
     if (setId == 0) {
-      auto created = db_->createLabelSet(set, "ann-" + set);
+      auto created = db_->labels().create(set, "ann-" + set);
       ASSERT_TRUE(created.ok()) << created.errorText();
       setId = created.value();
     }
@@ -73,7 +73,7 @@ class CatalogTest : public ::testing::Test {
     s.firstStep = first;
     s.lastStep = last;
     s.cls = ContactClass::Wall;
-    ASSERT_TRUE(db_->addSegment(setId, s).ok());
+    ASSERT_TRUE(db_->labels().addSegment(setId, s).ok());
   }
 
   // Rows of the run in every table that holds per-run rows.
@@ -91,7 +91,7 @@ class CatalogTest : public ::testing::Test {
 };
 
 TEST_F(CatalogTest, RunsListedWithTheirLabelSets) {
-  auto runs = db_->runCatalog();
+  auto runs = db_->runs().catalog();
   ASSERT_TRUE(runs.ok()) << runs.errorText();
   ASSERT_EQ(runs->size(), 3u);
   EXPECT_EQ(runs->at(0).run.name, "runA");
@@ -104,7 +104,7 @@ TEST_F(CatalogTest, RunsListedWithTheirLabelSets) {
 }
 
 TEST_F(CatalogTest, LabelSetsListedWithTheRunsTheyCover) {
-  auto sets = db_->labelSetCatalog();
+  auto sets = db_->labels().catalog();
   ASSERT_TRUE(sets.ok()) << sets.errorText();
   ASSERT_EQ(sets->size(), 2u);
   EXPECT_EQ(sets->at(0).set.name, "s1");
@@ -116,28 +116,28 @@ TEST_F(CatalogTest, LabelSetsListedWithTheRunsTheyCover) {
 }
 
 TEST_F(CatalogTest, RenameRunKeepsItsStepsAndLabels) {
-  ASSERT_TRUE(db_->renameRun("runA", "room1_runA").ok());
-  EXPECT_FALSE(db_->findRun("runA").ok());
-  auto renamed = db_->findRun("room1_runA");
+  ASSERT_TRUE(db_->runs().rename("runA", "room1_runA").ok());
+  EXPECT_FALSE(db_->runs().find("runA").ok());
+  auto renamed = db_->runs().find("room1_runA");
   ASSERT_TRUE(renamed.ok());
   EXPECT_EQ(renamed->id, ids_["runA"]);
   EXPECT_EQ(renamed->stepCount, 200);
-  EXPECT_EQ(db_->labelSetCatalog()->at(0).runs, (std::vector<std::string>{"room1_runA"}));
+  EXPECT_EQ(db_->labels().catalog()->at(0).runs, (std::vector<std::string>{"room1_runA"}));
 }
 
 TEST_F(CatalogTest, RenameRunToATakenOrBadNameChangesNothing) {
-  const auto taken = db_->renameRun("runA", "runB");
+  const auto taken = db_->runs().rename("runA", "runB");
   ASSERT_FALSE(taken.ok());
   EXPECT_NE(taken.errorText().find("'runB' already exists"), std::string::npos)
       << taken.errorText();
   EXPECT_EQ(taken.error().file, (dir_ / "catalog.db").string());
-  const auto unknown = db_->renameRun("ghost", "x");
+  const auto unknown = db_->runs().rename("ghost", "x");
   ASSERT_FALSE(unknown.ok());
   EXPECT_NE(unknown.errorText().find("no run named 'ghost'"), std::string::npos);
-  EXPECT_FALSE(db_->renameRun("runA", "a,b").ok());
-  EXPECT_FALSE(db_->renameRun("runA", "").ok());
-  EXPECT_EQ(db_->findRun("runA")->id, ids_["runA"]);
-  EXPECT_EQ(db_->findRun("runB")->id, ids_["runB"]);
+  EXPECT_FALSE(db_->runs().rename("runA", "a,b").ok());
+  EXPECT_FALSE(db_->runs().rename("runA", "").ok());
+  EXPECT_EQ(db_->runs().find("runA")->id, ids_["runA"]);
+  EXPECT_EQ(db_->runs().find("runB")->id, ids_["runB"]);
 }
 
 TEST_F(CatalogTest, DeleteRunsCascadesToStepsSummariesAndLabels) {
@@ -146,27 +146,27 @@ TEST_F(CatalogTest, DeleteRunsCascadesToStepsSummariesAndLabels) {
       raw.count("SELECT count(*) FROM step_blocks WHERE run_id = " + std::to_string(ids_["runA"])),
       0);
   const std::int64_t keptRows = rowsOf(raw, ids_["runC"]);
-  ASSERT_TRUE(db_->deleteRuns({"runA", "runB"}).ok());
+  ASSERT_TRUE(db_->runs().remove({"runA", "runB"}).ok());
   EXPECT_EQ(rowsOf(raw, ids_["runA"]), 0);
   EXPECT_EQ(rowsOf(raw, ids_["runB"]), 0);
   EXPECT_EQ(rowsOf(raw, ids_["runC"]), keptRows);
   EXPECT_EQ(raw.count("SELECT count(*) FROM label_segments"), 0);
   // The sets stay (empty); the scene stays while runC uses it, and goes with the last run.
-  EXPECT_EQ(db_->labelSetCatalog()->size(), 2u);
+  EXPECT_EQ(db_->labels().catalog()->size(), 2u);
   EXPECT_EQ(raw.count("SELECT count(*) FROM scenes"), 1);
-  ASSERT_TRUE(db_->deleteRuns({"runC"}).ok());
+  ASSERT_TRUE(db_->runs().remove({"runC"}).ok());
   EXPECT_EQ(raw.count("SELECT count(*) FROM scenes"), 0);
   EXPECT_EQ(raw.count("SELECT count(*) FROM steps"), 0);
   EXPECT_TRUE(db_->check().ok);
 }
 
 TEST_F(CatalogTest, DeleteWithAnUnknownNameDeletesNothing) {
-  const auto status = db_->deleteRuns({"runA", "ghost", "runB"});
+  const auto status = db_->runs().remove({"runA", "ghost", "runB"});
   ASSERT_FALSE(status.ok());
   EXPECT_NE(status.errorText().find("no run named 'ghost'; nothing deleted"), std::string::npos)
       << status.errorText();
-  EXPECT_EQ(db_->runCatalog()->size(), 3u);
-  EXPECT_EQ(db_->loadRun(ids_["runA"])->stepCount(), 200u);
+  EXPECT_EQ(db_->runs().catalog()->size(), 3u);
+  EXPECT_EQ(db_->runs().load(ids_["runA"])->stepCount(), 200u);
 }
 
 TEST_F(CatalogTest, FailureMidDeleteLeavesEverything) {
@@ -177,43 +177,43 @@ TEST_F(CatalogTest, FailureMidDeleteLeavesEverything) {
   raw.exec(
       "CREATE TRIGGER fail_on_b BEFORE DELETE ON runs WHEN old.name = 'runB' "
       "BEGIN SELECT RAISE(ABORT, 'injected failure'); END");
-  const auto status = db_->deleteRuns({"runA", "runB"});
+  const auto status = db_->runs().remove({"runA", "runB"});
   ASSERT_FALSE(status.ok());
   EXPECT_NE(status.errorText().find("injected failure"), std::string::npos) << status.errorText();
   EXPECT_EQ(rowsOf(raw, ids_["runA"]), rowsA);
   EXPECT_EQ(rowsOf(raw, ids_["runB"]), rowsB);
-  EXPECT_EQ(db_->runCatalog()->at(0).labelSets, (std::vector<std::string>{"s1", "s2"}));
+  EXPECT_EQ(db_->runs().catalog()->at(0).labelSets, (std::vector<std::string>{"s1", "s2"}));
   raw.exec("DROP TRIGGER fail_on_b");
-  EXPECT_TRUE(db_->deleteRuns({"runA", "runB"}).ok());
+  EXPECT_TRUE(db_->runs().remove({"runA", "runB"}).ok());
 }
 
 TEST_F(CatalogTest, RenameAndDeleteLabelSetsByName) {
-  ASSERT_TRUE(db_->renameLabelSetNamed("s1", "mine").ok());
-  EXPECT_FALSE(db_->findLabelSet("s1").ok());
-  EXPECT_EQ(db_->findLabelSet("mine")->segmentCount, 1);
-  const auto taken = db_->renameLabelSetNamed("mine", "s2");
+  ASSERT_TRUE(db_->labels().rename("s1", "mine").ok());
+  EXPECT_FALSE(db_->labels().find("s1").ok());
+  EXPECT_EQ(db_->labels().find("mine")->segmentCount, 1);
+  const auto taken = db_->labels().rename("mine", "s2");
   ASSERT_FALSE(taken.ok());
   EXPECT_NE(taken.errorText().find("'s2' already exists"), std::string::npos);
-  EXPECT_FALSE(db_->renameLabelSetNamed("ghost", "x").ok());
+  EXPECT_FALSE(db_->labels().rename("ghost", "x").ok());
 
-  const auto unknown = db_->deleteLabelSets({"mine", "ghost"});
+  const auto unknown = db_->labels().remove({"mine", "ghost"});
   ASSERT_FALSE(unknown.ok());
   EXPECT_NE(unknown.errorText().find("no label set named 'ghost'"), std::string::npos);
-  EXPECT_TRUE(db_->findLabelSet("mine").ok());
+  EXPECT_TRUE(db_->labels().find("mine").ok());
 
   RawDb raw(dir_ / "catalog.db");
   raw.exec(
       "CREATE TRIGGER fail_on_s2 BEFORE DELETE ON label_sets WHEN old.name = 's2' "
       "BEGIN SELECT RAISE(ABORT, 'injected failure'); END");
-  EXPECT_FALSE(db_->deleteLabelSets({"mine", "s2"}).ok());
+  EXPECT_FALSE(db_->labels().remove({"mine", "s2"}).ok());
   EXPECT_EQ(raw.count("SELECT count(*) FROM label_segments"), 3);
-  EXPECT_TRUE(db_->findLabelSet("mine").ok());
+  EXPECT_TRUE(db_->labels().find("mine").ok());
   raw.exec("DROP TRIGGER fail_on_s2");
 
-  ASSERT_TRUE(db_->deleteLabelSets({"mine", "s2"}).ok());
-  EXPECT_TRUE(db_->labelSetCatalog()->empty());
+  ASSERT_TRUE(db_->labels().remove({"mine", "s2"}).ok());
+  EXPECT_TRUE(db_->labels().catalog()->empty());
   EXPECT_EQ(raw.count("SELECT count(*) FROM label_segments"), 0);
-  EXPECT_TRUE(db_->runCatalog()->at(0).labelSets.empty());
+  EXPECT_TRUE(db_->runs().catalog()->at(0).labelSets.empty());
 }
 
 // ---- import names -----------------------------------------------------------------------------
@@ -225,10 +225,10 @@ TEST(CatalogImport, PrefixNamesRunsPrefixUnderscoreStem) {
   auto db = test::openDb(dir / "p.db");
   ImportOptions options;
   options.namePrefix = "room1";
-  const auto outcomes = db->importFiles({dir / "room1/run_0000.csv"}, options);
+  const auto outcomes = db->runs().importFiles({dir / "room1/run_0000.csv"}, options);
   ASSERT_EQ(outcomes[0].status, ImportStatus::Imported) << outcomes[0].message;
   EXPECT_EQ(outcomes[0].runName, "room1_run_0000");
-  EXPECT_TRUE(db->findRun("room1_run_0000").ok());
+  EXPECT_TRUE(db->runs().find("room1_run_0000").ok());
 }
 
 TEST(CatalogImport, NameClashInOneBatchFailsThatFileOnlyAndNamesBothFiles) {
@@ -239,7 +239,7 @@ TEST(CatalogImport, NameClashInOneBatchFailsThatFileOnlyAndNamesBothFiles) {
   ASSERT_TRUE(writeRunCsv(makeRun(40, true, 2), dir / "chapter5/run_0000.csv").ok());
   ASSERT_TRUE(writeRunCsv(makeRun(50, true, 3), dir / "chapter5/run_0001.csv").ok());
   auto db = test::openDb(dir / "c.db");
-  const auto outcomes = db->importFiles(
+  const auto outcomes = db->runs().importFiles(
       {dir / "room1/run_0000.csv", dir / "chapter5/run_0000.csv", dir / "chapter5/run_0001.csv"});
   ASSERT_EQ(outcomes.size(), 3u);
   EXPECT_EQ(outcomes[0].status, ImportStatus::Imported);
@@ -249,7 +249,7 @@ TEST(CatalogImport, NameClashInOneBatchFailsThatFileOnlyAndNamesBothFiles) {
   EXPECT_NE(message.find((dir / "chapter5/run_0000.csv").string()), std::string::npos) << message;
   EXPECT_NE(message.find((dir / "room1/run_0000.csv").string()), std::string::npos) << message;
   EXPECT_NE(message.find("--prefix"), std::string::npos) << message;
-  EXPECT_EQ(db->findRun("run_0000")->stepCount, 30);
+  EXPECT_EQ(db->runs().find("run_0000")->stepCount, 30);
 }
 
 }  // namespace

@@ -39,7 +39,7 @@ fs::path makeDatabase(const TempDir& dir, std::vector<RunData>& runs) {
       for (std::size_t s = 0; s < run.stepCount(); ++s)
         run.extraValues.push_back("n" + std::to_string(s % 5));
     }
-    EXPECT_EQ(db->importRun(run, "run" + std::to_string(i)).status, ImportStatus::Imported);
+    EXPECT_EQ(db->runs().importRun(run, "run" + std::to_string(i)).status, ImportStatus::Imported);
     runs.push_back(std::move(run));
   }
   return path;
@@ -83,16 +83,16 @@ TEST(Checksums, AFlippedBitInAStepBlobIsReportedNamingTheRun) {
   EXPECT_NE(report.kinds[0].cases[0].find("run 'run1'"), std::string::npos)
       << report.kinds[0].cases[0];
   EXPECT_NE(report.kinds[0].cases[0].find("step 57"), std::string::npos);
-  const auto id = db.value()->findRun("run1")->id;
-  auto loaded = db.value()->loadRun(id);
+  const auto id = db.value()->runs().find("run1")->id;
+  auto loaded = db.value()->runs().load(id);
   ASSERT_FALSE(loaded.ok());
   EXPECT_NE(loaded.errorText().find("run 'run1'"), std::string::npos) << loaded.errorText();
   EXPECT_NE(loaded.errorText().find("damaged"), std::string::npos) << loaded.errorText();
-  EXPECT_FALSE(db.value()->loadWindow(id, 50, 20).ok());
-  EXPECT_FALSE(db.value()->loadTrack(id).ok());
-  EXPECT_TRUE(db.value()->loadWindow(id, 100, 20).ok());  // the rest of the run still reads
+  EXPECT_FALSE(db.value()->runs().loadWindow(id, 50, 20).ok());
+  EXPECT_FALSE(db.value()->runs().loadTrack(id).ok());
+  EXPECT_TRUE(db.value()->runs().loadWindow(id, 100, 20).ok());  // the rest of the run still reads
   // The other runs are intact.
-  auto other = db.value()->loadRun(db.value()->findRun("run0")->id);
+  auto other = db.value()->runs().load(db.value()->runs().find("run0")->id);
   ASSERT_TRUE(other.ok()) << other.errorText();
   test::expectSameRun(other.value(), runs[0]);
   db.value().reset();
@@ -134,12 +134,12 @@ TEST(Checksums, RandomBitFlipsNeverReadBackAsOtherValues) {
     const bool checked = db.value()->check().ok;
     bool allSame = true;
     for (std::size_t i = 0; i < runs.size(); ++i) {
-      auto info = db.value()->findRun("run" + std::to_string(i));
+      auto info = db.value()->runs().find("run" + std::to_string(i));
       if (!info.ok()) {
         allSame = false;
         continue;
       }
-      auto loaded = db.value()->loadRun(info->id);
+      auto loaded = db.value()->runs().load(info->id);
       if (!loaded.ok()) {
         allSame = false;
         continue;
@@ -176,7 +176,7 @@ TEST(Checksums, AnOlderDatabaseGetsItsChecksumsOnMigration) {
   EXPECT_EQ(db.value()->migrationBackup().filename(), "runs.db.v4.bak");
   EXPECT_TRUE(db.value()->check().ok);
   for (std::size_t i = 0; i < runs.size(); ++i) {
-    auto loaded = db.value()->loadRun(db.value()->findRun("run" + std::to_string(i))->id);
+    auto loaded = db.value()->runs().load(db.value()->runs().find("run" + std::to_string(i))->id);
     ASSERT_TRUE(loaded.ok()) << loaded.errorText();
     test::expectSameRun(loaded.value(), runs[i]);
   }

@@ -24,14 +24,15 @@ namespace fs = std::filesystem;
 void importInto(const fs::path& path, const std::string& name, unsigned seed) {
   auto db = RunDatabase::open(path, OpenMode::Create);
   ASSERT_TRUE(db.ok()) << db.errorText();
-  ASSERT_EQ(db.value()->importRun(makeRun(40, true, seed), name).status, ImportStatus::Imported);
+  ASSERT_EQ(db.value()->runs().importRun(makeRun(40, true, seed), name).status,
+            ImportStatus::Imported);
 }
 
 std::size_t runCount(const fs::path& path) {
   auto db = RunDatabase::open(path, OpenMode::ReadOnly);
   EXPECT_TRUE(db.ok()) << db.errorText();
   if (!db.ok()) return 0;
-  auto runs = db.value()->listRuns();
+  auto runs = db.value()->runs().list();
   return runs.ok() ? runs->size() : 0;
 }
 
@@ -140,7 +141,7 @@ TEST(LeftoverLog, EveryCommitCarriesPageOneSoEveryLogCanBeJudged) {
     auto db = RunDatabase::open(live, OpenMode::ReadWrite);
     ASSERT_TRUE(db.ok()) << db.errorText();
     // A rename changes one row in place: without page 1 in the commit the log could not be matched.
-    ASSERT_TRUE(db.value()->renameRun("one", "uno").ok());
+    ASSERT_TRUE(db.value()->runs().rename("one", "uno").ok());
   }
   copyFile(live, dir / "crashed.db");
   copyFile(live.string() + "-wal", dir / "crashed.db-wal");
@@ -159,7 +160,7 @@ TEST(LeftoverLog, ALogWithoutPageOneIsReadThroughAndOpensWhenSound) {
   EXPECT_EQ(db::inspectWal(dir / "crashed.db").kind, db::WalState::Kind::Unproven);
   auto db = RunDatabase::open(dir / "crashed.db", OpenMode::ReadOnly);
   ASSERT_TRUE(db.ok()) << db.errorText();
-  auto run = db.value()->findRun("one");
+  auto run = db.value()->runs().find("one");
   ASSERT_TRUE(run.ok());
   EXPECT_EQ(run->subject, "changed");
 }
@@ -200,7 +201,8 @@ TEST(LeftoverLog, ALiveLogOfAnotherConnectionIsNotJudged) {
   ASSERT_EQ(sqlite3_open(live.c_str(), &reader), SQLITE_OK);
   ASSERT_EQ(sqlite3_exec(reader, "BEGIN; SELECT count(*) FROM runs;", nullptr, nullptr, nullptr),
             SQLITE_OK);
-  ASSERT_EQ(writer.value()->importRun(makeRun(30, true, 4), "four").status, ImportStatus::Imported);
+  ASSERT_EQ(writer.value()->runs().importRun(makeRun(30, true, 4), "four").status,
+            ImportStatus::Imported);
   EXPECT_EQ(db::inspectWal(live).kind, db::WalState::Kind::Live);
   auto second = RunDatabase::open(live, OpenMode::ReadWrite);
   EXPECT_TRUE(second.ok()) << second.errorText();
@@ -218,7 +220,8 @@ TEST(LeftoverLog, ASecondOpenInTheSameProcessKeepsTheFirstConnectionsLocks) {
   importInto(path, "one", 1);
   auto first = RunDatabase::open(path, OpenMode::ReadWrite);
   ASSERT_TRUE(first.ok()) << first.errorText();
-  ASSERT_EQ(first.value()->importRun(makeRun(20, true, 20), "two").status, ImportStatus::Imported);
+  ASSERT_EQ(first.value()->runs().importRun(makeRun(20, true, 20), "two").status,
+            ImportStatus::Imported);
   {
     auto second = RunDatabase::open(path, OpenMode::ReadWrite);
     ASSERT_TRUE(second.ok()) << second.errorText();
@@ -228,7 +231,7 @@ TEST(LeftoverLog, ASecondOpenInTheSameProcessKeepsTheFirstConnectionsLocks) {
       "sqlite3 '" + path.string() + "' 'SELECT count(*) FROM runs' > /dev/null";
   ASSERT_EQ(std::system(command.c_str()), 0);
   EXPECT_TRUE(fs::exists(path.string() + "-wal")) << "the log was removed under a live connection";
-  ASSERT_EQ(first.value()->importRun(makeRun(20, true, 21), "three").status,
+  ASSERT_EQ(first.value()->runs().importRun(makeRun(20, true, 21), "three").status,
             ImportStatus::Imported);
   first.value().reset();
   EXPECT_EQ(runCount(path), 3u) << "a commit of the first connection was lost";
@@ -285,7 +288,7 @@ TEST(ReadOnlyOpen, LeavesNoLogOrIndexBehind) {
   {
     auto db = RunDatabase::open(path, OpenMode::ReadOnly);
     ASSERT_TRUE(db.ok()) << db.errorText();
-    ASSERT_TRUE(db.value()->findRun("one").ok());
+    ASSERT_TRUE(db.value()->runs().find("one").ok());
     EXPECT_TRUE(db.value()->check().ok);
   }
   EXPECT_FALSE(fs::exists(path.string() + "-wal"));
@@ -310,7 +313,7 @@ TEST(ReadOnlyOpen, AnotherAccountsReadNeverLocksTheOwnerOut) {
     if (::setgid(65534) != 0 || ::setuid(65534) != 0) ::_exit(3);
     auto db = RunDatabase::open(path, OpenMode::ReadOnly);
     if (!db) ::_exit(1);
-    ::_exit(db.value()->findRun("one").ok() && db.value()->check().ok ? 0 : 2);
+    ::_exit(db.value()->runs().find("one").ok() && db.value()->check().ok ? 0 : 2);
   }
   int status = 0;
   ASSERT_EQ(::waitpid(child, &status, 0), child);

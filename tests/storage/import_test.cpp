@@ -31,24 +31,24 @@ TEST(Import, FileRoundTripsBitForBitAndExportsIdenticalText) {
   ASSERT_TRUE(writeRunCsv(original, dir / "r1.csv").ok());
   auto db = test::openDb(dir / "runs.db");
   ASSERT_NE(db, nullptr);
-  auto outcomes = db->importFiles({dir / "r1.csv"});
+  auto outcomes = db->runs().importFiles({dir / "r1.csv"});
   ASSERT_EQ(outcomes.size(), 1u);
   ASSERT_EQ(outcomes[0].status, ImportStatus::Imported) << outcomes[0].message;
   EXPECT_EQ(outcomes[0].runName, "r1");
   EXPECT_EQ(outcomes[0].steps, 500);
 
-  auto loaded = db->loadRun(outcomes[0].runId);
+  auto loaded = db->runs().load(outcomes[0].runId);
   ASSERT_TRUE(loaded.ok()) << loaded.errorText();
   test::expectSameRun(original, loaded.value());
   EXPECT_TRUE(std::signbit(loaded->y[0]));  // -0.0 keeps its sign
 
-  ASSERT_TRUE(db->exportRun(outcomes[0].runId, dir / "out.csv").ok());
+  ASSERT_TRUE(db->runs().exportRun(outcomes[0].runId, dir / "out.csv").ok());
   const Result<std::string> exported = readFileText(dir / "out.csv");
   const Result<std::string> source = readFileText(dir / "r1.csv");
   ASSERT_TRUE(exported.ok() && source.ok());
   EXPECT_EQ(exported.value(), source.value());
 
-  auto info = db->findRun("r1");
+  auto info = db->runs().find("r1");
   ASSERT_TRUE(info.ok());
   EXPECT_EQ(info->stepCount, 500);
   EXPECT_TRUE(info->hasTruth);
@@ -67,9 +67,9 @@ TEST(Import, ExtraColumnsAndNoTruthRoundTrip) {
   }
   auto db = test::openDb(":memory:");
   ASSERT_NE(db, nullptr);
-  const auto outcome = db->importText(formatRunCsv(original), "extra.csv");
+  const auto outcome = db->runs().importText(formatRunCsv(original), "extra.csv");
   ASSERT_EQ(outcome.status, ImportStatus::Imported) << outcome.message;
-  auto loaded = db->loadRun(outcome.runId);
+  auto loaded = db->runs().load(outcome.runId);
   ASSERT_TRUE(loaded.ok()) << loaded.errorText();
   test::expectSameRun(original, loaded.value());
   EXPECT_FALSE(loaded->hasTruth());
@@ -86,7 +86,7 @@ TEST(Import, BadFileStoresNothingAndNamesTheLine) {
   writeText(dir / "bad.csv", text);
   auto db = test::openDb(dir / "runs.db");
   ASSERT_NE(db, nullptr);
-  auto outcomes = db->importFiles({dir / "bad.csv"});
+  auto outcomes = db->runs().importFiles({dir / "bad.csv"});
   ASSERT_EQ(outcomes[0].status, ImportStatus::Failed);
   EXPECT_NE(outcomes[0].message.find("bad.csv:20"), std::string::npos) << outcomes[0].message;
   db.reset();
@@ -97,7 +97,7 @@ TEST(Import, BadFileStoresNothingAndNamesTheLine) {
 TEST(Import, MissingFileIsReported) {
   TempDir dir;
   auto db = test::openDb(":memory:");
-  auto outcomes = db->importFiles({dir / "absent.csv"});
+  auto outcomes = db->runs().importFiles({dir / "absent.csv"});
   ASSERT_EQ(outcomes[0].status, ImportStatus::Failed);
   EXPECT_NE(outcomes[0].message.find("absent.csv"), std::string::npos);
 }
@@ -107,29 +107,30 @@ TEST(Import, SameChecksumIsSkippedWithAMessage) {
   ASSERT_TRUE(writeRunCsv(makeRun(20, true), dir / "a.csv").ok());
   std::filesystem::copy_file(dir / "a.csv", dir / "copy-of-a.csv");
   auto db = test::openDb(dir / "runs.db");
-  auto first = db->importFiles({dir / "a.csv"});
+  auto first = db->runs().importFiles({dir / "a.csv"});
   ASSERT_EQ(first[0].status, ImportStatus::Imported);
-  auto again = db->importFiles({dir / "a.csv", dir / "copy-of-a.csv"});
+  auto again = db->runs().importFiles({dir / "a.csv", dir / "copy-of-a.csv"});
   for (const auto& outcome : again) {
     EXPECT_EQ(outcome.status, ImportStatus::Skipped);
     EXPECT_EQ(outcome.runId, first[0].runId);
     EXPECT_NE(outcome.message.find("already imported as run 'a'"), std::string::npos)
         << outcome.message;
   }
-  EXPECT_EQ(db->listRuns()->size(), 1u);
+  EXPECT_EQ(db->runs().list()->size(), 1u);
 }
 
 TEST(Import, ExistingNameWithOtherContentFails) {
   auto db = test::openDb(":memory:");
-  ASSERT_EQ(db->importText(formatRunCsv(makeRun(5, true, 1)), "dir1/run.csv").status,
+  ASSERT_EQ(db->runs().importText(formatRunCsv(makeRun(5, true, 1)), "dir1/run.csv").status,
             ImportStatus::Imported);
-  const auto clash = db->importText(formatRunCsv(makeRun(5, true, 2)), "dir2/run.csv");
+  const auto clash = db->runs().importText(formatRunCsv(makeRun(5, true, 2)), "dir2/run.csv");
   EXPECT_EQ(clash.status, ImportStatus::Failed);
   EXPECT_NE(clash.message.find("already exists"), std::string::npos) << clash.message;
   ImportOptions renamed;
   renamed.name = "run-2";
-  EXPECT_EQ(db->importText(formatRunCsv(makeRun(5, true, 2)), "dir2/run.csv", renamed).status,
-            ImportStatus::Imported);
+  EXPECT_EQ(
+      db->runs().importText(formatRunCsv(makeRun(5, true, 2)), "dir2/run.csv", renamed).status,
+      ImportStatus::Imported);
 }
 
 TEST(Import, ManyFilesInParallelKeepInputOrder) {
@@ -148,7 +149,7 @@ TEST(Import, ManyFilesInParallelKeepInputOrder) {
   ImportOptions options;
   options.threads = 3;
   std::size_t lastDone = 0;
-  auto outcomes = db->importFiles(files, options, [&](std::size_t done, std::size_t total) {
+  auto outcomes = db->runs().importFiles(files, options, [&](std::size_t done, std::size_t total) {
     EXPECT_EQ(total, files.size());
     EXPECT_EQ(done, lastDone + 1);
     lastDone = done;
@@ -163,10 +164,10 @@ TEST(Import, ManyFilesInParallelKeepInputOrder) {
       EXPECT_EQ(outcomes[i].steps, 100 + i);
     }
   }
-  EXPECT_EQ(db->listRuns()->size(), 6u);
-  auto run5 = db->findRun("run5");
+  EXPECT_EQ(db->runs().list()->size(), 6u);
+  auto run5 = db->runs().find("run5");
   ASSERT_TRUE(run5.ok());
-  auto loaded = db->loadRun(run5->id);
+  auto loaded = db->runs().load(run5->id);
   ASSERT_TRUE(loaded.ok());
   test::expectSameRun(makeRun(105, false, 15), loaded.value());
 }
@@ -205,29 +206,29 @@ TEST(Import, ChunkedFilesAreAllOrNothingWithTheReadersMessage) {
     ImportOptions options;
     options.threads = threads;
     options.chunkBytes = 1500;  // two or three rows a chunk
-    const auto outcomes = db->importFiles(files, options);
+    const auto outcomes = db->runs().importFiles(files, options);
     ASSERT_EQ(outcomes.size(), files.size());
     EXPECT_EQ(outcomes[1].status, ImportStatus::Failed);
     EXPECT_EQ(outcomes[1].message, expectedError.errorText());
     EXPECT_EQ(outcomes[6].status, ImportStatus::Skipped) << outcomes[6].message;
     EXPECT_EQ(outcomes[6].runId, outcomes[0].runId);
-    EXPECT_FALSE(db->findRun("f1").ok());
+    EXPECT_FALSE(db->runs().find("f1").ok());
     for (int i : {0, 2, 3, 4, 5}) {
       ASSERT_EQ(outcomes[i].status, ImportStatus::Imported) << outcomes[i].message;
       RunCsvResult parsed = parseRunCsv(texts[i], "x.csv");
       ASSERT_TRUE(parsed.ok());
       EXPECT_EQ(outcomes[i].steps, static_cast<std::int64_t>(parsed.value().stepCount()));
-      auto loaded = db->loadRun(outcomes[i].runId);
+      auto loaded = db->runs().load(outcomes[i].runId);
       ASSERT_TRUE(loaded.ok()) << loaded.errorText();
       EXPECT_TRUE(loaded.value() == parsed.value()) << "file " << i;
-      auto info = db->runInfo(outcomes[i].runId);
+      auto info = db->runs().info(outcomes[i].runId);
       ASSERT_TRUE(info.ok());
       EXPECT_EQ(info->stepCount, outcomes[i].steps);
       // Summary blocks assembled from the chunks are exact: with ~20-step buckets the summary
       // comes from the 16-step blocks, each compared with the steps it covers.
       const RunData& steps = parsed.value();
-      auto summary =
-          db->loadSummary(outcomes[i].runId, 0, -1, static_cast<int>(steps.stepCount() / 20));
+      auto summary = db->runs().loadSummary(outcomes[i].runId, 0, -1,
+                                            static_cast<int>(steps.stepCount() / 20));
       ASSERT_TRUE(summary.ok()) << summary.errorText();
       EXPECT_EQ(summary->blockSteps, 16);
       for (const SummaryBucket& bucket : summary->buckets) {
@@ -244,7 +245,7 @@ TEST(Import, ChunkedFilesAreAllOrNothingWithTheReadersMessage) {
       }
     }
     // Importing the same files again reads them but stores nothing new.
-    const auto again = db->importFiles(files, options);
+    const auto again = db->runs().importFiles(files, options);
     for (int i : {0, 2, 3, 4, 5}) {
       EXPECT_EQ(again[i].status, ImportStatus::Skipped);
       EXPECT_EQ(again[i].steps, outcomes[i].steps);
@@ -264,13 +265,13 @@ TEST(Import, CancelStopsAfterTheFileBeingWritten) {
   auto db = test::openDb(":memory:");
   ImportOptions options;
   options.threads = 2;
-  auto outcomes =
-      db->importFiles(files, options, [](std::size_t done, std::size_t) { return done < 2; });
+  auto outcomes = db->runs().importFiles(files, options,
+                                         [](std::size_t done, std::size_t) { return done < 2; });
   ASSERT_EQ(outcomes.size(), 5u);
   EXPECT_EQ(outcomes[1].status, ImportStatus::Imported);
   EXPECT_EQ(outcomes[2].status, ImportStatus::Failed);
   EXPECT_NE(outcomes[4].message.find("cancelled"), std::string::npos);
-  EXPECT_EQ(db->listRuns()->size(), 2u);
+  EXPECT_EQ(db->runs().list()->size(), 2u);
 }
 
 TEST(Import, FailureMidRunRollsBackEverything) {
@@ -279,7 +280,7 @@ TEST(Import, FailureMidRunRollsBackEverything) {
   ImportOptions failing;
   failing.failAfterSteps = 150;
   const std::string text = formatRunCsv(makeRun(300, true));
-  const auto outcome = db->importText(text, "half.csv", failing);
+  const auto outcome = db->runs().importText(text, "half.csv", failing);
   EXPECT_EQ(outcome.status, ImportStatus::Failed);
   EXPECT_NE(outcome.message.find("injected failure"), std::string::npos);
   for (const char* table : {"runs", "steps", "step_blocks", "scenes"}) {
@@ -287,22 +288,22 @@ TEST(Import, FailureMidRunRollsBackEverything) {
     EXPECT_EQ(c.queryInt(std::string("SELECT count(*) FROM ") + table), 0) << table;
   }
   // The same file then imports normally (no stale statement or transaction state).
-  EXPECT_EQ(db->importText(text, "half.csv").status, ImportStatus::Imported);
+  EXPECT_EQ(db->runs().importText(text, "half.csv").status, ImportStatus::Imported);
 }
 
 TEST(Import, BuiltinSceneIsStoredOnce) {
   auto db = test::openDb(":memory:");
-  const auto a = db->importText(formatRunCsv(makeRun(5, false, 1)), "a.csv");
-  const auto b = db->importText(formatRunCsv(makeRun(5, false, 2)), "b.csv");
+  const auto a = db->runs().importText(formatRunCsv(makeRun(5, false, 1)), "a.csv");
+  const auto b = db->runs().importText(formatRunCsv(makeRun(5, false, 2)), "b.csv");
   ASSERT_EQ(a.status, ImportStatus::Imported);
   ASSERT_EQ(b.status, ImportStatus::Imported);
   EXPECT_TRUE(a.warnings.empty());
-  auto json = db->sceneJson(a.runId);
+  auto json = db->runs().sceneJson(a.runId);
   ASSERT_TRUE(json.ok());
   ASSERT_TRUE(json->has_value());
   EXPECT_NE(json->value().find("\"practice\""), std::string::npos);
-  EXPECT_EQ(db->sceneJson(b.runId).value(), json.value());
-  EXPECT_TRUE(db->findRun("a")->sceneStored);
+  EXPECT_EQ(db->runs().sceneJson(b.runId).value(), json.value());
+  EXPECT_TRUE(db->runs().find("a")->sceneStored);
 }
 
 TEST(Import, SceneFileBesideTheRunFile) {
@@ -314,10 +315,10 @@ TEST(Import, SceneFileBesideTheRunFile) {
   run.setMeta("scene", "corridor.json");
   ASSERT_TRUE(writeRunCsv(run, dir / "c.csv").ok());
   auto db = test::openDb(":memory:");
-  auto outcomes = db->importFiles({dir / "c.csv"});
+  auto outcomes = db->runs().importFiles({dir / "c.csv"});
   ASSERT_EQ(outcomes[0].status, ImportStatus::Imported) << outcomes[0].message;
   EXPECT_TRUE(outcomes[0].warnings.empty());
-  EXPECT_EQ(db->sceneJson(outcomes[0].runId).value(), sceneText);
+  EXPECT_EQ(db->runs().sceneJson(outcomes[0].runId).value(), sceneText);
 }
 
 // Regression: the `scene` value was read as any path (absolute, `..`, /dev/zero, a FIFO). Only a
@@ -355,34 +356,34 @@ TEST(Import, SceneValueIsNeverAPathOutsideTheRunFilesFolder) {
     run.setMeta("scene", refused[i].first);
     const auto file = dir / "runs" / ("r" + std::to_string(i) + ".csv");
     ASSERT_TRUE(writeRunCsv(run, file).ok());
-    const auto outcomes = db->importFiles({file});
+    const auto outcomes = db->runs().importFiles({file});
     ASSERT_EQ(outcomes[0].status, ImportStatus::Imported) << outcomes[0].message;
     ASSERT_EQ(outcomes[0].warnings.size(), 1u) << refused[i].first;
     EXPECT_NE(outcomes[0].warnings[0].find(refused[i].second), std::string::npos)
         << outcomes[0].warnings[0];
-    EXPECT_FALSE(db->sceneJson(outcomes[0].runId)->has_value()) << refused[i].first;
+    EXPECT_FALSE(db->runs().sceneJson(outcomes[0].runId)->has_value()) << refused[i].first;
   }
   // The same file beside the run is read.
   writeText(dir / "runs" / "beside.json", sceneText);
   RunData run = makeRun(8, false, 99);
   run.setMeta("scene", "beside.json");
   ASSERT_TRUE(writeRunCsv(run, dir / "runs" / "ok.csv").ok());
-  const auto ok = db->importFiles({dir / "runs" / "ok.csv"});
+  const auto ok = db->runs().importFiles({dir / "runs" / "ok.csv"});
   ASSERT_EQ(ok[0].status, ImportStatus::Imported) << ok[0].message;
   EXPECT_TRUE(ok[0].warnings.empty());
-  EXPECT_EQ(db->sceneJson(ok[0].runId).value(), sceneText);
+  EXPECT_EQ(db->runs().sceneJson(ok[0].runId).value(), sceneText);
 }
 
 TEST(Import, UnresolvableSceneIsAWarningNotAFailure) {
   RunData run = makeRun(8, false);
   run.setMeta("scene", "no-such-scene");
   auto db = test::openDb(":memory:");
-  const auto outcome = db->importText(formatRunCsv(run), "/tmp/x/lost.csv");
+  const auto outcome = db->runs().importText(formatRunCsv(run), "/tmp/x/lost.csv");
   ASSERT_EQ(outcome.status, ImportStatus::Imported) << outcome.message;
   ASSERT_EQ(outcome.warnings.size(), 1u);
   EXPECT_NE(outcome.warnings[0].find("no-such-scene"), std::string::npos);
-  EXPECT_FALSE(db->sceneJson(outcome.runId)->has_value());
-  EXPECT_EQ(db->findRun("lost")->scene, "no-such-scene");
+  EXPECT_FALSE(db->runs().sceneJson(outcome.runId)->has_value());
+  EXPECT_EQ(db->runs().find("lost")->scene, "no-such-scene");
 }
 
 // The caller's resolver supplies scenes storage cannot (procedural ones); it is not asked for
@@ -398,24 +399,24 @@ TEST(Import, SceneResolverSuppliesScenesStorageCannotResolve) {
   auto db = test::openDb(":memory:");
   RunData run = makeRun(8, false, 1);
   run.setMeta("scene", "random:5:1");
-  const auto generated = db->importText(formatRunCsv(run), "/tmp/x/gen.csv", options);
+  const auto generated = db->runs().importText(formatRunCsv(run), "/tmp/x/gen.csv", options);
   ASSERT_EQ(generated.status, ImportStatus::Imported) << generated.message;
   EXPECT_TRUE(generated.warnings.empty());
-  auto json = db->sceneJson(generated.runId);
+  auto json = db->runs().sceneJson(generated.runId);
   ASSERT_TRUE(json.ok() && json->has_value());
   EXPECT_NE(json->value().find("generated"), std::string::npos);
 
   run = makeRun(8, false, 2);
   run.setMeta("scene", "random:6:1");
-  const auto declined = db->importText(formatRunCsv(run), "/tmp/x/declined.csv", options);
+  const auto declined = db->runs().importText(formatRunCsv(run), "/tmp/x/declined.csv", options);
   ASSERT_EQ(declined.status, ImportStatus::Imported) << declined.message;
   EXPECT_EQ(declined.warnings.size(), 1u);
-  EXPECT_FALSE(db->sceneJson(declined.runId)->has_value());
+  EXPECT_FALSE(db->runs().sceneJson(declined.runId)->has_value());
 
   run = makeRun(8, false, 3);  // scene "practice", a built-in
-  const auto builtin = db->importText(formatRunCsv(run), "/tmp/x/builtin.csv", options);
+  const auto builtin = db->runs().importText(formatRunCsv(run), "/tmp/x/builtin.csv", options);
   ASSERT_EQ(builtin.status, ImportStatus::Imported) << builtin.message;
-  EXPECT_TRUE(db->sceneJson(builtin.runId)->has_value());
+  EXPECT_TRUE(db->runs().sceneJson(builtin.runId)->has_value());
   EXPECT_EQ(asked, (std::vector<std::string>{"random:5:1", "random:6:1"}));
 }
 
@@ -423,10 +424,10 @@ TEST(Import, RecordedRunThenItsExportedFileIsADuplicate) {
   TempDir dir;
   auto db = test::openDb(":memory:");
   const RunData run = makeRun(12, true);
-  const auto stored = db->importRun(run, "recorded");
+  const auto stored = db->runs().importRun(run, "recorded");
   ASSERT_EQ(stored.status, ImportStatus::Imported) << stored.message;
-  ASSERT_TRUE(db->exportRun(stored.runId, dir / "recorded.csv").ok());
-  auto again = db->importFiles({dir / "recorded.csv"});
+  ASSERT_TRUE(db->runs().exportRun(stored.runId, dir / "recorded.csv").ok());
+  auto again = db->runs().importFiles({dir / "recorded.csv"});
   EXPECT_EQ(again[0].status, ImportStatus::Skipped);
 }
 
@@ -434,32 +435,32 @@ TEST(Import, NonFiniteInMemoryRunIsRejected) {
   auto db = test::openDb(":memory:");
   RunData run = makeRun(4, false);
   run.sensors[5] = std::nan("");
-  const auto outcome = db->importRun(run, "nan");
+  const auto outcome = db->runs().importRun(run, "nan");
   EXPECT_EQ(outcome.status, ImportStatus::Failed);
   EXPECT_NE(outcome.message.find("not finite"), std::string::npos);
-  EXPECT_TRUE(db->listRuns()->empty());
+  EXPECT_TRUE(db->runs().list()->empty());
 }
 
 TEST(Import, InconsistentInMemoryRunIsRejected) {
   auto db = test::openDb(":memory:");
   RunData run = makeRun(4, false);
   run.sensors.pop_back();
-  EXPECT_EQ(db->importRun(run, "short").status, ImportStatus::Failed);
+  EXPECT_EQ(db->runs().importRun(run, "short").status, ImportStatus::Failed);
 }
 
 TEST(Import, DeleteRunRemovesItsRows) {
   TempDir dir;
   auto db = test::openDb(dir / "runs.db");
-  const auto outcome = db->importText(formatRunCsv(makeRun(50, true)), "d.csv");
+  const auto outcome = db->runs().importText(formatRunCsv(makeRun(50, true)), "d.csv");
   ASSERT_EQ(outcome.status, ImportStatus::Imported);
-  auto set = db->autolabel(outcome.runId, "auto");
+  auto set = db->labels().autolabel(outcome.runId, "auto");
   ASSERT_TRUE(set.ok());
-  ASSERT_TRUE(db->deleteRun(outcome.runId).ok());
+  ASSERT_TRUE(db->runs().remove(outcome.runId).ok());
   for (const char* table : {"runs", "steps", "step_blocks", "label_segments"}) {
     db::Connection c = db::Connection::open(dir / "runs.db", false, true);
     EXPECT_EQ(c.queryInt(std::string("SELECT count(*) FROM ") + table), 0) << table;
   }
-  EXPECT_FALSE(db->deleteRun(outcome.runId).ok());
+  EXPECT_FALSE(db->runs().remove(outcome.runId).ok());
 }
 
 TEST(Import, ChecksumDependsOnEveryByte) {

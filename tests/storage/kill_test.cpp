@@ -62,8 +62,9 @@ TEST(KillTest, KilledWriterLosesAtMostTheEditInFlight) {
   {
     auto db = test::openDb(path);
     ASSERT_NE(db, nullptr);
-    ASSERT_EQ(db->importRun(test::makeRun(5000, false), "victim").status, ImportStatus::Imported);
-    ASSERT_TRUE(db->createLabelSet("kill").ok());
+    ASSERT_EQ(db->runs().importRun(test::makeRun(5000, false), "victim").status,
+              ImportStatus::Imported);
+    ASSERT_TRUE(db->labels().create("kill").ok());
   }
   std::mt19937 rng(11);
   long long nextEdit = 0;
@@ -78,9 +79,9 @@ TEST(KillTest, KilledWriterLosesAtMostTheEditInFlight) {
     ASSERT_NE(db, nullptr);
     const IntegrityReport report = db->check();
     EXPECT_TRUE(report.ok) << (report.problems.empty() ? "" : report.problems[0]);
-    auto set = db->findLabelSet("kill");
+    auto set = db->labels().find("kill");
     ASSERT_TRUE(set.ok());
-    const auto segments = db->segments(set->id).value();
+    const auto segments = db->labels().segments(set->id).value();
     std::set<long long> stored;
     for (const LabelSegment& s : segments) {
       stored.insert(s.firstStep * kGroupCount + groupIndex(s.group));

@@ -83,22 +83,22 @@ TEST(Mutation, HundredThousandMutatedFilesStoreAllOrNothing) {
     // a bad row can come after steps that were already written.
     ImportOptions options;
     options.chunkBytes = i % 4 == 1 ? 700 : i % 4 == 3 ? 50 : 0;
-    const ImportOutcome outcome = db->importText(text, "m.csv", options);
+    const ImportOutcome outcome = db->runs().importText(text, "m.csv", options);
     if (outcome.status == ImportStatus::Imported) {
       ++imported;
       // Stored completely: equal to what the reader makes of the same text.
       RunCsvResult parsed = parseRunCsv(text, "m.csv");
       ASSERT_TRUE(parsed.ok()) << "stored a file the reader rejects: " << i;
-      auto loaded = db->loadRun(outcome.runId);
+      auto loaded = db->runs().load(outcome.runId);
       ASSERT_TRUE(loaded.ok()) << loaded.errorText();
       ASSERT_TRUE(loaded.value() == parsed.value()) << "file " << i;
-      ASSERT_TRUE(db->deleteRun(outcome.runId).ok());
+      ASSERT_TRUE(db->runs().remove(outcome.runId).ok());
     } else {
       ++failed;
       ASSERT_EQ(outcome.status, ImportStatus::Failed) << outcome.message;
       ASSERT_EQ(outcome.message.rfind("m.csv", 0), 0u) << outcome.message;
       // Stored not at all (foreign keys make orphan steps or truth rows impossible).
-      auto runs = db->listRuns();
+      auto runs = db->runs().list();
       ASSERT_TRUE(runs.ok());
       ASSERT_TRUE(runs->empty()) << "file " << i << " left a partial run";
     }

@@ -24,14 +24,14 @@ TEST(NameRuleInStorage, RunsImportedUnderABadNameAreRefused) {
   auto db = test::openDb(":memory:");
   const RunData run = makeRun(20, true);
   for (const std::string& name : badNames()) {
-    const ImportOutcome outcome = db->importRun(run, name, "f.csv");
+    const ImportOutcome outcome = db->runs().importRun(run, name, "f.csv");
     EXPECT_EQ(outcome.status, ImportStatus::Failed) << name;
     if (!name.empty()) {
       EXPECT_NE(outcome.message.find("run name"), std::string::npos) << outcome.message;
     }
   }
-  EXPECT_TRUE(db->listRuns()->empty());
-  EXPECT_EQ(db->importRun(run, "Müller 1", "f.csv").status, ImportStatus::Imported);
+  EXPECT_TRUE(db->runs().list()->empty());
+  EXPECT_EQ(db->runs().importRun(run, "Müller 1", "f.csv").status, ImportStatus::Imported);
 }
 
 TEST(NameRuleInStorage, FileStemsBecomeValidNamesOrFailThatFileOnly) {
@@ -41,7 +41,7 @@ TEST(NameRuleInStorage, FileStemsBecomeValidNamesOrFailThatFileOnly) {
   ASSERT_TRUE(writeRunCsv(makeRun(21, true, 2), dir / "dir,x/line\nbreak.csv").ok());
   ASSERT_TRUE(writeRunCsv(makeRun(22, true, 3), dir / "dir,x/caf\xE9.csv").ok());
   auto db = test::openDb(dir / "n.db");
-  const auto outcomes = db->importFiles(
+  const auto outcomes = db->runs().importFiles(
       {dir / "dir,x/run,one.csv", dir / "dir,x/line\nbreak.csv", dir / "dir,x/caf\xE9.csv"}, {});
   ASSERT_EQ(outcomes.size(), 3u);
   EXPECT_EQ(outcomes[0].status, ImportStatus::Imported) << outcomes[0].message;
@@ -55,38 +55,38 @@ TEST(NameRuleInStorage, FileStemsBecomeValidNamesOrFailThatFileOnly) {
   ImportOptions prefixed;
   prefixed.namePrefix = "p";
   ASSERT_TRUE(writeRunCsv(makeRun(23, true, 4), dir / "x,y.csv").ok());
-  EXPECT_EQ(db->importFiles({dir / "x,y.csv"}, prefixed)[0].runName, "p_x_y");
+  EXPECT_EQ(db->runs().importFiles({dir / "x,y.csv"}, prefixed)[0].runName, "p_x_y");
   prefixed.namePrefix = "p\r";
   ASSERT_TRUE(writeRunCsv(makeRun(24, true, 5), dir / "z.csv").ok());
-  EXPECT_EQ(db->importFiles({dir / "z.csv"}, prefixed)[0].status, ImportStatus::Failed);
+  EXPECT_EQ(db->runs().importFiles({dir / "z.csv"}, prefixed)[0].status, ImportStatus::Failed);
 }
 
 TEST(NameRuleInStorage, LabelSetsModelsSweepsAndAnnotatorsAreChecked) {
   auto db = test::openDb(":memory:");
-  ASSERT_EQ(db->importRun(makeRun(30, true), "r", "r.csv").status, ImportStatus::Imported);
-  auto set = db->createLabelSet("good", "ann");
+  ASSERT_EQ(db->runs().importRun(makeRun(30, true), "r", "r.csv").status, ImportStatus::Imported);
+  auto set = db->labels().create("good", "ann");
   ASSERT_TRUE(set.ok()) << set.errorText();
   for (const std::string& name : badNames()) {
     SCOPED_TRACE(shownText(name));
-    EXPECT_FALSE(db->createLabelSet(name, "").ok());
-    EXPECT_FALSE(db->renameLabelSet(set.value(), name).ok());
-    EXPECT_FALSE(db->renameRun("r", name).ok());
-    EXPECT_FALSE(db->addModel(name, "{}", "{}", "{}").ok());
-    EXPECT_FALSE(db->createSweep(name, "{}").ok());
+    EXPECT_FALSE(db->labels().create(name, "").ok());
+    EXPECT_FALSE(db->labels().rename("good", name).ok());
+    EXPECT_FALSE(db->runs().rename("r", name).ok());
+    EXPECT_FALSE(db->models().add(name, "{}", "{}", "{}").ok());
+    EXPECT_FALSE(db->sweeps().create(name, "{}").ok());
     if (!name.empty()) {
-      EXPECT_FALSE(db->createLabelSet("other", name).ok());
+      EXPECT_FALSE(db->labels().create("other", name).ok());
       LabelSegment s;
       s.run = "r";
       s.firstStep = 0;
       s.lastStep = 3;
       s.cls = ContactClass::Wall;
       s.annotator = name;
-      EXPECT_FALSE(db->addSegment(set.value(), s).ok());
+      EXPECT_FALSE(db->labels().addSegment(set.value(), s).ok());
     }
   }
-  EXPECT_EQ(db->listLabelSets()->size(), 1u);
-  EXPECT_EQ(db->findRun("r")->name, "r");
-  EXPECT_TRUE(db->addModel("m ok", "{}", "{}", "{}").ok());
+  EXPECT_EQ(db->labels().list()->size(), 1u);
+  EXPECT_EQ(db->runs().find("r")->name, "r");
+  EXPECT_TRUE(db->models().add("m ok", "{}", "{}", "{}").ok());
 }
 
 }  // namespace

@@ -27,7 +27,7 @@ class ReadTest : public ::testing::TestWithParam<test::Backend> {
     db_ = test::openDb(address);
     ASSERT_NE(db_, nullptr);
     run_ = makeRun(20000, true, 5, 37);
-    const auto outcome = db_->importRun(run_, "long");
+    const auto outcome = db_->runs().importRun(run_, "long");
     ASSERT_EQ(outcome.status, ImportStatus::Imported) << outcome.message;
     runId_ = outcome.runId;
   }
@@ -48,7 +48,7 @@ class ReadTest : public ::testing::TestWithParam<test::Backend> {
   }
 
   void expectSummary(std::int64_t first, std::int64_t last, int buckets) {
-    auto summary = db_->loadSummary(runId_, first, last, buckets);
+    auto summary = db_->runs().loadSummary(runId_, first, last, buckets);
     ASSERT_TRUE(summary.ok()) << summary.errorText();
     const std::int64_t clippedLast = last < 0 ? 19999 : std::min<std::int64_t>(last, 19999);
     ASSERT_FALSE(summary->buckets.empty());
@@ -76,7 +76,7 @@ class ReadTest : public ::testing::TestWithParam<test::Backend> {
 };
 
 TEST_P(ReadTest, WindowEqualsTheSliceOfTheRun) {
-  auto window = db_->loadWindow(runId_, 1234, 500);
+  auto window = db_->runs().loadWindow(runId_, 1234, 500);
   ASSERT_TRUE(window.ok()) << window.errorText();
   EXPECT_EQ(window->firstStep, 1234);
   const RunData& w = window->data;
@@ -96,38 +96,38 @@ TEST_P(ReadTest, WindowEqualsTheSliceOfTheRun) {
 }
 
 TEST_P(ReadTest, WindowIsClippedAtTheEnd) {
-  auto window = db_->loadWindow(runId_, 19990, 100);
+  auto window = db_->runs().loadWindow(runId_, 19990, 100);
   ASSERT_TRUE(window.ok());
   EXPECT_EQ(window->data.stepCount(), 10u);
   EXPECT_EQ(window->data.x.back(), run_.x.back());
 }
 
 TEST_P(ReadTest, WindowBeyondTheEndIsEmpty) {
-  auto window = db_->loadWindow(runId_, 50000, 100);
+  auto window = db_->runs().loadWindow(runId_, 50000, 100);
   ASSERT_TRUE(window.ok());
   EXPECT_EQ(window->data.stepCount(), 0u);
 }
 
 TEST_P(ReadTest, WindowOfUnknownRunFails) {
-  EXPECT_FALSE(db_->loadWindow(999, 0, 10).ok());
+  EXPECT_FALSE(db_->runs().loadWindow(999, 0, 10).ok());
 }
 
 TEST_P(ReadTest, WholeRunSummaryUsesBlocksAndIsExact) {
-  auto summary = db_->loadSummary(runId_, 0, -1, 100);
+  auto summary = db_->runs().loadSummary(runId_, 0, -1, 100);
   ASSERT_TRUE(summary.ok());
   EXPECT_GT(summary->blockSteps, 1);
   expectSummary(0, -1, 100);
 }
 
 TEST_P(ReadTest, NarrowRangeSummaryComesFromSteps) {
-  auto summary = db_->loadSummary(runId_, 100, 180, 40);
+  auto summary = db_->runs().loadSummary(runId_, 100, 180, 40);
   ASSERT_TRUE(summary.ok());
   EXPECT_EQ(summary->blockSteps, 1);
   expectSummary(100, 180, 40);
 }
 
 TEST_P(ReadTest, MoreBucketsThanStepsGivesOneStepEach) {
-  auto summary = db_->loadSummary(runId_, 10, 14, 100);
+  auto summary = db_->runs().loadSummary(runId_, 10, 14, 100);
   ASSERT_TRUE(summary.ok());
   ASSERT_EQ(summary->buckets.size(), 5u);
   for (std::size_t b = 0; b < 5; ++b)
@@ -149,11 +149,11 @@ TEST_P(ReadTest, RaggedRangesAtManyBucketCountsAreExact) {
 }
 
 TEST_P(ReadTest, SummaryNeedsABucket) {
-  EXPECT_FALSE(db_->loadSummary(runId_, 0, -1, 0).ok());
+  EXPECT_FALSE(db_->runs().loadSummary(runId_, 0, -1, 0).ok());
 }
 
 TEST_P(ReadTest, SummaryOfEmptyRangeHasNoBuckets) {
-  auto summary = db_->loadSummary(runId_, 30000, -1, 10);
+  auto summary = db_->runs().loadSummary(runId_, 30000, -1, 10);
   ASSERT_TRUE(summary.ok());
   EXPECT_TRUE(summary->buckets.empty());
 }
@@ -313,7 +313,7 @@ namespace tactile::storage {
 namespace {
 
 TEST_P(ReadTest, TrackEqualsTheRunsColumnsWithoutSensors) {
-  const auto track = db_->loadTrack(runId_);
+  const auto track = db_->runs().loadTrack(runId_);
   ASSERT_TRUE(track.ok()) << track.errorText();
   EXPECT_EQ(track->x, run_.x);
   EXPECT_EQ(track->y, run_.y);
@@ -322,13 +322,13 @@ TEST_P(ReadTest, TrackEqualsTheRunsColumnsWithoutSensors) {
   EXPECT_EQ(track->omega, run_.omega);
   EXPECT_EQ(track->blocked, run_.blocked);
   EXPECT_EQ(track->truth, run_.truth);
-  EXPECT_FALSE(db_->loadTrack(runId_ + 100).ok());
+  EXPECT_FALSE(db_->runs().loadTrack(runId_ + 100).ok());
 }
 
 TEST_P(ReadTest, TrackOfARunWithoutTruthHasNoTruth) {
-  const auto outcome = db_->importRun(makeRun(50, false), "plain");
+  const auto outcome = db_->runs().importRun(makeRun(50, false), "plain");
   ASSERT_EQ(outcome.status, ImportStatus::Imported) << outcome.message;
-  const auto track = db_->loadTrack(outcome.runId);
+  const auto track = db_->runs().loadTrack(outcome.runId);
   ASSERT_TRUE(track.ok()) << track.errorText();
   EXPECT_EQ(track->stepCount(), 50u);
   EXPECT_FALSE(track->hasTruth());
@@ -342,7 +342,7 @@ TEST(ReadSnapshot, AFailedReadDoesNotPinTheConnectionToAnOldSnapshot) {
   const auto path = dir.path() / "two.db";
   auto a = test::openDb(path.string());
   ASSERT_NE(a, nullptr);
-  const auto outcome = a->importRun(makeRun(10, false), "broken");
+  const auto outcome = a->runs().importRun(makeRun(10, false), "broken");
   ASSERT_EQ(outcome.status, ImportStatus::Imported);
   {
     sqlite3* raw = nullptr;
@@ -355,9 +355,9 @@ TEST(ReadSnapshot, AFailedReadDoesNotPinTheConnectionToAnOldSnapshot) {
   auto opened = RunDatabase::open(path, OpenMode::ReadOnly);
   ASSERT_TRUE(opened.ok()) << opened.errorText();
   auto& b = opened.value();
-  EXPECT_FALSE(b->loadWindow(outcome.runId, 0, 5).ok());  // malformed metadata
-  ASSERT_TRUE(a->createLabelSet("new").ok());             // written by the other connection
-  EXPECT_TRUE(b->findLabelSet("new").ok());               // and seen at once
+  EXPECT_FALSE(b->runs().loadWindow(outcome.runId, 0, 5).ok());  // malformed metadata
+  ASSERT_TRUE(a->labels().create("new").ok());                   // written by the other connection
+  EXPECT_TRUE(b->labels().find("new").ok());                     // and seen at once
 }
 
 INSTANTIATE_TEST_SUITE_P(Backends, ReadTest,

@@ -53,8 +53,8 @@ TEST(WholeRunRead, LongRunsReadBackBitForBit) {
   for (int variant = 0; variant < 3; ++variant) {
     const RunData run = longRun(variant != 1, variant == 2, 20 + static_cast<unsigned>(variant));
     const std::string name = "long" + std::to_string(variant);
-    ASSERT_EQ(db->importRun(run, name).status, ImportStatus::Imported);
-    auto loaded = db->loadRun(db->findRun(name)->id);
+    ASSERT_EQ(db->runs().importRun(run, name).status, ImportStatus::Imported);
+    auto loaded = db->runs().load(db->runs().find(name)->id);
     ASSERT_TRUE(loaded.ok()) << loaded.errorText();
     test::expectSameRun(loaded.value(), run);
     EXPECT_EQ(loaded->hasTruth(), variant != 1);
@@ -101,8 +101,9 @@ TEST(WholeRunRead, ADamagedRowOfALongRunGivesTheRowByRowError) {
     {
       auto db = test::openDb(path);
       ASSERT_NE(db, nullptr);
-      ASSERT_EQ(db->importRun(longRun(true, false, 7), "long").status, ImportStatus::Imported);
-      id = db->findRun("long")->id;
+      ASSERT_EQ(db->runs().importRun(longRun(true, false, 7), "long").status,
+                ImportStatus::Imported);
+      id = db->runs().find("long")->id;
     }
     const auto withId = [&](std::string text) {
       for (std::size_t at = text.find("%R"); at != std::string::npos; at = text.find("%R"))
@@ -112,11 +113,11 @@ TEST(WholeRunRead, ADamagedRowOfALongRunGivesTheRowByRowError) {
     exec(path, withId(damage.sql));
     auto db = openReadOnly(path);
     ASSERT_NE(db, nullptr);
-    auto whole = db->loadRun(id);
+    auto whole = db->runs().load(id);
     ASSERT_FALSE(whole.ok());
     EXPECT_NE(whole.errorText().find(withId(damage.expected)), std::string::npos)
         << whole.errorText();
-    auto window = db->loadWindow(id, 0, static_cast<std::int64_t>(kLongRun));
+    auto window = db->runs().loadWindow(id, 0, static_cast<std::int64_t>(kLongRun));
     ASSERT_FALSE(window.ok());
     EXPECT_EQ(whole.errorText(), window.errorText());
   }
@@ -130,8 +131,8 @@ TEST(WholeRunRead, MissingExtraValuesOfALongRunAreReported) {
   {
     auto db = test::openDb(path);
     ASSERT_NE(db, nullptr);
-    ASSERT_EQ(db->importRun(longRun(false, true, 9), "long").status, ImportStatus::Imported);
-    id = db->findRun("long")->id;
+    ASSERT_EQ(db->runs().importRun(longRun(false, true, 9), "long").status, ImportStatus::Imported);
+    id = db->runs().find("long")->id;
   }
   exec(path,
        "UPDATE steps SET extra = NULL, crc = tactile_step_crc(run_id, step, x, y, theta, v, "
@@ -139,11 +140,11 @@ TEST(WholeRunRead, MissingExtraValuesOfALongRunAreReported) {
            std::to_string(id) + " AND step = 50001");
   auto db = openReadOnly(path);
   ASSERT_NE(db, nullptr);
-  auto whole = db->loadRun(id);
+  auto whole = db->runs().load(id);
   ASSERT_FALSE(whole.ok());
   EXPECT_NE(whole.errorText().find("malformed x_ values at step 50001"), std::string::npos)
       << whole.errorText();
-  EXPECT_EQ(whole.errorText(), db->loadWindow(id, 0, 60000).errorText());
+  EXPECT_EQ(whole.errorText(), db->runs().loadWindow(id, 0, 60000).errorText());
 }
 
 }  // namespace

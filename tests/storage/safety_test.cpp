@@ -58,18 +58,19 @@ TEST(OpenMode, ReadOnlyNeverWrites) {
   {
     auto db = RunDatabase::open(path, OpenMode::Create);
     ASSERT_TRUE(db.ok());
-    ASSERT_EQ(db.value()->importRun(makeRun(20, true), "one").status, ImportStatus::Imported);
+    ASSERT_EQ(db.value()->runs().importRun(makeRun(20, true), "one").status,
+              ImportStatus::Imported);
   }
   const std::string before = readBytes(path);
   auto db = RunDatabase::open(path, OpenMode::ReadOnly);
   ASSERT_TRUE(db.ok()) << db.errorText();
   EXPECT_TRUE(db.value()->readOnly());
-  ASSERT_TRUE(db.value()->findRun("one").ok());
-  auto set = db.value()->createLabelSet("s");
+  ASSERT_TRUE(db.value()->runs().find("one").ok());
+  auto set = db.value()->labels().create("s");
   ASSERT_FALSE(set.ok());
   EXPECT_EQ(set.error().file, path.string()) << set.errorText();
   EXPECT_NE(set.errorText().find("readonly"), std::string::npos) << set.errorText();
-  EXPECT_EQ(db.value()->importRun(makeRun(5, true, 9), "two").status, ImportStatus::Failed);
+  EXPECT_EQ(db.value()->runs().importRun(makeRun(5, true, 9), "two").status, ImportStatus::Failed);
   EXPECT_TRUE(db.value()->check().ok);
   db.value().reset();
   EXPECT_TRUE(readBytes(path) == before) << path << " changed";
@@ -85,7 +86,8 @@ TEST(OpenMode, ReadOnlyWorksInAReadOnlyFolder) {
   {
     auto db = RunDatabase::open(path, OpenMode::Create);
     ASSERT_TRUE(db.ok());
-    ASSERT_EQ(db.value()->importRun(makeRun(25, true), "one").status, ImportStatus::Imported);
+    ASSERT_EQ(db.value()->runs().importRun(makeRun(25, true), "one").status,
+              ImportStatus::Imported);
   }
   expectNoCompanions(path);
   const std::string before = readBytes(path);
@@ -102,8 +104,8 @@ TEST(OpenMode, ReadOnlyWorksInAReadOnlyFolder) {
       std::fprintf(stderr, "%s\n", db.errorText().c_str());
       ::_exit(1);
     }
-    auto run = db.value()->findRun("one");
-    auto data = run ? db.value()->loadRun(run->id) : Result<RunData>(Error("no run"));
+    auto run = db.value()->runs().find("one");
+    auto data = run ? db.value()->runs().load(run->id) : Result<RunData>(Error("no run"));
     ::_exit(data.ok() && data->stepCount() == 25 && db.value()->check().ok ? 0 : 2);
   }
   int status = 0;
@@ -212,10 +214,10 @@ TEST(Errors, SqliteErrorsNameTheDatabase) {
   const fs::path path = dir / "named.db";
   auto db = RunDatabase::open(path, OpenMode::Create);
   ASSERT_TRUE(db.ok());
-  ASSERT_EQ(db.value()->importRun(makeRun(10, true), "one").status, ImportStatus::Imported);
-  const auto id = db.value()->findRun("one")->id;
+  ASSERT_EQ(db.value()->runs().importRun(makeRun(10, true), "one").status, ImportStatus::Imported);
+  const auto id = db.value()->runs().find("one")->id;
   sqliteExec(path, "DROP VIEW step_truth; DROP TABLE step_blocks; DROP TABLE steps;");
-  auto run = db.value()->loadRun(id);
+  auto run = db.value()->runs().load(id);
   ASSERT_FALSE(run.ok());
   EXPECT_EQ(run.error().file, path.string());
   EXPECT_EQ(run.errorText().rfind(path.string() + ": ", 0), 0u) << run.errorText();
@@ -228,8 +230,10 @@ TEST(Check, ProblemsAreCountedPerKindWithTheFirstTenKept) {
   {
     auto db = RunDatabase::open(path, OpenMode::Create);
     ASSERT_TRUE(db.ok());
-    ASSERT_EQ(db.value()->importRun(makeRun(40, true, 1), "a").status, ImportStatus::Imported);
-    ASSERT_EQ(db.value()->importRun(makeRun(30, true, 2), "b").status, ImportStatus::Imported);
+    ASSERT_EQ(db.value()->runs().importRun(makeRun(40, true, 1), "a").status,
+              ImportStatus::Imported);
+    ASSERT_EQ(db.value()->runs().importRun(makeRun(30, true, 2), "b").status,
+              ImportStatus::Imported);
   }
   sqliteExec(path, "DELETE FROM runs WHERE name = 'a'");  // foreign keys off: 40 orphaned steps
   auto db = RunDatabase::open(path, OpenMode::ReadOnly);
@@ -275,8 +279,8 @@ TEST(Concurrency, ProcessesCreateMigrateAndImportAtOnce) {
           ::_exit(1);
         }
         for (int r = 0; r < kRuns; ++r) {
-          const auto outcome = db.value()->importText(texts[static_cast<std::size_t>(r)],
-                                                      "run_" + std::to_string(r) + ".csv");
+          const auto outcome = db.value()->runs().importText(texts[static_cast<std::size_t>(r)],
+                                                             "run_" + std::to_string(r) + ".csv");
           if (outcome.status == ImportStatus::Failed) {
             const std::string line = "import: " + outcome.message + "\n";
             (void)!::write(pipeFds[1], line.data(), line.size());
@@ -319,7 +323,7 @@ TEST(Concurrency, ProcessesCreateMigrateAndImportAtOnce) {
         << output;
     auto db = RunDatabase::open(path, OpenMode::ReadOnly);
     ASSERT_TRUE(db.ok()) << db.errorText();
-    EXPECT_EQ(db.value()->listRuns()->size(), static_cast<std::size_t>(kRuns));
+    EXPECT_EQ(db.value()->runs().list()->size(), static_cast<std::size_t>(kRuns));
     EXPECT_TRUE(db.value()->check().ok);
   }
 }

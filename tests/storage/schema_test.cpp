@@ -35,7 +35,7 @@ TEST(Schema, ForeignKeysAreEnforced) {
   ASSERT_NE(db, nullptr);
   LabelSegment segment;
   segment.runId = 42;  // no such run
-  auto added = db->addSegment(1, segment);
+  auto added = db->labels().addSegment(1, segment);
   EXPECT_FALSE(added.ok());
 }
 
@@ -59,9 +59,9 @@ TEST(Schema, OlderDatabaseIsBackedUpAndMigrated) {
   EXPECT_TRUE(std::filesystem::exists(db->migrationBackup()));
   EXPECT_EQ(db->migrationBackup().filename(), "old.db.v1.bak");
   // Data survived and the new tables work.
-  auto run = db->findRun("old");
+  auto run = db->runs().find("old");
   ASSERT_TRUE(run.ok()) << run.errorText();
-  EXPECT_TRUE(db->createLabelSet("after-migration").ok());
+  EXPECT_TRUE(db->labels().create("after-migration").ok());
   // The backup still has the old version and the old data.
   db::Connection backup = db::Connection::open(db->migrationBackup(), false);
   EXPECT_EQ(db::schemaVersion(backup), 1);
@@ -147,19 +147,19 @@ TEST(Schema, Version3RunReadsBackAfterMigration) {
   auto db = test::openDb(path);
   ASSERT_NE(db, nullptr);
   EXPECT_EQ(db->migrationBackup().filename(), "v3.db.v3.bak");
-  auto loaded = db->loadRun(1);
+  auto loaded = db->runs().load(1);
   ASSERT_TRUE(loaded.ok()) << loaded.errorText();
   test::expectSameRun(loaded.value(), run);
-  auto window = db->loadWindow(1, 1234, 500);
+  auto window = db->runs().loadWindow(1, 1234, 500);
   ASSERT_TRUE(window.ok()) << window.errorText();
   for (std::size_t i = 0; i < 500 * kGroupCount; ++i) {
     ASSERT_EQ(window->data.truth[i], run.truth[1234 * kGroupCount + i]) << i;
   }
   // Summaries from the dense blocks equal those of the same run imported now.
   auto fresh = test::openDb(":memory:");
-  ASSERT_EQ(fresh->importRun(run, "new").status, ImportStatus::Imported);
-  auto oldSummary = db->loadSummary(1, 0, -1, 100);
-  auto newSummary = fresh->loadSummary(1, 0, -1, 100);
+  ASSERT_EQ(fresh->runs().importRun(run, "new").status, ImportStatus::Imported);
+  auto oldSummary = db->runs().loadSummary(1, 0, -1, 100);
+  auto newSummary = fresh->runs().loadSummary(1, 0, -1, 100);
   ASSERT_TRUE(oldSummary.ok() && newSummary.ok());
   ASSERT_EQ(oldSummary->buckets.size(), newSummary->buckets.size());
   for (std::size_t b = 0; b < newSummary->buckets.size(); ++b) {
@@ -167,7 +167,7 @@ TEST(Schema, Version3RunReadsBackAfterMigration) {
     EXPECT_EQ(oldSummary->buckets[b].max, newSummary->buckets[b].max);
   }
   // Autolabel gives the truth segments, and the step_truth view spells the classes out.
-  auto written = db->autolabel(1, "truth");
+  auto written = db->labels().autolabel(1, "truth");
   ASSERT_TRUE(written.ok()) << written.errorText();
   EXPECT_EQ(static_cast<std::size_t>(written.value()), truthSegments(run).size());
   db.reset();
@@ -187,8 +187,8 @@ TEST(Schema, MostlyZeroSensorRowsAreStoredSparsely) {
   {
     auto db = test::openDb(path);
     ASSERT_NE(db, nullptr);
-    ASSERT_EQ(db->importRun(run, "sparse").status, ImportStatus::Imported);
-    auto loaded = db->loadRun(1);
+    ASSERT_EQ(db->runs().importRun(run, "sparse").status, ImportStatus::Imported);
+    auto loaded = db->runs().load(1);
     ASSERT_TRUE(loaded.ok()) << loaded.errorText();
     test::expectSameRun(loaded.value(), run);
   }

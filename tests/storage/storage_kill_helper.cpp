@@ -21,12 +21,12 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "%s\n", db.errorText().c_str());
     return 1;
   }
-  auto set = db.value()->findLabelSet("kill");
+  auto set = db.value()->labels().find("kill");
   if (!set) {
     std::fprintf(stderr, "%s\n", set.errorText().c_str());
     return 1;
   }
-  auto run = db.value()->findRun("victim");
+  auto run = db.value()->runs().find("victim");
   if (!run) return 1;
   for (long long edit = std::atoll(argv[2]);; ++edit) {
     // Edit n labels one step of one group; edits never overlap, so each adds exactly one segment.
@@ -37,7 +37,7 @@ int main(int argc, char** argv) {
     segment.lastStep = segment.firstStep;
     segment.cls = static_cast<ContactClass>(edit % kContactClassCount);
     if (segment.lastStep >= run->stepCount) return 0;
-    auto id = db.value()->addSegment(set->id, segment);
+    auto id = db.value()->labels().addSegment(set->id, segment);
     if (!id) {
       std::fprintf(stderr, "%s\n", id.errorText().c_str());
       return 1;

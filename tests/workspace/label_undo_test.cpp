@@ -30,7 +30,7 @@ using Labels = std::vector<std::optional<ContactClass>>;  // one per step, empty
 // The label of every step of the group, read back from the database.
 Labels stepLabels(Workspace& ws, std::int64_t setId, std::int64_t runId) {
   Labels out(kSteps);
-  auto segments = ws.database().segments(setId, runId);
+  auto segments = ws.labelStore().segments(setId, runId);
   EXPECT_TRUE(segments.ok()) << (segments.ok() ? "" : segments.errorText());
   if (!segments) return out;
   for (const LabelSegment& s : segments.value()) {
@@ -79,10 +79,10 @@ struct Fixture {
     ws = std::move(opened.value());
     RunData run = testdata::makeLabelledRun(kSteps, 3);
     run.metadata = {{"format", "tactile-run 1"}, {"subject", "sim"}, {"dt", "0.1"}};
-    const storage::ImportOutcome out = ws->database().importRun(run, "undo_run");
+    const storage::ImportOutcome out = ws->runStore().importRun(run, "undo_run");
     EXPECT_EQ(out.status, storage::ImportStatus::Imported) << out.message;
     runId = out.runId;
-    auto set = ws->database().createLabelSet("hand");
+    auto set = ws->labelStore().create("hand");
     EXPECT_TRUE(set.ok()) << (set.ok() ? "" : set.errorText());
     if (set) setId = set.value();
   }
@@ -119,7 +119,7 @@ void moveStartBackOverNeighbour(std::int64_t newFirst, const Labels& wantAfter) 
   Workspace& ws = *f.ws;
   expectLabels(stepLabels(ws, f.setId, f.runId), before, "before the change");
 
-  auto current = ws.database().segment(f.setId, b);
+  auto current = ws.labelStore().segment(f.setId, b);
   ASSERT_TRUE(current.ok()) << current.errorText();
   LabelSegment moved = current.value();
   moved.firstStep = newFirst;

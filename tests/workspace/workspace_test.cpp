@@ -48,10 +48,10 @@ std::unique_ptr<Workspace> openWorkspace(const TempDir& dir) {
 std::int64_t addRun(Workspace& ws, const std::string& name, std::uint64_t seed,
                     const std::string& set = "truth") {
   const RunData run = labelledRun(seed);
-  const storage::ImportOutcome out = ws.database().importRun(run, name);
+  const storage::ImportOutcome out = ws.runStore().importRun(run, name);
   EXPECT_EQ(out.status, storage::ImportStatus::Imported) << out.message;
   if (!set.empty()) {
-    auto n = ws.database().autolabel(out.runId, set);
+    auto n = ws.labelStore().autolabel(out.runId, set);
     EXPECT_TRUE(n.ok()) << (n.ok() ? "" : n.errorText());
   }
   return out.runId;
@@ -78,7 +78,7 @@ std::vector<SegmentKey> keys(const std::vector<LabelSegment>& segments, SensorGr
 
 std::vector<SegmentKey> groupSegments(Workspace& ws, std::int64_t setId, std::int64_t runId,
                                       SensorGroup group) {
-  auto segments = ws.database().segments(setId, runId);
+  auto segments = ws.labelStore().segments(setId, runId);
   EXPECT_TRUE(segments.ok()) << (segments.ok() ? "" : segments.errorText());
   return segments.ok() ? keys(segments.value(), group) : std::vector<SegmentKey>{};
 }
@@ -115,7 +115,7 @@ TEST(WorkspaceLabels, EditsAreUndoneAndRedoneExactly) {
   ASSERT_TRUE(ws);
   const std::int64_t runId = addRun(*ws, "edit_run", 5, "edits");
   const std::int64_t other = addRun(*ws, "other_run", 6, "edits");
-  auto set = ws->database().findLabelSet("edits");
+  auto set = ws->labelStore().find("edits");
   ASSERT_TRUE(set.ok());
   const std::int64_t setId = set->id;
   const SensorGroup g = SensorGroup::Left;
@@ -123,7 +123,7 @@ TEST(WorkspaceLabels, EditsAreUndoneAndRedoneExactly) {
   const std::vector<SegmentKey> otherGroupBefore =
       groupSegments(*ws, setId, runId, SensorGroup::Right);
 
-  auto all = ws->database().segments(setId, runId);
+  auto all = ws->labelStore().segments(setId, runId);
   ASSERT_TRUE(all.ok());
   std::vector<LabelSegment> segs;
   for (const LabelSegment& s : all.value())
@@ -152,7 +152,7 @@ TEST(WorkspaceLabels, EditsAreUndoneAndRedoneExactly) {
   ASSERT_NE(added.segmentId, 0);
 
   // 2. Changing it: class and range (now reaching into the rest of the split segment).
-  auto current = ws->database().segment(setId, added.segmentId);
+  auto current = ws->labelStore().segment(setId, added.segmentId);
   ASSERT_TRUE(current.ok());
   LabelSegment changed = current.value();
   changed.lastStep = target.lastStep - 1;
@@ -162,7 +162,7 @@ TEST(WorkspaceLabels, EditsAreUndoneAndRedoneExactly) {
                 [&] { return ws->changeSegment(setId, added.segmentId, changed); });
 
   // 3. Removing one.
-  auto now = ws->database().segments(setId, runId);
+  auto now = ws->labelStore().segments(setId, runId);
   ASSERT_TRUE(now.ok());
   std::int64_t removeId = 0;
   for (const LabelSegment& s : now.value())
@@ -174,7 +174,7 @@ TEST(WorkspaceLabels, EditsAreUndoneAndRedoneExactly) {
   EXPECT_TRUE(removed.after.empty());
 
   // 4. A range over the boundary of two neighbouring segments trims both.
-  now = ws->database().segments(setId, runId);
+  now = ws->labelStore().segments(setId, runId);
   ASSERT_TRUE(now.ok());
   std::vector<LabelSegment> current2;
   for (const LabelSegment& s : now.value())
@@ -212,7 +212,7 @@ TEST(WorkspaceLabels, OverlappingEditsUndoneAsAStack) {
   auto ws = openWorkspace(dir);
   ASSERT_TRUE(ws);
   const std::int64_t runId = addRun(*ws, "stack_run", 8, "stack");
-  auto set = ws->database().findLabelSet("stack");
+  auto set = ws->labelStore().find("stack");
   ASSERT_TRUE(set.ok());
   const std::int64_t setId = set->id;
   const SensorGroup g = SensorGroup::Front;
@@ -280,15 +280,15 @@ std::vector<std::string> sortedNames(std::vector<std::string> v) {
 TEST(WorkspaceTrain, GroupWithTooFewRowsIsSkippedOthersTrain) {
   TrainFixture f;
   ASSERT_TRUE(f.ws);
-  storage::RunDatabase& db = f.ws->database();
-  auto truth = db.findLabelSet("truth");
+  workspace::Workspace& db = *f.ws;
+  auto truth = db.labelStore().find("truth");
   ASSERT_TRUE(truth.ok());
-  auto sparse = db.copyLabelSet(truth->id, "sparse");
+  auto sparse = db.labelStore().copy(truth->id, "sparse");
   ASSERT_TRUE(sparse.ok());
   // Group Left keeps only five labelled Wall steps of one run.
   const SensorGroup thin = SensorGroup::Left;
   for (const std::string& n : f.names) {
-    auto info = db.findRun(n);
+    auto info = db.runStore().find(n);
     ASSERT_TRUE(info.ok());
     std::vector<LabelSegment> keep;
     if (n == "run_a") {
@@ -306,7 +306,8 @@ TEST(WorkspaceTrain, GroupWithTooFewRowsIsSkippedOthersTrain) {
       keep.push_back(s);
     }
     ASSERT_TRUE(
-        db.replaceSegmentsInRange(sparse.value(), info->id, thin, 0, info->stepCount - 1, keep)
+        db.labelStore()
+            .replaceSegmentsInRange(sparse.value(), info->id, thin, 0, info->stepCount - 1, keep)
             .ok());
   }
   TrainRequest request;
@@ -412,9 +413,9 @@ TEST(WorkspaceTrain, AutomaticSplitHoldsOutEveryFourthRunByName) {
 
   // Two runs: at least one is held out (the last by name).
   for (const char* n : {"run_e", "run_a"}) {
-    auto info = f.ws->database().findRun(n);
+    auto info = f.ws->runStore().find(n);
     ASSERT_TRUE(info.ok());
-    ASSERT_TRUE(f.ws->database().autolabel(info->id, "pair").ok());
+    ASSERT_TRUE(f.ws->labelStore().autolabel(info->id, "pair").ok());
   }
   request.labelSet = "pair";
   auto two = f.ws->train(request);
@@ -498,7 +499,7 @@ TEST(WorkspaceTrain, StoredModelNamesItsProvenance) {
     for (const json& r : p[key]) {
       const std::string name = r["name"].get<std::string>();
       named.insert(name);
-      auto info = f.ws->database().findRun(name);
+      auto info = f.ws->runStore().find(name);
       ASSERT_TRUE(info.ok()) << name;
       EXPECT_EQ(r["steps"], info->stepCount);
       EXPECT_EQ(r["steps"], static_cast<std::int64_t>(kSteps));
@@ -587,9 +588,9 @@ TEST(WorkspaceTrain, BySceneScoresEachSceneWithoutIt) {
     RunData run = labelledRun(++seed);
     run.setMeta("scene", scene);
     const storage::ImportOutcome out =
-        ws->database().importRun(run, std::string(scene) + "_" + std::to_string(seed));
+        ws->runStore().importRun(run, std::string(scene) + "_" + std::to_string(seed));
     ASSERT_EQ(out.status, storage::ImportStatus::Imported) << out.message;
-    ASSERT_TRUE(ws->database().autolabel(out.runId, "truth").ok());
+    ASSERT_TRUE(ws->labelStore().autolabel(out.runId, "truth").ok());
   }
   TrainRequest request;
   request.labelSet = "truth";
@@ -669,14 +670,14 @@ TEST(WorkspaceTrain, ModelsDeletedByNameAllOrNone) {
     request.modelName = name;
     ASSERT_TRUE(f.ws->train(request).ok());
   }
-  storage::RunDatabase& db = f.ws->database();
-  const Status unknown = db.deleteModels({"m1", "nope"});
+  workspace::Workspace& db = *f.ws;
+  const Status unknown = db.modelStore().remove({"m1", "nope"});
   ASSERT_FALSE(unknown.ok());
   EXPECT_NE(unknown.errorText().find("'nope'"), std::string::npos) << unknown.errorText();
   auto models = f.ws->models();
   ASSERT_TRUE(models.ok());
   EXPECT_EQ(models->size(), 2u) << "a failed delete removed a model";
-  const Status twice = db.deleteModels({"m1", "m1"});
+  const Status twice = db.modelStore().remove({"m1", "m1"});
   EXPECT_TRUE(twice.ok()) << twice.errorText();
   models = f.ws->models();
   ASSERT_TRUE(models.ok());
@@ -719,10 +720,10 @@ TEST(WorkspaceSweep, CellsAreStoredAndReadBack) {
   auto outcome = f.ws->sweep(request, [&](const analysis::SweepCellResult&) {
     ++seen;
     if (sweepId == 0) {
-      auto list = reader.value()->listSweeps();
+      auto list = reader.value()->sweeps().list();
       if (list.ok() && !list->empty()) sweepId = list->back().id;
     }
-    auto cells = reader.value()->sweepCells(sweepId);
+    auto cells = reader.value()->sweeps().cells(sweepId);
     if (cells.ok() && cells->size() == seen) ++storedWhenSeen;
   });
   ASSERT_TRUE(outcome.ok()) << outcome.errorText();
@@ -733,7 +734,7 @@ TEST(WorkspaceSweep, CellsAreStoredAndReadBack) {
   EXPECT_EQ(storedWhenSeen, 8u);
   EXPECT_EQ(sweepId, outcome->sweepId);
 
-  auto cells = f.ws->database().sweepCells(outcome->sweepId);
+  auto cells = f.ws->sweepStore().cells(outcome->sweepId);
   ASSERT_TRUE(cells.ok());
   EXPECT_EQ(cells->size(), result.cells.size());
   auto sweeps = f.ws->sweeps();
@@ -774,11 +775,11 @@ TEST(WorkspaceSweep, CellsAreStoredAndReadBack) {
   EXPECT_EQ(loaded->data.size(), result.data.size());
 
   // Deleting it takes its cells along; an id given twice is one sweep.
-  ASSERT_TRUE(f.ws->database().deleteSweeps({outcome->sweepId, outcome->sweepId}).ok());
+  ASSERT_TRUE(f.ws->sweepStore().remove({outcome->sweepId, outcome->sweepId}).ok());
   sweeps = f.ws->sweeps();
   ASSERT_TRUE(sweeps.ok());
   EXPECT_TRUE(sweeps->empty());
-  cells = f.ws->database().sweepCells(outcome->sweepId);
+  cells = f.ws->sweepStore().cells(outcome->sweepId);
   ASSERT_TRUE(cells.ok());
   EXPECT_TRUE(cells->empty());
 }
@@ -824,10 +825,10 @@ TEST(WorkspaceSweep, CancelledSweepKeepsItsFinishedCells) {
   EXPECT_TRUE(result.cancelled);
   EXPECT_EQ(result.cells.size(), 3u);
   EXPECT_EQ(finished, 3u);
-  auto cells = f.ws->database().sweepCells(outcome->sweepId);
+  auto cells = f.ws->sweepStore().cells(outcome->sweepId);
   ASSERT_TRUE(cells.ok());
   EXPECT_EQ(cells->size(), 3u);
-  auto info = f.ws->database().sweepInfo(outcome->sweepId);
+  auto info = f.ws->sweepStore().info(outcome->sweepId);
   ASSERT_TRUE(info.ok());
   EXPECT_EQ(info->cellCount, 3);
   EXPECT_EQ(json::parse(info->configurationJson)["state"], "cancelled");
@@ -851,7 +852,7 @@ TEST(WorkspaceSweep, CancelledOnTwoThreadsStoresExactlyTheResultCells) {
   EXPECT_TRUE(outcome->result.cancelled);
   EXPECT_GE(outcome->result.cells.size(), 2u);
   EXPECT_LT(outcome->result.cells.size(), 12u);
-  auto cells = f.ws->database().sweepCells(outcome->sweepId);
+  auto cells = f.ws->sweepStore().cells(outcome->sweepId);
   ASSERT_TRUE(cells.ok());
   EXPECT_EQ(cells->size(), outcome->result.cells.size());
   EXPECT_EQ(cells->size(), finished);
@@ -860,7 +861,7 @@ TEST(WorkspaceSweep, CancelledOnTwoThreadsStoresExactlyTheResultCells) {
   auto none = f.ws->sweep(request, {}, [](std::size_t, std::size_t) { return false; });
   ASSERT_TRUE(none.ok()) << none.errorText();
   EXPECT_TRUE(none->result.cells.empty());
-  auto info = f.ws->database().sweepInfo(none->sweepId);
+  auto info = f.ws->sweepStore().info(none->sweepId);
   ASSERT_TRUE(info.ok());
   EXPECT_EQ(info->cellCount, 0);
   EXPECT_EQ(json::parse(info->configurationJson)["state"], "cancelled");
@@ -885,13 +886,13 @@ TEST(WorkspaceSweep, ASweepStoppedByAnErrorIsStoredAsFailedWithIt) {
       });
   ASSERT_FALSE(outcome.ok());
   EXPECT_NE(outcome.errorText().find("out of memory"), std::string::npos) << outcome.errorText();
-  auto sweeps = f.ws->database().listSweeps();
+  auto sweeps = f.ws->sweepStore().list();
   ASSERT_TRUE(sweeps.ok());
   ASSERT_EQ(sweeps->size(), 1u);
   const json stored = json::parse(sweeps->front().configurationJson);
   EXPECT_EQ(stored["state"], "failed");
   EXPECT_EQ(stored.value("error", ""), "out of memory");
-  auto cells = f.ws->database().sweepCells(sweeps->front().id);
+  auto cells = f.ws->sweepStore().cells(sweeps->front().id);
   ASSERT_TRUE(cells.ok());
   EXPECT_EQ(cells->size(), finished) << "the cells finished before the error are kept";
 }
@@ -996,25 +997,25 @@ TEST(WorkspaceRuns, SameStemUnderTwoPrefixesKeepsItsOwnLabels) {
   ASSERT_TRUE(writeRunCsv(labelledRun(2), dir / "b" / "run_0000.csv").ok());
   auto ws = openWorkspace(dir);
   ASSERT_TRUE(ws);
-  storage::RunDatabase& db = ws->database();
+  workspace::Workspace& db = *ws;
   for (const char* prefix : {"a", "b"}) {
     storage::ImportOptions options;
     options.namePrefix = prefix;
-    const auto out = db.importFiles({dir / prefix / "run_0000.csv"}, options);
+    const auto out = db.runStore().importFiles({dir / prefix / "run_0000.csv"}, options);
     ASSERT_EQ(out.size(), 1u);
     ASSERT_EQ(out[0].status, storage::ImportStatus::Imported) << out[0].message;
     EXPECT_EQ(out[0].runName, std::string(prefix) + "_run_0000");
   }
-  auto a = db.findRun("a_run_0000");
-  auto b = db.findRun("b_run_0000");
+  auto a = db.runStore().find("a_run_0000");
+  auto b = db.runStore().find("b_run_0000");
   ASSERT_TRUE(a.ok() && b.ok());
   ASSERT_NE(a->id, b->id);
 
   // A set on one run does not apply to the other.
-  ASSERT_TRUE(db.autolabel(a->id, "only-a").ok());
-  auto onlyA = db.findLabelSet("only-a");
+  ASSERT_TRUE(db.labelStore().autolabel(a->id, "only-a").ok());
+  auto onlyA = db.labelStore().find("only-a");
   ASSERT_TRUE(onlyA.ok());
-  auto onB = db.segments(onlyA->id, b->id);
+  auto onB = db.labelStore().segments(onlyA->id, b->id);
   ASSERT_TRUE(onB.ok());
   EXPECT_TRUE(onB->empty());
   auto catalog = ws->labelSets();
@@ -1039,7 +1040,7 @@ TEST(WorkspaceRuns, SameStemUnderTwoPrefixesKeepsItsOwnLabels) {
       << unlabelled.errorText();
 
   // Both labelled into one set: an edit on a's segments leaves b's as they were.
-  ASSERT_TRUE(db.autolabel(b->id, "only-a").ok());
+  ASSERT_TRUE(db.labelStore().autolabel(b->id, "only-a").ok());
   const std::vector<SegmentKey> bBefore = groupSegments(*ws, onlyA->id, b->id, SensorGroup::Back);
   const std::vector<SegmentKey> aBefore = groupSegments(*ws, onlyA->id, a->id, SensorGroup::Back);
   LabelSegment s;

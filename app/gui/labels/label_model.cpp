@@ -38,28 +38,28 @@ Status LabelModel::setCurrentSet(std::int64_t id, const std::string& name) {
 
 Status LabelModel::openSet(const std::string& name) {
   if (workspace_ == nullptr) return Error("no database is open");
-  auto set = workspace_->database().findLabelSet(name);
+  auto set = workspace_->labelStore().find(name);
   if (!set) return set.error();
   return setCurrentSet(set->id, set->name);
 }
 
 Status LabelModel::createSet(const std::string& name) {
   if (workspace_ == nullptr) return Error("no database is open");
-  auto id = workspace_->database().createLabelSet(name, annotator_);
+  auto id = workspace_->labelStore().create(name, annotator_);
   if (!id) return id.error();
   return setCurrentSet(id.value(), name);
 }
 
 Status LabelModel::saveSetAs(const std::string& name) {
   if (workspace_ == nullptr || setId_ == 0) return Error("no label set is open");
-  auto id = workspace_->database().copyLabelSet(setId_, name);
+  auto id = workspace_->labelStore().copy(setId_, name);
   if (!id) return id.error();
   return setCurrentSet(id.value(), name);
 }
 
 Result<std::int64_t> LabelModel::importFile(const std::string& path) {
   if (workspace_ == nullptr || setId_ == 0) return Error("no label set is open");
-  auto read = workspace_->database().importLabels(setName_, path);
+  auto read = workspace_->labelStore().importFile(setName_, path);
   if (!read) return read.error();
   // Imported segments bypass the undo stack; its records of older edits would no longer restore
   // what is stored, so the history ends here.
@@ -70,7 +70,7 @@ Result<std::int64_t> LabelModel::importFile(const std::string& path) {
 
 Status LabelModel::exportFile(const std::string& path) {
   if (workspace_ == nullptr || setId_ == 0) return Error("no label set is open");
-  return workspace_->database().exportLabels(setName_, path);
+  return workspace_->labelStore().exportFile(setName_, path);
 }
 
 void LabelModel::setRun(std::int64_t runId, const std::string& runName, std::int64_t stepCount) {
@@ -203,7 +203,7 @@ Status LabelModel::reload() {
   for (auto& group : segments_)
     group.clear();
   if (workspace_ != nullptr && setId_ != 0 && runId_ != 0) {
-    auto all = workspace_->database().segments(setId_, runId_);
+    auto all = workspace_->labelStore().segments(setId_, runId_);
     if (!all) {
       emit labelsChanged();
       return all.error();

@@ -266,7 +266,7 @@ void LabelPanelView::refreshSets() {
   sets_->clear();
   workspace::Workspace* ws = labels_->workspace();
   if (ws != nullptr) {
-    auto sets = ws->database().listLabelSets();
+    auto sets = ws->labelStore().list();
     if (sets) {
       for (const auto& s : sets.value())
         sets_->addItem(QString::fromStdString(s.name));
@@ -370,8 +370,8 @@ void LabelPanelView::refreshAgreement() {
     rows = workspace::truthAgreement(session_->track(), all);
   } else if (session_->isOpen() && ws != nullptr) {
     // Rows are the other set, columns this one.
-    auto set = ws->database().findLabelSet(other.toStdString());
-    auto theirs = set ? ws->database().segments(set->id, session_->info().id)
+    auto set = ws->labelStore().find(other.toStdString());
+    auto theirs = set ? ws->labelStore().segments(set->id, session_->info().id)
                       : Result<std::vector<storage::LabelSegment>>(set.error());
     if (theirs) rows = workspace::labelAgreement(session_->stepCount(), theirs.value(), all);
   }

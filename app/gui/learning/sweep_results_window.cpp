@@ -41,7 +41,7 @@ SweepResultsWindow::SweepResultsWindow(workspace::Workspace& workspace, QString 
 SweepResultsWindow::~SweepResultsWindow() = default;
 
 Status SweepResultsWindow::showSweep(std::int64_t sweepId) {
-  auto info = workspace_.database().sweepInfo(sweepId);
+  auto info = workspace_.sweepStore().info(sweepId);
   if (!info) return info.error();
   auto sweep = workspace_.loadSweep(sweepId);
   if (!sweep) return sweep.error();

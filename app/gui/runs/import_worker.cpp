@@ -81,7 +81,7 @@ ImportSummary importRunFiles(const QString& databasePath, const QStringList& fil
   storage::ImportOptions options;
   options.sceneResolver = sim::proceduralSceneJson;
   summary.outcomes =
-      db.value()->importFiles(paths, options, bridge ? bridge->callback() : ProgressFn{});
+      db.value()->runs().importFiles(paths, options, bridge ? bridge->callback() : ProgressFn{});
   return summary;
 }
 

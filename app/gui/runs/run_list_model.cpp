@@ -16,7 +16,7 @@ Status RunListModel::reload(workspace::Workspace* workspace, std::int64_t labelS
   coverage_.clear();
   Status status = Status::success();
   if (workspace != nullptr) {
-    auto runs = workspace->database().listRuns();
+    auto runs = workspace->runStore().list();
     if (runs) {
       runs_ = std::move(runs.value());
       std::sort(

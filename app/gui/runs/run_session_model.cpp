@@ -17,16 +17,16 @@ void RunSession::setWorkspace(workspace::Workspace* workspace) {
 
 Status RunSession::open(const std::string& runName) {
   if (workspace_ == nullptr) return Error("no database is open");
-  storage::RunDatabase& db = workspace_->database();
-  auto info = db.findRun(runName);
+  storage::RunStore runs = workspace_->runStore();
+  auto info = runs.find(runName);
   if (!info) return info.error();
-  auto track = db.loadTrack(info->id);
+  auto track = runs.loadTrack(info->id);
   if (!track) return track.error();
   // The metadata (start, goal) comes with an empty window.
-  auto head = db.loadWindow(info->id, 0, 0);
+  auto head = runs.loadWindow(info->id, 0, 0);
   if (!head) return head.error();
   std::optional<sim::Scene> scene;
-  auto sceneText = db.sceneJson(info->id);
+  auto sceneText = runs.sceneJson(info->id);
   if (!sceneText) return sceneText.error();
   if (sceneText.value()) {
     auto parsed = sim::parseSceneJson(*sceneText.value(), info->scene);
@@ -78,7 +78,7 @@ void RunSession::loadSensors() {
   sensors_.fill(0.0);
   if (!open_ || workspace_ == nullptr || stepCount() == 0) return;
   // One indexed row: a few microseconds, so nothing is cached.
-  auto window = workspace_->database().loadWindow(info_.id, step_, 1);
+  auto window = workspace_->runStore().loadWindow(info_.id, step_, 1);
   if (!window) {
     emit errorOccurred(QString::fromStdString(window.errorText()));
     return;
@@ -90,7 +90,7 @@ void RunSession::loadSensors() {
 Result<storage::RunSummary> RunSession::summary(std::int64_t first, std::int64_t last,
                                                 int buckets) {
   if (!open_ || workspace_ == nullptr) return Error("no run is open");
-  return workspace_->database().loadSummary(info_.id, first, last, buckets);
+  return workspace_->runStore().loadSummary(info_.id, first, last, buckets);
 }
 
 void RunSession::setSelectedGroup(SensorGroup group) {

@@ -75,7 +75,7 @@ SimSession::~SimSession() {
 
 void SimSession::discardEmptyRun() {
   if (!recording_ || workspace_ == nullptr || recording_->storedSteps() != 0) return;
-  (void)workspace_->database().deleteRun(recording_->runId());
+  (void)workspace_->runStore().remove(recording_->runId());
   recording_.reset();
 }
 
