@@ -1,0 +1,203 @@
+#include "mcap/compression.h"
+
+#include <lz4frame.h>
+#include <zstd.h>
+
+#include <algorithm>
+#include <stdexcept>
+
+namespace tactile::mcap {
+
+std::optional<Compression> parseCompression(std::string_view name) {
+  if (name.empty()) return Compression::None;
+  if (name == "zstd") return Compression::Zstd;
+  if (name == "lz4") return Compression::Lz4;
+  return std::nullopt;
+}
+
+std::string_view compressionName(Compression c) {
+  switch (c) {
+    case Compression::Zstd:
+      return "zstd";
+    case Compression::Lz4:
+      return "lz4";
+    case Compression::None:
+      break;
+  }
+  return "";
+}
+
+struct Compressor::State {
+  ZSTD_CCtx* zstd = nullptr;
+  ~State() { ZSTD_freeCCtx(zstd); }
+};
+
+Compressor::Compressor(Compression c, int level)
+    : kind_(c), level_(level), state_(std::make_unique<State>()) {
+  if (c == Compression::Zstd) {
+    state_->zstd = ZSTD_createCCtx();
+    if (state_->zstd == nullptr) throw std::bad_alloc();
+  }
+}
+
+Compressor::~Compressor() = default;
+
+void Compressor::compress(std::string_view in, std::string& out) {
+  switch (kind_) {
+    case Compression::None:
+      out.assign(in);
+      return;
+    case Compression::Zstd: {
+      out.resize(ZSTD_compressBound(in.size()));
+      const std::size_t n =
+          ZSTD_compressCCtx(state_->zstd, out.data(), out.size(), in.data(), in.size(), level_);
+      if (ZSTD_isError(n) != 0U)
+        throw std::runtime_error(std::string("zstd: ") + ZSTD_getErrorName(n));
+      out.resize(n);
+      return;
+    }
+    case Compression::Lz4: {
+      LZ4F_preferences_t prefs{};
+      prefs.frameInfo.contentSize = in.size();
+      out.resize(LZ4F_compressFrameBound(in.size(), &prefs));
+      const std::size_t n =
+          LZ4F_compressFrame(out.data(), out.size(), in.data(), in.size(), &prefs);
+      if (LZ4F_isError(n) != 0U)
+        throw std::runtime_error(std::string("lz4: ") + LZ4F_getErrorName(n));
+      out.resize(n);
+      return;
+    }
+  }
+}
+
+namespace {
+
+// The next output size: double what is there (at least 64 KiB), never past `expected`.
+std::size_t grown(std::size_t have, std::uint64_t expected) {
+  const std::uint64_t want =
+      std::max<std::uint64_t>(std::uint64_t{64} << 10, 2 * std::uint64_t{have});
+  return static_cast<std::size_t>(std::min(want, expected));
+}
+
+std::string sizeMismatch(std::uint64_t got, std::uint64_t expected, bool more) {
+  return "the chunk's records decompress to " + std::string(more ? "more than " : "") +
+         std::to_string(got) + " bytes, its uncompressed_size says " + std::to_string(expected);
+}
+
+std::optional<std::string> decompressZstd(std::string_view in, std::uint64_t expected,
+                                          std::string& out) {
+  std::unique_ptr<ZSTD_DCtx, std::size_t (*)(ZSTD_DCtx*)> ctx(ZSTD_createDCtx(), ZSTD_freeDCtx);
+  if (!ctx) throw std::bad_alloc();
+  out.clear();
+  // Sized from what the compressed bytes can hold at most, not from the claim alone.
+  out.resize(grown(std::min<std::uint64_t>(expected, 16 * std::uint64_t{in.size()}), expected));
+  ZSTD_inBuffer src{in.data(), in.size(), 0};
+  std::size_t produced = 0;
+  while (true) {
+    ZSTD_outBuffer dst{out.data(), out.size(), produced};
+    const std::size_t rc = ZSTD_decompressStream(ctx.get(), &dst, &src);
+    if (ZSTD_isError(rc) != 0U) return std::string("zstd: ") + ZSTD_getErrorName(rc);
+    produced = dst.pos;
+    if (rc == 0 && src.pos == in.size()) break;  // a frame ended with the input
+    if (produced == out.size()) {
+      if (produced == expected) {
+        // Full: anything still to come is too much.
+        char probe = 0;
+        ZSTD_outBuffer extra{&probe, 1, 0};
+        const std::size_t more = ZSTD_decompressStream(ctx.get(), &extra, &src);
+        if (ZSTD_isError(more) != 0U) return std::string("zstd: ") + ZSTD_getErrorName(more);
+        if (extra.pos > 0) return sizeMismatch(expected, expected, true);
+        if (more == 0 && src.pos == in.size()) break;
+        if (src.pos == in.size())
+          return std::string("zstd: the compressed data ends inside a frame");
+        continue;
+      }
+      out.resize(grown(out.size(), expected));
+    } else if (src.pos == in.size()) {
+      if (rc != 0) return std::string("zstd: the compressed data ends inside a frame");
+      break;
+    }
+  }
+  if (produced != expected) return sizeMismatch(produced, expected, false);
+  out.resize(produced);
+  return std::nullopt;
+}
+
+std::optional<std::string> decompressLz4(std::string_view in, std::uint64_t expected,
+                                         std::string& out) {
+  LZ4F_dctx* raw = nullptr;
+  if (LZ4F_isError(LZ4F_createDecompressionContext(&raw, LZ4F_VERSION)) != 0U)
+    throw std::bad_alloc();
+  std::unique_ptr<LZ4F_dctx, LZ4F_errorCode_t (*)(LZ4F_dctx*)> ctx(raw,
+                                                                   LZ4F_freeDecompressionContext);
+  out.clear();
+  out.resize(grown(std::min<std::uint64_t>(expected, 16 * std::uint64_t{in.size()}), expected));
+  std::size_t consumed = 0;
+  std::size_t produced = 0;
+  std::size_t hint = 1;
+  while (consumed < in.size()) {
+    if (produced == out.size()) {
+      if (produced == expected) return sizeMismatch(expected, expected, true);
+      out.resize(grown(out.size(), expected));
+    }
+    std::size_t dstSize = out.size() - produced;
+    std::size_t srcSize = in.size() - consumed;
+    hint = LZ4F_decompress(ctx.get(), out.data() + produced, &dstSize, in.data() + consumed,
+                           &srcSize, nullptr);
+    if (LZ4F_isError(hint) != 0U) return std::string("lz4: ") + LZ4F_getErrorName(hint);
+    consumed += srcSize;
+    produced += dstSize;
+    if (srcSize == 0 && dstSize == 0 && produced < out.size()) {
+      return std::string("lz4: the decoder made no progress");
+    }
+    if (hint == 0 && consumed < in.size()) {
+      // A frame ended; another may follow (LZ4F resets itself after a frame).
+      continue;
+    }
+  }
+  // Output the decoder still holds (it may have filled the buffer exactly).
+  while (hint != 0) {
+    if (produced == out.size()) {
+      if (produced == expected) {
+        char probe = 0;
+        std::size_t one = 1;
+        std::size_t none = 0;
+        hint = LZ4F_decompress(ctx.get(), &probe, &one, nullptr, &none, nullptr);
+        if (LZ4F_isError(hint) != 0U) return std::string("lz4: ") + LZ4F_getErrorName(hint);
+        if (one > 0) return sizeMismatch(expected, expected, true);
+        if (hint != 0) return std::string("lz4: the compressed data ends inside a frame");
+        break;
+      }
+      out.resize(grown(out.size(), expected));
+    }
+    std::size_t dstSize = out.size() - produced;
+    std::size_t srcSize = 0;
+    hint = LZ4F_decompress(ctx.get(), out.data() + produced, &dstSize, nullptr, &srcSize, nullptr);
+    if (LZ4F_isError(hint) != 0U) return std::string("lz4: ") + LZ4F_getErrorName(hint);
+    produced += dstSize;
+    if (dstSize == 0 && hint != 0)
+      return std::string("lz4: the compressed data ends inside a frame");
+  }
+  if (produced != expected) return sizeMismatch(produced, expected, false);
+  out.resize(produced);
+  return std::nullopt;
+}
+
+}  // namespace
+
+std::optional<std::string> decompress(Compression c, std::string_view in,
+                                      std::uint64_t expectedSize, std::string& out) {
+  switch (c) {
+    case Compression::None:
+      if (in.size() != expectedSize) return sizeMismatch(in.size(), expectedSize, false);
+      out.assign(in);
+      return std::nullopt;
+    case Compression::Zstd:
+      return decompressZstd(in, expectedSize, out);
+    case Compression::Lz4:
+      return decompressLz4(in, expectedSize, out);
+  }
+  return std::string("unknown compression");
+}
+
+}  // namespace tactile::mcap

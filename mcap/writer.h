@@ -1,0 +1,103 @@
+// Writing an MCAP file in memory: Schema, Channel and Message records in chunks (zstd, lz4 or
+// none) with a Message Index after each chunk, Metadata and Attachment records, and a summary
+// (copies of the Schema and Channel records, Statistics, Chunk Indexes, Metadata and Attachment
+// Indexes, Summary Offsets), with every CRC filled in.
+#pragma once
+
+#include <cstdint>
+#include <map>
+#include <memory>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "mcap/compression.h"
+#include "mcap/records.h"
+
+namespace tactile::mcap {
+
+struct WriterOptions {
+  std::string profile;
+  std::string library = "tactile";
+  Compression compression = Compression::Zstd;
+  int zstdLevel = 1;
+  // A chunk is closed once its uncompressed records reach this size.
+  std::size_t chunkBytes = std::size_t{1} << 20;
+  // false: messages go straight into the data section, with no chunks and no indexes.
+  bool chunked = true;
+  // false: no summary section (the Footer says 0 for it).
+  bool summary = true;
+};
+
+class Writer {
+ public:
+  explicit Writer(WriterOptions options = {});
+  ~Writer();
+  Writer(const Writer&) = delete;
+  Writer& operator=(const Writer&) = delete;
+
+  // Ids are given out from 1 in the order of the calls.
+  std::uint16_t addSchema(std::string_view name, std::string_view encoding, std::string_view data);
+  std::uint16_t addChannel(std::uint16_t schemaId, std::string_view topic,
+                           std::string_view messageEncoding, const KeyValues& metadata = {});
+  void addMessage(std::uint16_t channelId, std::uint32_t sequence, std::uint64_t logTime,
+                  std::uint64_t publishTime, std::string_view data);
+  // Writes a message whose data the caller builds in place: `fill` appends the message's bytes
+  // to the string it is given (saves a copy per message).
+  template <class Fill>
+  void addMessageWith(std::uint16_t channelId, std::uint32_t sequence, std::uint64_t logTime,
+                      std::uint64_t publishTime, Fill&& fill) {
+    std::string& out = beginMessage(channelId, sequence, logTime, publishTime);
+    fill(out);
+    endMessage();
+  }
+  void addMetadata(std::string_view name, const KeyValues& entries);
+  void addAttachment(std::string_view name, std::string_view mediaType, std::uint64_t logTime,
+                     std::string_view data);
+
+  // Closes the file and returns its bytes; the writer is then empty.
+  std::string finish();
+
+ private:
+  std::string& beginMessage(std::uint16_t channelId, std::uint32_t sequence, std::uint64_t logTime,
+                            std::uint64_t publishTime);
+  void endMessage();
+  void flushChunk();
+  // Where records go now: the open chunk, or the file itself.
+  std::string& target() { return options_.chunked ? chunk_ : file_; }
+
+  WriterOptions options_;
+  std::unique_ptr<Compressor> compressor_;
+  std::string file_;
+  std::string chunk_;
+  std::string compressed_;
+  std::size_t messageStart_ = 0;
+  std::uint16_t messageChannel_ = 0;
+  std::uint64_t messageTime_ = 0;
+  std::vector<Schema> schemas_;
+  std::vector<Channel> channels_;
+  std::vector<ChunkIndex> chunkIndexes_;
+  struct MetadataEntry {
+    std::uint64_t offset, length;
+    std::string name;
+  };
+  std::vector<MetadataEntry> metadataIndexes_;
+  struct AttachmentEntry {
+    std::uint64_t offset, length, logTime, dataSize;
+    std::string name, mediaType;
+  };
+  std::vector<AttachmentEntry> attachmentIndexes_;
+  // The open chunk's message index: per channel, (log time, offset in the chunk's records).
+  std::vector<std::vector<std::pair<std::uint64_t, std::uint64_t>>> chunkIndex_;
+  std::vector<std::uint16_t> chunkChannels_;
+  std::uint64_t chunkStart_ = 0;
+  std::uint64_t chunkEnd_ = 0;
+  std::uint64_t chunkMessages_ = 0;
+  std::uint64_t messageCount_ = 0;
+  std::uint64_t startTime_ = 0;
+  std::uint64_t endTime_ = 0;
+  std::vector<std::uint64_t> channelCounts_;
+  std::uint32_t chunkCount_ = 0;
+};
+
+}  // namespace tactile::mcap

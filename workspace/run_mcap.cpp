@@ -1,0 +1,187 @@
+#include "workspace/run_mcap.h"
+
+#include <fstream>
+
+#include "base/file_text.h"
+#include "base/text_rules.h"
+#include "mcap/ros2_bag.h"
+#include "mcap/run_mcap.h"
+#include "run/run_csv.h"
+#include "workspace/workspace.h"
+
+namespace tactile::workspace {
+
+namespace {
+
+// A label set's segments on the run as per-step classes and annotators.
+Result<mcap::LabelTrack> labelTrack(storage::RunDatabase& db, const std::string& set,
+                                    std::int64_t runId, std::size_t steps) {
+  auto info = db.findLabelSet(set);
+  if (!info) return info.error();
+  auto segments = db.segments(info->id, runId);
+  if (!segments) return segments.error();
+  mcap::LabelTrack track;
+  track.set = set;
+  track.classes.assign(steps * kGroupCount, -1);
+  track.annotator.assign(steps * kGroupCount, 0);
+  track.annotators.push_back("");
+  for (const storage::LabelSegment& s : segments.value()) {
+    std::uint16_t a = 0;
+    const std::string& who = s.annotator.empty() ? info->annotator : s.annotator;
+    const auto it = std::find(track.annotators.begin(), track.annotators.end(), who);
+    if (it == track.annotators.end()) {
+      if (track.annotators.size() >= 65535)
+        return Error("label set '" + set + "' has too many annotators");
+      track.annotators.push_back(who);
+      a = static_cast<std::uint16_t>(track.annotators.size() - 1);
+    } else {
+      a = static_cast<std::uint16_t>(it - track.annotators.begin());
+    }
+    const auto last = std::min<std::int64_t>(s.lastStep, static_cast<std::int64_t>(steps) - 1);
+    for (std::int64_t k = std::max<std::int64_t>(s.firstStep, 0); k <= last; ++k) {
+      const std::size_t i =
+          static_cast<std::size_t>(k) * kGroupCount + static_cast<std::size_t>(groupIndex(s.group));
+      track.classes[i] = static_cast<std::int8_t>(s.cls);
+      track.annotator[i] = a;
+    }
+  }
+  return track;
+}
+
+}  // namespace
+
+Result<McapExportReport> exportRunMcap(Workspace& workspace, const McapExportRequest& request) {
+  storage::RunDatabase& db = workspace.database();
+  if (Status writable = checkWritable(request.out); !writable) return writable.error();
+  auto info = db.findRun(request.run);
+  if (!info) return info.error();
+  auto run = db.loadRun(info->id);
+  if (!run) return run.error();
+  McapExportReport report;
+  report.run = info->name;
+  report.steps = static_cast<std::int64_t>(run->stepCount());
+  mcap::RunExport what;
+  what.run = &run.value();
+  what.name = info->name;
+  what.library = "tactile " + std::string(programVersion());
+  auto scene = db.sceneJson(info->id);
+  if (!scene) return scene.error();
+  what.sceneJson = scene.value();
+  if (!what.sceneJson && !info->scene.empty()) {
+    report.warnings.push_back("run '" + info->name + "': scene '" + info->scene +
+                              "' is not stored; the export has no /scene");
+  }
+  for (const std::string& set : request.labelSets) {
+    auto track = labelTrack(db, set, info->id, run->stepCount());
+    if (!track) return track.error();
+    what.labels.push_back(std::move(track.value()));
+  }
+  if (!request.model.empty()) {
+    analysis::ClassifyOptions options;
+    options.allDecisions = true;
+    auto classified = workspace.classify(request.model, info->name, options);
+    if (!classified) return classified.error();
+    mcap::DecisionTrack track;
+    track.model = request.model;
+    track.classes.assign(run->stepCount() * kGroupCount, -1);
+    bool allOnline = true;
+    for (int g = 0; g < kGroupCount; ++g) {
+      const analysis::GroupClassification& gc =
+          classified->result.groups[static_cast<std::size_t>(g)];
+      const bool online = !gc.online.empty();
+      allOnline = allOnline && (online || gc.model == nullptr);
+      const analysis::Decisions& decisions = online ? gc.online : gc.decided;
+      for (std::size_t k = 0; k < run->stepCount(); ++k) {
+        const std::string name = gc.nameOf(decisions, k);
+        if (const auto cls = parseContactClass(name)) {
+          track.classes[k * kGroupCount + static_cast<std::size_t>(g)] =
+              static_cast<std::int8_t>(*cls);
+        }
+      }
+    }
+    track.decision = allOnline ? "online" : "online where the model has one, else its default";
+    if (!allOnline) {
+      report.warnings.push_back("model '" + request.model +
+                                "': a group has no online decision (no transitions); its default "
+                                "decision is exported");
+    }
+    what.decisions.push_back(std::move(track));
+  }
+  std::string bytes;
+  try {
+    bytes = mcap::writeRunMcap(what, request.writer);
+  } catch (const std::bad_alloc&) {
+    return Error(request.out.string(),
+                 "out of memory: the run is too large for this machine's memory");
+  }
+  report.bytes = bytes.size();
+  report.topics = {"/tactile", "/robot/state", "/robot/pose", "/tf"};
+  if (run->hasTruth()) report.topics.push_back("/truth");
+  for (const std::string& set : request.labelSets)
+    report.topics.push_back("/labels/" + set);
+  if (!request.model.empty()) report.topics.push_back("/decisions/" + request.model);
+  if (!run->extraColumns.empty()) report.topics.push_back("/extra");
+  if (what.sceneJson) report.topics.push_back("/scene");
+  if (Status written = writeFileAtomically(request.out, bytes); !written) return written.error();
+  return report;
+}
+
+storage::ImportOutcome importMcap(storage::RunDatabase& db, const McapImportRequest& request) {
+  storage::ImportOutcome failed;
+  failed.file = request.file.string();
+  failed.status = storage::ImportStatus::Failed;
+  const std::string fileName = request.file.string();
+  FileText text;
+  if (Status loaded = text.load(request.file); !loaded) {
+    failed.message = loaded.errorText();
+    return failed;
+  }
+  const std::string name =
+      request.name.empty() ? nameFromFileStem(request.file.stem().string()) : request.name;
+  if (request.mapping) {
+    auto mappingText = readFileText(*request.mapping);
+    if (!mappingText) {
+      failed.message = mappingText.errorText();
+      return failed;
+    }
+    auto mapping = mcap::parseMapping(mappingText.value(), request.mapping->string());
+    if (!mapping) {
+      failed.message = mapping.errorText();
+      return failed;
+    }
+    auto bag = mcap::readRos2Bag(text.view(), fileName, mapping.value());
+    if (!bag) {
+      failed.message = bag.errorText();
+      return failed;
+    }
+    if (Status ok = checkName(name, "run"); !ok) {
+      failed.message = fileName + ": " + ok.errorText() + " (give a name with --name)";
+      return failed;
+    }
+    storage::ImportOutcome outcome = db.importRun(bag->run, name, fileName, request.sceneResolver);
+    for (std::string& w : bag->warnings)
+      outcome.warnings.insert(outcome.warnings.begin(), std::move(w));
+    return outcome;
+  }
+  auto own = mcap::readRunMcap(text.view(), fileName);
+  if (!own) {
+    failed.message = own.errorText();
+    return failed;
+  }
+  // Through the run-file reader: the same checks, and the same stored run, as the run file.
+  const std::string csv = formatRunCsv(own->run);
+  storage::ImportOptions options;
+  options.name = request.name;
+  options.sceneResolver = request.sceneResolver;
+  storage::ImportOutcome outcome = db.importText(csv, fileName, options);
+  outcome.file = fileName;
+  return outcome;
+}
+
+bool isRunMcapFile(const std::filesystem::path& file) {
+  FileText text;
+  if (!text.load(file)) return false;
+  return mcap::looksLikeRunMcap(text.view());
+}
+
+}  // namespace tactile::workspace
