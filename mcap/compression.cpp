@@ -29,6 +29,8 @@ std::string_view compressionName(Compression c) {
 
 struct Compressor::State {
   ZSTD_CCtx* zstd = nullptr;
+  std::unique_ptr<char[]> buffer;
+  std::size_t capacity = 0;
   ~State() { ZSTD_freeCCtx(zstd); }
 };
 
@@ -42,32 +44,32 @@ Compressor::Compressor(Compression c, int level)
 
 Compressor::~Compressor() = default;
 
-void Compressor::compress(std::string_view in, std::string& out) {
-  switch (kind_) {
-    case Compression::None:
-      out.assign(in);
-      return;
-    case Compression::Zstd: {
-      out.resize(ZSTD_compressBound(in.size()));
-      const std::size_t n =
-          ZSTD_compressCCtx(state_->zstd, out.data(), out.size(), in.data(), in.size(), level_);
-      if (ZSTD_isError(n) != 0U)
-        throw std::runtime_error(std::string("zstd: ") + ZSTD_getErrorName(n));
-      out.resize(n);
-      return;
+std::string_view Compressor::compress(std::string_view in) {
+  if (kind_ == Compression::None) return in;
+  std::size_t bound = 0;
+  LZ4F_preferences_t prefs{};
+  prefs.frameInfo.contentSize = in.size();
+  bound = kind_ == Compression::Zstd ? ZSTD_compressBound(in.size())
+                                     : LZ4F_compressFrameBound(in.size(), &prefs);
+  if (bound > state_->capacity) {
+    // Grown once to the largest bound needed, never zero-filled.
+    state_->buffer = std::make_unique_for_overwrite<char[]>(bound);
+    state_->capacity = bound;
+  }
+  char* out = state_->buffer.get();
+  std::size_t n = 0;
+  if (kind_ == Compression::Zstd) {
+    n = ZSTD_compressCCtx(state_->zstd, out, bound, in.data(), in.size(), level_);
+    if (ZSTD_isError(n) != 0U) {
+      throw std::runtime_error(std::string("zstd: ") + ZSTD_getErrorName(n));
     }
-    case Compression::Lz4: {
-      LZ4F_preferences_t prefs{};
-      prefs.frameInfo.contentSize = in.size();
-      out.resize(LZ4F_compressFrameBound(in.size(), &prefs));
-      const std::size_t n =
-          LZ4F_compressFrame(out.data(), out.size(), in.data(), in.size(), &prefs);
-      if (LZ4F_isError(n) != 0U)
-        throw std::runtime_error(std::string("lz4: ") + LZ4F_getErrorName(n));
-      out.resize(n);
-      return;
+  } else {
+    n = LZ4F_compressFrame(out, bound, in.data(), in.size(), &prefs);
+    if (LZ4F_isError(n) != 0U) {
+      throw std::runtime_error(std::string("lz4: ") + LZ4F_getErrorName(n));
     }
   }
+  return {out, n};
 }
 
 namespace {

@@ -27,8 +27,8 @@ class Compressor {
   Compressor& operator=(const Compressor&) = delete;
 
   Compression kind() const { return kind_; }
-  // Replaces `out` with the compressed `in`.
-  void compress(std::string_view in, std::string& out);
+  // The compressed `in`, valid until the next call.
+  std::string_view compress(std::string_view in);
 
  private:
   Compression kind_;

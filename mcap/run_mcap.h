@@ -4,9 +4,10 @@
 // tactile readings by group (/tactile), pose, command and blocked flag (/robot/state), the truth
 // classes (/truth), each label set (/labels/SET), a model's online decisions
 // (/decisions/MODEL), the x_ columns (/extra); the pose also as foxglove.PoseInFrame
-// (/robot/pose) and foxglove.FrameTransform (/tf), the scene's walls as one foxglove.SceneUpdate
-// (/scene). The run's metadata lines are the Metadata record `tactile.run`, in order; the
-// record `tactile.export` says what the file is. Log times are step * dt.
+// (/robot/pose, in metres, rounded to the micrometre) so the 3D panel draws the route, and the
+// scene's walls as one foxglove.SceneUpdate (/scene). The run's metadata lines are the Metadata
+// record `tactile.run`, in order; the record `tactile.export` says what the file is. Log times are
+// step * dt.
 //
 // Import of such a file gives back the run value for value (numbers are written as the shortest
 // text that reads back to the same double), so export -> import -> export-run reproduces the
@@ -28,7 +29,7 @@ namespace tactile::mcap {
 inline constexpr std::string_view kRunMcapFormat = "tactile-mcap 1";
 // Log times of a run without `dt` metadata use this step length (seconds).
 inline constexpr double kDefaultExportDt = 0.1;
-// The Foxglove topics (/robot/pose, /tf, /scene) are in metres; scene units are read as mm.
+// The Foxglove topics (/robot/pose, /scene) are in metres; scene units are read as mm.
 inline constexpr double kSceneUnitsPerMetre = 1000.0;
 
 // One label set's classes on the run: classes[step * kGroupCount + group] is a ContactClass or

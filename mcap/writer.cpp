@@ -63,6 +63,7 @@ Writer::Writer(WriterOptions options) : options_(std::move(options)) {
   putString(file_, options_.library);
   closeRecord(file_, at);
   chunk_.reserve(options_.chunkBytes + (options_.chunkBytes >> 2));
+  file_.reserve(options_.reserveBytes);
 }
 
 Writer::~Writer() = default;
@@ -141,13 +142,13 @@ void Writer::addMessage(std::uint16_t channelId, std::uint32_t sequence, std::ui
 
 void Writer::flushChunk() {
   if (chunk_.empty()) return;
-  compressor_->compress(chunk_, compressed_);
+  const std::string_view compressed = compressor_->compress(chunk_);
   ChunkIndex index;
   index.messageStartTime = chunkMessages_ > 0 ? chunkStart_ : 0;
   index.messageEndTime = chunkMessages_ > 0 ? chunkEnd_ : 0;
   index.chunkStartOffset = file_.size();
   index.compression = std::string(compressionName(options_.compression));
-  index.compressedSize = compressed_.size();
+  index.compressedSize = compressed.size();
   index.uncompressedSize = chunk_.size();
   const std::size_t at = openRecord(file_, Opcode::Chunk);
   putU64(file_, index.messageStartTime);
@@ -155,8 +156,8 @@ void Writer::flushChunk() {
   putU64(file_, chunk_.size());
   putU32(file_, crc32(chunk_));
   putString(file_, index.compression);
-  putU64(file_, compressed_.size());
-  file_.append(compressed_);
+  putU64(file_, compressed.size());
+  file_.append(compressed);
   closeRecord(file_, at);
   index.chunkLength = file_.size() - index.chunkStartOffset;
   // One Message Index record per channel with messages in the chunk, by channel id.

@@ -27,6 +27,8 @@ struct WriterOptions {
   bool chunked = true;
   // false: no summary section (the Footer says 0 for it).
   bool summary = true;
+  // Memory to set aside for the file at the start (a guess saves copies as it grows).
+  std::size_t reserveBytes = 0;
 };
 
 class Writer {
@@ -70,7 +72,6 @@ class Writer {
   std::unique_ptr<Compressor> compressor_;
   std::string file_;
   std::string chunk_;
-  std::string compressed_;
   std::size_t messageStart_ = 0;
   std::uint16_t messageChannel_ = 0;
   std::uint64_t messageTime_ = 0;

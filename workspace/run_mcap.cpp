@@ -115,7 +115,7 @@ Result<McapExportReport> exportRunMcap(Workspace& workspace, const McapExportReq
                  "out of memory: the run is too large for this machine's memory");
   }
   report.bytes = bytes.size();
-  report.topics = {"/tactile", "/robot/state", "/robot/pose", "/tf"};
+  report.topics = {"/tactile", "/robot/state", "/robot/pose"};
   if (run->hasTruth()) report.topics.push_back("/truth");
   for (const std::string& set : request.labelSets)
     report.topics.push_back("/labels/" + set);
