@@ -2,7 +2,7 @@
 // and Foxglove's ROS 2 message tools (@foxglove/rosmsg, @foxglove/rosmsg2-serialization,
 // @foxglove/rosmsg-msgs-common).
 //
-//   node interop.mjs write-bags DIR
+//   node interop.mjs write-bags DIR [STEPS]
 //       Writes ROS 2 bags as a robot's recorder would: Twist on /cmd_vel, Odometry on /odom and
 //       Float32MultiArray (88 values, normals then shears) on /tactile at jittered stamps, zstd
 //       and uncompressed, with DIR/expected.json holding every value a step must import as.
@@ -47,7 +47,7 @@ function schemaText(type) {
   return stringify(order);
 }
 
-const STEPS = 240;
+let STEPS = 240;
 const SCALE = 1000; // metres in the bag, millimetres (scene units) in the run
 
 async function writeBags(dir) {
@@ -293,7 +293,10 @@ async function checkExport(mcapFile, csvFile) {
 }
 
 const [command, a, b] = process.argv.slice(2);
-if (command === "write-bags") await writeBags(a);
+if (command === "write-bags") {
+  if (b !== undefined) STEPS = Number(b); // a bigger recording, for benchmarks
+  await writeBags(a);
+}
 else if (command === "check-import") checkImport(a, b);
 else if (command === "check-export") await checkExport(a, b);
 else fail(`unknown command ${command}`);
