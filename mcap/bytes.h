@@ -9,31 +9,38 @@
 
 namespace tactile::mcap::bytes {
 
-inline void putU8(std::string& out, std::uint8_t v) {
+// `Out` is std::string or mcap::Buffer (anything with push_back, append(p, n) and operator[]).
+template <class Out>
+inline void putU8(Out& out, std::uint8_t v) {
   out.push_back(static_cast<char>(v));
 }
-inline void putU16(std::string& out, std::uint16_t v) {
+template <class Out>
+inline void putU16(Out& out, std::uint16_t v) {
   const char b[2] = {static_cast<char>(v & 0xFF), static_cast<char>(v >> 8)};
   out.append(b, 2);
 }
-inline void putU32(std::string& out, std::uint32_t v) {
+template <class Out>
+inline void putU32(Out& out, std::uint32_t v) {
   char b[4];
   for (int i = 0; i < 4; ++i)
     b[i] = static_cast<char>((v >> (8 * i)) & 0xFF);
   out.append(b, 4);
 }
-inline void putU64(std::string& out, std::uint64_t v) {
+template <class Out>
+inline void putU64(Out& out, std::uint64_t v) {
   char b[8];
   for (int i = 0; i < 8; ++i)
     b[i] = static_cast<char>((v >> (8 * i)) & 0xFF);
   out.append(b, 8);
 }
-inline void putString(std::string& out, std::string_view s) {
+template <class Out>
+inline void putString(Out& out, std::string_view s) {
   putU32(out, static_cast<std::uint32_t>(s.size()));
   out.append(s);
 }
 // Overwrites 8 bytes at `at` (a length written before its content was known).
-inline void patchU64(std::string& out, std::size_t at, std::uint64_t v) {
+template <class Out>
+inline void patchU64(Out& out, std::size_t at, std::uint64_t v) {
   for (int i = 0; i < 8; ++i)
     out[at + static_cast<std::size_t>(i)] = static_cast<char>((v >> (8 * i)) & 0xFF);
 }

@@ -1,6 +1,6 @@
 // CRC-32 as MCAP uses it (the IEEE 802.3 / zlib polynomial 0xEDB88320, reflected, initial value
 // and final xor 0xFFFFFFFF): crc32("123456789") == 0xCBF43926. Portable table code (slicing by
-// eight), the same on every processor.
+// sixteen), the same on every processor.
 #pragma once
 
 #include <cstdint>

@@ -104,65 +104,62 @@ std::string sceneUpdateSchema() {
 
 // ---- messages --------------------------------------------------------------------------------
 
-void timestamp(std::string& out, std::uint64_t ns) {
-  out.append("{\"sec\":");
-  jo::integer(out, ns / 1000000000U);
-  out.append(",\"nsec\":");
-  jo::integer(out, ns % 1000000000U);
-  out.push_back('}');
+void timestamp(Appender& out, std::uint64_t ns) {
+  out.lit("{\"sec\":");
+  out.integer(ns / 1000000000U);
+  out.lit(",\"nsec\":");
+  out.integer(ns % 1000000000U);
+  out.put('}');
 }
 
-void vector3(std::string& out, double x, double y, double z) {
-  out.append("{\"x\":");
-  jo::number(out, x);
-  out.append(",\"y\":");
-  jo::number(out, y);
-  out.append(",\"z\":");
-  jo::number(out, z);
-  out.push_back('}');
+void vector3(Appender& out, double x, double y, double z) {
+  out.lit("{\"x\":");
+  out.number(x);
+  out.lit(",\"y\":");
+  out.number(y);
+  out.lit(",\"z\":");
+  out.number(z);
+  out.put('}');
 }
 
 // The Foxglove messages are for viewing (the exact values are on /robot/state): positions to the
-// micrometre, quaternions to 9 significant digits.
-void rounded(std::string& out, double v, std::chars_format format, int precision) {
-  char buf[48];
-  const auto r = std::to_chars(buf, buf + sizeof buf, v, format, precision);
-  out.append(buf, static_cast<std::size_t>(r.ptr - buf));
+// micrometre, quaternions to 9 decimals.
+void position(Appender& out, double x, double y) {
+  out.lit("{\"x\":");
+  out.fixed(x, 6);
+  out.lit(",\"y\":");
+  out.fixed(y, 6);
+  out.lit(",\"z\":0}");
 }
 
-void position(std::string& out, double x, double y) {
-  out.append("{\"x\":");
-  rounded(out, x, std::chars_format::fixed, 6);
-  out.append(",\"y\":");
-  rounded(out, y, std::chars_format::fixed, 6);
-  out.append(",\"z\":0}");
-}
-
-void yawQuaternion(std::string& out, double theta) {
-  out.append("{\"x\":0,\"y\":0,\"z\":");
-  rounded(out, std::sin(0.5 * theta), std::chars_format::general, 9);
-  out.append(",\"w\":");
-  rounded(out, std::cos(0.5 * theta), std::chars_format::general, 9);
-  out.push_back('}');
+void yawQuaternion(Appender& out, double theta) {
+  out.lit("{\"x\":0,\"y\":0,\"z\":");
+  out.fixed(std::sin(0.5 * theta), 9);
+  out.lit(",\"w\":");
+  out.fixed(std::cos(0.5 * theta), 9);
+  out.put('}');
 }
 
 std::string sceneUpdate(const std::string& sceneJson, std::uint64_t ns) {
   const nlohmann::json scene = nlohmann::json::parse(sceneJson, nullptr, false);
   if (!scene.is_object()) return {};
-  std::string lines;
-  auto loop = [&](const std::vector<std::pair<double, double>>& points, const char* color) {
+  Buffer linesBuffer;
+  Appender lines(linesBuffer);
+  bool anyLine = false;
+  auto loop = [&](const std::vector<std::pair<double, double>>& points, std::string_view color) {
     if (points.size() < 2) return;
-    if (!lines.empty()) lines.push_back(',');
-    lines.append(
+    if (anyLine) lines.put(',');
+    anyLine = true;
+    lines.text(
         R"j({"type":1,"pose":{"position":{"x":0,"y":0,"z":0},"orientation":{"x":0,"y":0,"z":0,"w":1}},"thickness":0.01,"scale_invariant":false,"points":[)j");
     for (std::size_t i = 0; i < points.size(); ++i) {
-      if (i > 0) lines.push_back(',');
+      if (i > 0) lines.put(',');
       vector3(lines, points[i].first / kSceneUnitsPerMetre, points[i].second / kSceneUnitsPerMetre,
               0.0);
     }
-    lines.append("],\"color\":");
-    lines.append(color);
-    lines.append(R"j(,"colors":[],"indices":[]})j");
+    lines.lit("],\"color\":");
+    lines.text(color);
+    lines.lit(R"j(,"colors":[],"indices":[]})j");
   };
   const auto& bounds = scene.value("bounds", nlohmann::json::array());
   if (bounds.is_array() && bounds.size() == 4 &&
@@ -184,13 +181,17 @@ std::string sceneUpdate(const std::string& sceneJson, std::uint64_t ns) {
       loop(points, R"j({"r":0.9,"g":0.5,"b":0.1,"a":1})j");
     }
   }
-  std::string out = R"j({"deletions":[],"entities":[{"timestamp":)j";
+  lines.flush();
+  Buffer outBuffer;
+  Appender out(outBuffer);
+  out.lit(R"j({"deletions":[],"entities":[{"timestamp":)j");
   timestamp(out, ns);
-  out.append(
+  out.text(
       R"j(,"frame_id":"scene","id":"walls","lifetime":{"sec":0,"nsec":0},"frame_locked":false,"metadata":[],"arrows":[],"cubes":[],"spheres":[],"cylinders":[],"lines":[)j");
-  out.append(lines);
-  out.append(R"j(],"triangles":[],"texts":[],"models":[]}]})j");
-  return out;
+  out.text(linesBuffer.view());
+  out.lit(R"j(],"triangles":[],"texts":[],"models":[]}]})j");
+  out.flush();
+  return std::string(outBuffer.view());
 }
 
 std::uint64_t stepTime(std::size_t step, double dt) {
@@ -199,12 +200,10 @@ std::uint64_t stepTime(std::size_t step, double dt) {
 
 }  // namespace
 
-std::string writeRunMcap(const RunExport& what, WriterOptions options) {
+namespace {
+
+bool writeRun(Writer& w, const RunExport& what, const ExportProgress& progress) {
   const RunData& run = *what.run;
-  options.library = what.library;
-  // About 1.3 KB a step before compression, a third of that after (measured on simulated runs).
-  options.reserveBytes = std::max<std::size_t>(options.reserveBytes, 400 * what.run->stepCount());
-  Writer w(options);
   const std::optional<double> runDt = run.dtSeconds();
   const double dt = runDt && *runDt > 0 ? *runDt : kDefaultExportDt;
 
@@ -268,140 +267,165 @@ std::string writeRunMcap(const RunExport& what, WriterOptions options) {
   std::array<std::string, kGroupCount> keys;  // ",\"F\":" ...
   for (const GroupInfo& g : kSensorGroups)
     keys[static_cast<std::size_t>(groupIndex(g.group))] = ",\"" + std::string(g.shortName) + "\":";
+  std::array<std::string, kContactClassNames.size()> quoted;  // "\"NoContact\"" ...
+  for (std::size_t c = 0; c < quoted.size(); ++c)
+    quoted[c] = "\"" + std::string(kContactClassNames[c]) + "\"";
+  auto className = [&](int c) -> std::string_view { return quoted[static_cast<std::size_t>(c)]; };
 
   const std::size_t steps = run.stepCount();
   const std::size_t extras = run.extraColumns.size();
   for (std::size_t k = 0; k < steps; ++k) {
+    if (progress && k % kProgressSteps == 0 && !progress(k, steps)) return false;
     const std::uint64_t t = stepTime(k, dt);
     const auto seq = static_cast<std::uint32_t>(k);
-    w.addMessageWith(tactileCh, seq, t, t, [&](std::string& out) {
-      out.append("{\"step\":");
-      jo::integer(out, k);
+    w.addMessageWith(tactileCh, seq, t, t, [&](Appender& out) {
+      out.lit("{\"step\":");
+      out.integer(k);
       const double* v = run.stepSensors(k);
       for (const GroupInfo& g : kSensorGroups) {
-        out.append(keys[static_cast<std::size_t>(groupIndex(g.group))]);
-        out.append("{\"n\":[");
+        out.text(keys[static_cast<std::size_t>(groupIndex(g.group))]);
+        out.lit("{\"n\":[");
         for (int i = 0; i < g.sensorCount; ++i) {
-          if (i > 0) out.push_back(',');
-          jo::number(out, v[normalOffset(g.firstSensor + i)]);
+          if (i > 0) out.put(',');
+          out.number(v[normalOffset(g.firstSensor + i)]);
         }
-        out.append("],\"s\":[");
+        out.lit("],\"s\":[");
         for (int i = 0; i < g.sensorCount; ++i) {
-          if (i > 0) out.push_back(',');
-          jo::number(out, v[shearOffset(g.firstSensor + i)]);
+          if (i > 0) out.put(',');
+          out.number(v[shearOffset(g.firstSensor + i)]);
         }
-        out.append("]}");
+        out.lit("]}");
       }
-      out.push_back('}');
+      out.put('}');
     });
-    w.addMessageWith(stateCh, seq, t, t, [&](std::string& out) {
-      out.append("{\"step\":");
-      jo::integer(out, k);
-      out.append(",\"x\":");
-      jo::number(out, run.x[k]);
-      out.append(",\"y\":");
-      jo::number(out, run.y[k]);
-      out.append(",\"theta\":");
-      jo::number(out, run.theta[k]);
-      out.append(",\"v\":");
-      jo::number(out, run.v[k]);
-      out.append(",\"omega\":");
-      jo::number(out, run.omega[k]);
-      out.append(run.blocked[k] != 0 ? ",\"blocked\":true}" : ",\"blocked\":false}");
+    w.addMessageWith(stateCh, seq, t, t, [&](Appender& out) {
+      out.lit("{\"step\":");
+      out.integer(k);
+      out.lit(",\"x\":");
+      out.number(run.x[k]);
+      out.lit(",\"y\":");
+      out.number(run.y[k]);
+      out.lit(",\"theta\":");
+      out.number(run.theta[k]);
+      out.lit(",\"v\":");
+      out.number(run.v[k]);
+      out.lit(",\"omega\":");
+      out.number(run.omega[k]);
+      out.text(run.blocked[k] != 0 ? ",\"blocked\":true}" : ",\"blocked\":false}");
     });
-    w.addMessageWith(poseCh, seq, t, t, [&](std::string& out) {
-      out.append("{\"timestamp\":");
+    w.addMessageWith(poseCh, seq, t, t, [&](Appender& out) {
+      out.lit("{\"timestamp\":");
       timestamp(out, t);
-      out.append(",\"frame_id\":\"scene\",\"pose\":{\"position\":");
+      out.lit(",\"frame_id\":\"scene\",\"pose\":{\"position\":");
       position(out, run.x[k] / kSceneUnitsPerMetre, run.y[k] / kSceneUnitsPerMetre);
-      out.append(",\"orientation\":");
+      out.lit(",\"orientation\":");
       yawQuaternion(out, run.theta[k]);
-      out.append("}}");
+      out.lit("}}");
     });
     if (truthCh != 0) {
-      w.addMessageWith(truthCh, seq, t, t, [&](std::string& out) {
-        out.append("{\"step\":");
-        jo::integer(out, k);
+      w.addMessageWith(truthCh, seq, t, t, [&](Appender& out) {
+        out.lit("{\"step\":");
+        out.integer(k);
         for (int g = 0; g < kGroupCount; ++g) {
-          out.append(keys[static_cast<std::size_t>(g)]);
-          out.push_back('"');
-          out.append(contactClassName(run.truth[k * kGroupCount + static_cast<std::size_t>(g)]));
-          out.push_back('"');
+          out.text(keys[static_cast<std::size_t>(g)]);
+          out.text(className(
+              static_cast<int>(run.truth[k * kGroupCount + static_cast<std::size_t>(g)])));
         }
-        out.push_back('}');
+        out.put('}');
       });
     }
     for (std::size_t s = 0; s < what.labels.size(); ++s) {
       const LabelTrack& track = what.labels[s];
-      w.addMessageWith(labelChs[s], seq, t, t, [&](std::string& out) {
-        out.append("{\"step\":");
-        jo::integer(out, k);
-        out.append(",\"set\":");
-        jo::string(out, track.set);
+      w.addMessageWith(labelChs[s], seq, t, t, [&](Appender& out) {
+        out.lit("{\"step\":");
+        out.integer(k);
+        out.lit(",\"set\":");
+        out.string(track.set);
         bool anyAnnotator = false;
         for (int g = 0; g < kGroupCount; ++g) {
           const std::size_t i = k * kGroupCount + static_cast<std::size_t>(g);
-          out.append(keys[static_cast<std::size_t>(g)]);
+          out.text(keys[static_cast<std::size_t>(g)]);
           if (track.classes[i] < 0) {
-            out.append("null");
+            out.lit("null");
             continue;
           }
           anyAnnotator = anyAnnotator || track.annotator[i] != 0;
-          out.push_back('"');
-          out.append(contactClassName(static_cast<ContactClass>(track.classes[i])));
-          out.push_back('"');
+          out.text(className(track.classes[i]));
         }
         if (anyAnnotator) {
           // Who labelled each labelled group (groups without an annotator are left out).
-          out.append(",\"annotators\":{");
+          out.lit(",\"annotators\":{");
           bool first = true;
           for (int g = 0; g < kGroupCount; ++g) {
             const std::size_t i = k * kGroupCount + static_cast<std::size_t>(g);
             if (track.classes[i] < 0 || track.annotator[i] == 0) continue;
-            out.append(first ? "" : ",");
+            if (!first) out.put(',');
             first = false;
-            out.append(keys[static_cast<std::size_t>(g)].substr(1));
-            jo::string(out, track.annotators[track.annotator[i]]);
+            out.text(keys[static_cast<std::size_t>(g)].substr(1));
+            out.string(track.annotators[track.annotator[i]]);
           }
-          out.push_back('}');
+          out.put('}');
         }
-        out.push_back('}');
+        out.put('}');
       });
     }
     for (std::size_t m = 0; m < what.decisions.size(); ++m) {
       const DecisionTrack& track = what.decisions[m];
-      w.addMessageWith(decisionChs[m], seq, t, t, [&](std::string& out) {
-        out.append("{\"step\":");
-        jo::integer(out, k);
+      w.addMessageWith(decisionChs[m], seq, t, t, [&](Appender& out) {
+        out.lit("{\"step\":");
+        out.integer(k);
         for (int g = 0; g < kGroupCount; ++g) {
           const std::int8_t c = track.classes[k * kGroupCount + static_cast<std::size_t>(g)];
-          out.append(keys[static_cast<std::size_t>(g)]);
+          out.text(keys[static_cast<std::size_t>(g)]);
           if (c < 0) {
-            out.append("null");
+            out.lit("null");
           } else {
-            out.push_back('"');
-            out.append(contactClassName(static_cast<ContactClass>(c)));
-            out.push_back('"');
+            out.text(className(c));
           }
         }
-        out.push_back('}');
+        out.put('}');
       });
     }
     if (extraCh != 0) {
-      w.addMessageWith(extraCh, seq, t, t, [&](std::string& out) {
-        out.append("{\"step\":");
-        jo::integer(out, k);
+      w.addMessageWith(extraCh, seq, t, t, [&](Appender& out) {
+        out.lit("{\"step\":");
+        out.integer(k);
         for (std::size_t c = 0; c < extras; ++c) {
-          out.push_back(',');
-          jo::string(out, run.extraColumns[c]);
-          out.push_back(':');
-          jo::string(out, run.extraValues[k * extras + c]);
+          out.put(',');
+          out.string(run.extraColumns[c]);
+          out.put(':');
+          out.string(run.extraValues[k * extras + c]);
         }
-        out.push_back('}');
+        out.put('}');
       });
     }
   }
+  if (progress && !progress(steps, steps)) return false;
+  return true;
+}
+
+WriterOptions exportOptions(const RunExport& what, WriterOptions options) {
+  options.library = what.library;
+  return options;
+}
+
+}  // namespace
+
+std::string writeRunMcap(const RunExport& what, WriterOptions options) {
+  options = exportOptions(what, options);
+  // About 1.3 KB a step before compression, a fifth of that after (measured on simulated runs).
+  options.reserveBytes = std::max<std::size_t>(options.reserveBytes, 300 * what.run->stepCount());
+  Writer w(options);
+  writeRun(w, what, {});
   return w.finish();
+}
+
+bool writeRunMcap(const RunExport& what, const Sink& sink, WriterOptions options,
+                  const ExportProgress& progress) {
+  Writer w(exportOptions(what, options), sink);
+  if (!writeRun(w, what, progress)) return false;
+  w.finish();
+  return true;
 }
 
 // ---- import ----------------------------------------------------------------------------------

@@ -16,6 +16,7 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -57,8 +58,18 @@ struct RunExport {
   std::string library = "tactile";
 };
 
-// The MCAP file's bytes. Throws only std::bad_alloc.
+// The MCAP file's bytes, built in memory. Throws only std::bad_alloc.
 std::string writeRunMcap(const RunExport& what, WriterOptions options = {});
+
+// Called every kProgressSteps steps and at the end with the steps written; false cancels.
+using ExportProgress = std::function<bool(std::size_t done, std::size_t total)>;
+inline constexpr std::size_t kProgressSteps = 8192;
+
+// Streams the file to `sink` as its chunks are finished (the whole file is never in memory).
+// Returns false when `progress` cancelled (the sink then holds part of a file). Throws
+// std::bad_alloc and whatever the sink throws.
+bool writeRunMcap(const RunExport& what, const Sink& sink, WriterOptions options = {},
+                  const ExportProgress& progress = {});
 
 // What an import of an MCAP file gives: the run, its name in the file (an export of this program;
 // empty for a bag) and notes for the user.

@@ -12,18 +12,21 @@ using namespace bytes;
 
 namespace {
 
+// The bytes held before they go to a sink (a few chunks' worth: few, large writes).
+constexpr std::size_t kFlushBytes = std::size_t{1} << 20;
+
 // Opens a record: opcode and a length to patch; returns where the length is.
-std::size_t openRecord(std::string& out, Opcode op) {
+std::size_t openRecord(Buffer& out, Opcode op) {
   putU8(out, static_cast<std::uint8_t>(op));
   const std::size_t at = out.size();
   putU64(out, 0);
   return at;
 }
-void closeRecord(std::string& out, std::size_t lengthAt) {
+void closeRecord(Buffer& out, std::size_t lengthAt) {
   patchU64(out, lengthAt, out.size() - lengthAt - 8);
 }
 
-void putStringMap(std::string& out, const KeyValues& entries) {
+void putStringMap(Buffer& out, const KeyValues& entries) {
   std::uint64_t n = 0;
   for (const auto& [k, v] : entries)
     n += 8 + k.size() + v.size();
@@ -34,7 +37,7 @@ void putStringMap(std::string& out, const KeyValues& entries) {
   }
 }
 
-void putSchema(std::string& out, const Schema& s) {
+void putSchema(Buffer& out, const Schema& s) {
   const std::size_t at = openRecord(out, Opcode::Schema);
   putU16(out, s.id);
   putString(out, s.name);
@@ -43,7 +46,7 @@ void putSchema(std::string& out, const Schema& s) {
   closeRecord(out, at);
 }
 
-void putChannel(std::string& out, const Channel& c) {
+void putChannel(Buffer& out, const Channel& c) {
   const std::size_t at = openRecord(out, Opcode::Channel);
   putU16(out, c.id);
   putU16(out, c.schemaId);
@@ -55,7 +58,8 @@ void putChannel(std::string& out, const Channel& c) {
 
 }  // namespace
 
-Writer::Writer(WriterOptions options) : options_(std::move(options)) {
+Writer::Writer(WriterOptions options, Sink sink)
+    : options_(std::move(options)), sink_(std::move(sink)) {
   compressor_ = std::make_unique<Compressor>(options_.compression, options_.zstdLevel);
   file_.append(kMagic);
   const std::size_t at = openRecord(file_, Opcode::Header);
@@ -63,7 +67,7 @@ Writer::Writer(WriterOptions options) : options_(std::move(options)) {
   putString(file_, options_.library);
   closeRecord(file_, at);
   chunk_.reserve(options_.chunkBytes + (options_.chunkBytes >> 2));
-  file_.reserve(options_.reserveBytes);
+  file_.reserve(sink_ ? 2 * kFlushBytes : options_.reserveBytes);
 }
 
 Writer::~Writer() = default;
@@ -98,27 +102,29 @@ std::uint16_t Writer::addChannel(std::uint16_t schemaId, std::string_view topic,
   return channels_.back().id;
 }
 
-std::string& Writer::beginMessage(std::uint16_t channelId, std::uint32_t sequence,
-                                  std::uint64_t logTime, std::uint64_t publishTime) {
+Buffer& Writer::beginMessage(std::uint16_t channelId, std::uint32_t sequence, std::uint64_t logTime,
+                             std::uint64_t publishTime) {
   if (channelId == 0 || channelId > channels_.size()) {
     throw std::invalid_argument("message on channel " + std::to_string(channelId) +
                                 ", which was not added");
   }
-  std::string& out = target();
+  Buffer& out = target();
   messageStart_ = out.size();
   messageChannel_ = channelId;
   messageTime_ = logTime;
-  putU8(out, static_cast<std::uint8_t>(Opcode::Message));
-  putU64(out, 0);
-  putU16(out, channelId);
-  putU32(out, sequence);
-  putU64(out, logTime);
-  putU64(out, publishTime);
+  Appender a(out);
+  a.room(31);
+  a.put(static_cast<char>(Opcode::Message));
+  a.u64(0);
+  a.u16(channelId);
+  a.u32(sequence);
+  a.u64(logTime);
+  a.u64(publishTime);
   return out;
 }
 
 void Writer::endMessage() {
-  std::string& out = target();
+  Buffer& out = target();
   patchU64(out, messageStart_ + 1, out.size() - messageStart_ - 9);
   if (messageCount_ == 0 || messageTime_ < startTime_) startTime_ = messageTime_;
   if (messageCount_ == 0 || messageTime_ > endTime_) endTime_ = messageTime_;
@@ -134,19 +140,26 @@ void Writer::endMessage() {
   if (chunk_.size() >= options_.chunkBytes) flushChunk();
 }
 
+void Writer::flushFile(bool dataSection) {
+  if (!sink_ || file_.empty()) return;
+  if (dataSection) dataCrc_ = crc32(file_.view(), dataCrc_);
+  sink_(file_.view());
+  flushed_ += file_.size();
+  file_.clear();
+}
+
 void Writer::addMessage(std::uint16_t channelId, std::uint32_t sequence, std::uint64_t logTime,
                         std::uint64_t publishTime, std::string_view data) {
-  addMessageWith(channelId, sequence, logTime, publishTime,
-                 [&](std::string& out) { out.append(data); });
+  addMessageWith(channelId, sequence, logTime, publishTime, [&](Appender& out) { out.text(data); });
 }
 
 void Writer::flushChunk() {
   if (chunk_.empty()) return;
-  const std::string_view compressed = compressor_->compress(chunk_);
+  const std::string_view compressed = compressor_->compress(chunk_.view());
   ChunkIndex index;
   index.messageStartTime = chunkMessages_ > 0 ? chunkStart_ : 0;
   index.messageEndTime = chunkMessages_ > 0 ? chunkEnd_ : 0;
-  index.chunkStartOffset = file_.size();
+  index.chunkStartOffset = position();
   index.compression = std::string(compressionName(options_.compression));
   index.compressedSize = compressed.size();
   index.uncompressedSize = chunk_.size();
@@ -154,18 +167,18 @@ void Writer::flushChunk() {
   putU64(file_, index.messageStartTime);
   putU64(file_, index.messageEndTime);
   putU64(file_, chunk_.size());
-  putU32(file_, crc32(chunk_));
+  putU32(file_, crc32(chunk_.view()));
   putString(file_, index.compression);
   putU64(file_, compressed.size());
   file_.append(compressed);
   closeRecord(file_, at);
-  index.chunkLength = file_.size() - index.chunkStartOffset;
+  index.chunkLength = position() - index.chunkStartOffset;
   // One Message Index record per channel with messages in the chunk, by channel id.
   std::sort(chunkChannels_.begin(), chunkChannels_.end());
-  const std::uint64_t indexStart = file_.size();
+  const std::uint64_t indexStart = position();
   for (const std::uint16_t channel : chunkChannels_) {
     auto& entries = chunkIndex_[channel - 1];
-    index.messageIndexOffsets.emplace_back(channel, file_.size());
+    index.messageIndexOffsets.emplace_back(channel, position());
     const std::size_t rec = openRecord(file_, Opcode::MessageIndex);
     putU16(file_, channel);
     putU32(file_, static_cast<std::uint32_t>(16 * entries.size()));
@@ -176,30 +189,30 @@ void Writer::flushChunk() {
     closeRecord(file_, rec);
     entries.clear();
   }
-  index.messageIndexLength = file_.size() - indexStart;
+  index.messageIndexLength = position() - indexStart;
   chunkIndexes_.push_back(std::move(index));
   chunkChannels_.clear();
   chunk_.clear();
   chunkMessages_ = 0;
   ++chunkCount_;
+  if (file_.size() >= kFlushBytes) flushFile(true);
 }
 
 void Writer::addMetadata(std::string_view name, const KeyValues& entries) {
   flushChunk();  // Metadata records stand outside chunks.
-  MetadataEntry e{file_.size(), 0, std::string(name)};
+  MetadataEntry e{position(), 0, std::string(name)};
   const std::size_t at = openRecord(file_, Opcode::Metadata);
   putString(file_, name);
   putStringMap(file_, entries);
   closeRecord(file_, at);
-  e.length = file_.size() - e.offset;
+  e.length = position() - e.offset;
   metadataIndexes_.push_back(std::move(e));
 }
 
 void Writer::addAttachment(std::string_view name, std::string_view mediaType, std::uint64_t logTime,
                            std::string_view data) {
   flushChunk();
-  AttachmentEntry e{file_.size(),          0, logTime, data.size(), std::string(name),
-                    std::string(mediaType)};
+  AttachmentEntry e{position(), 0, logTime, data.size(), std::string(name), std::string(mediaType)};
   const std::size_t at = openRecord(file_, Opcode::Attachment);
   const std::size_t contentStart = file_.size();
   putU64(file_, logTime);
@@ -208,33 +221,35 @@ void Writer::addAttachment(std::string_view name, std::string_view mediaType, st
   putString(file_, mediaType);
   putU64(file_, data.size());
   file_.append(data);
-  putU32(file_, crc32(std::string_view(file_).substr(contentStart)));
+  putU32(file_, crc32(file_.view().substr(contentStart)));
   closeRecord(file_, at);
-  e.length = file_.size() - e.offset;
+  e.length = position() - e.offset;
   attachmentIndexes_.push_back(std::move(e));
 }
 
 std::string Writer::finish() {
   flushChunk();
   // Data End, with the CRC of everything before it.
-  const std::uint32_t dataCrc = crc32(file_);
+  flushFile(true);
+  const std::uint32_t dataCrc = crc32(file_.view(), dataCrc_);
   std::size_t at = openRecord(file_, Opcode::DataEnd);
   putU32(file_, dataCrc);
   closeRecord(file_, at);
+  flushFile(false);
 
   std::uint64_t summaryStart = 0;
   std::uint64_t summaryOffsetStart = 0;
   if (options_.summary) {
-    summaryStart = file_.size();
+    summaryStart = position();
     struct Group {
       Opcode op;
       std::uint64_t start, length;
     };
     std::vector<Group> groups;
     auto group = [&](Opcode op, auto&& write) {
-      const std::uint64_t start = file_.size();
+      const std::uint64_t start = position();
       write();
-      if (file_.size() > start) groups.push_back({op, start, file_.size() - start});
+      if (position() > start) groups.push_back({op, start, position() - start});
     };
     group(Opcode::Schema, [&] {
       for (const Schema& s : schemas_)
@@ -306,7 +321,7 @@ std::string Writer::finish() {
         closeRecord(file_, at);
       }
     });
-    summaryOffsetStart = groups.empty() ? 0 : file_.size();
+    summaryOffsetStart = groups.empty() ? 0 : position();
     for (const Group& g : groups) {
       at = openRecord(file_, Opcode::SummaryOffset);
       putU8(file_, static_cast<std::uint8_t>(g.op));
@@ -320,11 +335,19 @@ std::string Writer::finish() {
   putU64(file_, 20);
   putU64(file_, summaryStart);
   putU64(file_, summaryOffsetStart);
-  const std::size_t crcFrom = summaryStart != 0 ? summaryStart : footerAt;
-  putU32(file_, options_.summary ? crc32(std::string_view(file_).substr(crcFrom)) : 0);
+  const std::size_t crcFrom =
+      summaryStart != 0 ? static_cast<std::size_t>(summaryStart - flushed_) : footerAt;
+  putU32(file_, options_.summary ? crc32(file_.view().substr(crcFrom)) : 0);
   file_.append(kMagic);
-  std::string out = std::move(file_);
+  std::string out;
+  if (sink_) {
+    flushFile(false);
+  } else {
+    out.assign(file_.view());
+  }
   file_.clear();
+  flushed_ = 0;
+  dataCrc_ = 0;
   return out;
 }
 

@@ -1,16 +1,18 @@
-// Writing an MCAP file in memory: Schema, Channel and Message records in chunks (zstd, lz4 or
-// none) with a Message Index after each chunk, Metadata and Attachment records, and a summary
-// (copies of the Schema and Channel records, Statistics, Chunk Indexes, Metadata and Attachment
-// Indexes, Summary Offsets), with every CRC filled in.
+// Writing an MCAP file, in memory or streamed to a sink as it goes: Schema, Channel and Message
+// records in chunks (zstd, lz4 or none) with a Message Index after each chunk, Metadata and
+// Attachment records, and a summary (copies of the Schema and Channel records, Statistics, Chunk
+// Indexes, Metadata and Attachment Indexes, Summary Offsets), with every CRC filled in.
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <map>
 #include <memory>
 #include <string>
 #include <string_view>
 #include <vector>
 
+#include "mcap/buffer.h"
 #include "mcap/compression.h"
 #include "mcap/records.h"
 
@@ -27,13 +29,20 @@ struct WriterOptions {
   bool chunked = true;
   // false: no summary section (the Footer says 0 for it).
   bool summary = true;
-  // Memory to set aside for the file at the start (a guess saves copies as it grows).
+  // Memory to set aside for the file at the start (a guess saves copies as it grows; in memory
+  // only).
   std::size_t reserveBytes = 0;
 };
 
+// Where a streaming writer's bytes go, in file order, a piece at a time (each chunk with its
+// message indexes, then the summary). A sink that fails throws; the writer is then unusable.
+using Sink = std::function<void(std::string_view bytes)>;
+
 class Writer {
  public:
-  explicit Writer(WriterOptions options = {});
+  // Without a sink the file is built in memory and finish() returns it; with one, the bytes go to
+  // the sink as chunks are finished and finish() returns an empty string.
+  explicit Writer(WriterOptions options = {}, Sink sink = {});
   ~Writer();
   Writer(const Writer&) = delete;
   Writer& operator=(const Writer&) = delete;
@@ -45,33 +54,44 @@ class Writer {
   void addMessage(std::uint16_t channelId, std::uint32_t sequence, std::uint64_t logTime,
                   std::uint64_t publishTime, std::string_view data);
   // Writes a message whose data the caller builds in place: `fill` appends the message's bytes
-  // to the string it is given (saves a copy per message).
+  // with the Appender it is given (saves a copy per message).
   template <class Fill>
   void addMessageWith(std::uint16_t channelId, std::uint32_t sequence, std::uint64_t logTime,
                       std::uint64_t publishTime, Fill&& fill) {
-    std::string& out = beginMessage(channelId, sequence, logTime, publishTime);
-    fill(out);
+    Buffer& out = beginMessage(channelId, sequence, logTime, publishTime);
+    {
+      Appender a(out);
+      fill(a);
+    }
     endMessage();
   }
   void addMetadata(std::string_view name, const KeyValues& entries);
   void addAttachment(std::string_view name, std::string_view mediaType, std::uint64_t logTime,
                      std::string_view data);
 
-  // Closes the file and returns its bytes; the writer is then empty.
+  // Closes the file and returns its bytes (empty when streamed to a sink); the writer is then
+  // empty.
   std::string finish();
+  // Bytes of the file so far (written to the sink or still held).
+  std::uint64_t position() const { return flushed_ + file_.size(); }
 
  private:
-  std::string& beginMessage(std::uint16_t channelId, std::uint32_t sequence, std::uint64_t logTime,
-                            std::uint64_t publishTime);
+  Buffer& beginMessage(std::uint16_t channelId, std::uint32_t sequence, std::uint64_t logTime,
+                       std::uint64_t publishTime);
   void endMessage();
   void flushChunk();
+  // Hands the bytes held to the sink (when there is one), keeping the data section's CRC.
+  void flushFile(bool dataSection);
   // Where records go now: the open chunk, or the file itself.
-  std::string& target() { return options_.chunked ? chunk_ : file_; }
+  Buffer& target() { return options_.chunked ? chunk_ : file_; }
 
   WriterOptions options_;
+  Sink sink_;
   std::unique_ptr<Compressor> compressor_;
-  std::string file_;
-  std::string chunk_;
+  Buffer file_;  // the file's bytes not yet handed to the sink
+  std::uint64_t flushed_ = 0;
+  std::uint32_t dataCrc_ = 0;  // of the bytes handed to the sink so far
+  Buffer chunk_;
   std::size_t messageStart_ = 0;
   std::uint16_t messageChannel_ = 0;
   std::uint64_t messageTime_ = 0;

@@ -107,14 +107,30 @@ Result<McapExportReport> exportRunMcap(Workspace& workspace, const McapExportReq
     }
     what.decisions.push_back(std::move(track));
   }
-  std::string bytes;
+  // Streamed to a temporary file beside the output as chunks are finished, then renamed over it.
+  AtomicFileWriter file;
+  if (Status opened = file.open(request.out); !opened) return opened.error();
+  std::optional<Error> writeError;
+  struct SinkFailed {};
+  auto sink = [&](std::string_view piece) {
+    if (Status written = file.write(piece); !written) {
+      writeError = written.error();
+      throw SinkFailed{};
+    }
+    report.bytes += piece.size();
+  };
   try {
-    bytes = mcap::writeRunMcap(what, request.writer);
+    if (!mcap::writeRunMcap(what, sink, request.writer, request.progress)) {
+      file.abandon();
+      return Error(request.out.string(), "export cancelled; nothing written");
+    }
+  } catch (const SinkFailed&) {
+    return *writeError;
   } catch (const std::bad_alloc&) {
     return Error(request.out.string(),
                  "out of memory: the run is too large for this machine's memory");
   }
-  report.bytes = bytes.size();
+  if (Status committed = file.commit(); !committed) return committed.error();
   report.topics = {"/tactile", "/robot/state", "/robot/pose"};
   if (run->hasTruth()) report.topics.push_back("/truth");
   for (const std::string& set : request.labelSets)
@@ -122,7 +138,6 @@ Result<McapExportReport> exportRunMcap(Workspace& workspace, const McapExportReq
   if (!request.model.empty()) report.topics.push_back("/decisions/" + request.model);
   if (!run->extraColumns.empty()) report.topics.push_back("/extra");
   if (what.sceneJson) report.topics.push_back("/scene");
-  if (Status written = writeFileAtomically(request.out, bytes); !written) return written.error();
   return report;
 }
 

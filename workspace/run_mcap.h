@@ -5,6 +5,7 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -23,6 +24,9 @@ struct McapExportRequest {
   std::string model;                   // empty: none; else its online decisions on /decisions/MODEL
   std::filesystem::path out;
   mcap::WriterOptions writer;
+  // Called every few thousand steps with the steps written and the run's steps; false cancels
+  // (the export then fails with "cancelled" and leaves nothing at `out`).
+  std::function<bool(std::size_t done, std::size_t total)> progress;
 };
 
 struct McapExportReport {
@@ -34,7 +38,8 @@ struct McapExportReport {
 };
 
 // Writes the run (with the sets' labels, the model's decisions and the scene's walls) to
-// request.out atomically; nothing is left there on failure.
+// request.out atomically, streamed (the file is never whole in memory); nothing is left there on
+// failure or when cancelled.
 Result<McapExportReport> exportRunMcap(Workspace& workspace, const McapExportRequest& request);
 
 struct McapImportRequest {
