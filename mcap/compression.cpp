@@ -86,18 +86,23 @@ std::string sizeMismatch(std::uint64_t got, std::uint64_t expected, bool more) {
          std::to_string(got) + " bytes, its uncompressed_size says " + std::to_string(expected);
 }
 
-std::optional<std::string> decompressZstd(std::string_view in, std::uint64_t expected,
-                                          std::string& out) {
-  std::unique_ptr<ZSTD_DCtx, std::size_t (*)(ZSTD_DCtx*)> ctx(ZSTD_createDCtx(), ZSTD_freeDCtx);
-  if (!ctx) throw std::bad_alloc();
+// The output's size set to n (never zero-filled; what was produced is kept).
+void resizeTo(Buffer& out, std::size_t n) {
+  out.reserve(n);
+  out.setSize(n);
+}
+
+std::optional<std::string> decompressZstd(ZSTD_DCtx* ctx, std::string_view in,
+                                          std::uint64_t expected, Buffer& out) {
+  ZSTD_DCtx_reset(ctx, ZSTD_reset_session_only);
   out.clear();
   // Sized from what the compressed bytes can hold at most, not from the claim alone.
-  out.resize(grown(std::min<std::uint64_t>(expected, 16 * std::uint64_t{in.size()}), expected));
+  resizeTo(out, grown(std::min<std::uint64_t>(expected, 16 * std::uint64_t{in.size()}), expected));
   ZSTD_inBuffer src{in.data(), in.size(), 0};
   std::size_t produced = 0;
   while (true) {
     ZSTD_outBuffer dst{out.data(), out.size(), produced};
-    const std::size_t rc = ZSTD_decompressStream(ctx.get(), &dst, &src);
+    const std::size_t rc = ZSTD_decompressStream(ctx, &dst, &src);
     if (ZSTD_isError(rc) != 0U) return std::string("zstd: ") + ZSTD_getErrorName(rc);
     produced = dst.pos;
     if (rc == 0 && src.pos == in.size()) break;  // a frame ended with the input
@@ -106,7 +111,7 @@ std::optional<std::string> decompressZstd(std::string_view in, std::uint64_t exp
         // Full: anything still to come is too much.
         char probe = 0;
         ZSTD_outBuffer extra{&probe, 1, 0};
-        const std::size_t more = ZSTD_decompressStream(ctx.get(), &extra, &src);
+        const std::size_t more = ZSTD_decompressStream(ctx, &extra, &src);
         if (ZSTD_isError(more) != 0U) return std::string("zstd: ") + ZSTD_getErrorName(more);
         if (extra.pos > 0) return sizeMismatch(expected, expected, true);
         if (more == 0 && src.pos == in.size()) break;
@@ -114,38 +119,34 @@ std::optional<std::string> decompressZstd(std::string_view in, std::uint64_t exp
           return std::string("zstd: the compressed data ends inside a frame");
         continue;
       }
-      out.resize(grown(out.size(), expected));
+      resizeTo(out, grown(out.size(), expected));
     } else if (src.pos == in.size()) {
       if (rc != 0) return std::string("zstd: the compressed data ends inside a frame");
       break;
     }
   }
   if (produced != expected) return sizeMismatch(produced, expected, false);
-  out.resize(produced);
+  out.setSize(produced);
   return std::nullopt;
 }
 
-std::optional<std::string> decompressLz4(std::string_view in, std::uint64_t expected,
-                                         std::string& out) {
-  LZ4F_dctx* raw = nullptr;
-  if (LZ4F_isError(LZ4F_createDecompressionContext(&raw, LZ4F_VERSION)) != 0U)
-    throw std::bad_alloc();
-  std::unique_ptr<LZ4F_dctx, LZ4F_errorCode_t (*)(LZ4F_dctx*)> ctx(raw,
-                                                                   LZ4F_freeDecompressionContext);
+std::optional<std::string> decompressLz4(LZ4F_dctx* ctx, std::string_view in,
+                                         std::uint64_t expected, Buffer& out) {
+  LZ4F_resetDecompressionContext(ctx);
   out.clear();
-  out.resize(grown(std::min<std::uint64_t>(expected, 16 * std::uint64_t{in.size()}), expected));
+  resizeTo(out, grown(std::min<std::uint64_t>(expected, 16 * std::uint64_t{in.size()}), expected));
   std::size_t consumed = 0;
   std::size_t produced = 0;
   std::size_t hint = 1;
   while (consumed < in.size()) {
     if (produced == out.size()) {
       if (produced == expected) return sizeMismatch(expected, expected, true);
-      out.resize(grown(out.size(), expected));
+      resizeTo(out, grown(out.size(), expected));
     }
     std::size_t dstSize = out.size() - produced;
     std::size_t srcSize = in.size() - consumed;
-    hint = LZ4F_decompress(ctx.get(), out.data() + produced, &dstSize, in.data() + consumed,
-                           &srcSize, nullptr);
+    hint = LZ4F_decompress(ctx, out.data() + produced, &dstSize, in.data() + consumed, &srcSize,
+                           nullptr);
     if (LZ4F_isError(hint) != 0U) return std::string("lz4: ") + LZ4F_getErrorName(hint);
     consumed += srcSize;
     produced += dstSize;
@@ -164,40 +165,62 @@ std::optional<std::string> decompressLz4(std::string_view in, std::uint64_t expe
         char probe = 0;
         std::size_t one = 1;
         std::size_t none = 0;
-        hint = LZ4F_decompress(ctx.get(), &probe, &one, nullptr, &none, nullptr);
+        hint = LZ4F_decompress(ctx, &probe, &one, nullptr, &none, nullptr);
         if (LZ4F_isError(hint) != 0U) return std::string("lz4: ") + LZ4F_getErrorName(hint);
         if (one > 0) return sizeMismatch(expected, expected, true);
         if (hint != 0) return std::string("lz4: the compressed data ends inside a frame");
         break;
       }
-      out.resize(grown(out.size(), expected));
+      resizeTo(out, grown(out.size(), expected));
     }
     std::size_t dstSize = out.size() - produced;
     std::size_t srcSize = 0;
-    hint = LZ4F_decompress(ctx.get(), out.data() + produced, &dstSize, nullptr, &srcSize, nullptr);
+    hint = LZ4F_decompress(ctx, out.data() + produced, &dstSize, nullptr, &srcSize, nullptr);
     if (LZ4F_isError(hint) != 0U) return std::string("lz4: ") + LZ4F_getErrorName(hint);
     produced += dstSize;
     if (dstSize == 0 && hint != 0)
       return std::string("lz4: the compressed data ends inside a frame");
   }
   if (produced != expected) return sizeMismatch(produced, expected, false);
-  out.resize(produced);
+  out.setSize(produced);
   return std::nullopt;
 }
 
 }  // namespace
 
-std::optional<std::string> decompress(Compression c, std::string_view in,
-                                      std::uint64_t expectedSize, std::string& out) {
+struct Decompressor::State {
+  ZSTD_DCtx* zstd = nullptr;
+  LZ4F_dctx* lz4 = nullptr;
+  ~State() {
+    ZSTD_freeDCtx(zstd);
+    if (lz4 != nullptr) LZ4F_freeDecompressionContext(lz4);
+  }
+};
+
+Decompressor::Decompressor() : state_(std::make_unique<State>()) {}
+Decompressor::~Decompressor() = default;
+
+std::optional<std::string> Decompressor::decompress(Compression c, std::string_view in,
+                                                    std::uint64_t expectedSize, Buffer& out) {
   switch (c) {
     case Compression::None:
       if (in.size() != expectedSize) return sizeMismatch(in.size(), expectedSize, false);
-      out.assign(in);
+      out.clear();
+      out.append(in);
       return std::nullopt;
     case Compression::Zstd:
-      return decompressZstd(in, expectedSize, out);
+      if (state_->zstd == nullptr) {
+        state_->zstd = ZSTD_createDCtx();
+        if (state_->zstd == nullptr) throw std::bad_alloc();
+      }
+      return decompressZstd(state_->zstd, in, expectedSize, out);
     case Compression::Lz4:
-      return decompressLz4(in, expectedSize, out);
+      if (state_->lz4 == nullptr &&
+          LZ4F_isError(LZ4F_createDecompressionContext(&state_->lz4, LZ4F_VERSION)) != 0U) {
+        state_->lz4 = nullptr;
+        throw std::bad_alloc();
+      }
+      return decompressLz4(state_->lz4, in, expectedSize, out);
   }
   return std::string("unknown compression");
 }

@@ -8,6 +8,8 @@
 #include <string>
 #include <string_view>
 
+#include "mcap/buffer.h"
+
 namespace tactile::mcap {
 
 enum class Compression { None, Zstd, Lz4 };
@@ -37,10 +39,24 @@ class Compressor {
   std::unique_ptr<State> state_;
 };
 
-// Decompresses `in` into `out`, which must come out exactly `expectedSize` bytes long. The output
-// grows only as the decoder produces bytes (never to a size the data does not justify), so a
-// forged size allocates nothing. Returns nullopt on success, else what went wrong ("zstd: ...").
-std::optional<std::string> decompress(Compression c, std::string_view in,
-                                      std::uint64_t expectedSize, std::string& out);
+// Decompresses chunks one after another, reusing its decoders' state (a file holds thousands of
+// chunks). The output grows only as the decoder produces bytes (never to a size the data does not
+// justify), so a forged size allocates nothing.
+class Decompressor {
+ public:
+  Decompressor();
+  ~Decompressor();
+  Decompressor(const Decompressor&) = delete;
+  Decompressor& operator=(const Decompressor&) = delete;
+
+  // Decompresses `in` into `out`, which must come out exactly `expectedSize` bytes long. Returns
+  // nullopt on success, else what went wrong ("zstd: ...").
+  std::optional<std::string> decompress(Compression c, std::string_view in,
+                                        std::uint64_t expectedSize, Buffer& out);
+
+ private:
+  struct State;
+  std::unique_ptr<State> state_;
+};
 
 }  // namespace tactile::mcap

@@ -531,10 +531,10 @@ class Scanner {
     }
     std::string_view plain = records;
     if (*kind != Compression::None) {
-      if (auto problem = decompress(*kind, records, uncompressedSize, chunkBuffer_)) {
+      if (auto problem = decompressor_.decompress(*kind, records, uncompressedSize, chunkBuffer_)) {
         throw Fault{recordsAt, "Chunk record: " + *problem};
       }
-      plain = chunkBuffer_;
+      plain = chunkBuffer_.view();
     } else if (records.size() != uncompressedSize) {
       throw Fault{recordsAt, "Chunk record: " + std::to_string(records.size()) +
                                  " bytes of uncompressed records, its uncompressed_size says " +
@@ -689,13 +689,56 @@ class Scanner {
   ScanResult out_;
   std::array<const Channel*, 65536> channelById_{};
   std::array<const Schema*, 65536> schemaOfChannel_{};
-  std::string chunkBuffer_;
+  Buffer chunkBuffer_;
+  Decompressor decompressor_;
   std::vector<std::pair<std::uint64_t, std::uint64_t>> chunks_;  // (offset, length)
   std::vector<std::uint64_t> chunkIndexAt_;
   std::uint64_t statisticsAt_ = 0;
 };
 
 }  // namespace
+
+std::optional<std::uint64_t> summaryTopicMessageCount(std::string_view bytes,
+                                                      std::string_view topic) {
+  using bytes::getU16;
+  using bytes::getU32;
+  using bytes::getU64;
+  constexpr std::size_t kFooterRecord = 1 + 8 + 8 + 8 + 4;
+  if (bytes.size() < 2 * kMagic.size() + kFooterRecord) return std::nullopt;
+  const std::size_t footer = bytes.size() - kMagic.size() - kFooterRecord;
+  if (static_cast<std::uint8_t>(bytes[footer]) != static_cast<std::uint8_t>(Opcode::Footer))
+    return std::nullopt;
+  const std::uint64_t summaryStart = getU64(bytes.data() + footer + 9);
+  if (summaryStart < kMagic.size() || summaryStart >= footer) return std::nullopt;
+  std::vector<std::uint16_t> channels;
+  std::optional<std::uint64_t> count;
+  std::size_t pos = static_cast<std::size_t>(summaryStart);
+  while (pos + 9 <= footer) {
+    const auto op = static_cast<Opcode>(bytes[pos]);
+    const std::uint64_t len = getU64(bytes.data() + pos + 1);
+    if (len > footer - pos - 9) return std::nullopt;
+    const char* c = bytes.data() + pos + 9;
+    if (op == Opcode::Channel && len >= 8) {
+      const std::uint32_t topicLen = getU32(c + 4);
+      if (topicLen <= len - 8 && std::string_view(c + 8, topicLen) == topic)
+        channels.push_back(getU16(c));
+    } else if (op == Opcode::Statistics && len >= 46) {
+      const std::uint32_t mapLen = getU32(c + 42);
+      if (mapLen > len - 46) return std::nullopt;
+      std::uint64_t n = 0;
+      for (std::size_t at = 0; at + 10 <= mapLen; at += 10) {
+        const std::uint16_t id = getU16(c + 46 + at);
+        if (std::find(channels.begin(), channels.end(), id) != channels.end())
+          n += getU64(c + 46 + at + 2);
+      }
+      count = n;
+    }
+    pos += 9 + static_cast<std::size_t>(len);
+  }
+  // Channel records come before Statistics in a summary; a count without one is no answer.
+  if (channels.empty()) return std::nullopt;
+  return count;
+}
 
 Result<ScanResult> scan(std::string_view bytes, const std::string& fileName,
                         const MessageFn& onMessage) {

@@ -61,6 +61,13 @@ Result<ScanResult> scan(std::string_view bytes, const std::string& fileName,
 // Reads the file at `path` (memory-mapped).
 Result<ScanResult> scanFile(const std::filesystem::path& path, const MessageFn& onMessage = {});
 
+// The message count the summary's Statistics record gives for the channels on `topic`, read
+// without reading the data section (for sizing what a reader builds). Nothing when the file has
+// no summary, no Statistics, or anything in the way is out of bounds; the figure is the file's
+// claim, not checked against its messages.
+std::optional<std::uint64_t> summaryTopicMessageCount(std::string_view bytes,
+                                                      std::string_view topic);
+
 // An error about `file` at byte `offset`: "FILE: byte OFFSET: message".
 Error errorAt(const std::string& file, std::uint64_t offset, const std::string& message);
 

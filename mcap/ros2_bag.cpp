@@ -237,6 +237,20 @@ Result<McapRun> readRos2Bag(std::string_view bytes, const std::string& fileName,
   std::array<std::string, 5> topicOf{};  // by role
   std::array<std::string, 5> typeOf{};
 
+  // Sized once from the summary's count of tactile messages, where it has one that the file's
+  // size makes plausible (the run's columns take at most four times the file), instead of growing
+  // step by step (copies and fresh pages of a run of hundreds of megabytes).
+  if (const auto expected = summaryTopicMessageCount(bytes, mapping.tactile.topic)) {
+    const std::uint64_t bytesPerStep = kValuesPerStep * sizeof(double);
+    if (*expected > 0 && *expected <= 4 * static_cast<std::uint64_t>(bytes.size()) / bytesPerStep) {
+      const auto n = static_cast<std::size_t>(*expected);
+      run.sensors.reserve(n * kValuesPerStep);
+      stepTimes.reserve(n);
+      if (mapping.pose) poses.reserve(n);
+      if (mapping.command) commands.reserve(n);
+    }
+  }
+
   auto onMessage = [&](const MessageView& m, const Channel& channel,
                        const Schema* schema) -> Status {
     Role& role = roles[m.channelId];
