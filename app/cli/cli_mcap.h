@@ -9,7 +9,8 @@
 
 namespace tactile::cli {
 
-void registerMcapVerbs(CLI::App& app);
+// `mcap info` and `bench mcap`.
+void registerMcapVerbs(CLI::App& app, CLI::App& bench);
 
 // `tactile import --db DB FILE.mcap [--mapping MAP.json] [--name N] [--json]`.
 int runMcapImport(const std::string& db, const std::vector<std::string>& files,

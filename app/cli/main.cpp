@@ -36,7 +36,7 @@ int main(int argc, char** argv) {
   registerStorageVerbs(app, *bench);
   registerCatalogVerbs(app);
   registerWorkspaceVerbs(app);
-  registerMcapVerbs(app);
+  registerMcapVerbs(app, *bench);
 
   try {
     app.parse(argc, argv);
