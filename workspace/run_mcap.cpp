@@ -153,13 +153,15 @@ storage::ImportOutcome importMcap(storage::RunDatabase& db, const McapImportRequ
   }
   const std::string name =
       request.name.empty() ? nameFromFileStem(request.file.stem().string()) : request.name;
-  if (request.mapping) {
-    auto mappingText = readFileText(*request.mapping);
+  if (request.mapping || request.mappingText) {
+    auto mappingText = request.mapping ? readFileText(*request.mapping)
+                                       : Result<std::string>(*request.mappingText);
     if (!mappingText) {
       failed.message = mappingText.errorText();
       return failed;
     }
-    auto mapping = mcap::parseMapping(mappingText.value(), request.mapping->string());
+    auto mapping = mcap::parseMapping(mappingText.value(),
+                                      request.mapping ? request.mapping->string() : "the mapping");
     if (!mapping) {
       failed.message = mapping.errorText();
       return failed;

@@ -46,6 +46,8 @@ struct McapImportRequest {
   std::filesystem::path file;
   // A mapping file for a ROS 2 bag; none for an MCAP export of this program.
   std::optional<std::filesystem::path> mapping;
+  // The mapping's text itself (the workbench's mapping dialog); used when `mapping` is not set.
+  std::optional<std::string> mappingText;
   std::string name;  // empty: the file's stem
   storage::SceneResolver sceneResolver;
 };
