@@ -18,9 +18,36 @@ TEST(McapCrc, KnownAnswers) {
   EXPECT_EQ(crc32("123456789"), 0xCBF43926U);
   EXPECT_EQ(crc32(""), 0U);
   EXPECT_EQ(crc32("The quick brown fox jumps over the lazy dog"), 0x414FA339U);
-  // Continuing over pieces equals one pass (the tail loop and the eight-byte loop both run).
+  // Continuing over pieces equals one pass (the tail loop and the sixteen-byte loop both run).
   const std::string text = "0123456789abcdefghijklmnopqrstuvwxyz-0123456789";
   EXPECT_EQ(crc32(text.substr(13), crc32(text.substr(0, 13))), crc32(text));
+}
+
+TEST(McapCrc, LongBuffersEqualTheBitwiseDefinition) {
+  // Long buffers take the three-stream path; every length around its thresholds and pieces
+  // continued across it give the CRC of the definition, bit by bit.
+  auto bitwise = [](std::string_view s) {
+    std::uint32_t c = 0xFFFFFFFFU;
+    for (const char ch : s) {
+      c ^= static_cast<unsigned char>(ch);
+      for (int k = 0; k < 8; ++k)
+        c = (c & 1U) != 0 ? 0xEDB88320U ^ (c >> 1) : c >> 1;
+    }
+    return ~c;
+  };
+  std::string data(70000, '\0');
+  std::uint32_t x = 12345;
+  for (char& ch : data) {
+    x = x * 1103515245U + 12345U;
+    ch = static_cast<char>(x >> 24);
+  }
+  for (const std::size_t n : {16383UL, 16384UL, 16385UL, 16391UL, 50001UL, 70000UL}) {
+    const std::string_view piece(data.data(), n);
+    EXPECT_EQ(crc32(piece), bitwise(piece)) << n << " bytes";
+  }
+  const std::string_view all(data);
+  EXPECT_EQ(crc32(all.substr(20000), crc32(all.substr(0, 20000))), bitwise(all));
+  EXPECT_EQ(crc32(all.substr(69990), crc32(all.substr(0, 69990))), bitwise(all));
 }
 
 // Writes a file with two schemas, three channels (one without a schema), messages on each,
