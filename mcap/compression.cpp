@@ -34,11 +34,17 @@ struct Compressor::State {
   ~State() { ZSTD_freeCCtx(zstd); }
 };
 
-Compressor::Compressor(Compression c, int level)
-    : kind_(c), level_(level), state_(std::make_unique<State>()) {
+Compressor::Compressor(Compression c, int level, int hashLog)
+    : kind_(c), state_(std::make_unique<State>()) {
   if (c == Compression::Zstd) {
     state_->zstd = ZSTD_createCCtx();
     if (state_->zstd == nullptr) throw std::bad_alloc();
+    ZSTD_CCtx_setParameter(state_->zstd, ZSTD_c_compressionLevel, level);
+    if (hashLog != 0) {
+      const ZSTD_bounds b = ZSTD_cParam_getBounds(ZSTD_c_hashLog);
+      ZSTD_CCtx_setParameter(state_->zstd, ZSTD_c_hashLog,
+                             std::clamp(hashLog, b.lowerBound, b.upperBound));
+    }
   }
 }
 
@@ -59,7 +65,7 @@ std::string_view Compressor::compress(std::string_view in) {
   char* out = state_->buffer.get();
   std::size_t n = 0;
   if (kind_ == Compression::Zstd) {
-    n = ZSTD_compressCCtx(state_->zstd, out, bound, in.data(), in.size(), level_);
+    n = ZSTD_compress2(state_->zstd, out, bound, in.data(), in.size());
     if (ZSTD_isError(n) != 0U) {
       throw std::runtime_error(std::string("zstd: ") + ZSTD_getErrorName(n));
     }

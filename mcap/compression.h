@@ -22,8 +22,9 @@ std::string_view compressionName(Compression c);
 // the library fails (it does not for valid input; out of memory is std::bad_alloc).
 class Compressor {
  public:
-  // `level`: zstd's level (negative levels are its fast modes); unused for lz4 and none.
-  Compressor(Compression c, int level);
+  // `level`: zstd's level (negative levels are its fast modes); `hashLog`: zstd's hash table
+  // size (log2 of entries; 0: the level's own). Both unused for lz4 and none.
+  Compressor(Compression c, int level, int hashLog = 0);
   ~Compressor();
   Compressor(const Compressor&) = delete;
   Compressor& operator=(const Compressor&) = delete;
@@ -34,7 +35,6 @@ class Compressor {
 
  private:
   Compression kind_;
-  int level_;
   struct State;
   std::unique_ptr<State> state_;
 };

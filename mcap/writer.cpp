@@ -60,7 +60,8 @@ void putChannel(Buffer& out, const Channel& c) {
 
 Writer::Writer(WriterOptions options, Sink sink)
     : options_(std::move(options)), sink_(std::move(sink)) {
-  compressor_ = std::make_unique<Compressor>(options_.compression, options_.zstdLevel);
+  compressor_ =
+      std::make_unique<Compressor>(options_.compression, options_.zstdLevel, options_.zstdHashLog);
   file_.append(kMagic);
   const std::size_t at = openRecord(file_, Opcode::Header);
   putString(file_, options_.profile);

@@ -229,6 +229,7 @@ void writeBenchBag(const RunData& run, const std::filesystem::path& file) {
   o.profile = "ros2";
   o.library = "tactile bench";
   o.zstdLevel = 3;
+  o.zstdHashLog = 0;  // the level's own, as the reference writer's zstd
   o.chunkBytes = 16 * 1024;
   AtomicFileWriter out;
   if (Status opened = out.open(file); !opened) throw std::runtime_error(opened.errorText());
