@@ -6,6 +6,7 @@
 #include <charconv>
 #include <cmath>
 #include <limits>
+#include <stdexcept>
 
 #include "mcap/bytes.h"
 #include "mcap/json_out.h"
@@ -204,14 +205,16 @@ namespace {
 
 bool writeRun(Writer& w, const RunExport& what, const ExportProgress& progress) {
   const RunData& run = *what.run;
+  const std::size_t steps = what.window ? what.steps : run.stepCount();
+  const bool hasTruth = what.window ? what.truth : run.hasTruth();
   const std::optional<double> runDt = run.dtSeconds();
   const double dt = runDt && *runDt > 0 ? *runDt : kDefaultExportDt;
 
   // Metadata first, so a reader knows the file before its messages.
   KeyValues exportInfo{{"format", std::string(kRunMcapFormat)},
                        {"run", what.name},
-                       {"steps", std::to_string(run.stepCount())},
-                       {"truth", run.hasTruth() ? "yes" : "no"},
+                       {"steps", std::to_string(steps)},
+                       {"truth", hasTruth ? "yes" : "no"},
                        {"scene_units_per_metre", "1000"}};
   if (!runDt) exportInfo.emplace_back("dt_assumed", "0.1");
   {
@@ -238,7 +241,7 @@ bool writeRun(Writer& w, const RunExport& what, const ExportProgress& progress) 
       classesSchemaId = w.addSchema("tactile.Classes", "jsonschema", classesSchema());
     return classesSchemaId;
   };
-  const std::uint16_t truthCh = run.hasTruth() ? w.addChannel(classes(), "/truth", "json") : 0;
+  const std::uint16_t truthCh = hasTruth ? w.addChannel(classes(), "/truth", "json") : 0;
   std::vector<std::uint16_t> labelChs;
   if (!what.labels.empty()) {
     const std::uint16_t schema = w.addSchema("tactile.Labels", "jsonschema", labelsSchema());
@@ -272,16 +275,29 @@ bool writeRun(Writer& w, const RunExport& what, const ExportProgress& progress) 
     quoted[c] = "\"" + std::string(kContactClassNames[c]) + "\"";
   auto className = [&](int c) -> std::string_view { return quoted[static_cast<std::size_t>(c)]; };
 
-  const std::size_t steps = run.stepCount();
   const std::size_t extras = run.extraColumns.size();
+  // The steps: the whole run, or a window of it at a time (`at` is the window's first step).
+  const RunData* win = &run;
+  std::size_t at = 0;
   for (std::size_t k = 0; k < steps; ++k) {
+    if (k - at >= win->stepCount()) {
+      if (!what.window) throw std::logic_error("the run has fewer steps than it says");
+      win = what.window(k);
+      at = k;
+      if (win == nullptr || win->stepCount() == 0 ||
+          win->sensors.size() < win->stepCount() * kValuesPerStep ||
+          (hasTruth && win->truth.size() < win->stepCount() * kGroupCount) ||
+          win->extraValues.size() < win->stepCount() * extras)
+        throw std::runtime_error("step " + std::to_string(k) + ": the run's window holds no steps");
+    }
+    const std::size_t i = k - at;  // the step in the window
     if (progress && k % kProgressSteps == 0 && !progress(k, steps)) return false;
     const std::uint64_t t = stepTime(k, dt);
     const auto seq = static_cast<std::uint32_t>(k);
     w.addMessageWith(tactileCh, seq, t, t, [&](Appender& out) {
       out.lit("{\"step\":");
       out.integer(k);
-      const double* v = run.stepSensors(k);
+      const double* v = win->stepSensors(i);
       for (const GroupInfo& g : kSensorGroups) {
         out.text(keys[static_cast<std::size_t>(groupIndex(g.group))]);
         out.lit("{\"n\":[");
@@ -302,24 +318,24 @@ bool writeRun(Writer& w, const RunExport& what, const ExportProgress& progress) 
       out.lit("{\"step\":");
       out.integer(k);
       out.lit(",\"x\":");
-      out.number(run.x[k]);
+      out.number(win->x[i]);
       out.lit(",\"y\":");
-      out.number(run.y[k]);
+      out.number(win->y[i]);
       out.lit(",\"theta\":");
-      out.number(run.theta[k]);
+      out.number(win->theta[i]);
       out.lit(",\"v\":");
-      out.number(run.v[k]);
+      out.number(win->v[i]);
       out.lit(",\"omega\":");
-      out.number(run.omega[k]);
-      out.text(run.blocked[k] != 0 ? ",\"blocked\":true}" : ",\"blocked\":false}");
+      out.number(win->omega[i]);
+      out.text(win->blocked[i] != 0 ? ",\"blocked\":true}" : ",\"blocked\":false}");
     });
     w.addMessageWith(poseCh, seq, t, t, [&](Appender& out) {
       out.lit("{\"timestamp\":");
       timestamp(out, t);
       out.lit(",\"frame_id\":\"scene\",\"pose\":{\"position\":");
-      position(out, run.x[k] / kSceneUnitsPerMetre, run.y[k] / kSceneUnitsPerMetre);
+      position(out, win->x[i] / kSceneUnitsPerMetre, win->y[i] / kSceneUnitsPerMetre);
       out.lit(",\"orientation\":");
-      yawQuaternion(out, run.theta[k]);
+      yawQuaternion(out, win->theta[i]);
       out.lit("}}");
     });
     if (truthCh != 0) {
@@ -329,7 +345,7 @@ bool writeRun(Writer& w, const RunExport& what, const ExportProgress& progress) 
         for (int g = 0; g < kGroupCount; ++g) {
           out.text(keys[static_cast<std::size_t>(g)]);
           out.text(className(
-              static_cast<int>(run.truth[k * kGroupCount + static_cast<std::size_t>(g)])));
+              static_cast<int>(win->truth[i * kGroupCount + static_cast<std::size_t>(g)])));
         }
         out.put('}');
       });
@@ -394,7 +410,7 @@ bool writeRun(Writer& w, const RunExport& what, const ExportProgress& progress) 
           out.put(',');
           out.string(run.extraColumns[c]);
           out.put(':');
-          out.string(run.extraValues[k * extras + c]);
+          out.string(win->extraValues[i * extras + c]);
         }
         out.put('}');
       });

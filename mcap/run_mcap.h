@@ -50,7 +50,14 @@ struct DecisionTrack {
 };
 
 struct RunExport {
+  // The whole run; or, with `window`, its metadata and extra column names (its steps unused).
   const RunData* run = nullptr;
+  // Optional: the steps a window at a time (a run of a million steps is never whole in memory).
+  // Called with the first step not yet written; returns a run whose steps are that step and the
+  // ones after it (at least one; the same columns). Valid until the next call. May throw.
+  std::function<const RunData*(std::size_t first)> window;
+  std::size_t steps = 0;  // with `window`: the run's step count
+  bool truth = false;     // with `window`: whether the run has truth
   std::string name;
   std::optional<std::string> sceneJson;
   std::vector<LabelTrack> labels;

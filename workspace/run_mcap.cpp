@@ -55,13 +55,30 @@ Result<McapExportReport> exportRunMcap(Workspace& workspace, const McapExportReq
   if (Status writable = checkWritable(request.out); !writable) return writable.error();
   auto info = db.findRun(request.run);
   if (!info) return info.error();
-  auto run = db.loadRun(info->id);
+  // The steps are read a window at a time as the export goes (a 1,000,000-step run would take
+  // over 700 MB whole); the first window also gives the metadata and columns.
+  constexpr std::int64_t kWindowSteps = 65536;
+  auto run = db.loadWindow(info->id, 0, kWindowSteps);
   if (!run) return run.error();
+  const std::size_t steps = static_cast<std::size_t>(info->stepCount);
+  std::optional<storage::RunWindow> window;
+  struct WindowFailed {
+    Error error;
+  };
   McapExportReport report;
   report.run = info->name;
-  report.steps = static_cast<std::int64_t>(run->stepCount());
+  report.steps = info->stepCount;
   mcap::RunExport what;
-  what.run = &run.value();
+  what.run = &run->data;
+  what.steps = steps;
+  what.truth = info->hasTruth;
+  what.window = [&](std::size_t first) -> const RunData* {
+    if (first == 0) return &run->data;
+    auto next = db.loadWindow(info->id, static_cast<std::int64_t>(first), kWindowSteps);
+    if (!next) throw WindowFailed{next.error()};
+    window = std::move(next.value());
+    return &window->data;
+  };
   what.name = info->name;
   what.library = "tactile " + std::string(programVersion());
   auto scene = db.sceneJson(info->id);
@@ -72,7 +89,7 @@ Result<McapExportReport> exportRunMcap(Workspace& workspace, const McapExportReq
                               "' is not stored; the export has no /scene");
   }
   for (const std::string& set : request.labelSets) {
-    auto track = labelTrack(db, set, info->id, run->stepCount());
+    auto track = labelTrack(db, set, info->id, steps);
     if (!track) return track.error();
     what.labels.push_back(std::move(track.value()));
   }
@@ -83,7 +100,7 @@ Result<McapExportReport> exportRunMcap(Workspace& workspace, const McapExportReq
     if (!classified) return classified.error();
     mcap::DecisionTrack track;
     track.model = request.model;
-    track.classes.assign(run->stepCount() * kGroupCount, -1);
+    track.classes.assign(steps * kGroupCount, -1);
     bool allOnline = true;
     for (int g = 0; g < kGroupCount; ++g) {
       const analysis::GroupClassification& gc =
@@ -91,7 +108,7 @@ Result<McapExportReport> exportRunMcap(Workspace& workspace, const McapExportReq
       const bool online = !gc.online.empty();
       allOnline = allOnline && (online || gc.model == nullptr);
       const analysis::Decisions& decisions = online ? gc.online : gc.decided;
-      for (std::size_t k = 0; k < run->stepCount(); ++k) {
+      for (std::size_t k = 0; k < steps; ++k) {
         const std::string name = gc.nameOf(decisions, k);
         if (const auto cls = parseContactClass(name)) {
           track.classes[k * kGroupCount + static_cast<std::size_t>(g)] =
@@ -126,17 +143,21 @@ Result<McapExportReport> exportRunMcap(Workspace& workspace, const McapExportReq
     }
   } catch (const SinkFailed&) {
     return *writeError;
+  } catch (const WindowFailed& e) {
+    return e.error;
+  } catch (const std::runtime_error& e) {
+    return Error(request.out.string(), e.what());
   } catch (const std::bad_alloc&) {
     return Error(request.out.string(),
                  "out of memory: the run is too large for this machine's memory");
   }
   if (Status committed = file.commit(); !committed) return committed.error();
   report.topics = {"/tactile", "/robot/state", "/robot/pose"};
-  if (run->hasTruth()) report.topics.push_back("/truth");
+  if (info->hasTruth) report.topics.push_back("/truth");
   for (const std::string& set : request.labelSets)
     report.topics.push_back("/labels/" + set);
   if (!request.model.empty()) report.topics.push_back("/decisions/" + request.model);
-  if (!run->extraColumns.empty()) report.topics.push_back("/extra");
+  if (!run->data.extraColumns.empty()) report.topics.push_back("/extra");
   if (what.sceneJson) report.topics.push_back("/scene");
   return report;
 }
