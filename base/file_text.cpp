@@ -225,18 +225,29 @@ Status checkNotAnInput(const std::filesystem::path& output,
   return {};
 }
 
-Status writeFileAtomically(const std::filesystem::path& path, std::string_view text) {
+AtomicFileWriter::~AtomicFileWriter() {
+  abandon();
+}
+
+void AtomicFileWriter::abandon() {
+  if (fd_ >= 0) ::close(fd_);
+  fd_ = -1;
+  if (!temp_.empty()) ::unlink(temp_.c_str());
+  temp_.clear();
+}
+
+Status AtomicFileWriter::open(const std::filesystem::path& path) {
+  abandon();
+  path_ = path;
+  error_ = 0;
   if (path.empty()) return Error("an output path is empty");
   const TargetInfo target = classifyTarget(path);
   if (target.kind == Target::Refuse) return Error(path.string(), target.refusal);
   if (Status notInput = checkNotAnInput(path, {}); !notInput) return notInput;
   if (target.kind == Target::Stream) {
-    const int fd = ::open(path.c_str(), O_WRONLY | O_CLOEXEC | O_NOCTTY |
-                                            (S_ISREG(target.info.st_mode) ? O_TRUNC : 0));
-    if (fd < 0) return Error(path.string(), "cannot write: " + errnoText(errno));
-    const int error = writeAll(fd, text);
-    ::close(fd);
-    if (error != 0) return Error(path.string(), "write failed: " + errnoText(error));
+    fd_ = ::open(path.c_str(),
+                 O_WRONLY | O_CLOEXEC | O_NOCTTY | (S_ISREG(target.info.st_mode) ? O_TRUNC : 0));
+    if (fd_ < 0) return Error(path.string(), "cannot write: " + errnoText(errno));
     return {};
   }
   // The temporary file: in the target's folder (so the rename is atomic), created afresh with
@@ -245,40 +256,71 @@ Status writeFileAtomically(const std::filesystem::path& path, std::string_view t
   static std::atomic<unsigned> counter{0};
   std::random_device random;
   std::filesystem::path temp;
-  int fd = -1;
-  for (int attempt = 0; attempt < 64 && fd < 0; ++attempt) {
+  for (int attempt = 0; attempt < 64 && fd_ < 0; ++attempt) {
     char suffix[48];
     std::snprintf(suffix, sizeof suffix, ".tmp-%d-%u-%08x", static_cast<int>(::getpid()), counter++,
                   random());
     temp = path;
     temp += suffix;
-    fd = ::open(temp.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_NOFOLLOW | O_CLOEXEC, 0666);
-    if (fd < 0 && errno != EEXIST) {
+    fd_ = ::open(temp.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_NOFOLLOW | O_CLOEXEC, 0666);
+    if (fd_ < 0 && errno != EEXIST) {
       return Error(path.string(), "cannot write: " + errnoText(errno));
     }
   }
-  if (fd < 0) return Error(path.string(), "cannot create a temporary file beside it");
+  if (fd_ < 0) return Error(path.string(), "cannot create a temporary file beside it");
+  temp_ = temp;
   // The file replaced keeps its permission bits (and, for root, its owner).
   if (target.exists) {
-    (void)::fchmod(fd, target.info.st_mode & 07777);
-    if (::geteuid() == 0) (void)::fchown(fd, target.info.st_uid, target.info.st_gid);
-  }
-  int error = writeAll(fd, text);
-  if (error == 0 && ::fsync(fd) != 0) error = errno;
-  if (::close(fd) != 0 && error == 0) error = errno;
-  if (error != 0) {
-    ::unlink(temp.c_str());
-    if (error == ENOSPC || error == EFBIG || error == EDQUOT) {
-      return Error(path.string(), "write failed (" + errnoText(error) + "); left unchanged");
-    }
-    return Error(path.string(), "write failed: " + errnoText(error) + "; left unchanged");
-  }
-  if (::rename(temp.c_str(), path.c_str()) != 0) {
-    error = errno;
-    ::unlink(temp.c_str());
-    return Error(path.string(), "cannot replace the file: " + errnoText(error));
+    (void)::fchmod(fd_, target.info.st_mode & 07777);
+    if (::geteuid() == 0) (void)::fchown(fd_, target.info.st_uid, target.info.st_gid);
   }
   return {};
+}
+
+Status AtomicFileWriter::write(std::string_view bytes) {
+  if (fd_ < 0) return Error(path_.string(), "write failed: the file is not open");
+  if (error_ == 0) error_ = writeAll(fd_, bytes);
+  if (error_ != 0) return failure();
+  return {};
+}
+
+Status AtomicFileWriter::failure() {
+  const int error = error_;
+  const bool stream = temp_.empty();
+  abandon();
+  if (stream) return Error(path_.string(), "write failed: " + errnoText(error));
+  if (error == ENOSPC || error == EFBIG || error == EDQUOT) {
+    return Error(path_.string(), "write failed (" + errnoText(error) + "); left unchanged");
+  }
+  return Error(path_.string(), "write failed: " + errnoText(error) + "; left unchanged");
+}
+
+Status AtomicFileWriter::commit() {
+  if (fd_ < 0) return Error(path_.string(), "write failed: the file is not open");
+  if (temp_.empty()) {
+    // A stream: written in place.
+    ::close(fd_);
+    fd_ = -1;
+    return {};
+  }
+  if (error_ == 0 && ::fsync(fd_) != 0) error_ = errno;
+  if (::close(fd_) != 0 && error_ == 0) error_ = errno;
+  fd_ = -1;
+  if (error_ != 0) return failure();
+  if (::rename(temp_.c_str(), path_.c_str()) != 0) {
+    const int error = errno;
+    abandon();
+    return Error(path_.string(), "cannot replace the file: " + errnoText(error));
+  }
+  temp_.clear();
+  return {};
+}
+
+Status writeFileAtomically(const std::filesystem::path& path, std::string_view text) {
+  AtomicFileWriter file;
+  if (Status opened = file.open(path); !opened) return opened;
+  if (Status written = file.write(text); !written) return written;
+  return file.commit();
 }
 
 Status checkWritable(const std::filesystem::path& path) {

@@ -55,6 +55,32 @@ Status checkWritable(const std::filesystem::path& path);
 // error names the file.
 Status writeFileAtomically(const std::filesystem::path& path, std::string_view text);
 
+// The same, written a piece at a time (a file too large to build in memory first): open(), any
+// number of write() calls, commit(). Until commit() the file at `path` is untouched; a failed
+// write, or a writer destroyed before commit(), removes the temporary file. A stream is written
+// in place as the pieces come. Errors name the file, as writeFileAtomically's do.
+class AtomicFileWriter {
+ public:
+  AtomicFileWriter() = default;
+  ~AtomicFileWriter();
+  AtomicFileWriter(const AtomicFileWriter&) = delete;
+  AtomicFileWriter& operator=(const AtomicFileWriter&) = delete;
+
+  Status open(const std::filesystem::path& path);
+  Status write(std::string_view bytes);
+  Status commit();
+  // Drops what was written (a cancelled export); the file at the path stays as it was.
+  void abandon();
+
+ private:
+  Status failure();
+
+  std::filesystem::path path_;
+  std::filesystem::path temp_;  // empty for a stream
+  int fd_ = -1;
+  int error_ = 0;
+};
+
 // Remembers that this process read `path` (by device and inode) once guardInputFiles(true) ran;
 // FileText::load, readFileText and the run database's open call it, so no output of a command
 // replaces one of its inputs. Off by default: a program that keeps running (the workbench) may

@@ -10,6 +10,7 @@ TACTILE_PACKAGES=(
   libqcustomplot-dev libqcustomplot2.1-qt6
   libeigen3-dev libsqlite3-dev sqlite3 libpq-dev postgresql nlohmann-json3-dev libcli11-dev
   libgtest-dev libgmock-dev libbenchmark-dev
+  libzstd-dev liblz4-dev nodejs
   python3-dev pybind11-dev python3-numpy python3-pandas python3-sklearn python3-pytest
   xvfb xauth fonts-noto-cjk qt6-translations-l10n locales
 )
@@ -41,6 +42,25 @@ tactile_install_deps() {
   else
     echo "These Debian packages are missing. Install them as root, then run this script again:" >&2
     echo "  apt-get install $missing" >&2
+    return 1
+  fi
+}
+
+# npm for the interoperability tests (tests/interop): Debian's `npm` package, unless the
+# installed nodejs brings its own npm (some nodejs builds do, and then conflict with Debian's npm).
+tactile_install_npm() {
+  command -v npm > /dev/null 2>&1 && return 0
+  local apt=(env DEBIAN_FRONTEND=noninteractive apt-get)
+  echo "Installing the Debian package npm"
+  if [ "$(id -u)" -eq 0 ]; then
+    "${apt[@]}" update -qq
+    "${apt[@]}" install -y -qq --no-install-recommends npm
+  elif command -v sudo >/dev/null 2>&1 && sudo -n true 2>/dev/null; then
+    sudo "${apt[@]}" update -qq
+    sudo "${apt[@]}" install -y -qq --no-install-recommends npm
+  else
+    echo "npm is missing. Install it as root, then run this script again:" >&2
+    echo "  apt-get install npm" >&2
     return 1
   fi
 }

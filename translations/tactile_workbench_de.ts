@@ -30,6 +30,10 @@
         <source>none</source>
         <translation>keins</translation>
     </message>
+    <message>
+        <source>(none)</source>
+        <translation>(keins)</translation>
+    </message>
 </context>
 <context>
     <name>Shortcuts</name>
@@ -1103,6 +1107,190 @@ Forschungsumgebung für die taktile Navigation mobiler Roboter.</translation>
     <message>
         <source>New &amp;Simulation...</source>
         <translation>Neue &amp;Simulation...</translation>
+    </message>
+    <message>
+        <source>Import &amp;MCAP...</source>
+        <translation>&amp;MCAP importieren...</translation>
+    </message>
+    <message>
+        <source>Export &amp;Run</source>
+        <translation>&amp;Lauf exportieren</translation>
+    </message>
+    <message>
+        <source>&amp;MCAP...</source>
+        <translation>&amp;MCAP...</translation>
+    </message>
+    <message>
+        <source>Drop one MCAP file at a time, on its own.</source>
+        <translation>Bitte nur eine MCAP-Datei auf einmal und allein ablegen.</translation>
+    </message>
+    <message>
+        <source>An MCAP export or import is already running</source>
+        <translation>Ein MCAP-Export oder -Import läuft bereits</translation>
+    </message>
+    <message>
+        <source>Exporting &apos;%1&apos; to %2...</source>
+        <translation>„%1“ wird nach %2 exportiert...</translation>
+    </message>
+    <message>
+        <source>MCAP export cancelled</source>
+        <translation>MCAP-Export abgebrochen</translation>
+    </message>
+    <message>
+        <source>Export Run as MCAP</source>
+        <translation>Lauf als MCAP exportieren</translation>
+    </message>
+    <message numerus="yes">
+        <source>Run written to %1 (%n step(s))</source>
+        <translation>
+            <numerusform>Lauf nach %1 geschrieben (%n Schritt)</numerusform>
+            <numerusform>Lauf nach %1 geschrieben (%n Schritte)</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Import MCAP</source>
+        <translation>MCAP importieren</translation>
+    </message>
+    <message>
+        <source>MCAP files (*.mcap);;All files (*)</source>
+        <translation>MCAP-Dateien (*.mcap);;Alle Dateien (*)</translation>
+    </message>
+    <message>
+        <source>Importing %1...</source>
+        <translation>%1 wird importiert...</translation>
+    </message>
+    <message numerus="yes">
+        <source>Imported run &apos;%1&apos; (%n step(s))</source>
+        <translation>
+            <numerusform>Lauf „%1“ importiert (%n Schritt)</numerusform>
+            <numerusform>Lauf „%1“ importiert (%n Schritte)</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>tactile::gui::McapExportDialog</name>
+    <message>
+        <source>Export Run as MCAP</source>
+        <translation>Lauf als MCAP exportieren</translation>
+    </message>
+    <message>
+        <source>Run:</source>
+        <translation>Lauf:</translation>
+    </message>
+    <message>
+        <source>Label sets:</source>
+        <translation>Labelsätze:</translation>
+    </message>
+    <message>
+        <source>none in this database</source>
+        <translation>keine in dieser Datenbank</translation>
+    </message>
+    <message>
+        <source>(none)</source>
+        <translation>(keins)</translation>
+    </message>
+    <message>
+        <source>The model&apos;s online decisions go on /decisions/MODEL</source>
+        <translation>Die Online-Entscheidungen des Modells kommen auf /decisions/MODEL</translation>
+    </message>
+    <message>
+        <source>Model decisions:</source>
+        <translation>Modellentscheidungen:</translation>
+    </message>
+    <message>
+        <source>Browse...</source>
+        <translation>Durchsuchen...</translation>
+    </message>
+    <message>
+        <source>File:</source>
+        <translation>Datei:</translation>
+    </message>
+    <message>
+        <source>Opens in Foxglove and Lichtblick: the readings, pose, command, truth, the chosen label sets and the model&apos;s decisions, one message per step, and the scene&apos;s walls.</source>
+        <translation>Öffnet sich in Foxglove und Lichtblick: Messwerte, Pose, Befehl, Wahrheit, die gewählten Labelsätze und die Entscheidungen des Modells, eine Nachricht je Schritt, und die Wände der Szene.</translation>
+    </message>
+    <message>
+        <source>Export</source>
+        <translation>Exportieren</translation>
+    </message>
+    <message>
+        <source>MCAP files (*.mcap);;All files (*)</source>
+        <translation>MCAP-Dateien (*.mcap);;Alle Dateien (*)</translation>
+    </message>
+</context>
+<context>
+    <name>tactile::gui::McapMappingDialog</name>
+    <message>
+        <source>Import ROS 2 Bag</source>
+        <translation>ROS-2-Bag importieren</translation>
+    </message>
+    <message>
+        <source>&lt;b&gt;%1&lt;/b&gt; is not an export of this program. Choose which of its topics make the run: one step per message on the tactile topic; pose and command are the latest messages before it.</source>
+        <translation>&lt;b&gt;%1&lt;/b&gt; ist kein Export dieses Programms. Wählen Sie, welche seiner Topics den Lauf bilden: ein Schritt je Nachricht auf dem Tast-Topic; Pose und Befehl sind die letzten Nachrichten davor.</translation>
+    </message>
+    <message>
+        <source>Topic</source>
+        <translation>Topic</translation>
+    </message>
+    <message>
+        <source>Schema</source>
+        <translation>Schema</translation>
+    </message>
+    <message>
+        <source>Message encoding</source>
+        <translation>Nachrichtenkodierung</translation>
+    </message>
+    <message>
+        <source>Messages</source>
+        <translation>Nachrichten</translation>
+    </message>
+    <message>
+        <source>44 normals, then 44 shears</source>
+        <translation>44 Normalwerte, dann 44 Scherwerte</translation>
+    </message>
+    <message>
+        <source>interleaved: n0, s0, n1, s1, ...</source>
+        <translation>verschränkt: n0, s0, n1, s1, ...</translation>
+    </message>
+    <message>
+        <source>Scene units per bag unit: 1000 for a bag in metres (scenes are in mm)</source>
+        <translation>Szeneneinheiten je Bag-Einheit: 1000 für ein Bag in Metern (Szenen sind in mm)</translation>
+    </message>
+    <message>
+        <source>Tactile readings:</source>
+        <translation>Tastwerte:</translation>
+    </message>
+    <message>
+        <source>Layout of the 88 values:</source>
+        <translation>Anordnung der 88 Werte:</translation>
+    </message>
+    <message>
+        <source>Pose:</source>
+        <translation>Pose:</translation>
+    </message>
+    <message>
+        <source>Command:</source>
+        <translation>Befehl:</translation>
+    </message>
+    <message>
+        <source>Blocked flag:</source>
+        <translation>Blockiert-Flag:</translation>
+    </message>
+    <message>
+        <source>Scale:</source>
+        <translation>Maßstab:</translation>
+    </message>
+    <message>
+        <source>Run name:</source>
+        <translation>Laufname:</translation>
+    </message>
+    <message>
+        <source>Import</source>
+        <translation>Importieren</translation>
+    </message>
+    <message>
+        <source>Channels in the file:</source>
+        <translation>Kanäle in der Datei:</translation>
     </message>
 </context>
 <context>

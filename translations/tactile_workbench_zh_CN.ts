@@ -30,6 +30,10 @@
         <source>none</source>
         <translation>无</translation>
     </message>
+    <message>
+        <source>(none)</source>
+        <translation>(无)</translation>
+    </message>
 </context>
 <context>
     <name>Shortcuts</name>
@@ -1094,6 +1098,188 @@ Research workbench for tactile-based mobile-robot navigation.</source>
     <message>
         <source>New &amp;Simulation...</source>
         <translation>新建模拟(&amp;S)...</translation>
+    </message>
+    <message>
+        <source>Import &amp;MCAP...</source>
+        <translation>导入 &amp;MCAP...</translation>
+    </message>
+    <message>
+        <source>Export &amp;Run</source>
+        <translation>导出运行(&amp;R)</translation>
+    </message>
+    <message>
+        <source>&amp;MCAP...</source>
+        <translation>&amp;MCAP...</translation>
+    </message>
+    <message>
+        <source>Drop one MCAP file at a time, on its own.</source>
+        <translation>请一次只拖放一个 MCAP 文件，且不要与其他文件一起拖放。</translation>
+    </message>
+    <message>
+        <source>An MCAP export or import is already running</source>
+        <translation>已有 MCAP 导出或导入正在进行</translation>
+    </message>
+    <message>
+        <source>Exporting &apos;%1&apos; to %2...</source>
+        <translation>正在将“%1”导出到 %2...</translation>
+    </message>
+    <message>
+        <source>MCAP export cancelled</source>
+        <translation>MCAP 导出已取消</translation>
+    </message>
+    <message>
+        <source>Export Run as MCAP</source>
+        <translation>将运行导出为 MCAP</translation>
+    </message>
+    <message numerus="yes">
+        <source>Run written to %1 (%n step(s))</source>
+        <translation>
+            <numerusform>运行已写入 %1（%n 步）</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Import MCAP</source>
+        <translation>导入 MCAP</translation>
+    </message>
+    <message>
+        <source>MCAP files (*.mcap);;All files (*)</source>
+        <translation>MCAP 文件 (*.mcap);;所有文件 (*)</translation>
+    </message>
+    <message>
+        <source>Importing %1...</source>
+        <translation>正在导入 %1...</translation>
+    </message>
+    <message numerus="yes">
+        <source>Imported run &apos;%1&apos; (%n step(s))</source>
+        <translation>
+            <numerusform>已导入运行“%1”（%n 步）</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>tactile::gui::McapExportDialog</name>
+    <message>
+        <source>Export Run as MCAP</source>
+        <translation>将运行导出为 MCAP</translation>
+    </message>
+    <message>
+        <source>Run:</source>
+        <translation>运行：</translation>
+    </message>
+    <message>
+        <source>Label sets:</source>
+        <translation>标签集：</translation>
+    </message>
+    <message>
+        <source>none in this database</source>
+        <translation>此数据库中没有</translation>
+    </message>
+    <message>
+        <source>(none)</source>
+        <translation>(无)</translation>
+    </message>
+    <message>
+        <source>The model&apos;s online decisions go on /decisions/MODEL</source>
+        <translation>模型的在线决策写入 /decisions/MODEL</translation>
+    </message>
+    <message>
+        <source>Model decisions:</source>
+        <translation>模型决策：</translation>
+    </message>
+    <message>
+        <source>Browse...</source>
+        <translation>浏览...</translation>
+    </message>
+    <message>
+        <source>File:</source>
+        <translation>文件：</translation>
+    </message>
+    <message>
+        <source>Opens in Foxglove and Lichtblick: the readings, pose, command, truth, the chosen label sets and the model&apos;s decisions, one message per step, and the scene&apos;s walls.</source>
+        <translation>可在 Foxglove 和 Lichtblick 中打开：读数、位姿、指令、真值、所选标签集和模型的决策，每步一条消息，以及场景的墙壁。</translation>
+    </message>
+    <message>
+        <source>Export</source>
+        <translation>导出</translation>
+    </message>
+    <message>
+        <source>MCAP files (*.mcap);;All files (*)</source>
+        <translation>MCAP 文件 (*.mcap);;所有文件 (*)</translation>
+    </message>
+</context>
+<context>
+    <name>tactile::gui::McapMappingDialog</name>
+    <message>
+        <source>Import ROS 2 Bag</source>
+        <translation>导入 ROS 2 Bag</translation>
+    </message>
+    <message>
+        <source>&lt;b&gt;%1&lt;/b&gt; is not an export of this program. Choose which of its topics make the run: one step per message on the tactile topic; pose and command are the latest messages before it.</source>
+        <translation>&lt;b&gt;%1&lt;/b&gt; 不是本程序的导出文件。请选择构成运行的话题：触觉话题上每条消息为一步；位姿和指令取其之前的最新消息。</translation>
+    </message>
+    <message>
+        <source>Topic</source>
+        <translation>话题</translation>
+    </message>
+    <message>
+        <source>Schema</source>
+        <translation>模式</translation>
+    </message>
+    <message>
+        <source>Message encoding</source>
+        <translation>消息编码</translation>
+    </message>
+    <message>
+        <source>Messages</source>
+        <translation>消息数</translation>
+    </message>
+    <message>
+        <source>44 normals, then 44 shears</source>
+        <translation>44 个法向值，然后 44 个剪切值</translation>
+    </message>
+    <message>
+        <source>interleaved: n0, s0, n1, s1, ...</source>
+        <translation>交错：n0, s0, n1, s1, ...</translation>
+    </message>
+    <message>
+        <source>Scene units per bag unit: 1000 for a bag in metres (scenes are in mm)</source>
+        <translation>每个 bag 单位对应的场景单位：bag 以米为单位时为 1000（场景以毫米为单位）</translation>
+    </message>
+    <message>
+        <source>Tactile readings:</source>
+        <translation>触觉读数：</translation>
+    </message>
+    <message>
+        <source>Layout of the 88 values:</source>
+        <translation>88 个值的排列：</translation>
+    </message>
+    <message>
+        <source>Pose:</source>
+        <translation>位姿：</translation>
+    </message>
+    <message>
+        <source>Command:</source>
+        <translation>指令：</translation>
+    </message>
+    <message>
+        <source>Blocked flag:</source>
+        <translation>阻挡标志：</translation>
+    </message>
+    <message>
+        <source>Scale:</source>
+        <translation>比例：</translation>
+    </message>
+    <message>
+        <source>Run name:</source>
+        <translation>运行名称：</translation>
+    </message>
+    <message>
+        <source>Import</source>
+        <translation>导入</translation>
+    </message>
+    <message>
+        <source>Channels in the file:</source>
+        <translation>文件中的通道：</translation>
     </message>
 </context>
 <context>

@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "app/cli/cli_common.h"
+#include "app/cli/cli_mcap.h"
 #include "run/json_text.h"
 #include "run/run_csv.h"
 #include "sim/scene_source.h"
@@ -88,10 +89,21 @@ struct ImportArgs {
   std::string name;
   std::string prefix;
   unsigned threads = 0;
+  std::string mapping;
   bool json = false;
 };
 
 int runImport(const ImportArgs& a) {
+  // MCAP files (an export of this program, or a ROS 2 bag with --mapping): cli_mcap.cpp.
+  const auto mcapFiles = std::count_if(a.files.begin(), a.files.end(), isMcapPath);
+  if (mcapFiles > 0) {
+    if (static_cast<std::size_t>(mcapFiles) != a.files.size()) {
+      throw UsageError("give MCAP files and run files in separate imports");
+    }
+    if (!a.prefix.empty()) throw UsageError("--prefix applies to run files, not MCAP files");
+    return runMcapImport(a.db, a.files, a.mapping, a.name, a.json);
+  }
+  if (!a.mapping.empty()) throw UsageError("--mapping applies to MCAP files (*.mcap) only");
   std::vector<fs::path> files = expandInputs(a.files);
   if (!a.name.empty() && files.size() != 1) {
     throw UsageError("--name needs exactly one file, got " + std::to_string(files.size()));
@@ -158,7 +170,17 @@ int runImport(const ImportArgs& a) {
 // ---- export-run ------------------------------------------------------------------------------
 
 int runExport(const std::string& dbPath, const std::string& runName, const std::string& out,
-              bool json) {
+              const std::string& format, const std::vector<std::string>& sets,
+              const std::string& model, bool json) {
+  if (format != "csv" && format != "mcap" && !format.empty()) {
+    throw UsageError("--format must be csv or mcap, got '" + format + "'");
+  }
+  if (format == "mcap" || (format.empty() && isMcapPath(out))) {
+    return runMcapExport(dbPath, runName, out, sets, model, json);
+  }
+  if (!sets.empty() || !model.empty()) {
+    throw UsageError("--sets and --model apply to --format mcap only");
+  }
   auto db = openDatabaseForRead(dbPath);
   auto run = db->runs().find(runName);
   if (!run) throw std::runtime_error(databaseError(dbPath, run.error()));
@@ -644,6 +666,9 @@ void registerStorageVerbs(CLI::App& app, CLI::App& bench) {
                     "Name runs P_<stem> (e.g. --prefix room1: room1_run_0000), so batches with "
                     "the same file names import side by side");
     cmd->add_option("--threads", args->threads, "Parser threads (default: one per core)");
+    cmd->add_option("--mapping", args->mapping,
+                    "Mapping file (JSON) for a ROS 2 bag (*.mcap): its tactile, pose, command "
+                    "and blocked topics (docs/interop.md); an MCAP export of tactile needs none");
     cmd->add_flag("--json", args->json, R"(Print {"runs":[{"name","id","steps"}],...})");
     setAction(cmd, [args] { return runImport(*args); });
   }
@@ -652,14 +677,25 @@ void registerStorageVerbs(CLI::App& app, CLI::App& bench) {
     auto run = std::make_shared<std::string>();
     auto out = std::make_shared<std::string>();
     auto json = std::make_shared<bool>(false);
-    CLI::App* cmd = app.add_subcommand("export-run", "Export a stored run back to a run CSV file");
+    auto format = std::make_shared<std::string>();
+    auto sets = std::make_shared<std::vector<std::string>>();
+    auto model = std::make_shared<std::string>();
+    CLI::App* cmd = app.add_subcommand(
+        "export-run", "Export a stored run to a run CSV file, or to MCAP for Foxglove/Lichtblick");
     cmd->add_option("--db", *db, "Database: a file or a PostgreSQL address")
         ->envname("TACTILE_DB")
         ->required();
     cmd->add_option("--run", *run, "Run name")->required();
-    cmd->add_option("--out", *out, "Output run file (written atomically)")->required();
+    cmd->add_option("--out", *out, "Output file (written atomically)")->required();
+    cmd->add_option("--format", *format,
+                    "csv (a run file) or mcap (docs/interop.md); default: mcap for an --out "
+                    "ending in .mcap, else csv");
+    cmd->add_option("--sets", *sets, "MCAP: label sets to add, each on /labels/SET (A B or A,B)");
+    cmd->add_option("--model", *model, "MCAP: a stored model whose online decisions to add");
     cmd->add_flag("--json", *json, R"(Print {"run","id","steps","out"})");
-    setAction(cmd, [db, run, out, json] { return runExport(*db, *run, *out, *json); });
+    setAction(cmd, [db, run, out, format, sets, model, json] {
+      return runExport(*db, *run, *out, *format, *sets, *model, *json);
+    });
   }
   {
     struct AutoArgs {

@@ -4,6 +4,7 @@
 #include <exception>
 
 #include "app/cli/cli_common.h"
+#include "app/cli/cli_mcap.h"
 #include "base/file_text.h"
 
 namespace tactile::cli {
@@ -35,6 +36,7 @@ int main(int argc, char** argv) {
   registerStorageVerbs(app, *bench);
   registerCatalogVerbs(app);
   registerWorkspaceVerbs(app);
+  registerMcapVerbs(app, *bench);
 
   try {
     app.parse(argc, argv);

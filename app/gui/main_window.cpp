@@ -28,6 +28,7 @@
 #include <QToolBar>
 #include <QUndoStack>
 #include <QVBoxLayout>
+#include <QtConcurrent/QtConcurrentRun>
 
 #include "app/gui/common/plot_style.h"
 #include "app/gui/common/progress_bridge.h"
@@ -42,6 +43,7 @@
 #include "app/gui/learning/training_dialog.h"
 #include "app/gui/preferences_dialog.h"
 #include "app/gui/runs/import_worker.h"
+#include "app/gui/runs/mcap_dialogs.h"
 #include "app/gui/runs/navigator_track_model.h"
 #include "app/gui/runs/navigator_view.h"
 #include "app/gui/runs/route_view.h"
@@ -52,6 +54,8 @@
 #include "app/gui/runs/timeline_view.h"
 #include "app/gui/sim/sim_window.h"
 #include "app/gui/user_guide_window.h"
+#include "sim/scene_source.h"
+#include "workspace/run_mcap.h"
 #include "workspace/workspace.h"
 
 namespace tactile::gui {
@@ -326,7 +330,14 @@ void MainWindow::createActions() {
   file->addSeparator();
   bindShortcut(file->addAction(tr("&Import Runs..."), this, &MainWindow::chooseRunFiles),
                QStringLiteral("importRuns"));
+  QAction* importMcapAction =
+      file->addAction(tr("Import &MCAP..."), this, &MainWindow::chooseMcapToImport);
+  importMcapAction->setObjectName(QStringLiteral("importMcapAction"));
   file->addAction(tr("Export &Labels..."), labelPanel_, &LabelPanelView::exportLabels);
+  QMenu* exportRun = file->addMenu(tr("Export &Run"));
+  exportRun->setObjectName(QStringLiteral("exportRunMenu"));
+  QAction* exportMcap = exportRun->addAction(tr("&MCAP..."), this, &MainWindow::chooseMcapExport);
+  exportMcap->setObjectName(QStringLiteral("exportMcapAction"));
   file->addSeparator();
   bindShortcut(file->addAction(tr("New &Simulation..."), this, [this] { openSimulator(); }),
                QStringLiteral("newSimulation"));
@@ -613,11 +624,20 @@ QStringList localPaths(const QMimeData* mime) {
 
 void MainWindow::dragEnterEvent(QDragEnterEvent* event) {
   const DroppedPaths dropped = sortDroppedPaths(localPaths(event->mimeData()));
-  if (!dropped.databases.isEmpty() || !dropped.runInputs.isEmpty()) event->acceptProposedAction();
+  if (!dropped.databases.isEmpty() || !dropped.runInputs.isEmpty() || !dropped.mcapFiles.isEmpty())
+    event->acceptProposedAction();
 }
 
 void MainWindow::dropEvent(QDropEvent* event) {
   const DroppedPaths dropped = sortDroppedPaths(localPaths(event->mimeData()));
+  if (!dropped.mcapFiles.isEmpty()) {
+    event->acceptProposedAction();
+    if (dropped.mcapFiles.size() > 1 || !dropped.databases.isEmpty() ||
+        !dropped.runInputs.isEmpty()) {
+      return showError(tr("Drop one MCAP file at a time, on its own."));
+    }
+    return importMcapFile(dropped.mcapFiles.front());
+  }
   if (dropped.databases.isEmpty() && dropped.runInputs.isEmpty()) {
     if (!dropped.ignored.isEmpty())
       showError(tr("Not a run file, folder or database: %1").arg(dropped.ignored.join(", ")));
@@ -633,6 +653,159 @@ void MainWindow::dropEvent(QDropEvent* event) {
     if (!s) return showOpenError(QString::fromStdString(s.errorText()));
   }
   if (!dropped.runInputs.isEmpty()) importRuns(dropped.runInputs);
+}
+
+// ---- MCAP ------------------------------------------------------------------------------------
+
+void MainWindow::showMcapError(const QString& title, const QString& message) {
+  showError(message);
+  auto* box = new QMessageBox(QMessageBox::Warning, title, message, QMessageBox::Ok, this);
+  box->setObjectName(QStringLiteral("mcapError"));
+  box->setAttribute(Qt::WA_DeleteOnClose);
+  box->open();
+}
+
+void MainWindow::chooseMcapExport() {
+  if (!workspace_ || !session_->isOpen()) return showError(tr("Open a run first"));
+  QStringList sets;
+  if (auto catalog = workspace_->labelSets()) {
+    for (const storage::LabelSetCatalogEntry& e : catalog.value())
+      sets << QString::fromStdString(e.set.name);
+  }
+  QStringList models;
+  if (auto stored = workspace_->models()) {
+    for (const storage::ModelInfo& m : stored.value())
+      models << QString::fromStdString(m.name);
+  }
+  const QString run = QString::fromStdString(session_->info().name);
+  const QString folder = QFileInfo(dbPath_).absolutePath();
+  const QStringList checked{QString::fromStdString(labels_->setName())};
+  McapExportDialog dialog(run, sets, checked, models, folder + QLatin1Char('/') + run + ".mcap",
+                          this);
+  if (dialog.exec() != QDialog::Accepted) return;
+  exportRunMcap(dialog.path(), dialog.labelSets(), dialog.model());
+}
+
+void MainWindow::exportRunMcap(const QString& path, const QStringList& labelSets,
+                               const QString& model) {
+  if (!workspace_ || !session_->isOpen()) return showError(tr("Open a run first"));
+  if (mcapBusy_) return showError(tr("An MCAP export or import is already running"));
+  workspace::McapExportRequest request;
+  request.run = session_->info().name;
+  for (const QString& set : labelSets)
+    request.labelSets.push_back(set.toStdString());
+  request.model = model.toStdString();
+  request.out = path.toStdString();
+  const std::int64_t steps = session_->stepCount();
+  auto* bridge = new ProgressBridge(this);
+  request.progress = bridge->callback();
+  auto* dialog =
+      new QProgressDialog(tr("Exporting '%1' to %2...")
+                              .arg(QString::fromStdString(request.run), QFileInfo(path).fileName()),
+                          tr("Cancel"), 0, 1000, this);
+  dialog->setObjectName(QStringLiteral("mcapExportProgress"));
+  dialog->setWindowModality(Qt::WindowModal);
+  dialog->setMinimumDuration(800);  // a short export shows no dialog
+  connect(bridge, &ProgressBridge::progressed, dialog, [dialog](qint64 done, qint64 total) {
+    if (total > 0) dialog->setValue(static_cast<int>(1000 * done / total));
+  });
+  connect(dialog, &QProgressDialog::canceled, bridge, &ProgressBridge::cancel);
+  mcapBusy_ = true;
+  const QString db = dbPath_;
+  auto* watcher = new QFutureWatcher<QString>(this);
+  connect(watcher, &QFutureWatcher<QString>::finished, this,
+          [this, watcher, bridge, dialog, path, steps] {
+            const QString error = watcher->result();
+            dialog->reset();
+            dialog->deleteLater();
+            watcher->deleteLater();
+            bridge->deleteLater();
+            mcapBusy_ = false;
+            if (bridge->cancelled()) return showMessage(tr("MCAP export cancelled"));
+            if (!error.isEmpty()) return showMcapError(tr("Export Run as MCAP"), error);
+            lastError_.clear();
+            showMessage(
+                tr("Run written to %1 (%n step(s))", nullptr, static_cast<int>(steps)).arg(path));
+          });
+  // The worker has its own connection to the database (the window keeps using its own).
+  watcher->setFuture(QtConcurrent::run([db, request]() -> QString {
+    storage::OpenOptions open;
+    open.mode = storage::OpenMode::ReadOnly;
+    auto ws = workspace::Workspace::open(db.toStdString(), open);
+    if (!ws) return QString::fromStdString(ws.errorText());
+    auto report = workspace::exportRunMcap(*ws.value(), request);
+    if (!report) return QString::fromStdString(report.errorText());
+    return QString();
+  }));
+}
+
+void MainWindow::chooseMcapToImport() {
+  if (!workspace_) return showError(tr("Open or create a database before importing runs."));
+  const QString file = QFileDialog::getOpenFileName(this, tr("Import MCAP"), QString(),
+                                                    tr("MCAP files (*.mcap);;All files (*)"));
+  if (!file.isEmpty()) importMcapFile(file);
+}
+
+void MainWindow::importMcapFile(const QString& path) {
+  if (!workspace_) return showError(tr("Open or create a database before importing runs."));
+  if (workspace::isRunMcapFile(path.toStdString())) return importMcap(path, {}, {});
+  // A bag: its channels as `tactile mcap info` lists them, for the mapping.
+  auto scanned = mcap::scanFile(path.toStdString());
+  if (!scanned)
+    return showMcapError(tr("Import MCAP"), QString::fromStdString(scanned.errorText()));
+  auto* dialog = new McapMappingDialog(scanned.value(), path, this);
+  dialog->setAttribute(Qt::WA_DeleteOnClose);
+  connect(dialog, &QDialog::accepted, this,
+          [this, dialog, path] { importMcap(path, dialog->mappingJson(), dialog->runName()); });
+  dialog->open();
+}
+
+void MainWindow::importMcap(const QString& path, const std::string& mappingJson,
+                            const QString& name) {
+  if (!workspace_) return showError(tr("Open or create a database before importing runs."));
+  if (mcapBusy_) return showError(tr("An MCAP export or import is already running"));
+  workspace::McapImportRequest request;
+  request.file = path.toStdString();
+  if (!mappingJson.empty()) request.mappingText = mappingJson;
+  request.name = name.toStdString();
+  request.sceneResolver = sim::proceduralSceneJson;
+  auto* dialog = new QProgressDialog(tr("Importing %1...").arg(QFileInfo(path).fileName()),
+                                     QString(), 0, 0, this);
+  dialog->setObjectName(QStringLiteral("mcapImportProgress"));
+  dialog->setWindowModality(Qt::WindowModal);
+  dialog->setMinimumDuration(800);
+  mcapBusy_ = true;
+  const QString db = dbPath_;
+  auto* watcher = new QFutureWatcher<storage::ImportOutcome>(this);
+  connect(
+      watcher, &QFutureWatcher<storage::ImportOutcome>::finished, this, [this, watcher, dialog] {
+        const storage::ImportOutcome outcome = watcher->result();
+        dialog->reset();
+        dialog->deleteLater();
+        watcher->deleteLater();
+        mcapBusy_ = false;
+        if (outcome.status == storage::ImportStatus::Failed)
+          return showMcapError(tr("Import MCAP"), QString::fromStdString(outcome.message));
+        Status listed = runModel_->reload(workspace_.get(), labels_->setId());
+        if (!listed) showError(QString::fromStdString(listed.errorText()));
+        lastError_.clear();
+        if (outcome.status == storage::ImportStatus::Skipped)
+          return showMessage(QString::fromStdString(outcome.message));
+        showMessage(tr("Imported run '%1' (%n step(s))", nullptr, static_cast<int>(outcome.steps))
+                        .arg(QString::fromStdString(outcome.runName)));
+      });
+  watcher->setFuture(QtConcurrent::run([db, request]() {
+    storage::OpenOptions open;
+    open.mode = storage::OpenMode::ReadWrite;
+    auto database = storage::RunDatabase::open(db.toStdString(), open);
+    if (!database) {
+      storage::ImportOutcome failed;
+      failed.status = storage::ImportStatus::Failed;
+      failed.message = database.errorText();
+      return failed;
+    }
+    return workspace::importMcap(database.value()->runs(), request);
+  }));
 }
 
 void MainWindow::showOpenError(const QString& message) {

@@ -55,6 +55,23 @@ class MainWindow : public QMainWindow {
   // Imports run files into the open database with a progress dialog (Cancel keeps finished runs).
   void importRuns(const QStringList& files);
 
+  // ---- MCAP (docs/interop.md) ----
+  // File > Export Run > MCAP: the export dialog for the open run, then exportRunMcap().
+  void chooseMcapExport();
+  // Writes the open run to an MCAP file on a worker thread, with a progress dialog whose Cancel
+  // stops it (nothing is then left at `path`); an error goes to the status bar and a message box.
+  void exportRunMcap(const QString& path, const QStringList& labelSets, const QString& model);
+  // File > Import MCAP: a file dialog, then importMcapFile().
+  void chooseMcapToImport();
+  // An export of this program imports at once; any other MCAP file (a ROS 2 bag) opens the
+  // mapping dialog first.
+  void importMcapFile(const QString& path);
+  // Imports on a worker thread: with the mapping's text for a bag, without one for an export of
+  // this program; `name` empty: the file's name.
+  void importMcap(const QString& path, const std::string& mappingJson, const QString& name);
+  // True while an MCAP export or import runs.
+  bool mcapBusy() const { return mcapBusy_; }
+
   RunSession* session() const { return session_; }
   LabelModel* labels() const { return labels_; }
   TimelineView* timeline() const { return timeline_; }
@@ -138,6 +155,8 @@ class MainWindow : public QMainWindow {
   QString dbPath_;
   QString lastError_;
   bool switching_ = false;  // inside openDatabase
+  bool mcapBusy_ = false;
+  void showMcapError(const QString& title, const QString& message);
   RunSession* session_;
   LabelModel* labels_;
   RunListModel* runModel_;

@@ -63,6 +63,49 @@ TEST_F(OutputFile, ReplacesARegularFileAndKeepsItsMode) {
   EXPECT_EQ(strayTemporaries(), 0);
 }
 
+// Before the tests that read inputs: a new file may reuse the inode of one they read.
+TEST_F(OutputFile, APieceByPieceWriteAppearsOnlyOnCommit) {
+  const fs::path out = dir_ / "run.mcap";
+  write(out, "old");
+  {
+    AtomicFileWriter file;
+    {
+      const Status opened = file.open(out);
+      ASSERT_TRUE(opened.ok()) << opened.errorText();
+    }
+    ASSERT_TRUE(file.write("first ").ok());
+    ASSERT_TRUE(file.write("second").ok());
+    EXPECT_EQ(read(out), "old") << "the file changed before the commit";
+    EXPECT_EQ(strayTemporaries(), 1);
+    ASSERT_TRUE(file.commit().ok());
+  }
+  EXPECT_EQ(read(out), "first second");
+  EXPECT_EQ(strayTemporaries(), 0);
+}
+
+TEST_F(OutputFile, AnAbandonedPieceByPieceWriteLeavesTheOldFile) {
+  const fs::path out = dir_ / "run.mcap";
+  write(out, "old");
+  {
+    AtomicFileWriter file;
+    {
+      const Status opened = file.open(out);
+      ASSERT_TRUE(opened.ok()) << opened.errorText();
+    }
+    ASSERT_TRUE(file.write("half a file").ok());
+    file.abandon();
+    EXPECT_FALSE(file.commit().ok()) << "a commit after abandon() succeeded";
+  }
+  {
+    AtomicFileWriter dropped;  // destroyed without a commit: a cancelled export
+    ASSERT_TRUE(dropped.open(dir_ / "new.mcap").ok());
+    ASSERT_TRUE(dropped.write("part").ok());
+  }
+  EXPECT_EQ(read(out), "old");
+  EXPECT_FALSE(fs::exists(dir_ / "new.mcap"));
+  EXPECT_EQ(strayTemporaries(), 0);
+}
+
 TEST_F(OutputFile, AFifoIsWrittenAsAStreamAndStaysAFifo) {
   const fs::path fifo = dir_ / "pipe";
   ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);

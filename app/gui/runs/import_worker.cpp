@@ -51,6 +51,8 @@ DroppedPaths sortDroppedPaths(const QStringList& paths) {
       out.databases << path;
     else if (info.suffix().compare(QLatin1String("csv"), Qt::CaseInsensitive) == 0)
       out.runInputs << path;
+    else if (info.suffix().compare(QLatin1String("mcap"), Qt::CaseInsensitive) == 0)
+      out.mcapFiles << path;
     else
       out.ignored << path;
   }

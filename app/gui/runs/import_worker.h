@@ -33,6 +33,7 @@ struct ImportSummary {
 struct DroppedPaths {
   QStringList databases;
   QStringList runInputs;
+  QStringList mcapFiles;  // *.mcap: an export of this program, or a ROS 2 bag to map
   QStringList ignored;
 };
 DroppedPaths sortDroppedPaths(const QStringList& paths);
