@@ -133,7 +133,11 @@ struct Parameter {
 class PgStatement : public StatementBackend {
  public:
   PgStatement(PgConnection& connection, std::string_view sql);
-  ~PgStatement() override = default;
+  // Frees the statement's server-side copies, so that a long session (the workbench) does not
+  // gather one per statement ever made.
+  ~PgStatement() override;
+  PgStatement(const PgStatement&) = delete;
+  PgStatement& operator=(const PgStatement&) = delete;
 
   void bindInt(int index, std::int64_t value) override {
     Parameter& p = at(index);
@@ -379,7 +383,14 @@ class PgConnection : public ConnectionBackend {
     noteChanges(result.get());
   }
   void begin() override { exec(kBeginWrite); }
-  void commit() override { exec("COMMIT"); }
+  void commit() override {
+    // COMMIT of a failed transaction rolls it back without an error: say so instead.
+    if (PQtransactionStatus(conn_) == PQTRANS_INERROR) {
+      rollback();
+      throw DbError(name_, "a statement of the transaction failed; nothing of it was stored");
+    }
+    exec("COMMIT");
+  }
   void rollback() noexcept override {
     if (PQtransactionStatus(conn_) == PQTRANS_IDLE) return;
     PQclear(PQexec(conn_, "ROLLBACK"));
@@ -423,6 +434,16 @@ PgStatement::PgStatement(PgConnection& connection, std::string_view sql)
   int count = 0;
   sql_ = numberedParameters(sql, count);
   parameters_.resize(static_cast<std::size_t>(count));
+}
+
+PgStatement::~PgStatement() {
+  result_.reset();
+  PGconn* conn = connection_.handle();
+  if (PQstatus(conn) != CONNECTION_OK) return;
+  for (const auto& [types, name] : preparedByTypes_) {
+    const std::string sql = "DEALLOCATE " + name;
+    PQclear(PQexec(conn, sql.c_str()));  // in a failed transaction it fails: the session ends it
+  }
 }
 
 const std::string& PgStatement::prepared() {
