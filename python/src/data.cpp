@@ -45,8 +45,10 @@ py::array_t<double> stacked(std::initializer_list<const std::vector<double>*> co
   return out;
 }
 
-// Strips "sqlite://" and "sqlite:" from a database address; other schemes are not served yet.
+// Strips "sqlite://" and "sqlite:" from a database address; a PostgreSQL address
+// (postgresql://..., postgres://..., libpq's key=value form) is kept as it is.
 std::string databasePath(const std::string& address) {
+  if (storage::isServerAddress(address)) return address;
   for (const char* prefix : {"sqlite:///", "sqlite://", "sqlite:"}) {
     const std::string p(prefix);
     if (address.rfind(p, 0) == 0) {
@@ -55,8 +57,9 @@ std::string databasePath(const std::string& address) {
     }
   }
   if (address.find("://") != std::string::npos) {
-    throw py::value_error("unsupported database address '" + address +
-                          "': only SQLite files (a path or sqlite:///path) can be opened");
+    throw py::value_error("unsupported database address '" + storage::shownAddress(address) +
+                          "': a file (a path or sqlite:///path) or a PostgreSQL server "
+                          "(postgresql://...) can be opened");
   }
   return address;
 }
@@ -66,16 +69,19 @@ std::shared_ptr<Database> openDatabase(const std::string& address, bool create, 
   storage::OpenOptions options;
   options.mode = readOnly ? storage::OpenMode::ReadOnly
                           : (create ? storage::OpenMode::Create : storage::OpenMode::ReadWrite);
-  if (!create && path != ":memory:" && !std::filesystem::exists(path)) {
+  const bool server = storage::isServerAddress(path);
+  if (!server && !create && path != ":memory:" && !std::filesystem::exists(path)) {
     raiseOSError(ENOENT, "no database at this path (open(path, create=True) makes one)", path);
   }
   Result<std::unique_ptr<workspace::Workspace>> ws = [&] {
     py::gil_scoped_release release;
     return workspace::Workspace::open(path, options);
   }();
-  if (!ws) raiseOSError(EIO, ws.error().message, ws.error().file.empty() ? path : ws.error().file);
+  // A server address is shown without its password (in errors and the repr).
+  const std::string shown = storage::shownAddress(path);
+  if (!ws) raiseOSError(EIO, ws.error().message, ws.error().file.empty() ? shown : ws.error().file);
   auto db = std::make_shared<Database>();
-  db->path = path;
+  db->path = shown;
   db->workspace = std::move(ws.value());
   return db;
 }
