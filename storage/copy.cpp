@@ -121,24 +121,8 @@ std::int64_t copyRunRows(RunDatabase::Impl& from, RunDatabase::Impl& to, const S
                          12);
   std::int64_t expected = 0;
   while (steps.step()) {
-    StepRow row;
-    row.runId = run.id;
-    row.step = steps.columnInt(0);
-    row.x = steps.columnDouble(1);
-    row.y = steps.columnDouble(2);
-    row.theta = steps.columnDouble(3);
-    row.v = steps.columnDouble(4);
-    row.omega = steps.columnDouble(5);
-    row.blocked = steps.columnInt(6);
-    row.sensors = steps.columnBlob(7);
-    row.sensorBytes = steps.columnBytes(7);
+    StepRow row = stepRowAt(steps, run.id);
     const bool hasExtra = !steps.columnIsNull(8);
-    if (hasExtra) {
-      row.extra = steps.columnBlob(8);
-      row.extraBytes = steps.columnBytes(8);
-    }
-    row.hasTruth = !steps.columnIsNull(9);
-    row.truth = steps.columnInt(9);
     if (row.step != expected || steps.columnIsNull(10) ||
         steps.columnInt(10) != stepChecksum(row)) {
       fail("step " + std::to_string(row.step) +
@@ -211,23 +195,7 @@ void verifyCopiedRun(RunDatabase::Impl& to, std::int64_t runId, const std::strin
   s.bind(1, runId);
   std::int64_t count = 0;
   while (s.step()) {
-    StepRow row;
-    row.runId = runId;
-    row.step = s.columnInt(0);
-    row.x = s.columnDouble(1);
-    row.y = s.columnDouble(2);
-    row.theta = s.columnDouble(3);
-    row.v = s.columnDouble(4);
-    row.omega = s.columnDouble(5);
-    row.blocked = s.columnInt(6);
-    row.sensors = s.columnBlob(7);
-    row.sensorBytes = s.columnBytes(7);
-    if (!s.columnIsNull(8)) {
-      row.extra = s.columnBlob(8);
-      row.extraBytes = s.columnBytes(8);
-    }
-    row.hasTruth = !s.columnIsNull(9);
-    row.truth = s.columnInt(9);
+    const StepRow row = stepRowAt(s, runId);
     if (s.columnIsNull(10) || s.columnInt(10) != stepChecksum(row)) {
       throw db::DbError(to.path.string(), "run '" + name + "' step " + std::to_string(row.step) +
                                               ": the copy does not match its checksum");

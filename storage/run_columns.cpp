@@ -115,24 +115,7 @@ bool decodeSensors(const unsigned char* p, std::size_t bytes, double* normal, do
 // messages: throws unless the row is sound and is step `t` of `n`.
 void recheckRow(const RunDatabase::Impl& impl, const db::Statement& s, const RunShape& shape,
                 std::int64_t runId, std::size_t t, std::size_t n) {
-  StepRow row;
-  row.runId = runId;
-  row.step = s.columnInt(0);
-  row.x = s.columnDouble(1);
-  row.y = s.columnDouble(2);
-  row.theta = s.columnDouble(3);
-  row.v = s.columnDouble(4);
-  row.omega = s.columnDouble(5);
-  row.blocked = s.columnInt(6);
-  row.sensors = s.columnBlob(7);
-  row.sensorBytes = s.columnBytes(7);
-  if (!s.columnIsNull(8)) {
-    row.extra = s.columnBlob(8);
-    row.extraBytes = s.columnBytes(8);
-    if (row.extra == nullptr) row.extra = "";
-  }
-  row.hasTruth = !s.columnIsNull(9);
-  row.truth = s.columnInt(9);
+  const StepRow row = stepRowAt(s, runId);
   if (s.columnIsNull(10) || s.columnInt(10) != stepChecksum(row)) {
     throw damaged(impl, shape.name, runId, "step " + std::to_string(row.step));
   }

@@ -698,23 +698,7 @@ void checkChecksumsRowByRow(db::Connection& c, IntegrityReport& report) {
       names.reset();
       s.bind(1, runId);
       while (s.step()) {
-        StepRow row;
-        row.runId = runId;
-        row.step = s.columnInt(0);
-        row.x = s.columnDouble(1);
-        row.y = s.columnDouble(2);
-        row.theta = s.columnDouble(3);
-        row.v = s.columnDouble(4);
-        row.omega = s.columnDouble(5);
-        row.blocked = s.columnInt(6);
-        row.sensors = s.columnBlob(7);
-        row.sensorBytes = s.columnBytes(7);
-        if (!s.columnIsNull(8)) {
-          row.extra = s.columnBlob(8);
-          row.extraBytes = s.columnBytes(8);
-        }
-        row.hasTruth = !s.columnIsNull(9);
-        row.truth = s.columnInt(9);
+        const StepRow row = stepRowAt(s, runId);
         if (differs(s, 10, stepChecksum(row))) {
           addProblem(report, "checksum",
                      "run " + name + " (id " + std::to_string(runId) + ") step " +

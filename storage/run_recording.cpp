@@ -17,8 +17,8 @@ namespace {
 
 // A step row read by "SELECT x, y, theta, v, omega, blocked, sensors, extra", with `truth`; valid
 // until `s` steps on.
-StepRow stepRowAt(const db::Statement& s, std::int64_t runId, std::int64_t step,
-                  std::int64_t truth) {
+StepRow stepRowWithTruth(const db::Statement& s, std::int64_t runId, std::int64_t step,
+                         std::int64_t truth) {
   StepRow row;
   row.runId = runId;
   row.step = step;
@@ -290,7 +290,7 @@ Status RunStore::finishRun(std::int64_t runId, const RunData& run) {
       for (const auto& [step, packed] : changed) {
         read.bind(1, runId).bind(2, step);
         if (!read.step()) throw db::DbError("step " + std::to_string(step) + " vanished");
-        const std::int64_t crc = stepChecksum(stepRowAt(read, runId, step, packed));
+        const std::int64_t crc = stepChecksum(stepRowWithTruth(read, runId, step, packed));
         read.reset();
         update.bind(1, packed).bind(2, crc).bind(3, runId).bind(4, step).run();
       }

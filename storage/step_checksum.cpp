@@ -1,5 +1,7 @@
 #include "storage/step_checksum.h"
 
+#include "storage/sqlite/sqlite_connection.h"
+
 #include <sqlite3.h>
 
 #include <array>

@@ -8,7 +8,7 @@
 #include <cstdint>
 #include <string_view>
 
-#include "storage/sqlite/sqlite_connection.h"
+#include "storage/db.h"
 
 namespace tactile::storage {
 
@@ -29,6 +29,31 @@ struct StepRow {
   bool hasTruth = false;
   std::int64_t truth = 0;
 };
+
+// The step row of run `runId` under `s`, read from the columns `step, x, y, theta, v, omega,
+// blocked, sensors, extra, truth` starting at column 0 (every read of whole step rows selects them
+// in this order, then `crc`). The blobs point into `s`'s row: valid until it steps on.
+inline StepRow stepRowAt(const db::Statement& s, std::int64_t runId) {
+  StepRow row;
+  row.runId = runId;
+  row.step = s.columnInt(0);
+  row.x = s.columnDouble(1);
+  row.y = s.columnDouble(2);
+  row.theta = s.columnDouble(3);
+  row.v = s.columnDouble(4);
+  row.omega = s.columnDouble(5);
+  row.blocked = s.columnInt(6);
+  row.sensors = s.columnBlob(7);
+  row.sensorBytes = s.columnBytes(7);
+  if (!s.columnIsNull(8)) {
+    row.extra = s.columnBlob(8);
+    row.extraBytes = s.columnBytes(8);
+    if (row.extra == nullptr) row.extra = "";  // an empty blob is not a missing one
+  }
+  row.hasTruth = !s.columnIsNull(9);
+  row.truth = s.columnInt(9);
+  return row;
+}
 
 // The stored checksum of a row: its CRC-32 as a signed 32-bit value (4 bytes in an SQLite record).
 // Keys are included, so a row moved to another step or run by damage does not match either.

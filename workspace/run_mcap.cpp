@@ -199,7 +199,8 @@ storage::ImportOutcome importMcap(storage::RunStore runs, const McapImportReques
       failed.message = fileName + ": " + ok.errorText() + " (give a name with --name)";
       return failed;
     }
-    storage::ImportOutcome outcome = runs.importRun(bag->run, name, fileName, request.sceneResolver);
+    storage::ImportOutcome outcome =
+        runs.importRun(bag->run, name, fileName, request.sceneResolver);
     for (std::string& w : bag->warnings)
       outcome.warnings.insert(outcome.warnings.begin(), std::move(w));
     return outcome;

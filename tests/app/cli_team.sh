@@ -5,7 +5,9 @@
 #  2. a file's runs and labels copied to the server and back export byte for byte as the file's
 #     own, and a second copy adds nothing;
 #  3. TACTILE_DB stands for --db;
-#  4. a password in an address never shows: not in errors, not in --json.
+#  4. a password in an address never shows: not in errors, not in --json;
+#  5. an import killed (SIGKILL) while it streams its steps to the server stores nothing, and the
+#     same import again stores the run once, with all its steps.
 #   tests/app/cli_team.sh TACTILE WORKDIR   (TACTILE_TEST_PG_FILE names the server's state file)
 . "$(dirname "$0")/cli_test_lib.sh"
 
@@ -62,4 +64,29 @@ done
 with_password=$(echo "$db" | sed "s#postgresql://#postgresql://postgres:$secret@#")
 "$T" db create --db "$with_password" --json > out.json
 if grep -q "$secret" out.json; then fail "--json printed the password"; fi
+
+# 5.
+# A 400,000-step run file (the storage benchmark's synthetic run, kept in its folder).
+"$T" bench storage --steps 1000 --files 1 --big-steps 400000 --repeats 1 --no-compare --dir gen \
+  --keep > /dev/null
+mv gen/big.csv big.csv
+"$T" import --db "$db" big.csv > /dev/null 2>&1 &
+writer=$!
+# Until the server is receiving its steps (COPY), then the writer dies mid-transaction.
+tries=0
+until psql -tA "$server" -c "SELECT count(*) FROM pg_stat_activity WHERE query LIKE 'COPY steps%'" |
+  grep -q '^1$'; do
+  tries=$((tries + 1))
+  [ "$tries" -lt 400 ] || fail "the import never reached its steps"
+  kill -0 "$writer" 2> /dev/null || fail "the import ended before it could be killed"
+  sleep 0.05
+done
+kill -9 "$writer"
+wait "$writer" 2> /dev/null || true
+if "$T" runs list --db "$db" | grep -q '^big '; then fail "a killed import left a run"; fi
+"$T" db check --db "$db" | grep -q "ok, schema version" || fail "db check after the kill"
+"$T" import --db "$db" big.csv > /dev/null
+steps=$("$T" runs list --db "$db" --json | sed 's/.*"name":"big"[^}]*"steps":\([0-9]*\).*/\1/')
+[ "$steps" = 400000 ] || fail "the run after the kill holds $steps steps"
+[ "$("$T" runs list --db "$db" | grep -c '^big ')" = 1 ] || fail "the run is stored twice"
 echo "ok"
