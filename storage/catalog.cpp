@@ -131,6 +131,8 @@ Status RunStore::remove(const std::vector<std::string>& names) {
       // The child tables cascade too (foreign keys are on); deleting them by name keeps that
       // true even on a connection where they are not.
       impl_->statement("DELETE FROM label_segments WHERE run_id = ?").bind(1, id).run();
+      impl_->statement("DELETE FROM label_revisions WHERE run_id = ?").bind(1, id).run();
+      impl_->statement("DELETE FROM assignments WHERE run_id = ?").bind(1, id).run();
       impl_->statement("DELETE FROM step_blocks WHERE run_id = ?").bind(1, id).run();
       impl_->statement("DELETE FROM steps WHERE run_id = ?").bind(1, id).run();
       impl_->statement("DELETE FROM runs WHERE id = ?").bind(1, id).run();
@@ -183,6 +185,10 @@ Status LabelStore::rename(std::string_view name, const std::string& newName) {
         .bind(1, newName)
         .bind(2, id)
         .run();
+    impl_->statement("UPDATE assignments SET label_set = ? WHERE label_set = ?")
+        .bind(1, newName)
+        .bind(2, name)
+        .run();
     transaction.commit();
   });
 }
@@ -195,6 +201,7 @@ Status LabelStore::remove(const std::vector<std::string>& names) {
         idsByName(*impl_, names, "SELECT id FROM label_sets WHERE name = ?", "label set");
     for (const std::int64_t id : ids) {
       impl_->statement("DELETE FROM label_segments WHERE set_id = ?").bind(1, id).run();
+      impl_->statement("DELETE FROM label_revisions WHERE set_id = ?").bind(1, id).run();
       impl_->statement("DELETE FROM label_sets WHERE id = ?").bind(1, id).run();
     }
     transaction.commit();

@@ -2,8 +2,10 @@
 #pragma once
 
 #include <exception>
+#include <optional>
 #include <string>
 #include <unordered_map>
+#include <vector>
 
 #include "base/text_rules.h"
 #include "storage/run_database.h"
@@ -37,6 +39,25 @@ struct RunDatabase::Impl {
   // Newest-wins insertion inside a caller's transaction; `keepId` != 0 reuses that id.
   std::int64_t insertSegmentNewestWins(std::int64_t setId, const LabelSegment& segment,
                                        std::int64_t keepId);
+
+  // ---- label history (label_history.cpp), inside a caller's write transaction ----
+  // The revision the last edit made.
+  std::int64_t lastRevision = 0;
+  // Throws a conflict (isLabelConflict) when `expected` is set and a later revision of the set on
+  // the run changed a step of [firstStep, lastStep] in `group`.
+  void checkExpectedRevision(std::int64_t setId, std::int64_t runId, SensorGroup group,
+                             std::int64_t firstStep, std::int64_t lastStep,
+                             const std::optional<std::int64_t>& expected);
+  // The set's segments of one run and group over [firstStep, lastStep], clipped to it.
+  std::vector<LabelSegment> clippedSegments(std::int64_t setId, std::int64_t runId,
+                                            SensorGroup group, std::int64_t firstStep,
+                                            std::int64_t lastStep);
+  // Stores one revision and returns it (also in lastRevision).
+  std::int64_t recordRevision(std::int64_t setId, std::int64_t runId, SensorGroup group,
+                              std::int64_t firstStep, std::int64_t lastStep,
+                              std::optional<ContactClass> cls, std::string_view action,
+                              std::string_view annotator,
+                              const std::vector<LabelSegment>& replaced);
 };
 
 // A label segment from a row of `SELECT label_segments.id, runs.name, run_id, grp, first_step,

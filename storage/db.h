@@ -94,6 +94,10 @@ class ConnectionBackend {
   virtual void endSnapshot() noexcept = 0;
   // Whether a transaction is open on the session.
   virtual bool inTransaction() const = 0;
+  // Whether another session may have committed a change since the last call: SQLite's
+  // data_version (any change to the file); PostgreSQL, a notification on `channel` (the first call
+  // starts listening). Never blocks; the first call returns false.
+  virtual bool changedSinceLastPoll(std::string_view channel) = 0;
 };
 
 // One open database session. Move-only; closes on destruction.

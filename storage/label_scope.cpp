@@ -1,6 +1,7 @@
 // Label segments of one (set, run, group) within a step range: read one segment, read a range,
 // replace a range. The workspace builds undo and redo of label edits on these
 // (docs/workflow.md#label-edits-and-undo).
+#include <algorithm>
 #include <string>
 #include <vector>
 
@@ -66,10 +67,32 @@ Result<std::vector<LabelSegment>> LabelStore::segmentsInRange(std::int64_t setId
 
 Status LabelStore::replaceSegmentsInRange(std::int64_t setId, std::int64_t runId, SensorGroup group,
                                           std::int64_t firstStep, std::int64_t lastStep,
-                                          const std::vector<LabelSegment>& with) {
+                                          const std::vector<LabelSegment>& with,
+                                          const EditOptions& options) {
   return guardedStatus(*impl_, [&] {
     db::Transaction transaction(impl_->connection);
     const std::string_view groupName = groupInfo(group).shortName;
+    // The steps this changes: the range, the whole of every segment it removes, and `with`.
+    std::int64_t first = firstStep;
+    std::int64_t last = lastStep;
+    {
+      db::Statement& s = impl_->statement(
+          "SELECT MIN(first_step), MAX(last_step) FROM label_segments WHERE set_id = ? AND "
+          "run_id = ? AND grp = ? AND first_step <= ? AND last_step >= ?");
+      s.bind(1, setId).bind(2, runId).bind(3, groupName).bind(4, lastStep).bind(5, firstStep);
+      if (s.step() && !s.columnIsNull(0)) {
+        first = std::min(first, s.columnInt(0));
+        last = std::max(last, s.columnInt(1));
+      }
+      s.reset();
+    }
+    for (const LabelSegment& s : with) {
+      first = std::min(first, s.firstStep);
+      last = std::max(last, s.lastStep);
+    }
+    impl_->checkExpectedRevision(setId, runId, group, first, last, options.expectRevision);
+    const std::vector<LabelSegment> replaced =
+        impl_->clippedSegments(setId, runId, group, first, last);
     impl_
         ->statement(
             "DELETE FROM label_segments WHERE set_id = ? AND run_id = ? AND grp = ? AND "
@@ -85,6 +108,11 @@ Status LabelStore::replaceSegmentsInRange(std::int64_t setId, std::int64_t runId
       segment.group = group;
       impl_->insertSegmentNewestWins(setId, segment, 0);
     }
+    const bool one = with.size() == 1 && with[0].firstStep == first && with[0].lastStep == last;
+    impl_->recordRevision(setId, runId, group, first, last,
+                          one ? std::optional<ContactClass>(with[0].cls) : std::nullopt,
+                          options.action.empty() ? "restore" : options.action, options.annotator,
+                          replaced);
     transaction.commit();
   });
 }

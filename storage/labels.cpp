@@ -196,47 +196,122 @@ Result<std::int64_t> LabelStore::copy(std::int64_t setId, const std::string& new
         .bind(1, id)
         .bind(2, setId)
         .run();
+    impl_
+        ->statement(
+            "INSERT INTO label_revisions(set_id, run_id, grp, first_step, last_step, class, "
+            "action, annotator, created_at, replaced) SELECT ?, run_id, grp, first_step, "
+            "last_step, class, action, annotator, created_at, replaced FROM label_revisions "
+            "WHERE set_id = ? ORDER BY id")
+        .bind(1, id)
+        .bind(2, setId)
+        .run();
     transaction.commit();
     return id;
   });
 }
 
-Result<std::int64_t> LabelStore::addSegment(std::int64_t setId, const LabelSegment& segment) {
+namespace {
+
+// The annotator an edit is recorded under, and writes into its segments.
+std::string editor(const EditOptions& options, const LabelSegment& segment) {
+  return options.annotator.empty() ? segment.annotator : options.annotator;
+}
+
+}  // namespace
+
+Result<std::int64_t> LabelStore::addSegment(std::int64_t setId, const LabelSegment& segment,
+                                            const EditOptions& options) {
   return guarded<std::int64_t>(*impl_, [&] {
     db::Transaction transaction(impl_->connection);
     db::Statement& set = impl_->statement("SELECT 1 FROM label_sets WHERE id = ?");
     set.bind(1, setId);
     if (!set.step()) throw db::DbError("no label set with id " + std::to_string(setId));
     set.reset();
-    const std::int64_t id = impl_->insertSegmentNewestWins(setId, segment, 0);
+    LabelSegment added = segment;
+    added.annotator = editor(options, segment);
+    if (added.runId == 0) added.runId = impl_->runIdByName(segment.run);
+    impl_->checkExpectedRevision(setId, added.runId, added.group, added.firstStep, added.lastStep,
+                                 options.expectRevision);
+    const std::vector<LabelSegment> replaced =
+        impl_->clippedSegments(setId, added.runId, added.group, added.firstStep, added.lastStep);
+    const std::int64_t id = impl_->insertSegmentNewestWins(setId, added, 0);
+    impl_->recordRevision(setId, added.runId, added.group, added.firstStep, added.lastStep,
+                          added.cls, options.action.empty() ? "set" : options.action,
+                          added.annotator, replaced);
     transaction.commit();
     return id;
   });
 }
 
-Status LabelStore::changeSegment(std::int64_t segmentId, const LabelSegment& segment) {
+Status LabelStore::changeSegment(std::int64_t segmentId, const LabelSegment& segment,
+                                 const EditOptions& options) {
   return guardedStatus(*impl_, [&] {
     db::Transaction transaction(impl_->connection);
-    db::Statement& s = impl_->statement("SELECT set_id, run_id FROM label_segments WHERE id = ?");
+    db::Statement& s = impl_->statement(
+        "SELECT set_id, run_id, grp, first_step, last_step FROM label_segments WHERE id = ?");
     s.bind(1, segmentId);
     if (!s.step()) throw db::DbError("no label segment with id " + std::to_string(segmentId));
     const std::int64_t setId = s.columnInt(0);
-    LabelSegment changed = segment;
-    if (changed.runId == 0 && changed.run.empty()) changed.runId = s.columnInt(1);
+    const std::int64_t oldRun = s.columnInt(1);
+    const auto oldGroup = parseSensorGroup(s.columnTextView(2));
+    const std::int64_t oldFirst = s.columnInt(3);
+    const std::int64_t oldLast = s.columnInt(4);
     s.reset();
+    if (!oldGroup) throw db::DbError("malformed label segment " + std::to_string(segmentId));
+    LabelSegment changed = segment;
+    changed.annotator = editor(options, segment);
+    if (changed.runId == 0 && changed.run.empty()) changed.runId = oldRun;
+    if (changed.runId == 0) changed.runId = impl_->runIdByName(changed.run);
+    // The steps it leaves and the steps it takes, in its old and new group.
+    const bool moves = changed.runId != oldRun || changed.group != *oldGroup;
+    const std::int64_t first = moves ? changed.firstStep : std::min(oldFirst, changed.firstStep);
+    const std::int64_t last = moves ? changed.lastStep : std::max(oldLast, changed.lastStep);
+    impl_->checkExpectedRevision(setId, oldRun, *oldGroup, oldFirst, oldLast,
+                                 options.expectRevision);
+    impl_->checkExpectedRevision(setId, changed.runId, changed.group, first, last,
+                                 options.expectRevision);
+    const std::vector<LabelSegment> leftBehind =
+        moves ? impl_->clippedSegments(setId, oldRun, *oldGroup, oldFirst, oldLast)
+              : std::vector<LabelSegment>{};
+    const std::vector<LabelSegment> replaced =
+        impl_->clippedSegments(setId, changed.runId, changed.group, first, last);
     impl_->statement("DELETE FROM label_segments WHERE id = ?").bind(1, segmentId).run();
     impl_->insertSegmentNewestWins(setId, changed, segmentId);
+    const std::string action = options.action.empty() ? "change" : options.action;
+    if (moves) {
+      impl_->recordRevision(setId, oldRun, *oldGroup, oldFirst, oldLast, std::nullopt, action,
+                            changed.annotator, leftBehind);
+    }
+    const bool whole = changed.firstStep == first && changed.lastStep == last;
+    impl_->recordRevision(setId, changed.runId, changed.group, first, last,
+                          whole ? std::optional<ContactClass>(changed.cls) : std::nullopt, action,
+                          changed.annotator, replaced);
     transaction.commit();
   });
 }
 
-Status LabelStore::removeSegment(std::int64_t segmentId) {
+Status LabelStore::removeSegment(std::int64_t segmentId, const EditOptions& options) {
   return guardedStatus(*impl_, [&] {
     db::Transaction transaction(impl_->connection);
+    db::Statement& s = impl_->statement(
+        "SELECT set_id, run_id, grp, first_step, last_step, annotator FROM label_segments "
+        "WHERE id = ?");
+    s.bind(1, segmentId);
+    if (!s.step()) throw db::DbError("no label segment with id " + std::to_string(segmentId));
+    const std::int64_t setId = s.columnInt(0);
+    const std::int64_t runId = s.columnInt(1);
+    const auto group = parseSensorGroup(s.columnTextView(2));
+    const std::int64_t first = s.columnInt(3);
+    const std::int64_t last = s.columnInt(4);
+    s.reset();
+    if (!group) throw db::DbError("malformed label segment " + std::to_string(segmentId));
+    impl_->checkExpectedRevision(setId, runId, *group, first, last, options.expectRevision);
+    const std::vector<LabelSegment> replaced =
+        impl_->clippedSegments(setId, runId, *group, first, last);
     impl_->statement("DELETE FROM label_segments WHERE id = ?").bind(1, segmentId).run();
-    if (impl_->connection.changes() == 0) {
-      throw db::DbError("no label segment with id " + std::to_string(segmentId));
-    }
+    impl_->recordRevision(setId, runId, *group, first, last, std::nullopt,
+                          options.action.empty() ? "delete" : options.action, options.annotator,
+                          replaced);
     transaction.commit();
   });
 }
@@ -322,7 +397,11 @@ Result<std::int64_t> LabelStore::importFile(const std::string& setName,
       segment.cls = record.cls;
       segment.annotator = record.annotator;
       try {
+        const std::vector<LabelSegment> replaced = impl_->clippedSegments(
+            setId, segment.runId, segment.group, segment.firstStep, segment.lastStep);
         impl_->insertSegmentNewestWins(setId, segment, 0);
+        impl_->recordRevision(setId, segment.runId, segment.group, segment.firstStep,
+                              segment.lastStep, segment.cls, "import", segment.annotator, replaced);
       } catch (const db::DbError& e) {
         throw db::DbError(where + e.what());
       }
@@ -366,6 +445,13 @@ Result<std::int64_t> LabelStore::autolabel(std::int64_t runId, const std::string
     s.reset();
     if (!hasTruth) throw db::DbError("run '" + runName + "' has no truth columns to label from");
     const std::int64_t setId = impl_->ensureLabelSet(setName);
+    const std::int64_t runSteps = impl_->runStepCount(runId);
+    std::vector<std::vector<LabelSegment>> replaced;
+    for (const GroupInfo& group : kSensorGroups) {
+      replaced.push_back(runSteps > 0
+                             ? impl_->clippedSegments(setId, runId, group.group, 0, runSteps - 1)
+                             : std::vector<LabelSegment>{});
+    }
     impl_->statement("DELETE FROM label_segments WHERE set_id = ? AND run_id = ?")
         .bind(1, setId)
         .bind(2, runId)
@@ -399,6 +485,12 @@ Result<std::int64_t> LabelStore::autolabel(std::int64_t runId, const std::string
           .bind(6, contactClassName(segment.cls))
           .run();
       ++written;
+    }
+    if (runSteps > 0) {
+      for (std::size_t g = 0; g < kSensorGroups.size(); ++g) {
+        impl_->recordRevision(setId, runId, kSensorGroups[g].group, 0, runSteps - 1, std::nullopt,
+                              "truth", "truth", replaced[g]);
+      }
     }
     transaction.commit();
     return written;

@@ -490,6 +490,11 @@ Result<std::unique_ptr<RunDatabase>> RunDatabase::openServer(const std::string& 
                                 ", newer than version " + std::to_string(db::kSchemaVersion) +
                                 " that this program understands; use a newer tactile"));
     }
+    if (content.version < db::kSchemaVersion && content.version >= 5 && mode == OpenMode::Create &&
+        !impl->readOnly) {
+      db::createServerSchema(c);  // migrates, under the same lock as a creation
+      content = db::inspectServer(c);
+    }
     if (content.version < db::kSchemaVersion) {
       return R(Error(shown, "schema version " + std::to_string(content.version) +
                                 ", older than this program's " +
@@ -604,6 +609,8 @@ Status RunStore::remove(std::int64_t runId) {
     db::Transaction transaction(impl_->connection);
     // The child rows by name too: a server's step rows have no cascading foreign key.
     impl_->statement("DELETE FROM label_segments WHERE run_id = ?").bind(1, runId).run();
+    impl_->statement("DELETE FROM label_revisions WHERE run_id = ?").bind(1, runId).run();
+    impl_->statement("DELETE FROM assignments WHERE run_id = ?").bind(1, runId).run();
     impl_->statement("DELETE FROM step_blocks WHERE run_id = ?").bind(1, runId).run();
     impl_->statement("DELETE FROM steps WHERE run_id = ?").bind(1, runId).run();
     db::Statement& s = impl_->statement("DELETE FROM runs WHERE id = ?");

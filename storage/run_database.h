@@ -145,6 +145,59 @@ struct LabelSegment {
   std::string annotator;
 };
 
+// One label edit as the history keeps it (storage/label_history.cpp, docs/team.md#history).
+struct LabelRevision {
+  // Increases through the database: an edit made later has a larger revision.
+  std::int64_t revision = 0;
+  std::int64_t setId = 0;
+  std::string run;
+  std::int64_t runId = 0;
+  SensorGroup group = SensorGroup::Front;
+  // The steps the edit changed.
+  std::int64_t firstStep = 0;
+  std::int64_t lastStep = 0;
+  // The class it gave those steps; none when it cleared them or wrote several classes.
+  std::optional<ContactClass> cls;
+  // "set", "change", "delete", "undo", "redo", "import", "truth", "copy" or "model".
+  std::string action;
+  std::string annotator;
+  std::string time;  // UTC, ISO 8601
+  // What those steps held before, clipped to them (empty: they were unlabelled).
+  std::vector<LabelSegment> replaced;
+};
+
+// How one label edit is made and recorded.
+struct EditOptions {
+  // Who makes the edit, as the history shows it. Empty: the annotator of the segment written.
+  std::string annotator;
+  // The revision the edit was based on: when a later revision changed any step it touches, in
+  // any of its groups, nothing is stored and the error names who changed them and when
+  // (isLabelConflict). nullopt: newest wins without a check.
+  std::optional<std::int64_t> expectRevision;
+  // The history's word for the edit; empty: the call's own ("set", "change", ...).
+  std::string action;
+};
+
+// Whether a failed label edit was refused because someone changed its steps since its revision.
+bool isLabelConflict(const Error& error);
+
+// An assignment of a run, or of one group of it, to an annotator (docs/team.md#assignments).
+enum class AssignmentState { Todo, Labelled, Reviewed };
+std::string_view assignmentStateName(AssignmentState state);  // "todo", "labelled", "reviewed"
+std::optional<AssignmentState> parseAssignmentState(std::string_view text);
+
+struct Assignment {
+  std::int64_t id = 0;
+  std::string run;
+  std::int64_t runId = 0;
+  std::optional<SensorGroup> group;  // none: the whole run
+  std::string annotator;
+  std::string labelSet;  // the set to label in; empty when not said
+  AssignmentState state = AssignmentState::Todo;
+  std::string updatedBy;
+  std::string updatedAt;
+};
+
 // ---- catalog (storage/catalog.cpp, docs/storage.md#catalog) -------------------------------
 
 // A stored run and the label sets that have segments on it (by name, sorted).
@@ -409,14 +462,48 @@ class LabelStore {
   Result<std::int64_t> create(const std::string& name, const std::string& annotator = {});
   Result<std::int64_t> copy(std::int64_t setId, const std::string& newName);
 
+  // Every edit below is one revision per group it touches (history()), made by
+  // `options.annotator` (else the segment's), and refused as a whole, storing nothing, when
+  // `options.expectRevision` is older than a revision over its steps.
   // Adds a segment. Newest wins: any older segment of the same set, run and group overlapping
   // [firstStep, lastStep] is trimmed, split or removed so that only the new one covers that range.
   // The range must lie within the run. Returns the new segment's id.
-  Result<std::int64_t> addSegment(std::int64_t setId, const LabelSegment& segment);
+  Result<std::int64_t> addSegment(std::int64_t setId, const LabelSegment& segment,
+                                  const EditOptions& options = {});
   // Replaces a segment's range, group and class (it keeps its id and wins over the range it now
   // covers, as if newly added).
-  Status changeSegment(std::int64_t segmentId, const LabelSegment& segment);
-  Status removeSegment(std::int64_t segmentId);
+  Status changeSegment(std::int64_t segmentId, const LabelSegment& segment,
+                       const EditOptions& options = {});
+  Status removeSegment(std::int64_t segmentId, const EditOptions& options = {});
+  // Gives steps [firstStep, lastStep] of each of `groups` of a run the class `cls` (newest wins),
+  // in one transaction. Returns the last revision made.
+  Result<std::int64_t> setRange(std::int64_t setId, std::int64_t runId,
+                                const std::vector<SensorGroup>& groups, std::int64_t firstStep,
+                                std::int64_t lastStep, ContactClass cls,
+                                const EditOptions& options);
+
+  // The history of a set's labels on one run, oldest first: the revisions after
+  // `afterRevision`.
+  Result<std::vector<LabelRevision>> history(std::int64_t setId, std::int64_t runId,
+                                             std::int64_t afterRevision = 0);
+  // The newest revision of a set's labels on one run (0 when none).
+  Result<std::int64_t> latestRevision(std::int64_t setId, std::int64_t runId);
+  // The revision the last successful edit through this database made (0 before any).
+  std::int64_t lastRevision() const;
+  // True when another connection may have changed labels since the last call (the first call
+  // starts watching and returns false). Cheap enough for a timer: SQLite's data_version, a
+  // PostgreSQL notification read without a round trip.
+  Result<bool> pollChanges();
+
+  // Assignments (docs/team.md#assignments). assign() gives each named run (one group of it, or the
+  // whole run) to `annotator` in state todo, or moves an existing one to `state`; one transaction.
+  Status assign(const std::vector<std::string>& runs, std::optional<SensorGroup> group,
+                const std::string& annotator, const std::string& labelSet, AssignmentState state,
+                const std::string& by);
+  Status unassign(const std::vector<std::string>& runs, std::optional<SensorGroup> group,
+                  const std::string& annotator);
+  // Every assignment (of one annotator when not empty), by run name, group, annotator.
+  Result<std::vector<Assignment>> assignments(const std::string& annotator = {});
   // One segment of a set; the segments of one run and group overlapping [firstStep, lastStep]
   // (by first step); and a replacement of those with `with` in one transaction (the segments given
   // must not overlap each other). The undo of label edits is built on these.
@@ -426,7 +513,8 @@ class LabelStore {
                                                     std::int64_t lastStep);
   Status replaceSegmentsInRange(std::int64_t setId, std::int64_t runId, SensorGroup group,
                                 std::int64_t firstStep, std::int64_t lastStep,
-                                const std::vector<LabelSegment>& with);
+                                const std::vector<LabelSegment>& with,
+                                const EditOptions& options = {});
   // Steps covered by the set's segments per run (summed over the eight groups), for the runs it
   // has segments on: (run id, covered group-steps).
   Result<std::vector<std::pair<std::int64_t, std::int64_t>>> labelledSteps(std::int64_t setId);

@@ -178,12 +178,46 @@ UPDATE steps SET crc = tactile_step_crc(run_id, step, x, y, theta, v, omega, blo
 UPDATE step_blocks SET crc = tactile_block_crc(run_id, level, block, minmax);
 )sql";
 
-constexpr std::array<Migration, 5> kMigrations{{
+// Label history and assignments: every label edit is a revision (who, when, the range, what it
+// replaced), so annotators editing one corpus side by side see who changed what and an edit over
+// steps changed since it was read is refused (docs/team.md#annotators-side-by-side). Assignments
+// give runs (or one group of a run) to annotators with a state: todo, labelled, reviewed.
+constexpr std::string_view kVersion6 = R"sql(
+CREATE TABLE label_revisions(
+  id INTEGER PRIMARY KEY,
+  set_id INTEGER NOT NULL REFERENCES label_sets(id) ON DELETE CASCADE,
+  run_id INTEGER NOT NULL REFERENCES runs(id) ON DELETE CASCADE,
+  grp TEXT NOT NULL CHECK(grp IN ('F','FLC','L','RLC','B','RRC','R','FRC')),
+  first_step INTEGER NOT NULL,
+  last_step INTEGER NOT NULL,
+  class TEXT,
+  action TEXT NOT NULL,
+  annotator TEXT NOT NULL DEFAULT '',
+  created_at TEXT NOT NULL,
+  replaced TEXT NOT NULL DEFAULT '[]'
+);
+CREATE INDEX label_revisions_by_run ON label_revisions(set_id, run_id, id);
+CREATE INDEX label_revisions_of_run ON label_revisions(run_id);
+CREATE TABLE assignments(
+  id INTEGER PRIMARY KEY,
+  run_id INTEGER NOT NULL REFERENCES runs(id) ON DELETE CASCADE,
+  grp TEXT NOT NULL DEFAULT '',
+  annotator TEXT NOT NULL,
+  label_set TEXT NOT NULL DEFAULT '',
+  state TEXT NOT NULL CHECK(state IN ('todo','labelled','reviewed')),
+  updated_by TEXT NOT NULL DEFAULT '',
+  updated_at TEXT NOT NULL,
+  UNIQUE(run_id, grp, annotator)
+);
+)sql";
+
+constexpr std::array<Migration, 6> kMigrations{{
     {1, "runs, steps, truth, step summaries, scenes", kVersion1},
     {2, "label sets and segments", kVersion2},
     {3, "models, sweeps and sweep cells", kVersion3},
     {4, "truth packed into the steps, sparse sensors and summary blobs", kVersion4},
     {5, "checksums of every run, step and summary block row", kVersion5},
+    {6, "label revisions and assignments", kVersion6},
 }};
 static_assert(kMigrations.back().version == kSchemaVersion);
 

@@ -275,7 +275,8 @@ std::pair<std::int64_t, std::int64_t> widened(const std::vector<storage::LabelSe
 
 }  // namespace
 
-Result<LabelEdit> Workspace::addSegment(std::int64_t setId, const storage::LabelSegment& segment) {
+Result<LabelEdit> Workspace::addSegment(std::int64_t setId, const storage::LabelSegment& segment,
+                                        const storage::EditOptions& options) {
   std::int64_t runId = segment.runId;
   if (runId == 0) {
     auto info = db_->runs().find(segment.run);
@@ -289,9 +290,10 @@ Result<LabelEdit> Workspace::addSegment(std::int64_t setId, const storage::Label
   edit.before = std::move(before.value());
   storage::LabelSegment toAdd = segment;
   toAdd.runId = runId;
-  auto id = db_->labels().addSegment(setId, toAdd);
+  auto id = db_->labels().addSegment(setId, toAdd, options);
   if (!id) return id.error();
   edit.segmentId = id.value();
+  edit.revision = db_->labels().lastRevision();
   const auto [first, last] = widened(edit.before, segment.firstStep, segment.lastStep);
   auto after = db_->labels().segmentsInRange(setId, runId, segment.group, first, last);
   if (!after) return after.error();
@@ -300,7 +302,8 @@ Result<LabelEdit> Workspace::addSegment(std::int64_t setId, const storage::Label
 }
 
 Result<LabelEdit> Workspace::changeSegment(std::int64_t setId, std::int64_t segmentId,
-                                           const storage::LabelSegment& segment) {
+                                           const storage::LabelSegment& segment,
+                                           const storage::EditOptions& options) {
   auto old = db_->labels().segment(setId, segmentId);
   if (!old) return old.error();
   if (segment.group != old->group || (segment.runId != 0 && segment.runId != old->runId)) {
@@ -315,7 +318,8 @@ Result<LabelEdit> Workspace::changeSegment(std::int64_t setId, std::int64_t segm
   edit.before = std::move(before.value());
   storage::LabelSegment changed = segment;
   changed.runId = runId;
-  if (Status s = db_->labels().changeSegment(segmentId, changed); !s) return s.error();
+  if (Status s = db_->labels().changeSegment(segmentId, changed, options); !s) return s.error();
+  edit.revision = db_->labels().lastRevision();
   const auto [wideFirst, wideLast] = widened(edit.before, first, last);
   auto after = db_->labels().segmentsInRange(setId, runId, old->group, wideFirst, wideLast);
   if (!after) return after.error();
@@ -323,11 +327,13 @@ Result<LabelEdit> Workspace::changeSegment(std::int64_t setId, std::int64_t segm
   return edit;
 }
 
-Result<LabelEdit> Workspace::removeSegment(std::int64_t setId, std::int64_t segmentId) {
+Result<LabelEdit> Workspace::removeSegment(std::int64_t setId, std::int64_t segmentId,
+                                           const storage::EditOptions& options) {
   auto old = db_->labels().segment(setId, segmentId);
   if (!old) return old.error();
   LabelEdit edit{setId, old->runId, old->group, {old.value()}, {}, 0};
-  if (Status s = db_->labels().removeSegment(segmentId); !s) return s.error();
+  if (Status s = db_->labels().removeSegment(segmentId, options); !s) return s.error();
+  edit.revision = db_->labels().lastRevision();
   return edit;
 }
 
@@ -347,18 +353,26 @@ std::pair<std::int64_t, std::int64_t> extent(const LabelEdit& edit) {
 
 }  // namespace
 
-Status Workspace::undo(const LabelEdit& edit) {
+Status Workspace::undo(LabelEdit& edit, const storage::EditOptions& options) {
   const auto [first, last] = extent(edit);
   if (first > last) return Status::success();
-  return db_->labels().replaceSegmentsInRange(edit.setId, edit.runId, edit.group, first, last,
-                                              edit.before);
+  storage::EditOptions undoing = options;
+  if (undoing.action.empty()) undoing.action = "undo";
+  Status done = db_->labels().replaceSegmentsInRange(edit.setId, edit.runId, edit.group, first,
+                                                     last, edit.before, undoing);
+  if (done) edit.revision = db_->labels().lastRevision();
+  return done;
 }
 
-Status Workspace::redo(const LabelEdit& edit) {
+Status Workspace::redo(LabelEdit& edit, const storage::EditOptions& options) {
   const auto [first, last] = extent(edit);
   if (first > last) return Status::success();
-  return db_->labels().replaceSegmentsInRange(edit.setId, edit.runId, edit.group, first, last,
-                                              edit.after);
+  storage::EditOptions redoing = options;
+  if (redoing.action.empty()) redoing.action = "redo";
+  Status done = db_->labels().replaceSegmentsInRange(edit.setId, edit.runId, edit.group, first,
+                                                     last, edit.after, redoing);
+  if (done) edit.revision = db_->labels().lastRevision();
+  return done;
 }
 
 // ---- learning ----------------------------------------------------------------------------------

@@ -130,6 +130,8 @@ struct LabelEdit {
   std::vector<storage::LabelSegment> before;
   std::vector<storage::LabelSegment> after;
   std::int64_t segmentId = 0;  // the added or changed segment (0 for a removal)
+  // The revision its last application (the edit, an undo or a redo) made.
+  std::int64_t revision = 0;
 };
 
 // How far a run's labels agree with its truth in one group, over the steps the labels cover.
@@ -189,14 +191,19 @@ class Workspace {
   Result<std::vector<std::pair<std::int64_t, double>>> labelCoverage(std::int64_t setId);
 
   // ---- label edits, each one transaction, each returning what it replaced ----
-  Result<LabelEdit> addSegment(std::int64_t setId, const storage::LabelSegment& segment);
+  // `options` name the annotator and the revision the edit is based on (a conflict stores
+  // nothing: storage::isLabelConflict).
+  Result<LabelEdit> addSegment(std::int64_t setId, const storage::LabelSegment& segment,
+                               const storage::EditOptions& options = {});
   Result<LabelEdit> changeSegment(std::int64_t setId, std::int64_t segmentId,
-                                  const storage::LabelSegment& segment);
-  Result<LabelEdit> removeSegment(std::int64_t setId, std::int64_t segmentId);
+                                  const storage::LabelSegment& segment,
+                                  const storage::EditOptions& options = {});
+  Result<LabelEdit> removeSegment(std::int64_t setId, std::int64_t segmentId,
+                                  const storage::EditOptions& options = {});
   // Puts the touched range of the edit back as it was before the edit (undo), or as it was after
-  // it (redo).
-  Status undo(const LabelEdit& edit);
-  Status redo(const LabelEdit& edit);
+  // it (redo); edit.revision becomes the revision this made.
+  Status undo(LabelEdit& edit, const storage::EditOptions& options = {});
+  Status redo(LabelEdit& edit, const storage::EditOptions& options = {});
 
   // ---- learning ----
   // Trains one model per group on the label set's segments of the stored runs, scores it as the

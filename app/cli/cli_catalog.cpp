@@ -13,6 +13,8 @@
 namespace tactile::cli {
 
 void registerCatalogVerbs(CLI::App& app);
+// labels set|history|assign|assignments|agreement (cli_labels_team.cpp).
+void registerTeamLabelVerbs(CLI::App& labels);
 
 namespace {
 
@@ -222,7 +224,9 @@ void registerCatalogVerbs(CLI::App& app) {
   }
   {
     CLI::App* labels = app.add_subcommand(
-        "labels", "List, rename, delete, import or export label sets (CSV or JSON files)");
+        "labels",
+        "Label sets: list, rename, delete, import, export; edits, history, assignments and "
+        "agreement");
     labels->require_subcommand(1, 1);
     auto listArgs = std::make_shared<CatalogArgs>();
     CLI::App* list = labels->add_subcommand(
@@ -267,6 +271,7 @@ void registerCatalogVerbs(CLI::App& app) {
     setAction(exp, [exportArgs] {
       return runLabelsExport(exportArgs->db, exportArgs->set, exportArgs->file, exportArgs->json);
     });
+    registerTeamLabelVerbs(*labels);
   }
 }
 

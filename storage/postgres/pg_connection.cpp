@@ -401,6 +401,21 @@ class PgConnection : public ConnectionBackend {
     if (PQtransactionStatus(conn_) != PQTRANS_IDLE) PQclear(PQexec(conn_, "COMMIT"));
   }
   bool inTransaction() const override { return PQtransactionStatus(conn_) != PQTRANS_IDLE; }
+  bool changedSinceLastPoll(std::string_view channel) override {
+    if (std::find(listening_.begin(), listening_.end(), channel) == listening_.end()) {
+      exec("LISTEN " + std::string(channel));
+      listening_.emplace_back(channel);
+      return false;
+    }
+    // Reads what the server sent without a round trip; a lost connection shows on the next query.
+    PQconsumeInput(conn_);
+    bool changed = false;
+    while (PGnotify* note = PQnotifies(conn_)) {
+      changed = changed || channel == note->relname;
+      PQfreemem(note);
+    }
+    return changed;
+  }
 
   PGconn* handle() const { return conn_; }
   // The integer widths of a bulk insert's columns, asked of the catalogue once per session.
@@ -423,6 +438,7 @@ class PgConnection : public ConnectionBackend {
 
  private:
   PGconn* conn_ = nullptr;
+  std::vector<std::string> listening_;  // channels LISTENed to
   std::string name_;
   std::int64_t changes_ = 0;
   std::uint64_t statements_ = 0;

@@ -212,6 +212,18 @@ class SqliteConnection : public ConnectionBackend {
     }
   }
   bool inTransaction() const override { return sqlite3_get_autocommit(db_) == 0; }
+  bool changedSinceLastPoll(std::string_view /*channel*/) override {
+    sqlite3_stmt* stmt = nullptr;
+    if (sqlite3_prepare_v2(db_, "PRAGMA data_version", -1, &stmt, nullptr) != SQLITE_OK) {
+      fail(db_, "cannot prepare statement", "PRAGMA data_version");
+    }
+    std::int64_t version = dataVersion_;
+    if (sqlite3_step(stmt) == SQLITE_ROW) version = sqlite3_column_int64(stmt, 0);
+    sqlite3_finalize(stmt);
+    const bool changed = dataVersion_ >= 0 && version != dataVersion_;
+    dataVersion_ = version;
+    return changed;
+  }
 
   sqlite3* handle() const { return db_; }
   void stampOnCommit(std::int64_t applicationId) {
@@ -228,6 +240,7 @@ class SqliteConnection : public ConnectionBackend {
   std::string file_;
   sqlite3_stmt* stamp_ = nullptr;  // PRAGMA application_id = ..., see stampPageOneOnCommit
   bool snapshotOpened_ = false;    // beginSnapshot opened the transaction (none was open)
+  std::int64_t dataVersion_ = -1;  // PRAGMA data_version at the last poll
 };
 
 SqliteConnection& sqliteOf(Connection& connection) {

@@ -166,7 +166,8 @@ TEST(Checksums, AnOlderDatabaseGetsItsChecksumsOnMigration) {
   const fs::path path = makeDatabase(dir, runs);
   sqliteExec(path,
              "ALTER TABLE runs DROP COLUMN crc; ALTER TABLE steps DROP COLUMN crc; "
-             "ALTER TABLE step_blocks DROP COLUMN crc; PRAGMA user_version = 4;");
+             "ALTER TABLE step_blocks DROP COLUMN crc; DROP TABLE label_revisions; "
+             "DROP TABLE assignments; PRAGMA user_version = 4;");
   {
     auto old = RunDatabase::open(path, OpenMode::ReadOnly);
     ASSERT_FALSE(old.ok());  // read-only never migrates
