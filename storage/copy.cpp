@@ -400,6 +400,59 @@ Result<CopyReport> RunDatabase::copyFrom(RunDatabase& source, const CopyOptions&
         rows.finish();
         report.segmentsCopied += static_cast<std::int64_t>(bulk.size());
       }
+      // The set's history on the runs both hold, in its order; a revision already here (the same
+      // edit, time and what it replaced) is not added again.
+      {
+        db::Statement s(from.connection,
+                        "SELECT runs.name, grp, first_step, last_step, class, action, "
+                        "label_revisions.annotator, label_revisions.created_at, replaced "
+                        "FROM label_revisions JOIN runs ON runs.id = run_id WHERE set_id = ? "
+                        "ORDER BY label_revisions.id");
+        s.bind(1, sourceId);
+        db::Statement& present = to.statement(
+            "SELECT 1 FROM label_revisions WHERE set_id = ? AND run_id = ? AND grp = ? AND "
+            "first_step = ? AND last_step = ? AND action = ? AND annotator = ? AND created_at = ? "
+            "AND replaced = ? AND (class = ? OR (class IS NULL AND ? = ''))");
+        db::Statement& insert = to.statement(
+            "INSERT INTO label_revisions(set_id, run_id, grp, first_step, last_step, class, "
+            "action, annotator, created_at, replaced) VALUES(?, ?, ?, ?, ?, ?, ?, ?, ?, ?)");
+        while (s.step()) {
+          const auto run = targetRuns.find(s.columnText(0));
+          if (run == targetRuns.end()) continue;
+          const std::string grp = s.columnText(1);
+          const std::string cls = s.columnIsNull(4) ? std::string() : s.columnText(4);
+          const std::string action = s.columnText(5);
+          const std::string annotator = s.columnText(6);
+          const std::string time = s.columnText(7);
+          const std::string replaced = s.columnText(8);
+          present.bind(1, setId)
+              .bind(2, run->second)
+              .bind(3, grp)
+              .bind(4, s.columnInt(2))
+              .bind(5, s.columnInt(3))
+              .bind(6, action)
+              .bind(7, annotator)
+              .bind(8, time)
+              .bind(9, replaced)
+              .bind(10, cls)
+              .bind(11, cls);
+          const bool there = present.step();
+          present.reset();
+          if (there) continue;
+          insert.bind(1, setId)
+              .bind(2, run->second)
+              .bind(3, grp)
+              .bind(4, s.columnInt(2))
+              .bind(5, s.columnInt(3));
+          if (cls.empty()) {
+            insert.bindNull(6);
+          } else {
+            insert.bind(6, cls);
+          }
+          insert.bind(7, action).bind(8, annotator).bind(9, time).bind(10, replaced).run();
+          ++report.revisionsCopied;
+        }
+      }
       transaction.commit();
     }
 

@@ -43,11 +43,12 @@ struct RunDatabase::Impl {
   // ---- label history (label_history.cpp), inside a caller's write transaction ----
   // The revision the last edit made.
   std::int64_t lastRevision = 0;
-  // Throws a conflict (isLabelConflict) when `expected` is set and a later revision of the set on
-  // the run changed a step of [firstStep, lastStep] in `group`.
+  // Throws a conflict (isLabelConflict) when options.expectRevision is set and a later revision
+  // of the set on the run (by another annotator with options.othersOnly) changed a step of
+  // [firstStep, lastStep] in `group`.
   void checkExpectedRevision(std::int64_t setId, std::int64_t runId, SensorGroup group,
                              std::int64_t firstStep, std::int64_t lastStep,
-                             const std::optional<std::int64_t>& expected);
+                             const EditOptions& options);
   // The set's segments of one run and group over [firstStep, lastStep], clipped to it.
   std::vector<LabelSegment> clippedSegments(std::int64_t setId, std::int64_t runId,
                                             SensorGroup group, std::int64_t firstStep,

@@ -59,19 +59,21 @@ bool isLabelConflict(const Error& error) {
 
 void RunDatabase::Impl::checkExpectedRevision(std::int64_t setId, std::int64_t runId,
                                               SensorGroup group, std::int64_t firstStep,
-                                              std::int64_t lastStep,
-                                              const std::optional<std::int64_t>& expected) {
+                                              std::int64_t lastStep, const EditOptions& options) {
+  const std::optional<std::int64_t>& expected = options.expectRevision;
   if (!expected) return;
   db::Statement& s = statement(
       "SELECT id, annotator, created_at, first_step, last_step FROM label_revisions "
       "WHERE set_id = ? AND run_id = ? AND grp = ? AND id > ? AND first_step <= ? AND "
-      "last_step >= ? ORDER BY id DESC LIMIT 1");
+      "last_step >= ? AND (? = 0 OR annotator <> ?) ORDER BY id DESC LIMIT 1");
   s.bind(1, setId)
       .bind(2, runId)
       .bind(3, groupInfo(group).shortName)
       .bind(4, *expected)
       .bind(5, lastStep)
-      .bind(6, firstStep);
+      .bind(6, firstStep)
+      .bind(7, options.othersOnly ? 1 : 0)
+      .bind(8, std::string_view(options.annotator));
   if (!s.step()) return;
   const std::int64_t revision = s.columnInt(0);
   const std::string annotator = s.columnText(1);
@@ -155,8 +157,7 @@ Result<std::int64_t> LabelStore::setRange(std::int64_t setId, std::int64_t runId
     set.reset();
     // Every group is checked before anything is written: the edit stands or fails as a whole.
     for (const SensorGroup group : groups) {
-      impl_->checkExpectedRevision(setId, runId, group, firstStep, lastStep,
-                                   options.expectRevision);
+      impl_->checkExpectedRevision(setId, runId, group, firstStep, lastStep, options);
     }
     for (const SensorGroup group : groups) {
       LabelSegment segment;

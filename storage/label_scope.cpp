@@ -90,7 +90,7 @@ Status LabelStore::replaceSegmentsInRange(std::int64_t setId, std::int64_t runId
       first = std::min(first, s.firstStep);
       last = std::max(last, s.lastStep);
     }
-    impl_->checkExpectedRevision(setId, runId, group, first, last, options.expectRevision);
+    impl_->checkExpectedRevision(setId, runId, group, first, last, options);
     const std::vector<LabelSegment> replaced =
         impl_->clippedSegments(setId, runId, group, first, last);
     impl_

@@ -231,7 +231,7 @@ Result<std::int64_t> LabelStore::addSegment(std::int64_t setId, const LabelSegme
     added.annotator = editor(options, segment);
     if (added.runId == 0) added.runId = impl_->runIdByName(segment.run);
     impl_->checkExpectedRevision(setId, added.runId, added.group, added.firstStep, added.lastStep,
-                                 options.expectRevision);
+                                 options);
     const std::vector<LabelSegment> replaced =
         impl_->clippedSegments(setId, added.runId, added.group, added.firstStep, added.lastStep);
     const std::int64_t id = impl_->insertSegmentNewestWins(setId, added, 0);
@@ -266,10 +266,8 @@ Status LabelStore::changeSegment(std::int64_t segmentId, const LabelSegment& seg
     const bool moves = changed.runId != oldRun || changed.group != *oldGroup;
     const std::int64_t first = moves ? changed.firstStep : std::min(oldFirst, changed.firstStep);
     const std::int64_t last = moves ? changed.lastStep : std::max(oldLast, changed.lastStep);
-    impl_->checkExpectedRevision(setId, oldRun, *oldGroup, oldFirst, oldLast,
-                                 options.expectRevision);
-    impl_->checkExpectedRevision(setId, changed.runId, changed.group, first, last,
-                                 options.expectRevision);
+    impl_->checkExpectedRevision(setId, oldRun, *oldGroup, oldFirst, oldLast, options);
+    impl_->checkExpectedRevision(setId, changed.runId, changed.group, first, last, options);
     const std::vector<LabelSegment> leftBehind =
         moves ? impl_->clippedSegments(setId, oldRun, *oldGroup, oldFirst, oldLast)
               : std::vector<LabelSegment>{};
@@ -305,7 +303,7 @@ Status LabelStore::removeSegment(std::int64_t segmentId, const EditOptions& opti
     const std::int64_t last = s.columnInt(4);
     s.reset();
     if (!group) throw db::DbError("malformed label segment " + std::to_string(segmentId));
-    impl_->checkExpectedRevision(setId, runId, *group, first, last, options.expectRevision);
+    impl_->checkExpectedRevision(setId, runId, *group, first, last, options);
     const std::vector<LabelSegment> replaced =
         impl_->clippedSegments(setId, runId, *group, first, last);
     impl_->statement("DELETE FROM label_segments WHERE id = ?").bind(1, segmentId).run();

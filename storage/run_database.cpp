@@ -511,6 +511,30 @@ Result<std::unique_ptr<RunDatabase>> RunDatabase::openServer(const std::string& 
   }
 }
 
+RunDatabase::Rights RunDatabase::rights() {
+  Rights rights;
+  if (impl_->readOnly) return {false, false, false};
+  if (!onServer()) return rights;
+  const ResetStatements reset{*impl_};
+  try {
+    const db::ServerRights server = db::serverRights(impl_->connection);
+    rights.editLabels = server.editLabels;
+    rights.keepModels = server.keepModels;
+    rights.manageRuns = server.manageRuns;
+  } catch (const std::exception&) {
+    return {false, false, false};
+  }
+  return rights;
+}
+
+Status RunDatabase::grant(const std::string& role, const std::string& right) {
+  if (!onServer()) {
+    return Error(impl_->path.string(),
+                 "roles belong to a PostgreSQL server; a file is guarded by its file permissions");
+  }
+  return guardedStatus(*impl_, [&] { db::grantRole(impl_->connection, role, right); });
+}
+
 RunStore RunDatabase::runs() {
   return RunStore(*impl_);
 }

@@ -176,6 +176,9 @@ struct EditOptions {
   std::optional<std::int64_t> expectRevision;
   // The history's word for the edit; empty: the call's own ("set", "change", ...).
   std::string action;
+  // Only revisions by annotators other than `annotator` count against `expectRevision` (an undo:
+  // based on the edit it takes back, whatever the same annotator did since).
+  bool othersOnly = false;
 };
 
 // Whether a failed label edit was refused because someone changed its steps since its revision.
@@ -275,6 +278,7 @@ struct CopyReport {
   std::int64_t setsCreated = 0;
   std::int64_t segmentsCopied = 0;
   std::int64_t segmentsWithoutRun = 0;  // on runs the target does not hold
+  std::int64_t revisionsCopied = 0;     // label history entries
   std::int64_t modelsCopied = 0;
   std::int64_t sweepsCopied = 0;
   std::vector<std::string> warnings;
@@ -345,6 +349,19 @@ class RunDatabase {
   SweepStore sweeps();
 
   IntegrityReport check();
+
+  // ---- rights of a team (docs/team.md#roles) ----
+  // What this connection may do: on a server, what its role was granted; on a file, everything
+  // unless opened read-only.
+  struct Rights {
+    bool editLabels = true;
+    bool keepModels = true;  // store models and sweeps
+    bool manageRuns = true;  // import, rename and delete runs
+  };
+  Rights rights();
+  // On a server: makes the login role `role` when absent and gives it exactly `right`
+  // ("annotator", "researcher" or "admin"); the server enforces it. An error on a file.
+  Status grant(const std::string& role, const std::string& right);
 
   // Copies runs (row by row with their stored bytes: the copy exports byte for byte as the source
   // does), label sets, models and sweeps from `source` into this database; either may be SQLite or

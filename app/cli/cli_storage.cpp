@@ -335,15 +335,17 @@ int runCopy(const std::string& from, const std::string& to, const std::vector<st
                {"label_sets_created", report->setsCreated},
                {"segments_copied", report->segmentsCopied},
                {"segments_without_run", report->segmentsWithoutRun},
+               {"label_revisions_copied", report->revisionsCopied},
                {"models_copied", report->modelsCopied},
                {"sweeps_copied", report->sweepsCopied},
                {"seconds", seconds}});
   } else {
     std::printf(
-        "%lld runs copied (%lld steps), %lld already there; %lld label segments copied, %lld "
-        "models, %lld sweeps; %.3f s\n",
+        "%lld runs copied (%lld steps), %lld already there; %lld label segments copied (%lld "
+        "history entries), %lld models, %lld sweeps; %.3f s\n",
         static_cast<long long>(report->runsCopied), static_cast<long long>(report->stepsCopied),
         static_cast<long long>(report->runsPresent), static_cast<long long>(report->segmentsCopied),
+        static_cast<long long>(report->revisionsCopied),
         static_cast<long long>(report->modelsCopied), static_cast<long long>(report->sweepsCopied),
         seconds);
     if (report->segmentsWithoutRun > 0) {
@@ -757,6 +759,39 @@ void registerStorageVerbs(CLI::App& app, CLI::App& bench) {
     copy->add_flag("--json", copyArgs->json, "Print a JSON summary");
     setAction(copy, [copyArgs] {
       return runCopy(copyArgs->from, copyArgs->to, copyArgs->runs, copyArgs->sets, copyArgs->json);
+    });
+    struct GrantArgs {
+      std::string db, role, right;
+      bool json = false;
+    };
+    auto grantArgs = std::make_shared<GrantArgs>();
+    CLI::App* grant = dbCmd->add_subcommand(
+        "grant",
+        "Give a PostgreSQL login role (made when absent) one right on a server database: "
+        "annotator (edit labels), researcher (also keep models and sweeps) or admin (also "
+        "import, rename and delete runs)");
+    grant->add_option("--db", grantArgs->db, "A PostgreSQL address (as a role that may grant)")
+        ->envname("TACTILE_DB")
+        ->required();
+    grant->add_option("--role", grantArgs->role, "The login role (user name)")->required();
+    grant->add_option("--as", grantArgs->right, "annotator, researcher or admin")
+        ->required()
+        ->check(CLI::IsMember({"annotator", "researcher", "admin"}));
+    grant->add_flag("--json", grantArgs->json, R"(Print {"role","right"})");
+    setAction(grant, [grantArgs] {
+      if (!storage::isServerAddress(grantArgs->db)) {
+        throw UsageError("--db: roles belong to a PostgreSQL server; give its address");
+      }
+      auto db = openDatabaseForWrite(grantArgs->db);
+      if (const Status s = db->grant(grantArgs->role, grantArgs->right); !s) {
+        throw std::runtime_error(s.errorText());
+      }
+      if (grantArgs->json) {
+        printJson({{"role", grantArgs->role}, {"right", grantArgs->right}});
+      } else {
+        std::printf("%s may now work as %s\n", grantArgs->role.c_str(), grantArgs->right.c_str());
+      }
+      return kExitOk;
     });
   }
   {

@@ -20,6 +20,7 @@
 #include <QMimeData>
 #include <QPlainTextEdit>
 #include <QProgressDialog>
+#include <QRegularExpression>
 #include <QSettings>
 #include <QStatusBar>
 #include <QTextBrowser>
@@ -34,6 +35,7 @@
 #include "app/gui/common/progress_bridge.h"
 #include "app/gui/common/settings_keys.h"
 #include "app/gui/common/shortcuts.h"
+#include "app/gui/labels/history_view.h"
 #include "app/gui/labels/label_model.h"
 #include "app/gui/labels/label_panel_view.h"
 #include "app/gui/learning/model_picker_dialog.h"
@@ -117,6 +119,18 @@ MainWindow::MainWindow(QWidget* parent)
   connect(labels_, &LabelModel::errorOccurred, this, &MainWindow::showError);
   connect(labelPanel_, &LabelPanelView::errorOccurred, this, &MainWindow::showError);
   connect(labelPanel_, &LabelPanelView::statusMessage, this, &MainWindow::showMessage);
+  connect(labels_, &LabelModel::changedElsewhere, this, [this](const QString& lines) {
+    showMessage(tr("Labels changed by others: %1").arg(QString(lines).replace('\n', "; ")));
+  });
+  connect(labels_, &LabelModel::connectionLost, this, &MainWindow::serverLost);
+  reconnectTimer_ = new QTimer(this);
+  reconnectTimer_->setInterval(3000);
+  connect(reconnectTimer_, &QTimer::timeout, this, [this] {
+    if (openDatabase(dbPath_).ok()) {
+      reconnectTimer_->stop();
+      showMessage(tr("Reconnected to %1").arg(dbPath_));
+    }
+  });
   connect(session_, &RunSession::currentStepChanged, this, &MainWindow::updateStatus);
   connect(session_, &RunSession::selectionChanged, this, &MainWindow::updateStatus);
   connect(session_, &RunSession::runOpened, this, [this] {
@@ -189,7 +203,10 @@ void MainWindow::createViews() {
   QDockWidget* navigator =
       dock(tr("Navigator"), QStringLiteral("navigatorDock"),
            new NavigatorPanelView(session_, navTrack, this), Qt::RightDockWidgetArea);
+  QDockWidget* history = dock(tr("History"), QStringLiteral("historyDock"),
+                              new HistoryView(session_, labels_, this), Qt::RightDockWidgetArea);
   tabifyDockWidget(labels, navigator);
+  tabifyDockWidget(labels, history);
   labels->raise();
   splitDockWidget(runs, route, Qt::Vertical);
   resizeDocks({runs, route}, {260, 560}, Qt::Vertical);
@@ -326,6 +343,8 @@ void MainWindow::createActions() {
   bindShortcut(file->addAction(tr("&Open Database..."), this, [this] { chooseDatabase(false); }),
                QStringLiteral("openDatabase"));
   file->addAction(tr("&New Database..."), this, [this] { chooseDatabase(true); });
+  QAction* openServer = file->addAction(tr("Open &Server..."), this, &MainWindow::chooseServer);
+  openServer->setObjectName(QStringLiteral("openServerAction"));
   recentMenu_ = file->addMenu(tr("Open &Recent"));
   file->addSeparator();
   bindShortcut(file->addAction(tr("&Import Runs..."), this, &MainWindow::chooseRunFiles),
@@ -496,7 +515,9 @@ Status MainWindow::openDatabase(const QString& path, bool create) {
   session_->setWorkspace(nullptr);
   labels_->setWorkspace(nullptr);
   workspace_ = std::move(opened.value());
-  dbPath_ = QFileInfo(path).absoluteFilePath();
+  dbPath_ =
+      storage::isServerAddress(path.toStdString()) ? path : QFileInfo(path).absoluteFilePath();
+  reconnectTimer_->stop();
   session_->setWorkspace(workspace_.get());
   labels_->setWorkspace(workspace_.get());
   rememberDatabase(dbPath_);
@@ -603,6 +624,75 @@ void MainWindow::chooseDatabase(bool create) {
   if (path.isEmpty()) return;
   Status s = openDatabase(path, create);
   if (!s) showOpenError(QString::fromStdString(s.errorText()));
+}
+
+namespace {
+
+// An address as the workbench may keep it: without a password (one in the address is moved to
+// the process's PGPASSWORD, which libpq reads and nothing saves).
+QString addressWithoutPassword(const QString& address) {
+  const std::string shown = storage::shownAddress(address.toStdString());
+  if (shown.find("***") == std::string::npos) return address;
+  QString plain = QString::fromStdString(shown);
+  // The password itself, for PGPASSWORD: what "***" stands for.
+  const qsizetype at = plain.indexOf(QStringLiteral("***"));
+  const QString after = plain.mid(at + 3);
+  const qsizetype end = address.size() - after.size();
+  qputenv("PGPASSWORD", address.mid(at, end - at).toUtf8());
+  plain.remove(QRegularExpression(QStringLiteral(":\\*\\*\\*(?=@)")));
+  plain.remove(QRegularExpression(QStringLiteral("[?&]?password=\\*\\*\\*")));
+  plain.remove(QRegularExpression(QStringLiteral("\\bpassword=\\*\\*\\* ?")));
+  return plain;
+}
+
+bool needsPassword(const QString& error) {
+  return error.contains(QStringLiteral("no password supplied")) ||
+         error.contains(QStringLiteral("password authentication failed"));
+}
+
+}  // namespace
+
+void MainWindow::chooseServer() {
+  QSettings settings;
+  const QStringList recent = settings.value(keys::kRecentServers).toStringList();
+  bool ok = false;
+  const QString given = QInputDialog::getItem(
+      this, tr("Open Server"),
+      tr("PostgreSQL address, e.g. postgresql://anna@lab-server/tactile\n(the password is asked "
+         "when the server wants one, or comes from ~/.pgpass)"),
+      recent, 0, true, &ok);
+  if (!ok || given.trimmed().isEmpty()) return;
+  const QString address = addressWithoutPassword(given.trimmed());
+  if (!storage::isServerAddress(address.toStdString())) {
+    showOpenError(tr("%1 is not a server address (postgresql://USER@HOST/DATABASE)").arg(address));
+    return;
+  }
+  Status s = openDatabase(address);
+  if (!s && needsPassword(QString::fromStdString(s.errorText()))) {
+    const QString password =
+        QInputDialog::getText(this, tr("Password"), tr("Password for %1:").arg(address),
+                              QLineEdit::Password, QString(), &ok);
+    if (!ok) return;
+    qputenv("PGPASSWORD", password.toUtf8());  // this process only; never saved
+    s = openDatabase(address);
+  }
+  if (!s) {
+    showOpenError(QString::fromStdString(s.errorText()));
+    return;
+  }
+  QStringList servers = recent;
+  servers.removeAll(address);
+  servers.prepend(address);
+  while (servers.size() > keys::kMaxRecentDatabases)
+    servers.removeLast();
+  settings.setValue(keys::kRecentServers, servers);
+}
+
+void MainWindow::serverLost(const QString& message) {
+  showError(tr("Lost the database: %1. Trying again every 3 seconds; edits are not stored "
+               "meanwhile.")
+                .arg(message));
+  reconnectTimer_->start();
 }
 
 void MainWindow::chooseRunFiles() {
@@ -828,7 +918,10 @@ void MainWindow::showMessage(const QString& message) {
 
 void MainWindow::updateTitle() {
   QString title = tr("Tactile Workbench");
-  if (!dbPath_.isEmpty()) title = QFileInfo(dbPath_).fileName() + QStringLiteral(" - ") + title;
+  if (!dbPath_.isEmpty()) {
+    const bool server = storage::isServerAddress(dbPath_.toStdString());
+    title = (server ? dbPath_ : QFileInfo(dbPath_).fileName()) + QStringLiteral(" - ") + title;
+  }
   if (session_->isOpen())
     title = QString::fromStdString(session_->info().name) + QStringLiteral(" - ") + title;
   setWindowTitle(title);

@@ -143,6 +143,11 @@ class MainWindow : public QMainWindow {
   void stepBy(std::int64_t delta);
   void stepByScreen(int direction);
   void chooseDatabase(bool create);
+  // File > Open Server: a PostgreSQL address (recent ones offered, never with a password); a
+  // password the server asks for is asked once and kept in this process only.
+  void chooseServer();
+  // The server went away: says so and tries to open it again every few seconds.
+  void serverLost(const QString& message);
   void chooseRunFiles();
   void showAbout();
   void chooseSweep();
@@ -173,6 +178,7 @@ class MainWindow : public QMainWindow {
   SweepResultsWindow* results_ = nullptr;
   PredictionModel* predictions_ = nullptr;
   QTimer* saveTimer_ = nullptr;
+  QTimer* reconnectTimer_ = nullptr;
   QList<QKeySequence> globalKeys_;  // keys a focused widget other than a text field cannot take
   QHash<QKeySequence, QAction*> actionOfKey_;  // every bound key
 };

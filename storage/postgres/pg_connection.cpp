@@ -96,6 +96,24 @@ std::string trimmed(const char* text) {
 }
 
 // A statement's or connection's failure as one line, with the SQLSTATE kept for callers.
+// What a refused statement needed, from the table the server names: "; the role 'anna' lacks the
+// admin right (importing, renaming and deleting runs)".
+std::string missingRight(PGconn* conn, const std::string& text) {
+  const std::string_view marker = "for table ";
+  const std::size_t at = text.find(marker);
+  if (at == std::string::npos) return {};
+  const std::string table = text.substr(at + marker.size());
+  std::string right = "admin right (importing, renaming and deleting runs)";
+  if (table == "models" || table == "sweeps" || table == "sweep_cells") {
+    right = "researcher right (keeping models and sweeps)";
+  } else if (table.starts_with("label_") || table == "assignments") {
+    right = "annotator right (editing labels)";
+  }
+  const char* user = PQuser(conn);
+  return "; the role '" + std::string(user == nullptr ? "" : user) + "' lacks the " + right +
+         " (tactile db grant)";
+}
+
 [[noreturn]] void failResult(const std::string& name, PGconn* conn, const PGresult* result,
                              const std::string& what, std::string_view sql) {
   std::string state;
@@ -109,7 +127,7 @@ std::string trimmed(const char* text) {
     throw DbError(name, "lost the connection to the server (" + text + ")", "08006");
   }
   std::string message = what + ": " + text;
-  if (state == "42501") message = "refused by the server: " + text;
+  if (state == "42501") message = "refused by the server: " + text + missingRight(conn, text);
   if (!sql.empty() && state != "42501") {
     message += " (in: " + std::string(sql.substr(0, 200)) + ")";
   }
@@ -407,8 +425,11 @@ class PgConnection : public ConnectionBackend {
       listening_.emplace_back(channel);
       return false;
     }
-    // Reads what the server sent without a round trip; a lost connection shows on the next query.
-    PQconsumeInput(conn_);
+    // Reads what the server sent without a round trip.
+    if (PQconsumeInput(conn_) == 0 || PQstatus(conn_) == CONNECTION_BAD) {
+      throw DbError(name_, "lost the connection to the server: " + trimmed(PQerrorMessage(conn_)),
+                    "08006");
+    }
     bool changed = false;
     while (PGnotify* note = PQnotifies(conn_)) {
       changed = changed || channel == note->relname;

@@ -208,4 +208,76 @@ void createServerSchema(Connection& connection) {
   transaction.commit();
 }
 
+namespace {
+
+std::string quotedIdentifier(const std::string& name) {
+  std::string out = "\"";
+  for (const char c : name) {
+    out += c;
+    if (c == '"') out += '"';
+  }
+  return out + "\"";
+}
+
+}  // namespace
+
+void grantRole(Connection& connection, const std::string& role, const std::string& right) {
+  if (right != "annotator" && right != "researcher" && right != "admin") {
+    throw DbError(connection.file(),
+                  "unknown right '" + right + "' (annotator, researcher or admin)");
+  }
+  if (role.empty()) throw DbError(connection.file(), "no role name given");
+  const std::string who = quotedIdentifier(role);
+  Transaction transaction(connection);
+  connection.exec(kCreateLock);
+  // The group roles, once per server; each holds the one before.
+  connection.exec(R"sql(
+DO $$ BEGIN
+  IF NOT EXISTS (SELECT 1 FROM pg_roles WHERE rolname = 'tactile_annotator') THEN
+    CREATE ROLE tactile_annotator NOLOGIN; END IF;
+  IF NOT EXISTS (SELECT 1 FROM pg_roles WHERE rolname = 'tactile_researcher') THEN
+    CREATE ROLE tactile_researcher NOLOGIN; END IF;
+  IF NOT EXISTS (SELECT 1 FROM pg_roles WHERE rolname = 'tactile_admin') THEN
+    CREATE ROLE tactile_admin NOLOGIN; END IF;
+END $$)sql");
+  connection.exec("GRANT tactile_annotator TO tactile_researcher");
+  connection.exec("GRANT tactile_researcher TO tactile_admin");
+  // Their rights on this schema's tables.
+  connection.exec(R"sql(
+DO $$ DECLARE s text := quote_ident(current_schema()); BEGIN
+  EXECUTE 'GRANT USAGE ON SCHEMA ' || s || ' TO tactile_annotator';
+  EXECUTE 'GRANT SELECT ON ALL TABLES IN SCHEMA ' || s || ' TO tactile_annotator';
+  EXECUTE 'GRANT USAGE, SELECT ON ALL SEQUENCES IN SCHEMA ' || s || ' TO tactile_annotator';
+  EXECUTE 'GRANT INSERT, UPDATE, DELETE ON ' || s || '.label_sets, ' || s || '.label_segments, '
+    || s || '.label_revisions, ' || s || '.assignments TO tactile_annotator';
+  EXECUTE 'GRANT INSERT, UPDATE, DELETE ON ' || s || '.models, ' || s || '.sweeps, ' || s
+    || '.sweep_cells TO tactile_researcher';
+  EXECUTE 'GRANT ALL ON ALL TABLES IN SCHEMA ' || s || ' TO tactile_admin';
+END $$)sql");
+  // The login role, with exactly the right asked for.
+  Statement exists(connection, "SELECT 1 FROM pg_roles WHERE rolname = ?");
+  exists.bind(1, role);
+  const bool present = exists.step();
+  exists.reset();
+  if (!present) connection.exec("CREATE ROLE " + who + " LOGIN");
+  for (const char* group : {"tactile_annotator", "tactile_researcher", "tactile_admin"}) {
+    connection.exec(std::string("REVOKE ") + group + " FROM " + who);
+  }
+  connection.exec("GRANT tactile_" + right + " TO " + who);
+  transaction.commit();
+}
+
+ServerRights serverRights(Connection& connection) {
+  Statement s(connection,
+              "SELECT has_table_privilege('label_segments', 'INSERT'), "
+              "has_table_privilege('models', 'INSERT'), has_table_privilege('runs', 'DELETE')");
+  ServerRights rights;
+  if (s.step()) {
+    rights.editLabels = s.columnInt(0) != 0;
+    rights.keepModels = s.columnInt(1) != 0;
+    rights.manageRuns = s.columnInt(2) != 0;
+  }
+  return rights;
+}
+
 }  // namespace tactile::storage::db

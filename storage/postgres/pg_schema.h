@@ -23,4 +23,19 @@ ServerContent inspectServer(Connection& connection);
 // processes creating it at once: one creates, the others find it made.
 void createServerSchema(Connection& connection);
 
+// The three rights of a team (docs/team.md#roles): group roles tactile_annotator (read everything,
+// edit labels and assignments), tactile_researcher (also models and sweeps) and tactile_admin
+// (everything: import, rename and delete runs), each holding the one before. grantRole makes them
+// when absent, grants them on the current schema's tables, makes `role` (a login role) when
+// absent and gives it exactly `right` ("annotator", "researcher" or "admin"), in one transaction.
+void grantRole(Connection& connection, const std::string& role, const std::string& right);
+
+// What the session's user may do in the current schema.
+struct ServerRights {
+  bool editLabels = false;
+  bool keepModels = false;
+  bool manageRuns = false;
+};
+ServerRights serverRights(Connection& connection);
+
 }  // namespace tactile::storage::db

@@ -193,12 +193,26 @@ TEST_P(CopyTest, RunsLabelsModelsAndSweepsArriveAndASecondCopyAddsNothing) {
   }
   EXPECT_EQ(to_->models().load("model").value(), R"({"m":1})");
   EXPECT_TRUE(to_->check().ok);
+  // The history travels with the labels: the same edits, annotators and times, in order.
+  EXPECT_EQ(report->revisionsCopied, kGroupCount + 1);
+  {
+    const auto theirs = from_->labels().history(set.value(), b.runId).value();
+    const auto copiedSet = to_->labels().find("mine");
+    const auto ours = to_->labels().history(copiedSet->id, to_->runs().find("two")->id).value();
+    ASSERT_EQ(ours.size(), theirs.size());
+    ASSERT_EQ(ours.size(), 1U);
+    EXPECT_EQ(ours[0].annotator, "ann");
+    EXPECT_EQ(ours[0].time, theirs[0].time);
+    EXPECT_EQ(ours[0].cls, ContactClass::Wall);
+    EXPECT_EQ(ours[0].firstStep, 10);
+  }
 
   auto again = to_->copyFrom(*from_);
   ASSERT_TRUE(again.ok()) << again.errorText();
   EXPECT_EQ(again->runsCopied, 0);
   EXPECT_EQ(again->runsPresent, 2);
   EXPECT_EQ(again->segmentsCopied, 0);
+  EXPECT_EQ(again->revisionsCopied, 0);
   EXPECT_EQ(again->modelsCopied, 0);
   EXPECT_EQ(again->sweepsCopied, 0);
   EXPECT_EQ(to_->sweeps().list()->size(), 1U);

@@ -195,6 +195,25 @@ TEST_P(HistoryTest, SegmentEditsAndUndoAreCheckedAndRecordedToo) {
   EXPECT_EQ(history[3].cls, kWall);
 }
 
+TEST_P(HistoryTest, AnUndoIsCheckedAgainstOthersOnly) {
+  auto mine = db_->labels().setRange(set_, run_, {F}, 10, 20, kWall, as("alice"));
+  ASSERT_TRUE(mine.ok());
+  // Alice's own later edit over the same steps does not stop her undo of the first...
+  ASSERT_TRUE(db_->labels().setRange(set_, run_, {F}, 15, 25, kCorner, as("alice")).ok());
+  EditOptions undo = as("alice", mine.value());
+  undo.othersOnly = true;
+  undo.action = "undo";
+  EXPECT_TRUE(db_->labels().replaceSegmentsInRange(set_, run_, F, 10, 14, {}, undo).ok());
+  // ...but bob's does.
+  const std::int64_t before = latest(*db_);
+  ASSERT_TRUE(other_->labels().setRange(set_, run_, {F}, 24, 30, kWall, as("bob")).ok());
+  undo.expectRevision = before;
+  const Status refused = db_->labels().replaceSegmentsInRange(set_, run_, F, 15, 25, {}, undo);
+  ASSERT_FALSE(refused.ok());
+  EXPECT_TRUE(isLabelConflict(refused.error()));
+  EXPECT_EQ(classAt(F, 20), kCorner);
+}
+
 TEST_P(HistoryTest, ImportTruthAndCopiesKeepHistory) {
   ASSERT_TRUE(db_->labels().autolabel(run_, "team").ok());
   auto history = db_->labels().history(set_, run_).value();

@@ -8,6 +8,8 @@ namespace tactile::gui::settings_keys {
 inline constexpr QLatin1StringView kGeometry{"mainWindow/geometry"};
 inline constexpr QLatin1StringView kWindowState{"mainWindow/state"};
 inline constexpr QLatin1StringView kRecentDatabases{"mainWindow/recentDatabases"};
+// Server addresses opened with File > Open Server, newest first, never with a password.
+inline constexpr QLatin1StringView kRecentServers{"mainWindow/recentServers"};
 inline constexpr QLatin1StringView kLastDatabase{"mainWindow/lastDatabase"};
 inline constexpr QLatin1StringView kLastRun{"mainWindow/lastRun"};
 inline constexpr QLatin1StringView kLastLabelSet{"labels/lastSet"};

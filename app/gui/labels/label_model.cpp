@@ -1,5 +1,7 @@
 #include "app/gui/labels/label_model.h"
 
+#include <QStringList>
+#include <QTimer>
 #include <QUndoStack>
 
 #include <algorithm>
@@ -12,7 +14,11 @@
 
 namespace tactile::gui {
 
-LabelModel::LabelModel(QObject* parent) : QObject(parent), undo_(new QUndoStack(this)) {}
+LabelModel::LabelModel(QObject* parent)
+    : QObject(parent), undo_(new QUndoStack(this)), poll_(new QTimer(this)) {
+  poll_->setInterval(500);
+  connect(poll_, &QTimer::timeout, this, &LabelModel::pollChanges);
+}
 LabelModel::~LabelModel() = default;
 
 void LabelModel::setWorkspace(workspace::Workspace* workspace) {
@@ -25,8 +31,57 @@ void LabelModel::setWorkspace(workspace::Workspace* workspace) {
   stepCount_ = 0;
   for (auto& group : segments_)
     group.clear();
+  seenRevision_ = 0;
+  if (workspace_ != nullptr) {
+    static_cast<void>(workspace_->labelStore().pollChanges());  // starts watching
+    poll_->start();
+  } else {
+    poll_->stop();
+  }
   emit labelSetChanged();
   emit labelsChanged();
+}
+
+storage::EditOptions LabelModel::editOptions() const {
+  storage::EditOptions options;
+  options.annotator = annotator_;
+  options.expectRevision = seenRevision_;
+  return options;
+}
+
+void LabelModel::reportFailure(const Error& error) {
+  if (storage::isLabelConflict(error)) {
+    emit errorOccurred(QString::fromStdString(error.message) +
+                       tr(" The run's labels are reloaded."));
+  }
+}
+
+void LabelModel::pollChanges() {
+  if (workspace_ == nullptr) return;
+  auto changed = workspace_->labelStore().pollChanges();
+  if (!changed) {
+    poll_->stop();
+    emit connectionLost(QString::fromStdString(changed.errorText()));
+    return;
+  }
+  if (!changed.value() || setId_ == 0 || runId_ == 0) return;
+  auto newer = workspace_->labelStore().history(setId_, runId_, seenRevision_);
+  if (!newer || newer->empty()) return;
+  QStringList lines;
+  for (const storage::LabelRevision& r : newer.value()) {
+    lines << tr("%1 changed %2 steps %3-%4 (%5)")
+                 .arg(r.annotator.empty() ? tr("someone") : QString::fromStdString(r.annotator))
+                 .arg(QString::fromUtf8(groupInfo(r.group).shortName.data(),
+                                        static_cast<int>(groupInfo(r.group).shortName.size())))
+                 .arg(r.firstStep)
+                 .arg(r.lastStep)
+                 .arg(QString::fromStdString(r.time));
+  }
+  if (Status s = reload(); !s) {
+    emit errorOccurred(QString::fromStdString(s.errorText()));
+    return;
+  }
+  emit changedElsewhere(lines.join('\n'));
 }
 
 Status LabelModel::setCurrentSet(std::int64_t id, const std::string& name) {
@@ -123,8 +178,9 @@ Status LabelModel::label(const std::vector<SensorGroup>& groups, std::int64_t fi
     segment.annotator = annotator_;
     const std::int64_t set = setId_;
     workspace::Workspace* ws = workspace_;
-    auto* command = new LabelEditCommand(this, text, [ws, set, segment, failed] {
-      auto edit = ws->addSegment(set, segment);
+    const storage::EditOptions options = editOptions();
+    auto* command = new LabelEditCommand(this, text, [ws, set, segment, options, failed] {
+      auto edit = ws->addSegment(set, segment, options);
       if (!edit && !*failed) *failed = edit.error();
       return edit;
     });
@@ -132,7 +188,10 @@ Status LabelModel::label(const std::vector<SensorGroup>& groups, std::int64_t fi
   }
   undo_->endMacro();
   Status reloaded = reload();
-  if (*failed) return **failed;
+  if (*failed) {
+    reportFailure(**failed);
+    return **failed;
+  }
   return reloaded;
 }
 
@@ -154,16 +213,20 @@ Status LabelModel::moveSegment(std::int64_t segmentId, std::int64_t first, std::
   const std::int64_t set = setId_;
   workspace::Workspace* ws = workspace_;
   auto failed = std::make_shared<std::optional<Error>>();
+  const storage::EditOptions options = editOptions();
   auto* command = new LabelEditCommand(
       this, tr("Move %1 segment to steps %2-%3").arg(className(moved.cls)).arg(first).arg(last),
-      [ws, set, segmentId, moved, failed] {
-        auto edit = ws->changeSegment(set, segmentId, moved);
+      [ws, set, segmentId, moved, options, failed] {
+        auto edit = ws->changeSegment(set, segmentId, moved, options);
         if (!edit) *failed = edit.error();
         return edit;
       });
   undo_->push(command);
   Status reloaded = reload();
-  if (*failed) return **failed;
+  if (*failed) {
+    reportFailure(**failed);
+    return **failed;
+  }
   return reloaded;
 }
 
@@ -172,29 +235,43 @@ Status LabelModel::removeSegment(std::int64_t segmentId) {
   const std::int64_t set = setId_;
   workspace::Workspace* ws = workspace_;
   auto failed = std::make_shared<std::optional<Error>>();
-  auto* command = new LabelEditCommand(this, tr("Delete segment"), [ws, set, segmentId, failed] {
-    auto edit = ws->removeSegment(set, segmentId);
-    if (!edit) *failed = edit.error();
-    return edit;
-  });
+  const storage::EditOptions options = editOptions();
+  auto* command =
+      new LabelEditCommand(this, tr("Delete segment"), [ws, set, segmentId, options, failed] {
+        auto edit = ws->removeSegment(set, segmentId, options);
+        if (!edit) *failed = edit.error();
+        return edit;
+      });
   undo_->push(command);
   Status reloaded = reload();
-  if (*failed) return **failed;
+  if (*failed) {
+    reportFailure(**failed);
+    return **failed;
+  }
   return reloaded;
 }
 
-Status LabelModel::redoEdit(const workspace::LabelEdit& edit) {
+Status LabelModel::redoEdit(workspace::LabelEdit& edit) {
   return replay(edit, true);
 }
 
-Status LabelModel::undoEdit(const workspace::LabelEdit& edit) {
+Status LabelModel::undoEdit(workspace::LabelEdit& edit) {
   return replay(edit, false);
 }
 
-Status LabelModel::replay(const workspace::LabelEdit& edit, bool forward) {
+Status LabelModel::replay(workspace::LabelEdit& edit, bool forward) {
   if (workspace_ == nullptr) return Error("no database is open");
-  Status s = forward ? workspace_->redo(edit) : workspace_->undo(edit);
-  if (!s) emit errorOccurred(QString::fromStdString(s.errorText()));
+  // Undo and redo take back or put again this annotator's own edit: refused when someone else
+  // changed its steps since, whatever this annotator did meanwhile.
+  storage::EditOptions options = editOptions();
+  options.expectRevision = edit.revision;
+  options.othersOnly = true;
+  Status s = forward ? workspace_->redo(edit, options) : workspace_->undo(edit, options);
+  if (!s) {
+    emit errorOccurred(
+        QString::fromStdString(s.errorText()) +
+        (storage::isLabelConflict(s.error()) ? tr(" The run's labels are reloaded.") : QString()));
+  }
   if (Status r = reload(); !r) return r;
   return s;
 }
@@ -202,7 +279,16 @@ Status LabelModel::replay(const workspace::LabelEdit& edit, bool forward) {
 Status LabelModel::reload() {
   for (auto& group : segments_)
     group.clear();
+  seenRevision_ = 0;
   if (workspace_ != nullptr && setId_ != 0 && runId_ != 0) {
+    // The revision first: an edit committed between the two reads shows as newer than it, so it
+    // is never overwritten unseen.
+    auto latest = workspace_->labelStore().latestRevision(setId_, runId_);
+    if (!latest) {
+      emit labelsChanged();
+      return latest.error();
+    }
+    seenRevision_ = latest.value();
     auto all = workspace_->labelStore().segments(setId_, runId_);
     if (!all) {
       emit labelsChanged();

@@ -17,6 +17,7 @@
 #include "run/sensor_layout.h"
 #include "storage/run_database.h"
 
+class QTimer;
 class QUndoStack;
 
 namespace tactile::workspace {
@@ -76,20 +77,30 @@ class LabelModel : public QObject {
   QUndoStack* undoStack() const { return undo_; }
 
   // Used by the undo commands: applies a stored edit again or takes it back, then reloads.
-  Status redoEdit(const workspace::LabelEdit& edit);
-  Status undoEdit(const workspace::LabelEdit& edit);
+  Status redoEdit(workspace::LabelEdit& edit);
+  Status undoEdit(workspace::LabelEdit& edit);
   // Re-reads the current run's segments from the database and emits labelsChanged.
   Status reload();
+  // The newest revision of the current set's labels on the current run this model has shown;
+  // every edit from here is based on it (a step someone changed after it is not overwritten).
+  std::int64_t seenRevision() const { return seenRevision_; }
+  // Looks for others' edits (a timer calls it twice a second): when the current run's labels have
+  // a newer revision, reloads and emits changedElsewhere with who changed what.
+  void pollChanges();
 
  signals:
   void labelSetChanged();
   void labelsChanged();
   void errorOccurred(const QString& message);
+  // Someone else's edits of the open run arrived (one line per edit, newest last).
+  void changedElsewhere(const QString& message);
+  // The database cannot be reached any more (a server stopped or the network cut); polling stops.
+  void connectionLost(const QString& message);
 
  private:
   Status setCurrentSet(std::int64_t id, const std::string& name);
   // Writes an edit's segments after (forward) or before it back, then reloads.
-  Status replay(const workspace::LabelEdit& edit, bool forward);
+  Status replay(workspace::LabelEdit& edit, bool forward);
 
   workspace::Workspace* workspace_ = nullptr;
   std::int64_t setId_ = 0;
@@ -99,7 +110,14 @@ class LabelModel : public QObject {
   std::string annotator_;
   std::int64_t stepCount_ = 0;
   std::array<std::vector<storage::LabelSegment>, kGroupCount> segments_;
+  std::int64_t seenRevision_ = 0;
   QUndoStack* undo_ = nullptr;
+  QTimer* poll_ = nullptr;
+
+  // What an edit from here is made with: the annotator and the revision it is based on.
+  storage::EditOptions editOptions() const;
+  // After a failed edit: a conflict is reported and the stretch reloaded.
+  void reportFailure(const Error& error);
 };
 
 }  // namespace tactile::gui

@@ -1,0 +1,85 @@
+// Two annotators' workbenches on one database: an edit over steps the other changed since it was
+// loaded is refused and the stretch reloaded; the other's edits arrive by polling; the History
+// dock lists every edit.
+#include <QSignalSpy>
+#include <QTest>
+#include <QUndoStack>
+
+#include "app/gui/labels/history_view.h"
+#include "app/gui/labels/label_model.h"
+#include "app/gui/runs/run_session_model.h"
+#include "gui_fixture.h"
+
+using tactile::ContactClass;
+using tactile::SensorGroup;
+using tactile::gui::HistoryView;
+using tactile::gui::LabelModel;
+using tactile::gui::RunSession;
+using tactile::gui::testing::GuiFixture;
+
+class TeamLabelsTest : public QObject {
+  Q_OBJECT
+
+ private slots:
+  void twoAnnotatorsNeverLoseAnEdit() {
+    GuiFixture fx(300);
+    auto second = tactile::workspace::Workspace::open(fx.dbPath);
+    QVERIFY(second.ok());
+    RunSession sessionA, sessionB;
+    LabelModel anna, ben;
+    anna.setAnnotator("anna");
+    ben.setAnnotator("ben");
+    sessionA.setWorkspace(fx.workspace.get());
+    sessionB.setWorkspace(second.value().get());
+    QVERIFY(sessionA.open(fx.runName).ok());
+    QVERIFY(sessionB.open(fx.runName).ok());
+    anna.setWorkspace(fx.workspace.get());
+    ben.setWorkspace(second.value().get());
+    QVERIFY(anna.createSet("team").ok());
+    QVERIFY(ben.openSet("team").ok());
+    anna.setRun(sessionA.info().id, sessionA.info().name, sessionA.stepCount());
+    ben.setRun(sessionB.info().id, sessionB.info().name, sessionB.stepCount());
+    HistoryView history(&sessionA, &anna);
+    QCOMPARE(history.rowCount(), 0);
+
+    // Anna labels; Ben, who loaded before, labels over her steps: refused, told who, reloaded.
+    QVERIFY(anna.label({SensorGroup::Left}, 10, 50, ContactClass::Wall).ok());
+    QCOMPARE(history.rowCount(), 1);
+    QSignalSpy benErrors(&ben, &LabelModel::errorOccurred);
+    const auto refused = ben.label({SensorGroup::Left}, 40, 60, ContactClass::Corner);
+    QVERIFY(!refused.ok());
+    QVERIFY(tactile::storage::isLabelConflict(refused.error()));
+    QVERIFY(QString::fromStdString(refused.error().message).contains("anna"));
+    QCOMPARE(benErrors.count(), 1);
+    QCOMPARE(*ben.classAt(SensorGroup::Left, 45), ContactClass::Wall);  // her edit, reloaded
+    // Now that he has seen it, his edit stands; so does one over other steps.
+    QVERIFY(ben.label({SensorGroup::Left}, 40, 60, ContactClass::Corner).ok());
+    QVERIFY(ben.label({SensorGroup::Right}, 100, 110, ContactClass::Wall).ok());
+
+    // Anna's workbench learns of Ben's edits by polling (as its timer does).
+    QSignalSpy arrived(&anna, &LabelModel::changedElsewhere);
+    for (int i = 0; i < 20 && arrived.isEmpty(); ++i) {
+      anna.pollChanges();
+      if (arrived.isEmpty()) QTest::qWait(50);
+    }
+    QCOMPARE(arrived.count(), 1);
+    QVERIFY(arrived.front().front().toString().contains("ben changed L steps 40-60"));
+    QCOMPARE(*anna.classAt(SensorGroup::Left, 45), ContactClass::Corner);
+    QCOMPARE(*anna.classAt(SensorGroup::Right, 105), ContactClass::Wall);
+    QCOMPARE(history.rowCount(), 3);
+    QCOMPARE(anna.seenRevision(), ben.seenRevision());
+
+    // Anna's undo of her own edit would overwrite Ben's steps 40-50: refused, nothing lost.
+    anna.undoStack()->undo();
+    QCOMPARE(*anna.classAt(SensorGroup::Left, 45), ContactClass::Corner);
+    // An undo that touches only her own steps stands: her next edit, then its undo.
+    anna.undoStack()->redo();
+    QVERIFY(anna.label({SensorGroup::Front}, 200, 220, ContactClass::DeadPath).ok());
+    anna.undoStack()->undo();
+    QVERIFY(!anna.classAt(SensorGroup::Front, 210).has_value());
+    QCOMPARE(history.rowCount(), 5);
+  }
+};
+
+QTEST_MAIN(TeamLabelsTest)
+#include "team_labels_test.moc"
