@@ -12,8 +12,8 @@
 #include <utility>
 #include <vector>
 
-#include "analysis/report.h"
 #include "analysis/sweep.h"
+#include "analysis/sweep_summary.h"
 
 class QCustomPlot;
 class QCPAbstractPlottable;
