@@ -6,6 +6,9 @@
 #include <QUndoStack>
 #include <QtTest>
 
+#include <cmath>
+
+#include "app/gui/common/plot_style.h"
 #include "app/gui/labels/label_model.h"
 #include "app/gui/runs/run_list_model.h"
 #include "app/gui/runs/run_session_model.h"
@@ -43,6 +46,17 @@ bool openWithNewSet(GuiFixture& fx, RunSession& session, LabelModel& labels, con
   return true;
 }
 
+// CIE L* (D65) of an sRGB colour: the lightness a reader sees.
+double lightness(const QColor& c) {
+  auto linear = [](double v) {
+    v /= 255.0;
+    return v <= 0.04045 ? v / 12.92 : std::pow((v + 0.055) / 1.055, 2.4);
+  };
+  const double y =
+      0.2126 * linear(c.red()) + 0.7152 * linear(c.green()) + 0.0722 * linear(c.blue());
+  return y > 216.0 / 24389.0 ? 116.0 * std::cbrt(y) - 16.0 : y * 24389.0 / 27.0;
+}
+
 }  // namespace
 
 class GuiCoreTest : public QObject {
@@ -50,6 +64,31 @@ class GuiCoreTest : public QObject {
 
  private slots:
   void initTestCase() { QLocale::setDefault(QLocale::c()); }
+
+  // Guards the rainbow map whose lightness rose and fell (the maximum as dark as 0.6): normal
+  // force's scale gets lighter all the way; shear's is neutral at zero and equally light at +-v.
+  void valueScalesAreHonest() {
+    double previous = -1.0;
+    for (int i = 0; i <= 100; ++i) {
+      const double l = lightness(tactile::gui::valueColor(i * 0.05, 5.0));
+      QVERIFY2(l > previous, qPrintable(QStringLiteral("L* %1 at %2").arg(l).arg(i * 0.05)));
+      previous = l;
+    }
+    QVERIFY(lightness(tactile::gui::valueColor(5.0, 5.0)) -
+                lightness(tactile::gui::valueColor(0.0, 5.0)) >
+            60.0);
+    const QColor zero = tactile::gui::signedValueColor(0.0, 5.0);
+    QVERIFY(std::abs(zero.red() - zero.green()) <= 2 && std::abs(zero.green() - zero.blue()) <= 2);
+    QVERIFY(lightness(zero) > 90.0);
+    for (double v : {1.0, 2.5, 5.0}) {
+      const QColor below = tactile::gui::signedValueColor(-v, 5.0);
+      const QColor above = tactile::gui::signedValueColor(v, 5.0);
+      QVERIFY(below.blue() > below.red());
+      QVERIFY(above.red() > above.blue());
+      QVERIFY(std::abs(lightness(below) - lightness(above)) < 6.0);
+      QVERIFY(lightness(above) < lightness(zero));
+    }
+  }
 
   void sessionOpensTrackSceneAndClampsTheCursor() {
     GuiFixture fx(300);

@@ -69,7 +69,8 @@ void SignalBarsView::paintEvent(QPaintEvent*) {
       }
       if (sh != 0.0) {
         const double h = std::clamp(sh / kMaxShear, -1.0, 1.0) * 0.5 * shearHeight;
-        p.fillRect(QRectF(x, shearMid - std::max(h, 0.0), w, std::abs(h)), QColor(90, 90, 90));
+        p.fillRect(QRectF(x, shearMid - std::max(h, 0.0), w, std::abs(h)),
+                   signedValueColor(sh, kMaxShear));
       }
     }
   }
