@@ -16,6 +16,7 @@
 #include <utility>
 
 #include "analysis/report.h"
+#include "analysis/sweep_summary.h"
 #include "app/gui/learning/sweep_cells_model.h"
 #include "app/gui/learning/sweep_plots.h"
 #include "app/gui/learning/table_view.h"
@@ -222,7 +223,13 @@ SweepResultsView::SweepResultsView(QWidget* parent) : QWidget(parent) {
   refreshCellDetails();
 }
 
+void SweepResultsView::setStoredModels(const QStringList& names) {
+  storedModels_ = names;
+  refreshTitle();
+}
+
 void SweepResultsView::setSweep(std::int64_t sweepId, const analysis::SweepResult& sweep) {
+  if (sweepId != sweepId_) storedModels_.clear();
   sweepId_ = sweepId;
   sweep_ = sweep;
   selected_ = -1;
@@ -383,13 +390,17 @@ void SweepResultsView::refreshTitle() {
   std::size_t fitted = 0;
   for (const analysis::SweepCellResult& r : sweep_.cells)
     fitted += r.ok ? 1 : 0;
-  // A sweep fits and scores its cells and keeps their numbers; it stores no model.
-  QString text = tr("Sweep %1: %2 cells, %3 fitted, %4 failed; no model is stored (Store Model "
-                    "of Cell stores one)")
+  // A sweep fits and scores its cells and keeps their numbers; it stores no model itself.
+  QString text = tr("Sweep %1: %2 cells, %3 fitted, %4 failed")
                      .arg(sweepId_)
                      .arg(sweep_.cells.size())
                      .arg(fitted)
                      .arg(sweep_.cells.size() - fitted);
+  text +=
+      QStringLiteral("; ") +
+      (storedModels_.isEmpty()
+           ? tr("no model of it is stored (Store Model of Cell stores one)")
+           : tr("stored models of its cells: %1").arg(storedModels_.join(QStringLiteral(", "))));
   if (sweep_.cancelled) text += QLatin1Char(' ') + tr("(cancelled: the finished cells)");
   title_->setText(text);
 }
@@ -468,11 +479,11 @@ void SweepResultsView::refreshCellDetails() {
                  "that are it; thesis table 4.19's correct rate), % - this cell")
                   .toStdString();
   cellOneVsRest_->setTable(own);
-  rates_->setTable(
-      analysis::classRateTable({{std::string(groupInfo(r.cell.group).shortName), r.metrics}},
-                               tr("Recall per class of this cell (of the steps of a class, the "
-                                  "share predicted as it), %")
-                                   .toStdString()));
+  rates_->setTable(analysis::classRateTable(
+      {{std::string(groupInfo(r.cell.group).shortName), r.metrics}},
+      tr("Correct rate per class of this cell (of the steps of a class, the "
+         "share predicted as it), %")
+          .toStdString()));
   if (r.patterns.rows.empty()) {
     patterns_->setMessage(tr("No contact patterns were kept for this cell."));
   } else {
