@@ -114,6 +114,30 @@ class SimWindowTest : public QObject {
  private slots:
   void initTestCase() { QLocale::setDefault(QLocale::c()); }
 
+  // Guards Data >> making the window 1182 px tall: with the data panel open the window asks for
+  // no more than a 1366x768 screen has, and the buttons stay where they were when the state text
+  // changes.
+  void dataPanelFitsASmallScreenAndButtonsStayPut() {
+    QTemporaryDir dir;
+    SimWindow window(dir.filePath(QStringLiteral("d.db")));
+    window.setStepsPerSecond(1);
+    window.resize(1366, 700);
+    window.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&window));
+    QVERIFY(window.startRun().ok());
+    window.setDataPanelShown(true);
+    QTest::qWait(20);
+    QVERIFY2(window.minimumSizeHint().height() <= 768 - 70,
+             qPrintable(QString::number(window.minimumSizeHint().height())));
+    auto* giveUp = window.findChild<QPushButton*>(QStringLiteral("giveUpButton"));
+    auto* state = window.findChild<QLabel*>(QStringLiteral("stateLabel"));
+    QVERIFY(giveUp != nullptr && state != nullptr);
+    const QPoint before = giveUp->mapTo(&window, QPoint(0, 0));
+    state->setText(QStringLiteral("one\ntwo\nthree\nfour\nfive\nsix"));
+    QTest::qWait(20);
+    QCOMPARE(giveUp->mapTo(&window, QPoint(0, 0)), before);
+  }
+
   void keysGiveTheDocumentedCommands() {
     QTemporaryDir dir;
     SimWindow window(dir.filePath(QStringLiteral("k.db")));

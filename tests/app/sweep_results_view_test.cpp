@@ -386,7 +386,8 @@ void SweepResultsViewTest::figuresDrawTheCoreSeriesAndFront() {
   QCOMPARE(view.rateOrderPlot()->plot()->xAxis->scaleType(), QCPAxis::stLogarithmic);
   QCOMPARE(view.rateFloorPlot()->plot()->xAxis->label(), QStringLiteral("Variance floor"));
   QCOMPARE(view.rateOrderPlot()->plot()->xAxis->label(), QStringLiteral("Model order"));
-  QCOMPARE(view.rateFloorPlot()->plot()->yAxis->label(), QStringLiteral("Recall per class (%)"));
+  QCOMPARE(view.rateFloorPlot()->plot()->yAxis->label(),
+           QStringLiteral("Correct rate per class (%)"));
   QVERIFY(view.rateFloorPlot()->plot()->legend->visible());
   // Every series has its error bars (min..max about the mean).
   int bars = 0;

@@ -19,6 +19,7 @@
 #include <QToolButton>
 #include <QVBoxLayout>
 
+#include "app/gui/common/file_dialog_memory.h"
 #include "app/gui/common/plot_style.h"
 #include "app/gui/common/settings_keys.h"
 #include "app/gui/labels/label_model.h"
@@ -317,9 +318,11 @@ void LabelPanelView::saveSetAs() {
 
 void LabelPanelView::importLabels() {
   if (!labels_->hasSet()) return report(tr("Create or open a label set first."));
-  const QString file = QFileDialog::getOpenFileName(
-      this, tr("Import labels"), QString(), tr("Label files (*.csv *.json);;All files (*)"));
+  const QString file =
+      QFileDialog::getOpenFileName(this, tr("Import labels"), startPath(QStringLiteral("labels")),
+                                   tr("Label files (*.csv *.json);;All files (*)"));
   if (file.isEmpty()) return;
+  rememberPath(QStringLiteral("labels"), file);
   auto n = labels_->importFile(file.toStdString());
   if (!n) return report(QString::fromStdString(n.errorText()));
   emit statusMessage(tr("Imported %n segment(s)", nullptr, static_cast<int>(n.value())));
@@ -328,9 +331,11 @@ void LabelPanelView::importLabels() {
 void LabelPanelView::exportLabels() {
   if (!labels_->hasSet()) return report(tr("No label set is open."));
   const QString file = QFileDialog::getSaveFileName(
-      this, tr("Export labels"), QString::fromStdString(labels_->setName()) + ".csv",
+      this, tr("Export labels"),
+      startPath(QStringLiteral("labels"), QString::fromStdString(labels_->setName()) + ".csv"),
       tr("CSV (*.csv);;JSON (*.json)"));
   if (file.isEmpty()) return;
+  rememberPath(QStringLiteral("labels"), file);
   Status s = labels_->exportFile(file.toStdString());
   if (!s) return report(QString::fromStdString(s.errorText()));
   emit statusMessage(tr("Exported %1 to %2").arg(QString::fromStdString(labels_->setName()), file));

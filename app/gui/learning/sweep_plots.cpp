@@ -12,6 +12,8 @@
 #include <cmath>
 #include <tuple>
 
+#include "app/gui/common/file_dialog_memory.h"
+
 namespace tactile::gui {
 
 namespace {
@@ -150,14 +152,16 @@ SweepPlot::SweepPlot(QWidget* parent) : QWidget(parent) {
   auto* pdf = new QPushButton(tr("Export PDF..."));
   pdf->setObjectName(QStringLiteral("exportPdf"));
   connect(png, &QPushButton::clicked, this, [this] {
-    const QString path =
-        QFileDialog::getSaveFileName(this, tr("Export PNG"), QString(), tr("PNG images (*.png)"));
+    const QString path = QFileDialog::getSaveFileName(
+        this, tr("Export PNG"), startPath(QStringLiteral("figures")), tr("PNG images (*.png)"));
+    rememberPath(QStringLiteral("figures"), path);
     if (!path.isEmpty() && !exportPng(path))
       QMessageBox::warning(this, tr("Export PNG"), tr("Cannot write %1").arg(path));
   });
   connect(pdf, &QPushButton::clicked, this, [this] {
-    const QString path =
-        QFileDialog::getSaveFileName(this, tr("Export PDF"), QString(), tr("PDF files (*.pdf)"));
+    const QString path = QFileDialog::getSaveFileName(
+        this, tr("Export PDF"), startPath(QStringLiteral("figures")), tr("PDF files (*.pdf)"));
+    rememberPath(QStringLiteral("figures"), path);
     if (!path.isEmpty() && !exportPdf(path))
       QMessageBox::warning(this, tr("Export PDF"), tr("Cannot write %1").arg(path));
   });
@@ -224,7 +228,7 @@ void SweepPlot::showRates(const std::vector<analysis::RateSeries>& series,
   }
   plot_->xAxis->setLabel(variable == analysis::SweptVariable::Floor ? tr("Variance floor")
                                                                     : tr("Model order"));
-  plot_->yAxis->setLabel(tr("Recall per class (%)"));
+  plot_->yAxis->setLabel(tr("Correct rate per class (%)"));
   std::sort(xs.begin(), xs.end());
   xs.erase(std::unique(xs.begin(), xs.end()), xs.end());
 
