@@ -259,7 +259,9 @@ Table confusionTable(const ConfusionMatrix& confusion, bool percent, const std::
 Table oneVsRestRateTable(
     const std::vector<std::pair<SensorGroup, std::vector<BinaryConfusion>>>& groups) {
   Table t;
-  t.title = "Precision per class, one-vs-rest, % (the correct rate of thesis table 4.19)";
+  t.title =
+      "Precision per class, one-vs-rest, % (of the steps predicted as a class, the share that are "
+      "it)";
   // Columns for every class that has a classifier in some group, in ContactClass order.
   std::vector<ContactClass> classes;
   for (int c = 0; c < kContactClassCount; ++c) {
@@ -324,8 +326,11 @@ Table classRateTable(const std::vector<std::pair<std::string, Metrics>>& rows,
         row.emplace_back();
         continue;
       }
-      std::string cell = pct(it->recall) + " (" + std::to_string(it->support) + ")";
-      if (it->support < minTestSteps) cell += " too few";
+      // A rate on few steps says so in words: "50.0 (only 4 test steps)".
+      std::string cell =
+          it->support < minTestSteps
+              ? pct(it->recall) + " (only " + std::to_string(it->support) + " test steps)"
+              : pct(it->recall) + " (" + std::to_string(it->support) + ")";
       row.push_back(std::move(cell));
     }
     row.push_back(pct(m.accuracy) + " (" + std::to_string(m.total) + ")");
@@ -408,7 +413,7 @@ Table sweepCellsTable(const SweepResult& sweep) {
 Table contactPatternTable(const ContactPatternTable& patterns) {
   Table t;
   t.title = "Contact patterns of group " + std::string(groupInfo(patterns.group).shortName) +
-            " (thesis table 4.39; sensors in index order, 1 = contact)";
+            " (which of its sensors touch, in index order, 1 = contact)";
   std::vector<ContactClass> predicted;
   for (int c = 0; c < kContactClassCount; ++c) {
     for (const ContactPatternRow& r : patterns.rows) {
@@ -760,7 +765,7 @@ std::string modelReport(const ModelBundle& bundle, TableStyle style, std::size_t
   if (!rateRows.empty()) {
     out += classRateTable(rateRows,
                           "Correct rate per class, % (test steps in brackets; fewer than " +
-                              std::to_string(minTestSteps) + " marked too few)",
+                              std::to_string(minTestSteps) + " marked \"only\")",
                           minTestSteps)
                .render(style) +
            sep;

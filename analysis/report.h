@@ -51,7 +51,7 @@ Table oneVsRestRateTable(
 
 // Multi-class per-class correct rate (recall, percent) per row label, as in thesis table 4.31,
 // each with its test-step count beside it ("93.1 (412)"); a class with fewer than minTestSteps
-// test steps is marked "too few" ("50.0 (4) too few"). A row without test steps reads "no test
+// test steps says so ("50.0 (only 4 test steps)"). A row without test steps reads "no test
 // data".
 Table classRateTable(const std::vector<std::pair<std::string, Metrics>>& rows,
                      const std::string& title, std::size_t minTestSteps = kMinTestSteps);
@@ -101,7 +101,7 @@ Status writeSweepReport(const SweepResult& sweep, TableStyle style,
                         const nlohmann::json& configuration = nlohmann::json::object());
 // A model bundle's stored evaluation (of models trained from run files or a database alike):
 // settings, test counts and balanced accuracy per decision mode, held-out scenes, confusion in
-// counts and percent, per-class rates with counts and "too few" marks, contact patterns,
+// counts and percent, per-class rates with counts and "only N test steps" marks, contact patterns,
 // one-vs-rest table. A group without test rows says "no test data".
 std::string modelReport(const ModelBundle& bundle, TableStyle style,
                         std::size_t minTestSteps = kMinTestSteps);

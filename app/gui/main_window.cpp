@@ -375,6 +375,16 @@ void MainWindow::createActions() {
   bindShortcut(undo, QStringLiteral("undo"));
   QAction* redo = labels_->undoStack()->createRedoAction(this, tr("&Redo"));
   bindShortcut(redo, QStringLiteral("redo"));
+  // Undo and redo say what they did (the stack's own action runs first; the command undone is
+  // then the one to redo, and the other way round).
+  connect(undo, &QAction::triggered, this, [this] {
+    if (const QString what = labels_->undoStack()->redoText(); !what.isEmpty())
+      showMessage(tr("Undone: %1").arg(what));
+  });
+  connect(redo, &QAction::triggered, this, [this] {
+    if (const QString what = labels_->undoStack()->undoText(); !what.isEmpty())
+      showMessage(tr("Redone: %1").arg(what));
+  });
   edit->addAction(undo);
   edit->addAction(redo);
   edit->addSeparator();

@@ -311,7 +311,7 @@ TEST(ReportBest, TooFewTestStepsNeverDecide) {
   // The class-rate table marks the thin class and shows every count.
   const Table t = classRateTable({{"a", a.metrics}}, "rates");
   const auto& row = t.rows.front();
-  EXPECT_NE(std::find(row.begin(), row.end(), "100.0 (5) too few"), row.end());
+  EXPECT_NE(std::find(row.begin(), row.end(), "100.0 (only 5 test steps)"), row.end());
   EXPECT_NE(std::find(row.begin(), row.end(), "95.0 (100)"), row.end());
   const Table none = classRateTable({{"empty", Metrics{}}}, "rates");
   EXPECT_NE(std::find(none.rows[0].begin(), none.rows[0].end(), "no test data"),

@@ -476,7 +476,7 @@ void SweepResultsView::refreshCellDetails() {
   analysis::Table own =
       analysis::oneVsRestRateTable({{r.cell.group, analysis::binaryConfusions(m, r.classes)}});
   own.title = tr("Precision per class, one-vs-rest (of the steps predicted a class, the share "
-                 "that are it; thesis table 4.19's correct rate), % - this cell")
+                 "that are it), % - this cell")
                   .toStdString();
   cellOneVsRest_->setTable(own);
   rates_->setTable(analysis::classRateTable(
