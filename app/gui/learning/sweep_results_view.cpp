@@ -4,6 +4,7 @@
 #include <QHBoxLayout>
 #include <QHeaderView>
 #include <QLabel>
+#include <QScrollBar>
 #include <QSortFilterProxyModel>
 #include <QSplitter>
 #include <QTabWidget>
@@ -210,17 +211,30 @@ SweepResultsView::SweepResultsView(QWidget* parent) : QWidget(parent) {
   rightLayout->addWidget(cellTitle_);
   rightLayout->addWidget(tabs_, 1);
 
-  auto* splitter = new QSplitter(Qt::Horizontal);
-  splitter->addWidget(left);
-  splitter->addWidget(right);
-  splitter->setStretchFactor(0, 1);
-  splitter->setStretchFactor(1, 1);
+  splitter_ = new QSplitter(Qt::Horizontal);
+  splitter_->addWidget(left);
+  splitter_->addWidget(right);
+  splitter_->setStretchFactor(0, 1);
+  splitter_->setStretchFactor(1, 1);
 
   auto* layout = new QVBoxLayout(this);
   layout->addWidget(title_);
-  layout->addWidget(splitter, 1);
+  layout->addWidget(splitter_, 1);
   refreshFigures();
   refreshCellDetails();
+}
+
+void SweepResultsView::widenTableToTestSteps() {
+  // The table shows its columns up to the test steps whole (they say whether a score can be
+  // trusted), as long as the details keep at least a third of the width.
+  int needed = 2 * cellsView_->frameWidth() + cellsView_->verticalScrollBar()->sizeHint().width();
+  for (int c = 0; c <= SweepCellsModel::TestSteps; ++c)
+    needed += cellsView_->horizontalHeader()->sectionSize(c);
+  const QList<int> sizes = splitter_->sizes();
+  if (sizes.size() != 2) return;
+  const int total = sizes[0] + sizes[1];
+  const int left = std::min(needed, total * 2 / 3);
+  if (sizes[0] < left) splitter_->setSizes({left, total - left});
 }
 
 void SweepResultsView::setStoredModels(const QStringList& names) {
@@ -235,6 +249,7 @@ void SweepResultsView::setSweep(std::int64_t sweepId, const analysis::SweepResul
   selected_ = -1;
   refreshTimer_->stop();
   cells_->setCells(sweep_.cells);
+  if (isVisible()) QTimer::singleShot(0, this, [this] { widenTableToTestSteps(); });
   {
     // The decision modes the sweep scored, in the grid's order.
     const QSignalBlocker block(decisionBox_);
@@ -379,7 +394,10 @@ void SweepResultsView::scrollToSelected() {
 void SweepResultsView::showEvent(QShowEvent* event) {
   QWidget::showEvent(event);
   // A view scrolled before it had a size scrolls again once it has one.
-  QTimer::singleShot(0, this, [this] { scrollToSelected(); });
+  QTimer::singleShot(0, this, [this] {
+    scrollToSelected();
+    widenTableToTestSteps();
+  });
 }
 
 void SweepResultsView::refreshTitle() {

@@ -15,6 +15,7 @@
 
 class QComboBox;
 class QLabel;
+class QSplitter;
 class QShowEvent;
 class QSortFilterProxyModel;
 class QTabWidget;
@@ -80,6 +81,7 @@ class SweepResultsView : public QWidget {
   void scrollToSelected();
   void refreshCellDetails();
   void refreshTitle();
+  void widenTableToTestSteps();
 
   std::int64_t sweepId_ = 0;
   QStringList storedModels_;
@@ -90,6 +92,7 @@ class SweepResultsView : public QWidget {
   bool figuresStale_ = true;
 
   QLabel* title_ = nullptr;
+  QSplitter* splitter_ = nullptr;
   QComboBox* groupBox_ = nullptr;
   QComboBox* decisionBox_ = nullptr;
   SweepCellsModel* cells_ = nullptr;
