@@ -1453,8 +1453,8 @@ Forschungsumgebung für die taktile Navigation mobiler Roboter.</translation>
         <translation>Nahansicht, Zoom %1x (Doppelklick: Nahansicht)</translation>
     </message>
     <message>
-        <source>■ hole N: the model felt a gap N units wide on one side (thesis 4.5: a way through where the domes between two contacts touch nothing)</source>
-        <translation>■ Lücke N: das Modell hat auf einer Seite eine Lücke von N Einheiten Breite gefühlt (Arbeit 4.5: ein Durchgang, wo die Dome zwischen zwei Kontakten nichts berühren)</translation>
+        <source>■ hole N: a gap N units wide that the model felt on one side</source>
+        <translation>■ Lücke N: eine N Einheiten breite Lücke, die das Modell auf einer Seite gefühlt hat</translation>
     </message>
 </context>
 <context>

@@ -1443,8 +1443,8 @@ Research workbench for tactile-based mobile-robot navigation.</source>
         <translation>特写，缩放 %1 倍（双击：特写）</translation>
     </message>
     <message>
-        <source>■ hole N: the model felt a gap N units wide on one side (thesis 4.5: a way through where the domes between two contacts touch nothing)</source>
-        <translation>■ 空隙 N：模型在一侧感到宽 N 单位的空隙（论文 4.5：两个接触之间的触点都未触碰到任何东西的通道）</translation>
+        <source>■ hole N: a gap N units wide that the model felt on one side</source>
+        <translation>■ 空隙 N：模型在一侧感到的宽 N 单位的空隙</translation>
     </message>
 </context>
 <context>

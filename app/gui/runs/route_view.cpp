@@ -456,18 +456,19 @@ struct RouteView::Impl {
       }
       ++drawn;
     }
-    // What a hole is, once, in the corner.
+    // What a hole is, once, above the distance badge (as tall as its wrapped text needs).
     if (drawn > 0) {
-      const QString legend = RouteView::tr(
-          "\u25A0 hole N: the model felt a gap N units wide on one side (thesis 4.5: a way "
-          "through where the domes between two contacts touch nothing)");
-      const QRectF box(QPointF(4, q->height() - 2 * metrics.height() - 44),
-                       QSizeF(q->width() - 8, 2 * metrics.height() + 4));
+      const QString legend =
+          RouteView::tr("\u25A0 hole N: a gap N units wide that the model felt on one side");
+      const QRectF room(6, 0, q->width() - 12, q->height());
+      const QRectF text = metrics.boundingRect(room, Qt::AlignLeft | Qt::TextWordWrap, legend);
+      const QRectF box(QPointF(4, q->height() - metrics.height() - 30 - text.height()),
+                       QSizeF(q->width() - 8, text.height() + 4));
       p.setPen(Qt::NoPen);
       p.setBrush(QColor(255, 255, 255, 210));
       p.drawRect(box);
       p.setPen(QColor(20, 20, 20));
-      p.drawText(box.adjusted(3, 0, -3, 0), Qt::AlignLeft | Qt::AlignVCenter | Qt::TextWordWrap,
+      p.drawText(box.adjusted(2, 2, -2, -2), Qt::AlignLeft | Qt::AlignVCenter | Qt::TextWordWrap,
                  legend);
     }
     const Pose2d pose = poseAt(session->currentStep());

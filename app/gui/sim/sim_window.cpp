@@ -245,16 +245,18 @@ void SimWindow::buildUi() {
   sideLayout->addWidget(setupBox);
   sideLayout->addLayout(buttons);
   sideLayout->addWidget(outcomeLabel_);
-  sideLayout->addWidget(new QLabel(tr("Signal per group")));
-  sideLayout->addWidget(bars_, 2);
-  sideLayout->addLayout(lightRow);
-  sideLayout->addWidget(stateLabel_);
   sideLayout->addWidget(errorLabel_);
+  // Autonomous mode only (it shows with the mode, not with the run's state): what the navigator
+  // does, right under the buttons, where the person watching looks.
   experiment_ = new ExperimentPanel(session_);
   experimentBox_ = new QGroupBox(tr("Experiment panel"));
   auto* experimentLayout = new QVBoxLayout(experimentBox_);
   experimentLayout->addWidget(experiment_);
   sideLayout->addWidget(experimentBox_);
+  sideLayout->addWidget(new QLabel(tr("Signal per group")));
+  sideLayout->addWidget(bars_, 2);
+  sideLayout->addLayout(lightRow);
+  sideLayout->addWidget(stateLabel_);
   sideLayout->addStretch(1);
   // The column scrolls on a short screen instead of making the window taller than it.
   auto* sideScroll = new QScrollArea;
