@@ -3,6 +3,7 @@
 #include <QAction>
 #include <QDesktopServices>
 #include <QDialogButtonBox>
+#include <QEvent>
 #include <QFile>
 #include <QHBoxLayout>
 #include <QImage>
@@ -19,6 +20,8 @@
 #include <QVBoxLayout>
 
 #include <algorithm>
+
+#include "app/gui/common/window_geometry.h"
 
 namespace tactile::gui {
 
@@ -90,6 +93,15 @@ UserGuideWindow::UserGuideWindow(QWidget* parent) : QDialog(parent) {
   layout->addWidget(browser_);
   layout->addWidget(buttons);
   resize(980, 820);
+  keepWithinScreen(this);
+  // Pictures follow the viewer's width as it changes (the dialog's own resize comes before the
+  // viewer has its new size).
+  browser_->viewport()->installEventFilter(this);
+}
+
+bool UserGuideWindow::eventFilter(QObject* watched, QEvent* event) {
+  if (watched == browser_->viewport() && event->type() == QEvent::Resize) fitImages();
+  return QDialog::eventFilter(watched, event);
 }
 
 void UserGuideWindow::follow(const QUrl& link) {
@@ -117,13 +129,9 @@ void UserGuideWindow::follow(const QUrl& link) {
     browser_->setSource(shown);
 }
 
-void UserGuideWindow::resizeEvent(QResizeEvent* event) {
-  QDialog::resizeEvent(event);
-  fitImages();
-}
-
 void UserGuideWindow::fitImages() {
   QTextDocument* doc = browser_->document();
+  // The viewer's width less the page margins and room for a scroll bar that may come.
   const int available =
       std::max(100, browser_->viewport()->width() - 2 * static_cast<int>(doc->documentMargin()) -
                         browser_->verticalScrollBar()->sizeHint().width());

@@ -30,7 +30,7 @@ class UserGuideWindow : public QDialog {
   QToolButton* forwardButton() const { return forward_; }
 
  protected:
-  void resizeEvent(QResizeEvent* event) override;
+  bool eventFilter(QObject* watched, QEvent* event) override;
 
  private:
   // Pictures wider than the viewer are drawn at its width (height in proportion).
