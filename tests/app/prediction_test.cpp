@@ -399,6 +399,16 @@ void PredictionTest::pickerChoosesOneOrPerGroup() {
   perGroup.setPerGroup(false);
   perGroup.allGroupsBox()->setCurrentIndex(perGroup.allGroupsBox()->findData(QStringLiteral("b")));
   QCOMPARE(perGroup.choice(), PredictionModel::sameForAll(QStringLiteral("b")));
+  // Each model says which groups it covers; the choice is still the model's name.
+  QStringList all;
+  for (const GroupInfo& g : kSensorGroups)
+    all << QString::fromUtf8(g.shortName.data(), static_cast<qsizetype>(g.shortName.size()));
+  perGroup.setCoverage({{QStringLiteral("a"), all},
+                        {QStringLiteral("b"), {QStringLiteral("F"), QStringLiteral("L")}}});
+  QComboBox* box = perGroup.allGroupsBox();
+  QCOMPARE(box->itemText(box->findData(QStringLiteral("a"))), QStringLiteral("a (all groups)"));
+  QCOMPARE(box->itemText(box->findData(QStringLiteral("b"))), QStringLiteral("b (F, L only)"));
+  QCOMPARE(perGroup.choice(), PredictionModel::sameForAll(QStringLiteral("b")));
 }
 
 // Guards the window that grew taller than the screen (1103 px on a 1000 px screen) with predictions

@@ -12,6 +12,7 @@
 #include <QPushButton>
 #include <QSignalSpy>
 #include <QSpinBox>
+#include <QStatusBar>
 #include <QTemporaryDir>
 #include <QtTest>
 
@@ -268,7 +269,12 @@ class SimWindowTest : public QObject {
       window.setMode(SimMode::Experiment);
       window.setScene(QStringLiteral("room1"));
       QVERIFY(!window.startRun().ok());  // no subject yet
+      // The red line about the missing name goes once a name is typed (it once stayed).
+      auto* error = window.findChild<QLabel*>(QStringLiteral("simError"));
+      QVERIFY(error != nullptr);
+      QVERIFY(!error->isHidden());
       window.setSubject(QStringLiteral("Ada Lovelace"));
+      QVERIFY(error->isHidden());
       window.setSeed(5);
       window.setTimeLimitSeconds(120);
       QVERIFY(window.startRun().ok());
@@ -585,6 +591,14 @@ class SimWindowTest : public QObject {
                                       static_cast<std::size_t>(kLimitSeconds / 0.1 + 0.5));
     QVERIFY(reference.ok());
     QCOMPARE(*s->outcome(), reference->outcome);
+    // How the run ended is shown large beside the buttons, and in the status bar.
+    auto* outcome = window.findChild<QLabel*>(QStringLiteral("outcomeLabel"));
+    QVERIFY(outcome != nullptr && !outcome->isHidden());
+    QVERIFY(!outcome->text().isEmpty());
+    if (reference->outcome == RunOutcome::Success)
+      QVERIFY2(outcome->text().startsWith(QStringLiteral("Goal reached")),
+               qPrintable(outcome->text()));
+    QCOMPARE(window.statusBar()->currentMessage(), outcome->text());
     QCOMPARE(run->stepCount(), reference->run.stepCount());
     QVERIFY(test_support::bitEqual(reference->run.x, run->x));
     QVERIFY(reference->run.extraValues == run->extraValues);

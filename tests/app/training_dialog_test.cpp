@@ -14,6 +14,7 @@
 #include <QPushButton>
 #include <QSettings>
 #include <QSignalSpy>
+#include <QSpinBox>
 #include <QTableView>
 #include <QTableWidget>
 #include <QTemporaryDir>
@@ -113,6 +114,7 @@ class TrainingDialogTest : public QObject {
   void dialogRemembersLabelSetAndGrid();
   void resultsTableHasRoomForEightGroups();
   void planNamesGroupsTheTestRunsCannotScore();
+  void planEstimatesFromEachCellsOwnCost();
 
  private:
   std::unique_ptr<QTemporaryDir> settingsDir_;
@@ -584,6 +586,27 @@ void TrainingDialogTest::planNamesGroupsTheTestRunsCannotScore() {
     QVERIFY(!expected.contains(QString::fromUtf8(
         groupInfo(g).shortName.data(), static_cast<qsizetype>(groupInfo(g).shortName.size()))));
   QVERIFY(!note->isVisible());
+}
+
+// Guards the estimate taken from the last sweep's mean cell (60 times off for a grid of larger
+// orders): with the cost model, a grid of orders up to 16 is estimated far above one of order 1
+// alone (31 components against 5 per group and floor), and no stored sweep means no estimate.
+void TrainingDialogTest::planEstimatesFromEachCellsOwnCost() {
+  LearningFixture f;
+  TrainingDialog dialog(*f.workspace, QString::fromStdString(f.dbPath));
+  smallGrid(dialog);
+  QCOMPARE(dialog.plannedSeconds(), -1.0);  // nothing stored to time it by
+  QVERIFY(sweepFromDialog(dialog) > 0);
+  dialog.findChild<QSpinBox*>(QStringLiteral("threads"))->setValue(1);
+  dialog.setGrid(QStringLiteral("1"), QStringLiteral("0.03"), QStringLiteral("1"));
+  const double small = dialog.plannedSeconds();
+  QVERIFY(small > 0);
+  dialog.setGrid(QStringLiteral("1, 2, 4, 8, 16"), QStringLiteral("0.03"), QStringLiteral("1"));
+  const double large = dialog.plannedSeconds();
+  QVERIFY2(large > 4.0 * small, qPrintable(QStringLiteral("%1 vs %2").arg(large).arg(small)));
+  // Full covariance costs more per row than diagonal, at the same orders.
+  dialog.setFormsChecked({analysis::CovarianceForm::NodalFull});
+  QVERIFY(dialog.plannedSeconds() > large);
 }
 
 QTEST_MAIN(TrainingDialogTest)

@@ -234,6 +234,7 @@ void TrainingDialog::buildUi() {
   form->addRow(tr("Name:"), name_);
 
   threads_ = new QSpinBox;
+  threads_->setObjectName(QStringLiteral("threads"));
   threads_->setRange(0, 256);
   threads_->setSpecialValueText(tr("all cores"));
   form->addRow(tr("Threads:"), threads_);
@@ -519,6 +520,7 @@ void TrainingDialog::refreshPlan() {
   QString text = tr("%n cell(s)", nullptr, static_cast<int>(cells));
   const bool byRun = static_cast<workspace::SplitMode>(split_->currentData().toInt()) ==
                      workspace::SplitMode::ByRun;
+  plannedSeconds_ = -1;
   if (secondsPerUnit_ >= 0) {
     // Each cell's own cost (its group's rows, its order and covariance form), spread over the
     // threads.
@@ -530,6 +532,7 @@ void TrainingDialog::refreshPlan() {
     const int threads = threads_->value() > 0 ? threads_->value() : QThread::idealThreadCount();
     const double seconds =
         secondsPerUnit_ * units / std::max(1, std::min<int>(threads, static_cast<int>(cells)));
+    plannedSeconds_ = seconds;
     text += tr(", about %1 on %n thread(s) (each cell's rows, order and covariance form, timed "
                "by %2 stored cells)",
                nullptr, threads)

@@ -43,6 +43,8 @@ class TrainingDialog : public QDialog {
   ~TrainingDialog() override;
   // Closing remembers the label set and the grid for the next opening.
   void done(int result) override;
+  // The plan's estimate of the sweep's seconds (-1: no stored cell to time it by).
+  double plannedSeconds() const { return plannedSeconds_; }
 
   // Re-reads label sets and runs; keeps the chosen set when it still exists.
   void reload();
@@ -146,6 +148,7 @@ class TrainingDialog : public QDialog {
   // The cost model of the plan's estimate: seconds per unit of work (rows x components x the
   // covariance's cost per row), calibrated on the stored sweeps' cells (-1: none stored).
   double secondsPerUnit_ = -1;
+  double plannedSeconds_ = -1;
   int timedCells_ = 0;  // the stored cells it was calibrated on
   // Labelled contact steps per group in the marked training and test runs.
   std::array<std::size_t, kGroupCount> trainRows_{};

@@ -122,6 +122,7 @@ void SimWindow::buildUi() {
   stateLabel_->setWordWrap(true);
   stateLabel_->setTextFormat(Qt::PlainText);
   errorLabel_ = new QLabel;
+  errorLabel_->setObjectName(QStringLiteral("simError"));
   errorLabel_->setStyleSheet(QStringLiteral("color: #b00000"));
   errorLabel_->setWordWrap(true);
   errorLabel_->hide();
