@@ -1,14 +1,20 @@
 // The workbench's models and undo commands without any widget: the run session's cursor and
 // selection, label edits written to the database at once, and undo/redo restoring exactly what
 // an edit replaced.
+#include <QDir>
 #include <QFile>
+#include <QFileInfo>
+#include <QSettings>
 #include <QSignalSpy>
+#include <QTemporaryDir>
 #include <QUndoStack>
 #include <QtTest>
 
 #include <cmath>
 
+#include "app/gui/common/file_dialog_memory.h"
 #include "app/gui/common/plot_style.h"
+#include "app/gui/common/shortcuts.h"
 #include "app/gui/labels/label_model.h"
 #include "app/gui/runs/run_list_model.h"
 #include "app/gui/runs/run_session_model.h"
@@ -64,6 +70,33 @@ class GuiCoreTest : public QObject {
 
  private slots:
   void initTestCase() { QLocale::setDefault(QLocale::c()); }
+
+  // File dialogs start where the last one of their kind ended (they once started in the current
+  // directory), each kind on its own; before any choice, in the home folder.
+  void fileDialogsRememberTheirFolder() {
+    QTemporaryDir settingsDir, a, b;
+    QSettings::setPath(QSettings::IniFormat, QSettings::UserScope, settingsDir.path());
+    QSettings::setDefaultFormat(QSettings::IniFormat);
+    QCOMPARE(tactile::gui::startPath(QStringLiteral("models")), QDir::homePath());
+    tactile::gui::rememberPath(QStringLiteral("models"), a.filePath(QStringLiteral("m.json")));
+    tactile::gui::rememberPath(QStringLiteral("reports"), b.path());
+    QCOMPARE(tactile::gui::startPath(QStringLiteral("models"), QStringLiteral("x.json")),
+             QDir(a.path()).filePath(QStringLiteral("x.json")));
+    QCOMPARE(tactile::gui::startPath(QStringLiteral("reports")),
+             QFileInfo(b.path()).absoluteFilePath());
+    tactile::gui::rememberPath(QStringLiteral("models"), QString());  // a cancelled dialog
+    QCOMPARE(tactile::gui::startPath(QStringLiteral("models")), a.path());
+  }
+
+  // Guards "F14" (a key of old Sun keyboards that X11 lists for Undo) in the key list.
+  void keyListHasNoKeysPastF12() {
+    for (const tactile::gui::ShortcutEntry& e : tactile::gui::shortcutTable())
+      for (const QKeySequence& k : e.keys) {
+        const int code = k[0].key();
+        QVERIFY2(code < Qt::Key_F13 || code > Qt::Key_F35, qPrintable(k.toString()));
+      }
+    QVERIFY(tactile::gui::shortcutTableHtml().contains(QStringLiteral("nowrap")));
+  }
 
   // Guards the rainbow map whose lightness rose and fell (the maximum as dark as 0.6): normal
   // force's scale gets lighter all the way; shear's is neutral at zero and equally light at +-v.

@@ -20,6 +20,7 @@
 #include <QSignalSpy>
 #include <QSlider>
 #include <QSpinBox>
+#include <QStatusBar>
 #include <QTableView>
 #include <QTemporaryDir>
 #include <QTextBlock>
@@ -223,9 +224,14 @@ class MainWindowTest : public QObject {
     QTest::keyClick(t, Qt::Key_Z, Qt::ControlModifier);
     QCOMPARE(storedSegments(fx, "annotator", SensorGroup::Left, ContactClass::Wall),
              std::size_t{0});
+    // Undo and redo say what they did (they once said nothing).
+    QVERIFY2(window.statusBar()->currentMessage().startsWith(QStringLiteral("Undone: Label steps")),
+             qPrintable(window.statusBar()->currentMessage()));
     QTest::keyClick(t, Qt::Key_Z, Qt::ControlModifier | Qt::ShiftModifier);
     QCOMPARE(storedSegments(fx, "annotator", SensorGroup::Left, ContactClass::Wall),
              std::size_t{1});
+    QVERIFY2(window.statusBar()->currentMessage().startsWith(QStringLiteral("Redone: Label steps")),
+             qPrintable(window.statusBar()->currentMessage()));
     // Checked groups: one key press labels both, one undo takes both back.
     window.labelPanel()->setGroupsMode(tactile::gui::LabelPanelView::GroupsMode::Checked);
     window.labelPanel()->setGroupChecked(SensorGroup::Right, true);
