@@ -1,6 +1,7 @@
 // The train-and-sweep dialog: a sweep started from it runs off the GUI thread with progress and a
 // time estimate, streams its cells into the sortable table, can be cancelled keeping its finished
 // cells, and stores exactly the numbers `tactile sweep` stores for the same request.
+#include <QAction>
 #include <QCheckBox>
 #include <QComboBox>
 #include <QDoubleSpinBox>
@@ -508,6 +509,14 @@ void TrainingDialogTest::resultsWindowExportsReportAndCellModel() {
   QVERIFY(after.ok());
   QCOMPARE(after->size(), before->size());
   QCOMPARE(modelStored.size(), 1);
+  // Close (Ctrl+W) closes the window.
+  auto* close = window.findChild<QAction*>(QStringLiteral("closeResults"));
+  QVERIFY(close != nullptr);
+  QCOMPARE(close->shortcut(), QKeySequence(Qt::CTRL | Qt::Key_W));
+  window.show();
+  QVERIFY(QTest::qWaitForWindowExposed(&window));
+  close->trigger();
+  QVERIFY(!window.isVisible());
 }
 
 // Guards the dialog that forgot its label set and grid between openings: closing remembers them

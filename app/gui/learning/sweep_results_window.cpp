@@ -50,7 +50,11 @@ SweepResultsWindow::SweepResultsWindow(workspace::Workspace& workspace, QString 
   bar->addSeparator();
   QAction* close = bar->addAction(tr("Close"), this, &QWidget::close);
   close->setObjectName(QStringLiteral("closeResults"));
-  close->setShortcut(QKeySequence::Close);
+  // Ctrl+W on every platform, beside whatever the platform's Close is.
+  QList<QKeySequence> closeKeys{QKeySequence(Qt::CTRL | Qt::Key_W)};
+  for (const QKeySequence& k : QKeySequence::keyBindings(QKeySequence::Close))
+    if (!closeKeys.contains(k)) closeKeys << k;
+  close->setShortcuts(closeKeys);
   close->setShortcutContext(Qt::WindowShortcut);
   close->setToolTip(
       tr("Close this window (%1)").arg(close->shortcut().toString(QKeySequence::NativeText)));
