@@ -1498,6 +1498,17 @@ importiert aus %2</translation>
     </message>
 </context>
 <context>
+    <name>tactile::gui::SignalBarsView</name>
+    <message>
+        <source>normal</source>
+        <translation>Normalkraft</translation>
+    </message>
+    <message>
+        <source>shear</source>
+        <translation>Scherkraft</translation>
+    </message>
+</context>
+<context>
     <name>tactile::gui::SimSession</name>
     <message>
         <source>An experiment run needs the subject&apos;s name.</source>

@@ -1488,6 +1488,17 @@ imported from %2</source>
     </message>
 </context>
 <context>
+    <name>tactile::gui::SignalBarsView</name>
+    <message>
+        <source>normal</source>
+        <translation>法向力</translation>
+    </message>
+    <message>
+        <source>shear</source>
+        <translation>剪切力</translation>
+    </message>
+</context>
+<context>
     <name>tactile::gui::SimSession</name>
     <message>
         <source>An experiment run needs the subject&apos;s name.</source>
