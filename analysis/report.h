@@ -17,6 +17,7 @@
 #include "analysis/metrics.h"
 #include "analysis/model_file.h"
 #include "analysis/sweep.h"
+#include "analysis/sweep_summary.h"
 #include "base/error.h"
 
 namespace tactile::analysis {
@@ -50,37 +51,10 @@ Table oneVsRestRateTable(
 
 // Multi-class per-class correct rate (recall, percent) per row label, as in thesis table 4.31,
 // each with its test-step count beside it ("93.1 (412)"); a class with fewer than minTestSteps
-// test steps is marked "too few" ("50.0 (4) too few"). A row without test steps reads "no test
+// test steps says so ("50.0 (only 4 test steps)"). A row without test steps reads "no test
 // data".
 Table classRateTable(const std::vector<std::pair<std::string, Metrics>>& rows,
                      const std::string& title, std::size_t minTestSteps = kMinTestSteps);
-
-// Figures 4.13 / 4.14 as data: one series per fixed setting (group, features, method, form, the
-// other of order / floor, seed) with a point per value of the swept variable, ascending. Each
-// point is one successful cell with per-class rates (recall, percent): their mean, min and max
-// over the cell's classes, and the cell's accuracy and balanced accuracy (percent).
-enum class SweptVariable { Floor, Order };
-struct RateSeries {
-  SensorGroup group = SensorGroup::Front;
-  FeatureKind features = FeatureKind::Normal;
-  ClassifierMethod method = ClassifierMethod::Gmm;
-  CovarianceForm form = CovarianceForm::NodalDiag;
-  double fixedValue = 0.0;  // the order (floor swept) or the floor (order swept)
-  std::uint64_t seed = 1;
-  std::string label;      // e.g. "F gmm nodal-diag order 4" or "R gaussian floor 0.1"
-  std::vector<double> x;  // swept values
-  std::vector<double> mean, min, max, accuracy, balancedAccuracy;
-  std::vector<std::size_t> cells;  // index into SweepResult::cells of each point
-};
-std::vector<RateSeries> rateSeries(const SweepResult& sweep, SweptVariable variable);
-
-// Run time against error: the successful cells scored on test rows (of one group, or all) that
-// no other one beats, that is, none has both fit + predict seconds and error (1 - balanced
-// accuracy) at most as large and one of them smaller. Indices into sweep.cells, by ascending time
-// (cells equal in both are all kept, in cell order). Cells with a non-finite time or balanced
-// accuracy are left out.
-std::vector<std::size_t> paretoFront(const SweepResult& sweep,
-                                     std::optional<SensorGroup> group = std::nullopt);
 
 // Figures 4.13 / 4.14 as tables (rateSeries, one row per point). One row per successful sweep cell,
 // grouped into series that hold everything but the swept variable fixed; values are the mean, min
@@ -88,18 +62,6 @@ std::vector<std::size_t> paretoFront(const SweepResult& sweep,
 // balanced accuracy.
 Table rateAgainstFloorTable(const SweepResult& sweep);
 Table rateAgainstOrderTable(const SweepResult& sweep);
-
-// The better of two successful cells: higher balanced accuracy, then fewer components (order),
-// then a faster fit. The report, the CLI and the workbench pick best cells with this one rule.
-// Balanced accuracy counts only classes with at least minTestSteps test steps ("too few" classes
-// never decide); a cell with no such class loses to any cell that has one (when neither has one,
-// balanced accuracy over all classes decides).
-bool betterCell(const SweepCellResult& a, const SweepCellResult& b,
-                std::size_t minTestSteps = kMinTestSteps);
-// Index into sweep.cells of each group's best successful cell (betterCell; the first of equals),
-// in group order; groups without one are left out.
-std::vector<std::size_t> bestCells(const SweepResult& sweep,
-                                   std::size_t minTestSteps = kMinTestSteps);
 
 // The best cell per group (bestCells): settings and metrics.
 Table bestCellsTable(const SweepResult& sweep);
@@ -139,7 +101,7 @@ Status writeSweepReport(const SweepResult& sweep, TableStyle style,
                         const nlohmann::json& configuration = nlohmann::json::object());
 // A model bundle's stored evaluation (of models trained from run files or a database alike):
 // settings, test counts and balanced accuracy per decision mode, held-out scenes, confusion in
-// counts and percent, per-class rates with counts and "too few" marks, contact patterns,
+// counts and percent, per-class rates with counts and "only N test steps" marks, contact patterns,
 // one-vs-rest table. A group without test rows says "no test data".
 std::string modelReport(const ModelBundle& bundle, TableStyle style,
                         std::size_t minTestSteps = kMinTestSteps);

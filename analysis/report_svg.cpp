@@ -9,6 +9,8 @@
 #include <set>
 #include <string>
 
+#include "analysis/report.h"  // htmlEscape
+
 namespace tactile::analysis {
 
 namespace {

@@ -8,8 +8,8 @@
 #include <string>
 #include <vector>
 
-#include "analysis/report.h"
 #include "analysis/sweep.h"
+#include "analysis/sweep_summary.h"
 
 namespace tactile::analysis {
 

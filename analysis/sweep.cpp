@@ -426,6 +426,7 @@ json sweepCellToJson(const SweepCellResult& r) {
   c["converged"] = r.converged;
   // No test rows: nothing was scored, which is not a rate of 0.
   const bool scored = r.confusion.total() > 0;
+  c["scored"] = scored;
   c["accuracy"] = scored ? json(r.metrics.accuracy) : json(nullptr);
   c["balanced_accuracy"] = scored ? json(r.metrics.balancedAccuracy) : json(nullptr);
   c["macro_f1"] = scored ? json(r.metrics.macroF1) : json(nullptr);

@@ -34,6 +34,14 @@
         <source>(none)</source>
         <translation>(keins)</translation>
     </message>
+    <message>
+        <source>%1 ms</source>
+        <translation>%1 ms</translation>
+    </message>
+    <message>
+        <source>%1 s</source>
+        <translation>%1 s</translation>
+    </message>
 </context>
 <context>
     <name>Shortcuts</name>
@@ -525,17 +533,6 @@
         <translation>Zuerst einen Labelsatz anlegen oder öffnen.</translation>
     </message>
     <message>
-        <source>No group to label: check a group or change the mode.</source>
-        <translation>Keine Gruppe zum Labeln: eine Gruppe anhaken oder den Modus wechseln.</translation>
-    </message>
-    <message numerus="yes">
-        <source>Labelled steps %1-%2 as %3 in %n group(s)</source>
-        <translation>
-            <numerusform>Schritte %1–%2 in %n Gruppe als %3 gelabelt</numerusform>
-            <numerusform>Schritte %1–%2 in %n Gruppen als %3 gelabelt</numerusform>
-        </translation>
-    </message>
-    <message>
         <source>No segment of the selected group under the cursor.</source>
         <translation>Kein Segment der gewählten Gruppe unter dem Cursor.</translation>
     </message>
@@ -657,8 +654,20 @@
         </translation>
     </message>
     <message>
-        <source>%1 of %2 steps agree (%3); by chance %4 would: kappa = (%3 - %4) / (100 % - %4) = %5</source>
-        <translation>%1 von %2 Schritten stimmen überein (%3); zufällig wären es %4: Kappa = (%3 − %4) / (100 % − %4) = %5</translation>
+        <source>No group is in contact here: nothing to label.</source>
+        <translation>Hier berührt keine Gruppe etwas: nichts zu beschriften.</translation>
+    </message>
+    <message>
+        <source>No group to label: tick a group.</source>
+        <translation>Keine Gruppe zu beschriften: eine Gruppe ankreuzen.</translation>
+    </message>
+    <message>
+        <source>Labelled steps %1-%2 as %3 in %4</source>
+        <translation>Schritte %1-%2 als %3 beschriftet in %4</translation>
+    </message>
+    <message>
+        <source>%1 of %2 steps agree (%3). Two annotators labelling at random with these class shares would agree on %4. Kappa %5 says how much better than chance they agree: 1 fully, 0 no better than chance.</source>
+        <translation>%1 von %2 Schritten stimmen überein (%3). Zwei Annotatoren, die zufällig mit diesen Klassenanteilen beschriften, stimmten bei %4 überein. Kappa %5 sagt, wie viel besser als der Zufall die Übereinstimmung ist: 1 vollständig, 0 nicht besser als Zufall.</translation>
     </message>
 </context>
 <context>
@@ -1166,6 +1175,14 @@ Forschungsumgebung für die taktile Navigation mobiler Roboter.</translation>
             <numerusform>Lauf „%1“ importiert (%n Schritte)</numerusform>
         </translation>
     </message>
+    <message>
+        <source>Undone: %1</source>
+        <translation>Rückgängig gemacht: %1</translation>
+    </message>
+    <message>
+        <source>Redone: %1</source>
+        <translation>Wiederhergestellt: %1</translation>
+    </message>
 </context>
 <context>
     <name>tactile::gui::McapExportDialog</name>
@@ -1311,6 +1328,14 @@ Forschungsumgebung für die taktile Navigation mobiler Roboter.</translation>
         <source>The timeline shows each group&apos;s predicted class under its labels, pale where the model is unsure, and marks where it disagrees with the labels (N: next disagreement).</source>
         <translation>Die Zeitleiste zeigt die vorhergesagte Klasse jeder Gruppe unter ihren Labels, blass, wo das Modell unsicher ist, und markiert Abweichungen von den Labels (N: nächste Abweichung).</translation>
     </message>
+    <message>
+        <source>%1 (all groups)</source>
+        <translation>%1 (alle Gruppen)</translation>
+    </message>
+    <message>
+        <source>%1 (%2 only)</source>
+        <translation>%1 (nur %2)</translation>
+    </message>
 </context>
 <context>
     <name>tactile::gui::NavigatorPanelView</name>
@@ -1427,6 +1452,10 @@ Forschungsumgebung für die taktile Navigation mobiler Roboter.</translation>
         <source>Close-up zoomed %1x (double click: close-up)</source>
         <translation>Nahansicht, Zoom %1x (Doppelklick: Nahansicht)</translation>
     </message>
+    <message>
+        <source>■ hole N: a gap N units wide that the model felt on one side</source>
+        <translation>■ Lücke N: eine N Einheiten breite Lücke, die das Modell auf einer Seite gefühlt hat</translation>
+    </message>
 </context>
 <context>
     <name>tactile::gui::RunListModel</name>
@@ -1466,6 +1495,17 @@ importiert aus %2</translation>
     <message>
         <source>Filter runs by name, scene, subject or outcome</source>
         <translation>Läufe nach Name, Szene, Proband oder Ergebnis filtern</translation>
+    </message>
+</context>
+<context>
+    <name>tactile::gui::SignalBarsView</name>
+    <message>
+        <source>normal</source>
+        <translation>Normalkraft</translation>
+    </message>
+    <message>
+        <source>shear</source>
+        <translation>Scherkraft</translation>
     </message>
 </context>
 <context>
@@ -1839,6 +1879,26 @@ pausiert: „Abspielen“ (P) lässt den Navigator fahren, „Schritt“ (N) mac
         <source>Experiment mode: the seed of start and goal. Autonomous mode: the seed of the start, as in tactile navigate --seeds. 0: the scene&apos;s own start and goal (where the map benchmark starts).</source>
         <translation>Experimentmodus: der Seed für Start und Ziel. Autonomer Modus: der Seed des Starts, wie bei tactile navigate --seeds. 0: Start und Ziel der Szene selbst (wo der Karten-Benchmark startet).</translation>
     </message>
+    <message>
+        <source>Model %1 has no model for %2: the navigator reads those groups as no contact all run long.</source>
+        <translation>Modell %1 hat kein Modell für %2: der Navigator liest diese Gruppen den ganzen Lauf lang als kein Kontakt.</translation>
+    </message>
+    <message>
+        <source>Run %1 paused: Play (P) lets the navigator drive, Step (N) takes one step</source>
+        <translation>Lauf %1 angehalten: Abspielen (P) lässt den Navigator fahren, Schritt (N) macht einen Schritt</translation>
+    </message>
+    <message>
+        <source>Run %1: the navigator drives; Pause (P) stops it</source>
+        <translation>Lauf %1: der Navigator fährt; Pause (P) hält ihn an</translation>
+    </message>
+    <message>
+        <source>Run %1: driving, the clock runs; Give Up ends the run</source>
+        <translation>Lauf %1: es wird gefahren, die Uhr läuft; Aufgeben beendet den Lauf</translation>
+    </message>
+    <message>
+        <source>Goal reached: run %1 succeeded in %2 s</source>
+        <translation>Ziel erreicht: Lauf %1 erfolgreich in %2 s</translation>
+    </message>
 </context>
 <context>
     <name>tactile::gui::StatusPictureView</name>
@@ -2068,10 +2128,6 @@ pausiert: „Abspielen“ (P) lässt den Navigator fahren, „Schritt“ (N) mac
         <translation>Modellordnung</translation>
     </message>
     <message>
-        <source>Fit + predict time (s)</source>
-        <translation>Zeit für Anpassung + Vorhersage (s)</translation>
-    </message>
-    <message>
         <source>Error: 100 - balanced accuracy (%)</source>
         <translation>Fehler: 100 − balancierte Genauigkeit (%)</translation>
     </message>
@@ -2086,10 +2142,6 @@ pausiert: „Abspielen“ (P) lässt den Navigator fahren, „Schritt“ (N) mac
     <message>
         <source>No fitted cells yet.</source>
         <translation>Noch keine angepassten Zellen.</translation>
-    </message>
-    <message>
-        <source>Recall per class (%)</source>
-        <translation>Trefferquote je Klasse (%)</translation>
     </message>
     <message>
         <source>No fitted cells scored on test rows.</source>
@@ -2108,6 +2160,14 @@ pausiert: „Abspielen“ (P) lässt den Navigator fahren, „Schritt“ (N) mac
 cell %1 (click to select)</source>
         <translation>
 Zelle %1 (zum Auswählen klicken)</translation>
+    </message>
+    <message>
+        <source>Correct rate per class (%)</source>
+        <translation>Trefferquote je Klasse (%)</translation>
+    </message>
+    <message>
+        <source>Fit + predict time</source>
+        <translation>Zeit für Anpassen + Vorhersagen</translation>
     </message>
 </context>
 <context>
@@ -2181,10 +2241,6 @@ Zelle %1 (zum Auswählen klicken)</translation>
         <translation>Diese Zelle wurde nicht bewertet: Die Testläufe haben keine gelabelten Zeilen ihrer Gruppe.</translation>
     </message>
     <message>
-        <source>Sweep %1: %2 cells, %3 fitted, %4 failed; no model is stored (Store Model of Cell stores one)</source>
-        <translation>Sweep %1: %2 Zellen, %3 angepasst, %4 fehlgeschlagen; kein Modell gespeichert („Modell der Zelle speichern“ speichert eines)</translation>
-    </message>
-    <message>
         <source>No cell is fitted yet.</source>
         <translation>Noch keine Zelle angepasst.</translation>
     </message>
@@ -2195,14 +2251,6 @@ Zelle %1 (zum Auswählen klicken)</translation>
     <message>
         <source>This cell could not be fitted: %1</source>
         <translation>Diese Zelle konnte nicht angepasst werden: %1</translation>
-    </message>
-    <message>
-        <source>Precision per class, one-vs-rest (of the steps predicted a class, the share that are it; thesis table 4.19&apos;s correct rate), % - this cell</source>
-        <translation>Präzision je Klasse, One-vs-Rest (von den als eine Klasse vorhergesagten Schritten der Anteil, der wirklich zu ihr gehört; die Korrektrate aus Tabelle 4.19 der Arbeit), % – diese Zelle</translation>
-    </message>
-    <message>
-        <source>Recall per class of this cell (of the steps of a class, the share predicted as it), %</source>
-        <translation>Trefferquote je Klasse dieser Zelle (von den Schritten einer Klasse der Anteil, der als diese Klasse vorhergesagt wird), %</translation>
     </message>
     <message>
         <source>Group %1, GMM %2, order %3, variance floor %4, %5 features, seed %6, %7 decision</source>
@@ -2224,6 +2272,26 @@ Zelle %1 (zum Auswählen klicken)</translation>
         <source>All decisions</source>
         <translation>Alle Entscheidungen</translation>
     </message>
+    <message>
+        <source>Sweep %1: %2 cells, %3 fitted, %4 failed</source>
+        <translation>Sweep %1: %2 Zellen, %3 angepasst, %4 fehlgeschlagen</translation>
+    </message>
+    <message>
+        <source>no model of it is stored (Store Model of Cell stores one)</source>
+        <translation>kein Modell daraus gespeichert (Modell der Zelle speichern speichert eines)</translation>
+    </message>
+    <message>
+        <source>stored models of its cells: %1</source>
+        <translation>gespeicherte Modelle seiner Zellen: %1</translation>
+    </message>
+    <message>
+        <source>Precision per class, one-vs-rest (of the steps predicted a class, the share that are it), % - this cell</source>
+        <translation>Präzision je Klasse, eine gegen die übrigen (von den als Klasse vorhergesagten Schritten der Anteil, der es ist), % - diese Zelle</translation>
+    </message>
+    <message>
+        <source>Correct rate per class of this cell (of the steps of a class, the share predicted as it), %</source>
+        <translation>Trefferquote je Klasse dieser Zelle (von den Schritten einer Klasse der als sie vorhergesagte Anteil), %</translation>
+    </message>
 </context>
 <context>
     <name>tactile::gui::SweepResultsWindow</name>
@@ -2242,10 +2310,6 @@ Zelle %1 (zum Auswählen klicken)</translation>
     <message>
         <source>Store Model</source>
         <translation>Modell speichern</translation>
-    </message>
-    <message>
-        <source>Name (empty: automatic):</source>
-        <translation>Name (leer: automatisch):</translation>
     </message>
     <message>
         <source>Export Model of Cell...</source>
@@ -2304,8 +2368,24 @@ Zelle %1 (zum Auswählen klicken)</translation>
         <translation>Modell „%1“ gespeichert.</translation>
     </message>
     <message>
-        <source>Written to %1.</source>
-        <translation>Nach %1 geschrieben.</translation>
+        <source>Name (empty: %1):</source>
+        <translation>Name (leer: %1):</translation>
+    </message>
+    <message>
+        <source>Close</source>
+        <translation>Schließen</translation>
+    </message>
+    <message>
+        <source>Close this window (%1)</source>
+        <translation>Dieses Fenster schließen (%1)</translation>
+    </message>
+    <message>
+        <source>automatic</source>
+        <translation>automatisch</translation>
+    </message>
+    <message>
+        <source>Model written to %1 (not stored in the database).</source>
+        <translation>Modell nach %1 geschrieben (nicht in der Datenbank gespeichert).</translation>
     </message>
 </context>
 <context>
@@ -2704,13 +2784,6 @@ grau: blockiert</translation>
             <numerusform>%n Zellen</numerusform>
         </translation>
     </message>
-    <message numerus="yes">
-        <source>, about %1 (%2 s a cell as in sweep %3, on %n thread(s))</source>
-        <translation>
-            <numerusform>, etwa %1 (%2 s je Zelle wie in Sweep %3, mit %n Thread)</numerusform>
-            <numerusform>, etwa %1 (%2 s je Zelle wie in Sweep %3, mit %n Threads)</numerusform>
-        </translation>
-    </message>
     <message>
         <source>; the time left shows once the first cells finish (no sweep is stored yet to estimate from)</source>
         <translation>; die Restzeit erscheint, sobald die ersten Zellen fertig sind (noch kein gespeicherter Sweep, aus dem sie sich schätzen ließe)</translation>
@@ -2791,12 +2864,59 @@ grau: blockiert</translation>
         <source>Evidence weight:</source>
         <translation>Evidenzgewicht:</translation>
     </message>
+    <message>
+        <source>Leave Them Out</source>
+        <translation>Weglassen</translation>
+    </message>
+    <message>
+        <source>Untick the groups the test runs cannot score</source>
+        <translation>Die Gruppen abwählen, die die Testläufe nicht bewerten können</translation>
+    </message>
+    <message numerus="yes">
+        <source>, about %1 on %n thread(s) (each cell&apos;s rows, order and covariance form, timed by %2 stored cells)</source>
+        <translation>
+            <numerusform>, etwa %1 auf %n Thread (Zeilen, Ordnung und Kovarianzform jeder Zelle, gemessen an %2 gespeicherten Zellen)</numerusform>
+            <numerusform>, etwa %1 auf %n Threads (Zeilen, Ordnung und Kovarianzform jeder Zelle, gemessen an %2 gespeicherten Zellen)</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>the test runs hold no labelled contact steps of %1</source>
+        <translation>die Testläufe enthalten keine beschrifteten Kontaktschritte von %1</translation>
+    </message>
+    <message>
+        <source>too few (under %1) of %2</source>
+        <translation>zu wenige (unter %1) von %2</translation>
+    </message>
+    <message>
+        <source>Cannot be scored: %1. Their cells would be fitted but read &quot;no test data&quot;.</source>
+        <translation>Nicht bewertbar: %1. Ihre Zellen würden angepasst, zeigten aber „keine Testdaten“.</translation>
+    </message>
 </context>
 <context>
     <name>tactile::gui::UserGuideWindow</name>
     <message>
         <source>User Guide</source>
         <translation>Benutzerhandbuch</translation>
+    </message>
+    <message>
+        <source>User Guide: %1</source>
+        <translation>Benutzerhandbuch: %1</translation>
+    </message>
+    <message>
+        <source>Back</source>
+        <translation>Zurück</translation>
+    </message>
+    <message>
+        <source>Forward</source>
+        <translation>Vorwärts</translation>
+    </message>
+    <message>
+        <source>Contents</source>
+        <translation>Inhalt</translation>
+    </message>
+    <message>
+        <source>%1 is not part of the embedded guide; it is in the source tree.</source>
+        <translation>%1 gehört nicht zum eingebetteten Handbuch; es liegt im Quellbaum.</translation>
     </message>
 </context>
 </TS>

@@ -34,6 +34,14 @@
         <source>(none)</source>
         <translation>(无)</translation>
     </message>
+    <message>
+        <source>%1 ms</source>
+        <translation>%1 毫秒</translation>
+    </message>
+    <message>
+        <source>%1 s</source>
+        <translation>%1 秒</translation>
+    </message>
 </context>
 <context>
     <name>Shortcuts</name>
@@ -525,16 +533,6 @@
         <translation>请先新建或打开一个标签集。</translation>
     </message>
     <message>
-        <source>No group to label: check a group or change the mode.</source>
-        <translation>没有可标注的组：请勾选一个组或更改模式。</translation>
-    </message>
-    <message numerus="yes">
-        <source>Labelled steps %1-%2 as %3 in %n group(s)</source>
-        <translation>
-            <numerusform>已在 %n 个组中将第 %1–%2 步标注为%3</numerusform>
-        </translation>
-    </message>
-    <message>
         <source>No segment of the selected group under the cursor.</source>
         <translation>光标处没有选中组的片段。</translation>
     </message>
@@ -653,8 +651,20 @@
         </translation>
     </message>
     <message>
-        <source>%1 of %2 steps agree (%3); by chance %4 would: kappa = (%3 - %4) / (100 % - %4) = %5</source>
-        <translation>%2 步中有 %1 步一致（%3）；偶然一致率为 %4：kappa = (%3 − %4) / (100 % − %4) = %5</translation>
+        <source>No group is in contact here: nothing to label.</source>
+        <translation>此处没有组处于接触状态：无可标注。</translation>
+    </message>
+    <message>
+        <source>No group to label: tick a group.</source>
+        <translation>没有要标注的组：请勾选一个组。</translation>
+    </message>
+    <message>
+        <source>Labelled steps %1-%2 as %3 in %4</source>
+        <translation>已将步 %1-%2 标注为 %3，组：%4</translation>
+    </message>
+    <message>
+        <source>%1 of %2 steps agree (%3). Two annotators labelling at random with these class shares would agree on %4. Kappa %5 says how much better than chance they agree: 1 fully, 0 no better than chance.</source>
+        <translation>%2 步中有 %1 步一致（%3）。两位按这些类别比例随机标注的标注者会在 %4 上一致。Kappa %5 表示一致程度比随机好多少：1 为完全一致，0 为不比随机好。</translation>
     </message>
 </context>
 <context>
@@ -1155,6 +1165,14 @@ Research workbench for tactile-based mobile-robot navigation.</source>
             <numerusform>已导入运行“%1”（%n 步）</numerusform>
         </translation>
     </message>
+    <message>
+        <source>Undone: %1</source>
+        <translation>已撤销：%1</translation>
+    </message>
+    <message>
+        <source>Redone: %1</source>
+        <translation>已重做：%1</translation>
+    </message>
 </context>
 <context>
     <name>tactile::gui::McapExportDialog</name>
@@ -1300,6 +1318,14 @@ Research workbench for tactile-based mobile-robot navigation.</source>
         <source>The timeline shows each group&apos;s predicted class under its labels, pale where the model is unsure, and marks where it disagrees with the labels (N: next disagreement).</source>
         <translation>时间轴在每组标签下方显示预测类别，模型不确定处颜色较浅，并标出与标签不一致之处（N：下一处不一致）。</translation>
     </message>
+    <message>
+        <source>%1 (all groups)</source>
+        <translation>%1（所有组）</translation>
+    </message>
+    <message>
+        <source>%1 (%2 only)</source>
+        <translation>%1（仅 %2）</translation>
+    </message>
 </context>
 <context>
     <name>tactile::gui::NavigatorPanelView</name>
@@ -1416,6 +1442,10 @@ Research workbench for tactile-based mobile-robot navigation.</source>
         <source>Close-up zoomed %1x (double click: close-up)</source>
         <translation>特写，缩放 %1 倍（双击：特写）</translation>
     </message>
+    <message>
+        <source>■ hole N: a gap N units wide that the model felt on one side</source>
+        <translation>■ 空隙 N：模型在一侧感到的宽 N 单位的空隙</translation>
+    </message>
 </context>
 <context>
     <name>tactile::gui::RunListModel</name>
@@ -1455,6 +1485,17 @@ imported from %2</source>
     <message>
         <source>Filter runs by name, scene, subject or outcome</source>
         <translation>按名称、场景、受试者或结果筛选运行</translation>
+    </message>
+</context>
+<context>
+    <name>tactile::gui::SignalBarsView</name>
+    <message>
+        <source>normal</source>
+        <translation>法向力</translation>
+    </message>
+    <message>
+        <source>shear</source>
+        <translation>剪切力</translation>
     </message>
 </context>
 <context>
@@ -1828,6 +1869,26 @@ paused: Play (P) lets the navigator drive, Step (N) takes one step</source>
         <source>Experiment mode: the seed of start and goal. Autonomous mode: the seed of the start, as in tactile navigate --seeds. 0: the scene&apos;s own start and goal (where the map benchmark starts).</source>
         <translation>实验模式：起点和目标的种子。自主模式：起点的种子，与 tactile navigate --seeds 相同。0：场景自身的起点和目标（地图基准测试的起点）。</translation>
     </message>
+    <message>
+        <source>Model %1 has no model for %2: the navigator reads those groups as no contact all run long.</source>
+        <translation>模型 %1 没有 %2 的模型：导航器在整个运行中将这些组视为无接触。</translation>
+    </message>
+    <message>
+        <source>Run %1 paused: Play (P) lets the navigator drive, Step (N) takes one step</source>
+        <translation>运行 %1 已暂停：播放 (P) 让导航器驾驶，单步 (N) 前进一步</translation>
+    </message>
+    <message>
+        <source>Run %1: the navigator drives; Pause (P) stops it</source>
+        <translation>运行 %1：导航器正在驾驶；暂停 (P) 使其停止</translation>
+    </message>
+    <message>
+        <source>Run %1: driving, the clock runs; Give Up ends the run</source>
+        <translation>运行 %1：正在驾驶，计时进行中；放弃结束运行</translation>
+    </message>
+    <message>
+        <source>Goal reached: run %1 succeeded in %2 s</source>
+        <translation>已到达目标：运行 %1 在 %2 秒内成功</translation>
+    </message>
 </context>
 <context>
     <name>tactile::gui::StatusPictureView</name>
@@ -2057,10 +2118,6 @@ paused: Play (P) lets the navigator drive, Step (N) takes one step</source>
         <translation>模型阶数</translation>
     </message>
     <message>
-        <source>Fit + predict time (s)</source>
-        <translation>拟合 + 预测时间 (s)</translation>
-    </message>
-    <message>
         <source>Error: 100 - balanced accuracy (%)</source>
         <translation>误差：100 − 平衡准确率 (%)</translation>
     </message>
@@ -2075,10 +2132,6 @@ paused: Play (P) lets the navigator drive, Step (N) takes one step</source>
     <message>
         <source>No fitted cells yet.</source>
         <translation>还没有已拟合的单元。</translation>
-    </message>
-    <message>
-        <source>Recall per class (%)</source>
-        <translation>各类别召回率 (%)</translation>
     </message>
     <message>
         <source>No fitted cells scored on test rows.</source>
@@ -2097,6 +2150,14 @@ paused: Play (P) lets the navigator drive, Step (N) takes one step</source>
 cell %1 (click to select)</source>
         <translation>
 单元 %1（单击以选择）</translation>
+    </message>
+    <message>
+        <source>Correct rate per class (%)</source>
+        <translation>每类正确率 (%)</translation>
+    </message>
+    <message>
+        <source>Fit + predict time</source>
+        <translation>拟合 + 预测时间</translation>
     </message>
 </context>
 <context>
@@ -2170,10 +2231,6 @@ cell %1 (click to select)</source>
         <translation>此单元未保留接触模式。</translation>
     </message>
     <message>
-        <source>Sweep %1: %2 cells, %3 fitted, %4 failed; no model is stored (Store Model of Cell stores one)</source>
-        <translation>扫描 %1：%2 个单元，%3 个已拟合，%4 个失败；未保存模型（“保存单元的模型”可保存一个）</translation>
-    </message>
-    <message>
         <source>No cell is fitted yet.</source>
         <translation>还没有单元完成拟合。</translation>
     </message>
@@ -2184,14 +2241,6 @@ cell %1 (click to select)</source>
     <message>
         <source>This cell could not be fitted: %1</source>
         <translation>此单元无法拟合：%1</translation>
-    </message>
-    <message>
-        <source>Precision per class, one-vs-rest (of the steps predicted a class, the share that are it; thesis table 4.19&apos;s correct rate), % - this cell</source>
-        <translation>各类别精确率（一对其余；预测为某类别的步中实际属于该类别的比例，即论文表 4.19 中的正确率），% – 本单元</translation>
-    </message>
-    <message>
-        <source>Recall per class of this cell (of the steps of a class, the share predicted as it), %</source>
-        <translation>本单元各类别召回率（某类别的步中被预测为该类别的比例），%</translation>
     </message>
     <message>
         <source>Group %1, GMM %2, order %3, variance floor %4, %5 features, seed %6, %7 decision</source>
@@ -2213,6 +2262,26 @@ cell %1 (click to select)</source>
         <source>All decisions</source>
         <translation>全部决策</translation>
     </message>
+    <message>
+        <source>Sweep %1: %2 cells, %3 fitted, %4 failed</source>
+        <translation>扫描 %1：%2 个单元，%3 个已拟合，%4 个失败</translation>
+    </message>
+    <message>
+        <source>no model of it is stored (Store Model of Cell stores one)</source>
+        <translation>尚未存储其模型（“存储单元模型”可存储一个）</translation>
+    </message>
+    <message>
+        <source>stored models of its cells: %1</source>
+        <translation>其单元已存储的模型：%1</translation>
+    </message>
+    <message>
+        <source>Precision per class, one-vs-rest (of the steps predicted a class, the share that are it), % - this cell</source>
+        <translation>每类精确率，一对其余（在预测为某类的步中，确为该类的比例），% - 此单元</translation>
+    </message>
+    <message>
+        <source>Correct rate per class of this cell (of the steps of a class, the share predicted as it), %</source>
+        <translation>此单元每类正确率（在某类的步中，被预测为该类的比例），%</translation>
+    </message>
 </context>
 <context>
     <name>tactile::gui::SweepResultsWindow</name>
@@ -2231,10 +2300,6 @@ cell %1 (click to select)</source>
     <message>
         <source>Store Model</source>
         <translation>保存模型</translation>
-    </message>
-    <message>
-        <source>Name (empty: automatic):</source>
-        <translation>名称（留空：自动）：</translation>
     </message>
     <message>
         <source>Export Model of Cell...</source>
@@ -2293,8 +2358,24 @@ cell %1 (click to select)</source>
         <translation>模型“%1”已保存。</translation>
     </message>
     <message>
-        <source>Written to %1.</source>
-        <translation>已写入 %1。</translation>
+        <source>Name (empty: %1):</source>
+        <translation>名称（留空：%1）：</translation>
+    </message>
+    <message>
+        <source>Close</source>
+        <translation>关闭</translation>
+    </message>
+    <message>
+        <source>Close this window (%1)</source>
+        <translation>关闭此窗口 (%1)</translation>
+    </message>
+    <message>
+        <source>automatic</source>
+        <translation>自动</translation>
+    </message>
+    <message>
+        <source>Model written to %1 (not stored in the database).</source>
+        <translation>模型已写入 %1（未存入数据库）。</translation>
     </message>
 </context>
 <context>
@@ -2689,12 +2770,6 @@ grey: blocked</source>
             <numerusform>%n 个单元</numerusform>
         </translation>
     </message>
-    <message numerus="yes">
-        <source>, about %1 (%2 s a cell as in sweep %3, on %n thread(s))</source>
-        <translation>
-            <numerusform>，约 %1（按扫描 %3 中每个单元 %2 秒计，使用 %n 个线程）</numerusform>
-        </translation>
-    </message>
     <message>
         <source>; the time left shows once the first cells finish (no sweep is stored yet to estimate from)</source>
         <translation>；首批单元完成后将显示剩余时间（尚无已保存的扫描可供估算）</translation>
@@ -2775,12 +2850,58 @@ grey: blocked</source>
         <source>Evidence weight:</source>
         <translation>证据权重：</translation>
     </message>
+    <message>
+        <source>Leave Them Out</source>
+        <translation>排除它们</translation>
+    </message>
+    <message>
+        <source>Untick the groups the test runs cannot score</source>
+        <translation>取消勾选测试运行无法评分的组</translation>
+    </message>
+    <message numerus="yes">
+        <source>, about %1 on %n thread(s) (each cell&apos;s rows, order and covariance form, timed by %2 stored cells)</source>
+        <translation>
+            <numerusform>，约 %1，使用 %n 个线程（按每个单元的行数、阶数和协方差形式，依据 %2 个已存储单元计时）</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>the test runs hold no labelled contact steps of %1</source>
+        <translation>测试运行中没有 %1 的已标注接触步</translation>
+    </message>
+    <message>
+        <source>too few (under %1) of %2</source>
+        <translation>%2 的步数太少（少于 %1）</translation>
+    </message>
+    <message>
+        <source>Cannot be scored: %1. Their cells would be fitted but read &quot;no test data&quot;.</source>
+        <translation>无法评分：%1。其单元会被拟合，但显示“无测试数据”。</translation>
+    </message>
 </context>
 <context>
     <name>tactile::gui::UserGuideWindow</name>
     <message>
         <source>User Guide</source>
         <translation>用户指南</translation>
+    </message>
+    <message>
+        <source>User Guide: %1</source>
+        <translation>用户指南：%1</translation>
+    </message>
+    <message>
+        <source>Back</source>
+        <translation>后退</translation>
+    </message>
+    <message>
+        <source>Forward</source>
+        <translation>前进</translation>
+    </message>
+    <message>
+        <source>Contents</source>
+        <translation>目录</translation>
+    </message>
+    <message>
+        <source>%1 is not part of the embedded guide; it is in the source tree.</source>
+        <translation>%1 不属于内嵌指南；它在源代码树中。</translation>
     </message>
 </context>
 </TS>

@@ -377,6 +377,22 @@ Status Workspace::redo(LabelEdit& edit, const storage::EditOptions& options) {
 
 // ---- learning ----------------------------------------------------------------------------------
 
+Result<std::array<std::size_t, kGroupCount>> Workspace::labelledContactSteps(
+    std::string_view labelSet, const std::vector<std::string>& runs) {
+  std::array<std::size_t, kGroupCount> out{};
+  if (runs.empty()) return out;
+  auto set = db_->labels().find(std::string(labelSet));
+  if (!set) return set.error();
+  auto loaded = loadLabelled(set->id, runs);
+  if (!loaded) return loaded.error();
+  for (const GroupInfo& g : kSensorGroups) {
+    out[static_cast<std::size_t>(groupIndex(g.group))] =
+        analysis::buildGroupDataSet(loaded->labelled, g.group, analysis::FeatureKind::Normal)
+            .size();
+  }
+  return out;
+}
+
 Result<Workspace::Labelled> Workspace::loadLabelled(std::int64_t setId,
                                                     const std::vector<std::string>& names) {
   Labelled out;

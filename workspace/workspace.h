@@ -220,6 +220,10 @@ class Workspace {
       const ProgressFn& progress = {});
   // A stored sweep read back into a SweepResult (for reports).
   Result<analysis::SweepResult> loadSweep(std::int64_t sweepId);
+  // Per group (in group order), the steps of the named runs that the label set labels and where
+  // the group touches something: the rows a model of that group trains on or is scored on.
+  Result<std::array<std::size_t, kGroupCount>> labelledContactSteps(
+      std::string_view labelSet, const std::vector<std::string>& runs);
   // A stored model bundle.
   Result<analysis::ModelBundle> loadModel(std::string_view name);
 
@@ -232,10 +236,13 @@ class Workspace {
   Result<std::string> importModel(const std::filesystem::path& file, std::string name = {});
   // Trains the model of one sweep cell (index into loadSweep(sweepId).cells): the cell's group and
   // settings with the sweep's shared settings, on the sweep's label set and training runs, scored
-  // on its test runs, and stored under `modelName` (empty: "<sweep name> <cell description>",
-  // made unique). Its test confusion equals the cell's: same data, settings and seed.
+  // on its test runs, and stored under `modelName` (empty: "sweep<id>-<group>-cell<index>", made
+  // unique; short and within the name rule). Its test confusion equals the cell's: same data,
+  // settings and seed. With `store` false the model is trained and scored only (modelId 0), for a
+  // model file that is not to become a stored model.
   Result<TrainOutcome> trainSweepCell(std::int64_t sweepId, std::size_t cellIndex,
-                                      std::string modelName = {}, const ProgressFn& progress = {});
+                                      std::string modelName = {}, const ProgressFn& progress = {},
+                                      bool store = true);
   // Classifies a stored run with a stored model; the bundle is returned beside the result, which
   // points into it.
   struct Classified {

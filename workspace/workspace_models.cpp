@@ -52,18 +52,9 @@ Result<std::string> Workspace::importModel(const std::filesystem::path& file, st
   return name;
 }
 
-namespace {
-
-std::string floorText(double floor) {
-  char buffer[32];
-  std::snprintf(buffer, sizeof buffer, "%g", floor);
-  return buffer;
-}
-
-}  // namespace
-
 Result<TrainOutcome> Workspace::trainSweepCell(std::int64_t sweepId, std::size_t cellIndex,
-                                               std::string modelName, const ProgressFn& progress) {
+                                               std::string modelName, const ProgressFn& progress,
+                                               bool store) {
   auto info = db_->sweeps().info(sweepId);
   if (!info) return info.error();
   auto sweep = loadSweep(sweepId);
@@ -108,18 +99,16 @@ Result<TrainOutcome> Workspace::trainSweepCell(std::int64_t sweepId, std::size_t
   request.settings = analysis::GroupSettings::same(settings);
   request.minRowsPerGroup = 1;
   if (modelName.empty()) {
-    const std::string base = info->name + " " + std::string(groupInfo(cell.group).shortName) + " " +
-                             std::string(analysis::classifierMethodName(cell.method)) +
-                             (cell.method == analysis::ClassifierMethod::Gmm
-                                  ? " " + std::string(analysis::covarianceFormName(cell.form)) +
-                                        " order " + std::to_string(cell.order)
-                                  : std::string()) +
-                             " floor " + floorText(cell.varianceFloor);
+    // Short: the settings are in the model's provenance and the sweep's report, not its name.
+    const std::string base = "sweep" + std::to_string(sweepId) + "-" +
+                             std::string(groupInfo(cell.group).shortName) + "-cell" +
+                             std::to_string(cellIndex);
     modelName = base;
     for (int n = 2; db_->models().info(modelName); ++n)
       modelName = base + " (" + std::to_string(n) + ")";
   }
   request.modelName = modelName;
+  request.store = store;
   auto outcome = train(request, progress);
   if (!outcome) return outcome.error();
   if (outcome->groups.empty() || !outcome->groups.front().trained) {

@@ -1111,9 +1111,10 @@ void registerLearnVerbs(CLI::App& app, CLI::App& /*bench*/) {
     cmd->add_option("--sweep", args->sweep, "Stored sweep id (with --db; see tactile sweeps list)");
     cmd->add_option("--format", args->format, "md, csv, html or text (default text)");
     cmd->add_option("--out", args->out, "Write here instead of stdout");
-    cmd->add_option("--min-test-steps", args->minTestSteps,
-                    "Classes with fewer test steps are marked \"too few\" and never decide a "
-                    "best cell")
+    cmd->add_option(
+           "--min-test-steps", args->minTestSteps,
+           "Classes with fewer test steps are marked \"only N test steps\" and never decide a "
+           "best cell")
         ->capture_default_str();
     cmd->add_flag("--csv", args->csv, "CSV tables instead of aligned text (= --format csv)");
     cmd->add_flag(

@@ -81,7 +81,21 @@ std::vector<std::uint64_t> parseSeeds(const std::string& text) {
   return out;
 }
 
-std::shared_ptr<const analysis::ModelBundle> loadModels(const NavigateArgs& a) {
+// A model without some groups leaves the navigator blind there (it reads them as no contact all
+// run long): said before the run starts.
+std::shared_ptr<const analysis::ModelBundle> warnOfMissingGroups(
+    const std::string& model, std::shared_ptr<const analysis::ModelBundle> bundle) {
+  std::string missing;
+  for (const GroupInfo& g : kSensorGroups)
+    if (bundle->find(g.group) == nullptr)
+      missing += (missing.empty() ? "" : ", ") + std::string(g.shortName);
+  if (!missing.empty())
+    printWarning("model " + model + " has no model for " + missing +
+                 ": the navigator reads those groups as no contact all run long");
+  return bundle;
+}
+
+std::shared_ptr<const analysis::ModelBundle> loadModelsUnchecked(const NavigateArgs& a) {
   if (a.model.empty())
     throw UsageError(a.benchmark != -1
                          ? "--benchmark needs --model FILE (or a stored NAME with --db): it "
@@ -96,6 +110,10 @@ std::shared_ptr<const analysis::ModelBundle> loadModels(const NavigateArgs& a) {
   auto m = analysis::readModelFile(a.model);
   if (!m) throw std::runtime_error(m.errorText());
   return std::make_shared<const analysis::ModelBundle>(std::move(m.value()));
+}
+
+std::shared_ptr<const analysis::ModelBundle> loadModels(const NavigateArgs& a) {
+  return warnOfMissingGroups(a.model, loadModelsUnchecked(a));
 }
 
 unsigned threadCount(unsigned requested, std::size_t jobs) {

@@ -15,12 +15,15 @@
 #include <QInputDialog>
 #include <QLabel>
 #include <QLineEdit>
+#include <QMap>
 #include <QMenuBar>
 #include <QMessageBox>
 #include <QMimeData>
 #include <QPlainTextEdit>
 #include <QProgressDialog>
 #include <QRegularExpression>
+#include <QScrollArea>
+#include <QScrollBar>
 #include <QSettings>
 #include <QStatusBar>
 #include <QTextBrowser>
@@ -31,10 +34,12 @@
 #include <QVBoxLayout>
 #include <QtConcurrent/QtConcurrentRun>
 
+#include "app/gui/common/file_dialog_memory.h"
 #include "app/gui/common/plot_style.h"
 #include "app/gui/common/progress_bridge.h"
 #include "app/gui/common/settings_keys.h"
 #include "app/gui/common/shortcuts.h"
+#include "app/gui/common/window_geometry.h"
 #include "app/gui/labels/history_view.h"
 #include "app/gui/labels/label_model.h"
 #include "app/gui/labels/label_panel_view.h"
@@ -198,11 +203,26 @@ void MainWindow::createViews() {
       dock(tr("Runs"), QStringLiteral("runsDock"), runList_, Qt::LeftDockWidgetArea);
   QDockWidget* route =
       dock(tr("Route"), QStringLiteral("routeDock"), route_, Qt::LeftDockWidgetArea);
+  // The panels of forms scroll on a short screen rather than making the window taller than it.
+  auto scrolling = [this](QWidget* content, const QString& name) {
+    auto* area = new QScrollArea(this);
+    area->setObjectName(name);
+    area->setFrameShape(QFrame::NoFrame);
+    area->setWidgetResizable(true);
+    area->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+    area->setWidget(content);
+    // As wide as the panel needs, with room for the vertical scroll bar.
+    area->setMinimumWidth(content->minimumSizeHint().width() +
+                          area->verticalScrollBar()->sizeHint().width());
+    return area;
+  };
   QDockWidget* labels =
-      dock(tr("Labels"), QStringLiteral("labelsDock"), labelPanel_, Qt::RightDockWidgetArea);
-  QDockWidget* navigator =
-      dock(tr("Navigator"), QStringLiteral("navigatorDock"),
-           new NavigatorPanelView(session_, navTrack, this), Qt::RightDockWidgetArea);
+      dock(tr("Labels"), QStringLiteral("labelsDock"),
+           scrolling(labelPanel_, QStringLiteral("labelsScroll")), Qt::RightDockWidgetArea);
+  QDockWidget* navigator = dock(tr("Navigator"), QStringLiteral("navigatorDock"),
+                                scrolling(new NavigatorPanelView(session_, navTrack, this),
+                                          QStringLiteral("navigatorScroll")),
+                                Qt::RightDockWidgetArea);
   QDockWidget* history = dock(tr("History"), QStringLiteral("historyDock"),
                               new HistoryView(session_, labels_, this), Qt::RightDockWidgetArea);
   tabifyDockWidget(labels, navigator);
@@ -374,6 +394,16 @@ void MainWindow::createActions() {
   bindShortcut(undo, QStringLiteral("undo"));
   QAction* redo = labels_->undoStack()->createRedoAction(this, tr("&Redo"));
   bindShortcut(redo, QStringLiteral("redo"));
+  // Undo and redo say what they did (the stack's own action runs first; the command undone is
+  // then the one to redo, and the other way round).
+  connect(undo, &QAction::triggered, this, [this] {
+    if (const QString what = labels_->undoStack()->redoText(); !what.isEmpty())
+      showMessage(tr("Undone: %1").arg(what));
+  });
+  connect(redo, &QAction::triggered, this, [this] {
+    if (const QString what = labels_->undoStack()->undoText(); !what.isEmpty())
+      showMessage(tr("Redone: %1").arg(what));
+  });
   edit->addAction(undo);
   edit->addAction(redo);
   edit->addSeparator();
@@ -617,11 +647,14 @@ void MainWindow::stepByScreen(int direction) {
 
 void MainWindow::chooseDatabase(bool create) {
   const QString path =
-      create ? QFileDialog::getSaveFileName(this, tr("New database"), QString(),
+      create ? QFileDialog::getSaveFileName(this, tr("New database"),
+                                            startPath(QStringLiteral("databases")),
                                             tr("Tactile databases (*.db);;All files (*)"))
-             : QFileDialog::getOpenFileName(this, tr("Open database"), QString(),
+             : QFileDialog::getOpenFileName(this, tr("Open database"),
+                                            startPath(QStringLiteral("databases")),
                                             tr("Tactile databases (*.db *.sqlite);;All files (*)"));
   if (path.isEmpty()) return;
+  rememberPath(QStringLiteral("databases"), path);
   Status s = openDatabase(path, create);
   if (!s) showOpenError(QString::fromStdString(s.errorText()));
 }
@@ -696,8 +729,10 @@ void MainWindow::serverLost(const QString& message) {
 }
 
 void MainWindow::chooseRunFiles() {
-  const QStringList files = QFileDialog::getOpenFileNames(this, tr("Import runs"), QString(),
-                                                          tr("Run files (*.csv);;All files (*)"));
+  const QStringList files =
+      QFileDialog::getOpenFileNames(this, tr("Import runs"), startPath(QStringLiteral("runs")),
+                                    tr("Run files (*.csv);;All files (*)"));
+  if (!files.isEmpty()) rememberPath(QStringLiteral("runs"), files.front());
   importRuns(files);
 }
 
@@ -831,8 +866,10 @@ void MainWindow::exportRunMcap(const QString& path, const QStringList& labelSets
 
 void MainWindow::chooseMcapToImport() {
   if (!workspace_) return showError(tr("Open or create a database before importing runs."));
-  const QString file = QFileDialog::getOpenFileName(this, tr("Import MCAP"), QString(),
-                                                    tr("MCAP files (*.mcap);;All files (*)"));
+  const QString file =
+      QFileDialog::getOpenFileName(this, tr("Import MCAP"), startPath(QStringLiteral("mcap")),
+                                   tr("MCAP files (*.mcap);;All files (*)"));
+  rememberPath(QStringLiteral("mcap"), file);
   if (!file.isEmpty()) importMcapFile(file);
 }
 
@@ -976,7 +1013,7 @@ void MainWindow::showAbout() {
 
 void MainWindow::restoreSettings() {
   QSettings settings;
-  restoreGeometry(settings.value(keys::kGeometry).toByteArray());
+  restoreGeometryWithinScreen(this, settings.value(keys::kGeometry).toByteArray());
   restoreState(settings.value(keys::kWindowState).toByteArray());
   timeline_->restoreSettings(settings);
   route_->restoreSettings(settings);
@@ -1099,9 +1136,11 @@ void MainWindow::chooseModelToExport() {
   const QString name =
       QInputDialog::getItem(this, tr("Export Model"), tr("Model:"), names, 0, false, &ok);
   if (!ok) return;
-  const QString path = QFileDialog::getSaveFileName(this, tr("Export Model"), name + ".json",
-                                                    tr("Model files (*.json)"));
+  const QString path = QFileDialog::getSaveFileName(
+      this, tr("Export Model"), startPath(QStringLiteral("models"), name + QStringLiteral(".json")),
+      tr("Model files (*.json)"));
   if (path.isEmpty()) return;
+  rememberPath(QStringLiteral("models"), path);
   if (Status s = workspace_->exportModel(name.toStdString(), path.toStdString()); !s)
     return showError(QString::fromStdString(s.errorText()));
   showMessage(tr("Model '%1' written to %2").arg(name, path));
@@ -1140,9 +1179,23 @@ void MainWindow::choosePredictionModels() {
   if (models->empty())
     return showError(tr("The database has no model yet: Learn > Train and Sweep"));
   QStringList names;
-  for (const storage::ModelInfo& m : models.value())
-    names << QString::fromStdString(m.name);
+  QMap<QString, QStringList> coverage;
+  for (const storage::ModelInfo& m : models.value()) {
+    const QString name = QString::fromStdString(m.name);
+    names << name;
+    // The stored metrics hold one entry per group the model covers.
+    try {
+      const nlohmann::json metrics = nlohmann::json::parse(m.metricsJson);
+      for (const GroupInfo& g : kSensorGroups)
+        if (metrics.is_object() && metrics.contains(std::string(g.shortName)))
+          coverage[name] << QString::fromUtf8(g.shortName.data(),
+                                              static_cast<qsizetype>(g.shortName.size()));
+    } catch (const nlohmann::json::exception&) {
+      // Unreadable metrics: the name alone.
+    }
+  }
   ModelPickerDialog picker(names, predictions_->models(), this);
+  picker.setCoverage(coverage);
   if (picker.exec() != QDialog::Accepted) return;
   if (Status s = showPredictions(picker.choice()); !s)
     showError(QString::fromStdString(s.errorText()));
@@ -1184,9 +1237,10 @@ void MainWindow::jumpToDisagreement(bool forward) {
 
 void MainWindow::chooseModelToImport() {
   if (!workspace_) return showError(tr("Open a database first"));
-  const QString path =
-      QFileDialog::getOpenFileName(this, tr("Import Model"), QString(), tr("Model files (*.json)"));
+  const QString path = QFileDialog::getOpenFileName(
+      this, tr("Import Model"), startPath(QStringLiteral("models")), tr("Model files (*.json)"));
   if (path.isEmpty()) return;
+  rememberPath(QStringLiteral("models"), path);
   bool ok = false;
   const QString name =
       QInputDialog::getText(this, tr("Import Model"), tr("Store as:"), QLineEdit::Normal,

@@ -445,6 +445,27 @@ TEST(ModelFile, DecisionAndTransitionsAreValidated) {
   EXPECT_NE(r.errorText().find("transitions.log_matrix[0]"), std::string::npos) << r.errorText();
 }
 
+// A model whose group had no test rows: its report says "no test data" where the test count
+// and the rates stand, in every format, never 0, and prints no (empty) confusion matrix.
+TEST(ModelFile, ReportOfAnUnscoredModelSaysNoTestDataInEveryFormat) {
+  GroupModel model;
+  ASSERT_NO_FATAL_FAILURE(trainModel(model, ClassifierMethod::Gmm, CovarianceForm::NodalDiag));
+  model.evaluation.byDecision = {};  // trained, but no test rows
+  model.evaluation.oneVsRest.clear();
+  ASSERT_FALSE(model.evaluation.scored());
+  for (TableStyle style :
+       {TableStyle::Text, TableStyle::Markdown, TableStyle::Csv, TableStyle::Html}) {
+    const std::string report = modelReport(ModelBundle{{model}}, style);
+    std::size_t n = 0;
+    for (std::size_t at = report.find("no test data"); at != std::string::npos;
+         at = report.find("no test data", at + 1))
+      ++n;
+    // The test count, three decisions, and the class-rate row's accuracy and balanced accuracy.
+    EXPECT_EQ(n, 6u) << static_cast<int>(style) << "\n" << report;
+    EXPECT_EQ(report.find("confusion"), std::string::npos) << static_cast<int>(style);
+  }
+}
+
 // The chain's emission weight is written and read back; a file without it (written before it
 // existed) reads as 1 (the plain HMM); a weight that is not a finite number > 0 is an error.
 TEST(ModelFile, EmissionWeightRoundTripsAndIsValidated) {

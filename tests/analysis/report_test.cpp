@@ -311,7 +311,7 @@ TEST(ReportBest, TooFewTestStepsNeverDecide) {
   // The class-rate table marks the thin class and shows every count.
   const Table t = classRateTable({{"a", a.metrics}}, "rates");
   const auto& row = t.rows.front();
-  EXPECT_NE(std::find(row.begin(), row.end(), "100.0 (5) too few"), row.end());
+  EXPECT_NE(std::find(row.begin(), row.end(), "100.0 (only 5 test steps)"), row.end());
   EXPECT_NE(std::find(row.begin(), row.end(), "95.0 (100)"), row.end());
   const Table none = classRateTable({{"empty", Metrics{}}}, "rates");
   EXPECT_NE(std::find(none.rows[0].begin(), none.rows[0].end(), "no test data"),
@@ -349,6 +349,47 @@ TEST(ReportBest, ACellScoredOnNoTestRowsSaysNoTestDataInEveryFormat) {
   }
   const nlohmann::json cell = sweepCellToJson(unscored);
   EXPECT_TRUE(cell["balanced_accuracy"].is_null());
+}
+
+// Guards the unscored group reading "0.0" anywhere: every format says "no test data" in the same
+// places (best cell: balanced, accuracy, macro-F1; the cell table: the same three; the class-rate
+// table: accuracy and balanced), draws no empty confusion matrix for the unscored cell, and the
+// JSON flags the cell as not scored with null rates.
+TEST(ReportBest, NoTestDataReadsTheSameInEveryFormatAndNeverAsZero) {
+  SweepResult s = handSweep();
+  s.cells.push_back(cellWith(SensorGroup::Right, 2, 0.1, 0.05, {}));
+  const std::size_t unscored = s.cells.size() - 1;
+  auto count = [](const std::string& text, const std::string& what) {
+    std::size_t n = 0;
+    for (std::size_t at = text.find(what); at != std::string::npos; at = text.find(what, at + 1))
+      ++n;
+    return n;
+  };
+  for (TableStyle style :
+       {TableStyle::Text, TableStyle::Markdown, TableStyle::Csv, TableStyle::Html}) {
+    const std::string report = sweepReport(s, style);
+    EXPECT_EQ(count(report, "no test data"), 8u) << "format " << static_cast<int>(style);
+    EXPECT_EQ(report.find("Cell " + std::to_string(unscored) + ":"), std::string::npos)
+        << "an empty confusion matrix for the unscored cell, format " << static_cast<int>(style);
+    EXPECT_EQ(report.find("Group R, gmm nodal-diag order 2 variance floor 0.1, seed 1: confusion"),
+              std::string::npos)
+        << "best-cell details for the unscored group, format " << static_cast<int>(style);
+  }
+  // The unscored row of each table: no rate cell holds a number.
+  const Table cells = sweepCellsTable(s);
+  for (std::size_t column : {13u, 14u, 15u})
+    EXPECT_EQ(cells.rows.back()[column], "no test data") << cells.header[column];
+  const Table best = bestCellsTable(s);
+  ASSERT_FALSE(best.rows.empty());
+  EXPECT_EQ(best.rows.back()[0], "R");
+  for (std::size_t column : {7u, 8u, 9u})
+    EXPECT_EQ(best.rows.back()[column], "no test data") << best.header[column];
+  const nlohmann::json cell = sweepCellToJson(s.cells.back());
+  EXPECT_FALSE(cell.at("scored").get<bool>());
+  EXPECT_TRUE(cell.at("accuracy").is_null());
+  EXPECT_TRUE(cell.at("balanced_accuracy").is_null());
+  EXPECT_TRUE(cell.at("macro_f1").is_null());
+  EXPECT_TRUE(sweepCellToJson(s.cells.front()).at("scored").get<bool>());
 }
 
 TEST(ReportBest, OneRuleForTheBestCellOfEachGroup) {

@@ -51,7 +51,7 @@ PY
 "$T" train --runs "$W/train/run_0000.csv" "$W/train/run_0001.csv" --groups R --out "$W/m.json" \
   >/dev/null 2>&1 || fail "train failed"
 "$T" navigate --benchmark 2 --model "$W/m.json" --threads 2 --out-dir "$W/bench" --json --quiet \
-  >"$W/bench.json" || fail "navigate --benchmark failed"
+  >"$W/bench.json" 2>"$W/bench.err" || fail "navigate --benchmark failed"
 python3 - "$W/bench.json" "$W/bench" <<'PY' || fail "benchmark JSON"
 import json, os, sys
 j = json.load(open(sys.argv[1]))
@@ -72,12 +72,18 @@ for source in ("model", "truth", "bumper"):
         assert rows == r["steps"], (f, rows, r["steps"])
 PY
 
+# A model without some groups (this one has R alone) is named before the run, on stderr.
+"$T" navigate --scene chapter5 --status model --model "$W/m.json" --seeds 1 --max-steps 20 \
+  --out-dir "$W/partial" --quiet >/dev/null 2>"$W/partial.err" || fail "partial model run failed"
+grep -q "^tactile: warning: model .*m.json has no model for F, FLC, L, RLC, B, RRC, FRC:" \
+  "$W/partial.err" || fail "no warning of the missing groups: $(cat "$W/partial.err")"
+
 # Seed 0 is the scene's own start, where the benchmark starts a map: with the map's budget the
 # run is the benchmark's, for every source (so a benchmark map can be driven again and watched).
 for source in model truth bumper; do
   budget=$(python3 -c "import json,sys; r=json.load(open(sys.argv[1]))['$source']['map_runs'][1]; print(r['budget'])" "$W/bench.json")
   "$T" navigate --scene random:office:900002 --status "$source" --model "$W/m.json" --seeds 0 \
-    --max-steps "$budget" --out-dir "$W/again" --json --quiet >"$W/again.json" ||
+    --max-steps "$budget" --out-dir "$W/again" --json --quiet >"$W/again.json" 2>"$W/again.err" ||
     fail "navigate --seeds 0 ($source) failed"
   # Every line but the seed's (0 here, the map's seed there).
   grep -v '^# seed:' "$W/again/navigate_${source}_0000.csv" >"$W/again.csv"

@@ -1,11 +1,20 @@
 // The workbench's models and undo commands without any widget: the run session's cursor and
 // selection, label edits written to the database at once, and undo/redo restoring exactly what
 // an edit replaced.
+#include <QDir>
 #include <QFile>
+#include <QFileInfo>
+#include <QSettings>
 #include <QSignalSpy>
+#include <QTemporaryDir>
 #include <QUndoStack>
 #include <QtTest>
 
+#include <cmath>
+
+#include "app/gui/common/file_dialog_memory.h"
+#include "app/gui/common/plot_style.h"
+#include "app/gui/common/shortcuts.h"
 #include "app/gui/labels/label_model.h"
 #include "app/gui/runs/run_list_model.h"
 #include "app/gui/runs/run_session_model.h"
@@ -43,6 +52,17 @@ bool openWithNewSet(GuiFixture& fx, RunSession& session, LabelModel& labels, con
   return true;
 }
 
+// CIE L* (D65) of an sRGB colour: the lightness a reader sees.
+double lightness(const QColor& c) {
+  auto linear = [](double v) {
+    v /= 255.0;
+    return v <= 0.04045 ? v / 12.92 : std::pow((v + 0.055) / 1.055, 2.4);
+  };
+  const double y =
+      0.2126 * linear(c.red()) + 0.7152 * linear(c.green()) + 0.0722 * linear(c.blue());
+  return y > 216.0 / 24389.0 ? 116.0 * std::cbrt(y) - 16.0 : y * 24389.0 / 27.0;
+}
+
 }  // namespace
 
 class GuiCoreTest : public QObject {
@@ -50,6 +70,58 @@ class GuiCoreTest : public QObject {
 
  private slots:
   void initTestCase() { QLocale::setDefault(QLocale::c()); }
+
+  // File dialogs start where the last one of their kind ended (they once started in the current
+  // directory), each kind on its own; before any choice, in the home folder.
+  void fileDialogsRememberTheirFolder() {
+    QTemporaryDir settingsDir, a, b;
+    QSettings::setPath(QSettings::IniFormat, QSettings::UserScope, settingsDir.path());
+    QSettings::setDefaultFormat(QSettings::IniFormat);
+    QCOMPARE(tactile::gui::startPath(QStringLiteral("models")), QDir::homePath());
+    tactile::gui::rememberPath(QStringLiteral("models"), a.filePath(QStringLiteral("m.json")));
+    tactile::gui::rememberPath(QStringLiteral("reports"), b.path());
+    QCOMPARE(tactile::gui::startPath(QStringLiteral("models"), QStringLiteral("x.json")),
+             QDir(a.path()).filePath(QStringLiteral("x.json")));
+    QCOMPARE(tactile::gui::startPath(QStringLiteral("reports")),
+             QFileInfo(b.path()).absoluteFilePath());
+    tactile::gui::rememberPath(QStringLiteral("models"), QString());  // a cancelled dialog
+    QCOMPARE(tactile::gui::startPath(QStringLiteral("models")), a.path());
+  }
+
+  // Guards "F14" (a key of old Sun keyboards that X11 lists for Undo) in the key list.
+  void keyListHasNoKeysPastF12() {
+    for (const tactile::gui::ShortcutEntry& e : tactile::gui::shortcutTable())
+      for (const QKeySequence& k : e.keys) {
+        const int code = k[0].key();
+        QVERIFY2(code < Qt::Key_F13 || code > Qt::Key_F35, qPrintable(k.toString()));
+      }
+    QVERIFY(tactile::gui::shortcutTableHtml().contains(QStringLiteral("nowrap")));
+  }
+
+  // Guards the rainbow map whose lightness rose and fell (the maximum as dark as 0.6): normal
+  // force's scale gets lighter all the way; shear's is neutral at zero and equally light at +-v.
+  void valueScalesAreHonest() {
+    double previous = -1.0;
+    for (int i = 0; i <= 100; ++i) {
+      const double l = lightness(tactile::gui::valueColor(i * 0.05, 5.0));
+      QVERIFY2(l > previous, qPrintable(QStringLiteral("L* %1 at %2").arg(l).arg(i * 0.05)));
+      previous = l;
+    }
+    QVERIFY(lightness(tactile::gui::valueColor(5.0, 5.0)) -
+                lightness(tactile::gui::valueColor(0.0, 5.0)) >
+            60.0);
+    const QColor zero = tactile::gui::signedValueColor(0.0, 5.0);
+    QVERIFY(std::abs(zero.red() - zero.green()) <= 2 && std::abs(zero.green() - zero.blue()) <= 2);
+    QVERIFY(lightness(zero) > 90.0);
+    for (double v : {1.0, 2.5, 5.0}) {
+      const QColor below = tactile::gui::signedValueColor(-v, 5.0);
+      const QColor above = tactile::gui::signedValueColor(v, 5.0);
+      QVERIFY(below.blue() > below.red());
+      QVERIFY(above.red() > above.blue());
+      QVERIFY(std::abs(lightness(below) - lightness(above)) < 6.0);
+      QVERIFY(lightness(above) < lightness(zero));
+    }
+  }
 
   void sessionOpensTrackSceneAndClampsTheCursor() {
     GuiFixture fx(300);

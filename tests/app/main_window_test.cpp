@@ -15,13 +15,19 @@
 #include <QProcess>
 #include <QRadioButton>
 #include <QRegularExpression>
+#include <QScreen>
 #include <QSettings>
 #include <QSignalSpy>
 #include <QSlider>
 #include <QSpinBox>
+#include <QStatusBar>
 #include <QTableView>
 #include <QTemporaryDir>
+#include <QTextBlock>
 #include <QTextBrowser>
+#include <QTextFragment>
+#include <QTextImageFormat>
+#include <QToolButton>
 #include <QUndoStack>
 #include <QtTest>
 
@@ -36,6 +42,7 @@
 #include "app/gui/runs/run_list_view.h"
 #include "app/gui/runs/run_session_model.h"
 #include "app/gui/runs/timeline_view.h"
+#include "app/gui/user_guide_window.h"
 #include "run/run_csv.h"
 #include "tests/app/gui_fixture.h"
 
@@ -48,6 +55,7 @@
 using tactile::ContactClass;
 using tactile::SensorGroup;
 using tactile::gui::MainWindow;
+using tactile::gui::UserGuideWindow;
 using tactile::gui::testing::GuiFixture;
 
 namespace {
@@ -216,9 +224,14 @@ class MainWindowTest : public QObject {
     QTest::keyClick(t, Qt::Key_Z, Qt::ControlModifier);
     QCOMPARE(storedSegments(fx, "annotator", SensorGroup::Left, ContactClass::Wall),
              std::size_t{0});
+    // Undo and redo say what they did (they once said nothing).
+    QVERIFY2(window.statusBar()->currentMessage().startsWith(QStringLiteral("Undone: Label steps")),
+             qPrintable(window.statusBar()->currentMessage()));
     QTest::keyClick(t, Qt::Key_Z, Qt::ControlModifier | Qt::ShiftModifier);
     QCOMPARE(storedSegments(fx, "annotator", SensorGroup::Left, ContactClass::Wall),
              std::size_t{1});
+    QVERIFY2(window.statusBar()->currentMessage().startsWith(QStringLiteral("Redone: Label steps")),
+             qPrintable(window.statusBar()->currentMessage()));
     // Checked groups: one key press labels both, one undo takes both back.
     window.labelPanel()->setGroupsMode(tactile::gui::LabelPanelView::GroupsMode::Checked);
     window.labelPanel()->setGroupChecked(SensorGroup::Right, true);
@@ -278,8 +291,11 @@ class MainWindowTest : public QObject {
     QVERIFY(again.openDatabase(QString::fromStdString(fx.dbPath)).ok());
     again.show();
     QVERIFY(QTest::qWaitForWindowExposed(&again));
-    QCOMPARE(again.size(), left);
-    QCOMPARE(again.size().width(), 1111);
+    // As it was left, within the screen (a restored geometry never comes back taller or wider
+    // than the screen it lands on).
+    const QSize screen = again.screen()->availableGeometry().size();
+    QCOMPARE(again.size(), left.boundedTo(screen));
+    QCOMPARE(again.size().width(), std::min(1111, screen.width()));
     QCOMPARE(again.session()->info().name, fx.runName);
     QCOMPARE(again.session()->currentStep(), 321);
     QCOMPARE(again.labels()->setName(), std::string("kept"));
@@ -645,6 +661,60 @@ class MainWindowTest : public QObject {
       QVERIFY2(!QImage(path).isNull(), qPrintable(path));
     }
     QVERIFY(pictures >= 3);
+  }
+
+  // Guards the guide's links that opened a blank page ("No document for qrc:/guide/...") with no
+  // way back, and its pictures cut off at the viewer's edge: every link of the guide names an
+  // embedded page or picture, a page link opens that page, Back and Forward walk the history, and
+  // no picture is drawn wider than the viewer.
+  void userGuideLinksResolveAndBackReturns() {
+    UserGuideWindow guide;
+    guide.resize(980, 700);
+    guide.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&guide));
+    QFile file(QStringLiteral(":/guide/user-guide.md"));
+    QVERIFY(file.open(QIODevice::ReadOnly));
+    const QString markdown = QString::fromUtf8(file.readAll());
+    static const QRegularExpression link(QStringLiteral("\\]\\(([^)\\s]+)\\)"));
+    const QUrl base(UserGuideWindow::guideUrl());
+    QStringList pages;
+    int links = 0;
+    for (auto it = link.globalMatch(markdown); it.hasNext(); ++links) {
+      const QUrl target(it.next().captured(1));
+      if (!target.isRelative()) continue;  // web addresses open outside
+      QVERIFY2(!UserGuideWindow::embeddedTarget(base, target).isEmpty(),
+               qPrintable(target.toString()));
+      if (target.path().endsWith(QStringLiteral(".md"))) pages << target.toString();
+    }
+    QVERIFY(links >= 10);
+    QVERIFY(pages.size() >= 3);
+    QVERIFY(!guide.backButton()->isEnabled());
+    for (const QString& page : pages) {
+      guide.follow(QUrl(page));
+      QCOMPARE(guide.browser()->source().fileName(), QUrl(page).fileName());
+      QVERIFY2(guide.browser()->toPlainText().size() > 200, qPrintable(page));
+      QVERIFY(guide.backButton()->isEnabled());
+      QTest::mouseClick(guide.backButton(), Qt::LeftButton);
+      QCOMPARE(guide.browser()->source(), base);
+      QVERIFY(guide.forwardButton()->isEnabled());
+      QTest::mouseClick(guide.forwardButton(), Qt::LeftButton);
+      QCOMPARE(guide.browser()->source().fileName(), QUrl(page).fileName());
+      QTest::mouseClick(guide.backButton(), Qt::LeftButton);
+    }
+    // Pictures: none wider than the viewer.
+    const int viewer = guide.browser()->viewport()->width();
+    int images = 0;
+    for (QTextBlock b = guide.browser()->document()->begin(); b.isValid(); b = b.next()) {
+      for (auto it = b.begin(); !it.atEnd(); ++it) {
+        if (!it.fragment().charFormat().isImageFormat()) continue;
+        ++images;
+        const QTextImageFormat f = it.fragment().charFormat().toImageFormat();
+        QVERIFY2(
+            f.width() > 0 && f.width() <= viewer,
+            qPrintable(QStringLiteral("%1: %2 > %3").arg(f.name()).arg(f.width()).arg(viewer)));
+      }
+    }
+    QVERIFY(images >= 3);
   }
 
   // The annotator's name from the preferences is stored on every segment and exported.

@@ -3,6 +3,9 @@
 // N walks them (wrapping), holes match the side scan, and the timeline, route and main window show
 // them.
 #include <QComboBox>
+#include <QScreen>
+#include <QScrollArea>
+#include <QScrollBar>
 #include <QSettings>
 #include <QSignalSpy>
 #include <QTemporaryDir>
@@ -14,6 +17,7 @@
 
 #include "analysis/classify_run.h"
 #include "analysis/hole_detection.h"
+#include "app/gui/common/window_geometry.h"
 #include "app/gui/labels/label_model.h"
 #include "app/gui/learning/model_picker_dialog.h"
 #include "app/gui/learning/prediction_model.h"
@@ -93,6 +97,7 @@ class PredictionTest : public QObject {
   void timelineAndRouteShowPredictions();
   void mainWindowShowsAModelAndKeyNJumps();
   void pickerChoosesOneOrPerGroup();
+  void windowFitsASmallScreenWithPredictionsOn();
 };
 
 void PredictionTest::posteriorsAreProbabilitiesInLogSpace() {
@@ -394,6 +399,70 @@ void PredictionTest::pickerChoosesOneOrPerGroup() {
   perGroup.setPerGroup(false);
   perGroup.allGroupsBox()->setCurrentIndex(perGroup.allGroupsBox()->findData(QStringLiteral("b")));
   QCOMPARE(perGroup.choice(), PredictionModel::sameForAll(QStringLiteral("b")));
+  // Each model says which groups it covers; the choice is still the model's name.
+  QStringList all;
+  for (const GroupInfo& g : kSensorGroups)
+    all << QString::fromUtf8(g.shortName.data(), static_cast<qsizetype>(g.shortName.size()));
+  perGroup.setCoverage({{QStringLiteral("a"), all},
+                        {QStringLiteral("b"), {QStringLiteral("F"), QStringLiteral("L")}}});
+  QComboBox* box = perGroup.allGroupsBox();
+  QCOMPARE(box->itemText(box->findData(QStringLiteral("a"))), QStringLiteral("a (all groups)"));
+  QCOMPARE(box->itemText(box->findData(QStringLiteral("b"))), QStringLiteral("b (F, L only)"));
+  QCOMPARE(perGroup.choice(), PredictionModel::sameForAll(QStringLiteral("b")));
+}
+
+// Guards the window that grew taller than the screen (1103 px on a 1000 px screen) with predictions
+// on: on a 1366x768 laptop screen (minus a title bar and a panel) the main window never asks for
+// more, the timeline rows scroll instead, Hide Predictions gives the rows back, and a saved
+// geometry larger than the screen comes back within it.
+void PredictionTest::windowFitsASmallScreenWithPredictionsOn() {
+  Predicted p;
+  QTemporaryDir settingsDir;
+  QSettings::setPath(QSettings::IniFormat, QSettings::UserScope, settingsDir.path());
+  QSettings::setDefaultFormat(QSettings::IniFormat);
+  gui::MainWindow window;
+  QVERIFY(window.openDatabase(QString::fromStdString(p.fx.dbPath)).ok());
+  QVERIFY(window.openRun(QString::fromStdString(p.fx.runName)).ok());
+  window.resize(1366, 700);
+  window.show();
+  QVERIFY(QTest::qWaitForWindowExposed(&window));
+  auto* timeline = window.findChild<gui::TimelineView*>();
+  QVERIFY(timeline != nullptr);
+  auto* scroll = timeline->findChild<QScrollArea*>(QStringLiteral("timelineScroll"));
+  QVERIFY(scroll != nullptr);
+  const int plotHeightBefore = scroll->widget()->minimumHeight();
+  QVERIFY(window.showPredictions(QString::fromStdString(p.model)).ok());
+  window.waitForPredictions();
+  settle();
+  QVERIFY(window.predictions()->hasPredictions());
+  constexpr int kScreenHeight = 768 - 30 - 40;  // a 1366x768 screen less a panel and a title bar
+  QVERIFY2(window.minimumSizeHint().height() <= kScreenHeight,
+           qPrintable(QString::number(window.minimumSizeHint().height())));
+  QVERIFY(window.minimumSizeHint().width() <= 1366);
+  QVERIFY2(window.height() <= 700, qPrintable(QString::number(window.height())));
+  // The rows need more height than there is: they are all there, and scroll.
+  const int plotHeight = scroll->widget()->minimumHeight();
+  QVERIFY(plotHeight > plotHeightBefore);
+  QVERIFY(plotHeight > scroll->viewport()->height());
+  QVERIFY(scroll->verticalScrollBar()->maximum() > 0);
+  // Hide Predictions: the rows and the height they asked for go at once.
+  window.predictions()->clear();
+  settle();
+  QCOMPARE(scroll->widget()->minimumHeight(), plotHeightBefore);
+
+  // A geometry saved on a taller screen comes back within this one.
+  QWidget tall;
+  tall.resize(1400, 4000);
+  tall.move(-50, -50);
+  const QByteArray saved = tall.saveGeometry();
+  QWidget restored;
+  gui::restoreGeometryWithinScreen(&restored, saved);
+  const QRect available = restored.screen()->availableGeometry();
+  QVERIFY2(available.contains(restored.geometry()), qPrintable(QStringLiteral("%1,%2 %3x%4")
+                                                                   .arg(restored.x())
+                                                                   .arg(restored.y())
+                                                                   .arg(restored.width())
+                                                                   .arg(restored.height())));
 }
 
 QTEST_MAIN(PredictionTest)

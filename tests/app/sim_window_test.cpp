@@ -12,6 +12,7 @@
 #include <QPushButton>
 #include <QSignalSpy>
 #include <QSpinBox>
+#include <QStatusBar>
 #include <QTemporaryDir>
 #include <QtTest>
 
@@ -113,6 +114,30 @@ class SimWindowTest : public QObject {
 
  private slots:
   void initTestCase() { QLocale::setDefault(QLocale::c()); }
+
+  // Guards Data >> making the window 1182 px tall: with the data panel open the window asks for
+  // no more than a 1366x768 screen has, and the buttons stay where they were when the state text
+  // changes.
+  void dataPanelFitsASmallScreenAndButtonsStayPut() {
+    QTemporaryDir dir;
+    SimWindow window(dir.filePath(QStringLiteral("d.db")));
+    window.setStepsPerSecond(1);
+    window.resize(1366, 700);
+    window.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&window));
+    QVERIFY(window.startRun().ok());
+    window.setDataPanelShown(true);
+    QTest::qWait(20);
+    QVERIFY2(window.minimumSizeHint().height() <= 768 - 70,
+             qPrintable(QString::number(window.minimumSizeHint().height())));
+    auto* giveUp = window.findChild<QPushButton*>(QStringLiteral("giveUpButton"));
+    auto* state = window.findChild<QLabel*>(QStringLiteral("stateLabel"));
+    QVERIFY(giveUp != nullptr && state != nullptr);
+    const QPoint before = giveUp->mapTo(&window, QPoint(0, 0));
+    state->setText(QStringLiteral("one\ntwo\nthree\nfour\nfive\nsix"));
+    QTest::qWait(20);
+    QCOMPARE(giveUp->mapTo(&window, QPoint(0, 0)), before);
+  }
 
   void keysGiveTheDocumentedCommands() {
     QTemporaryDir dir;
@@ -244,7 +269,12 @@ class SimWindowTest : public QObject {
       window.setMode(SimMode::Experiment);
       window.setScene(QStringLiteral("room1"));
       QVERIFY(!window.startRun().ok());  // no subject yet
+      // The red line about the missing name goes once a name is typed (it once stayed).
+      auto* error = window.findChild<QLabel*>(QStringLiteral("simError"));
+      QVERIFY(error != nullptr);
+      QVERIFY(!error->isHidden());
       window.setSubject(QStringLiteral("Ada Lovelace"));
+      QVERIFY(error->isHidden());
       window.setSeed(5);
       window.setTimeLimitSeconds(120);
       QVERIFY(window.startRun().ok());
@@ -561,6 +591,14 @@ class SimWindowTest : public QObject {
                                       static_cast<std::size_t>(kLimitSeconds / 0.1 + 0.5));
     QVERIFY(reference.ok());
     QCOMPARE(*s->outcome(), reference->outcome);
+    // How the run ended is shown large beside the buttons, and in the status bar.
+    auto* outcome = window.findChild<QLabel*>(QStringLiteral("outcomeLabel"));
+    QVERIFY(outcome != nullptr && !outcome->isHidden());
+    QVERIFY(!outcome->text().isEmpty());
+    if (reference->outcome == RunOutcome::Success)
+      QVERIFY2(outcome->text().startsWith(QStringLiteral("Goal reached")),
+               qPrintable(outcome->text()));
+    QCOMPARE(window.statusBar()->currentMessage(), outcome->text());
     QCOMPARE(run->stepCount(), reference->run.stepCount());
     QVERIFY(test_support::bitEqual(reference->run.x, run->x));
     QVERIFY(reference->run.extraValues == run->extraValues);

@@ -106,6 +106,7 @@ class SweepResultsViewTest : public QObject {
   Q_OBJECT
 
  private slots:
+  void timeAxisLabelsEveryDecadeInMsWithoutCollisions();
   void tableHasEveryCellSortedByBalancedAccuracy();
   void selectedCellShowsItsConfusion();
   void classRatesAreTheCoreTables();
@@ -357,6 +358,30 @@ void SweepResultsViewTest::plotsZoomHoverAndKeepTickLabelsApart() {
   QVERIFY2(tip.contains(QStringLiteral("cell 3")) && tip.contains(QStringLiteral("80.0")),
            qPrintable(tip));
   QVERIFY(plot.tipAt(QPoint(2, 2)).isEmpty());
+  // Guards the hover that reported where a point was drawn (0.03073) instead of its value
+  // (0.03): two series at the same floors are drawn apart, and each tells the floor itself.
+  {
+    analysis::RateSeries a = s, b = s;
+    a.x = b.x = {0.01, 0.03, 0.1};
+    a.mean = a.min = a.max = {50, 60, 70};
+    b.mean = b.min = b.max = {20, 30, 40};
+    a.cells = {0, 1, 2};
+    b.cells = {3, 4, 5};
+    b.label = "F gmm nodal-diag order 2";
+    SweepPlot two;
+    two.resize(520, 320);
+    two.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&two));
+    two.showRates({a, b}, analysis::SweptVariable::Floor);
+    two.plot()->replot();
+    auto* graph = two.plot()->graph(0);
+    const double drawnAt = (graph->data()->constBegin() + 1)->key;
+    QVERIFY(drawnAt != 0.03);  // drawn a little beside the value
+    const QPoint at(qRound(two.plot()->xAxis->coordToPixel(drawnAt)),
+                    qRound(two.plot()->yAxis->coordToPixel(60)));
+    const QString hover = two.tipAt(two.plot()->mapTo(&two, at));
+    QVERIFY2(hover.contains(QStringLiteral("Variance floor: 0.03\n")), qPrintable(hover));
+  }
   // The wheel zooms, a double click shows it all again.
   QVERIFY(plot.plot()->interactions().testFlag(QCP::iRangeZoom));
   QVERIFY(plot.plot()->interactions().testFlag(QCP::iRangeDrag));
@@ -386,7 +411,8 @@ void SweepResultsViewTest::figuresDrawTheCoreSeriesAndFront() {
   QCOMPARE(view.rateOrderPlot()->plot()->xAxis->scaleType(), QCPAxis::stLogarithmic);
   QCOMPARE(view.rateFloorPlot()->plot()->xAxis->label(), QStringLiteral("Variance floor"));
   QCOMPARE(view.rateOrderPlot()->plot()->xAxis->label(), QStringLiteral("Model order"));
-  QCOMPARE(view.rateFloorPlot()->plot()->yAxis->label(), QStringLiteral("Recall per class (%)"));
+  QCOMPARE(view.rateFloorPlot()->plot()->yAxis->label(),
+           QStringLiteral("Correct rate per class (%)"));
   QVERIFY(view.rateFloorPlot()->plot()->legend->visible());
   // Every series has its error bars (min..max about the mean).
   int bars = 0;
@@ -579,6 +605,58 @@ void SweepResultsViewTest::emptyAndCancelledSweeps() {
   cancelled.cancelled = false;
   view.setSweep(4, cancelled);
   QVERIFY(!view.title()->text().contains(QStringLiteral("cancelled")));
+}
+
+// Guards the time axis whose labels ran together ("0.000750.001") and left the lower decades
+// bare, and the black FRC points that read as the Pareto front's rings: a tick at every decade
+// in view, labelled in ms below a second, no two labels touching; FRC's points are not black.
+void SweepResultsViewTest::timeAxisLabelsEveryDecadeInMsWithoutCollisions() {
+  analysis::SweepResult sweep;
+  const double seconds[] = {0.00028, 0.0031, 0.042, 0.5};
+  for (int i = 0; i < 4; ++i) {
+    analysis::SweepCellResult r;
+    r.cell.group = i < 2 ? SensorGroup::FrontRightCorner : SensorGroup::Front;
+    r.ok = true;
+    r.fitSeconds = seconds[i];
+    r.confusion.add(ContactClass::Wall, ContactClass::Wall, 10 + i);
+    r.confusion.add(ContactClass::Corner, ContactClass::Wall, 3);
+    r.confusion.add(ContactClass::Corner, ContactClass::Corner, 5);
+    r.metrics = analysis::computeMetrics(r.confusion);
+    sweep.cells.push_back(r);
+  }
+  SweepPlot plot;
+  plot.resize(620, 360);
+  plot.show();
+  QVERIFY(QTest::qWaitForWindowExposed(&plot));
+  plot.showTimeError(sweep, std::nullopt);
+  plot.plot()->replot();
+  QCPAxis* x = plot.plot()->xAxis;
+  const QVector<double> ticks = x->tickVector();
+  const QVector<QString> labels = x->tickVectorLabels();
+  QStringList shown(labels.begin(), labels.end());
+  for (const char* decade : {"0.1 ms", "1 ms", "10 ms", "100 ms"})
+    QVERIFY2(shown.contains(QString::fromLatin1(decade)), qPrintable(shown.join(QLatin1Char('|'))));
+  const QFontMetrics metrics(x->tickLabelFont());
+  for (qsizetype i = 1; i < ticks.size(); ++i) {
+    const double gap = x->coordToPixel(ticks[i]) - x->coordToPixel(ticks[i - 1]);
+    const double needed =
+        (metrics.horizontalAdvance(labels[i]) + metrics.horizontalAdvance(labels[i - 1])) / 2.0;
+    QVERIFY2(gap >= needed, qPrintable(labels[i - 1] + QStringLiteral(" / ") + labels[i]));
+  }
+  bool sawFrc = false;
+  for (int g = 0; g < plot.plot()->graphCount(); ++g) {
+    QCPGraph* graph = plot.plot()->graph(g);
+    if (!graph->name().contains(QStringLiteral("FRC"))) continue;
+    sawFrc = true;
+    QVERIFY(graph->scatterStyle().brush().color() != QColor(Qt::black));
+  }
+  QVERIFY(sawFrc);
+  // A hover on a point reads its time in ms.
+  const QPoint at(qRound(x->coordToPixel(0.00028)),
+                  qRound(plot.plot()->yAxis->coordToPixel(
+                      100.0 - 100.0 * sweep.cells[0].metrics.balancedAccuracy)));
+  QVERIFY2(plot.tipAt(plot.plot()->mapTo(&plot, at)).contains(QStringLiteral("0.28 ms")),
+           qPrintable(plot.tipAt(plot.plot()->mapTo(&plot, at))));
 }
 
 QTEST_MAIN(SweepResultsViewTest)

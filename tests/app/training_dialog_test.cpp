@@ -1,17 +1,21 @@
 // The train-and-sweep dialog: a sweep started from it runs off the GUI thread with progress and a
 // time estimate, streams its cells into the sortable table, can be cancelled keeping its finished
 // cells, and stores exactly the numbers `tactile sweep` stores for the same request.
+#include <QAction>
 #include <QCheckBox>
 #include <QComboBox>
 #include <QDoubleSpinBox>
 #include <QFile>
 #include <QFileInfo>
+#include <QHeaderView>
 #include <QLabel>
 #include <QLineEdit>
 #include <QProcess>
 #include <QProgressBar>
 #include <QPushButton>
+#include <QSettings>
 #include <QSignalSpy>
+#include <QSpinBox>
 #include <QTableView>
 #include <QTableWidget>
 #include <QTemporaryDir>
@@ -19,6 +23,7 @@
 
 #include <memory>
 
+#include "analysis/model_file.h"
 #include "app/gui/learning/sweep_cells_model.h"
 #include "app/gui/learning/sweep_results_view.h"
 #include "app/gui/learning/sweep_results_window.h"
@@ -90,6 +95,13 @@ class TrainingDialogTest : public QObject {
   Q_OBJECT
 
  private slots:
+  // Each test starts with no remembered form (the dialog remembers its last label set and grid).
+  void init() {
+    settingsDir_ = std::make_unique<QTemporaryDir>();
+    QSettings::setPath(QSettings::IniFormat, QSettings::UserScope, settingsDir_->path());
+    QSettings::setDefaultFormat(QSettings::IniFormat);
+    QSettings().clear();
+  }
   void defaultSplitHoldsOutEveryFourthRun();
   void splitOffersTheCommandLinesSplitsWithItsDefault();
   void sweepShowsProgressAndStreamsSortedCells();
@@ -100,6 +112,13 @@ class TrainingDialogTest : public QObject {
   void trainWithGroupDefaultsUsesEachGroupsOwn();
   void evidenceWeightIsEachGroupsDefaultUnlessSet();
   void resultsWindowExportsReportAndCellModel();
+  void dialogRemembersLabelSetAndGrid();
+  void resultsTableHasRoomForEightGroups();
+  void planNamesGroupsTheTestRunsCannotScore();
+  void planEstimatesFromEachCellsOwnCost();
+
+ private:
+  std::unique_ptr<QTemporaryDir> settingsDir_;
 };
 
 void TrainingDialogTest::defaultSplitHoldsOutEveryFourthRun() {
@@ -456,21 +475,147 @@ void TrainingDialogTest::resultsWindowExportsReportAndCellModel() {
   QVERIFY(a.open(QIODevice::ReadOnly) && b.open(QIODevice::ReadOnly));
   QCOMPARE(a.readAll(), b.readAll());
 
-  // The selected cell's model, stored and written to a file; it scores as the cell did.
+  // Store stores: the selected cell's model under the typed name, which the title then names; it
+  // scores as the cell did.
   const int cell = window.view()->selectedCell();
   QVERIFY(cell >= 0);
   QSignalSpy modelStored(&window, &gui::SweepResultsWindow::modelStored);
-  const QString file = dir.filePath(QStringLiteral("cell.json"));
-  QVERIFY(window.trainSelectedCell(QStringLiteral("best cell"), file));
+  QVERIFY(window.trainSelectedCell(QStringLiteral("best cell")));
   QVERIFY(modelStored.wait(60000));
   QCOMPARE(modelStored.first().at(0).toString(), QStringLiteral("best cell"));
-  QVERIFY(QFileInfo::exists(file));
   auto model = f.workspace->modelStore().info("best cell");
   QVERIFY(model.ok());
   const nlohmann::json metrics = nlohmann::json::parse(model->metricsJson);
   const analysis::SweepCellResult& chosen = window.sweep().cells[static_cast<std::size_t>(cell)];
   const std::string group(groupInfo(chosen.cell.group).shortName);
   QVERIFY2(metrics.contains(group), model->metricsJson.c_str());
+  auto* title = window.view()->findChild<QLabel*>(QStringLiteral("sweepTitle"));
+  QVERIFY(title != nullptr);
+  QVERIFY2(title->text().contains(QStringLiteral("best cell")), qPrintable(title->text()));
+  QVERIFY(!title->text().contains(QStringLiteral("no model")));
+
+  // Export exports (guards the export that also stored a model under a sentence-long name): the
+  // file is written and read back, and no model is added to the database.
+  auto before = f.workspace->models();
+  QVERIFY(before.ok());
+  QSignalSpy done(window.worker(), &gui::SweepWorker::finished);
+  const QString file = dir.filePath(QStringLiteral("cell.json"));
+  QVERIFY(window.trainSelectedCell(QString(), file));
+  QVERIFY(done.wait(60000));
+  QTest::qWait(10);
+  QVERIFY(QFileInfo::exists(file));
+  QVERIFY(analysis::readModelFile(file.toStdString()).ok());
+  auto after = f.workspace->models();
+  QVERIFY(after.ok());
+  QCOMPARE(after->size(), before->size());
+  QCOMPARE(modelStored.size(), 1);
+  // Close (Ctrl+W) closes the window.
+  auto* close = window.findChild<QAction*>(QStringLiteral("closeResults"));
+  QVERIFY(close != nullptr);
+  QCOMPARE(close->shortcut(), QKeySequence(Qt::CTRL | Qt::Key_W));
+  window.show();
+  QVERIFY(QTest::qWaitForWindowExposed(&window));
+  close->trigger();
+  QVERIFY(!window.isVisible());
+}
+
+// Guards the dialog that forgot its label set and grid between openings: closing remembers them
+// (QSettings) and the next dialog opens with them.
+void TrainingDialogTest::dialogRemembersLabelSetAndGrid() {
+  LearningFixture f;
+  QVERIFY(f.workspace->labelStore().create("other").ok());
+  {
+    TrainingDialog dialog(*f.workspace, QString::fromStdString(f.dbPath));
+    auto* orders = dialog.findChild<QLineEdit*>(QStringLiteral("orders"));
+    QVERIFY(orders != nullptr);
+    QVERIFY(orders->text() != QStringLiteral("3, 5"));
+    dialog.setLabelSet(QStringLiteral("other"));
+    dialog.setGrid(QStringLiteral("3, 5"), QStringLiteral("0.2"), QStringLiteral("7"));
+    dialog.setFormsChecked({analysis::CovarianceForm::GrandDiag});
+    dialog.show();
+    dialog.close();
+  }
+  TrainingDialog again(*f.workspace, QString::fromStdString(f.dbPath));
+  QCOMPARE(again.findChild<QComboBox*>(QStringLiteral("labelSet"))->currentText(),
+           QStringLiteral("other"));
+  QCOMPARE(again.findChild<QLineEdit*>(QStringLiteral("orders"))->text(), QStringLiteral("3, 5"));
+  QCOMPARE(again.findChild<QLineEdit*>(QStringLiteral("floors"))->text(), QStringLiteral("0.2"));
+  QCOMPARE(again.findChild<QLineEdit*>(QStringLiteral("seeds"))->text(), QStringLiteral("7"));
+  again.setLabelSet(QStringLiteral("truth"));  // "other" labels no run to sweep
+  auto grid = again.sweepRequest();
+  QVERIFY2(grid.ok(), grid.ok() ? "" : grid.errorText().c_str());
+  QCOMPARE(grid->grid.forms,
+           std::vector<analysis::CovarianceForm>{analysis::CovarianceForm::GrandDiag});
+  QCOMPARE(grid->grid.orders, (std::vector<int>{3, 5}));
+}
+
+// Guards the results table that was one row tall at the dialog's default size: the eight groups'
+// rows fit without scrolling.
+void TrainingDialogTest::resultsTableHasRoomForEightGroups() {
+  LearningFixture f;
+  TrainingDialog dialog(*f.workspace, QString::fromStdString(f.dbPath));
+  dialog.show();
+  QVERIFY(QTest::qWaitForWindowExposed(&dialog));
+  auto* table = dialog.findChild<QTableWidget*>(QStringLiteral("trainResult"));
+  QVERIFY(table != nullptr);
+  const int needed = table->horizontalHeader()->height() +
+                     kGroupCount * table->verticalHeader()->defaultSectionSize();
+  auto* cells = dialog.findChild<QTableView*>(QStringLiteral("cells"));
+  QVERIFY(cells != nullptr);
+  QVERIFY2(cells->height() >= needed,
+           qPrintable(QStringLiteral("%1 < %2").arg(cells->height()).arg(needed)));
+}
+
+// The plan says before the sweep which groups the test runs cannot score, and Leave Them Out
+// unticks them.
+void TrainingDialogTest::planNamesGroupsTheTestRunsCannotScore() {
+  LearningFixture f;
+  TrainingDialog dialog(*f.workspace, QString::fromStdString(f.dbPath));
+  dialog.setLabelSet(QStringLiteral("truth"));
+  dialog.show();
+  QVERIFY(QTest::qWaitForWindowExposed(&dialog));
+  auto* note = dialog.findChild<QLabel*>(QStringLiteral("unscorable"));
+  auto* leaveOut = dialog.findChild<QPushButton*>(QStringLiteral("leaveOut"));
+  QVERIFY(note != nullptr && leaveOut != nullptr);
+  // Counts from the test run itself: the groups with fewer contact steps than a score needs.
+  auto rows = f.workspace->labelledContactSteps("truth", {"room3_demo"});
+  QVERIFY(rows.ok());
+  QStringList expected;
+  for (const GroupInfo& g : kSensorGroups)
+    if (rows.value()[static_cast<std::size_t>(groupIndex(g.group))] < analysis::kMinTestSteps)
+      expected << QString::fromUtf8(g.shortName.data(), static_cast<qsizetype>(g.shortName.size()));
+  if (expected.isEmpty()) QSKIP("the test run scores every group");
+  QVERIFY(note->isVisible());
+  for (const QString& g : expected)
+    QVERIFY2(note->text().contains(g), qPrintable(note->text()));
+  QTest::mouseClick(leaveOut, Qt::LeftButton);
+  auto request = dialog.sweepRequest();
+  QVERIFY(request.ok());
+  for (SensorGroup g : request->grid.groups)
+    QVERIFY(!expected.contains(QString::fromUtf8(
+        groupInfo(g).shortName.data(), static_cast<qsizetype>(groupInfo(g).shortName.size()))));
+  QVERIFY(!note->isVisible());
+}
+
+// Guards the estimate taken from the last sweep's mean cell (60 times off for a grid of larger
+// orders): with the cost model, a grid of orders up to 16 is estimated far above one of order 1
+// alone (31 components against 5 per group and floor), and no stored sweep means no estimate.
+void TrainingDialogTest::planEstimatesFromEachCellsOwnCost() {
+  LearningFixture f;
+  TrainingDialog dialog(*f.workspace, QString::fromStdString(f.dbPath));
+  smallGrid(dialog);
+  QCOMPARE(dialog.plannedSeconds(), -1.0);  // nothing stored to time it by
+  QVERIFY(sweepFromDialog(dialog) > 0);
+  dialog.findChild<QSpinBox*>(QStringLiteral("threads"))->setValue(1);
+  dialog.setGrid(QStringLiteral("1"), QStringLiteral("0.03"), QStringLiteral("1"));
+  const double small = dialog.plannedSeconds();
+  QVERIFY(small > 0);
+  dialog.setGrid(QStringLiteral("1, 2, 4, 8, 16"), QStringLiteral("0.03"), QStringLiteral("1"));
+  const double large = dialog.plannedSeconds();
+  QVERIFY2(large > 4.0 * small, qPrintable(QStringLiteral("%1 vs %2").arg(large).arg(small)));
+  // Full covariance costs more per row than diagonal, at the same orders.
+  dialog.setFormsChecked({analysis::CovarianceForm::NodalFull});
+  QVERIFY(dialog.plannedSeconds() > large);
 }
 
 QTEST_MAIN(TrainingDialogTest)

@@ -1102,10 +1102,13 @@ TEST(WorkspaceCellModel, ModelOfACellScoresExactlyAsTheCell) {
     ASSERT_TRUE(g.balancedAccuracy.has_value() && g.accuracy.has_value());
     EXPECT_DOUBLE_EQ(*g.balancedAccuracy, cell.metrics.balancedAccuracy);
     EXPECT_DOUBLE_EQ(*g.accuracy, cell.metrics.accuracy);
-    // Stored under a name that says where it came from, distinct for every cell.
-    EXPECT_NE(trained->modelName.find("order " + std::to_string(cell.cell.order)),
-              std::string::npos)
-        << trained->modelName;
+    // Stored under a short name that says where it came from, distinct for every cell, within
+    // the name rule (it once was a sentence).
+    EXPECT_EQ(trained->modelName, "sweep" + std::to_string(sweep->sweepId) + "-" +
+                                      std::string(groupInfo(cell.cell.group).shortName) + "-cell" +
+                                      std::to_string(i));
+    EXPECT_LE(trained->modelName.size(), 40u);
+    EXPECT_EQ(trained->modelName.find(','), std::string::npos);
     const analysis::GroupModel* m = trained->bundle.find(cell.cell.group);
     ASSERT_NE(m, nullptr);
     EXPECT_EQ(m->varianceFloor, cell.cell.varianceFloor);
@@ -1119,6 +1122,18 @@ TEST(WorkspaceCellModel, ModelOfACellScoresExactlyAsTheCell) {
   auto models = f.ws->models();
   ASSERT_TRUE(models.ok());
   EXPECT_EQ(models->size(), checked);
+  // Not stored when asked not to (a model for a file only): the bundle is there, no model more.
+  for (std::size_t i = 0; i < stored->cells.size(); ++i) {
+    if (!stored->cells[i].ok) continue;
+    auto fileOnly = f.ws->trainSweepCell(sweep->sweepId, i, {}, {}, /*store=*/false);
+    ASSERT_TRUE(fileOnly.ok()) << fileOnly.errorText();
+    EXPECT_EQ(fileOnly->modelId, 0);
+    EXPECT_NE(fileOnly->bundle.find(stored->cells[i].cell.group), nullptr);
+    break;
+  }
+  auto after = f.ws->models();
+  ASSERT_TRUE(after.ok());
+  EXPECT_EQ(after->size(), checked);
 }
 
 TEST(WorkspaceCellModel, MissingCellAndSweepAreErrors) {

@@ -8,18 +8,53 @@
 
 namespace tactile::gui {
 
-QColor valueColor(double value, double maxValue) {
-  // Blue, cyan, yellow, red: the thesis's blue-to-red scale with a readable middle.
-  static constexpr std::array<std::array<int, 3>, 4> kStops{
-      {{30, 60, 220}, {40, 200, 220}, {250, 210, 40}, {215, 30, 30}}};
-  double t = maxValue > 0.0 && std::isfinite(value) ? value / maxValue : 0.0;
-  t = std::clamp(t, 0.0, 1.0) * static_cast<double>(kStops.size() - 1);
-  const auto i = std::min<std::size_t>(static_cast<std::size_t>(t), kStops.size() - 2);
+namespace {
+
+using Rgb = std::array<int, 3>;
+
+// Linear interpolation between equally spaced stops, t in [0, 1].
+QColor interpolated(const Rgb* stops, std::size_t count, double t) {
+  t = std::clamp(std::isfinite(t) ? t : 0.0, 0.0, 1.0) * static_cast<double>(count - 1);
+  const auto i = std::min<std::size_t>(static_cast<std::size_t>(t), count - 2);
   const double f = t - static_cast<double>(i);
-  auto mix = [&](int c) {
-    return static_cast<int>(std::lround(kStops[i][c] + f * (kStops[i + 1][c] - kStops[i][c])));
+  auto mix = [&](std::size_t c) {
+    return static_cast<int>(std::lround(stops[i][c] + f * (stops[i + 1][c] - stops[i][c])));
   };
   return {mix(0), mix(1), mix(2)};
+}
+
+// Viridis (van der Walt and Smith, 2015) at nine equally spaced points, as published: dark
+// purple through blue and green to yellow, lightness rising all the way.
+constexpr std::array<Rgb, 9> kSequential{{{68, 1, 84},
+                                          {71, 45, 123},
+                                          {59, 82, 139},
+                                          {44, 114, 142},
+                                          {33, 145, 140},
+                                          {40, 174, 128},
+                                          {94, 201, 98},
+                                          {173, 220, 48},
+                                          {253, 231, 37}}};
+
+// Blue, a light neutral grey at zero, red (the ColorBrewer red-blue scheme's seven classes):
+// lightness falls equally to both sides of zero.
+constexpr std::array<Rgb, 7> kDiverging{{{33, 102, 172},
+                                         {103, 169, 207},
+                                         {209, 229, 240},
+                                         {247, 247, 247},
+                                         {253, 219, 199},
+                                         {239, 138, 98},
+                                         {178, 24, 43}}};
+
+}  // namespace
+
+QColor valueColor(double value, double maxValue) {
+  return interpolated(kSequential.data(), kSequential.size(),
+                      maxValue > 0.0 && std::isfinite(value) ? value / maxValue : 0.0);
+}
+
+QColor signedValueColor(double value, double maxAbs) {
+  return interpolated(kDiverging.data(), kDiverging.size(),
+                      maxAbs > 0.0 && std::isfinite(value) ? 0.5 + 0.5 * value / maxAbs : 0.5);
 }
 
 QColor classColor(ContactClass cls) {

@@ -23,5 +23,15 @@ inline constexpr QLatin1StringView kAnnotator{"labels/annotator"};
 // Height in pixels of one label, truth or model row of the timelines.
 inline constexpr QLatin1StringView kTimelineRowHeight{"timelineView/rowHeight"};
 inline constexpr int kMaxRecentDatabases = 8;
+// The Train and Sweep dialog's last label set and grid (orders, floors, seeds as typed; groups,
+// methods, covariance forms, features and decisions as the ticked names).
+inline constexpr QLatin1StringView kTrainingLabelSet{"training/labelSet"};
+inline constexpr QLatin1StringView kTrainingOrders{"training/orders"};
+inline constexpr QLatin1StringView kTrainingFloors{"training/floors"};
+inline constexpr QLatin1StringView kTrainingSeeds{"training/seeds"};
+inline constexpr QLatin1StringView kTrainingTicked{"training/ticked"};
+inline constexpr QLatin1StringView kTrainingSplit{"training/split"};
+// The folder each file dialog last chose in, by purpose ("fileDialogs/<purpose>").
+inline constexpr QLatin1StringView kFileDialogs{"fileDialogs/"};
 
 }  // namespace tactile::gui::settings_keys

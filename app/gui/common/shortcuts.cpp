@@ -14,9 +14,15 @@ class Shortcuts {
 };
 
 // The platform's keys for a standard action, or `fallback` where the platform has none (some
-// themes bind no key to Quit).
+// themes bind no key to Quit). Function keys past F12 (X11 lists F14 for Undo, a key of old Sun
+// keyboards) are left out: no keyboard a user has carries them, and the list would name them.
 QList<QKeySequence> standard(QKeySequence::StandardKey key, QKeyCombination fallback) {
-  QList<QKeySequence> keys = QKeySequence::keyBindings(key);
+  QList<QKeySequence> keys;
+  for (const QKeySequence& k : QKeySequence::keyBindings(key)) {
+    const int code = k[0].key();
+    if (code >= Qt::Key_F13 && code <= Qt::Key_F35) continue;
+    keys << k;
+  }
   if (keys.isEmpty()) keys << QKeySequence(fallback);
   return keys;
 }
@@ -138,7 +144,9 @@ QString shortcutTableHtml() {
     QStringList keys;
     for (const QKeySequence& k : e.keys)
       keys << k.toString(QKeySequence::NativeText).toHtmlEscaped();
-    html += QStringLiteral("<tr><td><tt>%1</tt></td><td>%2</td></tr>")
+    // The keys never wrap and keep a gap before the text ("Strg+Umschalt+Z, Strg+Y" is long).
+    html += QStringLiteral(
+                "<tr><td nowrap style=\"padding-right:18px\"><tt>%1</tt></td><td>%2</td></tr>")
                 .arg(keys.join(QStringLiteral(", ")), e.text.toHtmlEscaped());
   }
   html += QStringLiteral("</table>");

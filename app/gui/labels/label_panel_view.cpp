@@ -19,6 +19,7 @@
 #include <QToolButton>
 #include <QVBoxLayout>
 
+#include "app/gui/common/file_dialog_memory.h"
 #include "app/gui/common/plot_style.h"
 #include "app/gui/common/settings_keys.h"
 #include "app/gui/labels/label_model.h"
@@ -144,6 +145,12 @@ LabelPanelView::LabelPanelView(RunSession* session, LabelModel* labels, QWidget*
   agreement_->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
   agreement_->horizontalHeader()->setStretchLastSection(true);
   agreement_->setEditTriggers(QAbstractItemView::NoEditTriggers);
+  // All eight groups without a scroll bar, whatever the language's row height (the panel scrolls
+  // as a whole on a short screen).
+  agreement_->setMinimumHeight(agreement_->horizontalHeader()->sizeHint().height() +
+                               kGroupCount * agreement_->verticalHeader()->defaultSectionSize() +
+                               2 * agreement_->frameWidth() + 2);
+  agreement_->setVerticalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
   auto* withRow = new QHBoxLayout;
   withRow->addWidget(new QLabel(tr("Agreement with"), this));
   withRow->addWidget(agreementWith_, 1);
@@ -225,14 +232,20 @@ void LabelPanelView::applyClass(ContactClass cls) {
   const auto range =
       session_->selection().value_or(StepRange{session_->currentStep(), session_->currentStep()});
   const std::vector<SensorGroup> groups = groupsFor(range.first, range.last);
-  if (groups.empty()) return report(tr("No group to label: check a group or change the mode."));
+  if (groups.empty()) {
+    return report(groupsMode() == GroupsMode::Contacting
+                      ? tr("No group is in contact here: nothing to label.")
+                      : tr("No group to label: tick a group."));
+  }
   Status s = labels_->label(groups, range.first, range.last, cls);
   if (!s) return report(QString::fromStdString(s.errorText()));
-  emit statusMessage(
-      tr("Labelled steps %1-%2 as %3 in %n group(s)", nullptr, static_cast<int>(groups.size()))
-          .arg(range.first)
-          .arg(range.last)
-          .arg(className(cls)));
+  QStringList names;
+  for (SensorGroup g : groups)
+    names << groupName(g);
+  emit statusMessage(tr("Labelled steps %1-%2 as %3 in %4")
+                         .arg(range.first)
+                         .arg(range.last)
+                         .arg(className(cls), names.join(QStringLiteral(", "))));
 }
 
 void LabelPanelView::deleteAtCursor() {
@@ -317,9 +330,11 @@ void LabelPanelView::saveSetAs() {
 
 void LabelPanelView::importLabels() {
   if (!labels_->hasSet()) return report(tr("Create or open a label set first."));
-  const QString file = QFileDialog::getOpenFileName(
-      this, tr("Import labels"), QString(), tr("Label files (*.csv *.json);;All files (*)"));
+  const QString file =
+      QFileDialog::getOpenFileName(this, tr("Import labels"), startPath(QStringLiteral("labels")),
+                                   tr("Label files (*.csv *.json);;All files (*)"));
   if (file.isEmpty()) return;
+  rememberPath(QStringLiteral("labels"), file);
   auto n = labels_->importFile(file.toStdString());
   if (!n) return report(QString::fromStdString(n.errorText()));
   emit statusMessage(tr("Imported %n segment(s)", nullptr, static_cast<int>(n.value())));
@@ -328,9 +343,11 @@ void LabelPanelView::importLabels() {
 void LabelPanelView::exportLabels() {
   if (!labels_->hasSet()) return report(tr("No label set is open."));
   const QString file = QFileDialog::getSaveFileName(
-      this, tr("Export labels"), QString::fromStdString(labels_->setName()) + ".csv",
+      this, tr("Export labels"),
+      startPath(QStringLiteral("labels"), QString::fromStdString(labels_->setName()) + ".csv"),
       tr("CSV (*.csv);;JSON (*.json)"));
   if (file.isEmpty()) return;
+  rememberPath(QStringLiteral("labels"), file);
   Status s = labels_->exportFile(file.toStdString());
   if (!s) return report(QString::fromStdString(s.errorText()));
   emit statusMessage(tr("Exported %1 to %2").arg(QString::fromStdString(labels_->setName()), file));
@@ -395,8 +412,9 @@ void LabelPanelView::refreshAgreement() {
                "agreement is 100 %",
                nullptr, static_cast<int>(a.comparedSteps));
       } else {
-        why = tr("%1 of %2 steps agree (%3); by chance %4 would: kappa = (%3 - %4) / (100 % - %4) "
-                 "= %5")
+        why = tr("%1 of %2 steps agree (%3). Two annotators labelling at random with these class "
+                 "shares would agree on %4. Kappa %5 says how much better than chance they agree: "
+                 "1 fully, 0 no better than chance.")
                   .arg(a.agreeingSteps)
                   .arg(a.comparedSteps)
                   .arg(agree, chance, kappa);

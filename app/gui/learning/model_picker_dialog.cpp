@@ -78,4 +78,20 @@ PredictionModel::Choice ModelPickerDialog::choice() const {
   return c;
 }
 
+void ModelPickerDialog::setCoverage(const QMap<QString, QStringList>& groupsOfModel) {
+  std::vector<QComboBox*> boxes{all_};
+  for (QComboBox* b : groups_)
+    boxes.push_back(b);
+  for (QComboBox* box : boxes) {
+    for (int i = 0; i < box->count(); ++i) {
+      const QString name = box->itemData(i).toString();
+      if (name.isEmpty() || !groupsOfModel.contains(name)) continue;
+      const QStringList groups = groupsOfModel.value(name);
+      box->setItemText(i, groups.size() == kGroupCount
+                              ? tr("%1 (all groups)").arg(name)
+                              : tr("%1 (%2 only)").arg(name, groups.join(QStringLiteral(", "))));
+    }
+  }
+}
+
 }  // namespace tactile::gui

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <QDialog>
+#include <QMap>
 #include <QStringList>
 
 #include <array>
@@ -25,6 +26,8 @@ class ModelPickerDialog : public QDialog {
   PredictionModel::Choice choice() const;
   void setPerGroup(bool perGroup);
   QComboBox* allGroupsBox() const { return all_; }
+  // Says beside each model which groups it covers ("m1 (F, L, R)"), by model name.
+  void setCoverage(const QMap<QString, QStringList>& groupsOfModel);
   QComboBox* groupBox(SensorGroup g) const {
     return groups_[static_cast<std::size_t>(groupIndex(g))];
   }

@@ -12,6 +12,8 @@
 #include <cmath>
 #include <tuple>
 
+#include "app/gui/common/file_dialog_memory.h"
+
 namespace tactile::gui {
 
 namespace {
@@ -65,6 +67,38 @@ class SparseTextTicker : public QCPAxisTickerText {
  private:
   static constexpr double kLabelGapPixels = 8.0;
   QCPAxis* axis_;
+};
+
+// The groups' colours in the time plot: the palette, but grey for the eighth group, whose black
+// would read as the Pareto front's black rings.
+QColor groupColour(int g) {
+  return g % kColourCount == kColourCount - 1 ? QColor(0x88, 0x88, 0x88)
+                                              : kSeriesColours[g % kColourCount];
+}
+
+// Seconds as a reader takes them in: milliseconds below one second ("0.28 ms", "40 ms"), else
+// seconds ("2.5 s").
+QString secondsText(double seconds) {
+  if (seconds < 1.0) return QObject::tr("%1 ms").arg(QString::number(1000.0 * seconds, 'g', 3));
+  return QObject::tr("%1 s").arg(QString::number(seconds, 'g', 3));
+}
+
+// A log axis of seconds with a labelled tick at every decade in view (none skipped, however
+// wide the range), labels in ms below one second, and any label that would run into its
+// neighbour left out.
+class DecadeSecondsTicker : public SparseTextTicker {
+ public:
+  using SparseTextTicker::SparseTextTicker;
+  void generate(const QCPRange& range, const QLocale& locale, QChar formatChar, int precision,
+                QVector<double>& ticks, QVector<double>* subTicks,
+                QVector<QString>* tickLabels) override {
+    clear();
+    const int first = static_cast<int>(std::floor(std::log10(std::max(range.lower, 1e-12))));
+    const int last = static_cast<int>(std::ceil(std::log10(std::max(range.upper, 1e-12))));
+    for (int e = first; e <= last && e - first < 40; ++e)
+      addTick(std::pow(10.0, e), secondsText(std::pow(10.0, e)));
+    SparseTextTicker::generate(range, locale, formatChar, precision, ticks, subTicks, tickLabels);
+  }
 };
 
 void useLogAxis(QCPAxis* axis) {
@@ -150,14 +184,16 @@ SweepPlot::SweepPlot(QWidget* parent) : QWidget(parent) {
   auto* pdf = new QPushButton(tr("Export PDF..."));
   pdf->setObjectName(QStringLiteral("exportPdf"));
   connect(png, &QPushButton::clicked, this, [this] {
-    const QString path =
-        QFileDialog::getSaveFileName(this, tr("Export PNG"), QString(), tr("PNG images (*.png)"));
+    const QString path = QFileDialog::getSaveFileName(
+        this, tr("Export PNG"), startPath(QStringLiteral("figures")), tr("PNG images (*.png)"));
+    rememberPath(QStringLiteral("figures"), path);
     if (!path.isEmpty() && !exportPng(path))
       QMessageBox::warning(this, tr("Export PNG"), tr("Cannot write %1").arg(path));
   });
   connect(pdf, &QPushButton::clicked, this, [this] {
-    const QString path =
-        QFileDialog::getSaveFileName(this, tr("Export PDF"), QString(), tr("PDF files (*.pdf)"));
+    const QString path = QFileDialog::getSaveFileName(
+        this, tr("Export PDF"), startPath(QStringLiteral("figures")), tr("PDF files (*.pdf)"));
+    rememberPath(QStringLiteral("figures"), path);
     if (!path.isEmpty() && !exportPdf(path))
       QMessageBox::warning(this, tr("Export PDF"), tr("Cannot write %1").arg(path));
   });
@@ -177,7 +213,9 @@ void SweepPlot::clear() {
   front_ = nullptr;
   mark_ = nullptr;
   cellsOf_.clear();
+  xOf_.clear();
   pointOf_.clear();
+  timeAxis_ = false;
   seriesCount_ = 0;
   frontCount_ = 0;
   pointCount_ = 0;
@@ -224,7 +262,7 @@ void SweepPlot::showRates(const std::vector<analysis::RateSeries>& series,
   }
   plot_->xAxis->setLabel(variable == analysis::SweptVariable::Floor ? tr("Variance floor")
                                                                     : tr("Model order"));
-  plot_->yAxis->setLabel(tr("Recall per class (%)"));
+  plot_->yAxis->setLabel(tr("Correct rate per class (%)"));
   std::sort(xs.begin(), xs.end());
   xs.erase(std::unique(xs.begin(), xs.end()), xs.end());
 
@@ -271,10 +309,12 @@ void SweepPlot::showRates(const std::vector<analysis::RateSeries>& series,
     const double offset = (k - (n - 1) / 2.0) * step;
     QVector<double> keys, means, minus, plus;
     std::vector<int>& cells = cellsOf_[graph];
+    std::vector<double>& trueX = xOf_[graph];
     for (std::size_t i = 0; i < s.x.size(); ++i) {
       if (!std::isfinite(s.mean[i]) || (log && s.x[i] <= 0)) continue;
       const double x = log ? s.x[i] * std::pow(10.0, offset) : s.x[i] + offset;
       keys << x;
+      trueX.push_back(s.x[i]);
       means << s.mean[i];
       minus << s.mean[i] - s.min[i];
       plus << s.max[i] - s.mean[i];
@@ -313,7 +353,9 @@ void SweepPlot::showTimeError(const analysis::SweepResult& sweep,
                               std::optional<SensorGroup> group) {
   clear();
   useLogAxis(plot_->xAxis);
-  plot_->xAxis->setLabel(tr("Fit + predict time (s)"));
+  plot_->xAxis->setTicker(QSharedPointer<DecadeSecondsTicker>::create(plot_->xAxis));
+  timeAxis_ = true;
+  plot_->xAxis->setLabel(tr("Fit + predict time"));
   plot_->yAxis->setLabel(tr("Error: 100 - balanced accuracy (%)"));
   constexpr double kMinSeconds = 1e-6;
   auto timeOf = [&](std::size_t i) {
@@ -338,7 +380,7 @@ void SweepPlot::showTimeError(const analysis::SweepResult& sweep,
   for (auto& [g, cells] : byGroup) {
     std::stable_sort(cells.begin(), cells.end(),
                      [&](std::size_t a, std::size_t b) { return timeOf(a) < timeOf(b); });
-    const QColor colour = kSeriesColours[g % kColourCount];
+    const QColor colour = groupColour(g);
     const std::string_view name = kSensorGroups[static_cast<std::size_t>(g)].shortName;
     QCPGraph* graph = plot_->addGraph();
     graph->setName(
@@ -375,7 +417,10 @@ void SweepPlot::showTimeError(const analysis::SweepResult& sweep,
     front_->setData(keys, values, true);
     frontCount_ = static_cast<int>(front.size());
   }
-  plot_->xAxis->setRange(paddedRange(times, true));
+  // Whole decades, so the fastest and the slowest cells each have a labelled decade beside them.
+  const QCPRange padded = paddedRange(times, true);
+  plot_->xAxis->setRange(std::pow(10.0, std::floor(std::log10(padded.lower))),
+                         std::pow(10.0, std::ceil(std::log10(padded.upper))));
   plot_->yAxis->setRange(0, 105);
   finish(tr("No fitted cells scored on test rows."));
 }
@@ -423,10 +468,15 @@ QString SweepPlot::pointTip(QPointF pos) const {
       if (distance > best) continue;
       best = distance;
       const int cell = i < static_cast<int>(cells.size()) ? cells[static_cast<std::size_t>(i)] : -1;
+      // The value the point stands for, not where it was drawn (points at one value are spread).
+      double x = d.key;
+      if (const auto it = xOf_.find(graph);
+          it != xOf_.end() && i < static_cast<int>(it->second.size()))
+        x = it->second[static_cast<std::size_t>(i)];
       tip = tr("%1\n%2: %3\n%4: %5%6")
                 .arg(graph->name())
                 .arg(plot_->xAxis->label())
-                .arg(d.key, 0, 'g', 4)
+                .arg(timeAxis_ ? secondsText(x) : QString::number(x, 'g', 4))
                 .arg(plot_->yAxis->label())
                 .arg(d.value, 0, 'f', 1)
                 .arg(cell >= 0 ? tr("\ncell %1 (click to select)").arg(cell) : QString());

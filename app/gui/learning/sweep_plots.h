@@ -12,8 +12,8 @@
 #include <utility>
 #include <vector>
 
-#include "analysis/report.h"
 #include "analysis/sweep.h"
+#include "analysis/sweep_summary.h"
 
 class QCustomPlot;
 class QCPAbstractPlottable;
@@ -82,6 +82,10 @@ class SweepPlot : public QWidget {
   std::pair<double, double> homeY_{0, 1};
   // Points of each graph, by data index: the cell they stand for.
   std::map<const QCPAbstractPlottable*, std::vector<int>> cellsOf_;
+  // The value each point stands for on the x axis (points at one swept value are drawn a little
+  // apart; a hover reports the value, not where the point was drawn).
+  std::map<const QCPAbstractPlottable*, std::vector<double>> xOf_;
+  bool timeAxis_ = false;  // the x axis holds seconds (shown in ms below 1 s)
   // Where each drawn cell's point is (plot coordinates).
   std::map<int, QPointF> pointOf_;
 };

@@ -4,6 +4,7 @@
 #include <QHBoxLayout>
 #include <QHeaderView>
 #include <QLabel>
+#include <QScrollBar>
 #include <QSortFilterProxyModel>
 #include <QSplitter>
 #include <QTabWidget>
@@ -16,6 +17,7 @@
 #include <utility>
 
 #include "analysis/report.h"
+#include "analysis/sweep_summary.h"
 #include "app/gui/learning/sweep_cells_model.h"
 #include "app/gui/learning/sweep_plots.h"
 #include "app/gui/learning/table_view.h"
@@ -209,25 +211,45 @@ SweepResultsView::SweepResultsView(QWidget* parent) : QWidget(parent) {
   rightLayout->addWidget(cellTitle_);
   rightLayout->addWidget(tabs_, 1);
 
-  auto* splitter = new QSplitter(Qt::Horizontal);
-  splitter->addWidget(left);
-  splitter->addWidget(right);
-  splitter->setStretchFactor(0, 1);
-  splitter->setStretchFactor(1, 1);
+  splitter_ = new QSplitter(Qt::Horizontal);
+  splitter_->addWidget(left);
+  splitter_->addWidget(right);
+  splitter_->setStretchFactor(0, 1);
+  splitter_->setStretchFactor(1, 1);
 
   auto* layout = new QVBoxLayout(this);
   layout->addWidget(title_);
-  layout->addWidget(splitter, 1);
+  layout->addWidget(splitter_, 1);
   refreshFigures();
   refreshCellDetails();
 }
 
+void SweepResultsView::widenTableToTestSteps() {
+  // The table shows its columns up to the test steps whole (they say whether a score can be
+  // trusted), as long as the details keep at least a third of the width.
+  int needed = 2 * cellsView_->frameWidth() + cellsView_->verticalScrollBar()->sizeHint().width();
+  for (int c = 0; c <= SweepCellsModel::TestSteps; ++c)
+    needed += cellsView_->horizontalHeader()->sectionSize(c);
+  const QList<int> sizes = splitter_->sizes();
+  if (sizes.size() != 2) return;
+  const int total = sizes[0] + sizes[1];
+  const int left = std::min(needed, total * 2 / 3);
+  if (sizes[0] < left) splitter_->setSizes({left, total - left});
+}
+
+void SweepResultsView::setStoredModels(const QStringList& names) {
+  storedModels_ = names;
+  refreshTitle();
+}
+
 void SweepResultsView::setSweep(std::int64_t sweepId, const analysis::SweepResult& sweep) {
+  if (sweepId != sweepId_) storedModels_.clear();
   sweepId_ = sweepId;
   sweep_ = sweep;
   selected_ = -1;
   refreshTimer_->stop();
   cells_->setCells(sweep_.cells);
+  if (isVisible()) QTimer::singleShot(0, this, [this] { widenTableToTestSteps(); });
   {
     // The decision modes the sweep scored, in the grid's order.
     const QSignalBlocker block(decisionBox_);
@@ -372,7 +394,10 @@ void SweepResultsView::scrollToSelected() {
 void SweepResultsView::showEvent(QShowEvent* event) {
   QWidget::showEvent(event);
   // A view scrolled before it had a size scrolls again once it has one.
-  QTimer::singleShot(0, this, [this] { scrollToSelected(); });
+  QTimer::singleShot(0, this, [this] {
+    scrollToSelected();
+    widenTableToTestSteps();
+  });
 }
 
 void SweepResultsView::refreshTitle() {
@@ -383,13 +408,17 @@ void SweepResultsView::refreshTitle() {
   std::size_t fitted = 0;
   for (const analysis::SweepCellResult& r : sweep_.cells)
     fitted += r.ok ? 1 : 0;
-  // A sweep fits and scores its cells and keeps their numbers; it stores no model.
-  QString text = tr("Sweep %1: %2 cells, %3 fitted, %4 failed; no model is stored (Store Model "
-                    "of Cell stores one)")
+  // A sweep fits and scores its cells and keeps their numbers; it stores no model itself.
+  QString text = tr("Sweep %1: %2 cells, %3 fitted, %4 failed")
                      .arg(sweepId_)
                      .arg(sweep_.cells.size())
                      .arg(fitted)
                      .arg(sweep_.cells.size() - fitted);
+  text +=
+      QStringLiteral("; ") +
+      (storedModels_.isEmpty()
+           ? tr("no model of it is stored (Store Model of Cell stores one)")
+           : tr("stored models of its cells: %1").arg(storedModels_.join(QStringLiteral(", "))));
   if (sweep_.cancelled) text += QLatin1Char(' ') + tr("(cancelled: the finished cells)");
   title_->setText(text);
 }
@@ -465,14 +494,14 @@ void SweepResultsView::refreshCellDetails() {
   analysis::Table own =
       analysis::oneVsRestRateTable({{r.cell.group, analysis::binaryConfusions(m, r.classes)}});
   own.title = tr("Precision per class, one-vs-rest (of the steps predicted a class, the share "
-                 "that are it; thesis table 4.19's correct rate), % - this cell")
+                 "that are it), % - this cell")
                   .toStdString();
   cellOneVsRest_->setTable(own);
-  rates_->setTable(
-      analysis::classRateTable({{std::string(groupInfo(r.cell.group).shortName), r.metrics}},
-                               tr("Recall per class of this cell (of the steps of a class, the "
-                                  "share predicted as it), %")
-                                   .toStdString()));
+  rates_->setTable(analysis::classRateTable(
+      {{std::string(groupInfo(r.cell.group).shortName), r.metrics}},
+      tr("Correct rate per class of this cell (of the steps of a class, the "
+         "share predicted as it), %")
+          .toStdString()));
   if (r.patterns.rows.empty()) {
     patterns_->setMessage(tr("No contact patterns were kept for this cell."));
   } else {

@@ -15,6 +15,7 @@
 
 class QComboBox;
 class QLabel;
+class QSplitter;
 class QShowEvent;
 class QSortFilterProxyModel;
 class QTabWidget;
@@ -37,6 +38,8 @@ class SweepResultsView : public QWidget {
   // A newly finished cell of the shown sweep (cheap: one table row; the visible figure is redrawn
   // at most every 250 ms, hidden ones when their tab is shown).
   void addCell(const analysis::SweepCellResult& cell);
+  // The names of the models stored from this sweep's cells (the title lists them).
+  void setStoredModels(const QStringList& names);
 
   const analysis::SweepResult& sweep() const { return sweep_; }
   // Index into sweep().cells of the selected cell, -1 when none.
@@ -78,8 +81,10 @@ class SweepResultsView : public QWidget {
   void scrollToSelected();
   void refreshCellDetails();
   void refreshTitle();
+  void widenTableToTestSteps();
 
   std::int64_t sweepId_ = 0;
+  QStringList storedModels_;
   analysis::SweepResult sweep_;
   int selected_ = -1;
   std::optional<SensorGroup> group_;
@@ -87,6 +92,7 @@ class SweepResultsView : public QWidget {
   bool figuresStale_ = true;
 
   QLabel* title_ = nullptr;
+  QSplitter* splitter_ = nullptr;
   QComboBox* groupBox_ = nullptr;
   QComboBox* decisionBox_ = nullptr;
   SweepCellsModel* cells_ = nullptr;

@@ -50,6 +50,8 @@ class SweepResultsWindow : public QMainWindow {
  private:
   void chooseReportFile();
   void chooseModelFile();
+  // The name Store Model of Cell gives the selected cell's model when none is typed.
+  QString automaticModelName() const;
   void onModelTrained(const LearningJobResult& result);
 
   workspace::Workspace& workspace_;
@@ -60,6 +62,7 @@ class SweepResultsWindow : public QMainWindow {
   SweepResultsView* view_ = nullptr;
   SweepWorker* worker_ = nullptr;
   QString pendingModelFile_;
+  QStringList storedModels_;  // stored from this sweep since it was shown
 };
 
 }  // namespace tactile::gui

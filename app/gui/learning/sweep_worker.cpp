@@ -143,12 +143,12 @@ bool SweepWorker::startTrain(const QString& databasePath, const workspace::Train
 }
 
 bool SweepWorker::startCellModel(const QString& databasePath, std::int64_t sweepId,
-                                 std::size_t cellIndex, const QString& modelName) {
-  return launch([this, databasePath, sweepId, cellIndex, modelName] {
+                                 std::size_t cellIndex, const QString& modelName, bool store) {
+  return launch([this, databasePath, sweepId, cellIndex, modelName, store] {
     LearningJobResult out = trainingJob(
         LearningJobResult::Kind::CellModel, databasePath,
         [&](workspace::Workspace& ws, const ProgressFn& progress) {
-          return ws.trainSweepCell(sweepId, cellIndex, modelName.toStdString(), progress);
+          return ws.trainSweepCell(sweepId, cellIndex, modelName.toStdString(), progress, store);
         });
     out.sweepId = sweepId;
     return out;

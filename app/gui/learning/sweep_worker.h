@@ -49,8 +49,10 @@ class SweepWorker : public QObject {
   // Each returns false (and starts nothing) while another job runs.
   bool startSweep(const QString& databasePath, const workspace::SweepRequest& request);
   bool startTrain(const QString& databasePath, const workspace::TrainRequest& request);
+  // Trains a sweep cell's model; stored under `modelName` (empty: automatic) when `store`, else
+  // only handed back (LearningJobResult::unstored), for a model file.
   bool startCellModel(const QString& databasePath, std::int64_t sweepId, std::size_t cellIndex,
-                      const QString& modelName);
+                      const QString& modelName, bool store = true);
 
   bool isRunning() const { return running_; }
   // Blocks until the job is over (tests and shutdown); its signals are still queued.

@@ -11,6 +11,7 @@
 #include <QTableView>
 #include <QVBoxLayout>
 
+#include "app/gui/common/file_dialog_memory.h"
 #include "base/file_text.h"
 
 namespace tactile::gui {
@@ -121,9 +122,10 @@ Status TableView::exportCsv(const QString& path) const {
 }
 
 void TableView::chooseCsvFile() {
-  const QString path =
-      QFileDialog::getSaveFileName(this, tr("Export CSV"), QString(), tr("CSV files (*.csv)"));
+  const QString path = QFileDialog::getSaveFileName(
+      this, tr("Export CSV"), startPath(QStringLiteral("tables")), tr("CSV files (*.csv)"));
   if (path.isEmpty()) return;
+  rememberPath(QStringLiteral("tables"), path);
   if (Status s = exportCsv(path); !s)
     QMessageBox::warning(this, tr("Export CSV"), QString::fromStdString(s.errorText()));
 }

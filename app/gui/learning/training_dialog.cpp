@@ -1,6 +1,7 @@
 #include "app/gui/learning/training_dialog.h"
 
 #include <QCheckBox>
+#include <QCloseEvent>
 #include <QComboBox>
 #include <QDialogButtonBox>
 #include <QFormLayout>
@@ -14,6 +15,8 @@
 #include <QProgressBar>
 #include <QPushButton>
 #include <QRegularExpression>
+#include <QScrollArea>
+#include <QSettings>
 #include <QSortFilterProxyModel>
 #include <QSpinBox>
 #include <QSplitter>
@@ -27,6 +30,8 @@
 #include <cmath>
 #include <utility>
 
+#include "app/gui/common/settings_keys.h"
+#include "app/gui/common/window_geometry.h"
 #include "app/gui/learning/sweep_cells_model.h"
 #include "app/gui/learning/sweep_worker.h"
 
@@ -85,6 +90,7 @@ TrainingDialog::TrainingDialog(workspace::Workspace& workspace, QString database
           [this](const analysis::SweepCellResult& cell) { cells_->addCell(cell); });
   connect(worker_, &SweepWorker::finished, this, &TrainingDialog::onFinished);
   reload();
+  restoreForm();
 }
 
 TrainingDialog::~TrainingDialog() = default;
@@ -96,7 +102,10 @@ void TrainingDialog::buildUi() {
 
   labelSet_ = new QComboBox;
   labelSet_->setObjectName(QStringLiteral("labelSet"));
-  connect(labelSet_, &QComboBox::currentTextChanged, this, [this] { fillRuns(); });
+  connect(labelSet_, &QComboBox::currentTextChanged, this, [this] {
+    fillRuns();
+    refreshRows();
+  });
   form->addRow(tr("Label set:"), labelSet_);
 
   runs_ = new QTableWidget(0, 4);
@@ -142,6 +151,7 @@ void TrainingDialog::buildUi() {
   auto* groupRow = new QHBoxLayout;
   for (const GroupInfo& g : kSensorGroups) {
     auto* box = new QCheckBox(qs(g.shortName));
+    box->setProperty("key", QStringLiteral("group:") + qs(g.shortName));
     box->setToolTip(qs(g.longName));
     box->setChecked(true);
     groups_.push_back(box);
@@ -167,6 +177,7 @@ void TrainingDialog::buildUi() {
   auto* formRow = new QHBoxLayout;
   for (analysis::CovarianceForm f : analysis::kAllCovarianceForms) {
     auto* box = new QCheckBox(qs(analysis::covarianceFormName(f)));
+    box->setProperty("key", QStringLiteral("form:") + qs(analysis::covarianceFormName(f)));
     box->setChecked(f == analysis::CovarianceForm::NodalDiag ||
                     f == analysis::CovarianceForm::NodalFull);
     forms_.push_back(box);
@@ -186,6 +197,7 @@ void TrainingDialog::buildUi() {
   int featureIndex = 0;
   for (analysis::FeatureKind k : analysis::kFeatureKinds) {
     auto* box = new QCheckBox(qs(analysis::featureKindName(k)));
+    box->setProperty("key", QStringLiteral("features:") + qs(analysis::featureKindName(k)));
     box->setChecked(k == analysis::FeatureKind::Normal);
     features_.push_back(box);
     featureRow->addWidget(box, featureIndex / kFeatureColumns, featureIndex % kFeatureColumns);
@@ -201,6 +213,7 @@ void TrainingDialog::buildUi() {
   auto* decisionRow = new QHBoxLayout;
   for (analysis::DecisionMode m : analysis::kDecisionModes) {
     auto* box = new QCheckBox(qs(analysis::decisionModeName(m)));
+    box->setProperty("key", QStringLiteral("decision:") + qs(analysis::decisionModeName(m)));
     box->setObjectName(QStringLiteral("decision-") + qs(analysis::decisionModeName(m)));
     box->setChecked(m == analysis::DecisionMode::Step);
     decisions_.push_back(box);
@@ -221,6 +234,7 @@ void TrainingDialog::buildUi() {
   form->addRow(tr("Name:"), name_);
 
   threads_ = new QSpinBox;
+  threads_->setObjectName(QStringLiteral("threads"));
   threads_->setRange(0, 256);
   threads_->setSpecialValueText(tr("all cores"));
   form->addRow(tr("Threads:"), threads_);
@@ -249,6 +263,23 @@ void TrainingDialog::buildUi() {
   plan_->setObjectName(QStringLiteral("plan"));
   plan_->setWordWrap(true);
   form->addRow(tr("Plan:"), plan_);
+  unscorable_ = new QLabel;
+  unscorable_->setObjectName(QStringLiteral("unscorable"));
+  unscorable_->setWordWrap(true);
+  unscorable_->setStyleSheet(QStringLiteral("color: #8a4b00"));
+  leaveOut_ = new QPushButton(tr("Leave Them Out"));
+  leaveOut_->setObjectName(QStringLiteral("leaveOut"));
+  leaveOut_->setToolTip(tr("Untick the groups the test runs cannot score"));
+  connect(leaveOut_, &QPushButton::clicked, this, [this] {
+    for (SensorGroup group : std::vector<SensorGroup>(unscorableGroups_))
+      groups_[static_cast<std::size_t>(groupIndex(group))]->setChecked(false);
+  });
+  auto* unscorableRow = new QHBoxLayout;
+  unscorableRow->addWidget(unscorable_, 1);
+  unscorableRow->addWidget(leaveOut_);
+  unscorable_->hide();
+  leaveOut_->hide();
+  form->addRow(QString(), unscorableRow);
   // The plan follows every edit, and an error shown for a bad form goes once it is fixed.
   for (QLineEdit* e : {orders_, floors_, seeds_})
     connect(e, &QLineEdit::textChanged, this, &TrainingDialog::refreshPlan);
@@ -258,7 +289,8 @@ void TrainingDialog::buildUi() {
   for (QCheckBox* box : {gaussian_, gmm_})
     connect(box, &QCheckBox::toggled, this, &TrainingDialog::refreshPlan);
   connect(threads_, &QSpinBox::valueChanged, this, &TrainingDialog::refreshPlan);
-  connect(runs_, &QTableWidget::itemChanged, this, &TrainingDialog::refreshPlan);
+  connect(runs_, &QTableWidget::itemChanged, this, &TrainingDialog::refreshRows);
+  connect(split_, &QComboBox::currentIndexChanged, this, &TrainingDialog::refreshPlan);
 
   sweepButton_ = new QPushButton(tr("Run sweep"));
   sweepButton_->setObjectName(QStringLiteral("runSweep"));
@@ -321,15 +353,84 @@ void TrainingDialog::buildUi() {
   resultStack_->addWidget(trainResult_);
   resultsLayout->addWidget(resultStack_, 1);
 
+  // The results need the room of all eight groups' rows (a header, eight rows, the progress
+  // and status lines); the settings scroll in what is left.
+  const int rowHeight = trainResult_->verticalHeader()->defaultSectionSize();
+  const int resultsHeight = progress_->sizeHint().height() + 2 * status_->sizeHint().height() +
+                            trainResult_->horizontalHeader()->sizeHint().height() +
+                            (kGroupCount + 1) * rowHeight + 24;
+  results->setMinimumHeight(resultsHeight);
+  auto* settingsScroll = new QScrollArea;
+  settingsScroll->setObjectName(QStringLiteral("settingsScroll"));
+  settingsScroll->setFrameShape(QFrame::NoFrame);
+  settingsScroll->setWidgetResizable(true);
+  settingsScroll->setWidget(settings);
   auto* splitter = new QSplitter(Qt::Vertical);
-  splitter->addWidget(settings);
+  splitter->addWidget(settingsScroll);
   splitter->addWidget(results);
+  splitter->setStretchFactor(0, 1);
   splitter->setStretchFactor(1, 1);
+  splitter->setChildrenCollapsible(false);
 
   auto* layout = new QVBoxLayout(this);
   layout->addWidget(splitter, 1);
   layout->addLayout(buttons);
-  resize(900, 820);
+  resize(900, 900);
+  keepWithinScreen(this);
+  const int settingsHeight = std::max(150, height() - resultsHeight - 80);
+  splitter->setSizes({settingsHeight, resultsHeight});
+}
+
+void TrainingDialog::rememberForm() const {
+  namespace keys = settings_keys;
+  QSettings settings;
+  settings.setValue(keys::kTrainingLabelSet, labelSet_->currentText());
+  settings.setValue(keys::kTrainingOrders, orders_->text());
+  settings.setValue(keys::kTrainingFloors, floors_->text());
+  settings.setValue(keys::kTrainingSeeds, seeds_->text());
+  settings.setValue(keys::kTrainingSplit, split_->currentData());
+  QStringList ticked;
+  for (const std::vector<QCheckBox*>* list : {&groups_, &forms_, &features_, &decisions_})
+    for (const QCheckBox* box : *list)
+      if (box->isChecked()) ticked << box->property("key").toString();
+  if (gaussian_->isChecked()) ticked << QStringLiteral("method:gaussian");
+  if (gmm_->isChecked()) ticked << QStringLiteral("method:gmm");
+  settings.setValue(keys::kTrainingTicked, ticked);
+}
+
+void TrainingDialog::restoreForm() {
+  namespace keys = settings_keys;
+  const QSettings settings;
+  if (settings.contains(keys::kTrainingOrders))
+    orders_->setText(settings.value(keys::kTrainingOrders).toString());
+  if (settings.contains(keys::kTrainingFloors))
+    floors_->setText(settings.value(keys::kTrainingFloors).toString());
+  if (settings.contains(keys::kTrainingSeeds))
+    seeds_->setText(settings.value(keys::kTrainingSeeds).toString());
+  if (settings.contains(keys::kTrainingSplit)) {
+    const int i = split_->findData(settings.value(keys::kTrainingSplit));
+    if (i >= 0) split_->setCurrentIndex(i);
+  }
+  if (settings.contains(keys::kTrainingTicked)) {
+    const QStringList ticked = settings.value(keys::kTrainingTicked).toStringList();
+    for (const std::vector<QCheckBox*>* list : {&groups_, &forms_, &features_, &decisions_})
+      for (QCheckBox* box : *list)
+        box->setChecked(ticked.contains(box->property("key").toString()));
+    gaussian_->setChecked(ticked.contains(QStringLiteral("method:gaussian")));
+    gmm_->setChecked(ticked.contains(QStringLiteral("method:gmm")));
+  }
+  if (settings.contains(keys::kTrainingLabelSet))
+    setLabelSet(settings.value(keys::kTrainingLabelSet).toString());
+}
+
+void TrainingDialog::done(int result) {
+  rememberForm();
+  QDialog::done(result);
+}
+
+void TrainingDialog::closeEvent(QCloseEvent* event) {
+  rememberForm();
+  QDialog::closeEvent(event);
 }
 
 void TrainingDialog::reload() {
@@ -344,29 +445,65 @@ void TrainingDialog::reload() {
   const int keep = labelSet_->findText(current);
   if (keep >= 0) labelSet_->setCurrentIndex(keep);
   fillRuns();
+  trainRows_ = {};
+  testRows_ = {};
   refreshTiming();
+  refreshRows();
 }
 
+namespace {
+
+// The work of one cell, in the cost model's units: every EM iteration visits each row once per
+// component, at a cost per row that grows with the dimension (diagonal forms) or its square (full
+// forms); prediction visits the test rows the same way. A Gaussian is one component.
+double cellUnits(const analysis::SweepCell& cell, std::size_t trainRows, std::size_t testRows) {
+  const double d = static_cast<double>(groupInfo(cell.group).sensorCount) *
+                   (cell.features == analysis::FeatureKind::Normal ? 1.0 : 2.0);
+  const bool full = cell.form == analysis::CovarianceForm::NodalFull ||
+                    cell.form == analysis::CovarianceForm::GrandFull;
+  const double perRow = full ? d * d : d;
+  const double components =
+      cell.method == analysis::ClassifierMethod::Gmm ? static_cast<double>(cell.order) : 1.0;
+  return static_cast<double>(trainRows + testRows) * components * perRow + 1.0;
+}
+
+}  // namespace
+
 void TrainingDialog::refreshTiming() {
-  // The time of a cell as the newest stored sweep measured it, for the plan's estimate.
-  secondsPerCell_ = -1;
-  timedSweep_ = 0;
+  // Calibrates the cost model on every stored cell (newest sweeps first, at most 2000 cells): the
+  // median of seconds per unit, so that one grid's estimate holds for another's.
+  secondsPerUnit_ = -1;
+  timedCells_ = 0;
+  std::vector<double> rates;
   if (auto sweeps = workspace_.sweeps(); sweeps && !sweeps->empty()) {
-    for (auto it = sweeps->rbegin(); it != sweeps->rend() && timedSweep_ == 0; ++it) {
+    for (auto it = sweeps->rbegin(); it != sweeps->rend() && rates.size() < 2000; ++it) {
       auto stored = workspace_.loadSweep(it->id);
       if (!stored) continue;
-      double total = 0;
-      int timed = 0;
       for (const analysis::SweepCellResult& c : stored->cells) {
-        if (!c.ok || !std::isfinite(c.fitSeconds + c.predictSeconds)) continue;
-        total += c.fitSeconds + c.predictSeconds;
-        ++timed;
-      }
-      if (timed > 0) {
-        secondsPerCell_ = total / timed;
-        timedSweep_ = it->id;
+        const double seconds = c.fitSeconds + c.predictSeconds;
+        if (!c.ok || !std::isfinite(seconds) || c.trainRows == 0) continue;
+        rates.push_back(seconds / cellUnits(c.cell, c.trainRows, c.testRows));
       }
     }
+  }
+  if (!rates.empty()) {
+    std::nth_element(rates.begin(), rates.begin() + static_cast<std::ptrdiff_t>(rates.size() / 2),
+                     rates.end());
+    secondsPerUnit_ = rates[rates.size() / 2];
+    timedCells_ = static_cast<int>(rates.size());
+  }
+  refreshPlan();
+}
+
+void TrainingDialog::refreshRows() {
+  trainRows_ = {};
+  testRows_ = {};
+  const std::string set = labelSet_->currentText().toStdString();
+  if (!set.empty()) {
+    if (auto t = workspace_.labelledContactSteps(set, runsWithRole(RunRole::Train)))
+      trainRows_ = t.value();
+    if (auto t = workspace_.labelledContactSteps(set, runsWithRole(RunRole::Test)))
+      testRows_ = t.value();
   }
   refreshPlan();
 }
@@ -378,22 +515,60 @@ void TrainingDialog::refreshPlan() {
                        .arg(QString::fromStdString(g.errorText()).toHtmlEscaped()));
     return;
   }
-  const auto cells = static_cast<qint64>(analysis::expandGrid(g.value()).size());
+  const std::vector<analysis::SweepCell> planned = analysis::expandGrid(g.value());
+  const auto cells = static_cast<qint64>(planned.size());
   QString text = tr("%n cell(s)", nullptr, static_cast<int>(cells));
-  if (secondsPerCell_ >= 0) {
+  const bool byRun = static_cast<workspace::SplitMode>(split_->currentData().toInt()) ==
+                     workspace::SplitMode::ByRun;
+  plannedSeconds_ = -1;
+  if (secondsPerUnit_ >= 0) {
+    // Each cell's own cost (its group's rows, its order and covariance form), spread over the
+    // threads.
+    double units = 0;
+    for (const analysis::SweepCell& cell : planned) {
+      const auto gi = static_cast<std::size_t>(groupIndex(cell.group));
+      units += cellUnits(cell, trainRows_[gi], byRun ? testRows_[gi] : 0);
+    }
     const int threads = threads_->value() > 0 ? threads_->value() : QThread::idealThreadCount();
     const double seconds =
-        secondsPerCell_ * static_cast<double>(cells) / std::max(1, std::min<int>(threads, cells));
-    text += tr(", about %1 (%2 s a cell as in sweep %3, on %n thread(s))", nullptr, threads)
+        secondsPerUnit_ * units / std::max(1, std::min<int>(threads, static_cast<int>(cells)));
+    plannedSeconds_ = seconds;
+    text += tr(", about %1 on %n thread(s) (each cell's rows, order and covariance form, timed "
+               "by %2 stored cells)",
+               nullptr, threads)
                 .arg(duration(seconds))
-                .arg(secondsPerCell_, 0, 'f', 2)
-                .arg(timedSweep_);
+                .arg(timedCells_);
   } else {
     text +=
         tr("; the time left shows once the first cells finish (no sweep is stored yet to "
            "estimate from)");
   }
   plan_->setText(text);
+  // The groups the chosen test runs cannot score: said before the sweep starts.
+  unscorableGroups_.clear();
+  QStringList none, few;
+  if (byRun && !runsWithRole(RunRole::Test).empty()) {
+    for (SensorGroup group : g->groups) {
+      const std::size_t rows = testRows_[static_cast<std::size_t>(groupIndex(group))];
+      if (rows >= analysis::kMinTestSteps) continue;
+      unscorableGroups_.push_back(group);
+      (rows == 0 ? none : few) << qs(groupInfo(group).shortName);
+    }
+  }
+  QStringList parts;
+  if (!none.isEmpty())
+    parts << tr("the test runs hold no labelled contact steps of %1")
+                 .arg(none.join(QStringLiteral(", ")));
+  if (!few.isEmpty())
+    parts << tr("too few (under %1) of %2")
+                 .arg(analysis::kMinTestSteps)
+                 .arg(few.join(QStringLiteral(", ")));
+  unscorable_->setText(parts.isEmpty() ? QString()
+                                       : tr("Cannot be scored: %1. Their cells would be fitted "
+                                            "but read \"no test data\".")
+                                             .arg(parts.join(QStringLiteral("; "))));
+  unscorable_->setVisible(!parts.isEmpty());
+  leaveOut_->setVisible(!parts.isEmpty());
   // A validation error in the status goes once the form is valid again.
   if (statusIsError_ && !worker_->isRunning() && sweepRequest()) {
     statusIsError_ = false;
@@ -615,6 +790,7 @@ void TrainingDialog::showError(const QString& message) {
 }
 
 void TrainingDialog::startSweep() {
+  rememberForm();
   auto request = sweepRequest();
   if (!request) {
     showError(QString::fromStdString(request.errorText()));
@@ -632,6 +808,7 @@ void TrainingDialog::startSweep() {
 }
 
 void TrainingDialog::startTrain() {
+  rememberForm();
   auto request = trainRequest();
   if (!request) {
     showError(QString::fromStdString(request.errorText()));

@@ -7,6 +7,7 @@
 
 #include <QDialog>
 
+#include <array>
 #include <functional>
 #include <optional>
 #include <string>
@@ -40,6 +41,10 @@ class TrainingDialog : public QDialog {
  public:
   TrainingDialog(workspace::Workspace& workspace, QString databasePath, QWidget* parent = nullptr);
   ~TrainingDialog() override;
+  // Closing remembers the label set and the grid for the next opening.
+  void done(int result) override;
+  // The plan's estimate of the sweep's seconds (-1: no stored cell to time it by).
+  double plannedSeconds() const { return plannedSeconds_; }
 
   // Re-reads label sets and runs; keeps the chosen set when it still exists.
   void reload();
@@ -87,6 +92,9 @@ class TrainingDialog : public QDialog {
   // Any job is over (ok, cancelled or failed).
   void jobFinished();
 
+ protected:
+  void closeEvent(QCloseEvent* event) override;
+
  private:
   void buildUi();
   void fillRuns();
@@ -98,6 +106,10 @@ class TrainingDialog : public QDialog {
   void showError(const QString& message);
   void refreshPlan();
   void refreshTiming();
+  // Counts the labelled contact steps of the marked runs (when the runs or the label set change).
+  void refreshRows();
+  void rememberForm() const;
+  void restoreForm();
   void showTrainResult(const LearningJobResult& result);
 
   workspace::Workspace& workspace_;
@@ -133,8 +145,17 @@ class TrainingDialog : public QDialog {
   QWidget* form_ = nullptr;
   QLabel* plan_ = nullptr;
   bool statusIsError_ = false;  // the status shows a validation or job error
-  double secondsPerCell_ = -1;  // mean time of a cell in the newest stored sweep (-1: none)
-  qint64 timedSweep_ = 0;       // that sweep
+  // The cost model of the plan's estimate: seconds per unit of work (rows x components x the
+  // covariance's cost per row), calibrated on the stored sweeps' cells (-1: none stored).
+  double secondsPerUnit_ = -1;
+  double plannedSeconds_ = -1;
+  int timedCells_ = 0;  // the stored cells it was calibrated on
+  // Labelled contact steps per group in the marked training and test runs.
+  std::array<std::size_t, kGroupCount> trainRows_{};
+  std::array<std::size_t, kGroupCount> testRows_{};
+  QLabel* unscorable_ = nullptr;     // the groups the test runs cannot score
+  QPushButton* leaveOut_ = nullptr;  // unticks them
+  std::vector<SensorGroup> unscorableGroups_;
   QStackedWidget* resultStack_ = nullptr;
   QTableWidget* trainResult_ = nullptr;
 };

@@ -11,6 +11,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <functional>
 #include <optional>
 #include <utility>
 #include <vector>
@@ -104,20 +105,28 @@ void drawBadge(QPainter& p, const QRect& area, const QString& text, bool bottom)
 // Where a label of `size` goes next to the point `at`: the first of four places around it that
 // lies inside `area` and overlaps no label already placed (then it is added to `placed`);
 // nullopt when every place is taken, so the label is left out rather than drawn over another.
+// A place for a label beside `at`: the first of the four corners, then the same a little further
+// out, that lies in `area`, overlaps no label placed before and nothing `blocked` says is in the
+// way (obstacles, the route). None: the label is left out (its mark stays).
 std::optional<QRectF> placeLabel(QPointF at, QSizeF size, const QRectF& area,
-                                 std::vector<QRectF>& placed) {
-  const std::array<QPointF, 4> corners{
-      QPointF(at.x() + 6, at.y() - 4 - size.height()), QPointF(at.x() + 6, at.y() + 4),
-      QPointF(at.x() - 6 - size.width(), at.y() - 4 - size.height()),
-      QPointF(at.x() - 6 - size.width(), at.y() + 4)};
-  for (const QPointF& c : corners) {
-    const QRectF r(c, size);
-    if (!area.contains(r)) continue;
-    if (std::any_of(placed.begin(), placed.end(),
-                    [&r](const QRectF& other) { return other.intersects(r); }))
-      continue;
-    placed.push_back(r);
-    return r;
+                                 std::vector<QRectF>& placed,
+                                 const std::function<bool(const QRectF&)>& blocked = {}) {
+  for (const double gap : {4.0, 14.0, 26.0}) {
+    const std::array<QPointF, 4> corners{
+        QPointF(at.x() + 2 + gap, at.y() - gap - size.height()),
+        QPointF(at.x() + 2 + gap, at.y() + gap),
+        QPointF(at.x() - 2 - gap - size.width(), at.y() - gap - size.height()),
+        QPointF(at.x() - 2 - gap - size.width(), at.y() + gap)};
+    for (const QPointF& c : corners) {
+      const QRectF r(c, size);
+      if (!area.contains(r)) continue;
+      if (std::any_of(placed.begin(), placed.end(),
+                      [&r](const QRectF& other) { return other.intersects(r); }))
+        continue;
+      if (blocked && blocked(r)) continue;
+      placed.push_back(r);
+      return r;
+    }
   }
   return std::nullopt;
 }
@@ -405,8 +414,25 @@ struct RouteView::Impl {
     const QFontMetricsF metrics(small);
     // Labels stay inside the view, clear of the badges at the top and bottom and of each other.
     const QRectF area =
-        QRectF(q->rect()).adjusted(2, metrics.height() + 16, -2, -(metrics.height() + 16));
+        QRectF(q->rect()).adjusted(2, metrics.height() + 16, -2, -(3 * metrics.height() + 48));
     std::vector<QRectF> placed;
+    // Labels keep off the obstacles and the route, so neither hides the other.
+    std::vector<QPolygonF> obstaclePixels;
+    for (const QPolygonF& poly : obstacles)
+      obstaclePixels.push_back(xf.qt().map(poly));
+    const QPointF routeShift(xf.tx, xf.ty);
+    auto blocked = [&](const QRectF& r) {
+      const QPolygonF box(r);
+      for (const QPolygonF& poly : obstaclePixels)
+        if (poly.boundingRect().intersects(r) && poly.intersects(box)) return true;
+      const QRectF scaled = r.translated(-routeShift);
+      for (const Chunk& c : chunks) {
+        if (!overlaps(c.box, scaled)) continue;
+        for (int i = c.pointBegin; i < c.pointEnd; ++i)
+          if (scaled.contains(points[static_cast<std::size_t>(i)])) return true;
+      }
+      return false;
+    };
     for (std::size_t i = 0; i < holes.size() && drawn < kMaxHoleMarks; ++i) {
       // The first step of a run of steps with a hole on the same side.
       bool continues = false;
@@ -420,9 +446,30 @@ struct RouteView::Impl {
       p.setBrush(QColor(255, 200, 0));
       p.drawRect(QRectF(at.x() - 3.5, at.y() - 3.5, 7, 7));
       const QString text = RouteView::tr("hole %1").arg(holes[i].widthUnits, 0, 'f', 1);
-      if (const auto box = placeLabel(at, metrics.size(0, text), area, placed))
-        p.drawText(*box, Qt::AlignLeft | Qt::AlignVCenter, text);
+      if (const auto box =
+              placeLabel(at, metrics.size(0, text) + QSizeF(4, 0), area, placed, blocked)) {
+        p.setPen(Qt::NoPen);
+        p.setBrush(QColor(255, 255, 255, 200));
+        p.drawRect(*box);
+        p.setPen(QColor(20, 20, 20));
+        p.drawText(box->adjusted(2, 0, 0, 0), Qt::AlignLeft | Qt::AlignVCenter, text);
+      }
       ++drawn;
+    }
+    // What a hole is, once, above the distance badge (as tall as its wrapped text needs).
+    if (drawn > 0) {
+      const QString legend =
+          RouteView::tr("\u25A0 hole N: a gap N units wide that the model felt on one side");
+      const QRectF room(6, 0, q->width() - 12, q->height());
+      const QRectF text = metrics.boundingRect(room, Qt::AlignLeft | Qt::TextWordWrap, legend);
+      const QRectF box(QPointF(4, q->height() - metrics.height() - 30 - text.height()),
+                       QSizeF(q->width() - 8, text.height() + 4));
+      p.setPen(Qt::NoPen);
+      p.setBrush(QColor(255, 255, 255, 210));
+      p.drawRect(box);
+      p.setPen(QColor(20, 20, 20));
+      p.drawText(box.adjusted(2, 2, -2, -2), Qt::AlignLeft | Qt::AlignVCenter | Qt::TextWordWrap,
+                 legend);
     }
     const Pose2d pose = poseAt(session->currentStep());
     const double c = std::cos(pose.theta);
@@ -492,8 +539,11 @@ struct RouteView::Impl {
 void RouteView::setPredictions(const PredictionModel* predictions) {
   if (d_->predictions != nullptr) disconnect(d_->predictions, nullptr, this, nullptr);
   d_->predictions = predictions;
-  if (predictions != nullptr)
+  if (predictions != nullptr) {
     connect(predictions, &PredictionModel::ready, this, [this] { update(); });
+    // Hide Predictions takes the holes off at once.
+    connect(predictions, &PredictionModel::changed, this, [this] { update(); });
+  }
   update();
 }
 

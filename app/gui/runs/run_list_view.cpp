@@ -34,9 +34,15 @@ RunListView::RunListView(RunListModel* model, QWidget* parent) : QWidget(parent)
   table_->setEditTriggers(QAbstractItemView::NoEditTriggers);
   table_->verticalHeader()->hide();
   table_->verticalHeader()->setDefaultSectionSize(fontMetrics().height() + 6);
-  // Columns as wide as their content, so every column fits a narrow dock.
+  // Columns as wide as their content; the run's name takes what is left and is shortened in the
+  // middle in a narrow dock, so the outcome and the labelled share are never cut off.
   table_->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
-  table_->horizontalHeader()->setStretchLastSection(true);
+  table_->horizontalHeader()->setSectionResizeMode(0, QHeaderView::Stretch);
+  table_->horizontalHeader()->setStretchLastSection(false);
+  table_->horizontalHeader()->setMinimumSectionSize(
+      fontMetrics().horizontalAdvance(QLatin1Char('M')) * 4);
+  table_->setTextElideMode(Qt::ElideMiddle);
+  table_->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
   table_->setAlternatingRowColors(true);
   layout->addWidget(filter_);
   layout->addWidget(table_);

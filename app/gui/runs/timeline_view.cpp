@@ -2,6 +2,7 @@
 
 #include <qcustomplot.h>
 #include <QMouseEvent>
+#include <QScrollArea>
 #include <QSettings>
 #include <QToolTip>
 #include <QVBoxLayout>
@@ -109,13 +110,18 @@ QCPColorGradient levelGradient(const std::vector<QColor>& colours) {
   return g;
 }
 
-QCPColorGradient valueGradient() {
+// The heat map's scale: sequential for normal force and magnitude, diverging (neutral zero) for
+// shear; the colour scale beside it shows the same.
+QCPColorGradient valueGradient(bool signedValues) {
   QCPColorGradient g;
   g.setColorInterpolation(QCPColorGradient::ciRGB);
   g.setLevelCount(256);
   QMap<double, QColor> stops;
-  for (int i = 0; i <= 6; ++i)
-    stops.insert(i / 6.0, valueColor(i / 6.0 * kMaxNormal, kMaxNormal));
+  constexpr int kStops = 32;
+  for (int i = 0; i <= kStops; ++i) {
+    const double t = static_cast<double>(i) / kStops;
+    stops.insert(t, signedValues ? signedValueColor(2.0 * t - 1.0, 1.0) : valueColor(t, 1.0));
+  }
   g.setColorStops(stops);
   return g;
 }
@@ -196,6 +202,7 @@ struct TimelineView::Impl {
   int binnedWidth = -1;
   bool replotQueued = false;
   bool inLayout = false;
+  QScrollArea* scroll = nullptr;  // holds the plot: its rows scroll when the window is short
   bool syncing = false;
 
   enum class Drag { None, Pending, Select, Edge, Pan };
@@ -578,7 +585,7 @@ QString TimelineView::predictionTipAt(QPoint widgetPos) const {
 
 void TimelineView::Impl::applyChannel() {
   const bool shear = channel == Channel::Shear;
-  scale->setGradient(valueGradient());
+  scale->setGradient(valueGradient(shear));
   scale->setDataRange(shear ? QCPRange(-kMaxShear, kMaxShear) : QCPRange(0.0, kMaxNormal));
   const std::array<QString, 3> titles{TimelineView::tr("Normal"), TimelineView::tr("Shear"),
                                       TimelineView::tr("Magnitude")};
@@ -890,8 +897,18 @@ TimelineView::TimelineView(RunSession* session, LabelModel* labels, QWidget* par
   setObjectName(QStringLiteral("timelineView"));
   auto* layout = new QVBoxLayout(this);
   layout->setContentsMargins(0, 0, 0, 0);
-  d_->plot = new QCustomPlot(this);
-  layout->addWidget(d_->plot);
+  // The plot asks for the height its rows need (with predictions on, more than a laptop screen
+  // has); the scroll area around it never does, so the window stays within the screen and the
+  // rows scroll instead.
+  d_->scroll = new QScrollArea(this);
+  d_->scroll->setObjectName(QStringLiteral("timelineScroll"));
+  d_->scroll->setFrameShape(QFrame::NoFrame);
+  d_->scroll->setWidgetResizable(true);
+  d_->scroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+  d_->scroll->setFocusPolicy(Qt::NoFocus);
+  d_->plot = new QCustomPlot(d_->scroll);
+  d_->scroll->setWidget(d_->plot);
+  layout->addWidget(d_->scroll);
   d_->build();
   d_->configureLabelRows();
   d_->applyChannel();

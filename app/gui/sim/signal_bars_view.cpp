@@ -13,7 +13,7 @@ namespace tactile::gui {
 
 SignalBarsView::SignalBarsView(SimSession* session, QWidget* parent)
     : QWidget(parent), session_(session) {
-  setMinimumHeight(120);
+  setMinimumHeight(120 + legendHeight());
   connect(session_, &SimSession::stepped, this, qOverload<>(&QWidget::update));
 }
 
@@ -27,7 +27,8 @@ QRect SignalBarsView::groupRect(SensorGroup group) const {
   double x = kGap;
   for (const GroupInfo& g : kSensorGroups) {
     const double w = unit * std::max(3, g.sensorCount);
-    if (g.group == group) return QRect(static_cast<int>(x), 4, static_cast<int>(w), height() - 8);
+    if (g.group == group)
+      return QRect(static_cast<int>(x), 4, static_cast<int>(w), height() - 8 - legendHeight());
     x += w + kGap;
   }
   return {};
@@ -69,10 +70,44 @@ void SignalBarsView::paintEvent(QPaintEvent*) {
       }
       if (sh != 0.0) {
         const double h = std::clamp(sh / kMaxShear, -1.0, 1.0) * 0.5 * shearHeight;
-        p.fillRect(QRectF(x, shearMid - std::max(h, 0.0), w, std::abs(h)), QColor(90, 90, 90));
+        p.fillRect(QRectF(x, shearMid - std::max(h, 0.0), w, std::abs(h)),
+                   signedValueColor(sh, kMaxShear));
       }
     }
   }
+  drawLegend(p);
+}
+
+int SignalBarsView::legendHeight() const {
+  return fontMetrics().height() + 6;
+}
+
+// The two scales the bars use, under them: normal force 0..5 (sequential) and shear -5..5
+// (diverging, neutral at zero).
+void SignalBarsView::drawLegend(QPainter& p) const {
+  const QFontMetrics fm(font());
+  const int y = height() - legendHeight() + 2;
+  const int h = fm.height();
+  const int half = width() / 2;
+  auto scale = [&](int left, int right, const QString& name, const QString& low,
+                   const QString& high, bool signedScale) {
+    int x = left + 6;
+    p.setPen(QColor(30, 30, 30));
+    const QString head = name + QLatin1Char(' ') + low;
+    p.drawText(QRect(x, y, fm.horizontalAdvance(head) + 2, h), Qt::AlignVCenter, head);
+    x += fm.horizontalAdvance(head) + 6;
+    const int end = right - fm.horizontalAdvance(high) - 10;
+    const int barWidth = std::max(20, end - x);
+    for (int i = 0; i < barWidth; ++i) {
+      const double t = static_cast<double>(i) / std::max(1, barWidth - 1);
+      p.fillRect(QRect(x + i, y + 3, 1, h - 6),
+                 signedScale ? signedValueColor(2.0 * t - 1.0, 1.0) : valueColor(t, 1.0));
+    }
+    p.drawText(QRect(x + barWidth + 4, y, fm.horizontalAdvance(high) + 2, h), Qt::AlignVCenter,
+               high);
+  };
+  scale(0, half, tr("normal"), QStringLiteral("0"), QStringLiteral("5"), false);
+  scale(half, width(), tr("shear"), QStringLiteral("-5"), QStringLiteral("+5"), true);
 }
 
 }  // namespace tactile::gui

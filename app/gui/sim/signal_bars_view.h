@@ -1,6 +1,7 @@
 // The current signal of the sensor array per group (thesis 2.3, part 2, figure 2.5): one panel per
 // group in the order F, FLC, L, RLC, B, RRC, R, FRC, a bar per dome: its normal value (0..5) up
-// from the base line, blue to red, and its shear (-5..5) in a thin strip below.
+// from the base line on the sequential scale of the heatmap, and its shear (-5..5) in a thin strip
+// below on the diverging scale; a legend of both scales under the panels.
 #pragma once
 
 #include <QWidget>
@@ -8,6 +9,8 @@
 #include <array>
 
 #include "run/sensor_layout.h"
+
+class QPainter;
 
 namespace tactile::gui {
 
@@ -18,7 +21,7 @@ class SignalBarsView : public QWidget {
 
  public:
   explicit SignalBarsView(SimSession* session, QWidget* parent = nullptr);
-  QSize sizeHint() const override { return {520, 150}; }
+  QSize sizeHint() const override { return {520, 170}; }
   // The panel of a group in widget coordinates (tests).
   QRect groupRect(SensorGroup group) const;
 
@@ -26,6 +29,9 @@ class SignalBarsView : public QWidget {
   void paintEvent(QPaintEvent* event) override;
 
  private:
+  int legendHeight() const;
+  void drawLegend(QPainter& p) const;
+
   SimSession* session_;
 };
 

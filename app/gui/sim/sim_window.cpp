@@ -16,12 +16,15 @@
 #include <QMenuBar>
 #include <QMessageBox>
 #include <QPushButton>
+#include <QScrollArea>
 #include <QSpinBox>
 #include <QSplitter>
 #include <QStatusBar>
 #include <QTimer>
 #include <QVBoxLayout>
 
+#include "app/gui/common/file_dialog_memory.h"
+#include "app/gui/common/window_geometry.h"
 #include "app/gui/runs/navigator_track_model.h"
 #include "app/gui/runs/navigator_view.h"
 #include "app/gui/runs/run_session_model.h"
@@ -71,7 +74,7 @@ SimWindow::SimWindow(const QString& dbPath, QWidget* parent) : QMainWindow(paren
   connect(session_, &SimSession::runEnded, this, [this](RunOutcome outcome) {
     updateControls();
     refreshDataPanel();
-    statusBar()->showMessage(tr("Run %1 ended: %2").arg(session_->runName(), outcomeText(outcome)));
+    showOutcome(outcome);
   });
   connect(session_, &SimSession::errorOccurred, this, &SimWindow::showError);
   dataTimer_ = new QTimer(this);
@@ -84,6 +87,7 @@ SimWindow::SimWindow(const QString& dbPath, QWidget* parent) : QMainWindow(paren
   updateControls();
   updateState();
   resize(1400, 900);
+  keepWithinScreen(this);
 }
 
 SimWindow::~SimWindow() {
@@ -118,9 +122,19 @@ void SimWindow::buildUi() {
   stateLabel_->setWordWrap(true);
   stateLabel_->setTextFormat(Qt::PlainText);
   errorLabel_ = new QLabel;
+  errorLabel_->setObjectName(QStringLiteral("simError"));
   errorLabel_->setStyleSheet(QStringLiteral("color: #b00000"));
   errorLabel_->setWordWrap(true);
   errorLabel_->hide();
+  // How the last run ended, large: reaching the goal is the point of a run.
+  outcomeLabel_ = new QLabel;
+  outcomeLabel_->setObjectName(QStringLiteral("outcomeLabel"));
+  QFont bold = outcomeLabel_->font();
+  bold.setPointSizeF(bold.pointSizeF() * 1.5);
+  bold.setBold(true);
+  outcomeLabel_->setFont(bold);
+  outcomeLabel_->setWordWrap(true);
+  outcomeLabel_->hide();
 
   auto* lightRow = new QHBoxLayout;
   lightRow->addWidget(lightLabel_);
@@ -148,6 +162,11 @@ void SimWindow::buildUi() {
   subjectEdit_->setObjectName(QStringLiteral("subjectEdit"));
   subjectEdit_->setPlaceholderText(tr("needed in experiment mode"));
   subjectEdit_->setMaxLength(100);
+  // An error about the missing name is stale once a name is typed.
+  connect(subjectEdit_, &QLineEdit::textChanged, this, [this](const QString& text) {
+    if (!text.trimmed().isEmpty() && errorLabel_->property("aboutSubject").toBool())
+      errorLabel_->hide();
+  });
   seedBox_ = new QSpinBox;
   seedBox_->setRange(0, 1000000);
   seedBox_->setSpecialValueText(tr("0: the scene's own"));
@@ -220,26 +239,38 @@ void SimWindow::buildUi() {
   buttons->addWidget(dataButton_, 3, 0);
   buttons->addWidget(openButton_, 3, 1);
 
+  // The run's settings and buttons come first: nothing above them changes height, so a click
+  // meant for Give Up never lands elsewhere when the state text below grows or shrinks.
   auto* side = new QWidget;
   auto* sideLayout = new QVBoxLayout(side);
-  sideLayout->addWidget(new QLabel(tr("Signal per group")));
-  sideLayout->addWidget(bars_, 2);
-  sideLayout->addLayout(lightRow);
-  sideLayout->addWidget(stateLabel_);
+  sideLayout->addWidget(setupBox);
+  sideLayout->addLayout(buttons);
+  sideLayout->addWidget(outcomeLabel_);
   sideLayout->addWidget(errorLabel_);
+  // Autonomous mode only (it shows with the mode, not with the run's state): what the navigator
+  // does, right under the buttons, where the person watching looks.
   experiment_ = new ExperimentPanel(session_);
   experimentBox_ = new QGroupBox(tr("Experiment panel"));
   auto* experimentLayout = new QVBoxLayout(experimentBox_);
   experimentLayout->addWidget(experiment_);
   sideLayout->addWidget(experimentBox_);
-  sideLayout->addWidget(setupBox);
-  sideLayout->addLayout(buttons);
+  sideLayout->addWidget(new QLabel(tr("Signal per group")));
+  sideLayout->addWidget(bars_, 2);
+  sideLayout->addLayout(lightRow);
+  sideLayout->addWidget(stateLabel_);
   sideLayout->addStretch(1);
-  side->setMinimumWidth(440);
+  // The column scrolls on a short screen instead of making the window taller than it.
+  auto* sideScroll = new QScrollArea;
+  sideScroll->setObjectName(QStringLiteral("simSideScroll"));
+  sideScroll->setFrameShape(QFrame::NoFrame);
+  sideScroll->setWidgetResizable(true);
+  sideScroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+  sideScroll->setWidget(side);
+  sideScroll->setMinimumWidth(460);
 
   auto* top = new QSplitter(Qt::Horizontal);
   top->addWidget(picture_);
-  top->addWidget(side);
+  top->addWidget(sideScroll);
   top->setStretchFactor(0, 3);
   top->setStretchFactor(1, 2);
 
@@ -339,6 +370,16 @@ Status SimWindow::makeNavigator(SimSetup& setup) {
     if (!bundle) return bundle.error();
     config.source = nav::StatusSource::Model;
     config.models = std::make_shared<const analysis::ModelBundle>(std::move(bundle.value()));
+    // A model without some groups leaves the navigator blind there: said before the run starts.
+    QStringList missing;
+    for (const GroupInfo& g : kSensorGroups)
+      if (config.models->find(g.group) == nullptr)
+        missing << QString::fromUtf8(g.shortName.data(),
+                                     static_cast<qsizetype>(g.shortName.size()));
+    if (!missing.isEmpty())
+      navigatorWarning_ = tr("Model %1 has no model for %2: the navigator reads those groups as no "
+                             "contact all run long.")
+                              .arg(model, missing.join(QStringLiteral(", ")));
   }
   config.planDrive = controlBox_->currentData().toBool();
   Result<std::unique_ptr<nav::Navigator>> made = nav::Navigator::create(std::move(config));
@@ -417,6 +458,7 @@ Status SimWindow::startRun() {
   setup.subject = subjectEdit_->text();
   setup.seed = static_cast<std::uint64_t>(seedBox_->value());
   setup.timeLimitSeconds = limitBox_->value();
+  navigatorWarning_.clear();
   if (setup.mode == SimMode::Autonomous) {
     if (Status made = makeNavigator(setup); !made) {
       showError(QString::fromStdString(made.errorText()));
@@ -426,9 +468,17 @@ Status SimWindow::startRun() {
   Status started = session_->start(setup);
   if (!started) {
     showError(QString::fromStdString(started.errorText()));
+    errorLabel_->setProperty(
+        "aboutSubject", setup.mode == SimMode::Experiment && setup.subject.trimmed().isEmpty());
     return started;
   }
   errorLabel_->hide();
+  outcomeLabel_->hide();
+  if (!navigatorWarning_.isEmpty()) {
+    errorLabel_->setText(navigatorWarning_);
+    errorLabel_->setProperty("aboutSubject", false);
+    errorLabel_->show();
+  }
   session_->setStepsPerSecond(rateBox_->value());
   shownSteps_ = 0;
   shownFinished_ = false;
@@ -600,7 +650,35 @@ void SimWindow::updateControls() {
   experimentBox_->setVisible(autonomous);
   if (session_->mode() == SimMode::Autonomous && session_->isStarted())
     pauseButton_->setText(session_->isPaused() ? tr("Play") : tr("Pause"));
+  // The status bar says what is going on now (the ended run's message stays until the next).
+  if (running) {
+    const QString name = session_->runName().isEmpty() ? tr("(not stored)") : session_->runName();
+    if (session_->mode() == SimMode::Autonomous)
+      statusBar()->showMessage(
+          session_->isPaused()
+              ? tr("Run %1 paused: Play (P) lets the navigator drive, Step (N) takes one step")
+                    .arg(name)
+              : tr("Run %1: the navigator drives; Pause (P) stops it").arg(name));
+    else
+      statusBar()->showMessage(
+          session_->isPaused()
+              ? tr("Run %1 ready: drive with the arrow keys and W, A, S, D (Help > Keys)").arg(name)
+              : tr("Run %1: driving, the clock runs; Give Up ends the run").arg(name));
+  }
   updateState();
+}
+
+void SimWindow::showOutcome(RunOutcome outcome) {
+  const QString text = outcome == RunOutcome::Success
+                           ? tr("Goal reached: run %1 succeeded in %2 s")
+                                 .arg(session_->runName())
+                                 .arg(session_->elapsedSeconds(), 0, 'f', 1)
+                           : tr("Run %1 ended: %2").arg(session_->runName(), outcomeText(outcome));
+  outcomeLabel_->setStyleSheet(outcome == RunOutcome::Success ? QStringLiteral("color: #006d2c")
+                                                              : QStringLiteral("color: #7a4a00"));
+  outcomeLabel_->setText(text);
+  outcomeLabel_->show();
+  statusBar()->showMessage(text);
 }
 
 bool SimWindow::dataPanelShown() const {
@@ -633,17 +711,20 @@ void SimWindow::refreshDataPanel() {
 }
 
 void SimWindow::chooseSceneFile() {
-  const QString file = QFileDialog::getOpenFileName(this, tr("Open Scene"), QString(),
-                                                    tr("Scenes (*.json);;All files (*)"));
+  const QString file =
+      QFileDialog::getOpenFileName(this, tr("Open Scene"), startPath(QStringLiteral("scenes")),
+                                   tr("Scenes (*.json);;All files (*)"));
+  rememberPath(QStringLiteral("scenes"), file);
   if (!file.isEmpty()) setScene(file);
 }
 
 void SimWindow::saveRunCsv() {
   const RunData* run = session_->run();
   if (run == nullptr || run->stepCount() == 0) return showError(tr("No steps recorded yet."));
-  const QString file =
-      QFileDialog::getSaveFileName(this, tr("Save Run"), QString(), tr("Run files (*.csv)"));
+  const QString file = QFileDialog::getSaveFileName(
+      this, tr("Save Run"), startPath(QStringLiteral("runs")), tr("Run files (*.csv)"));
   if (file.isEmpty()) return;
+  rememberPath(QStringLiteral("runs"), file);
   Status written = writeRunCsv(*run, file.toStdString());
   if (!written) showError(QString::fromStdString(written.errorText()));
 }

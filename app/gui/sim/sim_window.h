@@ -120,6 +120,13 @@ class SimWindow : public QMainWindow {
   void buildMenus();
   void updateState();
   void updateControls();
+  void showOutcome(RunOutcome outcome);
+
+ public:
+  // The warning shown before an autonomous run whose model lacks groups (empty: none).
+  const QString& navigatorWarning() const { return navigatorWarning_; }
+
+ private:
   void reloadModels();
   Status makeNavigator(SimSetup& setup);
   void chooseSceneFile();
@@ -142,6 +149,8 @@ class SimWindow : public QMainWindow {
   QLabel* commandLabel_ = nullptr;
   QLabel* stateLabel_ = nullptr;
   QLabel* errorLabel_ = nullptr;
+  QLabel* outcomeLabel_ = nullptr;
+  QString navigatorWarning_;  // the chosen model's missing groups, shown when a run starts
   QComboBox* modeBox_ = nullptr;
   QComboBox* modelBox_ = nullptr;
   QComboBox* controlBox_ = nullptr;  // plan drive, or the thesis strategies (wall following)
