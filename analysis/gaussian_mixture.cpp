@@ -118,25 +118,6 @@ bool GaussianMixture::buildCache(std::string* error) {
   return true;
 }
 
-void GaussianMixture::weightedComponentLogDensities(const Eigen::MatrixXd& samples,
-                                                    Eigen::MatrixXd& out) const {
-  const Eigen::Index n = samples.rows();
-  const int k = components();
-  const int d = dimension();
-  out.resize(n, k);
-  if (k == 0 || n == 0) return;
-  const int ld = static_cast<int>(kDensityBlockRows);
-  Eigen::MatrixXd xb = Eigen::MatrixXd::Zero(kDensityBlockRows, d);
-  Eigen::MatrixXd logp(kDensityBlockRows, k);
-  for (Eigen::Index start = 0; start < n; start += kDensityBlockRows) {
-    const Eigen::Index b = std::min(kDensityBlockRows, n - start);
-    xb.topRows(b) = samples.middleRows(start, b).rowwise() - centre_.transpose();
-    blockComponentLogDensities(cache_, xb.data(), kDensityBlockRows, paddedRows(b), logp.data(),
-                               ld);
-    out.middleRows(start, b) = logp.topRows(b);
-  }
-}
-
 void GaussianMixture::logDensities(const Eigen::MatrixXd& samples, Eigen::VectorXd& out) const {
   const Eigen::Index n = samples.rows();
   const int k = components();

@@ -904,10 +904,6 @@ Result<ModelBundle> readModelFile(const std::filesystem::path& path) {
   return parseModelJson(text.value(), path.string());
 }
 
-Status writeModelFile(const std::filesystem::path& path, const GroupModel& model) {
-  return writeFileAtomically(path, dumpJson(modelToJson(model), 1) + "\n");
-}
-
 Status writeModelBundleFile(const std::filesystem::path& path, const ModelBundle& bundle) {
   return writeFileAtomically(path, dumpJson(bundleToJson(bundle), 1) + "\n");
 }

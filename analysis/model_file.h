@@ -103,8 +103,7 @@ Result<ModelBundle> parseModelJson(std::string_view text, std::string_view fileN
 Result<ModelBundle> modelsFromJson(const nlohmann::json& value, std::string_view fileName);
 Result<ModelBundle> readModelFile(const std::filesystem::path& path);
 
-// Writes atomically; a bundle of exactly one model is still written as a bundle.
-Status writeModelFile(const std::filesystem::path& path, const GroupModel& model);
+// Writes atomically.
 Status writeModelBundleFile(const std::filesystem::path& path, const ModelBundle& bundle);
 
 }  // namespace tactile::analysis
