@@ -1,6 +1,3 @@
-// GCC 12 reports false -Wmaybe-uninitialized inside Eigen's AVX-512 kernels at -O3.
-#pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
-
 // A Gaussian mixture's parameters and densities (docs/learning.md). Densities are evaluated in log
 // space, in a frame centred on the weighted mean of the component means, through the kernels of
 // analysis/gmm_kernels.h.

@@ -1,6 +1,3 @@
-// GCC 12 reports false -Wmaybe-uninitialized inside Eigen's AVX-512 kernels at -O3.
-#pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
-
 // EM for Gaussian mixtures (thesis 4.4), blocked and multi-threaded.
 //
 // Numerical scheme (see docs/learning.md):
