@@ -44,7 +44,7 @@ bool parallelForIndices(std::size_t count, unsigned threads,
   };
   {
     const unsigned n = workerThreadCount(threads, count);
-    // Declared before the helpers are started, joined when the block ends (exceptions included).
+    // The helpers are joined when the block ends; the caller's own share never throws out of it.
     BackgroundWorkers helpers(n - 1, work, failure);
     failure.capture(work);
   }
