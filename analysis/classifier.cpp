@@ -1,6 +1,3 @@
-// GCC 12 reports false -Wmaybe-uninitialized inside Eigen's AVX-512 kernels at -O3.
-#pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
-
 #include "analysis/classifier.h"
 
 #include <Eigen/Dense>
@@ -16,7 +13,7 @@
 #include <thread>
 
 #include "analysis/gaussian.h"
-#include "base/worker_threads.h"
+#include "base/parallel.h"
 
 namespace tactile::analysis {
 
@@ -252,7 +249,6 @@ ClassifierFit trainClassifier(const std::vector<Eigen::MatrixXd>& samplesPerClas
   fit.trainMeanLogLikelihood.assign(classes, 0.0);
   fit.droppedComponents.assign(classes, 0);
   fit.likelihoodDrop.assign(classes, 0.0);
-  std::atomic<std::size_t> next{0};
   std::atomic<bool> cancelled{false};
   std::mutex progressMutex;
   std::size_t done = 0;
@@ -315,21 +311,13 @@ ClassifierFit trainClassifier(const std::vector<Eigen::MatrixXd>& samplesPerClas
     ++done;
     if (!cancelled.load() && progress && !progress(done, taskCount)) cancelled = true;
   };
-  const auto worker = [&] {
-    while (!cancelled.load()) {
-      const std::size_t i = next.fetch_add(1);
-      if (i >= taskCount) break;
-      runTask(order[i]);
-    }
-  };
-
   const auto start = std::chrono::steady_clock::now();
-  if (workers == 1) {
-    worker();
-  } else {
-    // An exception in any worker (out of memory) reaches the caller after every worker stopped.
-    runWorkers(static_cast<unsigned>(workers), worker);
-  }
+  // An exception in any fit (out of memory) reaches the caller after every worker stopped.
+  parallelFor(taskCount, static_cast<unsigned>(workers), [&](std::size_t i) {
+    if (cancelled.load()) return false;
+    runTask(order[i]);
+    return !cancelled.load();
+  });
   fit.fitSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   if (cancelled.load()) return fail("cancelled");
   for (char c : converged)

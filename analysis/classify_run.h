@@ -52,8 +52,6 @@ struct GroupClassification {
   std::string className(std::size_t step) const;
   // The per-step argmax (the decision without memory), same conventions.
   std::string stepClassName(std::size_t step) const;
-  // Same as className (older name).
-  std::string decidedName(std::size_t step) const { return className(step); }
   // The name of entry `step` of any decision list.
   std::string nameOf(const Decisions& decisions, std::size_t step) const;
 };

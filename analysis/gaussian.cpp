@@ -1,6 +1,3 @@
-// GCC 12 reports false -Wmaybe-uninitialized inside Eigen's AVX-512 kernels at -O3.
-#pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
-
 #include "analysis/gaussian.h"
 
 #include <Eigen/Eigenvalues>

@@ -1,6 +1,3 @@
-// GCC 12 reports false -Wmaybe-uninitialized inside Eigen's AVX-512 kernels at -O3.
-#pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
-
 // A Gaussian mixture's parameters and densities (docs/learning.md). Densities are evaluated in log
 // space, in a frame centred on the weighted mean of the component means, through the kernels of
 // analysis/gmm_kernels.h.
@@ -116,25 +113,6 @@ bool GaussianMixture::buildCache(std::string* error) {
     return false;
   }
   return true;
-}
-
-void GaussianMixture::weightedComponentLogDensities(const Eigen::MatrixXd& samples,
-                                                    Eigen::MatrixXd& out) const {
-  const Eigen::Index n = samples.rows();
-  const int k = components();
-  const int d = dimension();
-  out.resize(n, k);
-  if (k == 0 || n == 0) return;
-  const int ld = static_cast<int>(kDensityBlockRows);
-  Eigen::MatrixXd xb = Eigen::MatrixXd::Zero(kDensityBlockRows, d);
-  Eigen::MatrixXd logp(kDensityBlockRows, k);
-  for (Eigen::Index start = 0; start < n; start += kDensityBlockRows) {
-    const Eigen::Index b = std::min(kDensityBlockRows, n - start);
-    xb.topRows(b) = samples.middleRows(start, b).rowwise() - centre_.transpose();
-    blockComponentLogDensities(cache_, xb.data(), kDensityBlockRows, paddedRows(b), logp.data(),
-                               ld);
-    out.middleRows(start, b) = logp.topRows(b);
-  }
 }
 
 void GaussianMixture::logDensities(const Eigen::MatrixXd& samples, Eigen::VectorXd& out) const {

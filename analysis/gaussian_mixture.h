@@ -76,8 +76,6 @@ class GaussianMixture {
   // x[r + j * ldx]) into out[0 .. rows): the same arithmetic as logDensities, bit for bit.
   void blockLogDensities(const double* x, Eigen::Index ldx, Eigen::Index rows, double* out,
                          BlockScratch& scratch) const;
-  // log w_i + log N(x_n | mu_i, Sigma_i) for every row and component: out is N x K.
-  void weightedComponentLogDensities(const Eigen::MatrixXd& samples, Eigen::MatrixXd& out) const;
   // Posterior p(i | x) of each component for one sample (sums to 1; computed in log space).
   Eigen::VectorXd responsibilities(const Eigen::Ref<const Eigen::VectorXd>& x) const;
   // Mean over rows of log p(x_n), in nats (held-out score).

@@ -1,6 +1,3 @@
-// GCC 12 reports false -Wmaybe-uninitialized inside Eigen's AVX-512 kernels at -O3.
-#pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
-
 // EM for Gaussian mixtures (thesis 4.4), blocked and multi-threaded.
 //
 // Numerical scheme (see docs/learning.md):
@@ -25,7 +22,7 @@
 
 #include "analysis/gaussian.h"
 #include "analysis/kmeans.h"
-#include "analysis/parallel.h"
+#include "base/parallel.h"
 
 namespace tactile::analysis {
 
@@ -182,7 +179,7 @@ Chunking makeChunking(Eigen::Index n) {
 // Runs f(chunk) for every chunk on `threads` threads (the calling thread is one of them).
 template <class F>
 void forEachChunk(int chunks, int threads, F&& f) {
-  parallelFor(chunks, threads, [&](int c) { f(c); });
+  pooledParallelFor(chunks, threads, [&](int c) { f(c); });
 }
 
 // One E-step pass over the centred data: log-likelihood, and if withMoments the M-step statistics

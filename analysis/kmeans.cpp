@@ -1,10 +1,7 @@
-// GCC 12 reports false -Wmaybe-uninitialized inside Eigen's AVX-512 kernels at -O3.
-#pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
-
 #include "analysis/kmeans.h"
 
 #include "analysis/gmm_kernels.h"
-#include "analysis/parallel.h"
+#include "base/parallel.h"
 
 #include <Eigen/Dense>
 
@@ -28,8 +25,9 @@ void forEachBlockGroup(Eigen::Index rows, Eigen::Index blocks, int threads, F&& 
   if (rows < kMinRowsForThreads) threads = 1;
   constexpr Eigen::Index kBlocksPerPart = 4;
   const int parts = static_cast<int>((blocks + kBlocksPerPart - 1) / kBlocksPerPart);
-  parallelFor(parts, threads,
-              [&](int p) { f(p * kBlocksPerPart, std::min(blocks, (p + 1) * kBlocksPerPart)); });
+  pooledParallelFor(parts, threads, [&](int p) {
+    f(p * kBlocksPerPart, std::min(blocks, (p + 1) * kBlocksPerPart));
+  });
 }
 }  // namespace
 
@@ -151,7 +149,7 @@ int lloydIterations(const Eigen::Ref<const Eigen::MatrixXd>& samples, Eigen::Mat
   Eigen::VectorXd counts(k);
   const int partThreads = n < kMinRowsForThreads ? 1 : threads;
   while (done < iterations) {
-    parallelFor(parts, partThreads, [&](int p) {
+    pooledParallelFor(parts, partThreads, [&](int p) {
       Eigen::MatrixXd& ps = partSums[static_cast<std::size_t>(p)];
       Eigen::VectorXd& pc = partCounts[static_cast<std::size_t>(p)];
       ps.setZero(k, d);

@@ -5,7 +5,6 @@
 #include <limits>
 #include <set>
 
-#include "analysis/training.h"  // confusion and contact-pattern JSON
 #include "base/file_text.h"
 #include "base/text_rules.h"
 #include "run/json_text.h"
@@ -14,6 +13,85 @@
 namespace tactile::analysis {
 
 using nlohmann::json;
+
+json confusionToJson(const ConfusionMatrix& confusion) {
+  json out;
+  const std::vector<ContactClass> classes = confusion.activeClasses();
+  json names = json::array();
+  for (ContactClass c : classes)
+    names.push_back(contactClassName(c));
+  json counts = json::array();
+  for (ContactClass t : classes) {
+    json row = json::array();
+    for (ContactClass p : classes)
+      row.push_back(confusion.count(t, p));
+    counts.push_back(std::move(row));
+  }
+  out["classes"] = std::move(names);
+  out["counts"] = std::move(counts);
+  return out;
+}
+
+bool confusionFromJson(const json& value, ConfusionMatrix& out) {
+  out = ConfusionMatrix();
+  if (!value.is_object() || !value.contains("classes") || !value.contains("counts")) return false;
+  const json& names = value["classes"];
+  const json& counts = value["counts"];
+  if (!names.is_array() || !counts.is_array() || counts.size() != names.size()) return false;
+  std::vector<ContactClass> classes;
+  for (const json& n : names) {
+    if (!n.is_string()) return false;
+    const auto c = parseContactClass(n.get<std::string>());
+    if (!c) return false;
+    classes.push_back(*c);
+  }
+  for (std::size_t t = 0; t < classes.size(); ++t) {
+    if (!counts[t].is_array() || counts[t].size() != classes.size()) return false;
+    for (std::size_t p = 0; p < classes.size(); ++p) {
+      if (!counts[t][p].is_number_unsigned()) return false;
+      out.add(classes[t], classes[p], counts[t][p].get<std::size_t>());
+    }
+  }
+  return true;
+}
+
+json patternsToJson(const ContactPatternTable& patterns) {
+  json rows = json::array();
+  for (const ContactPatternRow& r : patterns.rows) {
+    json row;
+    row["pattern"] = r.pattern;
+    row["truth"] = contactClassName(r.truth);
+    json predicted = json::object();
+    for (int c = 0; c < kContactClassCount; ++c) {
+      if (r.predicted[static_cast<std::size_t>(c)] > 0) {
+        predicted[std::string(kContactClassNames[static_cast<std::size_t>(c)])] =
+            r.predicted[static_cast<std::size_t>(c)];
+      }
+    }
+    row["predicted"] = std::move(predicted);
+    rows.push_back(std::move(row));
+  }
+  return rows;
+}
+
+bool patternsFromJson(const json& value, SensorGroup group, ContactPatternTable& out) {
+  out = ContactPatternTable{};
+  out.group = group;
+  if (!value.is_array()) return false;
+  for (const json& r : value) {
+    if (!r.is_object()) return false;
+    const auto truth = parseContactClass(r.value("truth", ""));
+    if (!truth || !r.contains("predicted") || !r["predicted"].is_object()) return false;
+    ContactPatternRow row{r.value("pattern", ""), *truth, {}};
+    for (auto it = r["predicted"].begin(); it != r["predicted"].end(); ++it) {
+      const auto p = parseContactClass(it.key());
+      if (!p || !it.value().is_number_unsigned()) return false;
+      row.predicted[static_cast<std::size_t>(*p)] = it.value().get<std::size_t>();
+    }
+    out.rows.push_back(std::move(row));
+  }
+  return true;
+}
 
 namespace {
 
@@ -824,10 +902,6 @@ Result<ModelBundle> readModelFile(const std::filesystem::path& path) {
   Result<std::string> text = readFileText(path);
   if (!text) return text.error();
   return parseModelJson(text.value(), path.string());
-}
-
-Status writeModelFile(const std::filesystem::path& path, const GroupModel& model) {
-  return writeFileAtomically(path, dumpJson(modelToJson(model), 1) + "\n");
 }
 
 Status writeModelBundleFile(const std::filesystem::path& path, const ModelBundle& bundle) {

@@ -88,6 +88,14 @@ nlohmann::json bundleProvenanceToJson(const ModelBundle& bundle);
 nlohmann::json bundleMetricsToJson(const ModelBundle& bundle);
 nlohmann::json bundleToJson(const ModelBundle& bundle);
 
+// The scores a model file keeps, as JSON. A confusion is {"classes":[...],"counts":[[...]]}
+// over its active classes; the reader is false on a malformed value.
+nlohmann::json confusionToJson(const ConfusionMatrix& confusion);
+bool confusionFromJson(const nlohmann::json& value, ConfusionMatrix& out);
+// [{"pattern","truth","predicted":{class: n}}]; the reader is false on a malformed value.
+nlohmann::json patternsToJson(const ContactPatternTable& patterns);
+bool patternsFromJson(const nlohmann::json& value, SensorGroup group, ContactPatternTable& out);
+
 // Parses model or bundle text. fileName names the source in errors: "FILE: path.to.field: what is
 // wrong", or "FILE:LINE: invalid JSON: ..." for a syntax error.
 Result<ModelBundle> parseModelJson(std::string_view text, std::string_view fileName);
@@ -95,8 +103,7 @@ Result<ModelBundle> parseModelJson(std::string_view text, std::string_view fileN
 Result<ModelBundle> modelsFromJson(const nlohmann::json& value, std::string_view fileName);
 Result<ModelBundle> readModelFile(const std::filesystem::path& path);
 
-// Writes atomically; a bundle of exactly one model is still written as a bundle.
-Status writeModelFile(const std::filesystem::path& path, const GroupModel& model);
+// Writes atomically.
 Status writeModelBundleFile(const std::filesystem::path& path, const ModelBundle& bundle);
 
 }  // namespace tactile::analysis

@@ -9,8 +9,8 @@
 #include <thread>
 
 #include "analysis/training.h"
+#include "base/parallel.h"
 #include "base/text_rules.h"
-#include "base/worker_threads.h"
 #include "run/json_text.h"
 
 namespace tactile::analysis {
@@ -242,14 +242,11 @@ SweepResult runSweep(const std::vector<LabelledRun>& train, const std::vector<La
   std::stable_sort(order.begin(), order.end(),
                    [&cost](std::size_t a, std::size_t b) { return cost[a] > cost[b]; });
 
-  int threads =
-      options.threads > 0 ? options.threads : static_cast<int>(std::thread::hardware_concurrency());
-  threads =
-      std::max(1, std::min<int>(threads, static_cast<int>(std::max<std::size_t>(jobs.size(), 1))));
-  result.threads = threads;
+  const unsigned threads =
+      workerThreadCount(static_cast<unsigned>(std::max(options.threads, 0)), jobs.size());
+  result.threads = static_cast<int>(threads);
 
   std::vector<std::optional<SweepCellResult>> slots(cells.size());
-  std::atomic<std::size_t> next{0};
   std::atomic<bool> cancel{false};
   std::mutex progressMutex;
   std::size_t done = 0;
@@ -264,30 +261,27 @@ SweepResult runSweep(const std::vector<LabelledRun>& train, const std::vector<La
     return !cancel.load();
   };
 
-  auto worker = [&]() {
-    while (!cancel.load()) {
-      const std::size_t k = next.fetch_add(1);
-      if (k >= order.size()) return;
-      const std::vector<std::size_t>& job = jobs[order[k]];
-      std::vector<SweepCell> jobCells;
-      for (std::size_t i : job)
-        jobCells.push_back(cells[i]);
-      const SweepCell& first = jobCells.front();
-      std::vector<SweepCellResult> rs =
-          runCells(jobCells, grid, shared.at(dataKey(first.group, first.features)), keepGoing);
-      // A fit stopped by cancellation is not a result.
-      if (cancel.load() && !rs.front().ok) return;
-      std::lock_guard<std::mutex> lock(progressMutex);
-      for (std::size_t n = 0; n < job.size(); ++n) {
-        slots[job[n]] = rs[n];
-        ++done;
-        if (options.onCell) options.onCell(rs[n]);
-      }
-      if (!cancel.load() && progress && !progress(done, cells.size())) cancel = true;
+  // An exception in any job (out of memory) reaches the caller after every worker has stopped.
+  parallelFor(order.size(), threads, [&](std::size_t k) {
+    if (cancel.load()) return false;
+    const std::vector<std::size_t>& job = jobs[order[k]];
+    std::vector<SweepCell> jobCells;
+    for (std::size_t i : job)
+      jobCells.push_back(cells[i]);
+    const SweepCell& first = jobCells.front();
+    std::vector<SweepCellResult> rs =
+        runCells(jobCells, grid, shared.at(dataKey(first.group, first.features)), keepGoing);
+    // A fit stopped by cancellation is not a result.
+    if (cancel.load() && !rs.front().ok) return false;
+    std::lock_guard<std::mutex> lock(progressMutex);
+    for (std::size_t n = 0; n < job.size(); ++n) {
+      slots[job[n]] = rs[n];
+      ++done;
+      if (options.onCell) options.onCell(rs[n]);
     }
-  };
-  // An exception in any worker (out of memory) reaches the caller after every worker has stopped.
-  runWorkers(static_cast<unsigned>(std::max(threads, 1)), worker);
+    if (!cancel.load() && progress && !progress(done, cells.size())) cancel = true;
+    return !cancel.load();
+  });
 
   result.cancelled = cancel.load();
   for (std::optional<SweepCellResult>& s : slots) {

@@ -113,13 +113,6 @@ GroupEvaluation evaluateClassifier(const ClassModelSet& classifier,
 std::vector<std::string> rowPatterns(const GroupDataSet& data,
                                      const std::vector<LabelledRun>& runs);
 
-nlohmann::json confusionToJson(const ConfusionMatrix& confusion);
-// Reads {"classes":[...],"counts":[[...]]}; false on a malformed value.
-bool confusionFromJson(const nlohmann::json& value, ConfusionMatrix& out);
-// [{"pattern","truth","predicted":{class: n}}]; the reader is false on a malformed value.
-nlohmann::json patternsToJson(const ContactPatternTable& patterns);
-bool patternsFromJson(const nlohmann::json& value, SensorGroup group, ContactPatternTable& out);
-
 // ---- the one training recipe: `tactile train` (run files and database) and the workbench ----
 
 // How a model is scored.

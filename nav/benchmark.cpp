@@ -11,7 +11,7 @@
 #include <random>
 #include <thread>
 
-#include "base/worker_threads.h"
+#include "base/parallel.h"
 #include "nav/astar.h"
 #include "nav/navigate.h"
 #include "run/run_csv.h"
@@ -94,86 +94,78 @@ Result<BenchmarkResult> runMapBenchmark(const BenchmarkOptions& options,
   std::vector<std::once_flag> made(maps);
   std::string firstError;
   std::mutex mutex;
-  std::atomic<std::size_t> next{0};
   std::atomic<std::size_t> done{0};
   std::atomic<bool> stop{false};
-  const auto worker = [&] {
-    while (!stop) {
-      const std::size_t j = next.fetch_add(1);
-      if (j >= jobs) return;
-      const std::size_t m = j / sources.size();
-      std::call_once(made[m], [&] {
-        auto c = benchmarkCase(mapSeed(options.seed, m));
-        if (c) {
-          cases[m] = std::move(c.value());
-        } else {
-          std::lock_guard lock(mutex);
-          if (firstError.empty()) firstError = c.errorText();
-          stop = true;
-        }
-      });
-      if (!cases[m]) return;
-      const MapCase& mc = *cases[m];
-      NavigatorConfig config;
-      config.source = sources[j % sources.size()];
-      config.models = options.models;
-      config.touchMap = options.touchMap;
-      config.planDrive = options.planDrive;
-      NavigateOptions no;
-      no.maxSteps = mapStepBudget(mc.astarUnits, config.cruiseUnitsPerSecond * no.sim.dtSeconds,
-                                  options.maxSteps);
-      no.seed = mapSeed(options.seed, m);
-      const auto r0 = std::chrono::steady_clock::now();
-      const bool record = !options.outDir.empty();
-      auto r = navigate(mc.world, mc.world->scene().name, mc.start, mc.goal, config, no, record);
-      if (!r) {
+  // Job j runs map j / sources.size() with source j % sources.size(); an exception in any job (out
+  // of memory) reaches the caller after every worker stopped.
+  parallelFor(jobs, options.threads, [&](std::size_t j) {
+    const std::size_t m = j / sources.size();
+    std::call_once(made[m], [&] {
+      auto c = benchmarkCase(mapSeed(options.seed, m));
+      if (c) {
+        cases[m] = std::move(c.value());
+      } else {
         std::lock_guard lock(mutex);
-        if (firstError.empty()) firstError = r.errorText();
+        if (firstError.empty()) firstError = c.errorText();
         stop = true;
-        return;
       }
-      if (record) {
-        char name[96];
-        std::snprintf(name, sizeof name, "benchmark_%s_%llu.csv",
-                      std::string(statusSourceName(config.source)).c_str(),
-                      static_cast<unsigned long long>(no.seed));
-        const Status written = writeRunCsv(r->run, std::filesystem::path(options.outDir) / name);
-        r->run = RunData();
-        if (!written) {
-          std::lock_guard lock(mutex);
-          if (firstError.empty()) firstError = written.errorText();
-          stop = true;
-          return;
-        }
-      }
-      Outcome& o = results[j];
-      o.outcome = r->outcome;
-      o.ratio = r->pathLengthUnits / mc.astarUnits;
-      o.steps = static_cast<double>(r->steps);
-      o.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - r0).count();
-      o.run.mapSeed = no.seed;
-      o.run.outcome = r->outcome;
-      o.run.steps = r->steps;
-      o.run.budget = no.maxSteps;
-      o.run.pathRatio = o.ratio;
-      o.run.blockedSteps = r->blockedSteps;
-      o.run.strategySteps = r->strategySteps;
-      o.run.checkContactStarts = r->checkContactStarts;
-      o.run.closestGoalUnits = r->closestGoalUnits;
-      o.run.finalGoalUnits = r->finalGoalUnits;
-      const std::size_t n = ++done;
-      if (progress) {
+    });
+    if (!cases[m]) return false;
+    const MapCase& mc = *cases[m];
+    NavigatorConfig config;
+    config.source = sources[j % sources.size()];
+    config.models = options.models;
+    config.touchMap = options.touchMap;
+    config.planDrive = options.planDrive;
+    NavigateOptions no;
+    no.maxSteps = mapStepBudget(mc.astarUnits, config.cruiseUnitsPerSecond * no.sim.dtSeconds,
+                                options.maxSteps);
+    no.seed = mapSeed(options.seed, m);
+    const auto r0 = std::chrono::steady_clock::now();
+    const bool record = !options.outDir.empty();
+    auto r = navigate(mc.world, mc.world->scene().name, mc.start, mc.goal, config, no, record);
+    if (!r) {
+      std::lock_guard lock(mutex);
+      if (firstError.empty()) firstError = r.errorText();
+      stop = true;
+      return false;
+    }
+    if (record) {
+      char name[96];
+      std::snprintf(name, sizeof name, "benchmark_%s_%llu.csv",
+                    std::string(statusSourceName(config.source)).c_str(),
+                    static_cast<unsigned long long>(no.seed));
+      const Status written = writeRunCsv(r->run, std::filesystem::path(options.outDir) / name);
+      r->run = RunData();
+      if (!written) {
         std::lock_guard lock(mutex);
-        if (!progress(n, jobs)) stop = true;
+        if (firstError.empty()) firstError = written.errorText();
+        stop = true;
+        return false;
       }
     }
-  };
-  unsigned threads =
-      options.threads == 0 ? std::max(1u, std::thread::hardware_concurrency()) : options.threads;
-  threads =
-      static_cast<unsigned>(std::min<std::size_t>({threads, 256u, std::max<std::size_t>(jobs, 1)}));
-  // An exception in any worker (out of memory) reaches the caller after every worker stopped.
-  runWorkers(threads, worker);
+    Outcome& o = results[j];
+    o.outcome = r->outcome;
+    o.ratio = r->pathLengthUnits / mc.astarUnits;
+    o.steps = static_cast<double>(r->steps);
+    o.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - r0).count();
+    o.run.mapSeed = no.seed;
+    o.run.outcome = r->outcome;
+    o.run.steps = r->steps;
+    o.run.budget = no.maxSteps;
+    o.run.pathRatio = o.ratio;
+    o.run.blockedSteps = r->blockedSteps;
+    o.run.strategySteps = r->strategySteps;
+    o.run.checkContactStarts = r->checkContactStarts;
+    o.run.closestGoalUnits = r->closestGoalUnits;
+    o.run.finalGoalUnits = r->finalGoalUnits;
+    const std::size_t n = ++done;
+    if (progress) {
+      std::lock_guard lock(mutex);
+      if (!progress(n, jobs)) stop = true;
+    }
+    return !stop;
+  });
   if (!firstError.empty()) return Error(firstError);
   if (done < jobs) return Error("cancelled");
 

@@ -15,9 +15,9 @@
 #include <unordered_map>
 
 #include "base/file_text.h"
+#include "base/parallel.h"
 #include "base/text_parse.h"
 #include "base/text_rules.h"
-#include "base/worker_threads.h"
 
 namespace tactile {
 namespace {
@@ -818,13 +818,8 @@ RunCsvResult parseRunCsvParallel(std::string_view text, std::string_view fileNam
   const RunCsvChunks chunks(text, fileName, chunkBytes);
   if (const Error* e = chunks.error()) return *e;
   std::vector<std::optional<RunCsvResult>> parsed(chunks.size());
-  std::atomic<std::size_t> next{0};
-  auto work = [&] {
-    for (std::size_t i = next++; i < chunks.size(); i = next++)
-      parsed[i].emplace(chunks.parse(i));
-  };
-  threads = std::clamp<unsigned>(threads, 1, static_cast<unsigned>(chunks.size()));
-  runWorkers(threads, work);
+  parallelFor(chunks.size(), std::max(threads, 1u),
+              [&](std::size_t i) { parsed[i].emplace(chunks.parse(i)); });
   std::vector<RunCsvResult> parts;
   parts.reserve(parsed.size());
   for (auto& part : parsed)

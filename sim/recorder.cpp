@@ -7,7 +7,7 @@
 #include <thread>
 #include <vector>
 
-#include "base/worker_threads.h"
+#include "base/parallel.h"
 #include "sim/scene_source.h"
 
 namespace tactile::sim {
@@ -157,46 +157,32 @@ Status simulateBatch(std::shared_ptr<const World> world, std::string_view sceneN
   if (runs > kMaxRunsPerBatch) {
     return Error("at most " + std::to_string(kMaxRunsPerBatch) + " runs");
   }
-  if (threads == 0) threads = std::max(1u, std::thread::hardware_concurrency());
-  threads = std::min(threads, 256u);
-  threads = static_cast<unsigned>(std::min<std::size_t>(threads, std::max<std::size_t>(runs, 1)));
-  std::atomic<std::size_t> nextRun{0};
-  std::atomic<bool> stop{false};
   std::mutex mutex;
   std::size_t done = 0;
   std::string firstError;
   const auto fail = [&](std::string error) {
     std::lock_guard lock(mutex);
     if (firstError.empty()) firstError = std::move(error);
-    stop = true;
+    return false;
   };
-  const auto worker = [&] {
-    while (!stop) {
-      const std::size_t i = nextRun.fetch_add(1);
-      if (i >= runs) return;
-      RunOptions mine = options;
-      mine.seed = options.seed + i;
-      RunResult result = simulateRun(world, sceneName, mine);
-      if (!result.ok()) {
-        fail("run " + std::to_string(i) + ": " + result.errorText());
-        return;
-      }
-      if (sink) {
-        if (const Status stored = sink(i, result.value()); !stored) {
-          fail(stored.errorText());
-          return;
-        }
-      }
-      std::lock_guard lock(mutex);
-      ++done;
-      if (progress && !progress(done, runs)) {
-        if (firstError.empty()) firstError = "cancelled";
-        stop = true;
-      }
+  // Each run's seed follows from its index. An exception in any run (out of memory) reaches the
+  // caller after every worker stopped.
+  parallelFor(runs, threads, [&](std::size_t i) {
+    RunOptions mine = options;
+    mine.seed = options.seed + i;
+    RunResult result = simulateRun(world, sceneName, mine);
+    if (!result.ok()) return fail("run " + std::to_string(i) + ": " + result.errorText());
+    if (sink) {
+      if (const Status stored = sink(i, result.value()); !stored) return fail(stored.errorText());
     }
-  };
-  // An exception in any worker (out of memory) reaches the caller after every worker stopped.
-  runWorkers(threads, worker);
+    std::lock_guard lock(mutex);
+    ++done;
+    if (progress && !progress(done, runs)) {
+      if (firstError.empty()) firstError = "cancelled";
+      return false;
+    }
+    return true;
+  });
   if (!firstError.empty()) return Error(firstError);
   return Status::success();
 }

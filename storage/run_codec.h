@@ -88,7 +88,6 @@ class EncodedBlobs {
   std::size_t size() const { return offsets_.size() - 1; }
   const unsigned char* data(std::size_t i) const { return bytes_.data() + offsets_[i]; }
   std::size_t bytes(std::size_t i) const { return offsets_[i + 1] - offsets_[i]; }
-  std::size_t totalBytes() const { return bytes_.size(); }
 
  private:
   std::vector<unsigned char> bytes_;

@@ -13,7 +13,7 @@
 #include <unordered_set>
 
 #include "base/file_text.h"
-#include "base/worker_threads.h"
+#include "base/parallel.h"
 #include "run/run_csv.h"
 #include "storage/import_pieces.h"
 
@@ -238,18 +238,18 @@ std::vector<ImportOutcome> RunStore::importFiles(const std::vector<std::filesyst
     }
     changed.notify_all();
   };
+  // The exception is kept before the others (and the writer) are woken, so they see failed().
   auto worker = [&] {
     if (!workerFailure.capture(workerLoop)) stopWorkers();
   };
-  std::vector<std::thread> workers;
+  BackgroundWorkers workers(threads, worker, workerFailure);
   // Stops and joins the workers on every way out, exceptions included.
   struct Joiner {
-    std::vector<std::thread>& threads;
+    BackgroundWorkers& workers;
     const std::function<void()> stop;
     void join() {
       stop();
-      for (std::thread& t : threads)
-        if (t.joinable()) t.join();
+      workers.join();
     }
     ~Joiner() { join(); }
   } joiner{workers, stopWorkers};
@@ -258,8 +258,8 @@ std::vector<ImportOutcome> RunStore::importFiles(const std::vector<std::filesyst
     joiner.join();
     workerFailure.rethrow();
   };
-  for (unsigned t = 0; t < threads; ++t)
-    workers.emplace_back(worker);
+  // A thread that could not be started: the ones that did are stopped and joined first.
+  if (workerFailure.failed()) throwWorkerFailure();
 
   bool cancelled = false;
   for (std::size_t i = 0; i < files.size(); ++i) {

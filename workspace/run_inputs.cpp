@@ -29,4 +29,15 @@ Result<RunInputs> expandRunInputs(const std::vector<fs::path>& inputs) {
   return out;
 }
 
+Result<RunImport> importRunInputs(storage::RunDatabase& db, const std::vector<fs::path>& inputs,
+                                  const storage::ImportOptions& options,
+                                  const ProgressFn& progress) {
+  Result<RunInputs> expanded = expandRunInputs(inputs);
+  if (!expanded) return expanded.error();
+  RunImport out;
+  out.warnings = std::move(expanded->warnings);
+  out.outcomes = db.runs().importFiles(expanded->files, options, progress);
+  return out;
+}
+
 }  // namespace tactile::workspace

@@ -23,6 +23,7 @@
 #include "analysis/training.h"
 #include "app/cli/cli_classifier_options.h"
 #include "app/cli/cli_common.h"
+#include "app/cli/cli_labels.h"
 #include "base/file_text.h"
 #include "base/text_rules.h"
 #include "run/json_text.h"
@@ -43,109 +44,6 @@ using analysis::parseCovarianceForm;
 using analysis::parseGmmInit;
 using analysis::parseRegularization;
 using nlohmann::json;
-
-// Runs read from files, kept at stable addresses for LabelledRun pointers.
-struct LoadedRuns {
-  std::deque<RunData> runs;
-  std::vector<std::string> paths;
-  std::vector<LabelledRun> labelled;
-};
-
-// Reads every run; the first bad file is an error naming file and line.
-void readRuns(const std::vector<std::string>& paths, LoadedRuns& out) {
-  for (const std::string& path : paths) {
-    RunCsvResult r = readRunCsv(path);
-    if (!r.ok()) throw std::runtime_error(r.errorText());
-    out.runs.push_back(std::move(r.value()));
-    out.paths.push_back(path);
-  }
-}
-
-// A label file, CSV or JSON by its extension, through the one label-file reader: its segments
-// and the provenance of its runs.
-LabelFile readLabels(const std::string& path) {
-  const Result<std::string> read = readFileText(path);
-  if (!read) throw std::runtime_error(read.errorText());
-  const std::string& text = read.value();
-  const bool json = std::filesystem::path(path).extension() == ".json";
-  Result<LabelFile> parsed = json ? parseLabelJson(text, path) : parseLabelCsv(text, path);
-  if (!parsed) throw std::runtime_error(parsed.errorText());
-  return std::move(parsed.value());
-}
-
-// The label run each loaded run file gets ("" for none; docs/analysis.md#label-files). A label run
-// name matches a file by its path as given, its file name or its stem. With a provenance entry
-// (step count and checksum of the run file) only files with that step count and that checksum of
-// their bytes match, and a file that matches by name but not by content is an error naming both
-// values. Two files matching one label run, or one file matching two, is an error naming them.
-std::vector<std::string> matchLabelRuns(const LoadedRuns& loaded, const std::string& labelsPath,
-                                        const LabelFile& file) {
-  std::vector<std::string> names;  // label runs in file order, each once
-  auto note = [&](const std::string& name) {
-    if (std::find(names.begin(), names.end(), name) == names.end()) names.push_back(name);
-  };
-  for (const LabelRecord& r : file.records)
-    note(r.run);
-  for (const LabelRunProvenance& p : file.runs)
-    note(p.name);
-  std::vector<std::string> checksums(loaded.runs.size());  // computed when first needed
-  auto checksumOf = [&](std::size_t i) -> const std::string& {
-    if (checksums[i].empty()) {
-      const Result<std::string> text = readFileText(loaded.paths[i]);
-      if (!text) throw std::runtime_error(text.errorText());
-      checksums[i] = storage::checksumHex(text.value());
-    }
-    return checksums[i];
-  };
-  auto listed = [&](const std::vector<std::size_t>& files) {
-    std::string out;
-    for (std::size_t k = 0; k < files.size(); ++k) {
-      out += (k == 0 ? "" : k + 1 == files.size() ? " and " : ", ") + loaded.paths[files[k]];
-    }
-    return out;
-  };
-  std::vector<std::string> nameOf(loaded.runs.size());
-  for (const std::string& name : names) {
-    std::vector<std::size_t> candidates;
-    for (std::size_t i = 0; i < loaded.runs.size(); ++i) {
-      const std::filesystem::path p(loaded.paths[i]);
-      if (name == loaded.paths[i] || name == p.filename().string() || name == p.stem().string()) {
-        candidates.push_back(i);
-      }
-    }
-    if (candidates.empty()) continue;
-    std::vector<std::size_t> matches = candidates;
-    if (const LabelRunProvenance* p = findProvenance(file, name)) {
-      matches.clear();
-      std::string found;
-      for (const std::size_t i : candidates) {
-        const auto steps = static_cast<std::int64_t>(loaded.runs[i].stepCount());
-        if (steps == p->steps && checksumOf(i) == p->checksum) matches.push_back(i);
-        found += (found.empty() ? "" : "; ") + loaded.paths[i] + " has " + std::to_string(steps) +
-                 " steps, checksum " + checksumOf(i);
-      }
-      if (matches.empty()) {
-        throw std::runtime_error(labelsPath + ":" + std::to_string(p->line) + ": label run '" +
-                                 name + "' was made for " + std::to_string(p->steps) +
-                                 " steps, checksum " + p->checksum + ", but " + found +
-                                 " (a different run of the same name)");
-      }
-    }
-    if (matches.size() > 1) {
-      throw std::runtime_error(labelsPath + ": label run '" + name + "' matches " +
-                               listed(matches) +
-                               "; give only one of them, or a label file with provenance lines "
-                               "(tactile labels export) so the checksum tells them apart");
-    }
-    std::string& assigned = nameOf[matches.front()];
-    if (!assigned.empty()) {
-      throw std::runtime_error(labelsPath + ": run file " + loaded.paths[matches.front()] +
-                               " matches two label runs, '" + assigned + "' and '" + name + "'");
-    }
-    assigned = name;
-  }
-  return nameOf;
-}
 
 // Labels of each loaded run: from the label file when given (matched by matchLabelRuns), else
 // from the run's truth columns.

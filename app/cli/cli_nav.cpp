@@ -16,8 +16,8 @@
 #include "analysis/model_file.h"
 #include "app/cli/cli_common.h"
 #include "base/file_text.h"
+#include "base/parallel.h"
 #include "base/text_rules.h"
-#include "base/worker_threads.h"
 #include "nav/benchmark.h"
 #include "nav/navigate.h"
 #include "run/builtin_scenes.h"
@@ -114,11 +114,6 @@ std::shared_ptr<const analysis::ModelBundle> loadModelsUnchecked(const NavigateA
 
 std::shared_ptr<const analysis::ModelBundle> loadModels(const NavigateArgs& a) {
   return warnOfMissingGroups(a.model, loadModelsUnchecked(a));
-}
-
-unsigned threadCount(unsigned requested, std::size_t jobs) {
-  unsigned t = requested == 0 ? std::max(1u, std::thread::hardware_concurrency()) : requested;
-  return static_cast<unsigned>(std::min<std::size_t>({t, 256u, std::max<std::size_t>(jobs, 1)}));
 }
 
 int runBenchmark(const NavigateArgs& a) {
@@ -243,44 +238,39 @@ int runNavigate(const NavigateArgs& a) {
     std::string file;
   };
   std::vector<Row> rows(seeds.size());
-  std::atomic<std::size_t> next{0};
   std::size_t done = 0;  // under `mutex`
   ProgressLine line("navigate", "runs");
   std::mutex mutex;
   const auto t0 = std::chrono::steady_clock::now();
-  const auto worker = [&] {
-    while (true) {
-      const std::size_t i = next.fetch_add(1);
-      if (i >= seeds.size()) return;
-      nav::NavigateOptions options;
-      options.maxSteps = static_cast<std::size_t>(a.maxSteps);
-      options.seed = seeds[i];
-      const Pose2d start = nav::drawStart(world, seeds[i]);
-      auto r = nav::navigate(world, label, start, world->scene().goal, config, options,
-                             !a.outDir.empty());
-      Row& row = rows[i];
-      if (!r) {
-        row.error = "seed " + std::to_string(seeds[i]) + ": " + r.errorText();
-      } else {
-        row.result = std::move(r.value());
-        if (!a.outDir.empty()) {
-          char name[64];
-          std::snprintf(name, sizeof name, "navigate_%s_%04llu.csv", a.status.c_str(),
-                        static_cast<unsigned long long>(seeds[i]));
-          row.file = (dir / name).string();
-          const Status written = writeRunCsv(row.result.run, row.file);
-          if (!written) row.error = written.errorText();
-          row.result.run = RunData();  // written: free the memory
-        }
-      }
-      if (!a.quiet) {
-        std::lock_guard lock(mutex);
-        line.show(++done, seeds.size());
+  // Run i starts from seeds[i]; an exception in any run (out of memory) reaches the caller after
+  // every worker stopped.
+  parallelFor(seeds.size(), a.threads, [&](std::size_t i) {
+    nav::NavigateOptions options;
+    options.maxSteps = static_cast<std::size_t>(a.maxSteps);
+    options.seed = seeds[i];
+    const Pose2d start = nav::drawStart(world, seeds[i]);
+    auto r =
+        nav::navigate(world, label, start, world->scene().goal, config, options, !a.outDir.empty());
+    Row& row = rows[i];
+    if (!r) {
+      row.error = "seed " + std::to_string(seeds[i]) + ": " + r.errorText();
+    } else {
+      row.result = std::move(r.value());
+      if (!a.outDir.empty()) {
+        char name[64];
+        std::snprintf(name, sizeof name, "navigate_%s_%04llu.csv", a.status.c_str(),
+                      static_cast<unsigned long long>(seeds[i]));
+        row.file = (dir / name).string();
+        const Status written = writeRunCsv(row.result.run, row.file);
+        if (!written) row.error = written.errorText();
+        row.result.run = RunData();  // written: free the memory
       }
     }
-  };
-  // An exception in any worker (out of memory) reaches the caller after every worker stopped.
-  runWorkers(threadCount(a.threads, seeds.size()), worker);
+    if (!a.quiet) {
+      std::lock_guard lock(mutex);
+      line.show(++done, seeds.size());
+    }
+  });
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   for (const Row& row : rows)

@@ -72,15 +72,6 @@ void printJson(const nlohmann::json& doc) {
   std::printf("%s\n", dumpJson(doc).c_str());
 }
 
-// Files as given; a folder stands for the *.csv files in it (workspace/run_inputs.h).
-std::vector<fs::path> expandInputs(const std::vector<std::string>& inputs) {
-  auto expanded = workspace::expandRunInputs({inputs.begin(), inputs.end()});
-  if (!expanded) throw std::runtime_error(expanded.errorText());
-  for (const std::string& warning : expanded->warnings)
-    printWarning(warning);
-  return std::move(expanded->files);
-}
-
 // ---- import ----------------------------------------------------------------------------------
 
 struct ImportArgs {
@@ -104,9 +95,9 @@ int runImport(const ImportArgs& a) {
     return runMcapImport(a.db, a.files, a.mapping, a.name, a.json);
   }
   if (!a.mapping.empty()) throw UsageError("--mapping applies to MCAP files (*.mcap) only");
-  std::vector<fs::path> files = expandInputs(a.files);
-  if (!a.name.empty() && files.size() != 1) {
-    throw UsageError("--name needs exactly one file, got " + std::to_string(files.size()));
+  // A folder given with --name holding several files: each fails ("only for a single file").
+  if (!a.name.empty() && a.files.size() != 1) {
+    throw UsageError("--name needs exactly one file, got " + std::to_string(a.files.size()));
   }
   if (!a.name.empty() && !a.prefix.empty()) throw UsageError("give --name or --prefix, not both");
   if (!a.name.empty()) requireValidName(a.name, "--name", "run");
@@ -118,9 +109,13 @@ int runImport(const ImportArgs& a) {
   options.threads = a.threads;
   options.sceneResolver = sim::proceduralSceneJson;
   const auto t0 = std::chrono::steady_clock::now();
-  const auto outcomes = db->runs().importFiles(files, options);
+  auto imported = workspace::importRunInputs(*db, {a.files.begin(), a.files.end()}, options);
+  if (!imported) throw std::runtime_error(imported.errorText());
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  for (const std::string& warning : imported->warnings)
+    printWarning(warning);
+  const std::vector<storage::ImportOutcome>& outcomes = imported->outcomes;
   nlohmann::json runs = nlohmann::json::array();
   nlohmann::json skipped = nlohmann::json::array();
   nlohmann::json failed = nlohmann::json::array();

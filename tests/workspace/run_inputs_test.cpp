@@ -1,10 +1,13 @@
 // Expanding what the user names for import: files pass as given, a folder becomes its .csv files
-// sorted by name (not those of sub-folders, not other extensions), an empty folder is a warning.
+// sorted by name (not those of sub-folders, not other extensions), an empty folder is a warning;
+// and the import that `tactile import` and the workbench share (importRunInputs).
 #include <gtest/gtest.h>
 
 #include <filesystem>
 #include <fstream>
 
+#include "run/run_csv.h"
+#include "tests/analysis/learn_test_data.h"
 #include "tests/storage/storage_test_util.h"
 #include "workspace/run_inputs.h"
 
@@ -48,6 +51,30 @@ TEST(RunInputs, EmptyFolderIsAWarningAndMissingFilesPassOn) {
   ASSERT_EQ(expanded->warnings.size(), 1u);
   EXPECT_NE(expanded->warnings[0].find("no .csv files"), std::string::npos);
   EXPECT_NE(expanded->warnings[0].find("empty"), std::string::npos);
+}
+
+TEST(ImportRunInputs, ImportsAFoldersFilesInOrderWithTheFolderWarnings) {
+  TempDir dir;
+  fs::create_directories(dir / "runs");
+  fs::create_directories(dir / "empty");
+  ASSERT_TRUE(writeRunCsv(testdata::makeLabelledRun(40, 1), dir / "runs" / "b.csv").ok());
+  ASSERT_TRUE(writeRunCsv(testdata::makeLabelledRun(30, 2), dir / "runs" / "a.csv").ok());
+  auto db = storage::RunDatabase::open(dir / "w.db", storage::OpenMode::Create);
+  ASSERT_TRUE(db.ok()) << db.errorText();
+  storage::ImportOptions options;
+  options.namePrefix = "p";
+  std::size_t calls = 0;
+  auto imported = importRunInputs(*db.value(), {dir / "runs", dir / "empty"}, options,
+                                  [&](std::size_t, std::size_t) { return ++calls > 0; });
+  ASSERT_TRUE(imported.ok()) << imported.errorText();
+  ASSERT_EQ(imported->outcomes.size(), 2u);
+  EXPECT_EQ(imported->outcomes[0].runName, "p_a");
+  EXPECT_EQ(imported->outcomes[0].steps, 30);
+  EXPECT_EQ(imported->outcomes[1].runName, "p_b");
+  EXPECT_EQ(imported->outcomes[1].status, storage::ImportStatus::Imported);
+  ASSERT_EQ(imported->warnings.size(), 1u);
+  EXPECT_NE(imported->warnings[0].find("empty"), std::string::npos);
+  EXPECT_GE(calls, 1u);
 }
 
 }  // namespace

@@ -72,18 +72,17 @@ ImportSummary importRunFiles(const QString& databasePath, const QStringList& fil
   std::vector<std::filesystem::path> inputs;
   for (const QString& f : files)
     inputs.emplace_back(f.toStdString());
-  auto expanded = workspace::expandRunInputs(inputs);
-  if (!expanded) {
-    summary.error = QString::fromStdString(expanded.errorText());
-    return summary;
-  }
-  for (const std::string& w : expanded->warnings)
-    summary.warnings << QString::fromStdString(w);
-  const std::vector<std::filesystem::path>& paths = expanded->files;
   storage::ImportOptions options;
   options.sceneResolver = sim::proceduralSceneJson;
-  summary.outcomes =
-      db.value()->runs().importFiles(paths, options, bridge ? bridge->callback() : ProgressFn{});
+  auto imported = workspace::importRunInputs(*db.value(), inputs, options,
+                                             bridge ? bridge->callback() : ProgressFn{});
+  if (!imported) {
+    summary.error = QString::fromStdString(imported.errorText());
+    return summary;
+  }
+  for (const std::string& w : imported->warnings)
+    summary.warnings << QString::fromStdString(w);
+  summary.outcomes = std::move(imported->outcomes);
   return summary;
 }
 

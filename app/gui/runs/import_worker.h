@@ -1,8 +1,8 @@
-// Imports run files into a database on a worker thread, through the same storage call as
-// `tactile import`. The worker opens its own connection (SQLite's WAL lets the GUI's connection
-// keep reading meanwhile), reports progress through a ProgressBridge and stops between files when
-// cancelled; every file is one transaction, so a cancelled import keeps the runs it finished and
-// nothing half-written.
+// Imports run files into a database on a worker thread, through the same core function as
+// `tactile import` (workspace::importRunInputs). The worker opens its own connection (SQLite's WAL
+// lets the GUI's connection keep reading meanwhile), reports progress through a ProgressBridge and
+// stops between files when cancelled; every file is one transaction, so a cancelled import keeps
+// the runs it finished and nothing half-written.
 #pragma once
 
 #include <QFuture>

@@ -1,16 +1,59 @@
-#include "analysis/parallel.h"
+#include "base/parallel.h"
 
 #include <algorithm>
-#include <atomic>
 #include <condition_variable>
 #include <cstdint>
-#include <exception>
-#include <mutex>
-#include <thread>
-#include <utility>
-#include <vector>
 
-namespace tactile::analysis {
+namespace tactile {
+
+unsigned workerThreadCount(unsigned requested, std::size_t items) {
+  const unsigned asked = requested != 0 ? requested : std::thread::hardware_concurrency();
+  return static_cast<unsigned>(std::clamp<std::size_t>(
+      std::min<std::size_t>({asked, kMaxWorkerThreads, items}), 1, kMaxWorkerThreads));
+}
+
+BackgroundWorkers::BackgroundWorkers(unsigned threads, std::function<void()> work,
+                                     FirstException& failure)
+    : work_(std::move(work)) {
+  failure.capture([&] {
+    threads_.reserve(threads);
+    for (unsigned t = 0; t < threads; ++t)
+      threads_.emplace_back([this, &failure] { failure.capture(work_); });
+  });
+}
+
+void BackgroundWorkers::join() {
+  for (std::thread& t : threads_)
+    if (t.joinable()) t.join();
+}
+
+namespace detail {
+
+bool parallelForIndices(std::size_t count, unsigned threads,
+                        const std::function<bool(std::size_t)>& body) {
+  if (count == 0) return true;
+  std::atomic<std::size_t> next{0};
+  std::atomic<bool> stopped{false};
+  FirstException failure;
+  const auto work = [&] {
+    while (!stopped.load(std::memory_order_relaxed) && !failure.failed()) {
+      const std::size_t i = next.fetch_add(1, std::memory_order_relaxed);
+      if (i >= count) return;
+      if (!body(i)) stopped.store(true, std::memory_order_relaxed);
+    }
+  };
+  {
+    const unsigned n = workerThreadCount(threads, count);
+    // The helpers are joined when the block ends; the caller's own share never throws out of it.
+    BackgroundWorkers helpers(n - 1, work, failure);
+    failure.capture(work);
+  }
+  failure.rethrow();
+  return !stopped.load() && next.load() >= count;
+}
+
+}  // namespace detail
+
 namespace {
 
 thread_local bool tInsidePart = false;
@@ -135,7 +178,7 @@ Pool& pool() {
 
 }  // namespace
 
-void parallelFor(int parts, int threads, const std::function<void(int)>& f) {
+void pooledParallelFor(int parts, int threads, const std::function<void(int)>& f) {
   if (parts <= 0) return;
   threads = std::min(threads, parts);
   if (threads > 1 && !tInsidePart) {
@@ -150,4 +193,4 @@ void parallelFor(int parts, int threads, const std::function<void(int)>& f) {
     f(part);
 }
 
-}  // namespace tactile::analysis
+}  // namespace tactile
