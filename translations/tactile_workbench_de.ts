@@ -428,6 +428,104 @@
     </message>
 </context>
 <context>
+    <name>tactile::gui::HistoryView</name>
+    <message>
+        <source>labelled</source>
+        <translation>beschriftet</translation>
+    </message>
+    <message>
+        <source>moved</source>
+        <translation>verschoben</translation>
+    </message>
+    <message>
+        <source>deleted</source>
+        <translation>gelöscht</translation>
+    </message>
+    <message>
+        <source>undone</source>
+        <translation>rückgängig gemacht</translation>
+    </message>
+    <message>
+        <source>redone</source>
+        <translation>wiederhergestellt</translation>
+    </message>
+    <message>
+        <source>imported</source>
+        <translation>importiert</translation>
+    </message>
+    <message>
+        <source>from truth</source>
+        <translation>aus der Wahrheit</translation>
+    </message>
+    <message>
+        <source>restored</source>
+        <translation>zurückgesetzt</translation>
+    </message>
+    <message>
+        <source>Revision</source>
+        <translation>Revision</translation>
+    </message>
+    <message>
+        <source>Time (UTC)</source>
+        <translation>Zeit (UTC)</translation>
+    </message>
+    <message>
+        <source>Annotator</source>
+        <translation>Annotator</translation>
+    </message>
+    <message>
+        <source>Group</source>
+        <translation>Gruppe</translation>
+    </message>
+    <message>
+        <source>Steps</source>
+        <translation>Schritte</translation>
+    </message>
+    <message>
+        <source>Class</source>
+        <translation>Klasse</translation>
+    </message>
+    <message>
+        <source>Edit</source>
+        <translation>Änderung</translation>
+    </message>
+    <message>
+        <source>Open a label set and a run to see who changed its labels.</source>
+        <translation>Öffnen Sie ein Label-Set und einen Lauf, um zu sehen, wer seine Labels geändert hat.</translation>
+    </message>
+    <message>
+        <source>No edit of these labels is recorded yet.</source>
+        <translation>Für diese Labels ist noch keine Änderung verzeichnet.</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n edit(s) of set &apos;%1&apos; on this run, newest first.</source>
+        <translation>
+            <numerusform>%n Änderung von Set &apos;%1&apos; an diesem Lauf, neueste zuerst.</numerusform>
+            <numerusform>%n Änderungen von Set &apos;%1&apos; an diesem Lauf, neueste zuerst.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>(none)</source>
+        <translation>(keiner)</translation>
+    </message>
+    <message>
+        <source>(cleared or several)</source>
+        <translation>(gelöscht oder mehrere)</translation>
+    </message>
+    <message>
+        <source>%1 %2-%3 by %4</source>
+        <translation>%1 %2-%3 von %4</translation>
+    </message>
+    <message>
+        <source>The steps were unlabelled before.</source>
+        <translation>Die Schritte waren vorher unbeschriftet.</translation>
+    </message>
+    <message>
+        <source>Before: %1</source>
+        <translation>Vorher: %1</translation>
+    </message>
+</context>
+<context>
     <name>tactile::gui::LabelModel</name>
     <message>
         <source>Label steps %1-%2 as %3</source>
@@ -440,6 +538,18 @@
     <message>
         <source>Delete segment</source>
         <translation>Segment löschen</translation>
+    </message>
+    <message>
+        <source> The run&apos;s labels are reloaded.</source>
+        <translation> Die Labels des Laufs werden neu geladen.</translation>
+    </message>
+    <message>
+        <source>%1 changed %2 steps %3-%4 (%5)</source>
+        <translation>%1 hat %2 Schritte %3-%4 geändert (%5)</translation>
+    </message>
+    <message>
+        <source>someone</source>
+        <translation>jemand</translation>
     </message>
 </context>
 <context>
@@ -1182,6 +1292,48 @@ Forschungsumgebung für die taktile Navigation mobiler Roboter.</translation>
     <message>
         <source>Redone: %1</source>
         <translation>Wiederhergestellt: %1</translation>
+    </message>
+    <message>
+        <source>Labels changed by others: %1</source>
+        <translation>Von anderen geänderte Labels: %1</translation>
+    </message>
+    <message>
+        <source>Reconnected to %1</source>
+        <translation>Wieder verbunden mit %1</translation>
+    </message>
+    <message>
+        <source>History</source>
+        <translation>Verlauf</translation>
+    </message>
+    <message>
+        <source>Open &amp;Server...</source>
+        <translation>&amp;Server öffnen...</translation>
+    </message>
+    <message>
+        <source>Open Server</source>
+        <translation>Server öffnen</translation>
+    </message>
+    <message>
+        <source>PostgreSQL address, e.g. postgresql://anna@lab-server/tactile
+(the password is asked when the server wants one, or comes from ~/.pgpass)</source>
+        <translation>PostgreSQL-Adresse, z. B. postgresql://anna@lab-server/tactile
+(das Passwort wird erfragt, wenn der Server eines verlangt, oder kommt aus ~/.pgpass)</translation>
+    </message>
+    <message>
+        <source>%1 is not a server address (postgresql://USER@HOST/DATABASE)</source>
+        <translation>%1 ist keine Serveradresse (postgresql://BENUTZER@HOST/DATENBANK)</translation>
+    </message>
+    <message>
+        <source>Password</source>
+        <translation>Passwort</translation>
+    </message>
+    <message>
+        <source>Password for %1:</source>
+        <translation>Passwort für %1:</translation>
+    </message>
+    <message>
+        <source>Lost the database: %1. Trying again every 3 seconds; edits are not stored meanwhile.</source>
+        <translation>Verbindung zur Datenbank verloren: %1. Neuer Versuch alle 3 Sekunden; Änderungen werden bis dahin nicht gespeichert.</translation>
     </message>
 </context>
 <context>

@@ -428,6 +428,103 @@
     </message>
 </context>
 <context>
+    <name>tactile::gui::HistoryView</name>
+    <message>
+        <source>labelled</source>
+        <translation>已标注</translation>
+    </message>
+    <message>
+        <source>moved</source>
+        <translation>已移动</translation>
+    </message>
+    <message>
+        <source>deleted</source>
+        <translation>已删除</translation>
+    </message>
+    <message>
+        <source>undone</source>
+        <translation>已撤销</translation>
+    </message>
+    <message>
+        <source>redone</source>
+        <translation>已重做</translation>
+    </message>
+    <message>
+        <source>imported</source>
+        <translation>已导入</translation>
+    </message>
+    <message>
+        <source>from truth</source>
+        <translation>来自真值</translation>
+    </message>
+    <message>
+        <source>restored</source>
+        <translation>已恢复</translation>
+    </message>
+    <message>
+        <source>Revision</source>
+        <translation>修订</translation>
+    </message>
+    <message>
+        <source>Time (UTC)</source>
+        <translation>时间 (UTC)</translation>
+    </message>
+    <message>
+        <source>Annotator</source>
+        <translation>标注者</translation>
+    </message>
+    <message>
+        <source>Group</source>
+        <translation>组</translation>
+    </message>
+    <message>
+        <source>Steps</source>
+        <translation>步</translation>
+    </message>
+    <message>
+        <source>Class</source>
+        <translation>类别</translation>
+    </message>
+    <message>
+        <source>Edit</source>
+        <translation>修改</translation>
+    </message>
+    <message>
+        <source>Open a label set and a run to see who changed its labels.</source>
+        <translation>打开一个标签集和一次运行，查看谁修改了它的标签。</translation>
+    </message>
+    <message>
+        <source>No edit of these labels is recorded yet.</source>
+        <translation>这些标签尚无修改记录。</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n edit(s) of set &apos;%1&apos; on this run, newest first.</source>
+        <translation>
+            <numerusform>集 &apos;%1&apos; 在此运行上的 %n 次修改，最新的在前。</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>(none)</source>
+        <translation>（无）</translation>
+    </message>
+    <message>
+        <source>(cleared or several)</source>
+        <translation>（已清除或多个）</translation>
+    </message>
+    <message>
+        <source>%1 %2-%3 by %4</source>
+        <translation>%1 %2-%3，由 %4</translation>
+    </message>
+    <message>
+        <source>The steps were unlabelled before.</source>
+        <translation>这些步之前未标注。</translation>
+    </message>
+    <message>
+        <source>Before: %1</source>
+        <translation>之前：%1</translation>
+    </message>
+</context>
+<context>
     <name>tactile::gui::LabelModel</name>
     <message>
         <source>Label steps %1-%2 as %3</source>
@@ -440,6 +537,18 @@
     <message>
         <source>Delete segment</source>
         <translation>删除片段</translation>
+    </message>
+    <message>
+        <source> The run&apos;s labels are reloaded.</source>
+        <translation> 已重新加载该运行的标签。</translation>
+    </message>
+    <message>
+        <source>%1 changed %2 steps %3-%4 (%5)</source>
+        <translation>%1 修改了 %2 的第 %3-%4 步（%5）</translation>
+    </message>
+    <message>
+        <source>someone</source>
+        <translation>某人</translation>
     </message>
 </context>
 <context>
@@ -1172,6 +1281,48 @@ Research workbench for tactile-based mobile-robot navigation.</source>
     <message>
         <source>Redone: %1</source>
         <translation>已重做：%1</translation>
+    </message>
+    <message>
+        <source>Labels changed by others: %1</source>
+        <translation>他人修改的标签：%1</translation>
+    </message>
+    <message>
+        <source>Reconnected to %1</source>
+        <translation>已重新连接到 %1</translation>
+    </message>
+    <message>
+        <source>History</source>
+        <translation>历史</translation>
+    </message>
+    <message>
+        <source>Open &amp;Server...</source>
+        <translation>打开服务器(&amp;S)...</translation>
+    </message>
+    <message>
+        <source>Open Server</source>
+        <translation>打开服务器</translation>
+    </message>
+    <message>
+        <source>PostgreSQL address, e.g. postgresql://anna@lab-server/tactile
+(the password is asked when the server wants one, or comes from ~/.pgpass)</source>
+        <translation>PostgreSQL 地址，例如 postgresql://anna@lab-server/tactile
+（服务器需要密码时会询问，或取自 ~/.pgpass）</translation>
+    </message>
+    <message>
+        <source>%1 is not a server address (postgresql://USER@HOST/DATABASE)</source>
+        <translation>%1 不是服务器地址（postgresql://用户@主机/数据库）</translation>
+    </message>
+    <message>
+        <source>Password</source>
+        <translation>密码</translation>
+    </message>
+    <message>
+        <source>Password for %1:</source>
+        <translation>%1 的密码：</translation>
+    </message>
+    <message>
+        <source>Lost the database: %1. Trying again every 3 seconds; edits are not stored meanwhile.</source>
+        <translation>与数据库的连接已断开：%1。每 3 秒重试一次；在此期间修改不会被保存。</translation>
     </message>
 </context>
 <context>
