@@ -474,18 +474,6 @@
         <translation>Annotator</translation>
     </message>
     <message>
-        <source>Group</source>
-        <translation>Gruppe</translation>
-    </message>
-    <message>
-        <source>Steps</source>
-        <translation>Schritte</translation>
-    </message>
-    <message>
-        <source>Class</source>
-        <translation>Klasse</translation>
-    </message>
-    <message>
         <source>Edit</source>
         <translation>Änderung</translation>
     </message>
@@ -497,20 +485,9 @@
         <source>No edit of these labels is recorded yet.</source>
         <translation>Für diese Labels ist noch keine Änderung verzeichnet.</translation>
     </message>
-    <message numerus="yes">
-        <source>%n edit(s) of set &apos;%1&apos; on this run, newest first.</source>
-        <translation>
-            <numerusform>%n Änderung von Set &apos;%1&apos; an diesem Lauf, neueste zuerst.</numerusform>
-            <numerusform>%n Änderungen von Set &apos;%1&apos; an diesem Lauf, neueste zuerst.</numerusform>
-        </translation>
-    </message>
     <message>
         <source>(none)</source>
         <translation>(keiner)</translation>
-    </message>
-    <message>
-        <source>(cleared or several)</source>
-        <translation>(gelöscht oder mehrere)</translation>
     </message>
     <message>
         <source>%1 %2-%3 by %4</source>
@@ -523,6 +500,22 @@
     <message>
         <source>Before: %1</source>
         <translation>Vorher: %1</translation>
+    </message>
+    <message>
+        <source>%1 %2-%3: %4 (%5)</source>
+        <translation>%1 %2-%3: %4 (%5)</translation>
+    </message>
+    <message>
+        <source>cleared or several</source>
+        <translation>gelöscht oder mehrere</translation>
+    </message>
+    <message>
+        <source>One edit of set &apos;%1&apos; on this run.</source>
+        <translation>Eine Änderung von Set &apos;%1&apos; an diesem Lauf.</translation>
+    </message>
+    <message>
+        <source>%1 edits of set &apos;%2&apos; on this run, newest first.</source>
+        <translation>%1 Änderungen von Set &apos;%2&apos; an diesem Lauf, neueste zuerst.</translation>
     </message>
 </context>
 <context>
@@ -1335,6 +1328,42 @@ Forschungsumgebung für die taktile Navigation mobiler Roboter.</translation>
         <source>Lost the database: %1. Trying again every 3 seconds; edits are not stored meanwhile.</source>
         <translation>Verbindung zur Datenbank verloren: %1. Neuer Versuch alle 3 Sekunden; Änderungen werden bis dahin nicht gespeichert.</translation>
     </message>
+    <message>
+        <source>Assign Run</source>
+        <translation>Lauf zuweisen</translation>
+    </message>
+    <message>
+        <source>Annotator to assign %1 to:</source>
+        <translation>Annotator, dem %1 zugewiesen wird:</translation>
+    </message>
+    <message>
+        <source>Set your annotator name in Preferences first.</source>
+        <translation>Geben Sie zuerst Ihren Annotator-Namen in den Einstellungen an.</translation>
+    </message>
+    <message>
+        <source>%1 assigned to %2: %3</source>
+        <translation>%1 an %2 zugewiesen: %3</translation>
+    </message>
+    <message>
+        <source>Your role on this database: %1</source>
+        <translation>Ihre Rolle in dieser Datenbank: %1</translation>
+    </message>
+    <message>
+        <source>admin</source>
+        <translation>Administrator</translation>
+    </message>
+    <message>
+        <source>researcher</source>
+        <translation>Forscher</translation>
+    </message>
+    <message>
+        <source>annotator</source>
+        <translation>Annotator</translation>
+    </message>
+    <message>
+        <source>read only</source>
+        <translation>nur lesen</translation>
+    </message>
 </context>
 <context>
     <name>tactile::gui::McapExportDialog</name>
@@ -1641,12 +1670,52 @@ importiert aus %2</translation>
         <source>Labelled</source>
         <translation>Gelabelt</translation>
     </message>
+    <message>
+        <source>to do</source>
+        <translation>zu erledigen</translation>
+    </message>
+    <message>
+        <source>labelled</source>
+        <translation>beschriftet</translation>
+    </message>
+    <message>
+        <source>reviewed</source>
+        <translation>geprüft</translation>
+    </message>
+    <message>
+        <source>Assigned</source>
+        <translation>Zugewiesen</translation>
+    </message>
 </context>
 <context>
     <name>tactile::gui::RunListView</name>
     <message>
         <source>Filter runs by name, scene, subject or outcome</source>
         <translation>Läufe nach Name, Szene, Proband oder Ergebnis filtern</translation>
+    </message>
+    <message>
+        <source>Assigned to me</source>
+        <translation>Mir zugewiesen</translation>
+    </message>
+    <message>
+        <source>Only the runs assigned to the annotator named in Preferences</source>
+        <translation>Nur die Läufe, die dem in den Einstellungen genannten Annotator zugewiesen sind</translation>
+    </message>
+    <message>
+        <source>Assign to...</source>
+        <translation>Zuweisen an...</translation>
+    </message>
+    <message>
+        <source>My Assignment: To Do</source>
+        <translation>Meine Zuweisung: zu erledigen</translation>
+    </message>
+    <message>
+        <source>My Assignment: Labelled</source>
+        <translation>Meine Zuweisung: beschriftet</translation>
+    </message>
+    <message>
+        <source>My Assignment: Reviewed</source>
+        <translation>Meine Zuweisung: geprüft</translation>
     </message>
 </context>
 <context>

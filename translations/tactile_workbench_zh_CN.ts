@@ -474,18 +474,6 @@
         <translation>标注者</translation>
     </message>
     <message>
-        <source>Group</source>
-        <translation>组</translation>
-    </message>
-    <message>
-        <source>Steps</source>
-        <translation>步</translation>
-    </message>
-    <message>
-        <source>Class</source>
-        <translation>类别</translation>
-    </message>
-    <message>
         <source>Edit</source>
         <translation>修改</translation>
     </message>
@@ -497,19 +485,9 @@
         <source>No edit of these labels is recorded yet.</source>
         <translation>这些标签尚无修改记录。</translation>
     </message>
-    <message numerus="yes">
-        <source>%n edit(s) of set &apos;%1&apos; on this run, newest first.</source>
-        <translation>
-            <numerusform>集 &apos;%1&apos; 在此运行上的 %n 次修改，最新的在前。</numerusform>
-        </translation>
-    </message>
     <message>
         <source>(none)</source>
         <translation>（无）</translation>
-    </message>
-    <message>
-        <source>(cleared or several)</source>
-        <translation>（已清除或多个）</translation>
     </message>
     <message>
         <source>%1 %2-%3 by %4</source>
@@ -522,6 +500,22 @@
     <message>
         <source>Before: %1</source>
         <translation>之前：%1</translation>
+    </message>
+    <message>
+        <source>%1 %2-%3: %4 (%5)</source>
+        <translation>%1 %2-%3：%4（%5）</translation>
+    </message>
+    <message>
+        <source>cleared or several</source>
+        <translation>已清除或多个</translation>
+    </message>
+    <message>
+        <source>One edit of set &apos;%1&apos; on this run.</source>
+        <translation>集 &apos;%1&apos; 在此运行上的 1 次修改。</translation>
+    </message>
+    <message>
+        <source>%1 edits of set &apos;%2&apos; on this run, newest first.</source>
+        <translation>集 &apos;%2&apos; 在此运行上的 %1 次修改，最新的在前。</translation>
     </message>
 </context>
 <context>
@@ -1324,6 +1318,42 @@ Research workbench for tactile-based mobile-robot navigation.</source>
         <source>Lost the database: %1. Trying again every 3 seconds; edits are not stored meanwhile.</source>
         <translation>与数据库的连接已断开：%1。每 3 秒重试一次；在此期间修改不会被保存。</translation>
     </message>
+    <message>
+        <source>Assign Run</source>
+        <translation>分配运行</translation>
+    </message>
+    <message>
+        <source>Annotator to assign %1 to:</source>
+        <translation>将 %1 分配给的标注者：</translation>
+    </message>
+    <message>
+        <source>Set your annotator name in Preferences first.</source>
+        <translation>请先在首选项中设置您的标注者名称。</translation>
+    </message>
+    <message>
+        <source>%1 assigned to %2: %3</source>
+        <translation>%1 已分配给 %2：%3</translation>
+    </message>
+    <message>
+        <source>Your role on this database: %1</source>
+        <translation>您在此数据库中的角色：%1</translation>
+    </message>
+    <message>
+        <source>admin</source>
+        <translation>管理员</translation>
+    </message>
+    <message>
+        <source>researcher</source>
+        <translation>研究者</translation>
+    </message>
+    <message>
+        <source>annotator</source>
+        <translation>标注者</translation>
+    </message>
+    <message>
+        <source>read only</source>
+        <translation>只读</translation>
+    </message>
 </context>
 <context>
     <name>tactile::gui::McapExportDialog</name>
@@ -1630,12 +1660,52 @@ imported from %2</source>
         <source>Labelled</source>
         <translation>已标注</translation>
     </message>
+    <message>
+        <source>to do</source>
+        <translation>待办</translation>
+    </message>
+    <message>
+        <source>labelled</source>
+        <translation>已标注</translation>
+    </message>
+    <message>
+        <source>reviewed</source>
+        <translation>已审核</translation>
+    </message>
+    <message>
+        <source>Assigned</source>
+        <translation>分配</translation>
+    </message>
 </context>
 <context>
     <name>tactile::gui::RunListView</name>
     <message>
         <source>Filter runs by name, scene, subject or outcome</source>
         <translation>按名称、场景、受试者或结果筛选运行</translation>
+    </message>
+    <message>
+        <source>Assigned to me</source>
+        <translation>分配给我</translation>
+    </message>
+    <message>
+        <source>Only the runs assigned to the annotator named in Preferences</source>
+        <translation>仅显示分配给首选项中所填标注者的运行</translation>
+    </message>
+    <message>
+        <source>Assign to...</source>
+        <translation>分配给...</translation>
+    </message>
+    <message>
+        <source>My Assignment: To Do</source>
+        <translation>我的任务：待办</translation>
+    </message>
+    <message>
+        <source>My Assignment: Labelled</source>
+        <translation>我的任务：已标注</translation>
+    </message>
+    <message>
+        <source>My Assignment: Reviewed</source>
+        <translation>我的任务：已审核</translation>
     </message>
 </context>
 <context>

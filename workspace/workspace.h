@@ -173,6 +173,7 @@ class Workspace {
   // Where the database is (a file, or a server address without password) and how it was opened.
   const std::filesystem::path& databasePath() const { return db_->path(); }
   bool readOnly() const { return db_->readOnly(); }
+  storage::RunDatabase::Rights rights() { return db_->rights(); }
   storage::IntegrityReport check() { return db_->check(); }
 
   // ---- listing ----

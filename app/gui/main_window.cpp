@@ -128,6 +128,7 @@ MainWindow::MainWindow(QWidget* parent)
     showMessage(tr("Labels changed by others: %1").arg(QString(lines).replace('\n', "; ")));
   });
   connect(labels_, &LabelModel::connectionLost, this, &MainWindow::serverLost);
+  connect(runList_, &RunListView::assignmentRequested, this, &MainWindow::changeAssignment);
   reconnectTimer_ = new QTimer(this);
   reconnectTimer_->setInterval(3000);
   connect(reconnectTimer_, &QTimer::timeout, this, [this] {
@@ -306,7 +307,9 @@ void MainWindow::scheduleSave() {
 
 void MainWindow::applyPreferences() {
   QSettings settings;
-  labels_->setAnnotator(settings.value(keys::kAnnotator).toString().trimmed().toStdString());
+  const QString annotator = settings.value(keys::kAnnotator).toString().trimmed();
+  labels_->setAnnotator(annotator.toStdString());
+  if (runList_ != nullptr) runList_->setAnnotator(annotator);
   timeline_->setRowHeight(
       settings.value(keys::kTimelineRowHeight, PreferencesDialog::kDefaultRowHeight).toInt());
 }
@@ -573,6 +576,7 @@ Status MainWindow::openDatabase(const QString& path, bool create) {
   switching_ = false;
   saveSettings();
   updateTitle();
+  applyRights();
   showMessage(tr("Opened %1").arg(dbPath_));
   return Status::success();
 }
@@ -719,6 +723,62 @@ void MainWindow::chooseServer() {
   while (servers.size() > keys::kMaxRecentDatabases)
     servers.removeLast();
   settings.setValue(keys::kRecentServers, servers);
+}
+
+void MainWindow::changeAssignment(const QString& run, const QString& action) {
+  if (!workspace_) return;
+  const std::string me = labels_->annotator();
+  std::string who = me;
+  storage::AssignmentState state = storage::AssignmentState::Todo;
+  if (action == QStringLiteral("assign")) {
+    bool ok = false;
+    who = QInputDialog::getText(this, tr("Assign Run"), tr("Annotator to assign %1 to:").arg(run),
+                                QLineEdit::Normal, QString(), &ok)
+              .trimmed()
+              .toStdString();
+    if (!ok || who.empty()) return;
+  } else {
+    if (me.empty()) {
+      showError(tr("Set your annotator name in Preferences first."));
+      return;
+    }
+    state = *storage::parseAssignmentState(action.toStdString());
+  }
+  const std::string set = labels_->hasSet() ? labels_->setName() : std::string();
+  const Status s =
+      workspace_->labelStore().assign({run.toStdString()}, std::nullopt, who,
+                                      action == QStringLiteral("assign") ? set : "", state, me);
+  if (!s) {
+    showError(QString::fromStdString(s.errorText()));
+    return;
+  }
+  (void)runModel_->reloadAssignments(workspace_.get());
+  showMessage(tr("%1 assigned to %2: %3")
+                  .arg(run, QString::fromStdString(who), RunListModel::stateText(state)));
+}
+
+void MainWindow::applyRights() {
+  const storage::RunDatabase::Rights rights =
+      workspace_ ? workspace_->rights() : storage::RunDatabase::Rights{};
+  // The server refuses what a role may not do; these only spare the user the attempt.
+  for (const char* name : {"importRuns", "importMcapAction", "newSimulation"}) {
+    if (auto* action = findChild<QAction*>(QLatin1String(name))) {
+      action->setEnabled(rights.manageRuns);
+    }
+  }
+  for (const char* name : {"trainAndSweep"}) {
+    if (auto* action = findChild<QAction*>(QLatin1String(name))) {
+      action->setEnabled(rights.keepModels);
+    }
+  }
+  labelPanel_->setEnabled(rights.editLabels);
+  if (workspace_ && (!rights.manageRuns || !rights.keepModels || !rights.editLabels)) {
+    showMessage(tr("Your role on this database: %1")
+                    .arg(rights.manageRuns   ? tr("admin")
+                         : rights.keepModels ? tr("researcher")
+                         : rights.editLabels ? tr("annotator")
+                                             : tr("read only")));
+  }
 }
 
 void MainWindow::serverLost(const QString& message) {

@@ -148,6 +148,10 @@ class MainWindow : public QMainWindow {
   void chooseServer();
   // The server went away: says so and tries to open it again every few seconds.
   void serverLost(const QString& message);
+  // A run's assignment from the runs dock's context menu (RunListView::assignmentRequested).
+  void changeAssignment(const QString& run, const QString& action);
+  // Greys out what the database's role may not do (docs/team.md#roles).
+  void applyRights();
   void chooseRunFiles();
   void showAbout();
   void chooseSweep();

@@ -7,6 +7,8 @@
 
 #include "app/gui/labels/history_view.h"
 #include "app/gui/labels/label_model.h"
+#include "app/gui/runs/run_list_model.h"
+#include "app/gui/runs/run_list_view.h"
 #include "app/gui/runs/run_session_model.h"
 #include "gui_fixture.h"
 
@@ -78,6 +80,30 @@ class TeamLabelsTest : public QObject {
     anna.undoStack()->undo();
     QVERIFY(!anna.classAt(SensorGroup::Front, 210).has_value());
     QCOMPARE(history.rowCount(), 5);
+  }
+
+  void theRunsDockShowsAssignmentsAndFiltersMine() {
+    GuiFixture fx(100);
+    tactile::gui::RunListModel model;
+    tactile::gui::RunListView view(&model);
+    QVERIFY(model.reload(fx.workspace.get(), 0).ok());
+    QCOMPARE(view.visibleRows(), 1);
+    view.setAnnotator("anna");
+    view.setAssignedToMeOnly(true);
+    QCOMPARE(view.visibleRows(), 0);  // nothing assigned yet
+    QVERIFY(fx.workspace->labelStore()
+                .assign({fx.runName}, std::nullopt, "anna", "",
+                        tactile::storage::AssignmentState::Labelled, "lead")
+                .ok());
+    QVERIFY(model.reloadAssignments(fx.workspace.get()).ok());
+    QCOMPARE(view.visibleRows(), 1);
+    const QString shown =
+        model.data(model.index(0, tactile::gui::RunListModel::Assigned)).toString();
+    QCOMPARE(shown, QStringLiteral("anna: labelled"));
+    view.setAnnotator("ben");
+    QCOMPARE(view.visibleRows(), 0);
+    view.setAssignedToMeOnly(false);
+    QCOMPARE(view.visibleRows(), 1);
   }
 };
 

@@ -1,5 +1,6 @@
 #include "app/gui/labels/history_view.h"
 
+#include <QDateTime>
 #include <QHeaderView>
 #include <QLabel>
 #include <QTableWidget>
@@ -14,7 +15,7 @@ namespace tactile::gui {
 
 namespace {
 
-enum Column { kRevision, kTime, kAnnotator, kGroup, kSteps, kClass, kAction, kColumns };
+enum Column { kRevision, kAnnotator, kTime, kChange, kColumns };
 
 QString actionText(const std::string& action) {
   if (action == "set") return HistoryView::tr("labelled");
@@ -37,19 +38,21 @@ HistoryView::HistoryView(RunSession* session, LabelModel* labels, QWidget* paren
   summary_->setWordWrap(true);
   table_ = new QTableWidget(0, kColumns, this);
   table_->setObjectName(QStringLiteral("historyTable"));
-  table_->setHorizontalHeaderLabels({tr("Revision"), tr("Time (UTC)"), tr("Annotator"), tr("Group"),
-                                     tr("Steps"), tr("Class"), tr("Edit")});
+  table_->setHorizontalHeaderLabels(
+      {tr("Revision"), tr("Annotator"), tr("Time (UTC)"), tr("Edit")});
   table_->verticalHeader()->hide();
   table_->setEditTriggers(QAbstractItemView::NoEditTriggers);
   table_->setSelectionBehavior(QAbstractItemView::SelectRows);
   table_->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
-  table_->horizontalHeader()->setStretchLastSection(true);
+  table_->horizontalHeader()->setSectionResizeMode(kChange, QHeaderView::Stretch);
+  table_->verticalHeader()->setDefaultSectionSize(fontMetrics().height() + 6);
+  table_->setTextElideMode(Qt::ElideRight);
   layout->addWidget(summary_);
   layout->addWidget(table_, 1);
   connect(labels_, &LabelModel::labelsChanged, this, &HistoryView::refresh);
   connect(labels_, &LabelModel::labelSetChanged, this, &HistoryView::refresh);
   connect(table_, &QTableWidget::cellDoubleClicked, this, [this](int row, int) {
-    const QTableWidgetItem* item = table_->item(row, kSteps);
+    const QTableWidgetItem* item = table_->item(row, kChange);
     if (item == nullptr) return;
     const qint64 first = item->data(Qt::UserRole).toLongLong();
     const qint64 last = item->data(Qt::UserRole + 1).toLongLong();
@@ -76,10 +79,15 @@ void HistoryView::refresh() {
     return;
   }
   const auto& revisions = history.value();
-  summary_->setText(revisions.empty() ? tr("No edit of these labels is recorded yet.")
-                                      : tr("%n edit(s) of set '%1' on this run, newest first.",
-                                           nullptr, static_cast<int>(revisions.size()))
-                                            .arg(QString::fromStdString(labels_->setName())));
+  const QString set = QString::fromStdString(labels_->setName());
+  if (revisions.empty()) {
+    summary_->setText(tr("No edit of these labels is recorded yet."));
+  } else if (revisions.size() == 1) {
+    summary_->setText(tr("One edit of set '%1' on this run.").arg(set));
+  } else {
+    summary_->setText(
+        tr("%1 edits of set '%2' on this run, newest first.").arg(revisions.size()).arg(set));
+  }
   table_->setRowCount(static_cast<int>(revisions.size()));
   int row = 0;
   for (auto it = revisions.rbegin(); it != revisions.rend(); ++it, ++row) {
@@ -90,16 +98,22 @@ void HistoryView::refresh() {
       return item;
     };
     put(kRevision, QString::number(r.revision));
-    put(kTime, QString::fromStdString(r.time).replace('T', ' ').remove('Z'));
     put(kAnnotator, r.annotator.empty() ? tr("(none)") : QString::fromStdString(r.annotator));
+    // The time of day; the date too when it is not today.
+    const QString time = QString::fromStdString(r.time).replace('T', ' ').remove('Z');
+    const QString today = QDateTime::currentDateTimeUtc().toString(QStringLiteral("yyyy-MM-dd"));
+    put(kTime, time.startsWith(today) ? time.mid(11) : time.left(16));
     const std::string_view group = groupInfo(r.group).shortName;
-    put(kGroup, QString::fromUtf8(group.data(), static_cast<int>(group.size())));
-    QTableWidgetItem* steps = put(kSteps, QStringLiteral("%1-%2").arg(r.firstStep).arg(r.lastStep));
-    steps->setData(Qt::UserRole, static_cast<qlonglong>(r.firstStep));
-    steps->setData(Qt::UserRole + 1, static_cast<qlonglong>(r.lastStep));
-    QTableWidgetItem* cls = put(kClass, r.cls ? className(*r.cls) : tr("(cleared or several)"));
-    if (r.cls) cls->setForeground(classColor(*r.cls).darker(130));
-    put(kAction, actionText(r.action));
+    QTableWidgetItem* change =
+        put(kChange, tr("%1 %2-%3: %4 (%5)")
+                         .arg(QString::fromUtf8(group.data(), static_cast<int>(group.size())))
+                         .arg(r.firstStep)
+                         .arg(r.lastStep)
+                         .arg(r.cls ? className(*r.cls) : tr("cleared or several"))
+                         .arg(actionText(r.action)));
+    change->setData(Qt::UserRole, static_cast<qlonglong>(r.firstStep));
+    change->setData(Qt::UserRole + 1, static_cast<qlonglong>(r.lastStep));
+    if (r.cls) change->setForeground(classColor(*r.cls).darker(130));
     QStringList before;
     for (const storage::LabelSegment& s : r.replaced) {
       before << tr("%1 %2-%3 by %4")
@@ -108,8 +122,10 @@ void HistoryView::refresh() {
                     .arg(s.lastStep)
                     .arg(s.annotator.empty() ? tr("(none)") : QString::fromStdString(s.annotator));
     }
-    const QString tip = before.isEmpty() ? tr("The steps were unlabelled before.")
-                                         : tr("Before: %1").arg(before.join(QStringLiteral("; ")));
+    const QString tip =
+        QString::fromStdString(r.time) + QStringLiteral("\n") +
+        (before.isEmpty() ? tr("The steps were unlabelled before.")
+                          : tr("Before: %1").arg(before.join(QStringLiteral("; "))));
     for (int c = 0; c < kColumns; ++c)
       table_->item(row, c)->setToolTip(tip);
   }

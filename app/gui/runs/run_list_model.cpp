@@ -1,6 +1,7 @@
 #include "app/gui/runs/run_list_model.h"
 
 #include <QLocale>
+#include <QStringList>
 
 #include <algorithm>
 
@@ -31,6 +32,34 @@ Status RunListModel::reload(workspace::Workspace* workspace, std::int64_t labelS
   return reloadCoverage(workspace, labelSetId);
 }
 
+Status RunListModel::reloadAssignments(workspace::Workspace* workspace) {
+  assignments_.clear();
+  Status status = Status::success();
+  if (workspace != nullptr) {
+    auto all = workspace->labelStore().assignments();
+    if (all) {
+      for (storage::Assignment& a : all.value())
+        assignments_[a.runId].push_back(std::move(a));
+    } else {
+      status = all.error();
+    }
+  }
+  if (!runs_.empty()) emit dataChanged(index(0, 0), index(rowCount() - 1, ColumnCount - 1));
+  return status;
+}
+
+QString RunListModel::stateText(storage::AssignmentState state) {
+  switch (state) {
+    case storage::AssignmentState::Todo:
+      return tr("to do");
+    case storage::AssignmentState::Labelled:
+      return tr("labelled");
+    case storage::AssignmentState::Reviewed:
+      return tr("reviewed");
+  }
+  return {};
+}
+
 Status RunListModel::reloadCoverage(workspace::Workspace* workspace, std::int64_t labelSetId) {
   coverage_.clear();
   Status status = Status::success();
@@ -44,6 +73,7 @@ Status RunListModel::reloadCoverage(workspace::Workspace* workspace, std::int64_
     }
   }
   if (!runs_.empty()) emit dataChanged(index(0, Coverage), index(rowCount() - 1, Coverage));
+  if (status) status = reloadAssignments(workspace);
   return status;
 }
 
@@ -80,9 +110,32 @@ QVariant RunListModel::data(const QModelIndex& index, int role) const {
         return QString::fromStdString(r.outcome);
       case Coverage:
         return QStringLiteral("%1 %").arg(covered, 0, 'f', 0);
+      case Assigned: {
+        QStringList parts;
+        if (const auto it = assignments_.find(r.id); it != assignments_.end()) {
+          for (const storage::Assignment& a : it->second) {
+            QString who = QString::fromStdString(a.annotator);
+            if (a.group) {
+              const std::string_view g = groupInfo(*a.group).shortName;
+              who += QStringLiteral(" (%1)").arg(
+                  QString::fromUtf8(g.data(), static_cast<int>(g.size())));
+            }
+            parts << QStringLiteral("%1: %2").arg(who, stateText(a.state));
+          }
+        }
+        return parts.join(QStringLiteral("; "));
+      }
       default:
         return {};
     }
+  }
+  if (role == kAssigneesRole) {
+    QStringList who;
+    if (const auto it = assignments_.find(r.id); it != assignments_.end()) {
+      for (const storage::Assignment& a : it->second)
+        who << QString::fromStdString(a.annotator);
+    }
+    return who;
   }
   // Sorting by number, not by the formatted text.
   if (role == Qt::UserRole) {
@@ -97,6 +150,7 @@ QVariant RunListModel::data(const QModelIndex& index, int role) const {
   }
   if (role == Qt::TextAlignmentRole && (index.column() == Steps || index.column() == Coverage))
     return QVariant::fromValue(Qt::AlignRight | Qt::AlignVCenter);
+  if (role == Qt::ToolTipRole && index.column() == Assigned) return data(index, Qt::DisplayRole);
   if (role == Qt::ToolTipRole && index.column() == Name)
     return tr("%1\nimported from %2")
         .arg(QString::fromStdString(r.name), QString::fromStdString(r.sourceFile));
@@ -118,6 +172,8 @@ QVariant RunListModel::headerData(int section, Qt::Orientation orientation, int 
       return tr("Outcome");
     case Coverage:
       return tr("Labelled");
+    case Assigned:
+      return tr("Assigned");
     default:
       return {};
   }

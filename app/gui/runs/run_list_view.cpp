@@ -1,8 +1,11 @@
 #include "app/gui/runs/run_list_view.h"
 
+#include <QCheckBox>
+#include <QHBoxLayout>
 #include <QHeaderView>
 #include <QItemSelectionModel>
 #include <QLineEdit>
+#include <QMenu>
 #include <QSortFilterProxyModel>
 #include <QTableView>
 #include <QVBoxLayout>
@@ -10,6 +13,25 @@
 #include "app/gui/runs/run_list_model.h"
 
 namespace tactile::gui {
+
+// The text filter, and with "Assigned to me" only the runs assigned to the user.
+class RunListView::Proxy : public QSortFilterProxyModel {
+ public:
+  using QSortFilterProxyModel::QSortFilterProxyModel;
+  QString annotator;
+  bool mineOnly = false;
+  void refilter() { invalidateFilter(); }
+
+ protected:
+  bool filterAcceptsRow(int row, const QModelIndex& parent) const override {
+    if (mineOnly) {
+      const QStringList who =
+          sourceModel()->index(row, 0, parent).data(RunListModel::kAssigneesRole).toStringList();
+      if (annotator.isEmpty() || !who.contains(annotator)) return false;
+    }
+    return QSortFilterProxyModel::filterAcceptsRow(row, parent);
+  }
+};
 
 RunListView::RunListView(RunListModel* model, QWidget* parent) : QWidget(parent), model_(model) {
   setObjectName(QStringLiteral("runList"));
@@ -19,7 +41,10 @@ RunListView::RunListView(RunListModel* model, QWidget* parent) : QWidget(parent)
   filter_->setObjectName(QStringLiteral("runFilter"));
   filter_->setPlaceholderText(tr("Filter runs by name, scene, subject or outcome"));
   filter_->setClearButtonEnabled(true);
-  proxy_ = new QSortFilterProxyModel(this);
+  mine_ = new QCheckBox(tr("Assigned to me"), this);
+  mine_->setObjectName(QStringLiteral("assignedToMe"));
+  mine_->setToolTip(tr("Only the runs assigned to the annotator named in Preferences"));
+  proxy_ = new Proxy(this);
   proxy_->setSourceModel(model_);
   proxy_->setFilterCaseSensitivity(Qt::CaseInsensitive);
   proxy_->setFilterKeyColumn(-1);
@@ -38,14 +63,37 @@ RunListView::RunListView(RunListModel* model, QWidget* parent) : QWidget(parent)
   // middle in a narrow dock, so the outcome and the labelled share are never cut off.
   table_->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
   table_->horizontalHeader()->setSectionResizeMode(0, QHeaderView::Stretch);
+  // Who a run is assigned to shares the rest with the name (both shortened, never hidden).
+  table_->horizontalHeader()->setSectionResizeMode(RunListModel::Assigned, QHeaderView::Stretch);
   table_->horizontalHeader()->setStretchLastSection(false);
   table_->horizontalHeader()->setMinimumSectionSize(
       fontMetrics().horizontalAdvance(QLatin1Char('M')) * 4);
   table_->setTextElideMode(Qt::ElideMiddle);
   table_->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
   table_->setAlternatingRowColors(true);
-  layout->addWidget(filter_);
+  auto* top = new QHBoxLayout;
+  top->addWidget(filter_, 1);
+  top->addWidget(mine_);
+  layout->addLayout(top);
   layout->addWidget(table_);
+  connect(mine_, &QCheckBox::toggled, this, &RunListView::setAssignedToMeOnly);
+  table_->setContextMenuPolicy(Qt::CustomContextMenu);
+  connect(table_, &QWidget::customContextMenuRequested, this, [this](const QPoint& at) {
+    const QModelIndex index = table_->indexAt(at);
+    if (!index.isValid()) return;
+    const QString run = QString::fromStdString(model_->run(proxy_->mapToSource(index).row()).name);
+    QMenu menu(this);
+    menu.addAction(tr("Assign to..."), this,
+                   [this, run] { emit assignmentRequested(run, "assign"); });
+    menu.addSeparator();
+    menu.addAction(tr("My Assignment: To Do"), this,
+                   [this, run] { emit assignmentRequested(run, "todo"); });
+    menu.addAction(tr("My Assignment: Labelled"), this,
+                   [this, run] { emit assignmentRequested(run, "labelled"); });
+    menu.addAction(tr("My Assignment: Reviewed"), this,
+                   [this, run] { emit assignmentRequested(run, "reviewed"); });
+    menu.exec(table_->viewport()->mapToGlobal(at));
+  });
 
   // Spaces around what was typed or pasted are never part of a run's name.
   connect(filter_, &QLineEdit::textChanged, this, [this](const QString& text) {
@@ -59,6 +107,21 @@ RunListView::RunListView(RunListModel* model, QWidget* parent) : QWidget(parent)
   };
   connect(table_, &QTableView::activated, this, choose);
   connect(table_, &QTableView::clicked, this, choose);
+}
+
+void RunListView::setAnnotator(const QString& name) {
+  proxy_->annotator = name;
+  proxy_->refilter();
+}
+
+void RunListView::setAssignedToMeOnly(bool on) {
+  if (mine_->isChecked() != on) mine_->setChecked(on);
+  proxy_->mineOnly = on;
+  proxy_->refilter();
+}
+
+int RunListView::visibleRows() const {
+  return proxy_->rowCount();
 }
 
 QString RunListView::filterText() const {
