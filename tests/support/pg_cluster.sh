@@ -5,8 +5,8 @@
 # touched. As root, the server runs as the `postgres` account (PostgreSQL refuses root).
 set -euo pipefail
 
-action=${1:?usage: pg_cluster.sh start|stop STATE-FILE}
-state=${2:?usage: pg_cluster.sh start|stop STATE-FILE}
+action=${1:?usage: pg_cluster.sh start|stop|crash|restart STATE-FILE}
+state=${2:?usage: pg_cluster.sh start|stop|crash|restart STATE-FILE}
 
 bindir=""
 for candidate in "$(pg_config --bindir 2>/dev/null || true)" /usr/lib/postgresql/*/bin; do
@@ -45,6 +45,18 @@ case "$action" in
     printf '%s\n%s\n' "postgresql:///tactile_test?host=$dir&user=postgres" "$dir" >"$state"
     echo "PostgreSQL $("$bindir/postgres" --version | awk '{print $3}') on $dir"
     ;;
+  crash)
+    # The server stops at once, as at a power cut of its machine: no checkpoint, clients cut off.
+    dir=$(sed -n 2p "$state")
+    as_owner "$bindir/pg_ctl" -D "$dir/data" -m immediate -w stop >/dev/null
+    ;;
+  restart)
+    dir=$(sed -n 2p "$state")
+    as_owner "$bindir/pg_ctl" -D "$dir/data" -l "$dir/server.log" -w -t 60 \
+      -o "-c listen_addresses='' -c unix_socket_directories='$dir' -c fsync=off \
+          -c max_connections=100 -c shared_buffers=128MB" start >/dev/null ||
+      { cat "$dir/server.log" >&2; exit 1; }
+    ;;
   stop)
     [ -f "$state" ] || exit 0
     dir=$(sed -n 2p "$state")
@@ -55,7 +67,7 @@ case "$action" in
     rm -f "$state"
     ;;
   *)
-    echo "usage: pg_cluster.sh start|stop STATE-FILE" >&2
+    echo "usage: pg_cluster.sh start|stop|crash|restart STATE-FILE" >&2
     exit 2
     ;;
 esac
