@@ -87,6 +87,9 @@ CLI::App* addPlannedVerb(CLI::App& parent, const std::string& name, const std::s
 //  - openDatabaseForWrite: verbs that change an existing database (rename, delete, ...).
 //  - openDatabaseOrCreate: only import, autolabel, labels import, models import, train, sweep and
 //    db create; makes the file when absent. Migrations print a warning naming the backup.
+// TACTILE_DB, or empty: the database of a verb whose --db is optional and that was given neither
+// --db nor the file form's inputs (train, sweep, report, classify, navigate).
+std::string databaseFromEnvironment();
 std::unique_ptr<storage::RunDatabase> openDatabaseForRead(const std::string& path);
 std::unique_ptr<storage::RunDatabase> openDatabaseForWrite(const std::string& path);
 std::unique_ptr<storage::RunDatabase> openDatabaseOrCreate(const std::string& path);

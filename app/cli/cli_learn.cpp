@@ -874,7 +874,9 @@ void registerLearnVerbs(CLI::App& app, CLI::App& /*bench*/) {
         "From a database: --db DB --set SET stores the model bundle in the database (and writes "
         "--out when given).\nFrom run files: --runs FILES --out MODEL.json; labels come from "
         "--labels, else from the runs' truth columns.");
-    cmd->add_option("--db", args->db, "Database holding the runs and label sets");
+    cmd->add_option("--db", args->db,
+                    "Database holding the runs and label sets (default: TACTILE_DB when no "
+                    "--runs are given)");
     cmd->add_option("--set", args->set, "Label set to train on (with --db)");
     cmd->add_option("--train-runs", args->trainRuns,
                     "Stored runs to train on (with --db; default: every run the set labels, "
@@ -933,7 +935,9 @@ void registerLearnVerbs(CLI::App& app, CLI::App& /*bench*/) {
       args->given.cov = cmd->get_option("--cov")->count() > 0;
       args->given.floor = cmd->get_option("--floor")->count() > 0;
       args->given.restarts = cmd->get_option("--restarts")->count() > 0;
-      return runTrain(*args);
+      TrainArgs a = *args;
+      if (a.db.empty() && a.runs.empty()) a.db = databaseFromEnvironment();
+      return runTrain(a);
     });
   }
   // sweep
@@ -945,7 +949,9 @@ void registerLearnVerbs(CLI::App& app, CLI::App& /*bench*/) {
         "features x seed) on all cores.\nFrom a database: --db DB --set SET --train-runs ... "
         "--test-runs ... stores every cell as it finishes.\nFrom run files: --runs FILES --out "
         "SWEEP.json.");
-    cmd->add_option("--db", args->db, "Database holding the runs and label sets");
+    cmd->add_option("--db", args->db,
+                    "Database holding the runs and label sets (default: TACTILE_DB when no "
+                    "--runs are given)");
     cmd->add_option("--set", args->set, "Label set (with --db)");
     cmd->add_option("--train-runs", args->trainRuns, "Stored runs to train on (with --db)")
         ->delimiter(',');
@@ -994,7 +1000,11 @@ void registerLearnVerbs(CLI::App& app, CLI::App& /*bench*/) {
     cmd->add_flag("--progress", args->progress, "Print progress on stderr");
     cmd->add_option("--out", args->out, "SWEEP.json to write (optional with --db)");
     cmd->add_flag("--json", args->json, "Print a JSON summary");
-    setAction(cmd, [args] { return runSweepVerb(*args); });
+    setAction(cmd, [args] {
+      SweepArgs a = *args;
+      if (a.db.empty() && a.runs.empty()) a.db = databaseFromEnvironment();
+      return runSweepVerb(a);
+    });
   }
   // report
   {
@@ -1005,7 +1015,8 @@ void registerLearnVerbs(CLI::App& app, CLI::App& /*bench*/) {
         "matrices) or of a model file (confusion, per-class rates, one-vs-rest rates, contact "
         "patterns)");
     cmd->add_option("FILE", args->path, "SWEEP.json or MODEL.json");
-    cmd->add_option("--db", args->db, "Database holding the sweep");
+    cmd->add_option("--db", args->db,
+                    "Database holding the sweep (default: TACTILE_DB without FILE)");
     cmd->add_option("--sweep", args->sweep, "Stored sweep id (with --db; see tactile sweeps list)");
     cmd->add_option("--format", args->format, "md, csv, html or text (default text)");
     cmd->add_option("--out", args->out, "Write here instead of stdout");
@@ -1018,7 +1029,11 @@ void registerLearnVerbs(CLI::App& app, CLI::App& /*bench*/) {
     cmd->add_flag(
         "--json", args->json,
         R"(With --out: print {"out","format"} and, for a stored sweep, "sweep" and "cells")");
-    setAction(cmd, [args] { return runReport(*args); });
+    setAction(cmd, [args] {
+      ReportArgs a = *args;
+      if (a.db.empty() && a.path.empty()) a.db = databaseFromEnvironment();
+      return runReport(a);
+    });
   }
   // classify
   {
@@ -1028,7 +1043,9 @@ void registerLearnVerbs(CLI::App& app, CLI::App& /*bench*/) {
         "Classify every step and group of a run with a model (bundle): class and per-class "
         "log-likelihoods, as CSV (one line per step and group) or JSON.\nWith --db, --model and "
         "--run name a stored model and a stored run.");
-    cmd->add_option("--db", args->db, "Database holding the model and the run");
+    cmd->add_option("--db", args->db,
+                    "Database holding the model and the run (default: TACTILE_DB when --model "
+                    "and --run are not files)");
     cmd->add_option("--model", args->model, "Model or model bundle JSON, or a stored model's name")
         ->required();
     cmd->add_option("--run", args->run, "Run CSV, or a stored run's name")->required();
@@ -1050,7 +1067,14 @@ void registerLearnVerbs(CLI::App& app, CLI::App& /*bench*/) {
         ->capture_default_str();
     cmd->add_option("--stay", args->stay, "hmm: self-transition probability")
         ->capture_default_str();
-    setAction(cmd, [args] { return runClassify(*args); });
+    setAction(cmd, [args] {
+      ClassifyArgs a = *args;
+      // Names that are not files name a stored model and run of TACTILE_DB.
+      if (a.db.empty() && !std::filesystem::exists(a.model) && !std::filesystem::exists(a.run)) {
+        a.db = databaseFromEnvironment();
+      }
+      return runClassify(a);
+    });
   }
 }
 

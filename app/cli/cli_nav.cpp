@@ -327,7 +327,9 @@ void registerNavigateVerb(CLI::App& app) {
   cmd->add_option("--model", args->model,
                   "Model bundle JSON, or a stored model's name with --db (needed by --status "
                   "model and --benchmark)");
-  cmd->add_option("--db", args->db, "Database holding the model named by --model");
+  cmd->add_option("--db", args->db,
+                  "Database holding the model named by --model (default: TACTILE_DB when "
+                  "--model is not a file)");
   CLI::Option* status =
       cmd->add_option("--status", args->status,
                       "Status source: model (trained models, online decision), truth (the "
@@ -362,7 +364,14 @@ void registerNavigateVerb(CLI::App& app) {
   cmd->add_flag("--wall-follow", args->wallFollow,
                 "Model and truth sources use the thesis strategies (wall following) instead of "
                 "following the touch map's plan (see docs/navigation.md)");
-  setAction(cmd, [args] { return runNavigate(*args); });
+  setAction(cmd, [args] {
+    NavigateArgs a = *args;
+    // A --model that is not a file names a stored model of TACTILE_DB.
+    if (a.db.empty() && !a.model.empty() && !std::filesystem::exists(a.model)) {
+      a.db = databaseFromEnvironment();
+    }
+    return runNavigate(a);
+  });
 }
 
 }  // namespace tactile::cli

@@ -59,6 +59,11 @@ std::string databaseError(const std::string& dbPath, const Error& error) {
 std::unique_ptr<RunDatabase> openDatabaseForRead(const std::string& path) {
   return openDatabase(path, OpenMode::ReadOnly);
 }
+std::string databaseFromEnvironment() {
+  const char* db = std::getenv("TACTILE_DB");
+  return db == nullptr ? std::string() : std::string(db);
+}
+
 std::unique_ptr<RunDatabase> openDatabaseForWrite(const std::string& path) {
   return openDatabase(path, OpenMode::ReadWrite);
 }

@@ -91,6 +91,10 @@ grep -q "roles belong to a PostgreSQL server" err.txt || fail "grant on a file: 
 "$T" autolabel --db local.db --all --set truth > /dev/null
 "$T" train --db local.db --set truth --name m1 > /dev/null 2>&1 || fail "train"
 "$T" models export --db local.db m1 --out m1.json > /dev/null
+# TACTILE_DB names the database of a verb given neither --db nor files.
+TACTILE_DB=local.db "$T" classify --model m1 --run run_0001 --decision step --json > env.json ||
+  fail "classify with TACTILE_DB"
+grep -q '"class"' env.json || fail "classify with TACTILE_DB printed: $(head -c 200 env.json)"
 annotator=$(as_role "annotator_$$")
 "$T" labels set --db "$annotator" --set team --run run_0001 --groups R --steps 5-9 --class Wall   > /dev/null || fail "an annotator could not edit labels"
 if "$T" models import --db "$annotator" --name m1 m1.json 2> err.txt; then
