@@ -157,6 +157,23 @@ std::vector<GroupAgreement> labelAgreement(std::int64_t stepCount,
                                            const std::vector<storage::LabelSegment>& first,
                                            const std::vector<storage::LabelSegment>& second);
 
+// ---- labels from a model (workspace/label_from_model.cpp, docs/workflow.md#labels-from-a-model)
+// -- The annotator a model's labels carry in the segments and the history: "model:NAME".
+std::string modelAnnotator(std::string_view modelName);
+// The segments one group's classification gives steps [first, last] by its chosen decision:
+// maximal stretches of one class; steps no model could say stay unlabelled.
+std::vector<storage::LabelSegment> decisionSegments(const analysis::GroupClassification& group,
+                                                    SensorGroup sensorGroup, std::int64_t first,
+                                                    std::int64_t last,
+                                                    const std::string& annotator);
+
+struct ModelLabelling {
+  std::int64_t runs = 0;
+  std::int64_t groups = 0;    // (run, group) pairs labelled
+  std::int64_t segments = 0;  // segments written
+  std::vector<std::string> warnings;
+};
+
 class Workspace {
  public:
   // Opens a database (OpenOptions choose create / existing / read-only).
@@ -201,6 +218,19 @@ class Workspace {
                                   const storage::EditOptions& options = {});
   Result<LabelEdit> removeSegment(std::int64_t setId, std::int64_t segmentId,
                                   const storage::EditOptions& options = {});
+  // Steps [first, last] of one group of a run take `segments` (within the range; labels outside
+  // it stay as they are), as one edit (action "model" unless options say otherwise).
+  Result<LabelEdit> replaceLabels(std::int64_t setId, std::int64_t runId, SensorGroup group,
+                                  std::int64_t first, std::int64_t last,
+                                  std::vector<storage::LabelSegment> segments,
+                                  const storage::EditOptions& options = {});
+  // Every named run (empty: every stored run) takes a stored model's offline decision in the
+  // named groups (empty: every group the model covers) over the whole run, in the set (created
+  // when absent), one edit per run and group with the annotator "model:NAME".
+  Result<ModelLabelling> labelFromModel(const std::string& setName, const std::string& modelName,
+                                        const std::vector<std::string>& runs,
+                                        const std::vector<SensorGroup>& groups,
+                                        const ProgressFn& progress = {});
   // Puts the touched range of the edit back as it was before the edit (undo), or as it was after
   // it (redo); edit.revision becomes the revision this made.
   Status undo(LabelEdit& edit, const storage::EditOptions& options = {});

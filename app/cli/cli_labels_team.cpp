@@ -1,4 +1,4 @@
-// Label verbs for a team: labels set|history|assign|assignments|agreement
+// Label verbs for a team: labels set|history|assign|assignments|agreement|from-model
 // (docs/team.md#annotators-side-by-side).
 #include <cstdio>
 #include <cstdlib>
@@ -354,6 +354,45 @@ int runLabelsAgreement(const AgreementArgs& a) {
   return kExitOk;
 }
 
+// ---- labels from-model ----------------------------------------------------------------------
+
+struct FromModelArgs {
+  std::string db, set, model;
+  std::vector<std::string> runs, groups;
+  bool json = false;
+};
+
+int runLabelsFromModel(const FromModelArgs& a) {
+  requireValidName(a.set, "--set", "label set");
+  const std::vector<SensorGroup> groups = parseGroups(a.groups, "--groups");
+  workspace::Workspace ws(openDatabaseForWrite(a.db));
+  ProgressLine line("labels from-model", "runs");
+  auto done = ws.labelFromModel(a.set, a.model, splitNames(a.runs), groups,
+                                [&](std::size_t d, std::size_t total) {
+                                  line.show(d, total);
+                                  return true;
+                                });
+  if (!done) throw std::runtime_error(done.errorText());
+  for (const std::string& warning : done->warnings)
+    printWarning(warning);
+  if (a.json) {
+    printJson({{"set", a.set},
+               {"model", a.model},
+               {"annotator", workspace::modelAnnotator(a.model)},
+               {"runs", done->runs},
+               {"groups", done->groups},
+               {"segments", done->segments}});
+  } else {
+    std::printf(
+        "labelled %lld runs (%lld run-groups, %lld segments) in '%s' from model '%s' as "
+        "%s\n",
+        static_cast<long long>(done->runs), static_cast<long long>(done->groups),
+        static_cast<long long>(done->segments), a.set.c_str(), a.model.c_str(),
+        workspace::modelAnnotator(a.model).c_str());
+  }
+  return kExitOk;
+}
+
 }  // namespace
 
 void registerTeamLabelVerbs(CLI::App& labels) {
@@ -424,6 +463,21 @@ void registerTeamLabelVerbs(CLI::App& labels) {
         "--json", a->json,
         R"(Print {"assignments":[{"run","group","annotator","set","state","updated_by","updated_at"}]})");
     setAction(cmd, [a] { return runLabelsAssignments(*a); });
+  }
+  {
+    auto a = std::make_shared<FromModelArgs>();
+    CLI::App* cmd = labels.add_subcommand(
+        "from-model",
+        "Label runs with a stored model's offline decision (annotator model:NAME), one edit per "
+        "run and group that the history and undo keep; then fix what it got wrong");
+    cmd->add_option("--db", a->db, dbHelp)->envname("TACTILE_DB")->required();
+    cmd->add_option("--set", a->set, "Label set to write (created when absent)")->required();
+    cmd->add_option("--model", a->model, "A stored model's name")->required();
+    cmd->add_option("--runs", a->runs, "Runs (default: every stored run)");
+    cmd->add_option("--groups", a->groups, "Groups (default: every group the model covers)");
+    cmd->add_flag("--json", a->json,
+                  R"(Print {"set","model","annotator","runs","groups","segments"})");
+    setAction(cmd, [a] { return runLabelsFromModel(*a); });
   }
   {
     auto a = std::make_shared<AgreementArgs>();

@@ -91,6 +91,13 @@ grep -q "roles belong to a PostgreSQL server" err.txt || fail "grant on a file: 
 "$T" autolabel --db local.db --all --set truth > /dev/null
 "$T" train --db local.db --set truth --name m1 > /dev/null 2>&1 || fail "train"
 "$T" models export --db local.db m1 --out m1.json > /dev/null
+# Labels from the model: marked model:m1 in the segments and the history.
+"$T" labels from-model --db local.db --set auto --model m1 --runs run_0000 --json > auto.json 2> /dev/null ||
+  fail "labels from-model"
+[ "$(json 'd["annotator"], d["runs"]' < auto.json)" = "model:m1 1" ] || fail "from-model: $(cat auto.json)"
+"$T" labels history --db local.db --set auto --run run_0000 --json > autoh.json
+[ "$(json 'sorted({r["annotator"] + "/" + r["action"] for r in d["revisions"]})' < autoh.json)" = \
+  "['model:m1/model']" ] || fail "from-model history: $(cat autoh.json)"
 # TACTILE_DB names the database of a verb given neither --db nor files.
 TACTILE_DB=local.db "$T" classify --model m1 --run run_0001 --decision step --json > env.json ||
   fail "classify with TACTILE_DB"

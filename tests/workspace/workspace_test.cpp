@@ -462,6 +462,79 @@ TEST(WorkspaceTrain, LeaveOneRunOutScoresEveryLabelledContactRow) {
   EXPECT_FALSE(f.ws->train(request).ok());
 }
 
+// Labels from a model: each run and group takes the model's offline decision, marked
+// "model:NAME" in the segments and the history; a range replaces only its steps, and undo
+// restores exactly.
+TEST(WorkspaceLabels, ModelLabelsAreTheOfflineDecisionAndUndoable) {
+  TrainFixture f;
+  ASSERT_TRUE(f.ws);
+  TrainRequest request;
+  request.labelSet = "truth";
+  request.groups = {SensorGroup::Back, SensorGroup::Front};
+  request.settings = quickSettings();
+  request.modelName = "m";
+  auto trained = f.ws->train(request);
+  ASSERT_TRUE(trained.ok()) << trained.errorText();
+
+  auto done = f.ws->labelFromModel("auto", "m", {"run_a", "run_b"}, {});
+  ASSERT_TRUE(done.ok()) << done.errorText();
+  EXPECT_EQ(done->runs, 2);
+  EXPECT_EQ(done->groups, 4);  // the two groups the model covers, in each run
+  EXPECT_TRUE(done->warnings.empty());
+  const auto set = f.ws->labelStore().find("auto");
+  ASSERT_TRUE(set.ok());
+  analysis::ClassifyOptions offline;
+  offline.decision = analysis::DecisionMode::Offline;
+  auto classified = f.ws->classify("m", "run_a", offline);
+  ASSERT_TRUE(classified.ok()) << classified.errorText();
+  const std::int64_t run = f.ws->runStore().find("run_a")->id;
+  const auto stored = f.ws->labelStore().segments(set->id, run).value();
+  std::size_t checked = 0;
+  for (const LabelSegment& seg : stored) {
+    EXPECT_EQ(seg.annotator, "model:m");
+    EXPECT_TRUE(seg.group == SensorGroup::Back || seg.group == SensorGroup::Front);
+    const auto& g = classified->result.groups[static_cast<std::size_t>(groupIndex(seg.group))];
+    for (std::int64_t k = seg.firstStep; k <= seg.lastStep; ++k, ++checked) {
+      ASSERT_EQ(g.className(static_cast<std::size_t>(k)), contactClassName(seg.cls)) << k;
+    }
+  }
+  EXPECT_EQ(checked, 2 * kSteps);  // every step of both groups was decided
+  const auto history = f.ws->labelStore().history(set->id, run).value();
+  ASSERT_EQ(history.size(), 2u);
+  EXPECT_EQ(history[0].annotator, "model:m");
+  EXPECT_EQ(history[0].action, "model");
+
+  // A range: only its steps change; undo and redo exactly.
+  std::vector<LabelSegment> corner(1);
+  corner[0].group = SensorGroup::Front;
+  corner[0].firstStep = 100;
+  corner[0].lastStep = 149;
+  corner[0].cls = ContactClass::Corner;
+  corner[0].annotator = "model:m";
+  const auto outside = groupSegments(*f.ws, set->id, run, SensorGroup::Front);
+  const LabelEdit edit = checkUndoRedo(*f.ws, set->id, run, SensorGroup::Front, [&] {
+    return f.ws->replaceLabels(set->id, run, SensorGroup::Front, 100, 149, corner);
+  });
+  for (const SegmentKey& k : groupSegments(*f.ws, set->id, run, SensorGroup::Front)) {
+    if (std::get<1>(k) < 100 || std::get<0>(k) > 149) {
+      // Outside the range: a piece of what was there before.
+      EXPECT_TRUE(std::any_of(outside.begin(), outside.end(), [&](const SegmentKey& o) {
+        return std::get<0>(o) <= std::get<0>(k) && std::get<1>(k) <= std::get<1>(o) &&
+               std::get<2>(o) == std::get<2>(k);
+      }));
+    } else {
+      EXPECT_EQ(std::get<2>(k), ContactClass::Corner);
+    }
+  }
+  EXPECT_GT(edit.revision, history.back().revision);
+  // A group the model lacks is named, and an unknown model changes nothing.
+  auto lacking = f.ws->labelFromModel("auto", "m", {"run_a"}, {SensorGroup::Left});
+  ASSERT_TRUE(lacking.ok());
+  ASSERT_EQ(lacking->warnings.size(), 1u);
+  EXPECT_EQ(lacking->groups, 0);
+  EXPECT_FALSE(f.ws->labelFromModel("auto", "nope", {}, {}).ok());
+}
+
 TEST(WorkspaceTrain, StoredModelNamesItsProvenance) {
   TrainFixture f;
   ASSERT_TRUE(f.ws);
