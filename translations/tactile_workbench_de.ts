@@ -197,6 +197,10 @@
         <source>New simulation window</source>
         <translation>Neues Simulatorfenster</translation>
     </message>
+    <message>
+        <source>Label the selection (or the visible steps) from the predictions&apos; model</source>
+        <translation>Auswahl (oder sichtbare Schritte) mit dem Modell der Vorhersagen beschriften</translation>
+    </message>
 </context>
 <context>
     <name>SimKeys</name>
@@ -543,6 +547,10 @@
     <message>
         <source>someone</source>
         <translation>jemand</translation>
+    </message>
+    <message>
+        <source>Label steps %1-%2 from the model</source>
+        <translation>Schritte %1-%2 mit dem Modell beschriften</translation>
     </message>
 </context>
 <context>
@@ -1363,6 +1371,22 @@ Forschungsumgebung für die taktile Navigation mobiler Roboter.</translation>
     <message>
         <source>read only</source>
         <translation>nur lesen</translation>
+    </message>
+    <message>
+        <source>&amp;Label from Model</source>
+        <translation>Mit Modell &amp;beschriften</translation>
+    </message>
+    <message>
+        <source>Open a run and a label set first.</source>
+        <translation>Öffnen Sie zuerst einen Lauf und ein Label-Set.</translation>
+    </message>
+    <message>
+        <source>Show a model&apos;s predictions first (Learn &gt; Show Predictions): their model&apos;s decisions are what Label from Model writes.</source>
+        <translation>Zeigen Sie zuerst die Vorhersagen eines Modells (Lernen &gt; Vorhersagen zeigen): dessen Entscheidungen schreibt „Mit Modell beschriften“.</translation>
+    </message>
+    <message>
+        <source>Steps %1-%2 labelled from the model (Undo takes it back)</source>
+        <translation>Schritte %1-%2 mit dem Modell beschriftet (Rückgängig nimmt es zurück)</translation>
     </message>
 </context>
 <context>

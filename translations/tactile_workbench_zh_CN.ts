@@ -197,6 +197,10 @@
         <source>New simulation window</source>
         <translation>新建模拟器窗口</translation>
     </message>
+    <message>
+        <source>Label the selection (or the visible steps) from the predictions&apos; model</source>
+        <translation>用预测所用模型标注所选（或可见）的步</translation>
+    </message>
 </context>
 <context>
     <name>SimKeys</name>
@@ -543,6 +547,10 @@
     <message>
         <source>someone</source>
         <translation>某人</translation>
+    </message>
+    <message>
+        <source>Label steps %1-%2 from the model</source>
+        <translation>用模型标注第 %1-%2 步</translation>
     </message>
 </context>
 <context>
@@ -1353,6 +1361,22 @@ Research workbench for tactile-based mobile-robot navigation.</source>
     <message>
         <source>read only</source>
         <translation>只读</translation>
+    </message>
+    <message>
+        <source>&amp;Label from Model</source>
+        <translation>用模型标注(&amp;L)</translation>
+    </message>
+    <message>
+        <source>Open a run and a label set first.</source>
+        <translation>请先打开一次运行和一个标签集。</translation>
+    </message>
+    <message>
+        <source>Show a model&apos;s predictions first (Learn &gt; Show Predictions): their model&apos;s decisions are what Label from Model writes.</source>
+        <translation>请先显示某个模型的预测（学习 &gt; 显示预测）：“用模型标注”写入的就是该模型的决策。</translation>
+    </message>
+    <message>
+        <source>Steps %1-%2 labelled from the model (Undo takes it back)</source>
+        <translation>已用模型标注第 %1-%2 步（撤销可还原）</translation>
     </message>
 </context>
 <context>

@@ -512,6 +512,8 @@ void MainWindow::createActions() {
   bindShortcut(
       learn->addAction(tr("Pre&vious Disagreement"), this, [this] { jumpToDisagreement(false); }),
       QStringLiteral("previousDisagreement"));
+  bindShortcut(learn->addAction(tr("&Label from Model"), this, &MainWindow::labelFromModel),
+               QStringLiteral("labelFromModel"));
   learn->addSeparator();
   learn->addAction(tr("&Export Model..."), this, &MainWindow::chooseModelToExport);
   learn->addAction(tr("&Import Model..."), this, &MainWindow::chooseModelToImport);
@@ -779,6 +781,38 @@ void MainWindow::applyRights() {
                          : rights.editLabels ? tr("annotator")
                                              : tr("read only")));
   }
+}
+
+void MainWindow::labelFromModel() {
+  if (!session_->isOpen() || !labels_->hasSet()) {
+    showError(tr("Open a run and a label set first."));
+    return;
+  }
+  if (!predictions_->hasPredictions()) {
+    showError(
+        tr("Show a model's predictions first (Learn > Show Predictions): their model's "
+           "decisions are what Label from Model writes."));
+    return;
+  }
+  std::array<std::string, kGroupCount> models;
+  for (std::size_t g = 0; g < models.size(); ++g)
+    models[g] = predictions_->models()[g].toStdString();
+  // The selection, else the steps in view.
+  std::int64_t first = timeline_->visibleRange().first;
+  std::int64_t last = timeline_->visibleRange().last;
+  if (const auto sel = session_->selection()) {
+    first = sel->first;
+    last = sel->last;
+  }
+  const std::vector<SensorGroup> groups = labelPanel_->groupsFor(first, last);
+  QApplication::setOverrideCursor(Qt::WaitCursor);
+  const Status s = labels_->labelFromModels(models, groups, first, last);
+  QApplication::restoreOverrideCursor();
+  if (!s) {
+    showError(QString::fromStdString(s.errorText()));
+    return;
+  }
+  showMessage(tr("Steps %1-%2 labelled from the model (Undo takes it back)").arg(first).arg(last));
 }
 
 void MainWindow::serverLost(const QString& message) {

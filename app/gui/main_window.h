@@ -150,6 +150,9 @@ class MainWindow : public QMainWindow {
   void serverLost(const QString& message);
   // A run's assignment from the runs dock's context menu (RunListView::assignmentRequested).
   void changeAssignment(const QString& run, const QString& action);
+  // Learn > Label from Model: the selection (or the steps in view) of the labelled groups take the
+  // offline decision of the predictions' models, as one undoable edit.
+  void labelFromModel();
   // Greys out what the database's role may not do (docs/team.md#roles).
   void applyRights();
   void chooseRunFiles();

@@ -82,6 +82,60 @@ class TeamLabelsTest : public QObject {
     QCOMPARE(history.rowCount(), 5);
   }
 
+  void labelFromModelWritesTheDecisionAsOneUndoableEdit() {
+    GuiFixture fx(400);
+    auto run = fx.workspace->runStore().find(fx.runName);
+    QVERIFY(run.ok());
+    QVERIFY(fx.workspace->labelStore().autolabel(run->id, "truth").ok());
+    tactile::workspace::TrainRequest request;
+    request.labelSet = "truth";
+    request.modelName = "m";
+    tactile::analysis::TrainSettings quick;
+    quick.classifier.gmm.components = 1;
+    quick.classifier.gmm.varianceFloor = 0.01;
+    request.settings = tactile::analysis::GroupSettings::same(quick);
+    auto trained = fx.workspace->train(request);
+    QVERIFY2(trained.ok(), trained.ok() ? "" : trained.errorText().c_str());
+    RunSession session;
+    LabelModel labels;
+    labels.setAnnotator("anna");
+    session.setWorkspace(fx.workspace.get());
+    QVERIFY(session.open(fx.runName).ok());
+    labels.setWorkspace(fx.workspace.get());
+    QVERIFY(labels.createSet("mine").ok());
+    labels.setRun(session.info().id, session.info().name, session.stepCount());
+    QVERIFY(labels.label({SensorGroup::Right}, 0, 399, ContactClass::Wall).ok());
+    std::array<std::string, tactile::kGroupCount> models;
+    models.fill("m");
+    // The right side and another group the model covers (a wall-following run's contacts).
+    QVERIFY(trained->bundle.find(SensorGroup::Right) != nullptr);
+    SensorGroup other = SensorGroup::Right;
+    for (const auto& g : tactile::kSensorGroups) {
+      if (g.group != SensorGroup::Right && trained->bundle.find(g.group) != nullptr)
+        other = g.group;
+    }
+    QVERIFY(other != SensorGroup::Right);
+    const std::vector<SensorGroup> groups{SensorGroup::Right, other};
+    QVERIFY(labels.labelFromModels(models, groups, 100, 199).ok());
+    QCOMPARE(labels.undoStack()->count(), 2);  // anna's edit, then the model's, one step
+    // Inside the range the model's decisions, outside anna's Wall.
+    QCOMPARE(*labels.classAt(SensorGroup::Right, 99), ContactClass::Wall);
+    QCOMPARE(*labels.classAt(SensorGroup::Right, 200), ContactClass::Wall);
+    for (const auto& seg : labels.segments(other)) {
+      QVERIFY(seg.firstStep >= 100 && seg.lastStep <= 199);
+      QCOMPARE(seg.annotator, std::string("model:m"));
+    }
+    QVERIFY(!labels.segments(other).empty());
+    auto history = fx.workspace->labelStore().history(labels.setId(), session.info().id);
+    QVERIFY(history.ok());
+    QCOMPARE(history->back().annotator, std::string("model:m"));
+    QCOMPARE(history->back().action, std::string("model"));
+    labels.undoStack()->undo();
+    QVERIFY(labels.segments(other).empty());
+    QCOMPARE(labels.segments(SensorGroup::Right).size(), std::size_t{1});
+    QCOMPARE(*labels.classAt(SensorGroup::Right, 150), ContactClass::Wall);
+  }
+
   void theRunsDockShowsAssignmentsAndFiltersMine() {
     GuiFixture fx(100);
     tactile::gui::RunListModel model;

@@ -119,6 +119,9 @@ std::vector<ShortcutEntry> shortcutTable() {
       {QStringLiteral("previousDisagreement"), learn,
        Shortcuts::tr("Previous stretch where the model disagrees with the labels"),
        keys({Qt::SHIFT | Qt::Key_N}), false},
+      {QStringLiteral("labelFromModel"), learn,
+       Shortcuts::tr("Label the selection (or the visible steps) from the predictions' model"),
+       keys({Qt::CTRL | Qt::Key_L}), false},
       {QStringLiteral("keyboardShortcuts"), help, Shortcuts::tr("This list of keyboard shortcuts"),
        keys({Qt::Key_F1}), false},
   };

@@ -5,6 +5,7 @@
 #include <QUndoStack>
 
 #include <algorithm>
+#include <map>
 #include <memory>
 #include <optional>
 
@@ -243,6 +244,58 @@ Status LabelModel::removeSegment(std::int64_t segmentId) {
         return edit;
       });
   undo_->push(command);
+  Status reloaded = reload();
+  if (*failed) {
+    reportFailure(**failed);
+    return **failed;
+  }
+  return reloaded;
+}
+
+Status LabelModel::labelFromModels(const std::array<std::string, kGroupCount>& models,
+                                   const std::vector<SensorGroup>& groups, std::int64_t first,
+                                   std::int64_t last) {
+  if (workspace_ == nullptr || setId_ == 0) return Error("no label set is open");
+  if (runId_ == 0) return Error("no run is open");
+  if (first > last) std::swap(first, last);
+  first = std::max<std::int64_t>(0, first);
+  last = std::min(stepCount_ - 1, last);
+  if (first > last) return Error("the range lies outside the run");
+  // Each model classifies the run once, with the offline decision.
+  std::map<std::string, workspace::Workspace::Classified> classified;
+  analysis::ClassifyOptions offline;
+  offline.decision = analysis::DecisionMode::Offline;
+  for (const SensorGroup g : groups) {
+    const std::string& model = models[static_cast<std::size_t>(groupIndex(g))];
+    if (model.empty() || classified.count(model) != 0) continue;
+    auto result = workspace_->classify(model, runName_, offline);
+    if (!result) return result.error();
+    classified.emplace(model, std::move(result.value()));
+  }
+  if (classified.empty()) return Error("no model is chosen for these groups");
+  const QString text = tr("Label steps %1-%2 from the model").arg(first).arg(last);
+  auto failed = std::make_shared<std::optional<Error>>();
+  undo_->beginMacro(text);
+  for (const SensorGroup g : groups) {
+    const std::string& model = models[static_cast<std::size_t>(groupIndex(g))];
+    const auto it = classified.find(model);
+    if (it == classified.end()) continue;
+    const auto& gc = it->second.result.groups[static_cast<std::size_t>(groupIndex(g))];
+    if (gc.model == nullptr) continue;
+    storage::EditOptions options = editOptions();
+    options.annotator = workspace::modelAnnotator(model);
+    std::vector<storage::LabelSegment> segments =
+        workspace::decisionSegments(gc, g, first, last, options.annotator);
+    const std::int64_t set = setId_;
+    const std::int64_t run = runId_;
+    workspace::Workspace* ws = workspace_;
+    undo_->push(new LabelEditCommand(this, text, [=] {
+      auto edit = ws->replaceLabels(set, run, g, first, last, segments, options);
+      if (!edit && !*failed) *failed = edit.error();
+      return edit;
+    }));
+  }
+  undo_->endMacro();
   Status reloaded = reload();
   if (*failed) {
     reportFailure(**failed);

@@ -73,6 +73,12 @@ class LabelModel : public QObject {
   // Gives a segment a new range (e.g. an edge dragged or nudged).
   Status moveSegment(std::int64_t segmentId, std::int64_t first, std::int64_t last);
   Status removeSegment(std::int64_t segmentId);
+  // Steps [first, last] of each group take the offline decision of the stored model named for it
+  // (models[group index]; groups without one are skipped), as one undoable edit whose revisions
+  // carry the annotator "model:NAME". Labels outside the range stay.
+  Status labelFromModels(const std::array<std::string, kGroupCount>& models,
+                         const std::vector<SensorGroup>& groups, std::int64_t first,
+                         std::int64_t last);
 
   QUndoStack* undoStack() const { return undo_; }
 
