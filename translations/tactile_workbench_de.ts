@@ -201,6 +201,10 @@
         <source>Label the selection (or the visible steps) from the predictions&apos; model</source>
         <translation>Auswahl (oder sichtbare Schritte) mit dem Modell der Vorhersagen beschriften</translation>
     </message>
+    <message>
+        <source>Next stretch where the model is unsure (below the threshold in Preferences)</source>
+        <translation>Nächster Abschnitt, in dem das Modell unsicher ist (unter der Schwelle in den Einstellungen)</translation>
+    </message>
 </context>
 <context>
     <name>SimKeys</name>
@@ -1388,6 +1392,18 @@ Forschungsumgebung für die taktile Navigation mobiler Roboter.</translation>
         <source>Steps %1-%2 labelled from the model (Undo takes it back)</source>
         <translation>Schritte %1-%2 mit dem Modell beschriftet (Rückgängig nimmt es zurück)</translation>
     </message>
+    <message>
+        <source>Next &amp;Doubt</source>
+        <translation>Nächster &amp;Zweifel</translation>
+    </message>
+    <message>
+        <source>The model is at least %1 % sure everywhere</source>
+        <translation>Das Modell ist überall mindestens zu %1 % sicher</translation>
+    </message>
+    <message>
+        <source>Step %1, group %2: the model is unsure (%3 % %4)</source>
+        <translation>Schritt %1, Gruppe %2: das Modell ist unsicher (%3 % %4)</translation>
+    </message>
 </context>
 <context>
     <name>tactile::gui::McapExportDialog</name>
@@ -1621,6 +1637,18 @@ Forschungsumgebung für die taktile Navigation mobiler Roboter.</translation>
     <message>
         <source>Timeline &amp;row height:</source>
         <translation>&amp;Zeilenhöhe der Zeitleisten:</translation>
+    </message>
+    <message>
+        <source> %</source>
+        <translation> %</translation>
+    </message>
+    <message>
+        <source>Learn &gt; Next Doubt (D) stops where the model&apos;s posterior of its own prediction is below this</source>
+        <translation>Lernen &gt; Nächster Zweifel (D) hält, wo die A-posteriori-Wahrscheinlichkeit der eigenen Vorhersage des Modells darunter liegt</translation>
+    </message>
+    <message>
+        <source>Model &amp;unsure below:</source>
+        <translation>Modell &amp;unsicher unter:</translation>
     </message>
 </context>
 <context>

@@ -201,6 +201,10 @@
         <source>Label the selection (or the visible steps) from the predictions&apos; model</source>
         <translation>用预测所用模型标注所选（或可见）的步</translation>
     </message>
+    <message>
+        <source>Next stretch where the model is unsure (below the threshold in Preferences)</source>
+        <translation>下一段模型不确定的区间（低于首选项中的阈值）</translation>
+    </message>
 </context>
 <context>
     <name>SimKeys</name>
@@ -1378,6 +1382,18 @@ Research workbench for tactile-based mobile-robot navigation.</source>
         <source>Steps %1-%2 labelled from the model (Undo takes it back)</source>
         <translation>已用模型标注第 %1-%2 步（撤销可还原）</translation>
     </message>
+    <message>
+        <source>Next &amp;Doubt</source>
+        <translation>下一个疑点(&amp;D)</translation>
+    </message>
+    <message>
+        <source>The model is at least %1 % sure everywhere</source>
+        <translation>模型在各处的把握至少为 %1 %</translation>
+    </message>
+    <message>
+        <source>Step %1, group %2: the model is unsure (%3 % %4)</source>
+        <translation>第 %1 步，组 %2：模型不确定（%3 % %4）</translation>
+    </message>
 </context>
 <context>
     <name>tactile::gui::McapExportDialog</name>
@@ -1611,6 +1627,18 @@ Research workbench for tactile-based mobile-robot navigation.</source>
     <message>
         <source>Timeline &amp;row height:</source>
         <translation>时间轴行高(&amp;R)：</translation>
+    </message>
+    <message>
+        <source> %</source>
+        <translation> %</translation>
+    </message>
+    <message>
+        <source>Learn &gt; Next Doubt (D) stops where the model&apos;s posterior of its own prediction is below this</source>
+        <translation>学习 &gt; 下一个疑点 (D) 停在模型对自身预测的后验概率低于此值之处</translation>
+    </message>
+    <message>
+        <source>Model &amp;unsure below:</source>
+        <translation>模型不确定阈值(&amp;U)：</translation>
     </message>
 </context>
 <context>

@@ -512,6 +512,8 @@ void MainWindow::createActions() {
   bindShortcut(
       learn->addAction(tr("Pre&vious Disagreement"), this, [this] { jumpToDisagreement(false); }),
       QStringLiteral("previousDisagreement"));
+  bindShortcut(learn->addAction(tr("Next &Doubt"), this, &MainWindow::jumpToDoubt),
+               QStringLiteral("nextDoubt"));
   bindShortcut(learn->addAction(tr("&Label from Model"), this, &MainWindow::labelFromModel),
                QStringLiteral("labelFromModel"));
   learn->addSeparator();
@@ -780,6 +782,36 @@ void MainWindow::applyRights() {
                          : rights.keepModels ? tr("researcher")
                          : rights.editLabels ? tr("annotator")
                                              : tr("read only")));
+  }
+}
+
+void MainWindow::jumpToDoubt() {
+  if (!predictions_->hasPredictions())
+    return showError(tr("No predictions shown: Learn > Show Predictions"));
+  const double threshold =
+      QSettings().value(keys::kDoubtThreshold, keys::kDefaultDoubtThreshold).toDouble();
+  const std::optional<std::int64_t> at =
+      predictions_->nextDoubt(session_->currentStep(), threshold);
+  if (!at) {
+    return showMessage(
+        tr("The model is at least %1 % sure everywhere").arg(100.0 * threshold, 0, 'f', 0));
+  }
+  session_->setCurrentStep(*at);
+  if (const auto group = predictions_->doubtfulGroup(*at, threshold)) {
+    session_->setSelectedGroup(*group);
+    const GroupPrediction& p = predictions_->group(*group);
+    const auto said = p.classAt(*at);
+    const std::string_view name = groupInfo(*group).shortName;
+    showMessage(tr("Step %1, group %2: the model is unsure (%3 % %4)")
+                    .arg(*at)
+                    .arg(QString::fromUtf8(name.data(), static_cast<qsizetype>(name.size())))
+                    .arg(100.0 * p.confidence[static_cast<std::size_t>(*at)], 0, 'f', 0)
+                    .arg(said ? className(*said) : QString()));
+  }
+  const StepRange visible = timeline_->visibleRange();
+  if (*at < visible.first || *at > visible.last) {
+    const std::int64_t half = std::max<std::int64_t>(1, visible.size() / 2);
+    timeline_->setVisibleRange({*at - half, *at + half});
   }
 }
 

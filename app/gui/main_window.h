@@ -153,6 +153,8 @@ class MainWindow : public QMainWindow {
   // Learn > Label from Model: the selection (or the steps in view) of the labelled groups take the
   // offline decision of the predictions' models, as one undoable edit.
   void labelFromModel();
+  // Learn > Next Doubt (D): the next stretch where the predictions are unsure.
+  void jumpToDoubt();
   // Greys out what the database's role may not do (docs/team.md#roles).
   void applyRights();
   void chooseRunFiles();

@@ -9,6 +9,8 @@
 #include <QSpinBox>
 #include <QVBoxLayout>
 
+#include <cmath>
+
 #include "app/gui/common/settings_keys.h"
 
 namespace tactile::gui {
@@ -48,6 +50,14 @@ PreferencesDialog::PreferencesDialog(QWidget* parent) : QDialog(parent) {
   form->addRow(QString(), note);
   form->addRow(tr("&Annotator:"), annotator_);
   form->addRow(tr("Timeline &row height:"), rowHeight_);
+  doubt_ = new QSpinBox(this);
+  doubt_->setObjectName(QStringLiteral("doubtThreshold"));
+  doubt_->setRange(50, 99);
+  doubt_->setSuffix(tr(" %"));
+  doubt_->setToolTip(
+      tr("Learn > Next Doubt (D) stops where the model's posterior of its own "
+         "prediction is below this"));
+  form->addRow(tr("Model &unsure below:"), doubt_);
   auto* buttons = new QDialogButtonBox(QDialogButtonBox::Ok | QDialogButtonBox::Cancel, this);
   connect(buttons, &QDialogButtonBox::accepted, this, &QDialog::accept);
   connect(buttons, &QDialogButtonBox::rejected, this, &QDialog::reject);
@@ -64,6 +74,8 @@ void PreferencesDialog::load() {
   language_->setCurrentIndex(std::max(0, at));
   annotator_->setText(settings.value(keys::kAnnotator).toString());
   rowHeight_->setValue(settings.value(keys::kTimelineRowHeight, kDefaultRowHeight).toInt());
+  doubt_->setValue(static_cast<int>(std::lround(
+      100.0 * settings.value(keys::kDoubtThreshold, keys::kDefaultDoubtThreshold).toDouble())));
 }
 
 void PreferencesDialog::save() const {
@@ -71,6 +83,7 @@ void PreferencesDialog::save() const {
   settings.setValue(keys::kLanguage, language_->currentData().toString());
   settings.setValue(keys::kAnnotator, annotator_->text().trimmed());
   settings.setValue(keys::kTimelineRowHeight, rowHeight_->value());
+  settings.setValue(keys::kDoubtThreshold, doubt_->value() / 100.0);
 }
 
 }  // namespace tactile::gui

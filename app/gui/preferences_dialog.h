@@ -36,6 +36,7 @@ class PreferencesDialog : public QDialog {
   QComboBox* language_;
   QLineEdit* annotator_;
   QSpinBox* rowHeight_;
+  QSpinBox* doubt_;
 };
 
 }  // namespace tactile::gui

@@ -92,6 +92,7 @@ class PredictionTest : public QObject {
   void predictionsEqualTheCoreClassification();
   void disagreementsAreWherePredictionAndLabelDiffer();
   void nextDisagreementWrapsAround();
+  void nextDoubtFindsWhereTheModelIsUnsure();
   void nLandsOnTheNextDisagreeingStretch();
   void holesMatchTheSideScan();
   void timelineAndRouteShowPredictions();
@@ -217,6 +218,51 @@ void PredictionTest::nextDisagreementWrapsAround() {
   QCOMPARE(predictions.previousDisagreement(a, std::nullopt), std::optional<std::int64_t>(b));
   QCOMPARE(predictions.nextDisagreement(0, SensorGroup::Back), std::optional<std::int64_t>(a));
   QVERIFY(!predictions.nextDisagreement(0, SensorGroup::Front));
+}
+
+// D lands on the first step of each stretch where some group's posterior is below the
+// threshold, checked against the posteriors themselves; at threshold 0 nothing is unsure.
+void PredictionTest::nextDoubtFindsWhereTheModelIsUnsure() {
+  Reviewed r("truth", false);
+  PredictionModel& predictions = *r.predictions;
+  const std::int64_t steps = predictions.stepCount();
+  QVERIFY(steps > 0);
+  QVERIFY(!predictions.nextDoubt(0, 0.0));
+  // Pick the threshold between the lowest posteriors so that some, not all, steps are unsure.
+  std::vector<float> all;
+  for (const GroupInfo& g : kSensorGroups) {
+    const gui::GroupPrediction& p = predictions.group(g.group);
+    for (std::size_t k = 0; k < p.cls.size(); ++k)
+      if (p.cls[k] >= 0) all.push_back(p.confidence[k]);
+  }
+  std::sort(all.begin(), all.end());
+  QVERIFY(!all.empty());
+  QVERIFY2(all.front() < 0.999f, "the model is certain everywhere: no doubt to find");
+  const double threshold = std::min(0.999, static_cast<double>(all.front()) + 1e-6);
+  auto unsure = [&](std::int64_t t) {
+    for (const GroupInfo& g : kSensorGroups) {
+      const gui::GroupPrediction& p = predictions.group(g.group);
+      const auto k = static_cast<std::size_t>(t);
+      if (k < p.cls.size() && p.cls[k] >= 0 && p.confidence[k] < threshold) return true;
+    }
+    return false;
+  };
+  std::int64_t expected = -1;
+  for (std::int64_t t = 1; t < steps && expected < 0; ++t)
+    if (unsure(t) && !unsure(t - 1)) expected = t;
+  if (expected < 0 && unsure(0)) expected = 0;
+  const auto found = predictions.nextDoubt(0, threshold);
+  QVERIFY(found.has_value());
+  QVERIFY(unsure(*found));
+  QVERIFY(*found == 0 || !unsure(*found - 1));
+  if (expected > 0) QCOMPARE(*found, expected);
+  const auto group = predictions.doubtfulGroup(*found, threshold);
+  QVERIFY(group.has_value());
+  QVERIFY(predictions.group(*group).confidence[static_cast<std::size_t>(*found)] < threshold);
+  // From there the next stretch is another one (or the same after wrapping, when it is the only).
+  const auto again = predictions.nextDoubt(*found, threshold);
+  QVERIFY(again.has_value());
+  QVERIFY(*again == *found || !unsure(*again - 1));
 }
 
 // Regression: N moved one step at a time through a stretch of disagreement (hundreds of presses

@@ -20,6 +20,9 @@ inline constexpr QLatin1StringView kRunFilter{"runs/filter"};
 // (read once at start). The annotator's name is stored on every label segment the GUI writes.
 inline constexpr QLatin1StringView kLanguage{"ui/language"};
 inline constexpr QLatin1StringView kAnnotator{"labels/annotator"};
+// Posterior below which a prediction counts as unsure (Learn > Next Doubt), 0.5 to 0.99.
+inline constexpr QLatin1StringView kDoubtThreshold{"labels/doubtThreshold"};
+inline constexpr double kDefaultDoubtThreshold = 0.8;
 // Height in pixels of one label, truth or model row of the timelines.
 inline constexpr QLatin1StringView kTimelineRowHeight{"timelineView/rowHeight"};
 inline constexpr int kMaxRecentDatabases = 8;

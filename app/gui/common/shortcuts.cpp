@@ -119,6 +119,10 @@ std::vector<ShortcutEntry> shortcutTable() {
       {QStringLiteral("previousDisagreement"), learn,
        Shortcuts::tr("Previous stretch where the model disagrees with the labels"),
        keys({Qt::SHIFT | Qt::Key_N}), false},
+      {QStringLiteral("nextDoubt"), learn,
+       Shortcuts::tr("Next stretch where the model is unsure (below the threshold in "
+                     "Preferences)"),
+       keys({Qt::Key_D}), false},
       {QStringLiteral("labelFromModel"), learn,
        Shortcuts::tr("Label the selection (or the visible steps) from the predictions' model"),
        keys({Qt::CTRL | Qt::Key_L}), false},

@@ -291,4 +291,31 @@ std::optional<std::int64_t> PredictionModel::previousDisagreement(
   return std::nullopt;
 }
 
+std::optional<SensorGroup> PredictionModel::doubtfulGroup(std::int64_t step,
+                                                          double threshold) const {
+  std::optional<SensorGroup> least;
+  float lowest = static_cast<float>(threshold);
+  for (const GroupInfo& info : kSensorGroups) {
+    const GroupPrediction& p = groups_[static_cast<std::size_t>(groupIndex(info.group))];
+    if (step < 0 || step >= static_cast<std::int64_t>(p.cls.size())) continue;
+    const auto k = static_cast<std::size_t>(step);
+    if (p.cls[k] < 0 || k >= p.confidence.size()) continue;
+    if (p.confidence[k] < lowest) {
+      lowest = p.confidence[k];
+      least = info.group;
+    }
+  }
+  return least;
+}
+
+std::optional<std::int64_t> PredictionModel::nextDoubt(std::int64_t from, double threshold) const {
+  if (steps_ <= 0) return std::nullopt;
+  auto doubt = [&](std::int64_t t) { return doubtfulGroup(t, threshold).has_value(); };
+  for (std::int64_t k = 1; k <= steps_; ++k) {
+    const std::int64_t t = ((from + k) % steps_ + steps_) % steps_;
+    if (doubt(t) && (t == 0 || !doubt(t - 1))) return t;
+  }
+  return std::nullopt;
+}
+
 }  // namespace tactile::gui

@@ -97,6 +97,12 @@ class PredictionModel : public QObject {
                                                std::optional<SensorGroup> group) const;
   std::optional<std::int64_t> previousDisagreement(std::int64_t from,
                                                    std::optional<SensorGroup> group) const;
+  // The first step of the next stretch (wrapping around the run) where the model is unsure: some
+  // group's predicted class has a posterior below `threshold`. From inside a stretch, skips the
+  // rest of it. nullopt when the model is at least that sure everywhere.
+  std::optional<std::int64_t> nextDoubt(std::int64_t from, double threshold) const;
+  // The least sure group at a step (nullopt where every group is at least `threshold` sure).
+  std::optional<SensorGroup> doubtfulGroup(std::int64_t step, double threshold) const;
 
  signals:
   void ready();
