@@ -329,6 +329,20 @@ Result<std::vector<std::pair<std::int64_t, std::int64_t>>> LabelStore::labelledS
   });
 }
 
+Result<std::vector<std::pair<std::int64_t, std::int64_t>>> LabelStore::modelLabelledSteps(
+    std::int64_t setId) {
+  return guarded<std::vector<std::pair<std::int64_t, std::int64_t>>>(*impl_, [&] {
+    db::Statement& s = impl_->statement(
+        "SELECT run_id, CAST(SUM(last_step - first_step + 1) AS BIGINT) FROM label_segments WHERE "
+        "set_id = ? AND annotator LIKE 'model:%' GROUP BY run_id ORDER BY run_id");
+    s.bind(1, setId);
+    std::vector<std::pair<std::int64_t, std::int64_t>> out;
+    while (s.step())
+      out.emplace_back(s.columnInt(0), s.columnInt(1));
+    return out;
+  });
+}
+
 Result<std::vector<LabelSegment>> LabelStore::segments(std::int64_t setId, std::int64_t runId) {
   return guarded<std::vector<LabelSegment>>(*impl_, [&] {
     db::Statement& s = impl_->statement(

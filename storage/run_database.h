@@ -535,6 +535,8 @@ class LabelStore {
   // Steps covered by the set's segments per run (summed over the eight groups), for the runs it
   // has segments on: (run id, covered group-steps).
   Result<std::vector<std::pair<std::int64_t, std::int64_t>>> labelledSteps(std::int64_t setId);
+  // The same for the segments a model wrote (annotator "model:NAME").
+  Result<std::vector<std::pair<std::int64_t, std::int64_t>>> modelLabelledSteps(std::int64_t setId);
   // Segments of a set (of one run when runId != 0), ordered by run, group, first step.
   Result<std::vector<LabelSegment>> segments(std::int64_t setId, std::int64_t runId = 0);
 

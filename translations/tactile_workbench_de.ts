@@ -1738,6 +1738,14 @@ importiert aus %2</translation>
         <source>Assigned</source>
         <translation>Zugewiesen</translation>
     </message>
+    <message>
+        <source>%1 % (model %2 %)</source>
+        <translation>%1 % (Modell %2 %)</translation>
+    </message>
+    <message>
+        <source>Steps x groups labelled in the current set: %1 % by people, %2 % by a model</source>
+        <translation>Beschriftete Schritte x Gruppen im aktuellen Set: %1 % von Menschen, %2 % von einem Modell</translation>
+    </message>
 </context>
 <context>
     <name>tactile::gui::RunListView</name>

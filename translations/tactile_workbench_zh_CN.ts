@@ -1728,6 +1728,14 @@ imported from %2</source>
         <source>Assigned</source>
         <translation>分配</translation>
     </message>
+    <message>
+        <source>%1 % (model %2 %)</source>
+        <translation>%1 %（模型 %2 %）</translation>
+    </message>
+    <message>
+        <source>Steps x groups labelled in the current set: %1 % by people, %2 % by a model</source>
+        <translation>当前集中已标注的步×组：人工 %1 %，模型 %2 %</translation>
+    </message>
 </context>
 <context>
     <name>tactile::gui::RunListView</name>

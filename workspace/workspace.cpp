@@ -99,6 +99,32 @@ Result<storage::RunTrack> Workspace::loadTrack(std::string_view name) {
   return db_->runs().loadTrack(info->id);
 }
 
+namespace {
+
+// Group-steps per run as percent of the run's steps x 8.
+Result<std::vector<std::pair<std::int64_t, double>>> percentOfRuns(
+    storage::RunDatabase& db, Result<std::vector<std::pair<std::int64_t, std::int64_t>>> covered) {
+  if (!covered) return covered.error();
+  auto runs = db.runs().list();
+  if (!runs) return runs.error();
+  std::vector<std::pair<std::int64_t, double>> out;
+  for (const auto& [runId, groupSteps] : covered.value()) {
+    const auto run = std::find_if(runs->begin(), runs->end(),
+                                  [id = runId](const storage::RunInfo& r) { return r.id == id; });
+    if (run == runs->end() || run->stepCount == 0) continue;
+    out.emplace_back(runId, 100.0 * static_cast<double>(groupSteps) /
+                                static_cast<double>(run->stepCount * kGroupCount));
+  }
+  return out;
+}
+
+}  // namespace
+
+Result<std::vector<std::pair<std::int64_t, double>>> Workspace::modelLabelCoverage(
+    std::int64_t setId) {
+  return percentOfRuns(*db_, db_->labels().modelLabelledSteps(setId));
+}
+
 Result<std::vector<std::pair<std::int64_t, double>>> Workspace::labelCoverage(std::int64_t setId) {
   auto covered = db_->labels().labelledSteps(setId);
   if (!covered) return covered.error();

@@ -207,6 +207,8 @@ class Workspace {
   Result<storage::RunTrack> loadTrack(std::string_view name);
   // Percent of each run's group-steps (steps x 8) that the set's segments cover, by run id.
   Result<std::vector<std::pair<std::int64_t, double>>> labelCoverage(std::int64_t setId);
+  // The same for the part a model labelled (annotator "model:NAME"; the rest is people's).
+  Result<std::vector<std::pair<std::int64_t, double>>> modelLabelCoverage(std::int64_t setId);
 
   // ---- label edits, each one transaction, each returning what it replaced ----
   // `options` name the annotator and the revision the edit is based on (a conflict stores

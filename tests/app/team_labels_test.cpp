@@ -126,6 +126,14 @@ class TeamLabelsTest : public QObject {
       QCOMPARE(seg.annotator, std::string("model:m"));
     }
     QVERIFY(!labels.segments(other).empty());
+    // The runs dock tells the model's share from people's.
+    tactile::gui::RunListModel runs;
+    QVERIFY(runs.reload(fx.workspace.get(), labels.setId()).ok());
+    const QString shown = runs.data(runs.index(0, tactile::gui::RunListModel::Coverage)).toString();
+    QVERIFY2(shown.contains("model"), qPrintable(shown));
+    QVERIFY(runs.data(runs.index(0, tactile::gui::RunListModel::Coverage), Qt::ToolTipRole)
+                .toString()
+                .contains("by people"));
     auto history = fx.workspace->labelStore().history(labels.setId(), session.info().id);
     QVERIFY(history.ok());
     QCOMPARE(history->back().annotator, std::string("model:m"));

@@ -62,6 +62,7 @@ QString RunListModel::stateText(storage::AssignmentState state) {
 
 Status RunListModel::reloadCoverage(workspace::Workspace* workspace, std::int64_t labelSetId) {
   coverage_.clear();
+  modelCoverage_.clear();
   Status status = Status::success();
   if (workspace != nullptr && labelSetId != 0) {
     auto coverage = workspace->labelCoverage(labelSetId);
@@ -70,6 +71,10 @@ Status RunListModel::reloadCoverage(workspace::Workspace* workspace, std::int64_
         coverage_[id] = percent;
     } else {
       status = coverage.error();
+    }
+    if (auto byModel = workspace->modelLabelCoverage(labelSetId); byModel) {
+      for (const auto& [id, percent] : byModel.value())
+        modelCoverage_[id] = percent;
     }
   }
   if (!runs_.empty()) emit dataChanged(index(0, Coverage), index(rowCount() - 1, Coverage));
@@ -108,8 +113,12 @@ QVariant RunListModel::data(const QModelIndex& index, int role) const {
         return QLocale().toString(static_cast<qlonglong>(r.stepCount));
       case Outcome:
         return QString::fromStdString(r.outcome);
-      case Coverage:
-        return QStringLiteral("%1 %").arg(covered, 0, 'f', 0);
+      case Coverage: {
+        const auto model = modelCoverage_.find(r.id);
+        if (model == modelCoverage_.end() || model->second <= 0.0)
+          return QStringLiteral("%1 %").arg(covered, 0, 'f', 0);
+        return tr("%1 % (model %2 %)").arg(covered, 0, 'f', 0).arg(model->second, 0, 'f', 0);
+      }
       case Assigned: {
         QStringList parts;
         if (const auto it = assignments_.find(r.id); it != assignments_.end()) {
@@ -151,6 +160,13 @@ QVariant RunListModel::data(const QModelIndex& index, int role) const {
   if (role == Qt::TextAlignmentRole && (index.column() == Steps || index.column() == Coverage))
     return QVariant::fromValue(Qt::AlignRight | Qt::AlignVCenter);
   if (role == Qt::ToolTipRole && index.column() == Assigned) return data(index, Qt::DisplayRole);
+  if (role == Qt::ToolTipRole && index.column() == Coverage) {
+    const auto model = modelCoverage_.find(r.id);
+    const double byModel = model == modelCoverage_.end() ? 0.0 : model->second;
+    return tr("Steps x groups labelled in the current set: %1 % by people, %2 % by a model")
+        .arg(covered - byModel, 0, 'f', 1)
+        .arg(byModel, 0, 'f', 1);
+  }
   if (role == Qt::ToolTipRole && index.column() == Name)
     return tr("%1\nimported from %2")
         .arg(QString::fromStdString(r.name), QString::fromStdString(r.sourceFile));

@@ -48,7 +48,8 @@ class RunListModel : public QAbstractTableModel {
 
  private:
   std::vector<storage::RunInfo> runs_;
-  std::map<std::int64_t, double> coverage_;                               // percent by run id
+  std::map<std::int64_t, double> coverage_;       // percent by run id
+  std::map<std::int64_t, double> modelCoverage_;  // of it, labelled by a model
   std::map<std::int64_t, std::vector<storage::Assignment>> assignments_;  // by run id
 };
 
