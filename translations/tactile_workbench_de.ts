@@ -556,6 +556,10 @@
         <source>Label steps %1-%2 from the model</source>
         <translation>Schritte %1-%2 mit dem Modell beschriften</translation>
     </message>
+    <message>
+        <source>no chosen model covers %1: choose the group of a model (Learn &gt; Show Predictions shows which groups each covers)</source>
+        <translation>kein gewähltes Modell deckt %1 ab: wählen Sie eine Gruppe eines Modells (Lernen &gt; Vorhersagen zeigen nennt die Gruppen jedes Modells)</translation>
+    </message>
 </context>
 <context>
     <name>tactile::gui::LabelPanelView</name>

@@ -556,6 +556,10 @@
         <source>Label steps %1-%2 from the model</source>
         <translation>用模型标注第 %1-%2 步</translation>
     </message>
+    <message>
+        <source>no chosen model covers %1: choose the group of a model (Learn &gt; Show Predictions shows which groups each covers)</source>
+        <translation>没有所选模型覆盖 %1：请选择某个模型覆盖的组（学习 &gt; 显示预测会列出每个模型覆盖的组）</translation>
+    </message>
 </context>
 <context>
     <name>tactile::gui::LabelPanelView</name>

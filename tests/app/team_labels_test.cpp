@@ -138,6 +138,16 @@ class TeamLabelsTest : public QObject {
     QVERIFY(history.ok());
     QCOMPARE(history->back().annotator, std::string("model:m"));
     QCOMPARE(history->back().action, std::string("model"));
+    // A group no chosen model covers: said, nothing stored, nothing on the undo stack.
+    for (const auto& g : tactile::kSensorGroups) {
+      if (trained->bundle.find(g.group) != nullptr) continue;
+      const int before = labels.undoStack()->count();
+      const auto refused = labels.labelFromModels(models, {g.group}, 0, 50);
+      QVERIFY(!refused.ok());
+      QVERIFY(QString::fromStdString(refused.error().message).contains("no chosen model covers"));
+      QCOMPARE(labels.undoStack()->count(), before);
+      break;
+    }
     labels.undoStack()->undo();
     QVERIFY(labels.segments(other).empty());
     QCOMPARE(labels.segments(SensorGroup::Right).size(), std::size_t{1});

@@ -273,22 +273,46 @@ Status LabelModel::labelFromModels(const std::array<std::string, kGroupCount>& m
     classified.emplace(model, std::move(result.value()));
   }
   if (classified.empty()) return Error("no model is chosen for these groups");
-  const QString text = tr("Label steps %1-%2 from the model").arg(first).arg(last);
-  auto failed = std::make_shared<std::optional<Error>>();
-  undo_->beginMacro(text);
+  // What each group takes, before anything is written: groups without a model are named.
+  struct Planned {
+    SensorGroup group;
+    std::vector<storage::LabelSegment> segments;
+    storage::EditOptions options;
+  };
+  std::vector<Planned> planned;
+  QStringList uncovered;
   for (const SensorGroup g : groups) {
     const std::string& model = models[static_cast<std::size_t>(groupIndex(g))];
     const auto it = classified.find(model);
-    if (it == classified.end()) continue;
-    const auto& gc = it->second.result.groups[static_cast<std::size_t>(groupIndex(g))];
-    if (gc.model == nullptr) continue;
+    const auto* gc = it == classified.end()
+                         ? nullptr
+                         : &it->second.result.groups[static_cast<std::size_t>(groupIndex(g))];
+    if (gc == nullptr || gc->model == nullptr) {
+      const std::string_view name = groupInfo(g).shortName;
+      uncovered << QString::fromUtf8(name.data(), static_cast<qsizetype>(name.size()));
+      continue;
+    }
     storage::EditOptions options = editOptions();
     options.annotator = workspace::modelAnnotator(model);
-    std::vector<storage::LabelSegment> segments =
-        workspace::decisionSegments(gc, g, first, last, options.annotator);
+    planned.push_back(
+        {g, workspace::decisionSegments(*gc, g, first, last, options.annotator), options});
+  }
+  if (planned.empty()) {
+    return Error(tr("no chosen model covers %1: choose the group of a model (Learn > Show "
+                    "Predictions shows which groups each covers)")
+                     .arg(uncovered.join(QStringLiteral(", ")))
+                     .toStdString());
+  }
+  const QString text = tr("Label steps %1-%2 from the model").arg(first).arg(last);
+  auto failed = std::make_shared<std::optional<Error>>();
+  undo_->beginMacro(text);
+  for (const Planned& p : planned) {
     const std::int64_t set = setId_;
     const std::int64_t run = runId_;
     workspace::Workspace* ws = workspace_;
+    const SensorGroup g = p.group;
+    const std::vector<storage::LabelSegment> segments = p.segments;
+    const storage::EditOptions options = p.options;
     undo_->push(new LabelEditCommand(this, text, [=] {
       auto edit = ws->replaceLabels(set, run, g, first, last, segments, options);
       if (!edit && !*failed) *failed = edit.error();
