@@ -49,7 +49,12 @@ struct RunDatabase::Impl {
   void checkExpectedRevision(std::int64_t setId, std::int64_t runId, SensorGroup group,
                              std::int64_t firstStep, std::int64_t lastStep,
                              const EditOptions& options);
-  // The set's segments of one run and group over [firstStep, lastStep], clipped to it.
+  // The set's segments of one run and group overlapping [firstStep, lastStep], by first step
+  // (label_scope.cpp).
+  std::vector<LabelSegment> overlappingSegments(std::int64_t setId, std::int64_t runId,
+                                                SensorGroup group, std::int64_t firstStep,
+                                                std::int64_t lastStep);
+  // The same, clipped to [firstStep, lastStep].
   std::vector<LabelSegment> clippedSegments(std::int64_t setId, std::int64_t runId,
                                             SensorGroup group, std::int64_t firstStep,
                                             std::int64_t lastStep);

@@ -97,24 +97,11 @@ std::vector<LabelSegment> RunDatabase::Impl::clippedSegments(std::int64_t setId,
                                                              SensorGroup group,
                                                              std::int64_t firstStep,
                                                              std::int64_t lastStep) {
-  db::Statement& s = statement(
-      "SELECT label_segments.id, runs.name, run_id, grp, first_step, last_step, class, "
-      "annotator FROM label_segments JOIN runs ON runs.id = run_id "
-      "WHERE set_id = ? AND run_id = ? AND grp = ? AND first_step <= ? AND last_step >= ? "
-      "ORDER BY first_step");
-  s.bind(1, setId)
-      .bind(2, runId)
-      .bind(3, groupInfo(group).shortName)
-      .bind(4, lastStep)
-      .bind(5, firstStep);
-  std::vector<LabelSegment> out;
-  while (s.step()) {
-    LabelSegment segment = labelSegmentFromRow(s);
+  std::vector<LabelSegment> out = overlappingSegments(setId, runId, group, firstStep, lastStep);
+  for (LabelSegment& segment : out) {
     segment.firstStep = std::max(segment.firstStep, firstStep);
     segment.lastStep = std::min(segment.lastStep, lastStep);
-    out.push_back(std::move(segment));
   }
-  s.reset();
   return out;
 }
 

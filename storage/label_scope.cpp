@@ -42,27 +42,34 @@ Result<LabelSegment> LabelStore::segment(std::int64_t setId, std::int64_t segmen
   });
 }
 
+std::vector<LabelSegment> RunDatabase::Impl::overlappingSegments(std::int64_t setId,
+                                                                 std::int64_t runId,
+                                                                 SensorGroup group,
+                                                                 std::int64_t firstStep,
+                                                                 std::int64_t lastStep) {
+  db::Statement& s = statement(
+      "SELECT label_segments.id, runs.name, run_id, grp, first_step, last_step, class, "
+      "annotator FROM label_segments JOIN runs ON runs.id = run_id "
+      "WHERE set_id = ? AND run_id = ? AND grp = ? AND first_step <= ? AND last_step >= ? "
+      "ORDER BY first_step");
+  s.bind(1, setId)
+      .bind(2, runId)
+      .bind(3, groupInfo(group).shortName)
+      .bind(4, lastStep)
+      .bind(5, firstStep);
+  std::vector<LabelSegment> out;
+  while (s.step())
+    out.push_back(labelSegmentFromRow(s));
+  s.reset();
+  return out;
+}
+
 Result<std::vector<LabelSegment>> LabelStore::segmentsInRange(std::int64_t setId,
                                                               std::int64_t runId, SensorGroup group,
                                                               std::int64_t firstStep,
                                                               std::int64_t lastStep) {
-  return guarded<std::vector<LabelSegment>>(*impl_, [&] {
-    db::Statement& s = impl_->statement(
-        "SELECT label_segments.id, runs.name, run_id, grp, first_step, last_step, class, "
-        "annotator FROM label_segments JOIN runs ON runs.id = run_id "
-        "WHERE set_id = ? AND run_id = ? AND grp = ? AND first_step <= ? AND last_step >= ? "
-        "ORDER BY first_step");
-    s.bind(1, setId)
-        .bind(2, runId)
-        .bind(3, groupInfo(group).shortName)
-        .bind(4, lastStep)
-        .bind(5, firstStep);
-    std::vector<LabelSegment> out;
-    while (s.step())
-      out.push_back(labelSegmentFromRow(s));
-    s.reset();
-    return out;
-  });
+  return guarded<std::vector<LabelSegment>>(
+      *impl_, [&] { return impl_->overlappingSegments(setId, runId, group, firstStep, lastStep); });
 }
 
 Status LabelStore::replaceSegmentsInRange(std::int64_t setId, std::int64_t runId, SensorGroup group,
