@@ -1341,10 +1341,6 @@ Forschungsumgebung für die taktile Navigation mobiler Roboter.</translation>
         <translation>Passwort für %1:</translation>
     </message>
     <message>
-        <source>Lost the database: %1. Trying again every 3 seconds; edits are not stored meanwhile.</source>
-        <translation>Verbindung zur Datenbank verloren: %1. Neuer Versuch alle 3 Sekunden; Änderungen werden bis dahin nicht gespeichert.</translation>
-    </message>
-    <message>
         <source>Assign Run</source>
         <translation>Lauf zuweisen</translation>
     </message>
@@ -1407,6 +1403,10 @@ Forschungsumgebung für die taktile Navigation mobiler Roboter.</translation>
     <message>
         <source>Step %1, group %2: the model is unsure (%3 % %4)</source>
         <translation>Schritt %1, Gruppe %2: das Modell ist unsicher (%3 % %4)</translation>
+    </message>
+    <message>
+        <source>Lost the connection to the database; trying again every 3 seconds, and edits are not stored meanwhile (%1)</source>
+        <translation>Verbindung zur Datenbank verloren; neuer Versuch alle 3 Sekunden, Änderungen werden bis dahin nicht gespeichert (%1)</translation>
     </message>
 </context>
 <context>

@@ -1331,10 +1331,6 @@ Research workbench for tactile-based mobile-robot navigation.</source>
         <translation>%1 的密码：</translation>
     </message>
     <message>
-        <source>Lost the database: %1. Trying again every 3 seconds; edits are not stored meanwhile.</source>
-        <translation>与数据库的连接已断开：%1。每 3 秒重试一次；在此期间修改不会被保存。</translation>
-    </message>
-    <message>
         <source>Assign Run</source>
         <translation>分配运行</translation>
     </message>
@@ -1397,6 +1393,10 @@ Research workbench for tactile-based mobile-robot navigation.</source>
     <message>
         <source>Step %1, group %2: the model is unsure (%3 % %4)</source>
         <translation>第 %1 步，组 %2：模型不确定（%3 % %4）</translation>
+    </message>
+    <message>
+        <source>Lost the connection to the database; trying again every 3 seconds, and edits are not stored meanwhile (%1)</source>
+        <translation>与数据库的连接已断开；每 3 秒重试一次，在此期间编辑不会被保存（%1）</translation>
     </message>
 </context>
 <context>

@@ -18,6 +18,7 @@
 #include "app/gui/runs/run_session_model.h"
 #include "app/gui/sim/sim_window.h"
 #include "app/gui/sim/status_picture_view.h"
+#include "storage/run_database.h"
 
 namespace {
 
@@ -207,7 +208,9 @@ int main(int argc, char** argv) {
     if (!last.isEmpty() && QFileInfo::exists(last)) db = last;
   }
   if (!db.isEmpty()) {
-    if (parser.isSet(options.db) && !QFileInfo::exists(db))
+    // A server address is not a file: connecting says what is wrong with it.
+    if (parser.isSet(options.db) && !tactile::storage::isServerAddress(db.toStdString()) &&
+        !QFileInfo::exists(db))
       return fail(QApplication::translate("main", "%1: no such database").arg(db));
     tactile::Status opened = window.openDatabase(db);
     if (!opened) {

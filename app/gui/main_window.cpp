@@ -848,8 +848,9 @@ void MainWindow::labelFromModel() {
 }
 
 void MainWindow::serverLost(const QString& message) {
-  showError(tr("Lost the database: %1. Trying again every 3 seconds; edits are not stored "
-               "meanwhile.")
+  // What to expect first: the server's own words are long and the status bar cuts them.
+  showError(tr("Lost the connection to the database; trying again every 3 seconds, and edits are "
+               "not stored meanwhile (%1)")
                 .arg(message));
   reconnectTimer_->start();
 }

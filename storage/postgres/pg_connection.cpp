@@ -89,6 +89,9 @@ std::string trimmed(const char* text) {
   // libpq's messages may span lines (a DETAIL, a HINT): one line for the user, without the
   // severity the server puts first.
   std::replace(s.begin(), s.end(), '\n', ' ');
+  std::replace(s.begin(), s.end(), '\t', ' ');
+  s.erase(std::unique(s.begin(), s.end(), [](char a, char b) { return a == ' ' && b == ' '; }),
+          s.end());
   for (const char* severity : {"FATAL:  ", "ERROR:  "}) {
     if (const std::size_t at = s.find(severity); at != std::string::npos) s.erase(at, 8);
   }

@@ -1,16 +1,25 @@
 // Two annotators' workbenches on one database: an edit over steps the other changed since it was
 // loaded is refused and the stretch reloaded; the other's edits arrive by polling; the History
-// dock lists every edit.
+// dock lists every edit. A workbench whose server connection is cut says so and reconnects.
 #include <QSignalSpy>
 #include <QTest>
 #include <QUndoStack>
 
 #include "app/gui/labels/history_view.h"
 #include "app/gui/labels/label_model.h"
+#include "app/gui/main_window.h"
 #include "app/gui/runs/run_list_model.h"
 #include "app/gui/runs/run_list_view.h"
 #include "app/gui/runs/run_session_model.h"
 #include "gui_fixture.h"
+
+#include <libpq-fe.h>
+#include <unistd.h>
+
+#include <QStatusBar>
+
+#include <cstdlib>
+#include <fstream>
 
 using tactile::ContactClass;
 using tactile::SensorGroup;
@@ -176,6 +185,61 @@ class TeamLabelsTest : public QObject {
     QCOMPARE(view.visibleRows(), 0);
     view.setAssignedToMeOnly(false);
     QCOMPARE(view.visibleRows(), 1);
+  }
+  // The server ends the workbench's session (as a restart or a network cut does): the window says
+  // it lost the database, reconnects on its own, and an edit made after that is stored.
+  void theWorkbenchSaysItLostTheServerAndReconnects() {
+    const char* file = std::getenv("TACTILE_TEST_PG_FILE");
+    std::string server;
+    if (file != nullptr) {
+      std::ifstream in(file);
+      std::getline(in, server);
+    }
+    if (server.empty()) QSKIP("no PostgreSQL test server (ctest starts one)");
+    // A schema of its own, and a session name that picks out only this window's connections.
+    const std::string name = "reconnect_" + std::to_string(::getpid());
+    const auto sql = [&](const std::string& text) {
+      PGconn* conn = PQconnectdb(server.c_str());
+      QVERIFY2(PQstatus(conn) == CONNECTION_OK, PQerrorMessage(conn));
+      PGresult* result = PQexec(conn, text.c_str());
+      const ExecStatusType status = PQresultStatus(result);
+      QVERIFY2(status == PGRES_COMMAND_OK || status == PGRES_TUPLES_OK,
+               PQresultErrorMessage(result));
+      PQclear(result);
+      PQfinish(conn);
+    };
+    sql("CREATE SCHEMA " + name);
+    const std::string address =
+        server + "&options=-csearch_path%3D" + name + "&application_name=" + name;
+    GuiFixture fx(200);
+    {
+      auto target = tactile::storage::RunDatabase::open(address);
+      QVERIFY2(target.ok(), target.ok() ? "" : target.errorText().c_str());
+      auto source = tactile::storage::RunDatabase::open(fx.dbPath);
+      QVERIFY(source.ok());
+      auto copied = target.value()->copyFrom(*source.value(), {});
+      QVERIFY2(copied.ok(), copied.ok() ? "" : copied.errorText().c_str());
+    }
+    tactile::gui::MainWindow window;
+    const QString qaddress = QString::fromStdString(address);
+    QVERIFY(window.openDatabase(qaddress).ok());
+    QVERIFY(window.openRun(QString::fromStdString(fx.runName)).ok());
+    QVERIFY(window.labels()->createSet("after").ok());
+
+    sql("SELECT pg_terminate_backend(pid) FROM pg_stat_activity WHERE application_name = '" + name +
+        "'");
+    QTRY_VERIFY_WITH_TIMEOUT(window.lastError().contains("Lost the connection"), 5000);
+    QTRY_VERIFY_WITH_TIMEOUT(window.statusBar()->currentMessage().startsWith("Reconnected"), 10000);
+    QCOMPARE(window.databasePath(), qaddress);
+    QVERIFY(window.openRun(QString::fromStdString(fx.runName)).ok());
+    QVERIFY(window.labels()->openSet("after").ok());
+    QVERIFY(window.labels()->label({SensorGroup::Left}, 5, 9, ContactClass::Wall).ok());
+    auto check = tactile::workspace::Workspace::open(address);
+    QVERIFY(check.ok());
+    auto set = check.value()->labelStore().find("after");
+    QVERIFY(set.ok());
+    QCOMPARE(check.value()->labelStore().segments(set->id).value().size(), std::size_t{1});
+    sql("DROP SCHEMA " + name + " CASCADE");
   }
 };
 
