@@ -34,7 +34,21 @@ fi
 # Every C++ source of the workbench (the CLI has no translated text). Without line numbers, so a
 # .ts file changes only when a string does.
 mapfile -t sources < <(find "$root/app/gui" -name '*.cpp' -o -name '*.h' | sort)
-"$lupdate" -locations none -no-ui-lines -no-obsolete -silent -I "$root" "${sources[@]}" -ts "${ts_files[@]}"
+# English needs only the plural forms of the "%n" strings ("1 step", "2 steps"); the other
+# languages need every string.
+others=()
+for ts in "${ts_files[@]}"; do
+  if [ "$(basename "$ts")" = tactile_workbench_en.ts ]; then
+    "$lupdate" -locations none -no-ui-lines -no-obsolete -silent -pluralonly -I "$root" \
+      "${sources[@]}" -ts "$ts"
+  else
+    others+=("$ts")
+  fi
+done
+if [ ${#others[@]} -gt 0 ]; then
+  "$lupdate" -locations none -no-ui-lines -no-obsolete -silent -I "$root" "${sources[@]}" \
+    -ts "${others[@]}"
+fi
 for ts in "${ts_files[@]}"; do
   left=$(grep -c 'type="unfinished"' "$ts" || true)
   echo "$(basename "$ts"): $left unfinished"

@@ -1408,6 +1408,10 @@ Forschungsumgebung für die taktile Navigation mobiler Roboter.</translation>
         <source>Lost the connection to the database; trying again every 3 seconds, and edits are not stored meanwhile (%1)</source>
         <translation>Verbindung zur Datenbank verloren; neuer Versuch alle 3 Sekunden, Änderungen werden bis dahin nicht gespeichert (%1)</translation>
     </message>
+    <message>
+        <source>Predictions shown; this run has no labels in the set yet (Ctrl+L labels the steps in view from the model)</source>
+        <translation>Vorhersagen angezeigt; dieser Lauf hat im Labelsatz noch keine Labels (Strg+L beschriftet die sichtbaren Schritte aus dem Modell)</translation>
+    </message>
 </context>
 <context>
     <name>tactile::gui::McapExportDialog</name>

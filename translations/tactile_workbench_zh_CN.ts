@@ -1398,6 +1398,10 @@ Research workbench for tactile-based mobile-robot navigation.</source>
         <source>Lost the connection to the database; trying again every 3 seconds, and edits are not stored meanwhile (%1)</source>
         <translation>与数据库的连接已断开；每 3 秒重试一次，在此期间编辑不会被保存（%1）</translation>
     </message>
+    <message>
+        <source>Predictions shown; this run has no labels in the set yet (Ctrl+L labels the steps in view from the model)</source>
+        <translation>已显示预测；此运行在该标签集中还没有标签（Ctrl+L 用模型为可见的步骤加标签）</translation>
+    </message>
 </context>
 <context>
     <name>tactile::gui::McapExportDialog</name>

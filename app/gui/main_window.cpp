@@ -194,8 +194,18 @@ void MainWindow::createViews() {
           [this](const QString& message) { showError(tr("Predictions: %1").arg(message)); });
   connect(predictions_, &PredictionModel::ready, this, [this] {
     std::size_t n = 0;
-    for (const GroupInfo& g : kSensorGroups)
+    bool labelled = false;
+    for (const GroupInfo& g : kSensorGroups) {
       n += predictions_->group(g.group).disagreements;
+      labelled = labelled || !labels_->segments(g.group).empty();
+    }
+    // Nothing to disagree with is not agreement.
+    if (!labelled) {
+      showMessage(
+          tr("Predictions shown; this run has no labels in the set yet (Ctrl+L labels "
+             "the steps in view from the model)"));
+      return;
+    }
     showMessage(tr("Predictions shown: %n step(s) disagree with the labels (N: next)", nullptr,
                    static_cast<int>(n)));
   });

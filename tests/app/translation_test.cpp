@@ -110,7 +110,9 @@ class TranslationTest : public QObject {
       const QList<Entry> entries =
           readTs(QDir(QStringLiteral(TACTILE_TS_DIR)).filePath(name), &error);
       QVERIFY2(error.isEmpty(), qPrintable(error));
-      QVERIFY2(entries.size() > 100, qPrintable(name + ": too few entries"));
+      // English holds only the plural forms of the "%n" texts; every other language all texts.
+      const bool pluralsOnly = name == QStringLiteral("tactile_workbench_en.ts");
+      QVERIFY2(entries.size() > (pluralsOnly ? 5 : 100), qPrintable(name + ": too few entries"));
       for (const Entry& e : entries) {
         const QString where = name + QStringLiteral(" [") + e.context + QStringLiteral("] \"") +
                               e.source + QStringLiteral("\": ");
@@ -153,6 +155,8 @@ class TranslationTest : public QObject {
         {"zh_CN", "ContactClass", "Wall", -1, "墙"},
         {"zh_CN", "tactile::gui::MainWindow", "Imported %n run(s)", 3, "已导入 3 个运行"},
         {"zh_CN", "tactile::gui::LabelPanelView", "Label set", -1, "标签集"},
+        {"en", "tactile::gui::MainWindow", "Imported %n run(s)", 1, "Imported 1 run"},
+        {"en", "tactile::gui::MainWindow", "Imported %n run(s)", 2, "Imported 2 runs"},
     };
     for (const Known& k : known) {
       QTranslator translator;

@@ -83,9 +83,10 @@ QString installUiLanguage(QCoreApplication& app) {
   const QString language =
       chooseUiLanguage(setting, QLocale::system().uiLanguages(), availableTranslations());
   QLocale::setDefault(uiLocale(language));
-  if (language == QStringLiteral("en")) return language;
+  // English too has a translation: the plural forms of the "%n" texts ("1 step", "2 steps").
   auto* own = new QTranslator(&app);
   if (loadWorkbenchTranslation(*own, language)) QCoreApplication::installTranslator(own);
+  if (language == QStringLiteral("en")) return language;
   // Qt's own strings (standard buttons, file dialogs) where Debian's translations are installed.
   auto* qt = new QTranslator(&app);
   if (qt->load(QStringLiteral("qtbase_") + language,

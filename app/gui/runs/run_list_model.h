@@ -37,6 +37,8 @@ class RunListModel : public QAbstractTableModel {
   static QString stateText(storage::AssignmentState state);
 
   const storage::RunInfo& run(int row) const { return runs_[static_cast<std::size_t>(row)]; }
+  // Whether any run is assigned to anyone (the view shows the Assigned column only then).
+  bool hasAssignments() const { return !assignments_.empty(); }
   // The row of a run, or -1.
   int rowOf(const std::string& name) const;
 

@@ -69,6 +69,15 @@ RunListView::RunListView(RunListModel* model, QWidget* parent) : QWidget(parent)
   table_->horizontalHeader()->setMinimumSectionSize(
       fontMetrics().horizontalAdvance(QLatin1Char('M')) * 4);
   table_->setTextElideMode(Qt::ElideMiddle);
+  // Without any assignment the Assigned column would only take width from the run's name.
+  const auto showAssigned = [this] {
+    table_->setColumnHidden(RunListModel::Assigned,
+                            !model_->hasAssignments() && !mine_->isChecked());
+  };
+  connect(model_, &QAbstractItemModel::modelReset, this, showAssigned);
+  connect(model_, &QAbstractItemModel::dataChanged, this, showAssigned);
+  connect(mine_, &QCheckBox::toggled, this, showAssigned);
+  showAssigned();
   table_->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
   table_->setAlternatingRowColors(true);
   auto* top = new QHBoxLayout;
