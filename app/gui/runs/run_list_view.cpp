@@ -7,12 +7,29 @@
 #include <QLineEdit>
 #include <QMenu>
 #include <QSortFilterProxyModel>
+#include <QStyledItemDelegate>
 #include <QTableView>
 #include <QVBoxLayout>
 
 #include "app/gui/runs/run_list_model.h"
 
 namespace tactile::gui {
+namespace {
+
+// Run names of one corpus share their beginning ("room2_0000", "room3_0000") and differ towards
+// the end: a name too long for its column loses its beginning, never the part that tells it apart.
+class NameDelegate : public QStyledItemDelegate {
+ public:
+  using QStyledItemDelegate::QStyledItemDelegate;
+
+ protected:
+  void initStyleOption(QStyleOptionViewItem* option, const QModelIndex& index) const override {
+    QStyledItemDelegate::initStyleOption(option, index);
+    option->textElideMode = Qt::ElideLeft;
+  }
+};
+
+}  // namespace
 
 // The text filter, and with "Assigned to me" only the runs assigned to the user.
 class RunListView::Proxy : public QSortFilterProxyModel {
@@ -69,6 +86,7 @@ RunListView::RunListView(RunListModel* model, QWidget* parent) : QWidget(parent)
   table_->horizontalHeader()->setMinimumSectionSize(
       fontMetrics().horizontalAdvance(QLatin1Char('M')) * 4);
   table_->setTextElideMode(Qt::ElideMiddle);
+  table_->setItemDelegateForColumn(RunListModel::Name, new NameDelegate(table_));
   // Without any assignment the Assigned column would only take width from the run's name.
   const auto showAssigned = [this] {
     table_->setColumnHidden(RunListModel::Assigned,
