@@ -833,11 +833,11 @@ RunCsvResult readRunCsv(const std::filesystem::path& path, const ProgressFn& pro
   return parseRunCsv(text.view(), path.string(), progress);
 }
 
-std::string formatRunCsv(const RunData& run) {
-  const std::size_t steps = run.stepCount();
-  const std::size_t extras = run.extraColumns.size();
+namespace {
+
+// The header lines: metadata comments and the column names.
+std::string csvHeader(const RunData& run) {
   std::string out;
-  out.reserve(256 + steps * (kValuesPerStep * 4 + 64 + (run.hasTruth() ? 64 : 0)));
   for (const auto& [key, value] : run.metadata) {
     out += "# ";
     out += key;
@@ -856,11 +856,16 @@ std::string formatRunCsv(const RunData& run) {
   for (const std::string& name : run.extraColumns)
     out += "," + name;
   out += '\n';
+  return out;
+}
 
+// The lines of steps [first, end), appended to `out`.
+void appendCsvSteps(const RunData& run, std::size_t first, std::size_t end, std::string& out) {
+  const std::size_t extras = run.extraColumns.size();
   // Worst case per value: 24 characters plus a comma.
-  std::string line(32 * (8 + kValuesPerStep) + 16 * kGroupCount, '\0');
-  for (std::size_t i = 0; i < steps; ++i) {
-    char* p = line.data();
+  char line[32 * (8 + kValuesPerStep) + 16 * kGroupCount];
+  for (std::size_t i = first; i < end; ++i) {
+    char* p = line;
     p = std::to_chars(p, p + 24, i).ptr;
     for (double value : {run.x[i], run.y[i], run.theta[i], run.v[i], run.omega[i]}) {
       *p++ = ',';
@@ -873,7 +878,7 @@ std::string formatRunCsv(const RunData& run) {
       *p++ = ',';
       p = putDouble(p, values[v]);
     }
-    out.append(line.data(), p - line.data());
+    out.append(line, static_cast<std::size_t>(p - line));
     if (run.hasTruth()) {
       for (int g = 0; g < kGroupCount; ++g) {
         out += ',';
@@ -886,7 +891,39 @@ std::string formatRunCsv(const RunData& run) {
     }
     out += '\n';
   }
+}
+
+constexpr std::size_t kCsvBlockSteps = 8192;
+
+}  // namespace
+
+std::string formatRunCsv(const RunData& run) {
+  const std::size_t steps = run.stepCount();
+  std::string out = csvHeader(run);
+  out.reserve(out.size() + steps * (kValuesPerStep * 4 + 64 + (run.hasTruth() ? 64 : 0)));
+  appendCsvSteps(run, 0, steps, out);
   return out;
+}
+
+void formatRunCsvPieces(const RunData& run, unsigned threads,
+                        const std::function<void(std::string_view)>& sink) {
+  sink(csvHeader(run));
+  const std::size_t steps = run.stepCount();
+  const std::size_t blocks = (steps + kCsvBlockSteps - 1) / kCsvBlockSteps;
+  const unsigned workers = workerThreadCount(threads, blocks);
+  // Rounds of a few blocks per thread: formatted side by side, handed over in order.
+  const std::size_t perRound = static_cast<std::size_t>(workers) * 2;
+  std::vector<std::string> pieces(perRound);
+  for (std::size_t round = 0; round < blocks; round += perRound) {
+    const std::size_t count = std::min(perRound, blocks - round);
+    parallelFor(count, workers, [&](std::size_t k) {
+      const std::size_t first = (round + k) * kCsvBlockSteps;
+      pieces[k].clear();
+      appendCsvSteps(run, first, std::min(steps, first + kCsvBlockSteps), pieces[k]);
+    });
+    for (std::size_t k = 0; k < count; ++k)
+      sink(pieces[k]);
+  }
 }
 
 Status writeRunCsv(const RunData& run, const std::filesystem::path& path) {

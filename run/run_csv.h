@@ -4,6 +4,7 @@
 
 #include <cstddef>
 #include <filesystem>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
@@ -77,6 +78,11 @@ RunCsvResult readRunCsv(const std::filesystem::path& path, const ProgressFn& pro
 // columns when present), then one line per step. Doubles use the shortest text that reads back
 // bit for bit.
 std::string formatRunCsv(const RunData& run);
+// The same text in pieces, in order, to `sink` (header first, then blocks of steps formatted on up
+// to `threads` threads, 0 for one per core), without ever holding the whole text: for a checksum
+// of a run's file form.
+void formatRunCsvPieces(const RunData& run, unsigned threads,
+                        const std::function<void(std::string_view)>& sink);
 
 // Writes atomically: to a temporary file beside `path`, then renamed over it, so a failure never
 // leaves a partial file. An error names the file.

@@ -30,39 +30,67 @@ namespace tactile::storage {
 static_assert(std::endian::native == std::endian::little,
               "the sensors BLOB is little-endian float64; add byte swapping for this platform");
 
-std::string checksumHex(std::string_view bytes) {
-  // Two independent multiply-xorshift lanes over 8-byte words (for instruction-level
-  // parallelism), then the tail and the length, then a final avalanche.
-  constexpr std::uint64_t kMul1 = 0x9E3779B97F4A7C15ull;
-  constexpr std::uint64_t kMul2 = 0xC2B2AE3D27D4EB4Full;
-  std::uint64_t a = 0x243F6A8885A308D3ull;
-  std::uint64_t b = 0x13198A2E03707344ull;
+namespace {
+
+constexpr std::uint64_t kMul1 = 0x9E3779B97F4A7C15ull;
+constexpr std::uint64_t kMul2 = 0xC2B2AE3D27D4EB4Full;
+
+std::uint64_t mixWord(std::uint64_t h, std::uint64_t w, std::uint64_t mul) {
+  w *= mul;
+  w ^= w >> 29;
+  return (h ^ w) * kMul2 + 0x165667B19E3779F9ull;
+}
+
+}  // namespace
+
+// Two independent multiply-xorshift lanes over 8-byte words (for instruction-level parallelism),
+// then the tail and the length, then a final avalanche. Bytes may come in pieces of any size: up to
+// 15 wait for the rest of their 16-byte block.
+void RunningChecksum::update(std::string_view bytes) {
   const char* p = bytes.data();
   std::size_t n = bytes.size();
-  auto mix = [](std::uint64_t h, std::uint64_t w, std::uint64_t mul) {
-    w *= mul;
-    w ^= w >> 29;
-    return (h ^ w) * kMul2 + 0x165667B19E3779F9ull;
-  };
+  total_ += n;
+  if (pending_ > 0) {
+    const std::size_t take = std::min(n, sizeof block_ - pending_);
+    std::memcpy(block_ + pending_, p, take);
+    pending_ += take;
+    p += take;
+    n -= take;
+    if (pending_ < sizeof block_) return;
+    addBlock(block_);
+    pending_ = 0;
+  }
   while (n >= 16) {
-    std::uint64_t w1 = 0;
-    std::uint64_t w2 = 0;
-    std::memcpy(&w1, p, 8);
-    std::memcpy(&w2, p + 8, 8);
-    a = mix(a, w1, kMul1);
-    b = mix(b, w2, kMul2);
+    addBlock(p);
     p += 16;
     n -= 16;
   }
+  std::memcpy(block_, p, n);
+  pending_ = n;
+}
+
+void RunningChecksum::addBlock(const char* p) {
+  std::uint64_t w1 = 0;
+  std::uint64_t w2 = 0;
+  std::memcpy(&w1, p, 8);
+  std::memcpy(&w2, p + 8, 8);
+  a_ = mixWord(a_, w1, kMul1);
+  b_ = mixWord(b_, w2, kMul2);
+}
+
+std::string RunningChecksum::hex() const {
+  std::uint64_t a = a_;
+  std::uint64_t b = b_;
+  const std::size_t n = pending_;
   std::uint64_t tail = 0;
-  std::memcpy(&tail, p, std::min<std::size_t>(n, 8));
-  a = mix(a, tail, kMul1);
+  std::memcpy(&tail, block_, std::min<std::size_t>(n, 8));
+  a = mixWord(a, tail, kMul1);
   if (n > 8) {
     tail = 0;
-    std::memcpy(&tail, p + 8, n - 8);
-    b = mix(b, tail, kMul2);
+    std::memcpy(&tail, block_ + 8, n - 8);
+    b = mixWord(b, tail, kMul2);
   }
-  std::uint64_t h = mix(a ^ std::rotl(b, 31), bytes.size(), kMul1);
+  std::uint64_t h = mixWord(a ^ std::rotl(b, 31), total_, kMul1);
   h ^= h >> 33;
   h *= 0xFF51AFD7ED558CCDull;
   h ^= h >> 33;
@@ -74,6 +102,18 @@ std::string checksumHex(std::string_view bytes) {
   }
   text[16] = '\0';
   return text;
+}
+
+std::string checksumHex(std::string_view bytes) {
+  RunningChecksum sum;
+  sum.update(bytes);
+  return sum.hex();
+}
+
+std::string runFileChecksumHex(const RunData& run) {
+  RunningChecksum sum;
+  formatRunCsvPieces(run, 0, [&sum](std::string_view piece) { sum.update(piece); });
+  return sum.hex();
 }
 
 namespace importing {

@@ -408,6 +408,10 @@ class RunStore {
   ImportOutcome importRun(const RunData& run, const std::string& name,
                           const std::string& sourceFile = {},
                           const SceneResolver& sceneResolver = {});
+  // The same, taking the run's memory instead of copying it (a run of a million steps is 700 MB).
+  ImportOutcome importRun(RunData&& run, const std::string& name,
+                          const std::string& sourceFile = {},
+                          const SceneResolver& sceneResolver = {});
 
   // ---- runs stored while they are recorded (storage/run_recording.cpp, docs/storage.md#recording)
   // Every call is one committed transaction, so a recorder that dies keeps a readable run with the
@@ -604,6 +608,23 @@ std::string shownAddress(std::string_view address);
 
 // Fast 64-bit checksum of bytes as 16 hex digits (not cryptographic; detects re-imports).
 std::string checksumHex(std::string_view bytes);
+// The same checksum over bytes given in pieces: update() with each in order, then hex().
+class RunningChecksum {
+ public:
+  void update(std::string_view bytes);
+  std::string hex() const;
+
+ private:
+  void addBlock(const char* p);
+  std::uint64_t a_ = 0x243F6A8885A308D3ull;
+  std::uint64_t b_ = 0x13198A2E03707344ull;
+  std::size_t total_ = 0;
+  char block_[16] = {};
+  std::size_t pending_ = 0;
+};
+// checksumHex of the run's file form (formatRunCsv), formatted in pieces on every core and never
+// held whole: the checksum importRun and a finished recording store.
+std::string runFileChecksumHex(const RunData& run);
 
 // Block sizes (steps) of the stored min/max summaries, finest first.
 inline constexpr std::array<std::int64_t, 4> kSummaryBlockSteps{16, 128, 1024, 8192};

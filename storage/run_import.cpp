@@ -46,6 +46,12 @@ ImportOutcome RunStore::importText(std::string_view text, const std::string& fil
 ImportOutcome RunStore::importRun(const RunData& run, const std::string& name,
                                   const std::string& sourceFile,
                                   const SceneResolver& sceneResolver) {
+  return importRun(run.clone(), name, sourceFile, sceneResolver);
+}
+
+ImportOutcome RunStore::importRun(RunData&& run, const std::string& name,
+                                  const std::string& sourceFile,
+                                  const SceneResolver& sceneResolver) {
   const ResetStatements reset{*impl_};
   FileHead head;
   head.file = sourceFile.empty() ? name : sourceFile;
@@ -55,15 +61,15 @@ ImportOutcome RunStore::importRun(const RunData& run, const std::string& name,
     head.error = head.file + ": " + problem;
   } else {
     try {
-      head.checksum = checksumHex(formatRunCsv(run));
+      head.checksum = runFileChecksumHex(run);
       head.header.metadata = run.metadata;
       head.header.extraColumns = run.extraColumns;
       head.hasTruth = run.hasTruth();
       head.chunkCount = 1;
       describeHead(head, std::filesystem::path(sourceFile).parent_path(), sceneResolver);
-      RunData rows = run.clone();
-      rows.metadata.clear();
-      chunk = encodeChunk(std::move(rows), 0, run.extraColumns.size());
+      const std::size_t extras = run.extraColumns.size();
+      run.metadata.clear();
+      chunk = encodeChunk(std::move(run), 0, extras);
     } catch (const std::exception& e) {
       head.error = head.file + ": " + e.what();
     }

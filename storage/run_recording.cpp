@@ -261,7 +261,7 @@ Status RunStore::appendSteps(std::int64_t runId, const RunData& run, std::size_t
 Status RunStore::finishRun(std::int64_t runId, const RunData& run) {
   return guardedStatus(*impl_, [&] {
     if (std::string problem = validateRun(run); !problem.empty()) throw db::DbError(problem);
-    const std::string checksum = checksumHex(formatRunCsv(run));
+    const std::string checksum = runFileChecksumHex(run);
     db::Transaction transaction(impl_->connection);
     const StoredRun stored = storedRun(*impl_, runId);
     if (stored.steps > static_cast<std::int64_t>(run.stepCount())) {

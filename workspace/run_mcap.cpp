@@ -200,7 +200,7 @@ storage::ImportOutcome importMcap(storage::RunStore runs, const McapImportReques
       return failed;
     }
     storage::ImportOutcome outcome =
-        runs.importRun(bag->run, name, fileName, request.sceneResolver);
+        runs.importRun(std::move(bag->run), name, fileName, request.sceneResolver);
     for (std::string& w : bag->warnings)
       outcome.warnings.insert(outcome.warnings.begin(), std::move(w));
     return outcome;

@@ -10,7 +10,9 @@
 #include <csignal>
 #include <fstream>
 #include <iterator>
+#include <random>
 
+#include "run/run_csv.h"
 #include "storage/schema.h"
 #include "storage/step_checksum.h"
 #include "storage_test_util.h"
@@ -228,6 +230,43 @@ TEST(FailedCreation, LeavesNoEmptyDatabaseBehind) {
   }
   ASSERT_EQ(waitpid(second, &status, 0), second);
   EXPECT_TRUE(fs::exists(path));
+}
+
+// The checksum of bytes given in pieces of any size equals that of the bytes at once, and a run's
+// file-form checksum made in formatted pieces on several threads equals that of its whole text.
+TEST(RunningChecksum, PiecesOfAnySizeGiveTheChecksumOfTheWhole) {
+  std::mt19937 rng(3);
+  for (std::size_t length : {0u, 1u, 7u, 8u, 15u, 16u, 17u, 31u, 33u, 1000u, 4099u}) {
+    std::string bytes(length, '\0');
+    for (char& c : bytes)
+      c = static_cast<char>(rng());
+    for (int round = 0; round < 20; ++round) {
+      RunningChecksum sum;
+      std::size_t at = 0;
+      while (at < bytes.size()) {
+        const std::size_t piece = std::min<std::size_t>(bytes.size() - at, rng() % 40);
+        sum.update(std::string_view(bytes).substr(at, piece));
+        at += piece;
+      }
+      EXPECT_EQ(sum.hex(), checksumHex(bytes)) << length << " bytes, round " << round;
+    }
+  }
+  EXPECT_NE(checksumHex("a"), checksumHex("b"));
+  EXPECT_NE(checksumHex(std::string(16, '\0')), checksumHex(std::string(17, '\0')));
+}
+
+TEST(RunningChecksum, ARunsFileChecksumInPiecesEqualsThatOfItsText) {
+  for (std::size_t steps : {0u, 1u, 8191u, 8192u, 8193u, 40000u}) {
+    RunData run = makeRun(steps, steps % 2 == 0, 9);
+    if (steps == 8193u) {
+      run.extraColumns = {"x_plan", "x_state"};
+      for (std::size_t i = 0; i < steps; ++i) {
+        run.extraValues.push_back(std::to_string(i));
+        run.extraValues.push_back(i % 3 == 0 ? "follow" : "");
+      }
+    }
+    EXPECT_EQ(runFileChecksumHex(run), checksumHex(formatRunCsv(run))) << steps << " steps";
+  }
 }
 
 }  // namespace
