@@ -62,45 +62,37 @@ double memoryMiB(const char* key) {
   return 0.0;
 }
 
-// Made in a child process (this program with --make-db), so that the memory it takes to build
-// the run never counts towards the workbench's.
 bool onServer() {
   return tactile::storage::isServerAddress(benchDatabase().toStdString());
 }
 
+// Stores the synthetic run "long" into the database at `address` (a file is made; a server
+// database must exist, with the tables `tactile db create` makes).
+void storeLongRun(const std::string& address) {
+  auto db = tactile::storage::RunDatabase::open(address);
+  if (!db) {
+    std::fprintf(stderr, "%s\n", db.errorText().c_str());
+    std::abort();
+  }
+  const auto out = db.value()->runs().importRun(
+      tactile::storage::makeSyntheticRun(static_cast<std::size_t>(benchSteps()), 7), "long");
+  if (out.status != tactile::storage::ImportStatus::Imported) {
+    std::fprintf(stderr, "%s\n", out.message.c_str());
+    std::abort();
+  }
+}
+
+// Made in a child process (this program with --make-db), so that the memory it takes to build
+// the run never counts towards the workbench's. A file is made beside its name and renamed, so an
+// interrupted run leaves none; a server database is filled in place.
 void makeDatabase() {
   const QString path = benchDatabase();
-  if (onServer()) {
-    // A server database is filled in place (it must exist; `tactile db create` makes its tables).
-    auto db = tactile::storage::RunDatabase::open(path.toStdString());
-    if (!db) {
-      std::fprintf(stderr, "%s\n", db.errorText().c_str());
-      std::abort();
-    }
-    tactile::RunData run =
-        tactile::storage::makeSyntheticRun(static_cast<std::size_t>(benchSteps()), 7);
-    const auto out = db.value()->runs().importRun(run, "long");
-    if (out.status != tactile::storage::ImportStatus::Imported) {
-      std::fprintf(stderr, "%s\n", out.message.c_str());
-      std::abort();
-    }
-    return;
-  }
   std::fprintf(stderr, "creating %s (%lld steps)...\n", qPrintable(path),
                static_cast<long long>(benchSteps()));
+  if (onServer()) return storeLongRun(path.toStdString());
   const QString partial = path + QStringLiteral(".partial");
   QFile::remove(partial);
-  {
-    auto db = tactile::storage::RunDatabase::open(partial.toStdString());
-    if (!db) std::abort();
-    tactile::RunData run =
-        tactile::storage::makeSyntheticRun(static_cast<std::size_t>(benchSteps()), 7);
-    const auto out = db.value()->runs().importRun(run, "long");
-    if (out.status != tactile::storage::ImportStatus::Imported) {
-      std::fprintf(stderr, "%s\n", out.message.c_str());
-      std::abort();
-    }
-  }
+  storeLongRun(partial.toStdString());
   QFile::rename(partial, path);
 }
 
