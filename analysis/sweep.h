@@ -12,6 +12,7 @@
 
 #include <cstdint>
 #include <functional>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -142,6 +143,52 @@ SweepResult runSweep(const std::vector<LabelledRun>& train, const std::vector<La
 SweepResult runSweepByScene(const std::vector<LabelledRun>& runs,
                             const std::vector<std::string>& sceneOfRun, const SweepGrid& grid,
                             const SweepOptions& options = {}, const ProgressFn& progress = {});
+
+// The one check of a grid, used by every way a sweep is asked for (CLI, workbench, Python,
+// stored plans): every list has a value, every order is a whole number from 1 to kMaxModelOrder,
+// every floor is 0 or at least kMinVarianceFloor, restarts and the iteration limit are at least
+// 1, the tolerance is finite and not negative. The message names the first bad value.
+Status checkSweepGrid(const SweepGrid& grid);
+
+// The data of a sweep extracted once (per (group, features), and per held-out scene for a
+// by-scene sweep) and its fit jobs: what runSweep runs on its threads, and what a worker of a
+// distributed sweep (workspace/sweep_job.h) runs one claimed job at a time. A job is the cells
+// equal but for the decision mode (they share one fit). runJob may be called from several threads
+// at once; a job's result depends only on its cells' settings and seeds, so it is the same
+// whichever process or thread computes it.
+class SweepSession {
+ public:
+  // Train on `train`, score on `test`.
+  SweepSession(const std::vector<LabelledRun>& train, const std::vector<LabelledRun>& test,
+               const SweepGrid& grid);
+  // Leave-one-scene-out over `runs` (sceneOfRun[i] names run i's scene), as runSweepByScene.
+  SweepSession(const std::vector<LabelledRun>& runs, const std::vector<std::string>& sceneOfRun,
+               const SweepGrid& grid);
+  ~SweepSession();
+  SweepSession(const SweepSession&) = delete;
+  SweepSession& operator=(const SweepSession&) = delete;
+
+  const SweepGrid& grid() const;
+  const std::vector<SweepCell>& cells() const;  // expandGrid(grid)
+  // Each job's grid positions (into cells()), in grid order.
+  const std::vector<std::vector<std::size_t>>& jobs() const;
+  const std::vector<SweepDataSummary>& data() const;
+  double extractSeconds() const;
+  // Rough relative cost of a job (expensive jobs first spreads the work best).
+  double jobCost(std::size_t job) const;
+  // The results of one job's cells, in its order; nullopt when `keepGoing` returned false and
+  // the fit stopped before it was done.
+  std::optional<std::vector<SweepCellResult>> runJob(std::size_t job,
+                                                     const ProgressFn& keepGoing = {}) const;
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+// The "grid" object of SWEEP.json (and of a stored sweep's configuration), and back.
+nlohmann::json sweepGridToJson(const SweepGrid& grid);
+Result<SweepGrid> sweepGridFromJson(const nlohmann::json& value);
 
 // SWEEP.json: {"format":"tactile-sweep","version":1,"grid":{...},"data":[...],"threads",
 // "wall_s","cancelled","cells":[{...}]}.
