@@ -311,21 +311,7 @@ struct SweepSession::Impl {
   double extractSeconds = 0.0;
 
   void planJobs() {
-    // Cells equal but for the decision share one fit (they are adjacent in grid order).
-    for (std::size_t i = 0; i < cells.size(); ++i) {
-      SweepCell key = cells[i];
-      bool joined = false;
-      if (!jobs.empty()) {
-        SweepCell last = cells[jobs.back().front()];
-        last.decision = key.decision;
-        joined = last == key;
-      }
-      if (joined) {
-        jobs.back().push_back(i);
-      } else {
-        jobs.push_back({i});
-      }
-    }
+    jobs = fitJobs(cells);
     for (const std::vector<std::size_t>& job : jobs) {
       const SweepCell& c = cells[job.front()];
       const SharedGroupData& d = folds.front().shared.at(dataKey(c.group, c.features));
@@ -501,6 +487,30 @@ SweepResult runSession(const SweepSession& session, const SweepOptions& options,
 
 }  // namespace
 
+std::vector<std::vector<std::size_t>> fitJobs(const std::vector<SweepCell>& cells) {
+  std::vector<std::vector<std::size_t>> jobs;
+  for (std::size_t i = 0; i < cells.size(); ++i) {
+    SweepCell key = cells[i];
+    bool joined = false;
+    if (!jobs.empty()) {
+      SweepCell last = cells[jobs.back().front()];
+      last.decision = key.decision;
+      joined = last == key;
+    }
+    if (joined) {
+      jobs.back().push_back(i);
+    } else {
+      jobs.push_back({i});
+    }
+  }
+  return jobs;
+}
+
+SweepResult runSweepSession(const SweepSession& session, const SweepOptions& options,
+                            const ProgressFn& progress) {
+  return runSession(session, options, progress, Clock::now());
+}
+
 SweepResult runSweep(const std::vector<LabelledRun>& train, const std::vector<LabelledRun>& test,
                      const SweepGrid& grid, const SweepOptions& options,
                      const ProgressFn& progress) {
@@ -634,6 +644,15 @@ json sweepGridToJson(const SweepGrid& g) {
 }
 
 json sweepToJson(const SweepResult& result) {
+  json out = sweepHeaderToJson(result);
+  json cells = json::array();
+  for (const SweepCellResult& r : result.cells)
+    cells.push_back(sweepCellToJson(r));
+  out["cells"] = std::move(cells);
+  return out;
+}
+
+json sweepHeaderToJson(const SweepResult& result) {
   json out;
   out["format"] = "tactile-sweep";
   out["version"] = 1;
@@ -654,10 +673,6 @@ json sweepToJson(const SweepResult& result) {
   out["wall_s"] = result.wallSeconds;
   out["extract_s"] = result.extractSeconds;
   out["cancelled"] = result.cancelled;
-  json cells = json::array();
-  for (const SweepCellResult& r : result.cells)
-    cells.push_back(sweepCellToJson(r));
-  out["cells"] = std::move(cells);
   return out;
 }
 

@@ -71,6 +71,9 @@ ClassifierOptions cellClassifierOptions(const SweepGrid& grid, const SweepCell& 
 // Cells of a grid in a fixed order (group, features, method, form, order, variance floor, seed,
 // decision).
 std::vector<SweepCell> expandGrid(const SweepGrid& grid);
+// The fit jobs of expanded cells: the grid positions of cells equal but for the decision mode
+// (adjacent in grid order), which share one fit.
+std::vector<std::vector<std::size_t>> fitJobs(const std::vector<SweepCell>& cells);
 
 struct SweepCellResult {
   SweepCell cell;
@@ -186,6 +189,11 @@ class SweepSession {
   std::unique_ptr<Impl> impl_;
 };
 
+// Runs every job of a session on options.threads threads, as runSweep does (which is this on a
+// new session).
+SweepResult runSweepSession(const SweepSession& session, const SweepOptions& options = {},
+                            const ProgressFn& progress = {});
+
 // The "grid" object of SWEEP.json (and of a stored sweep's configuration), and back.
 nlohmann::json sweepGridToJson(const SweepGrid& grid);
 Result<SweepGrid> sweepGridFromJson(const nlohmann::json& value);
@@ -193,6 +201,8 @@ Result<SweepGrid> sweepGridFromJson(const nlohmann::json& value);
 // SWEEP.json: {"format":"tactile-sweep","version":1,"grid":{...},"data":[...],"threads",
 // "wall_s","cancelled","cells":[{...}]}.
 nlohmann::json sweepToJson(const SweepResult& result);
+// All of it but "cells": what a database stores as a sweep's configuration beside its cells.
+nlohmann::json sweepHeaderToJson(const SweepResult& result);
 // One cell as written in SWEEP.json's "cells" (and stored per cell in a database), and its
 // settings alone (group, method, order, covariance, floor, features, seed, decision).
 nlohmann::json sweepCellToJson(const SweepCellResult& cell);
