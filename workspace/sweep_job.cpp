@@ -7,6 +7,7 @@
 #include <chrono>
 #include <mutex>
 #include <set>
+#include <thread>
 #include <utility>
 
 #include "analysis/report.h"
@@ -326,6 +327,7 @@ Result<WorkReport> Workspace::workSweep(
     const std::string worker = threads > 1 ? workerBase + "/" + std::to_string(t + 1) : workerBase;
     while (!stop.load()) {
       std::optional<storage::SweepClaim> claim;
+      double wait = 0.0;
       {
         std::lock_guard lock(dbMutex);
         if (options.maxCells > 0 && report.cells >= options.maxCells) return;
@@ -334,8 +336,29 @@ Result<WorkReport> Workspace::workSweep(
           noteError(claimed.error());
           return;
         }
-        if (!claimed.value()) return;  // nothing left
-        claim = claimed.value();
+        if (claimed.value()) {
+          claim = claimed.value();
+        } else {
+          // Nothing pending: done unless another process still holds a claim, which this one
+          // takes over should that process die (its lease runs out).
+          auto all = db_->sweeps().claims(sweepId);
+          if (!all) {
+            noteError(all.error());
+            return;
+          }
+          const double now = unixNow();
+          for (const storage::SweepClaim& c : all.value()) {
+            // This process's own claims end with its threads.
+            if (c.state != "running" || c.worker.rfind(workerBase, 0) == 0) continue;
+            const double left = std::clamp(c.leaseUntil - now, 0.05, 5.0);
+            wait = wait == 0.0 ? left : std::min(wait, left);
+          }
+          if (wait == 0.0) return;  // nothing left
+        }
+      }
+      if (!claim) {
+        std::this_thread::sleep_for(std::chrono::duration<double>(wait));
+        continue;
       }
       const std::int64_t job = claim->job;
       if (job < 0 || static_cast<std::size_t>(job) >= s.jobs().size() ||

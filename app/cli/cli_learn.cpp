@@ -937,7 +937,7 @@ void registerLearnVerbs(CLI::App& app, CLI::App& /*bench*/) {
     cmd->add_option("--out", args->out, "SWEEP.json to write (optional with --db)");
     cmd->add_flag("--json", args->json, "Print a JSON summary");
     setAction(cmd, [args, cmd] {
-      if (!cmd->get_subcommands().empty()) return kExitOk;  // plan, work, status or submit ran
+      if (!cmd->get_subcommands().empty()) return lastExitCode();  // a sub-verb ran
       SweepArgs a = *args;
       if (a.db.empty() && a.runs.empty()) a.db = databaseFromEnvironment();
       return runSweepVerb(a);
