@@ -450,14 +450,14 @@ Result<WorkReport> Workspace::workSweep(
         header, request.value(), configuration.value("train_runs", json::array()),
         configuration.value("test_runs", json::array()), after->failed > 0 ? "failed" : "finished");
     if (after->failed > 0) {
-      final["error"] =
-          std::to_string(after->failed) + " cell(s) failed: " + after->failedClaims.front().error;
+      final["error"] = after->failedClaims.front().error;
     }
     if (Status st = db_->sweeps().update(sweepId, dumpJson(final)); !st) return st.error();
   } else {
     const std::string state = report.cancelled ? "cancelled" : "running";
     if (configuration.value("state", std::string()) != state) {
       configuration["state"] = state;
+      configuration["cancelled"] = report.cancelled;
       (void)db_->sweeps().update(sweepId, dumpJson(configuration));  // best effort
     }
   }
@@ -537,6 +537,14 @@ Result<SweepOutcome> Workspace::sweep(
       (void)db_->sweeps().update(planned->sweepId, dumpJson(configuration));  // best effort
     }
     return failure("sweep " + std::to_string(planned->sweepId) + ": " + work.errorText());
+  }
+  if (work->failed > 0) {
+    // The other jobs ran and are stored; the sweep is marked failed with the first job's error.
+    auto status = sweepStatus(planned->sweepId);
+    const std::string error = status && !status->failedClaims.empty()
+                                  ? status->failedClaims.front().error
+                                  : std::string("a job failed");
+    return failure("sweep " + std::to_string(planned->sweepId) + ": " + error);
   }
   auto result = loadSweep(planned->sweepId);
   if (!result) return result.error();

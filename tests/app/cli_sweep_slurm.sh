@@ -32,15 +32,16 @@ job=$(json 'd["job"]' < submit.json)
 [ "$(json 'd["array"]' < submit.json)" = "--array=0-3" ] || fail "submit: $(cat submit.json)"
 grep -q "sweep work --db" "tactile-sweep-$id.sbatch" || fail "script: $(cat "tactile-sweep-$id.sbatch")"
 
-# Cancel task 1 as soon as it holds a claim.
+# Cancel a task as soon as it holds a claim (its worker is JOB_TASK@HOST).
 tries=0
-until "$T" sweep status --db "$W/s.db" --sweep "$id" --json |
-  json '" ".join(r["worker"] for r in d["running_jobs"])' | grep -q "_1@"; do
+task=""
+while [ -z "$task" ]; do
+  task=$("$T" sweep status --db "$W/s.db" --sweep "$id" --json |
+    json '" ".join(r["worker"] for r in d["running_jobs"])' | sed -n 's/^[0-9]*_\([0-9]*\)@.*/\1/p')
   tries=$((tries + 1))
-  [ $tries -lt 1500 ] || fail "task 1 never claimed a job: $(squeue)"
-  sleep 0.02
+  [ $tries -lt 300 ] || fail "no task claimed a job: $(squeue)"
 done
-scancel "${job}_1"
+scancel "${job}_$task"
 # The other tasks finish (they wait for the cancelled task's claim and take it over, or leave it).
 tries=0
 while [ -n "$(squeue -h -j "$job" 2> /dev/null)" ]; do
