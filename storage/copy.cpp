@@ -114,7 +114,8 @@ std::int64_t copyRunRows(RunDatabase::Impl& from, RunDatabase::Impl& to, const S
 
   db::Statement steps(from.connection,
                       "SELECT step, x, y, theta, v, omega, blocked, sensors, extra, truth, crc "
-                      "FROM steps WHERE run_id = ? ORDER BY step");
+                      "FROM steps WHERE run_id = ? ORDER BY step",
+                      db::Statement::Streamed{});
   steps.bind(1, run.id);
   db::RowWriter stepRows(to.connection, "steps",
                          "run_id, step, x, y, theta, v, omega, blocked, sensors, extra, truth, crc",
@@ -191,7 +192,8 @@ void verifyCopiedRun(RunDatabase::Impl& to, std::int64_t runId, const std::strin
                      std::int64_t stepCount) {
   db::Statement s(to.connection,
                   "SELECT step, x, y, theta, v, omega, blocked, sensors, extra, truth, crc "
-                  "FROM steps WHERE run_id = ? ORDER BY step");
+                  "FROM steps WHERE run_id = ? ORDER BY step",
+                  db::Statement::Streamed{});
   s.bind(1, runId);
   std::int64_t count = 0;
   while (s.step()) {
@@ -529,6 +531,7 @@ Result<CopyReport> RunDatabase::copyFrom(RunDatabase& source, const CopyOptions&
         ++report.sweepsCopied;
       }
     }
+    to.refreshStepStatistics(report.stepsCopied);
     if (progress) progress(total, total);
     return report;
   } catch (const db::DbError& e) {

@@ -31,11 +31,25 @@ struct RunDatabase::Impl {
     it->second.reset();
     return it->second;
   }
+  // The same for a statement that reads a whole run's rows (db::Statement::Streamed): a literal is
+  // used one way or the other, never both.
+  db::Statement& streamedStatement(const char* sql) {
+    auto it = statements.find(sql);
+    if (it == statements.end()) {
+      it = statements.emplace(sql, db::Statement(connection, sql, db::Statement::Streamed{})).first;
+    }
+    it->second.reset();
+    return it->second;
+  }
 
   std::int64_t runIdByName(std::string_view name);       // throws DbError when absent
   std::int64_t labelSetIdByName(std::string_view name);  // 0 when absent
   std::int64_t ensureLabelSet(const std::string& name);  // inside a caller's transaction
   std::int64_t runStepCount(std::int64_t runId);         // throws when the run is absent
+  // After `addedSteps` steps were written, outside any transaction: on a server, refreshes the
+  // planner's statistics of the step tables when they grew by a tenth or more (see
+  // run_database.cpp). Never throws; does nothing on a file.
+  void refreshStepStatistics(std::int64_t addedSteps);
   // Newest-wins insertion inside a caller's transaction; `keepId` != 0 reuses that id.
   std::int64_t insertSegmentNewestWins(std::int64_t setId, const LabelSegment& segment,
                                        std::int64_t keepId);

@@ -78,6 +78,12 @@ class ConnectionBackend {
   // The database as named in errors: a file path, or a server address without password.
   virtual const std::string& name() const = 0;
   virtual std::unique_ptr<StatementBackend> prepare(std::string_view sql) = 0;
+  // A statement that reads many rows, streamed rather than held whole in memory (PostgreSQL: COPY
+  // ... TO STDOUT; its parameters may only be integers). While it is part way through its rows,
+  // no other statement may run on the session. SQLite streams every statement.
+  virtual std::unique_ptr<StatementBackend> prepareStreamed(std::string_view sql) {
+    return prepare(sql);
+  }
   virtual std::unique_ptr<RowWriterBackend> rowWriter(std::string_view table,
                                                       std::string_view columns, int count) = 0;
   virtual void exec(std::string_view sql) = 0;
@@ -140,6 +146,11 @@ class Statement {
   Statement() = default;
   Statement(Connection& connection, std::string_view sql)
       : backend_(connection.backend().prepare(sql)) {}
+  // A statement over many rows (a whole run's steps), streamed
+  // (ConnectionBackend::prepareStreamed).
+  struct Streamed {};
+  Statement(Connection& connection, std::string_view sql, Streamed)
+      : backend_(connection.backend().prepareStreamed(sql)) {}
   Statement(Statement&&) noexcept = default;
   Statement& operator=(Statement&&) noexcept = default;
 

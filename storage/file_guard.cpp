@@ -159,6 +159,7 @@ struct PageOneFacts {
 // empty) is compared with every committed page-1 image.
 struct WalScan {
   std::int64_t pageSize = 0;
+  std::uint32_t checkpointSequence = 0;  // times the log was restarted from its beginning
   std::int64_t commitFrames = 0;
   PageOneFacts pageOnes;
 };
@@ -184,6 +185,7 @@ WalScan scanWal(const std::filesystem::path& database, const std::vector<unsigne
   const std::uint32_t salt1 = big32(header + 16);
   const std::uint32_t salt2 = big32(header + 20);
   scan.pageSize = pageSize;
+  scan.checkpointSequence = big32(header + 12);
 
   std::vector<unsigned char> frame(static_cast<std::size_t>(24 + pageSize));
   std::vector<unsigned char> image;
@@ -269,10 +271,18 @@ WalState inspectWal(const std::filesystem::path& database) {
                    ", the file's " + fileIdentity;
     return state;
   }
-  // The file's page 1 is either the state the log started from (its change counter one below the
-  // log's first page 1) or one of the log's own page-1 images (a checkpoint copied it back).
+  // A connection writes every page-1 image with the change counter it first read plus one; in WAL
+  // mode it does not read the counter again while it keeps the page cached. So the file's page 1
+  // is either the state the log started from (its counter one below the log's first page 1), or
+  // one of the log's own page-1 images (a checkpoint copied it back), or, once the log was
+  // restarted after a complete checkpoint, the last image of the log's previous generation: the
+  // same connection then goes on writing images with the very counter the checkpoint put into the
+  // file. (Refusing that last case would tell a user whose long session was killed to move away
+  // a log that holds their newest committed work.)
   const std::uint32_t fileCounter = big32(dbHeader + 24);
-  if (fileCounter + 1 == facts.firstCounter || facts.equalsFile) {
+  const bool restartedBySameWriter =
+      scan.checkpointSequence > 0 && fileCounter == facts.firstCounter;
+  if (fileCounter + 1 == facts.firstCounter || facts.equalsFile || restartedBySameWriter) {
     state.kind = WalState::Kind::Belongs;
   } else {
     state.kind = WalState::Kind::Foreign;

@@ -194,7 +194,7 @@ bool confirmed(const StepRow& row, std::int64_t stored, std::size_t t, std::size
 void readSteps(RunDatabase::Impl& impl, std::int64_t runId, const RunShape& shape,
                const RunColumns& out) {
   const auto n = static_cast<std::size_t>(shape.steps);
-  db::Statement& s = impl.statement(kStepsSql);
+  db::Statement& s = impl.streamedStatement(kStepsSql);
   s.bind(1, runId);
   StepRow row;
   row.runId = runId;
@@ -309,7 +309,7 @@ bool readStepsPipelined(RunDatabase::Impl& impl, std::int64_t runId, const RunSh
     }
   } const join{queue, checker};
 
-  db::Statement& s = impl.statement(kStepsSql);
+  db::Statement& s = impl.streamedStatement(kStepsSql);
   s.bind(1, runId);
   std::size_t t = 0;
   bool more = true;

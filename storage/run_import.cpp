@@ -36,9 +36,11 @@ ImportOutcome RunStore::importText(std::string_view text, const std::string& fil
   } catch (const std::exception& e) {
     head.error = fileName + ": " + e.what();
   }
-  return writeRun(
+  ImportOutcome outcome = writeRun(
       *impl_, head, [&](std::size_t i) { return parseChunk(*chunks, i, fileName); },
       options.failAfterSteps);
+  if (outcome.status == ImportStatus::Imported) impl_->refreshStepStatistics(outcome.steps);
+  return outcome;
 }
 
 ImportOutcome RunStore::importRun(const RunData& run, const std::string& name,
@@ -66,8 +68,10 @@ ImportOutcome RunStore::importRun(const RunData& run, const std::string& name,
       head.error = head.file + ": " + e.what();
     }
   }
-  return writeRun(
+  ImportOutcome outcome = writeRun(
       *impl_, head, [&](std::size_t) { return std::move(*chunk); }, -1);
+  if (outcome.status == ImportStatus::Imported) impl_->refreshStepStatistics(outcome.steps);
+  return outcome;
 }
 
 std::vector<ImportOutcome> RunStore::importFiles(const std::vector<std::filesystem::path>& files,
@@ -313,6 +317,11 @@ std::vector<ImportOutcome> RunStore::importFiles(const std::vector<std::filesyst
   // A worker's exception that the writer met inside a file's write (reported there as that
   // file's failure) is thrown here all the same.
   if (workerFailure.failed()) throwWorkerFailure();
+  std::int64_t added = 0;
+  for (const ImportOutcome& outcome : outcomes) {
+    if (outcome.status == ImportStatus::Imported) added += outcome.steps;
+  }
+  impl_->refreshStepStatistics(added);
   return outcomes;
 }
 

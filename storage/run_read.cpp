@@ -149,7 +149,7 @@ RunTrack readTrack(RunDatabase::Impl& impl, std::int64_t runId) {
   // (docs/storage.md#checksums); walking the rows bounds the speed (docs/storage.md#reading).
   static const std::string sql =
       std::string("SELECT ") + kStepColumns + " FROM steps WHERE run_id = ? ORDER BY step";
-  db::Statement& s = impl.statement(sql.c_str());
+  db::Statement& s = impl.streamedStatement(sql.c_str());
   s.bind(1, runId);
   std::size_t row = 0;
   while (s.step()) {

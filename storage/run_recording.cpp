@@ -312,6 +312,7 @@ Status RunStore::finishRun(std::int64_t runId, const RunData& run) {
     update.bind(4, checksum).bind(5, runId).run();
     updateRunChecksum(*impl_, runId, static_cast<std::int64_t>(run.stepCount()));
     transaction.commit();
+    impl_->refreshStepStatistics(static_cast<std::int64_t>(run.stepCount()));
   });
 }
 

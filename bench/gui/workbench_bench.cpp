@@ -6,7 +6,8 @@
 //   QT_QPA_PLATFORM=offscreen build/bench/gui/tactile_gui_bench --benchmark_repetitions=5
 //
 // The run is simulator-shaped synthetic data (storage/synthetic_run.h) stored once in a database
-// under the temporary folder (TACTILE_BENCH_STEPS and TACTILE_BENCH_DB override size and place).
+// under the temporary folder (TACTILE_BENCH_STEPS and TACTILE_BENCH_DB override size and place;
+// TACTILE_BENCH_DB may be a PostgreSQL address, of a database made by `tactile db create`).
 #include <benchmark/benchmark.h>
 
 #include <QApplication>
@@ -63,8 +64,28 @@ double memoryMiB(const char* key) {
 
 // Made in a child process (this program with --make-db), so that the memory it takes to build
 // the run never counts towards the workbench's.
+bool onServer() {
+  return tactile::storage::isServerAddress(benchDatabase().toStdString());
+}
+
 void makeDatabase() {
   const QString path = benchDatabase();
+  if (onServer()) {
+    // A server database is filled in place (it must exist; `tactile db create` makes its tables).
+    auto db = tactile::storage::RunDatabase::open(path.toStdString());
+    if (!db) {
+      std::fprintf(stderr, "%s\n", db.errorText().c_str());
+      std::abort();
+    }
+    tactile::RunData run =
+        tactile::storage::makeSyntheticRun(static_cast<std::size_t>(benchSteps()), 7);
+    const auto out = db.value()->runs().importRun(run, "long");
+    if (out.status != tactile::storage::ImportStatus::Imported) {
+      std::fprintf(stderr, "%s\n", out.message.c_str());
+      std::abort();
+    }
+    return;
+  }
   std::fprintf(stderr, "creating %s (%lld steps)...\n", qPrintable(path),
                static_cast<long long>(benchSteps()));
   const QString partial = path + QStringLiteral(".partial");
@@ -83,10 +104,17 @@ void makeDatabase() {
   QFile::rename(partial, path);
 }
 
+bool databaseReady() {
+  if (!onServer()) return QFileInfo::exists(benchDatabase());
+  auto db = tactile::storage::RunDatabase::open(benchDatabase().toStdString(),
+                                                tactile::storage::OpenMode::ReadOnly);
+  return db && db.value()->runs().find("long").ok();
+}
+
 void ensureDatabase(const char* program) {
-  if (QFileInfo::exists(benchDatabase())) return;
+  if (databaseReady()) return;
   if (QProcess::execute(QString::fromLocal8Bit(program), {QStringLiteral("--make-db")}) != 0 ||
-      !QFileInfo::exists(benchDatabase())) {
+      !databaseReady()) {
     std::fprintf(stderr, "cannot create %s\n", qPrintable(benchDatabase()));
     std::exit(1);
   }

@@ -150,7 +150,9 @@ struct Parameter {
 
 class PgStatement : public StatementBackend {
  public:
-  PgStatement(PgConnection& connection, std::string_view sql);
+  // `streamed`: rows come from COPY (...) TO STDOUT in binary format, one at a time, instead of a
+  // result held whole in memory (ConnectionBackend::prepareStreamed).
+  PgStatement(PgConnection& connection, std::string_view sql, bool streamed = false);
   // Frees the statement's server-side copies, so that a long session (the workbench) does not
   // gather one per statement ever made.
   ~PgStatement() override;
@@ -191,15 +193,17 @@ class PgStatement : public StatementBackend {
 
   bool step() override;
   void reset() override {
+    if (streaming_) endStream();
     result_.reset();
     row_ = -1;
+    rows_ = 0;
   }
 
   std::int64_t columnInt(int column) const override {
     if (isNull(column)) return 0;
-    const char* v = PQgetvalue(result_.get(), row_, column);
-    const int n = PQgetlength(result_.get(), row_, column);
-    switch (PQftype(result_.get(), column)) {
+    const char* v = valueAt(column);
+    const int n = lengthAt(column);
+    switch (typeAt(column)) {
       case kBool:
       case kInt2:
       case kInt4:
@@ -218,8 +222,8 @@ class PgStatement : public StatementBackend {
   }
   double columnDouble(int column) const override {
     if (isNull(column)) return 0.0;
-    const char* v = PQgetvalue(result_.get(), row_, column);
-    switch (PQftype(result_.get(), column)) {
+    const char* v = valueAt(column);
+    switch (typeAt(column)) {
       case kFloat8: {
         std::uint64_t bits;
         std::memcpy(&bits, v, 8);
@@ -234,18 +238,18 @@ class PgStatement : public StatementBackend {
       case kInt2:
       case kInt4:
       case kInt8:
-        return static_cast<double>(readBig(v, PQgetlength(result_.get(), row_, column)));
+        return static_cast<double>(readBig(v, lengthAt(column)));
       case kNumeric:
-        return numericValue(v, PQgetlength(result_.get(), row_, column));
+        return numericValue(v, lengthAt(column));
       default:
         return 0.0;
     }
   }
   std::string_view columnText(int column) const override {
     if (isNull(column)) return {};
-    const char* v = PQgetvalue(result_.get(), row_, column);
-    const int n = PQgetlength(result_.get(), row_, column);
-    switch (PQftype(result_.get(), column)) {
+    const char* v = valueAt(column);
+    const int n = lengthAt(column);
+    switch (typeAt(column)) {
       case kBool:
       case kInt2:
       case kInt4:
@@ -261,10 +265,10 @@ class PgStatement : public StatementBackend {
     }
   }
   const void* columnBlob(int column) const override {
-    return isNull(column) ? nullptr : PQgetvalue(result_.get(), row_, column);
+    return isNull(column) ? nullptr : valueAt(column);
   }
   std::size_t columnBytes(int column) const override {
-    return isNull(column) ? 0 : static_cast<std::size_t>(PQgetlength(result_.get(), row_, column));
+    return isNull(column) ? 0 : static_cast<std::size_t>(lengthAt(column));
   }
   bool columnIsNull(int column) const override { return isNull(column); }
 
@@ -277,9 +281,32 @@ class PgStatement : public StatementBackend {
     return parameters_[static_cast<std::size_t>(index - 1)];
   }
   bool isNull(int column) const {
+    if (streamed_) {
+      return !streaming_ || column < 0 || column >= static_cast<int>(fields_.size()) ||
+             fields_[static_cast<std::size_t>(column)].second < 0;
+    }
     return result_ == nullptr || row_ < 0 || row_ >= rows_ ||
            PQgetisnull(result_.get(), row_, column) != 0;
   }
+  // The current row's value of `column` in binary format, its length and its type.
+  const char* valueAt(int column) const {
+    if (streamed_) return fields_[static_cast<std::size_t>(column)].first;
+    return PQgetvalue(result_.get(), row_, column);
+  }
+  int lengthAt(int column) const {
+    if (streamed_) return fields_[static_cast<std::size_t>(column)].second;
+    return PQgetlength(result_.get(), row_, column);
+  }
+  Oid typeAt(int column) const {
+    if (streamed_) return column < static_cast<int>(types_.size()) ? types_[column] : 0;
+    return PQftype(result_.get(), column);
+  }
+  // ---- streamed reads ----
+  void startStream();
+  bool nextStreamRow();
+  // Reads what is left of the COPY and its final result; throws when the server reported an error
+  // (unless `quiet`).
+  void endStream(bool quiet = true);
   // The server-side statement for the parameters' current types (prepared on first use).
   const std::string& prepared();
 
@@ -292,6 +319,14 @@ class PgStatement : public StatementBackend {
   int rows_ = 0;
   int row_ = -1;
   mutable std::string textBuffer_;
+  // Streamed: the columns' types (from describing the prepared statement), the COPY row buffer and
+  // its fields (value, length; -1 for NULL).
+  bool streamed_ = false;
+  bool streaming_ = false;
+  bool sawHeader_ = false;
+  std::vector<Oid> types_;
+  char* buffer_ = nullptr;
+  std::vector<std::pair<const char*, int>> fields_;
 };
 
 // COPY ... FROM STDIN in binary format: rows are encoded here and sent in large pieces.
@@ -387,6 +422,9 @@ class PgConnection : public ConnectionBackend {
   std::unique_ptr<StatementBackend> prepare(std::string_view sql) override {
     return std::make_unique<PgStatement>(*this, sql);
   }
+  std::unique_ptr<StatementBackend> prepareStreamed(std::string_view sql) override {
+    return std::make_unique<PgStatement>(*this, sql, true);
+  }
   std::unique_ptr<RowWriterBackend> rowWriter(std::string_view table, std::string_view columns,
                                               int count) override {
     return std::make_unique<PgRowWriter>(*this, table, columns, count);
@@ -467,8 +505,8 @@ class PgConnection : public ConnectionBackend {
   std::map<std::string, std::vector<int>> widths_;
 };
 
-PgStatement::PgStatement(PgConnection& connection, std::string_view sql)
-    : connection_(connection), original_(sql) {
+PgStatement::PgStatement(PgConnection& connection, std::string_view sql, bool streamed)
+    : connection_(connection), original_(sql), streamed_(streamed) {
   int count = 0;
   sql_ = numberedParameters(sql, count);
   parameters_.resize(static_cast<std::size_t>(count));
@@ -476,6 +514,7 @@ PgStatement::PgStatement(PgConnection& connection, std::string_view sql)
 
 PgStatement::~PgStatement() {
   result_.reset();
+  if (streaming_) endStream();
   PGconn* conn = connection_.handle();
   if (PQstatus(conn) != CONNECTION_OK) return;
   for (const auto& [types, name] : preparedByTypes_) {
@@ -501,6 +540,11 @@ const std::string& PgStatement::prepared() {
 }
 
 bool PgStatement::step() {
+  if (streamed_) {
+    if (!streaming_ && row_ >= 0) return false;  // read to its end: reset() starts it again
+    if (!streaming_) startStream();
+    return nextStreamRow();
+  }
   if (result_ == nullptr) {
     const std::string& name = prepared();
     const std::size_t n = parameters_.size();
@@ -525,6 +569,142 @@ bool PgStatement::step() {
   }
   if (row_ < rows_) ++row_;
   return row_ < rows_;
+}
+
+// COPY takes no parameters: they are written into the query as literals. Only integers, numbers,
+// text and NULL are needed by the reads that stream; text goes through libpq's own quoting.
+void PgStatement::startStream() {
+  PGconn* conn = connection_.handle();
+  if (types_.empty()) {
+    ResultPtr described(PQdescribePrepared(conn, prepared().c_str()));
+    if (PQresultStatus(described.get()) != PGRES_COMMAND_OK) {
+      failResult(connection_.name(), conn, described.get(), "cannot describe statement", original_);
+    }
+    for (int c = 0; c < PQnfields(described.get()); ++c)
+      types_.push_back(PQftype(described.get(), c));
+  }
+  std::string query = "COPY (";
+  for (std::size_t i = 0; i < sql_.size(); ++i) {
+    if (sql_[i] != '$' || i + 1 >= sql_.size() || sql_[i + 1] < '0' || sql_[i + 1] > '9') {
+      query += sql_[i];
+      continue;
+    }
+    std::size_t number = 0;
+    while (i + 1 < sql_.size() && sql_[i + 1] >= '0' && sql_[i + 1] <= '9')
+      number = number * 10 + static_cast<std::size_t>(sql_[++i] - '0');
+    const Parameter& p = parameters_.at(number - 1);
+    if (p.null) {
+      query += "NULL";
+    } else if (p.type == kInt8) {
+      query += std::to_string(readBig(p.bytes.data(), 8));
+    } else if (p.type == kFloat8) {
+      std::uint64_t bits;
+      std::memcpy(&bits, p.bytes.data(), 8);
+      char digits[32];
+      const auto end =
+          std::to_chars(digits, digits + sizeof digits, std::bit_cast<double>(toBig64(bits))).ptr;
+      query += "'" + std::string(digits, end) + "'::float8";
+    } else if (p.type == kText) {
+      char* quoted = PQescapeLiteral(conn, p.bytes.data(), p.bytes.size());
+      if (quoted == nullptr) {
+        throw DbError(connection_.name(),
+                      "cannot quote a parameter: " + trimmed(PQerrorMessage(conn)) +
+                          " (in: " + original_ + ")");
+      }
+      query += quoted;
+      PQfreemem(quoted);
+    } else {
+      throw DbError(connection_.name(),
+                    "a streamed read takes no blob parameters (in: " + original_ + ")");
+    }
+  }
+  query += ") TO STDOUT (FORMAT binary)";
+  ResultPtr started(PQexec(conn, query.c_str()));
+  if (PQresultStatus(started.get()) != PGRES_COPY_OUT) {
+    failResult(connection_.name(), conn, started.get(), "statement failed", original_);
+  }
+  streaming_ = true;
+  sawHeader_ = false;
+  row_ = 0;
+}
+
+bool PgStatement::nextStreamRow() {
+  PGconn* conn = connection_.handle();
+  const auto malformed = [&] {
+    endStream();
+    throw DbError(connection_.name(), "the server sent a malformed row (in: " + original_ + ")");
+  };
+  for (;;) {
+    if (buffer_ != nullptr) {
+      PQfreemem(buffer_);
+      buffer_ = nullptr;
+    }
+    fields_.clear();
+    const int bytes = PQgetCopyData(conn, &buffer_, 0);
+    if (bytes == -1) {
+      endStream(false);
+      return false;
+    }
+    if (bytes < 0) {
+      streaming_ = false;
+      failResult(connection_.name(), conn, nullptr, "reading rows failed", original_);
+    }
+    const char* p = buffer_;
+    const char* end = buffer_ + bytes;
+    // The file header ("PGCOPY\n\377\r\n\0", flags, extension) comes before the first row.
+    if (!sawHeader_) {
+      static constexpr char kSignature[] = "PGCOPY\n\377\r\n";
+      if (end - p < 19 || std::memcmp(p, kSignature, 11) != 0) malformed();
+      const auto extension = readBig(p + 15, 4);
+      if (extension < 0 || end - p < 19 + extension) malformed();
+      p += 19 + extension;
+      sawHeader_ = true;
+      if (p == end) continue;
+    }
+    if (end - p < 2) malformed();
+    const auto count = readBig(p, 2);
+    p += 2;
+    if (count == -1) continue;  // the trailer; the end of the data follows
+    if (count < 0) malformed();
+    for (std::int64_t c = 0; c < count; ++c) {
+      if (end - p < 4) malformed();
+      const auto length = static_cast<int>(readBig(p, 4));
+      p += 4;
+      if (length < -1 || (length > 0 && end - p < length)) malformed();
+      fields_.emplace_back(length < 0 ? nullptr : p, length);
+      if (length > 0) p += length;
+    }
+    ++row_;
+    return true;
+  }
+}
+
+void PgStatement::endStream(bool quiet) {
+  PGconn* conn = connection_.handle();
+  streaming_ = false;
+  fields_.clear();
+  if (buffer_ != nullptr) {
+    PQfreemem(buffer_);
+    buffer_ = nullptr;
+  }
+  // What is left of the rows is read and dropped: cancelling would fail the caller's transaction.
+  for (;;) {
+    char* rest = nullptr;
+    const int bytes = PQgetCopyData(conn, &rest, 0);
+    if (rest != nullptr) PQfreemem(rest);
+    if (bytes < 0) break;
+  }
+  ResultPtr failed;
+  while (PGresult* r = PQgetResult(conn)) {
+    if (PQresultStatus(r) != PGRES_COMMAND_OK && failed == nullptr) {
+      failed.reset(r);
+    } else {
+      PQclear(r);
+    }
+  }
+  if (failed != nullptr && !quiet) {
+    failResult(connection_.name(), conn, failed.get(), "statement failed", original_);
+  }
 }
 
 PgRowWriter::PgRowWriter(PgConnection& connection, std::string_view table, std::string_view columns,

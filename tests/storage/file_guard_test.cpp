@@ -150,6 +150,41 @@ TEST(LeftoverLog, EveryCommitCarriesPageOneSoEveryLogCanBeJudged) {
   EXPECT_EQ(db::inspectWal(dir / "crashed.db").kind, db::WalState::Kind::Belongs);
 }
 
+// A long session: one connection commits, its log is checkpointed into the file completely (here by
+// another connection, as SQLite's automatic checkpoint does every thousand pages), the connection
+// goes on committing (the log starts again from its beginning) and the file grows; then it is
+// killed (its files copied while it is open). The restarted log's page-1 images carry the very
+// change counter the checkpoint put into the file, and the log is still this file's: every
+// committed edit is there after the open.
+TEST(LeftoverLog, ALogRestartedInALongSessionIsRecovered) {
+  TempDir dir;
+  const fs::path live = dir / "live.db";
+  importInto(live, "one", 1);
+  auto db = RunDatabase::open(live, OpenMode::ReadWrite);
+  ASSERT_TRUE(db.ok()) << db.errorText();
+  ASSERT_TRUE(db.value()->labels().create("long").ok());
+  ASSERT_EQ(db.value()->runs().importRun(makeRun(400, true, 2), "two").status,
+            ImportStatus::Imported);
+  sqlite3* other = nullptr;
+  ASSERT_EQ(sqlite3_open(live.c_str(), &other), SQLITE_OK);
+  ASSERT_EQ(sqlite3_exec(other, "PRAGMA wal_checkpoint(RESTART)", nullptr, nullptr, nullptr),
+            SQLITE_OK);
+  sqlite3_close(other);
+  // Commits that grow the file, so that no image in the restarted log equals the file's page 1.
+  ASSERT_EQ(db.value()->runs().importRun(makeRun(4000, true, 3), "three").status,
+            ImportStatus::Imported);
+  const std::string header = readBytes(live.string() + "-wal").substr(0, 16);
+  ASSERT_EQ(header.size(), 16u);
+  EXPECT_NE(header.substr(12, 4), std::string(4, '\0')) << "the log was never restarted";
+  copyFile(live, dir / "crashed.db");
+  copyFile(live.string() + "-wal", dir / "crashed.db-wal");
+  db.value().reset();
+
+  const db::WalState state = db::inspectWal(dir / "crashed.db");
+  EXPECT_EQ(state.kind, db::WalState::Kind::Belongs) << state.reason;
+  EXPECT_EQ(runCount(dir / "crashed.db"), 3u) << "the killed session's commits were lost";
+}
+
 // A log without any page-1 frame (written by another program) is read through before it is
 // trusted: one that continues the file opens.
 TEST(LeftoverLog, ALogWithoutPageOneIsReadThroughAndOpensWhenSound) {
