@@ -424,7 +424,13 @@ py::tuple train(Database& db, const TrainArgs& a) {
 
 // The sweep's arguments are the request's text form, parsed and checked by the same function as
 // the CLI's options (workspace::parseSweepRequest): the same bad request, the same words.
-py::tuple sweep(Database& db, const workspace::SweepRequestText& a) {
+// scikit-learn's covariance names ("diag", "tied", ...) are this module's everywhere, the sweep's
+// too: they are spelt in this product's words before the request is parsed.
+py::tuple sweep(Database& db, workspace::SweepRequestText a) {
+  for (std::string& c : a.covariances) {
+    if (c == "full" || c == "diag" || c == "tied")
+      c = std::string(analysis::covarianceFormName(parseForm(c)));
+  }
   auto parsedRequest = workspace::parseSweepRequest(a, workspace::SweepSource::Database);
   if (!parsedRequest) raiseValueError(parsedRequest.error());
   const workspace::SweepRequest& request = parsedRequest.value();
