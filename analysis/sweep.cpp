@@ -51,13 +51,6 @@ int dataKey(SensorGroup g, FeatureKind f) {
   return groupIndex(g) * 8 + static_cast<int>(f);
 }
 
-// Rough cost of a cell, to start the expensive ones first (the result does not depend on it).
-double cellCost(const SweepCell& cell, std::size_t rows, int dim) {
-  const double k = cell.method == ClassifierMethod::Gaussian ? 1.0 : cell.order;
-  const double perComponent = isDiagonal(cell.form) ? dim : static_cast<double>(dim) * dim;
-  return static_cast<double>(rows) * k * perComponent;
-}
-
 // Fits the classifier of `cells` (cells equal but for the decision) once and scores each decision.
 std::vector<SweepCellResult> runCells(const std::vector<SweepCell>& cells, const SweepGrid& grid,
                                       const SharedGroupData& data, const ProgressFn& keepGoing) {
@@ -315,7 +308,7 @@ struct SweepSession::Impl {
     for (const std::vector<std::size_t>& job : jobs) {
       const SweepCell& c = cells[job.front()];
       const SharedGroupData& d = folds.front().shared.at(dataKey(c.group, c.features));
-      cost.push_back(cellCost(c, d.train.size(), d.train.dimension()));
+      cost.push_back(sweepCellUnits(c, d.train.size(), d.test.size()));
     }
     // The data summary: the first fold's, with every fold's test rows (by-scene).
     data = folds.front().data;
@@ -504,6 +497,14 @@ std::vector<std::vector<std::size_t>> fitJobs(const std::vector<SweepCell>& cell
     }
   }
   return jobs;
+}
+
+double sweepCellUnits(const SweepCell& cell, std::size_t trainRows, std::size_t testRows) {
+  const double d = featureDimension(cell.group, cell.features);
+  const double perRow = isDiagonal(cell.form) ? d : d * d;
+  const double components =
+      cell.method == ClassifierMethod::Gaussian ? 1.0 : static_cast<double>(cell.order);
+  return static_cast<double>(trainRows + testRows) * components * perRow + 1.0;
 }
 
 SweepResult runSweepSession(const SweepSession& session, const SweepOptions& options,

@@ -74,6 +74,13 @@ std::vector<SweepCell> expandGrid(const SweepGrid& grid);
 // The fit jobs of expanded cells: the grid positions of cells equal but for the decision mode
 // (adjacent in grid order), which share one fit.
 std::vector<std::vector<std::size_t>> fitJobs(const std::vector<SweepCell>& cells);
+// The cost model of a sweep, for the order its jobs are handed out in (most expensive first, so
+// that no worker is left alone with a long fit at the end) and the workbench's time estimate: every
+// EM iteration visits each training row once per component (a Gaussian is one) at a cost per row
+// of the feature dimension D (diagonal forms) or D^2 (full forms); prediction visits the test rows
+// the same way. In units of that work, +1 so that an empty cell costs something. No result depends
+// on it.
+double sweepCellUnits(const SweepCell& cell, std::size_t trainRows, std::size_t testRows);
 
 struct SweepCellResult {
   SweepCell cell;

@@ -606,11 +606,14 @@ class SweepStore {
                                const std::string& metricsJson);
 
   // ---- sweeps planned for workers (storage/sweep_claims.cpp, docs/cluster.md) ----
-  // Creates a sweep with one pending claim per job (cellsPerJob[i] cells of job i), at once.
+  // Creates a sweep with one pending claim per job (cellsPerJob[i] cells of job i, costing
+  // costPerJob[i] in the sweep's cost model; empty: all alike), at once.
   Result<std::int64_t> plan(const std::string& name, const std::string& configurationJson,
-                            const std::vector<std::int64_t>& cellsPerJob);
-  // Claims one job for `worker` until `now + leaseSeconds` (Unix seconds): the first pending one,
-  // or a running one whose lease ran out (its worker died); nullopt when none is left. PostgreSQL
+                            const std::vector<std::int64_t>& cellsPerJob,
+                            const std::vector<double>& costPerJob = {});
+  // Claims one job for `worker` until `now + leaseSeconds` (Unix seconds): the most expensive
+  // pending one (the first by job of equal cost), or a running one whose lease ran out (its worker
+  // died); nullopt when none is left. PostgreSQL
   // locks the row (FOR UPDATE SKIP LOCKED), so workers claim side by side; SQLite claims in an
   // immediate transaction. A running claim taken over kSweepClaimAttempts times is failed.
   Result<std::optional<SweepClaim>> claim(std::int64_t sweepId, const std::string& worker,

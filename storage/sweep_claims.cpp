@@ -28,9 +28,12 @@ SweepClaim claimFromRow(db::Statement& s) {
 }  // namespace
 
 Result<std::int64_t> SweepStore::plan(const std::string& name, const std::string& configurationJson,
-                                      const std::vector<std::int64_t>& cellsPerJob) {
+                                      const std::vector<std::int64_t>& cellsPerJob,
+                                      const std::vector<double>& costPerJob) {
   return guarded<std::int64_t>(*impl_, [&] {
     requireName(name, "sweep");
+    if (!costPerJob.empty() && costPerJob.size() != cellsPerJob.size())
+      throw db::DbError("a sweep's plan needs one cost per job");
     db::Transaction transaction(impl_->connection);
     const std::int64_t id =
         impl_
@@ -40,10 +43,11 @@ Result<std::int64_t> SweepStore::plan(const std::string& name, const std::string
             .bind(2, configurationJson)
             .bind(3, utcNow())
             .runReturningId();
-    db::RowWriter rows(impl_->connection, "sweep_claims", "sweep_id, job, cells, state", 4);
+    db::RowWriter rows(impl_->connection, "sweep_claims", "sweep_id, job, cells, cost, state", 5);
     for (std::size_t job = 0; job < cellsPerJob.size(); ++job) {
       rows.bind(1, id).bind(2, static_cast<std::int64_t>(job)).bind(3, cellsPerJob[job]);
-      rows.bindText(4, "pending");
+      rows.bind(4, costPerJob.empty() ? 0.0 : costPerJob[job]);
+      rows.bindText(5, "pending");
       rows.add();
     }
     rows.finish();
@@ -68,13 +72,14 @@ Result<std::optional<SweepClaim>> SweepStore::claim(std::int64_t sweepId, const 
         .bind(3, now)
         .bind(4, kSweepClaimAttempts)
         .run();
-    // PostgreSQL: the row is locked until commit and skipped by the other workers meanwhile.
+    // The most expensive job first. PostgreSQL: the row is locked until commit and skipped by the
+    // other workers meanwhile.
     db::Statement& pick = impl_->statement(
         impl_->connection.isSqlite()
             ? "SELECT job FROM sweep_claims WHERE sweep_id = ? AND (state = 'pending' OR "
-              "(state = 'running' AND lease_until < ?)) ORDER BY job LIMIT 1"
+              "(state = 'running' AND lease_until < ?)) ORDER BY cost DESC, job LIMIT 1"
             : "SELECT job FROM sweep_claims WHERE sweep_id = ? AND (state = 'pending' OR "
-              "(state = 'running' AND lease_until < ?)) ORDER BY job LIMIT 1 "
+              "(state = 'running' AND lease_until < ?)) ORDER BY cost DESC, job LIMIT 1 "
               "FOR UPDATE SKIP LOCKED");
     pick.bind(1, sweepId).bind(2, now);
     if (!pick.step()) {

@@ -30,6 +30,10 @@ double unixNow() {
   return std::chrono::duration<double>(std::chrono::system_clock::now().time_since_epoch()).count();
 }
 
+double secondsSince(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
 std::string defaultWorkerName() {
   char host[256] = {};
   if (gethostname(host, sizeof host - 1) != 0) host[0] = '\0';
@@ -222,16 +226,27 @@ Result<PlannedSweep> Workspace::planSweep(const SweepRequest& request) {
   }
   const std::vector<analysis::SweepCell> cells = analysis::expandGrid(request.grid);
   const std::vector<std::vector<std::size_t>> jobs = analysis::fitJobs(cells);
+  // Each job's cost in the grid's cost model, from its group's labelled contact rows, so that the
+  // workers take the most expensive jobs first (the result does not depend on the order).
+  auto trainRows = labelledContactSteps(request.labelSet, request.trainRuns);
+  if (!trainRows) return trainRows.error();
+  auto testRows = labelledContactSteps(request.labelSet, request.testRuns);
+  if (!testRows) return testRows.error();
   std::vector<std::int64_t> cellsPerJob;
-  for (const auto& job : jobs)
+  std::vector<double> costPerJob;
+  for (const auto& job : jobs) {
     cellsPerJob.push_back(static_cast<std::int64_t>(job.size()));
+    const analysis::SweepCell& cell = cells[job.front()];
+    const auto g = static_cast<std::size_t>(groupIndex(cell.group));
+    costPerJob.push_back(analysis::sweepCellUnits(cell, trainRows.value()[g], testRows.value()[g]));
+  }
   analysis::SweepResult header;
   header.grid = request.grid;
   const json configuration =
       sweepConfiguration(header, request, runsJson(train), runsJson(test), "planned");
   const std::string name =
       request.name.empty() ? defaultSweepName(request.labelSet, request.grid) : request.name;
-  auto id = db_->sweeps().plan(name, dumpJson(configuration), cellsPerJob);
+  auto id = db_->sweeps().plan(name, dumpJson(configuration), cellsPerJob, costPerJob);
   if (!id) return id.error();
   return PlannedSweep{id.value(), cells.size(), jobs.size()};
 }
@@ -321,7 +336,20 @@ Result<WorkReport> Workspace::workSweep(
     if (!firstError) firstError = e;
     stop = true;
   };
-  if (progress && !progress(doneCells, totalCells)) stop = true;
+  // The caller's progress (under dbMutex once the threads run): false stops the work; an
+  // exception from it (out of memory in the caller's handler) stops it with that error.
+  const auto goOn = [&]() -> bool {
+    if (!progress) return true;
+    try {
+      return progress(doneCells, totalCells);
+    } catch (const std::bad_alloc&) {
+      noteError(failure("out of memory"));
+    } catch (const std::exception& e) {
+      noteError(failure(e.what()));
+    }
+    return false;
+  };
+  if (!goOn()) stop = true;
 
   parallelFor(threads, threads, [&](std::size_t t) {
     const std::string worker = threads > 1 ? workerBase + "/" + std::to_string(t + 1) : workerBase;
@@ -331,7 +359,9 @@ Result<WorkReport> Workspace::workSweep(
       {
         std::lock_guard lock(dbMutex);
         if (options.maxCells > 0 && report.cells >= options.maxCells) return;
+        const auto claimStart = std::chrono::steady_clock::now();
         auto claimed = db_->sweeps().claim(sweepId, worker, unixNow(), options.leaseSeconds);
+        report.claimStoreSeconds += secondsSince(claimStart);
         if (!claimed) {
           noteError(claimed.error());
           return;
@@ -381,7 +411,7 @@ Result<WorkReport> Workspace::workSweep(
         renewed = now;
         auto held = db_->sweeps().renew(sweepId, job, worker, now + options.leaseSeconds);
         if (held && !held.value()) lost = true;  // taken over: another worker computes it
-        if (progress && !progress(doneCells, totalCells)) stop = true;
+        if (!goOn()) stop = true;
         return !lost && !stop.load();
       };
       std::optional<std::vector<analysis::SweepCellResult>> results;
@@ -412,9 +442,10 @@ Result<WorkReport> Workspace::workSweep(
         cells.emplace_back(dumpJson(analysis::sweepCellSettingsToJson(c.cell)),
                            dumpJson(analysis::sweepCellToJson(c)));
       }
-      const double seconds =
-          std::chrono::duration<double>(std::chrono::steady_clock::now() - jobStart).count();
+      const double seconds = secondsSince(jobStart);
+      const auto storeStart = std::chrono::steady_clock::now();
       auto stored = db_->sweeps().complete(sweepId, job, worker, seconds, cells);
+      report.claimStoreSeconds += secondsSince(storeStart);
       if (!stored) {
         noteError(stored.error());
         return;
@@ -428,12 +459,11 @@ Result<WorkReport> Workspace::workSweep(
       doneCells += results->size();
       for (const analysis::SweepCellResult& c : *results)
         if (onCell) onCell(c);
-      if (progress && !progress(doneCells, totalCells)) stop = true;
+      if (!goOn()) stop = true;
     }
   });
   report.cancelled = stop.load() && !firstError;
-  report.seconds =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+  report.seconds = secondsSince(started);
   if (firstError) return firstError.value();
 
   // The last worker out records the sweep's final state and data summary (any worker computes

@@ -203,6 +203,8 @@ struct WorkReport {
   bool cancelled = false;
   double seconds = 0.0;
   double extractSeconds = 0.0;
+  // Time spent claiming jobs and storing their cells (the database's share of the work).
+  double claimStoreSeconds = 0.0;
 };
 
 // Where a planned sweep stands (Workspace::sweepStatus): counts in cells, the claims that run or
@@ -349,7 +351,9 @@ class Workspace {
   // first free "<label set>-<n>").
   Result<TrainOutcome> storeTrained(TrainOutcome outcome, const TrainRequest& request);
   // Stores a sweep with every fit job pending, for workers (`tactile sweep plan`): the request is
-  // checked and its label set, runs and scenes looked up first; nothing is computed.
+  // checked and its label set, runs and scenes looked up first; nothing is fitted. Each job carries
+  // its cost (analysis::sweepCellUnits of its group's labelled contact rows): the workers claim the
+  // most expensive first.
   Result<PlannedSweep> planSweep(const SweepRequest& request);
   // Claims pending jobs of a planned sweep one at a time (options.threads at once) and stores
   // each job's cells once (`tactile sweep work`); onCell sees each stored cell, progress gets

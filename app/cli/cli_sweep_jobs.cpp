@@ -111,6 +111,7 @@ int runWork(const WorkArgs& a) {
                                {"failed", report->failed},
                                {"overtaken", report->overtaken},
                                {"extract_s", report->extractSeconds},
+                               {"claim_store_s", report->claimStoreSeconds},
                                {"wall_s", report->seconds}})
               << "\n";
   } else {

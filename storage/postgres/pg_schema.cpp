@@ -164,6 +164,7 @@ CREATE TABLE sweep_claims(
   sweep_id BIGINT NOT NULL REFERENCES sweeps(id) ON DELETE CASCADE,
   job BIGINT NOT NULL,
   cells BIGINT NOT NULL,
+  cost DOUBLE PRECISION NOT NULL DEFAULT 0,
   state TEXT COLLATE "C" NOT NULL CHECK(state IN ('pending','running','done','failed')),
   worker TEXT COLLATE "C" NOT NULL DEFAULT '',
   lease_until DOUBLE PRECISION NOT NULL DEFAULT 0,
@@ -173,7 +174,7 @@ CREATE TABLE sweep_claims(
   finished_at TEXT COLLATE "C" NOT NULL DEFAULT '',
   PRIMARY KEY(sweep_id, job)
 );
-CREATE INDEX sweep_claims_by_state ON sweep_claims(sweep_id, state, job);
+CREATE INDEX sweep_claims_by_state ON sweep_claims(sweep_id, state, cost DESC, job);
 )sql";
 
 // Serialises schema creation between processes (pg_advisory_xact_lock); "tactmeta" in ASCII.

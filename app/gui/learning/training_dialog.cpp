@@ -451,24 +451,6 @@ void TrainingDialog::reload() {
   refreshRows();
 }
 
-namespace {
-
-// The work of one cell, in the cost model's units: every EM iteration visits each row once per
-// component, at a cost per row that grows with the dimension (diagonal forms) or its square (full
-// forms); prediction visits the test rows the same way. A Gaussian is one component.
-double cellUnits(const analysis::SweepCell& cell, std::size_t trainRows, std::size_t testRows) {
-  const double d = static_cast<double>(groupInfo(cell.group).sensorCount) *
-                   (cell.features == analysis::FeatureKind::Normal ? 1.0 : 2.0);
-  const bool full = cell.form == analysis::CovarianceForm::NodalFull ||
-                    cell.form == analysis::CovarianceForm::GrandFull;
-  const double perRow = full ? d * d : d;
-  const double components =
-      cell.method == analysis::ClassifierMethod::Gmm ? static_cast<double>(cell.order) : 1.0;
-  return static_cast<double>(trainRows + testRows) * components * perRow + 1.0;
-}
-
-}  // namespace
-
 void TrainingDialog::refreshTiming() {
   // Calibrates the cost model on every stored cell (newest sweeps first, at most 2000 cells): the
   // median of seconds per unit, so that one grid's estimate holds for another's.
@@ -482,7 +464,7 @@ void TrainingDialog::refreshTiming() {
       for (const analysis::SweepCellResult& c : stored->cells) {
         const double seconds = c.fitSeconds + c.predictSeconds;
         if (!c.ok || !std::isfinite(seconds) || c.trainRows == 0) continue;
-        rates.push_back(seconds / cellUnits(c.cell, c.trainRows, c.testRows));
+        rates.push_back(seconds / analysis::sweepCellUnits(c.cell, c.trainRows, c.testRows));
       }
     }
   }
@@ -527,7 +509,7 @@ void TrainingDialog::refreshPlan() {
     double units = 0;
     for (const analysis::SweepCell& cell : planned) {
       const auto gi = static_cast<std::size_t>(groupIndex(cell.group));
-      units += cellUnits(cell, trainRows_[gi], byRun ? testRows_[gi] : 0);
+      units += analysis::sweepCellUnits(cell, trainRows_[gi], byRun ? testRows_[gi] : 0);
     }
     const int threads = threads_->value() > 0 ? threads_->value() : QThread::idealThreadCount();
     const double seconds =
