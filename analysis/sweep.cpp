@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <atomic>
+#include <charconv>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -171,10 +172,11 @@ std::vector<SweepCell> expandGrid(const SweepGrid& grid) {
 }
 
 namespace {
+// The shortest text that reads back as v: -0.1, not -0.10000000000000001.
 std::string numberText(double v) {
   char buffer[32];
-  std::snprintf(buffer, sizeof buffer, "%.17g", v);
-  return buffer;
+  const auto end = std::to_chars(buffer, buffer + sizeof buffer, v).ptr;
+  return std::string(buffer, end);
 }
 }  // namespace
 

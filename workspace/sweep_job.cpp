@@ -4,7 +4,9 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <cctype>
 #include <chrono>
+#include <filesystem>
 #include <mutex>
 #include <set>
 #include <thread>
@@ -202,6 +204,44 @@ json sweepStatusJson(const SweepStatus& status, double now) {
               {"seconds_left", status.secondsLeft ? json(*status.secondsLeft) : json(nullptr)}};
 }
 
+std::string shellQuoted(const std::string& text) {
+  std::string out = "'";
+  for (char c : text) {
+    if (c == '\'') {
+      out += "'\\''";
+    } else {
+      out += c;
+    }
+  }
+  return out + "'";
+}
+
+namespace {
+
+// The database as a command names it: quoted only where the shell needs it.
+std::string databaseWord(const std::string& database) {
+  const std::string shown = storage::isServerAddress(database)
+                                ? storage::shownAddress(database)
+                                : std::filesystem::absolute(database).lexically_normal().string();
+  const bool plain = !shown.empty() && std::all_of(shown.begin(), shown.end(), [](char c) {
+    return std::isalnum(static_cast<unsigned char>(c)) != 0 ||
+           std::string_view("_-./:@=+,%").find(c) != std::string_view::npos;
+  });
+  return plain ? shown : shellQuoted(shown);
+}
+
+}  // namespace
+
+std::string sweepWorkCommand(const std::string& database, std::int64_t sweepId) {
+  return "tactile sweep work --db " + databaseWord(database) + " --sweep " +
+         std::to_string(sweepId) + " --threads 1";
+}
+
+std::string sweepSubmitCommand(const std::string& database, std::int64_t sweepId, int workers) {
+  return "tactile sweep submit --db " + databaseWord(database) + " --sweep " +
+         std::to_string(sweepId) + " --workers " + std::to_string(workers);
+}
+
 Result<PlannedSweep> Workspace::planSweep(const SweepRequest& request) {
   if (Status ok = checkSweepRequest(request, SweepSource::Database); !ok) return ok.error();
   auto set = db_->labels().find(request.labelSet);
@@ -380,7 +420,9 @@ Result<WorkReport> Workspace::workSweep(
           for (const storage::SweepClaim& c : all.value()) {
             // This process's own claims end with its threads.
             if (c.state != "running" || c.worker.rfind(workerBase, 0) == 0) continue;
-            const double left = std::clamp(c.leaseUntil - now, 0.05, 5.0);
+            // Looked at again soon: the other process usually finishes long before its lease
+            // runs out, and this one should then return at once, not seconds later.
+            const double left = std::clamp(c.leaseUntil - now, 0.05, 0.25);
             wait = wait == 0.0 ? left : std::min(wait, left);
           }
           if (wait == 0.0) return;  // nothing left

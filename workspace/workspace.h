@@ -221,6 +221,14 @@ struct SweepStatus {
 };
 nlohmann::json sweepStatusJson(const SweepStatus& status, double now);
 
+// Single quotes for a POSIX shell.
+std::string shellQuoted(const std::string& text);
+// The commands that fill planned sweep `sweepId` of `database` (a file, made absolute, or a server
+// address shown without its password), as `tactile sweep plan` prints them and the workbench shows
+// them to copy: one worker process of one thread, and a Slurm job array of `workers` such tasks.
+std::string sweepWorkCommand(const std::string& database, std::int64_t sweepId);
+std::string sweepSubmitCommand(const std::string& database, std::int64_t sweepId, int workers);
+
 struct SweepOutcome {
   std::int64_t sweepId = 0;
   analysis::SweepResult result;

@@ -62,9 +62,10 @@ int runPlan(const PlanArgs& a) {
   } else {
     std::printf(
         "sweep %lld planned: %zu cells in %zu jobs, all pending; start workers with\n"
-        "  tactile sweep work --db %s --sweep %lld\n",
+        "  %s\nor submit them to Slurm with\n  %s\n",
         static_cast<long long>(planned->sweepId), planned->cells, planned->jobs,
-        storage::shownAddress(a.db).c_str(), static_cast<long long>(planned->sweepId));
+        workspace::sweepWorkCommand(a.db, planned->sweepId).c_str(),
+        workspace::sweepSubmitCommand(a.db, planned->sweepId, 4).c_str());
   }
   return kExitOk;
 }
@@ -174,19 +175,6 @@ struct SubmitArgs {
   bool json = false;
 };
 
-// Single quotes for the shell.
-std::string shellQuoted(const std::string& text) {
-  std::string out = "'";
-  for (char c : text) {
-    if (c == '\'') {
-      out += "'\\''";
-    } else {
-      out += c;
-    }
-  }
-  return out + "'";
-}
-
 std::string thisProgram() {
   std::error_code ec;
   const std::filesystem::path self = std::filesystem::read_symlink("/proc/self/exe", ec);
@@ -207,8 +195,8 @@ std::string jobScript(const SubmitArgs& a, const workspace::SweepRequest& reques
     s += "#SBATCH " + extra + "\n";
   s += "# Submitted with: sbatch --array=0-" + std::to_string(a.workers - 1) + " THIS_SCRIPT\n";
   s += "set -euo pipefail\n";
-  s += "TACTILE=" + shellQuoted(thisProgram()) + "\n";
-  s += "DB=" + shellQuoted(a.db) + "\n";
+  s += "TACTILE=" + workspace::shellQuoted(thisProgram()) + "\n";
+  s += "DB=" + workspace::shellQuoted(a.db) + "\n";
   s += "WORKER=\"${SLURM_ARRAY_JOB_ID:-0}_${SLURM_ARRAY_TASK_ID:-0}@$(hostname -s)\"\n";
   std::string data;
   if (sqlite) {
@@ -221,7 +209,8 @@ std::string jobScript(const SubmitArgs& a, const workspace::SweepRequest& reques
     s += "SNAPSHOT_DIR=$(mktemp -d \"${TMPDIR:-/tmp}/tactile-sweep-XXXXXX\")\n";
     s += "trap 'rm -rf \"$SNAPSHOT_DIR\"' EXIT\n";
     s += "\"$TACTILE\" db copy --from \"$DB\" --to \"$SNAPSHOT_DIR/data.db\" --runs " +
-         shellQuoted(runs) + " --sets " + shellQuoted(request.labelSet) + " > /dev/null\n";
+         workspace::shellQuoted(runs) + " --sets " + workspace::shellQuoted(request.labelSet) +
+         " > /dev/null\n";
     data = " --data \"$SNAPSHOT_DIR/data.db\"";
   }
   char lease[32];
@@ -262,7 +251,7 @@ int runSubmit(const SubmitArgs& a) {
   const std::string array = "--array=0-" + std::to_string(a.workers - 1);
   std::string jobId;
   if (!a.dryRun) {
-    const std::string command = "sbatch --parsable " + array + " " + shellQuoted(script);
+    const std::string command = "sbatch --parsable " + array + " " + workspace::shellQuoted(script);
     FILE* pipe = popen(command.c_str(), "r");
     if (pipe == nullptr) throw std::runtime_error("cannot run sbatch");
     char buffer[256];
