@@ -291,16 +291,21 @@ Result<PlannedSweep> Workspace::planSweep(const SweepRequest& request) {
   return PlannedSweep{id.value(), cells.size(), jobs.size()};
 }
 
+Result<json> Workspace::sweepConfigurationOf(const storage::SweepInfo& info) {
+  try {
+    return json::parse(info.configurationJson);
+  } catch (const json::exception& e) {
+    return failure("sweep " + std::to_string(info.id) +
+                   ": stored JSON is malformed: " + plainJsonError(e));
+  }
+}
+
 Result<SweepRequest> Workspace::plannedRequest(std::int64_t sweepId, json* configurationOut) {
   auto info = db_->sweeps().info(sweepId);
   if (!info) return info.error();
-  json configuration;
-  try {
-    configuration = json::parse(info->configurationJson);
-  } catch (const json::exception& e) {
-    return failure("sweep " + std::to_string(sweepId) +
-                   ": stored JSON is malformed: " + plainJsonError(e));
-  }
+  auto parsed = sweepConfigurationOf(info.value());
+  if (!parsed) return parsed.error();
+  json& configuration = parsed.value();
   SweepRequest request;
   auto grid = analysis::sweepGridFromJson(configuration.value("grid", json()));
   if (!grid) return failure("sweep " + std::to_string(sweepId) + ": " + grid.errorText());

@@ -419,6 +419,8 @@ class Workspace {
                               const analysis::ClassifyOptions& options = {});
 
  private:
+  // A stored sweep's configuration (its grid, data selection and state), parsed.
+  static Result<nlohmann::json> sweepConfigurationOf(const storage::SweepInfo& info);
   // Loads the named runs and the set's labels for them; every name must be a stored run.
   struct Labelled {
     std::vector<std::unique_ptr<RunData>> runs;
