@@ -854,6 +854,9 @@ void TrainingDialog::planForWorkers() {
                       static_cast<int>(planned->cells))
                        .arg(planned->sweepId));
   emit sweepPlanned(planned->sweepId);
+  // The results window that opens for the sweep must not hide the commands still to be copied.
+  raise();
+  activateWindow();
 }
 
 void TrainingDialog::cancel() {
