@@ -187,9 +187,11 @@ void TrainingDialog::buildUi() {
   floors_->setToolTip(tr("Variance floors, comma-separated"));
   form->addRow(tr("Variance floors:"), floors_);
 
-  // Two rows of four: eight kinds in one row would make the dialog wider than a laptop screen.
+  // Two columns: the longer kinds' names ("normal+shear+touch+motion+neighbours") four to a row
+  // made the settings wider than the dialog, and the runs' Train and Test columns scrolled out of
+  // sight.
   auto* featureRow = new QGridLayout;
-  constexpr int kFeatureColumns = 4;
+  constexpr int kFeatureColumns = 2;
   int featureIndex = 0;
   for (analysis::FeatureKind k : analysis::kFeatureKinds) {
     auto* box = new QCheckBox(qs(analysis::featureKindName(k)));
