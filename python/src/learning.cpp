@@ -6,7 +6,11 @@
 #include <pybind11/stl/filesystem.h>
 
 #include <cerrno>
+#include <cmath>
+#include <cstring>
 #include <filesystem>
+#include <string_view>
+#include <unordered_map>
 
 #include "analysis/classifier.h"
 #include "analysis/classify_run.h"
@@ -127,6 +131,75 @@ ClassifierOptions classifierOptions(const std::string& method, int components,
   if (!(tolerance >= 0.0)) throw py::value_error("tol must be >= 0");
   if (threads < 0) throw py::value_error("n_jobs must be >= 0 (0: all cores)");
   return o;
+}
+
+// The labels of `y` (1-D) as indices into their distinct values, numbered in the order the values
+// first appear: (the row of each distinct value's first appearance, each row's index), or None
+// for a dtype handled elsewhere (floating point and others: the caller sorts the labels). Object
+// labels are one value when Python finds them equal (==, as numpy's unique does), looked up by
+// their hash; integer, boolean, bytes and text arrays are compared by their stored bytes. A None
+// or NaN label raises ValueError.
+py::object labelCodes(const py::array& y) {
+  if (y.ndim() != 1) throw py::value_error("expected a 1-D array of labels");
+  const char kind = y.dtype().kind();
+  const bool isObject = kind == 'O';
+  if (!isObject && kind != 'i' && kind != 'u' && kind != 'b' && kind != 'U' && kind != 'S')
+    return py::none();
+  const py::ssize_t n = y.shape(0);
+  const py::ssize_t stride = y.strides(0);
+  const auto itemsize = static_cast<std::size_t>(y.itemsize());
+  const char* base = static_cast<const char*>(y.data());
+  py::array_t<std::int64_t> codes(n);
+  std::int64_t* code = codes.mutable_data();
+  std::vector<std::int64_t> first;
+  if (isObject) {
+    std::unordered_multimap<Py_hash_t, std::int64_t> byHash;  // to the distinct value's index
+    std::vector<PyObject*> distinct;
+    PyObject* last = nullptr;
+    std::int64_t lastCode = -1;
+    for (py::ssize_t r = 0; r < n; ++r) {
+      PyObject* o = nullptr;
+      std::memcpy(&o, base + r * stride, sizeof o);
+      if (o != last) {
+        if (o == nullptr || o == Py_None || (PyFloat_Check(o) && std::isnan(PyFloat_AS_DOUBLE(o))))
+          throw py::value_error("y holds a missing label (None or NaN)");
+        const Py_hash_t h = PyObject_Hash(o);  // cached by str objects
+        if (h == -1) throw py::error_already_set();
+        lastCode = -1;
+        for (auto [at, end] = byHash.equal_range(h); at != end && lastCode < 0; ++at) {
+          // Identity first, then ==.
+          const int same =
+              PyObject_RichCompareBool(o, distinct[static_cast<std::size_t>(at->second)], Py_EQ);
+          if (same < 0) throw py::error_already_set();
+          if (same == 1) lastCode = at->second;
+        }
+        if (lastCode < 0) {
+          lastCode = static_cast<std::int64_t>(distinct.size());
+          distinct.push_back(o);
+          first.push_back(r);
+          byHash.emplace(h, lastCode);
+        }
+        last = o;
+      }
+      code[r] = lastCode;
+    }
+  } else {
+    std::unordered_map<std::string_view, std::int64_t> byValue;
+    std::string_view last;
+    std::int64_t lastCode = -1;
+    for (py::ssize_t r = 0; r < n; ++r) {
+      const std::string_view value(base + r * stride, itemsize);
+      if (lastCode < 0 || value != last) {
+        const auto [it, added] = byValue.emplace(value, static_cast<std::int64_t>(byValue.size()));
+        if (added) first.push_back(r);
+        last = value;
+        lastCode = it->second;
+      }
+      code[r] = lastCode;
+    }
+  }
+  return py::make_tuple(
+      py::array_t<std::int64_t>(static_cast<py::ssize_t>(first.size()), first.data()), codes);
 }
 
 // Fits on the rows of `x` (n x D float64, any layout) whose class indices are `codes` (n of them,
@@ -518,6 +591,7 @@ void bindLearning(py::module_& m) {
            })
       .def(py::pickle([](const Classifier& c) { return classifierState(c); },
                       [](const py::tuple& t) { return classifierFromState(t); }));
+  m.def("label_codes", &labelCodes, py::arg("y"));
   m.def("fit_classifier", &fitClassifier, py::arg("x"), py::arg("codes"), py::arg("class_names"),
         py::arg("options"));
 
