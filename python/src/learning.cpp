@@ -224,12 +224,19 @@ std::shared_ptr<Classifier> fitClassifier(
     labels[static_cast<std::size_t>(r)] = static_cast<int>(c[r]);
   }
   analysis::ClassifierFit fit;
-  runInterruptible([&](const ProgressFn& progress) {
+  const auto work = [&](const ProgressFn& progress) {
     const std::vector<Eigen::MatrixXd> samples =
         analysis::splitByClass(x.data(), n, x.shape(1), x.strides(0) / 8, x.strides(1) / 8,
                                labels.data(), classNames.size());
     fit = analysis::trainClassifier(samples, classNames, options, progress);
-  });
+  };
+  // One thread: every fit runs on this thread (parallelFor's calling thread) and reports after
+  // each EM iteration, so it is interrupted from here without a worker thread.
+  if (options.threads == 1) {
+    runInterruptibleHere(work);
+  } else {
+    runInterruptible(work);
+  }
   if (!fit.ok) throw py::value_error(fit.reason);
   auto out = std::make_shared<Classifier>();
   out->model = std::move(fit.model);
