@@ -5,6 +5,8 @@
 #include <pybind11/stl.h>
 #include <pybind11/stl/filesystem.h>
 
+#include <algorithm>
+#include <array>
 #include <cerrno>
 #include <cmath>
 #include <cstring>
@@ -155,47 +157,71 @@ py::object labelCodes(const py::array& y) {
   if (isObject) {
     std::unordered_multimap<Py_hash_t, std::int64_t> byHash;  // to the distinct value's index
     std::vector<PyObject*> distinct;
-    PyObject* last = nullptr;
-    std::int64_t lastCode = -1;
+    // The objects met most recently and their indices, looked up by address before hashing: a
+    // column of labels read from a file usually holds a few objects, each many times.
+    constexpr std::size_t kSeen = 16;
+    std::array<std::pair<PyObject*, std::int64_t>, kSeen> seen{};
+    std::size_t seenCount = 0;
+    std::size_t seenNext = 0;
     for (py::ssize_t r = 0; r < n; ++r) {
       PyObject* o = nullptr;
       std::memcpy(&o, base + r * stride, sizeof o);
-      if (o != last) {
-        if (o == nullptr || o == Py_None || (PyFloat_Check(o) && std::isnan(PyFloat_AS_DOUBLE(o))))
+      std::int64_t found = -1;
+      for (std::size_t i = 0; i < seenCount; ++i) {
+        if (seen[i].first == o) {
+          found = seen[i].second;
+          break;
+        }
+      }
+      if (found < 0) {
+        if (o == nullptr || o == Py_None ||
+            (PyFloat_Check(o) && std::isnan(PyFloat_AS_DOUBLE(o)))) {
           throw py::value_error("y holds a missing label (None or NaN)");
+        }
         const Py_hash_t h = PyObject_Hash(o);  // cached by str objects
         if (h == -1) throw py::error_already_set();
-        lastCode = -1;
-        for (auto [at, end] = byHash.equal_range(h); at != end && lastCode < 0; ++at) {
+        for (auto [at, end] = byHash.equal_range(h); at != end && found < 0; ++at) {
           // Identity first, then ==.
           const int same =
               PyObject_RichCompareBool(o, distinct[static_cast<std::size_t>(at->second)], Py_EQ);
           if (same < 0) throw py::error_already_set();
-          if (same == 1) lastCode = at->second;
+          if (same == 1) found = at->second;
         }
-        if (lastCode < 0) {
-          lastCode = static_cast<std::int64_t>(distinct.size());
+        if (found < 0) {
+          found = static_cast<std::int64_t>(distinct.size());
           distinct.push_back(o);
           first.push_back(r);
-          byHash.emplace(h, lastCode);
+          byHash.emplace(h, found);
         }
-        last = o;
+        seen[seenNext] = {o, found};
+        seenNext = (seenNext + 1) % kSeen;
+        seenCount = std::min(seenCount + 1, kSeen);
       }
-      code[r] = lastCode;
+      code[r] = found;
     }
   } else {
     std::unordered_map<std::string_view, std::int64_t> byValue;
-    std::string_view last;
-    std::int64_t lastCode = -1;
+    // The first distinct values, compared byte for byte before hashing (a few classes).
+    constexpr std::size_t kFew = 16;
+    std::vector<std::string_view> few;
     for (py::ssize_t r = 0; r < n; ++r) {
       const std::string_view value(base + r * stride, itemsize);
-      if (lastCode < 0 || value != last) {
-        const auto [it, added] = byValue.emplace(value, static_cast<std::int64_t>(byValue.size()));
-        if (added) first.push_back(r);
-        last = value;
-        lastCode = it->second;
+      std::int64_t found = -1;
+      for (std::size_t i = 0; i < few.size(); ++i) {
+        if (few[i] == value) {
+          found = static_cast<std::int64_t>(i);
+          break;
+        }
       }
-      code[r] = lastCode;
+      if (found < 0) {
+        const auto [it, added] = byValue.emplace(value, static_cast<std::int64_t>(byValue.size()));
+        if (added) {
+          first.push_back(r);
+          if (few.size() < kFew) few.push_back(value);
+        }
+        found = it->second;
+      }
+      code[r] = found;
     }
   }
   return py::make_tuple(

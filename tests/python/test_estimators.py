@@ -66,8 +66,10 @@ def _labels(values, dtype=None):
     _labels([True, False]),
     _labels([2.0, -1.0, 0.0]),
     np.repeat(_labels(["b", "c", "a"]), 2)[::2],  # strided
+    _labels(["c%d" % (29 - i) for i in range(30)], dtype=object),  # more than the core caches
+    _labels(["c%d" % (29 - i) for i in range(30)]),
 ], ids=["str", "new-str-objects", "unicode", "bytes", "int", "uint8", "bool", "float",
-        "strided"])
+        "strided", "30-str", "30-unicode"])
 def test_labels_are_numbered_in_scikit_learns_classes_order(y):
     # The core numbers the labels in the order they first appear; classes_ is numpy's sorted
     # unique (scikit-learn's), and each row's class index points at its own label: the training
