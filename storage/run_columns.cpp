@@ -359,9 +359,32 @@ bool readStepsPipelined(RunDatabase::Impl& impl, std::int64_t runId, const RunSh
 // that gets less of the machine (other processes) reads fewer of them.
 constexpr std::int64_t kRangeSteps = 16384;
 
+// Without the step: the rows come in step order, and each is taken as the next step, which its
+// checksum confirms (a missing row makes the rows after it fail theirs).
 constexpr char kRangeSql[] =
-    "SELECT step, x, y, theta, v, omega, blocked, sensors, extra, truth, crc FROM steps "
+    "SELECT x, y, theta, v, omega, blocked, sensors, extra, truth, crc FROM steps "
     "WHERE run_id = ?1 AND step >= ?2 AND step < ?3 ORDER BY step";
+
+// readRow for a row of kRangeSql taken as step `t`.
+std::int64_t readRangeRow(const db::Statement& s, const RunShape& shape, std::size_t t,
+                          StepRow& row) {
+  row.step = static_cast<std::int64_t>(t);
+  row.x = s.columnDouble(0);
+  row.y = s.columnDouble(1);
+  row.theta = s.columnDouble(2);
+  row.v = s.columnDouble(3);
+  row.omega = s.columnDouble(4);
+  row.blocked = s.columnInt(5);
+  row.sensors = s.columnBlob(6);
+  row.sensorBytes = s.columnBytes(6);
+  if (!shape.extraColumns.empty()) {
+    row.extra = s.columnBlob(7);
+    row.extraBytes = s.columnBytes(7);
+    if (row.extra == nullptr) row.extra = "";
+  }
+  if (shape.hasTruth) row.truth = s.columnInt(8);
+  return s.columnInt(9);
+}
 
 // The ranges shared by the two threads, and the x_ values of each range when they are kept.
 struct SharedRanges {
@@ -385,7 +408,7 @@ bool readRange(db::Statement& s, std::int64_t runId, const RunShape& shape, cons
   std::size_t t = first;
   bool sound = true;
   while (sound && s.step()) {
-    sound = t < last && confirmed(row, readRow(s, shape, row), t, n) &&
+    sound = t < last && confirmed(row, readRangeRow(s, shape, t, row), t, n) &&
             store(row, t, shape, out, out.sensorsZeroed) == Fault::None;
     ++t;
   }
