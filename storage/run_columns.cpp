@@ -360,10 +360,11 @@ bool readStepsPipelined(RunDatabase::Impl& impl, std::int64_t runId, const RunSh
 constexpr std::int64_t kRangeSteps = 16384;
 
 // Without the step: the rows come in step order, and each is taken as the next step, which its
-// checksum confirms (a missing row makes the rows after it fail theirs).
+// checksum confirms (a missing row makes the rows after it fail theirs). The range ends by a
+// count (LIMIT) rather than by comparing each row's key with its last step.
 constexpr char kRangeSql[] =
     "SELECT x, y, theta, v, omega, blocked, sensors, extra, truth, crc FROM steps "
-    "WHERE run_id = ?1 AND step >= ?2 AND step < ?3 ORDER BY step";
+    "WHERE run_id = ?1 AND step >= ?2 ORDER BY step LIMIT ?3";
 
 // readRow for a row of kRangeSql taken as step `t`.
 std::int64_t readRangeRow(const db::Statement& s, const RunShape& shape, std::size_t t,
@@ -401,7 +402,7 @@ bool readRange(db::Statement& s, std::int64_t runId, const RunShape& shape, cons
   const auto n = static_cast<std::size_t>(shape.steps);
   s.bind(1, runId)
       .bind(2, static_cast<std::int64_t>(first))
-      .bind(3, static_cast<std::int64_t>(last));
+      .bind(3, static_cast<std::int64_t>(last - first));
   StepRow row;
   row.runId = runId;
   row.hasTruth = shape.hasTruth;
