@@ -25,6 +25,9 @@ struct RunDatabase::Impl {
   std::optional<db::Access> fileAccess;
   int cacheKiB = 0;
   std::int64_t mmapBytes = 0;
+  // That second connection, opened by the first whole-run read of a long run and kept (its memory
+  // map stays in place from one read to the next); closed before `connection` (declared after it).
+  db::Connection secondReader;
   // Prepared statements reused across calls, keyed by the address of their SQL literal.
   std::unordered_map<const char*, db::Statement> statements;
   // Public calls running on this connection (one may call another).

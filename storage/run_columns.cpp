@@ -478,11 +478,13 @@ bool readStepsOnTwoConnections(RunDatabase::Impl& impl, std::int64_t runId, cons
     second = std::thread([&] {
       // A second connection that cannot be opened, or whose snapshot holds another version of
       // the run, reads nothing: this thread reads every range.
-      std::optional<db::Connection> c;
+      db::Connection* c = nullptr;
       try {
-        c = secondConnection(impl);
+        if (!impl.secondReader.isOpen()) impl.secondReader = secondConnection(impl);
+        c = &impl.secondReader;
         c->backend().beginSnapshot();
       } catch (const db::DbError&) {
+        impl.secondReader = db::Connection();
         return;
       }
       const SnapshotEnd end{*c};
