@@ -19,6 +19,15 @@ struct RunDatabase::Impl {
   bool readOnly = false;
   bool created = false;
   db::Connection connection;
+  // How a file's connection was opened, so that a whole-run read can open a second one the same
+  // way and step part of the run on another thread (run_columns.cpp): unset for a server or
+  // ":memory:". The page cache and memory map each connection asks for.
+  std::optional<db::Access> fileAccess;
+  int cacheKiB = 0;
+  std::int64_t mmapBytes = 0;
+  // That second connection, opened by the first whole-run read of a long run and kept (its memory
+  // map stays in place from one read to the next); closed before `connection` (declared after it).
+  db::Connection secondReader;
   // Prepared statements reused across calls, keyed by the address of their SQL literal.
   std::unordered_map<const char*, db::Statement> statements;
   // Public calls running on this connection (one may call another).

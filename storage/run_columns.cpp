@@ -16,6 +16,8 @@
 #include <deque>
 #include <memory>
 #include <mutex>
+#include <optional>
+#include <system_error>
 #include <thread>
 
 #include "storage/database_impl.h"
@@ -48,6 +50,7 @@ RunShape readShape(RunDatabase::Impl& impl, std::int64_t runId) {
   shape.steps = s.columnInt(0);
   shape.hasTruth = s.columnInt(1) != 0;
   shape.name = s.columnText(4);
+  shape.checksum = s.columnIsNull(5) ? 0 : s.columnInt(5);
   if (s.columnIsNull(5) ||
       s.columnInt(5) != runChecksum(runId, shape.name, shape.steps, shape.hasTruth, s.columnBlob(2),
                                     s.columnBytes(2), s.columnBlob(3), s.columnBytes(3))) {
@@ -343,6 +346,169 @@ bool readStepsPipelined(RunDatabase::Impl& impl, std::int64_t runId, const RunSh
   return !failed && t == n && checked == n;
 }
 
+// ---- A long run of an SQLite file, on two connections ----
+//
+// SQLite lets any number of connections read one file at once, each from its own snapshot. This
+// thread and a second one each step ranges of the run's steps on their own connection, checking
+// and storing every row themselves: the rows' SQLite walk, checksums and decoding are all split
+// between two cores. Both connections read inside one read transaction each; the second one reads
+// only when the run's row it sees is the one this thread's snapshot holds (same step count and
+// checksum), and leaves every range to this thread otherwise.
+
+// Steps per range. The ranges are handed out in order as the threads ask for them, so a thread
+// that gets less of the machine (other processes) reads fewer of them.
+constexpr std::int64_t kRangeSteps = 16384;
+
+// Without the step: the rows come in step order, and each is taken as the next step, which its
+// checksum confirms (a missing row makes the rows after it fail theirs). The range ends by a
+// count (LIMIT) rather than by comparing each row's key with its last step.
+constexpr char kRangeSql[] =
+    "SELECT x, y, theta, v, omega, blocked, sensors, extra, truth, crc FROM steps "
+    "WHERE run_id = ?1 AND step >= ?2 ORDER BY step LIMIT ?3";
+
+// readRow for a row of kRangeSql taken as step `t`.
+std::int64_t readRangeRow(const db::Statement& s, const RunShape& shape, std::size_t t,
+                          StepRow& row) {
+  row.step = static_cast<std::int64_t>(t);
+  row.x = s.columnDouble(0);
+  row.y = s.columnDouble(1);
+  row.theta = s.columnDouble(2);
+  row.v = s.columnDouble(3);
+  row.omega = s.columnDouble(4);
+  row.blocked = s.columnInt(5);
+  row.sensors = s.columnBlob(6);
+  row.sensorBytes = s.columnBytes(6);
+  if (!shape.extraColumns.empty()) {
+    row.extra = s.columnBlob(7);
+    row.extraBytes = s.columnBytes(7);
+    if (row.extra == nullptr) row.extra = "";
+  }
+  if (shape.hasTruth) row.truth = s.columnInt(8);
+  return s.columnInt(9);
+}
+
+// The ranges shared by the two threads, and the x_ values of each range when they are kept.
+struct SharedRanges {
+  std::size_t count = 0;
+  std::atomic<std::size_t> next{0};
+  std::atomic<bool> failed{false};
+  std::vector<std::vector<std::string>> extraValues;  // one per range, or none
+};
+
+// The steps [first, last) into their targets; false when some row is not the usual sound one or
+// is missing.
+bool readRange(db::Statement& s, std::int64_t runId, const RunShape& shape, const RunColumns& out,
+               std::size_t first, std::size_t last) {
+  const auto n = static_cast<std::size_t>(shape.steps);
+  s.bind(1, runId)
+      .bind(2, static_cast<std::int64_t>(first))
+      .bind(3, static_cast<std::int64_t>(last - first));
+  StepRow row;
+  row.runId = runId;
+  row.hasTruth = shape.hasTruth;
+  std::size_t t = first;
+  bool sound = true;
+  while (sound && s.step()) {
+    sound = t < last && confirmed(row, readRangeRow(s, shape, t, row), t, n) &&
+            store(row, t, shape, out, out.sensorsZeroed) == Fault::None;
+    ++t;
+  }
+  s.reset();
+  return sound && t == last;
+}
+
+// Takes ranges off `shared` and reads them on `connection` until none is left or one fails (then
+// `shared.failed` is set, and the other thread stops at its next range).
+void readRanges(db::Connection& connection, std::int64_t runId, const RunShape& shape,
+                const RunColumns& out, SharedRanges& shared) {
+  try {
+    db::Statement s(connection, kRangeSql);
+    RunColumns mine = out;
+    const auto n = static_cast<std::size_t>(shape.steps);
+    while (!shared.failed.load(std::memory_order_relaxed)) {
+      const std::size_t r = shared.next.fetch_add(1, std::memory_order_relaxed);
+      if (r >= shared.count) return;
+      if (!shared.extraValues.empty()) mine.extraValues = &shared.extraValues[r];
+      const std::size_t first = r * static_cast<std::size_t>(kRangeSteps);
+      const std::size_t last = std::min(n, first + static_cast<std::size_t>(kRangeSteps));
+      if (!readRange(s, runId, shape, mine, first, last)) shared.failed = true;
+    }
+  } catch (...) {  // a statement that failed, no memory for x_ values: the one-thread read says
+    shared.failed = true;
+  }
+}
+
+// Ends a read transaction opened with beginSnapshot.
+struct SnapshotEnd {
+  db::Connection& connection;
+  ~SnapshotEnd() { connection.backend().endSnapshot(); }
+};
+
+// A second connection on the database's file, opened as the first was. Throws DbError.
+db::Connection secondConnection(const RunDatabase::Impl& impl) {
+  db::Connection c = db::Connection::open(impl.path, false, *impl.fileAccess);
+  if (*impl.fileAccess == db::Access::ReadWrite) c.exec("PRAGMA query_only = ON");
+  c.exec("PRAGMA cache_size = -" + std::to_string(impl.cacheKiB));
+  c.exec("PRAGMA mmap_size = " + std::to_string(impl.mmapBytes));
+  return c;
+}
+
+// Whether the run's row in the connection's snapshot is the one `shape` was read from.
+bool sameRunRow(db::Connection& connection, std::int64_t runId, const RunShape& shape) {
+  db::Statement s(connection, "SELECT step_count, crc FROM runs WHERE id = ?");
+  s.bind(1, runId);
+  const bool same = s.step() && !s.columnIsNull(1) && s.columnInt(0) == shape.steps &&
+                    s.columnInt(1) == shape.checksum;
+  s.reset();
+  return same;
+}
+
+// Every row, on this thread (the main connection, inside its read transaction) and a second one.
+// False when some row is not the usual sound one or a statement failed: the caller then reads
+// again on one thread for the exact error.
+bool readStepsOnTwoConnections(RunDatabase::Impl& impl, std::int64_t runId, const RunShape& shape,
+                               const RunColumns& out) {
+  const auto n = static_cast<std::size_t>(shape.steps);
+  SharedRanges shared;
+  shared.count = (n + kRangeSteps - 1) / kRangeSteps;
+  const bool keepExtra = out.extraValues != nullptr && !shape.extraColumns.empty();
+  if (keepExtra) shared.extraValues.resize(shared.count);
+  std::thread second;
+  try {
+    second = std::thread([&] {
+      // A second connection that cannot be opened, or whose snapshot holds another version of
+      // the run, reads nothing: this thread reads every range.
+      db::Connection* c = nullptr;
+      try {
+        if (!impl.secondReader.isOpen()) impl.secondReader = secondConnection(impl);
+        c = &impl.secondReader;
+        c->backend().beginSnapshot();
+      } catch (...) {  // nothing may leave this thread
+        impl.secondReader = db::Connection();
+        return;
+      }
+      const SnapshotEnd end{*c};
+      bool same = false;
+      try {
+        same = sameRunRow(*c, runId, shape);
+      } catch (...) {
+      }
+      if (same) readRanges(*c, runId, shape, out, shared);
+    });
+  } catch (const std::system_error&) {  // no thread: this one reads every range
+  }
+  readRanges(impl.connection, runId, shape, out, shared);
+  if (second.joinable()) second.join();
+  if (shared.failed) return false;
+  if (keepExtra) {
+    for (std::vector<std::string>& values : shared.extraValues) {
+      out.extraValues->insert(out.extraValues->end(), std::make_move_iterator(values.begin()),
+                              std::make_move_iterator(values.end()));
+    }
+  }
+  return true;
+}
+
 // Sizes a column for a whole run. On Linux a long column's pages are first asked to be huge
 // ones: filling a 1,000,000-step run's 704 MB of sensor values then takes a few hundred page
 // faults instead of about 170,000.
@@ -364,14 +530,31 @@ void sizeColumn(std::vector<T>& column, std::size_t n) {
 
 }  // namespace
 
-// Rows below this many are read on this thread alone: a second thread would not pay for itself.
+// Runs shorter than this are read on this thread alone: a second thread would not pay for itself.
 constexpr std::int64_t kPipelinedSteps = 50000;
 
 void readRunColumns(RunDatabase::Impl& impl, std::int64_t runId,
                     const std::function<RunColumns(const RunShape&)>& layout) {
+  // An SQLite file read outside any transaction (a second connection would not see what an open
+  // one wrote): the run's row and its steps from one snapshot, a long run on two connections.
+  const bool twoThreads = std::thread::hardware_concurrency() >= 2;
+  if (impl.fileAccess && !impl.connection.inTransaction()) {
+    impl.connection.backend().beginSnapshot();
+    const SnapshotEnd end{impl.connection};
+    const RunShape shape = readShape(impl, runId);
+    RunColumns out = layout(shape);
+    if (shape.steps >= kPipelinedSteps && twoThreads) {
+      const std::size_t extraBefore = out.extraValues != nullptr ? out.extraValues->size() : 0;
+      if (readStepsOnTwoConnections(impl, runId, shape, out)) return;
+      if (out.extraValues != nullptr) out.extraValues->resize(extraBefore);
+      out.sensorsZeroed = false;
+    }
+    readSteps(impl, runId, shape, out);
+    return;
+  }
   const RunShape shape = readShape(impl, runId);
   RunColumns out = layout(shape);
-  if (shape.steps >= kPipelinedSteps && std::thread::hardware_concurrency() >= 2) {
+  if (shape.steps >= kPipelinedSteps && twoThreads) {
     const std::size_t extraBefore = out.extraValues != nullptr ? out.extraValues->size() : 0;
     if (readStepsPipelined(impl, runId, shape, out)) return;
     // Some row is not sound: read again on this thread, which stops at it with its error.

@@ -1,8 +1,10 @@
 // Internal: a whole run's steps read straight into columns laid out by the caller
 // (docs/storage.md#reading); RunDatabase::loadRun is this into RunData's columns. One pass over the
 // steps rows with one reused statement, each row checked against its checksum and its sensors blob
-// decoded in place, with no allocation per step; a long run's rows are checked and decoded on a
-// second thread while this one walks them.
+// decoded in place, with no allocation per step. A long run of an SQLite file is read on two
+// threads, each with its own connection stepping ranges of the steps; elsewhere (a server, a
+// database in memory) its rows are checked and decoded on a second thread while this one walks
+// them.
 #pragma once
 
 #include <cstddef>
@@ -24,6 +26,7 @@ struct RunShape {
   bool hasTruth = false;
   std::vector<std::pair<std::string, std::string>> metadata;
   std::vector<std::string> extraColumns;  // x_ column names
+  std::int64_t checksum = 0;              // the run row's stored checksum
 };
 
 // One value per step: step t's value goes to data[t * stride].

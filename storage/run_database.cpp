@@ -297,6 +297,8 @@ Result<std::unique_ptr<RunDatabase>> RunDatabase::openFile(const std::filesystem
     auto impl = std::make_unique<Impl>();
     impl->path = inMemory ? std::filesystem::path(":memory:") : path;
     impl->readOnly = mode == OpenMode::ReadOnly && !inMemory;
+    impl->cacheKiB = options.cacheKiB;
+    impl->mmapBytes = options.mmapBytes;
     if (!inMemory) {
       if (const auto what = db::notRegularFile(path)) {
         return R(Error(name, "is " + *what + ", not a database file; left unchanged"));
@@ -352,13 +354,10 @@ Result<std::unique_ptr<RunDatabase>> RunDatabase::openFile(const std::filesystem
       std::error_code existsError;
       const bool logFiles = std::filesystem::exists(name + "-wal", existsError) ||
                             std::filesystem::exists(name + "-shm", existsError);
-      if (mayWrite) {
-        impl->connection = db::Connection::open(impl->path, false, db::Access::ReadWrite);
-        impl->connection.exec("PRAGMA query_only = ON");
-      } else {
-        impl->connection = db::Connection::open(
-            impl->path, false, logFiles ? db::Access::ReadOnly : db::Access::Immutable);
-      }
+      impl->fileAccess = mayWrite ? db::Access::ReadWrite
+                                  : (logFiles ? db::Access::ReadOnly : db::Access::Immutable);
+      impl->connection = db::Connection::open(impl->path, false, *impl->fileAccess);
+      if (mayWrite) impl->connection.exec("PRAGMA query_only = ON");
       try {
         checkIdentity(impl->connection, name, false);
       } catch (const db::DbError& e) {
@@ -375,7 +374,8 @@ Result<std::unique_ptr<RunDatabase>> RunDatabase::openFile(const std::filesystem
                          "write-ahead log " +
                              name + "-wal holds changes (" + e.what() + ")"));
         }
-        impl->connection = db::Connection::open(impl->path, false, db::Access::Immutable);
+        impl->fileAccess = db::Access::Immutable;
+        impl->connection = db::Connection::open(impl->path, false, *impl->fileAccess);
         checkIdentity(impl->connection, name, false);
       }
       db::Connection& c = impl->connection;
@@ -405,6 +405,7 @@ Result<std::unique_ptr<RunDatabase>> RunDatabase::openFile(const std::filesystem
       return R(std::unique_ptr<RunDatabase>(new RunDatabase(std::move(impl))));
     }
     impl->connection = db::Connection::open(impl->path, mode == OpenMode::Create);
+    if (!inMemory) impl->fileAccess = db::Access::ReadWrite;
     db::Connection& c = impl->connection;
     if (!inMemory) checkIdentity(c, name, mode == OpenMode::Create);
     const bool fresh = c.queryInt("PRAGMA user_version") == 0 &&

@@ -40,6 +40,13 @@ SensorGroup parseGroup(const std::string& name);
 // exception in `work` is rethrown here.
 void runInterruptible(const std::function<void(const ProgressFn&)>& work);
 
+// The same for work that calls `progress` on the calling thread often (a one-thread fit, after
+// every EM iteration): `work` runs here with the GIL released, no thread is started, and the
+// progress callback itself takes the GIL to let Python handle signals, at most every 50 ms and
+// only when called on this thread. Handing work to a thread and back costs a few milliseconds
+// on a loaded machine (each thread waits its turn for a core).
+void runInterruptibleHere(const std::function<void(const ProgressFn&)>& work);
+
 // An open database: one Workspace (one connection), used from one thread at a time. Python holds
 // the GIL around every call except the long ones, which hold `busy` instead.
 struct Database {

@@ -5,8 +5,14 @@
 #include <pybind11/stl.h>
 #include <pybind11/stl/filesystem.h>
 
+#include <algorithm>
+#include <array>
 #include <cerrno>
+#include <cmath>
+#include <cstring>
 #include <filesystem>
+#include <string_view>
+#include <unordered_map>
 
 #include "analysis/classifier.h"
 #include "analysis/classify_run.h"
@@ -129,6 +135,99 @@ ClassifierOptions classifierOptions(const std::string& method, int components,
   return o;
 }
 
+// The labels of `y` (1-D) as indices into their distinct values, numbered in the order the values
+// first appear: (the row of each distinct value's first appearance, each row's index), or None
+// for a dtype handled elsewhere (floating point and others: the caller sorts the labels). Object
+// labels are one value when Python finds them equal (==, as numpy's unique does), looked up by
+// their hash; integer, boolean, bytes and text arrays are compared by their stored bytes. A None
+// or NaN label raises ValueError.
+py::object labelCodes(const py::array& y) {
+  if (y.ndim() != 1) throw py::value_error("expected a 1-D array of labels");
+  const char kind = y.dtype().kind();
+  const bool isObject = kind == 'O';
+  if (!isObject && kind != 'i' && kind != 'u' && kind != 'b' && kind != 'U' && kind != 'S')
+    return py::none();
+  const py::ssize_t n = y.shape(0);
+  const py::ssize_t stride = y.strides(0);
+  const auto itemsize = static_cast<std::size_t>(y.itemsize());
+  const char* base = static_cast<const char*>(y.data());
+  py::array_t<std::int64_t> codes(n);
+  std::int64_t* code = codes.mutable_data();
+  std::vector<std::int64_t> first;
+  if (isObject) {
+    std::unordered_multimap<Py_hash_t, std::int64_t> byHash;  // to the distinct value's index
+    std::vector<PyObject*> distinct;
+    // The objects met most recently and their indices, looked up by address before hashing: a
+    // column of labels read from a file usually holds a few objects, each many times.
+    constexpr std::size_t kSeen = 16;
+    std::array<std::pair<PyObject*, std::int64_t>, kSeen> seen{};
+    std::size_t seenCount = 0;
+    std::size_t seenNext = 0;
+    for (py::ssize_t r = 0; r < n; ++r) {
+      PyObject* o = nullptr;
+      std::memcpy(&o, base + r * stride, sizeof o);
+      std::int64_t found = -1;
+      for (std::size_t i = 0; i < seenCount; ++i) {
+        if (seen[i].first == o) {
+          found = seen[i].second;
+          break;
+        }
+      }
+      if (found < 0) {
+        if (o == nullptr || o == Py_None ||
+            (PyFloat_Check(o) && std::isnan(PyFloat_AS_DOUBLE(o)))) {
+          throw py::value_error("y holds a missing label (None or NaN)");
+        }
+        const Py_hash_t h = PyObject_Hash(o);  // cached by str objects
+        if (h == -1) throw py::error_already_set();
+        for (auto [at, end] = byHash.equal_range(h); at != end && found < 0; ++at) {
+          // Identity first, then ==.
+          const int same =
+              PyObject_RichCompareBool(o, distinct[static_cast<std::size_t>(at->second)], Py_EQ);
+          if (same < 0) throw py::error_already_set();
+          if (same == 1) found = at->second;
+        }
+        if (found < 0) {
+          found = static_cast<std::int64_t>(distinct.size());
+          distinct.push_back(o);
+          first.push_back(r);
+          byHash.emplace(h, found);
+        }
+        seen[seenNext] = {o, found};
+        seenNext = (seenNext + 1) % kSeen;
+        seenCount = std::min(seenCount + 1, kSeen);
+      }
+      code[r] = found;
+    }
+  } else {
+    std::unordered_map<std::string_view, std::int64_t> byValue;
+    // The first distinct values, compared byte for byte before hashing (a few classes).
+    constexpr std::size_t kFew = 16;
+    std::vector<std::string_view> few;
+    for (py::ssize_t r = 0; r < n; ++r) {
+      const std::string_view value(base + r * stride, itemsize);
+      std::int64_t found = -1;
+      for (std::size_t i = 0; i < few.size(); ++i) {
+        if (few[i] == value) {
+          found = static_cast<std::int64_t>(i);
+          break;
+        }
+      }
+      if (found < 0) {
+        const auto [it, added] = byValue.emplace(value, static_cast<std::int64_t>(byValue.size()));
+        if (added) {
+          first.push_back(r);
+          if (few.size() < kFew) few.push_back(value);
+        }
+        found = it->second;
+      }
+      code[r] = found;
+    }
+  }
+  return py::make_tuple(
+      py::array_t<std::int64_t>(static_cast<py::ssize_t>(first.size()), first.data()), codes);
+}
+
 // Fits on the rows of `x` (n x D float64, any layout) whose class indices are `codes` (n of them,
 // into `classNames`): split by class with the core's splitByClass, as `tactile fit` does, and
 // trained, both with the GIL released.
@@ -151,12 +250,19 @@ std::shared_ptr<Classifier> fitClassifier(
     labels[static_cast<std::size_t>(r)] = static_cast<int>(c[r]);
   }
   analysis::ClassifierFit fit;
-  runInterruptible([&](const ProgressFn& progress) {
+  const auto work = [&](const ProgressFn& progress) {
     const std::vector<Eigen::MatrixXd> samples =
         analysis::splitByClass(x.data(), n, x.shape(1), x.strides(0) / 8, x.strides(1) / 8,
                                labels.data(), classNames.size());
     fit = analysis::trainClassifier(samples, classNames, options, progress);
-  });
+  };
+  // One thread: every fit runs on this thread (parallelFor's calling thread) and reports after
+  // each EM iteration, so it is interrupted from here without a worker thread.
+  if (options.threads == 1) {
+    runInterruptibleHere(work);
+  } else {
+    runInterruptible(work);
+  }
   if (!fit.ok) throw py::value_error(fit.reason);
   auto out = std::make_shared<Classifier>();
   out->model = std::move(fit.model);
@@ -518,6 +624,7 @@ void bindLearning(py::module_& m) {
            })
       .def(py::pickle([](const Classifier& c) { return classifierState(c); },
                       [](const py::tuple& t) { return classifierFromState(t); }));
+  m.def("label_codes", &labelCodes, py::arg("y"));
   m.def("fit_classifier", &fitClassifier, py::arg("x"), py::arg("codes"), py::arg("class_names"),
         py::arg("options"));
 

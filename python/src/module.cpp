@@ -5,6 +5,7 @@
 #include <cerrno>
 #include <chrono>
 #include <condition_variable>
+#include <exception>
 #include <mutex>
 #include <thread>
 
@@ -73,6 +74,34 @@ void runInterruptible(const std::function<void(const ProgressFn&)>& work) {
     }
     lock.unlock();
     worker.join();
+  }
+  if (interrupted) throw py::error_already_set();
+  if (failure) std::rethrow_exception(failure);
+}
+
+void runInterruptibleHere(const std::function<void(const ProgressFn&)>& work) {
+  std::atomic<bool> interrupted{false};
+  const std::thread::id caller = std::this_thread::get_id();
+  auto lastCheck = std::chrono::steady_clock::now();
+  const ProgressFn progress = [&](std::size_t, std::size_t) {
+    if (interrupted) return false;
+    if (std::this_thread::get_id() != caller) return true;
+    const auto now = std::chrono::steady_clock::now();
+    if (now - lastCheck < std::chrono::milliseconds(50)) return true;
+    lastCheck = now;
+    const py::gil_scoped_acquire acquire;
+    // Runs Python's signal handlers; Ctrl+C leaves KeyboardInterrupt set on this thread.
+    if (PyErr_CheckSignals() != 0) interrupted = true;
+    return !interrupted;
+  };
+  std::exception_ptr failure;
+  {
+    const py::gil_scoped_release release;
+    try {
+      work(progress);
+    } catch (...) {
+      failure = std::current_exception();
+    }
   }
   if (interrupted) throw py::error_already_set();
   if (failure) std::rethrow_exception(failure);

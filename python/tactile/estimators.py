@@ -8,6 +8,7 @@ import numbers
 import numpy as np
 from sklearn.base import BaseEstimator, ClassifierMixin
 from sklearn.utils.multiclass import check_classification_targets
+from sklearn.utils import assert_all_finite, check_consistent_length, column_or_1d
 from sklearn.utils.validation import check_is_fitted
 
 from . import _core
@@ -38,16 +39,15 @@ def _jobs(n_jobs):
 
 
 def _classes(y):
-    """The sorted classes of y and each row's index into them (pandas' hashing is several times
-    faster than numpy's sort for text labels)."""
-    try:
-        import pandas
-    except ImportError:
+    """The sorted classes of y (scikit-learn's classes_, numpy's unique) and each row's index
+    into them. The core numbers the labels in one pass (by hash for objects, by value otherwise),
+    and only the distinct ones are sorted; floating-point labels are sorted whole by numpy."""
+    found = _core.label_codes(y)
+    if found is None:
         return np.unique(y, return_inverse=True)
-    codes, classes = pandas.factorize(y, sort=True)
-    if len(codes) and codes.min() < 0:  # pandas leaves None and NaN out of the classes
-        raise ValueError("y holds a missing label (None or NaN)")
-    return np.asarray(classes, dtype=y.dtype), codes
+    first, codes = found
+    classes, order = np.unique(y[first], return_inverse=True)
+    return classes, order[codes]
 
 
 class _CoreClassifier(ClassifierMixin, BaseEstimator):
@@ -58,9 +58,19 @@ class _CoreClassifier(ClassifierMixin, BaseEstimator):
 
     def fit(self, X, y):
         """Fits one model per class of y on that class's rows of X."""
+        if y is None:
+            self._validate_data(X, y)  # scikit-learn's error for an estimator that needs y
         # X as given when it is float64 already (C or Fortran order): the core splits its rows by
         # class in one pass, as `tactile fit` does.
-        X, y = self._validate_data(X, y, dtype=np.float64)
+        X = self._validate_data(X, dtype=np.float64)
+        # y as scikit-learn's check_X_y takes it, but without its pass over object labels looking
+        # for NaN: the core's numbering of the labels refuses None and NaN.
+        y = column_or_1d(y, warn=True)
+        check_consistent_length(X, y)
+        if y.dtype.kind == "c":
+            raise ValueError("Complex data not supported\n{}\n".format(y))
+        if y.dtype.kind == "f":
+            assert_all_finite(y, input_name="y")
         self.classes_, codes = _classes(y)
         # scikit-learn's target check on the distinct labels: the same verdict (and error) as on
         # every label, without sorting them all again.

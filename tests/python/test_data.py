@@ -6,6 +6,7 @@ import pandas as pd
 import pytest
 
 import tactile
+from conftest import run_cli
 
 
 def read_run_file(path):
@@ -43,6 +44,30 @@ def test_run_arrays_equal_the_run_file(demo):
     # Views into the loaded run, not copies, and read-only.
     assert not run.normal.flags.writeable
     assert run.normal.base is not None
+
+
+def test_a_long_run_read_on_two_threads_equals_its_file(cli, tmp_path):
+    """A run long enough to be read on two connections, each stepping ranges of its steps (from
+    50,000 steps), and of a length that is no multiple of those ranges: its arrays equal the run
+    file's, through a read-write and a read-only opening."""
+    run_cli(cli, "bench", "storage", "--steps", "100", "--files", "1", "--big-steps", "60001",
+            "--repeats", "1", "--dir", str(tmp_path), "--keep", "--no-compare", "--json")
+    table, _ = read_run_file(tmp_path / "big.csv")
+    assert len(table) == 60001
+    normal = table[["n%d" % i for i in range(44)]].to_numpy()
+    shear = table[["s%d" % i for i in range(44)]].to_numpy()
+    truth = table[["truth_" + g for g in tactile.GROUPS]].to_numpy()
+    for read_only in (False, True):
+        db = tactile.open(tmp_path / "bench.db", read_only=read_only)
+        run = db.run("big")
+        assert run.steps == 60001
+        np.testing.assert_array_equal(run.normal, normal)
+        np.testing.assert_array_equal(run.shear, shear)
+        np.testing.assert_array_equal(run.pose, table[["x", "y", "theta"]].to_numpy())
+        np.testing.assert_array_equal(run.command, table[["v", "omega"]].to_numpy())
+        np.testing.assert_array_equal(run.blocked, table["blocked"].to_numpy() != 0)
+        np.testing.assert_array_equal(np.array(tactile.CLASSES)[run.truth], truth)
+        db.close()
 
 
 def test_runs_lists_every_run(demo):

@@ -50,6 +50,46 @@ def test_target_checks_keep_scikit_learns_errors():
         tactile.GmmClassifier().fit(X, np.array(["a", None] * 10, dtype=object))
 
 
+def _labels(values, dtype=None):
+    """100 labels cycling through values, shuffled: none of them first in sorted order."""
+    y = np.array(list(values) * (100 // len(values) + 1), dtype=dtype)[:100]
+    return y[np.random.RandomState(3).permutation(100)]
+
+
+@pytest.mark.parametrize("y", [
+    _labels(["wall", "corner", "none", "dead"], dtype=object),
+    np.array([str(v) for v in _labels(["wall", "corner", "none"])], dtype=object),  # new objects
+    _labels(["wall", "corner", "none"]),  # fixed-width text
+    _labels([b"wall", b"corner"]),
+    _labels([7, -2, 11, 3]),
+    _labels([200, 3, 17], dtype=np.uint8),
+    _labels([True, False]),
+    _labels([2.0, -1.0, 0.0]),
+    np.repeat(_labels(["b", "c", "a"]), 2)[::2],  # strided
+    _labels(["c%d" % (29 - i) for i in range(30)], dtype=object),  # more than the core caches
+    _labels(["c%d" % (29 - i) for i in range(30)]),
+], ids=["str", "new-str-objects", "unicode", "bytes", "int", "uint8", "bool", "float",
+        "strided", "30-str", "30-unicode"])
+def test_labels_are_numbered_in_scikit_learns_classes_order(y):
+    # The core numbers the labels in the order they first appear; classes_ is numpy's sorted
+    # unique (scikit-learn's), and each row's class index points at its own label: the training
+    # rows, one well separated cluster per class, are predicted as their own labels.
+    classes, codes = np.unique(y, return_inverse=True)
+    X = np.random.RandomState(1).randn(len(y), 2) * 0.1 + codes[:, None] * 10.0
+    clf = tactile.GaussianClassifier().fit(X, y)
+    assert clf.classes_.dtype == classes.dtype
+    np.testing.assert_array_equal(clf.classes_, classes)
+    np.testing.assert_array_equal(clf.predict(X), y)
+
+
+def test_nan_labels_are_refused():
+    X = np.random.RandomState(0).randn(20, 3)
+    with pytest.raises(ValueError, match="missing label"):
+        tactile.GmmClassifier().fit(X, np.array(["a", float("nan")] * 10, dtype=object))
+    with pytest.raises(ValueError, match="NaN"):
+        tactile.GmmClassifier().fit(X, np.array([1.0, np.nan] * 10))
+
+
 def test_fit_takes_any_layout_of_x():
     X, y = load_iris(return_X_y=True)
     a = tactile.GmmClassifier(n_components=2).fit(np.ascontiguousarray(X), y)

@@ -1,7 +1,11 @@
-// Whole-run reads (storage/run_columns.h): a long run is read with its rows checked and decoded on
-// a second thread; it reads back bit for bit, and a damaged row gives the same error as reading the
-// same rows as a window (the row-by-row path).
+// Whole-run reads (storage/run_columns.h): a long run of a file is read on two connections, each
+// stepping ranges of its steps on its own thread; it reads back bit for bit, also while another
+// connection writes, and a damaged row gives the same error as reading the same rows as a window
+// (the row-by-row path).
 #include <sqlite3.h>
+
+#include <atomic>
+#include <thread>
 
 #include "storage/step_checksum.h"
 #include "storage_test_util.h"
@@ -13,7 +17,8 @@ using test::makeRun;
 using test::TempDir;
 namespace fs = std::filesystem;
 
-// Long enough for the two-thread read (kPipelinedSteps in run_columns.cpp is 50,000).
+// Long enough for the two-thread read (kPipelinedSteps in run_columns.cpp is 50,000), and no
+// multiple of the ranges the two connections share (kRangeSteps, 16,384): the last one is short.
 constexpr std::size_t kLongRun = 60000;
 
 // A long run with some dense sensor rows (every value non-zero) among the sparse ones.
@@ -60,6 +65,44 @@ TEST(WholeRunRead, LongRunsReadBackBitForBit) {
     EXPECT_EQ(loaded->hasTruth(), variant != 1);
     EXPECT_EQ(loaded->extraValues.size(), variant == 2 ? 2 * kLongRun : 0u);
   }
+}
+
+// A long run read through a read-only opening of the file while the writer imports other runs,
+// then through the writer's own connection: every read has the run's values bit for bit (each of
+// the two connections reads its ranges from a snapshot holding the run as it was imported).
+TEST(WholeRunRead, ALongRunReadsBackWhileAnotherConnectionWrites) {
+  TempDir dir;
+  const fs::path path = dir / "runs.db";
+  auto writer = test::openDb(path);
+  ASSERT_NE(writer, nullptr);
+  const RunData run = longRun(true, true, 31);
+  ASSERT_EQ(writer->runs().importRun(run, "long").status, ImportStatus::Imported);
+  const std::int64_t id = writer->runs().find("long")->id;
+  auto reader = openReadOnly(path);
+  ASSERT_NE(reader, nullptr);
+  std::atomic<bool> stop{false};
+  std::atomic<int> imported{0};
+  std::thread imports([&] {
+    for (unsigned i = 0; !stop; ++i) {
+      if (writer->runs()
+              .importRun(makeRun(300, true, 100 + i), "short" + std::to_string(i))
+              .status == ImportStatus::Imported) {
+        ++imported;
+      }
+    }
+  });
+  for (int i = 0; i < 3; ++i) {
+    auto loaded = reader->runs().load(id);
+    EXPECT_TRUE(loaded.ok()) << loaded.errorText();
+    if (loaded.ok()) test::expectSameRun(loaded.value(), run);
+  }
+  stop = true;
+  imports.join();
+  EXPECT_GT(imported.load(), 0);
+  auto loaded = writer->runs().load(id);
+  ASSERT_TRUE(loaded.ok()) << loaded.errorText();
+  test::expectSameRun(loaded.value(), run);
+  EXPECT_EQ(loaded->extraValues.size(), 2 * kLongRun);
 }
 
 // Each damage, made to step 41234 of a long run: loadRun fails with loadWindow's error for the
