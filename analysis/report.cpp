@@ -703,7 +703,7 @@ std::string modelReport(const ModelBundle& bundle, TableStyle style, std::size_t
     // The order asked for (components dropped for lack of mass are in "dropped"); models without
     // their settings show the most components any class kept.
     int order = 0;
-    for (int c = 0; c < m.classifier.classCount(); ++c)
+    for (int c = 0; c < m.classifier.classCount() && m.classifier.trees() == nullptr; ++c)
       order = std::max(order, static_cast<int>(m.classifier.model(c).weights().size()));
     if (m.classifier.method() == ClassifierMethod::Gmm && !e.fit.empty())
       order = std::max(order, m.provenance.classifier.gmm.components);
