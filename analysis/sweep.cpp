@@ -2,10 +2,14 @@
 
 #include <algorithm>
 #include <atomic>
+#include <charconv>
 #include <chrono>
+#include <cmath>
+#include <cstdio>
 #include <map>
 #include <mutex>
 #include <numeric>
+#include <stdexcept>
 #include <thread>
 
 #include "analysis/training.h"
@@ -46,13 +50,6 @@ std::vector<SensorGroup> groupsOf(const SweepGrid& grid) {
 
 int dataKey(SensorGroup g, FeatureKind f) {
   return groupIndex(g) * 8 + static_cast<int>(f);
-}
-
-// Rough cost of a cell, to start the expensive ones first (the result does not depend on it).
-double cellCost(const SweepCell& cell, std::size_t rows, int dim) {
-  const double k = cell.method == ClassifierMethod::Gaussian ? 1.0 : cell.order;
-  const double perComponent = isDiagonal(cell.form) ? dim : static_cast<double>(dim) * dim;
-  return static_cast<double>(rows) * k * perComponent;
 }
 
 // Fits the classifier of `cells` (cells equal but for the decision) once and scores each decision.
@@ -174,20 +171,64 @@ std::vector<SweepCell> expandGrid(const SweepGrid& grid) {
   return cells;
 }
 
-SweepResult runSweep(const std::vector<LabelledRun>& train, const std::vector<LabelledRun>& test,
-                     const SweepGrid& grid, const SweepOptions& options,
-                     const ProgressFn& progress) {
-  const auto wallStart = Clock::now();
-  SweepResult result;
-  result.grid = grid;
-  const std::vector<SweepCell> cells = expandGrid(grid);
+namespace {
+// The shortest text that reads back as v: -0.1, not -0.10000000000000001.
+std::string numberText(double v) {
+  char buffer[32];
+  const auto end = std::to_chars(buffer, buffer + sizeof buffer, v).ptr;
+  return std::string(buffer, end);
+}
+}  // namespace
 
-  // Shared work: one data extraction per (group, features).
+Status checkSweepGrid(const SweepGrid& grid) {
+  if (grid.methods.empty()) return Status::failure("a sweep needs at least one method");
+  if (grid.features.empty()) return Status::failure("a sweep needs at least one feature kind");
+  if (grid.varianceFloors.empty())
+    return Status::failure("a sweep needs at least one variance floor");
+  if (grid.seeds.empty()) return Status::failure("a sweep needs at least one seed");
+  const bool gmm = std::find(grid.methods.begin(), grid.methods.end(), ClassifierMethod::Gmm) !=
+                   grid.methods.end();
+  if (gmm && grid.orders.empty()) return Status::failure("a sweep needs at least one model order");
+  if (gmm && grid.forms.empty())
+    return Status::failure("a sweep needs at least one covariance form");
+  for (int order : grid.orders) {
+    if (order < 1 || order > kMaxModelOrder) {
+      return Status::failure("model order " + std::to_string(order) +
+                             " is out of range: an order is a whole number from 1 to " +
+                             std::to_string(kMaxModelOrder));
+    }
+  }
+  for (double floor : grid.varianceFloors) {
+    if (!(floor == 0.0 || (floor >= kMinVarianceFloor && std::isfinite(floor)))) {
+      return Status::failure("variance floor " + numberText(floor) +
+                             " is out of range: a floor is 0 (none) or a finite number of at "
+                             "least " +
+                             numberText(kMinVarianceFloor));
+    }
+  }
+  if (grid.restarts < 1) return Status::failure("restarts must be at least 1");
+  if (grid.maxIterations < 1) return Status::failure("the iteration limit must be at least 1");
+  if (!(grid.tolerance >= 0.0 && std::isfinite(grid.tolerance)))
+    return Status::failure("the tolerance must be a finite number of at least 0");
+  return Status::success();
+}
+
+namespace {
+
+// One split of the data: the shared data of every (group, features) of the grid, with what each
+// held (SweepDataSummary).
+struct Fold {
+  std::string scene;  // the held-out scene (by-scene), empty otherwise
   std::map<int, SharedGroupData> shared;
+  std::vector<SweepDataSummary> data;
+};
+
+void prepareFold(Fold& fold, const std::vector<LabelledRun>& train,
+                 const std::vector<LabelledRun>& test, const std::vector<SweepCell>& cells) {
   for (const SweepCell& cell : cells) {
     const int key = dataKey(cell.group, cell.features);
-    if (shared.count(key) != 0) continue;
-    SharedGroupData& d = shared[key];
+    if (fold.shared.count(key) != 0) continue;
+    SharedGroupData& d = fold.shared[key];
     d.train = buildGroupDataSet(train, cell.group, cell.features);
     d.test = buildGroupDataSet(test, cell.group, cell.features);
     d.testPatterns = rowPatterns(d.test, test);
@@ -210,37 +251,191 @@ SweepResult runSweep(const std::vector<LabelledRun>& train, const std::vector<La
     s.testCounts = d.test.classCounts();
     s.trainZeroRows = d.train.zeroRows;
     s.testZeroRows = d.test.zeroRows;
-    result.data.push_back(s);
+    fold.data.push_back(s);
   }
-  result.extractSeconds = secondsSince(wallStart);
+}
 
-  // Fit jobs: cells equal but for the decision share one fit (they are adjacent in grid order).
-  std::vector<std::vector<std::size_t>> jobs;
-  for (std::size_t i = 0; i < cells.size(); ++i) {
-    SweepCell key = cells[i];
-    bool joined = false;
-    if (!jobs.empty()) {
-      SweepCell last = cells[jobs.back().front()];
-      last.decision = key.decision;
-      joined = last == key;
+// Leave-one-scene-out: one cell's results of every fold, in scene order, as one result: the
+// confusions summed, each scene's kept, fit and predict times summed.
+SweepCellResult mergeSceneFolds(const std::vector<SweepCellResult>& folds,
+                                const std::vector<std::string>& scenes) {
+  SweepCellResult c = folds.front();
+  c.scenes = {{scenes.front(), c.confusion}};
+  for (std::size_t f = 1; f < folds.size(); ++f) {
+    const SweepCellResult& it = folds[f];
+    if (!it.ok) {
+      c.scenes.emplace_back(scenes[f], ConfusionMatrix());
+      continue;
     }
-    if (joined) {
-      jobs.back().push_back(i);
+    if (!c.ok) {
+      // The first scenes gave no model; this one does: keep its settings' outcome.
+      const auto previous = c.scenes;
+      c = it;
+      c.scenes = previous;
+      c.confusion = ConfusionMatrix();
     } else {
-      jobs.push_back({i});
+      c.fitSeconds += it.fitSeconds;
+      c.predictSeconds += it.predictSeconds;
+      c.iterations += it.iterations;
+      c.maxIterations = std::max(c.maxIterations, it.maxIterations);
+      c.converged = c.converged && it.converged;
+      c.testRows += it.testRows;
+      c.negInfRows += it.negInfRows;
+      c.droppedComponents += it.droppedComponents;
+    }
+    c.confusion.merge(it.confusion);
+    c.scenes.emplace_back(scenes[f], it.confusion);
+  }
+  c.metrics = computeMetrics(c.confusion);
+  // A pooled mean log-likelihood over scenes is not kept (each fold has its own models).
+  if (scenes.size() > 1) c.meanLogLikelihood.reset();
+  c.patterns = ContactPatternTable{c.cell.group, {}};
+  return c;
+}
+
+}  // namespace
+
+struct SweepSession::Impl {
+  SweepGrid grid;
+  bool byScene = false;
+  std::vector<SweepCell> cells;
+  std::vector<std::vector<std::size_t>> jobs;
+  std::vector<double> cost;
+  std::vector<Fold> folds;
+  std::vector<SweepDataSummary> data;
+  double extractSeconds = 0.0;
+
+  void planJobs() {
+    jobs = fitJobs(cells);
+    for (const std::vector<std::size_t>& job : jobs) {
+      const SweepCell& c = cells[job.front()];
+      const SharedGroupData& d = folds.front().shared.at(dataKey(c.group, c.features));
+      cost.push_back(sweepCellUnits(c, d.train.size(), d.test.size()));
+    }
+    // The data summary: the first fold's, with every fold's test rows (by-scene).
+    data = folds.front().data;
+    for (std::size_t f = 1; f < folds.size(); ++f) {
+      for (std::size_t d = 0; d < data.size() && d < folds[f].data.size(); ++d) {
+        data[d].testRows += folds[f].data[d].testRows;
+        for (std::size_t k = 0; k < kContactClassCount; ++k)
+          data[d].testCounts[k] += folds[f].data[d].testCounts[k];
+      }
     }
   }
-  // Expensive jobs first; the slot of each result is its grid position.
+};
+
+SweepSession::SweepSession(const std::vector<LabelledRun>& train,
+                           const std::vector<LabelledRun>& test, const SweepGrid& grid)
+    : impl_(std::make_unique<Impl>()) {
+  const auto start = Clock::now();
+  if (Status ok = checkSweepGrid(grid); !ok) throw std::invalid_argument(ok.errorText());
+  impl_->grid = grid;
+  impl_->cells = expandGrid(grid);
+  impl_->folds.resize(1);
+  prepareFold(impl_->folds.front(), train, test, impl_->cells);
+  impl_->planJobs();
+  impl_->extractSeconds = secondsSince(start);
+}
+
+SweepSession::SweepSession(const std::vector<LabelledRun>& runs,
+                           const std::vector<std::string>& sceneOfRun, const SweepGrid& grid)
+    : impl_(std::make_unique<Impl>()) {
+  const auto start = Clock::now();
+  if (Status ok = checkSweepGrid(grid); !ok) throw std::invalid_argument(ok.errorText());
+  impl_->grid = grid;
+  impl_->byScene = true;
+  impl_->cells = expandGrid(grid);
+  std::vector<std::string> scenes;
+  for (const std::string& s : sceneOfRun)
+    if (std::find(scenes.begin(), scenes.end(), s) == scenes.end()) scenes.push_back(s);
+  if (scenes.empty()) scenes.emplace_back();
+  impl_->folds.resize(scenes.size());
+  for (std::size_t f = 0; f < scenes.size(); ++f) {
+    std::vector<LabelledRun> train, test;
+    for (std::size_t r = 0; r < runs.size() && r < sceneOfRun.size(); ++r)
+      (sceneOfRun[r] == scenes[f] ? test : train).push_back(runs[r]);
+    impl_->folds[f].scene = scenes[f];
+    prepareFold(impl_->folds[f], train, test, impl_->cells);
+  }
+  impl_->planJobs();
+  impl_->extractSeconds = secondsSince(start);
+}
+
+SweepSession::~SweepSession() = default;
+
+const SweepGrid& SweepSession::grid() const {
+  return impl_->grid;
+}
+const std::vector<SweepCell>& SweepSession::cells() const {
+  return impl_->cells;
+}
+const std::vector<std::vector<std::size_t>>& SweepSession::jobs() const {
+  return impl_->jobs;
+}
+const std::vector<SweepDataSummary>& SweepSession::data() const {
+  return impl_->data;
+}
+double SweepSession::extractSeconds() const {
+  return impl_->extractSeconds;
+}
+double SweepSession::jobCost(std::size_t job) const {
+  return impl_->cost.at(job);
+}
+
+std::optional<std::vector<SweepCellResult>> SweepSession::runJob(
+    std::size_t job, const ProgressFn& keepGoing) const {
+  std::vector<SweepCell> jobCells;
+  for (std::size_t i : impl_->jobs.at(job))
+    jobCells.push_back(impl_->cells[i]);
+  const SweepCell& first = jobCells.front();
+  const int key = dataKey(first.group, first.features);
+  bool stopped = false;
+  const ProgressFn watched = [&](std::size_t done, std::size_t total) {
+    const bool go = !keepGoing || keepGoing(done, total);
+    stopped = stopped || !go;
+    return go;
+  };
+  if (!impl_->byScene) {
+    std::vector<SweepCellResult> rs =
+        runCells(jobCells, impl_->grid, impl_->folds.front().shared.at(key), watched);
+    // A fit stopped by cancellation is not a result.
+    if (stopped && !rs.front().ok) return std::nullopt;
+    return rs;
+  }
+  std::vector<std::string> scenes;
+  std::vector<std::vector<SweepCellResult>> byFold;
+  for (const Fold& fold : impl_->folds) {
+    scenes.push_back(fold.scene);
+    byFold.push_back(runCells(jobCells, impl_->grid, fold.shared.at(key), watched));
+    if (stopped && !byFold.back().front().ok) return std::nullopt;
+  }
+  std::vector<SweepCellResult> out;
+  for (std::size_t n = 0; n < jobCells.size(); ++n) {
+    std::vector<SweepCellResult> folds;
+    for (const std::vector<SweepCellResult>& rs : byFold)
+      folds.push_back(rs[n]);
+    out.push_back(mergeSceneFolds(folds, scenes));
+  }
+  return out;
+}
+
+namespace {
+
+// Every job of a session on a pool of threads, expensive jobs first; the slot of each result is
+// its grid position.
+SweepResult runSession(const SweepSession& session, const SweepOptions& options,
+                       const ProgressFn& progress, Clock::time_point wallStart) {
+  SweepResult result;
+  result.grid = session.grid();
+  result.data = session.data();
+  result.extractSeconds = session.extractSeconds();
+  const std::vector<SweepCell>& cells = session.cells();
+  const auto& jobs = session.jobs();
   std::vector<std::size_t> order(jobs.size());
   std::iota(order.begin(), order.end(), 0);
-  std::vector<double> cost(jobs.size());
-  for (std::size_t j = 0; j < jobs.size(); ++j) {
-    const SweepCell& c = cells[jobs[j].front()];
-    const SharedGroupData& d = shared.at(dataKey(c.group, c.features));
-    cost[j] = cellCost(c, d.train.size(), d.train.dimension());
-  }
-  std::stable_sort(order.begin(), order.end(),
-                   [&cost](std::size_t a, std::size_t b) { return cost[a] > cost[b]; });
+  std::stable_sort(order.begin(), order.end(), [&session](std::size_t a, std::size_t b) {
+    return session.jobCost(a) > session.jobCost(b);
+  });
 
   const unsigned threads =
       workerThreadCount(static_cast<unsigned>(std::max(options.threads, 0)), jobs.size());
@@ -265,19 +460,13 @@ SweepResult runSweep(const std::vector<LabelledRun>& train, const std::vector<La
   parallelFor(order.size(), threads, [&](std::size_t k) {
     if (cancel.load()) return false;
     const std::vector<std::size_t>& job = jobs[order[k]];
-    std::vector<SweepCell> jobCells;
-    for (std::size_t i : job)
-      jobCells.push_back(cells[i]);
-    const SweepCell& first = jobCells.front();
-    std::vector<SweepCellResult> rs =
-        runCells(jobCells, grid, shared.at(dataKey(first.group, first.features)), keepGoing);
-    // A fit stopped by cancellation is not a result.
-    if (cancel.load() && !rs.front().ok) return false;
+    std::optional<std::vector<SweepCellResult>> rs = session.runJob(order[k], keepGoing);
+    if (!rs) return false;
     std::lock_guard<std::mutex> lock(progressMutex);
     for (std::size_t n = 0; n < job.size(); ++n) {
-      slots[job[n]] = rs[n];
+      slots[job[n]] = (*rs)[n];
       ++done;
-      if (options.onCell) options.onCell(rs[n]);
+      if (options.onCell) options.onCell((*rs)[n]);
     }
     if (!cancel.load() && progress && !progress(done, cells.size())) cancel = true;
     return !cancel.load();
@@ -291,83 +480,54 @@ SweepResult runSweep(const std::vector<LabelledRun>& train, const std::vector<La
   return result;
 }
 
+}  // namespace
+
+std::vector<std::vector<std::size_t>> fitJobs(const std::vector<SweepCell>& cells) {
+  std::vector<std::vector<std::size_t>> jobs;
+  for (std::size_t i = 0; i < cells.size(); ++i) {
+    SweepCell key = cells[i];
+    bool joined = false;
+    if (!jobs.empty()) {
+      SweepCell last = cells[jobs.back().front()];
+      last.decision = key.decision;
+      joined = last == key;
+    }
+    if (joined) {
+      jobs.back().push_back(i);
+    } else {
+      jobs.push_back({i});
+    }
+  }
+  return jobs;
+}
+
+double sweepCellUnits(const SweepCell& cell, std::size_t trainRows, std::size_t testRows) {
+  const double d = featureDimension(cell.group, cell.features);
+  const double perRow = isDiagonal(cell.form) ? d : d * d;
+  const double components =
+      cell.method == ClassifierMethod::Gaussian ? 1.0 : static_cast<double>(cell.order);
+  return static_cast<double>(trainRows + testRows) * components * perRow + 1.0;
+}
+
+SweepResult runSweepSession(const SweepSession& session, const SweepOptions& options,
+                            const ProgressFn& progress) {
+  return runSession(session, options, progress, Clock::now());
+}
+
+SweepResult runSweep(const std::vector<LabelledRun>& train, const std::vector<LabelledRun>& test,
+                     const SweepGrid& grid, const SweepOptions& options,
+                     const ProgressFn& progress) {
+  const auto wallStart = Clock::now();
+  const SweepSession session(train, test, grid);
+  return runSession(session, options, progress, wallStart);
+}
+
 SweepResult runSweepByScene(const std::vector<LabelledRun>& runs,
                             const std::vector<std::string>& sceneOfRun, const SweepGrid& grid,
                             const SweepOptions& options, const ProgressFn& progress) {
   const auto wallStart = Clock::now();
-  std::vector<std::string> scenes;
-  for (const std::string& s : sceneOfRun)
-    if (std::find(scenes.begin(), scenes.end(), s) == scenes.end()) scenes.push_back(s);
-  SweepResult merged;
-  merged.grid = grid;
-  const std::size_t cellCount = expandGrid(grid).size();
-  for (std::size_t f = 0; f < scenes.size(); ++f) {
-    std::vector<LabelledRun> train, test;
-    for (std::size_t r = 0; r < runs.size() && r < sceneOfRun.size(); ++r)
-      (sceneOfRun[r] == scenes[f] ? test : train).push_back(runs[r]);
-    SweepOptions foldOptions;
-    foldOptions.threads = options.threads;
-    const ProgressFn foldProgress = [&](std::size_t done, std::size_t) {
-      return !progress || progress(f * cellCount + done, scenes.size() * cellCount);
-    };
-    SweepResult fold = runSweep(train, test, grid, foldOptions, foldProgress);
-    merged.threads = fold.threads;
-    merged.extractSeconds += fold.extractSeconds;
-    if (f == 0) {
-      merged.cells = fold.cells;
-      for (SweepCellResult& c : merged.cells) {
-        c.scenes = {{scenes[f], c.confusion}};
-        c.trainRows = fold.cells.empty() ? 0 : c.trainRows;
-      }
-      merged.data = fold.data;
-    } else {
-      for (SweepCellResult& c : merged.cells) {
-        const auto it = std::find_if(fold.cells.begin(), fold.cells.end(),
-                                     [&c](const SweepCellResult& o) { return o.cell == c.cell; });
-        if (it == fold.cells.end()) continue;
-        if (!it->ok) {
-          c.scenes.emplace_back(scenes[f], ConfusionMatrix());
-          continue;
-        }
-        if (!c.ok) {
-          // The first scenes gave no model; this one does: keep its settings' outcome.
-          const auto previous = c.scenes;
-          c = *it;
-          c.scenes = previous;
-          c.confusion = ConfusionMatrix();
-        } else {
-          c.fitSeconds += it->fitSeconds;
-          c.predictSeconds += it->predictSeconds;
-          c.iterations += it->iterations;
-          c.maxIterations = std::max(c.maxIterations, it->maxIterations);
-          c.converged = c.converged && it->converged;
-          c.testRows += it->testRows;
-          c.negInfRows += it->negInfRows;
-          c.droppedComponents += it->droppedComponents;
-        }
-        c.confusion.merge(it->confusion);
-        c.scenes.emplace_back(scenes[f], it->confusion);
-      }
-      for (std::size_t d = 0; d < merged.data.size() && d < fold.data.size(); ++d) {
-        merged.data[d].testRows += fold.data[d].testRows;
-        for (std::size_t k = 0; k < kContactClassCount; ++k)
-          merged.data[d].testCounts[k] += fold.data[d].testCounts[k];
-      }
-    }
-    if (fold.cancelled) {
-      merged.cancelled = true;
-      break;
-    }
-  }
-  for (SweepCellResult& c : merged.cells) {
-    c.metrics = computeMetrics(c.confusion);
-    // A pooled mean log-likelihood over scenes is not kept (each fold has its own models).
-    if (scenes.size() > 1) c.meanLogLikelihood.reset();
-    c.patterns = ContactPatternTable{c.cell.group, {}};
-    if (options.onCell) options.onCell(c);
-  }
-  merged.wallSeconds = secondsSince(wallStart);
-  return merged;
+  const SweepSession session(runs, sceneOfRun, grid);
+  return runSession(session, options, progress, wallStart);
 }
 
 namespace {
@@ -452,11 +612,7 @@ json sweepCellToJson(const SweepCellResult& r) {
   return c;
 }
 
-json sweepToJson(const SweepResult& result) {
-  json out;
-  out["format"] = "tactile-sweep";
-  out["version"] = 1;
-  const SweepGrid& g = result.grid;
+json sweepGridToJson(const SweepGrid& g) {
   json grid;
   json groups = json::array();
   for (SensorGroup s : groupsOf(g))
@@ -487,7 +643,23 @@ json sweepToJson(const SweepResult& result) {
   grid["max_iterations"] = g.maxIterations;
   grid["tolerance"] = g.tolerance;
   grid["priors"] = priorModeName(g.priors);
-  out["grid"] = std::move(grid);
+  return grid;
+}
+
+json sweepToJson(const SweepResult& result) {
+  json out = sweepHeaderToJson(result);
+  json cells = json::array();
+  for (const SweepCellResult& r : result.cells)
+    cells.push_back(sweepCellToJson(r));
+  out["cells"] = std::move(cells);
+  return out;
+}
+
+json sweepHeaderToJson(const SweepResult& result) {
+  json out;
+  out["format"] = "tactile-sweep";
+  out["version"] = 1;
+  out["grid"] = sweepGridToJson(result.grid);
   json data = json::array();
   for (const SweepDataSummary& s : result.data) {
     data.push_back({{"group", groupInfo(s.group).shortName},
@@ -504,10 +676,6 @@ json sweepToJson(const SweepResult& result) {
   out["wall_s"] = result.wallSeconds;
   out["extract_s"] = result.extractSeconds;
   out["cancelled"] = result.cancelled;
-  json cells = json::array();
-  for (const SweepCellResult& r : result.cells)
-    cells.push_back(sweepCellToJson(r));
-  out["cells"] = std::move(cells);
   return out;
 }
 
@@ -530,16 +698,9 @@ bool parseList(const json& v, const char* key, std::vector<T>& out, Parse parse)
 
 namespace {
 
-// Fills `out`; returns what is wrong, empty when nothing is.
-std::string readSweep(const json& value, SweepResult& out) {
-  out = SweepResult();
+// Fills `g` from a grid object; returns what is wrong, empty when nothing is.
+std::string readGrid(const json& grid, SweepGrid& g) {
   try {
-    if (!value.is_object() || value.value("format", "") != "tactile-sweep") {
-      return "not a sweep file (expected \"format\": \"tactile-sweep\")";
-    }
-    if (value.value("version", 0) != 1) return "unsupported sweep file version";
-    const json& grid = value.at("grid");
-    SweepGrid& g = out.grid;
     if (!parseList(grid, "groups", g.groups, parseSensorGroup)) return "grid: bad 'groups'";
     if (!parseList(grid, "methods", g.methods, parseClassifierMethod)) return "grid: bad 'methods'";
     if (!parseList(grid, "covariances", g.forms, parseCovarianceForm))
@@ -568,6 +729,21 @@ std::string readSweep(const json& value, SweepResult& out) {
     g.restarts = grid.value("restarts", defaults.restarts);
     g.maxIterations = grid.value("max_iterations", defaults.maxIterations);
     g.tolerance = grid.value("tolerance", defaults.tolerance);
+  } catch (const json::exception& e) {
+    return "grid: " + plainJsonError(e);
+  }
+  return {};
+}
+
+// Fills `out`; returns what is wrong, empty when nothing is.
+std::string readSweep(const json& value, SweepResult& out) {
+  out = SweepResult();
+  try {
+    if (!value.is_object() || value.value("format", "") != "tactile-sweep") {
+      return "not a sweep file (expected \"format\": \"tactile-sweep\")";
+    }
+    if (value.value("version", 0) != 1) return "unsupported sweep file version";
+    if (std::string error = readGrid(value.at("grid"), out.grid); !error.empty()) return error;
     for (const json& d : value.value("data", json::array())) {
       SweepDataSummary s;
       const auto group = parseSensorGroup(d.at("group").get<std::string>());
@@ -662,6 +838,13 @@ std::string readSweep(const json& value, SweepResult& out) {
 }
 
 }  // namespace
+
+Result<SweepGrid> sweepGridFromJson(const json& value) {
+  SweepGrid grid;
+  if (!value.is_object()) return Error("grid: not an object");
+  if (std::string error = readGrid(value, grid); !error.empty()) return Error(std::move(error));
+  return grid;
+}
 
 Result<SweepResult> sweepFromJson(const json& value) {
   SweepResult out;

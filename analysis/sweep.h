@@ -12,6 +12,7 @@
 
 #include <cstdint>
 #include <functional>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -70,6 +71,16 @@ ClassifierOptions cellClassifierOptions(const SweepGrid& grid, const SweepCell& 
 // Cells of a grid in a fixed order (group, features, method, form, order, variance floor, seed,
 // decision).
 std::vector<SweepCell> expandGrid(const SweepGrid& grid);
+// The fit jobs of expanded cells: the grid positions of cells equal but for the decision mode
+// (adjacent in grid order), which share one fit.
+std::vector<std::vector<std::size_t>> fitJobs(const std::vector<SweepCell>& cells);
+// The cost model of a sweep, for the order its jobs are handed out in (most expensive first, so
+// that no worker is left alone with a long fit at the end) and the workbench's time estimate: every
+// EM iteration visits each training row once per component (a Gaussian is one) at a cost per row
+// of the feature dimension D (diagonal forms) or D^2 (full forms); prediction visits the test rows
+// the same way. In units of that work, +1 so that an empty cell costs something. No result depends
+// on it.
+double sweepCellUnits(const SweepCell& cell, std::size_t trainRows, std::size_t testRows);
 
 struct SweepCellResult {
   SweepCell cell;
@@ -143,9 +154,62 @@ SweepResult runSweepByScene(const std::vector<LabelledRun>& runs,
                             const std::vector<std::string>& sceneOfRun, const SweepGrid& grid,
                             const SweepOptions& options = {}, const ProgressFn& progress = {});
 
+// The one check of a grid, used by every way a sweep is asked for (CLI, workbench, Python,
+// stored plans): every list has a value, every order is a whole number from 1 to kMaxModelOrder,
+// every floor is 0 or at least kMinVarianceFloor, restarts and the iteration limit are at least
+// 1, the tolerance is finite and not negative. The message names the first bad value.
+Status checkSweepGrid(const SweepGrid& grid);
+
+// The data of a sweep extracted once (per (group, features), and per held-out scene for a
+// by-scene sweep) and its fit jobs: what runSweep runs on its threads, and what a worker of a
+// distributed sweep (workspace/sweep_job.h) runs one claimed job at a time. A job is the cells
+// equal but for the decision mode (they share one fit). runJob may be called from several threads
+// at once; a job's result depends only on its cells' settings and seeds, so it is the same
+// whichever process or thread computes it.
+class SweepSession {
+ public:
+  // Train on `train`, score on `test`.
+  SweepSession(const std::vector<LabelledRun>& train, const std::vector<LabelledRun>& test,
+               const SweepGrid& grid);
+  // Leave-one-scene-out over `runs` (sceneOfRun[i] names run i's scene), as runSweepByScene.
+  SweepSession(const std::vector<LabelledRun>& runs, const std::vector<std::string>& sceneOfRun,
+               const SweepGrid& grid);
+  ~SweepSession();
+  SweepSession(const SweepSession&) = delete;
+  SweepSession& operator=(const SweepSession&) = delete;
+
+  const SweepGrid& grid() const;
+  const std::vector<SweepCell>& cells() const;  // expandGrid(grid)
+  // Each job's grid positions (into cells()), in grid order.
+  const std::vector<std::vector<std::size_t>>& jobs() const;
+  const std::vector<SweepDataSummary>& data() const;
+  double extractSeconds() const;
+  // Rough relative cost of a job (expensive jobs first spreads the work best).
+  double jobCost(std::size_t job) const;
+  // The results of one job's cells, in its order; nullopt when `keepGoing` returned false and
+  // the fit stopped before it was done.
+  std::optional<std::vector<SweepCellResult>> runJob(std::size_t job,
+                                                     const ProgressFn& keepGoing = {}) const;
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+// Runs every job of a session on options.threads threads, as runSweep does (which is this on a
+// new session).
+SweepResult runSweepSession(const SweepSession& session, const SweepOptions& options = {},
+                            const ProgressFn& progress = {});
+
+// The "grid" object of SWEEP.json (and of a stored sweep's configuration), and back.
+nlohmann::json sweepGridToJson(const SweepGrid& grid);
+Result<SweepGrid> sweepGridFromJson(const nlohmann::json& value);
+
 // SWEEP.json: {"format":"tactile-sweep","version":1,"grid":{...},"data":[...],"threads",
 // "wall_s","cancelled","cells":[{...}]}.
 nlohmann::json sweepToJson(const SweepResult& result);
+// All of it but "cells": what a database stores as a sweep's configuration beside its cells.
+nlohmann::json sweepHeaderToJson(const SweepResult& result);
 // One cell as written in SWEEP.json's "cells" (and stored per cell in a database), and its
 // settings alone (group, method, order, covariance, floor, features, seed, decision).
 nlohmann::json sweepCellToJson(const SweepCellResult& cell);

@@ -13,6 +13,7 @@ TACTILE_PACKAGES=(
   libzstd-dev liblz4-dev libxgboost-dev nodejs
   python3-dev pybind11-dev python3-numpy python3-pandas python3-sklearn python3-pytest
   xvfb xauth fonts-noto-cjk qt6-translations-l10n locales
+  slurm-wlm munge
 )
 
 tactile_missing_packages() {

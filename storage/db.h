@@ -90,6 +90,10 @@ class ConnectionBackend {
   // A write transaction: BEGIN IMMEDIATE on SQLite; on PostgreSQL BEGIN with the database's writer
   // lock, so that writers queue as they do on an SQLite file.
   virtual void begin() = 0;
+  // A write transaction whose statements lock the rows they touch themselves (SELECT ... FOR
+  // UPDATE SKIP LOCKED), so that writers on different rows do not queue: PostgreSQL's plain BEGIN;
+  // on SQLite the same as begin() (the file has one writer at a time).
+  virtual void beginRowLocking() { begin(); }
   virtual void commit() = 0;
   virtual void rollback() noexcept = 0;
   // Rows changed by the newest INSERT, UPDATE or DELETE.
@@ -256,6 +260,10 @@ class Transaction {
  public:
   explicit Transaction(Connection& connection) : connection_(&connection) {
     connection.backend().begin();
+  }
+  struct RowLocking {};
+  Transaction(Connection& connection, RowLocking) : connection_(&connection) {
+    connection.backend().beginRowLocking();
   }
   Transaction(Transaction&& other) noexcept
       : connection_(std::exchange(other.connection_, nullptr)) {}

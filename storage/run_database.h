@@ -235,6 +235,24 @@ struct SweepInfo {
   std::int64_t cellCount = 0;
 };
 
+// One fit job of a sweep planned for workers (docs/cluster.md): pending until a worker claims
+// it, running under a lease the worker renews, then done (its cells stored) or failed.
+struct SweepClaim {
+  std::int64_t job = 0;     // the job's index in the sweep's plan
+  std::int64_t cells = 0;   // grid cells it covers (those differing only in the decision mode)
+  std::string state;        // "pending", "running", "done", "failed"
+  std::string worker;       // who holds or last held it
+  double leaseUntil = 0.0;  // Unix seconds; a running claim past it may be taken over
+  std::int64_t attempts = 0;
+  std::string error;     // failed
+  double seconds = 0.0;  // done: the worker's time on it
+  std::string finishedAt;
+};
+
+// A job's claim is taken over at most this many times (its workers died mid-job each time):
+// then it is failed rather than handed to the next worker to kill.
+inline constexpr std::int64_t kSweepClaimAttempts = 3;
+
 struct SweepCellRecord {
   std::int64_t id = 0;
   std::string configurationJson;
@@ -590,6 +608,37 @@ class SweepStore {
   Result<std::int64_t> create(const std::string& name, const std::string& configurationJson);
   Result<std::int64_t> addCell(std::int64_t sweepId, const std::string& configurationJson,
                                const std::string& metricsJson);
+
+  // ---- sweeps planned for workers (storage/sweep_claims.cpp, docs/cluster.md) ----
+  // Creates a sweep with one pending claim per job (cellsPerJob[i] cells of job i, costing
+  // costPerJob[i] in the sweep's cost model; empty: all alike), at once.
+  Result<std::int64_t> plan(const std::string& name, const std::string& configurationJson,
+                            const std::vector<std::int64_t>& cellsPerJob,
+                            const std::vector<double>& costPerJob = {});
+  // Claims one job for `worker` until `now + leaseSeconds` (Unix seconds): the most expensive
+  // pending one (the first by job of equal cost), or a running one whose lease ran out (its worker
+  // died); nullopt when none is left. PostgreSQL
+  // locks the row (FOR UPDATE SKIP LOCKED), so workers claim side by side; SQLite claims in an
+  // immediate transaction. A running claim taken over kSweepClaimAttempts times is failed.
+  Result<std::optional<SweepClaim>> claim(std::int64_t sweepId, const std::string& worker,
+                                          double now, double leaseSeconds);
+  // Moves the lease of the worker's running claim to `leaseUntil`; false when the claim is no
+  // longer the worker's (taken over, or done).
+  Result<bool> renew(std::int64_t sweepId, std::int64_t job, const std::string& worker,
+                     double leaseUntil);
+  // Stores a job's cells ((settings, result) JSON pairs) and marks it done, in one transaction;
+  // false, storing nothing, when the job is already done or failed (another worker took it over
+  // and finished first), so every job's cells are stored once.
+  Result<bool> complete(std::int64_t sweepId, std::int64_t job, const std::string& worker,
+                        double seconds,
+                        const std::vector<std::pair<std::string, std::string>>& cells);
+  // Marks the worker's running claim failed with `error`.
+  Status fail(std::int64_t sweepId, std::int64_t job, const std::string& worker,
+              const std::string& error);
+  // Gives the worker's running claim back (pending again): a worker that was stopped.
+  Status release(std::int64_t sweepId, std::int64_t job, const std::string& worker);
+  // Every claim of a sweep by job; empty for a sweep that was not planned for workers.
+  Result<std::vector<SweepClaim>> claims(std::int64_t sweepId);
   Status update(std::int64_t sweepId, const std::string& configurationJson);
   Result<std::vector<SweepInfo>> list();
   Result<SweepInfo> info(std::int64_t sweepId);

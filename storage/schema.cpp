@@ -211,13 +211,37 @@ CREATE TABLE assignments(
 );
 )sql";
 
-constexpr std::array<Migration, 6> kMigrations{{
+// Sweeps planned for workers (docs/cluster.md): one row per fit job of a sweep (the cells that
+// differ only in the decision mode) with its cost in the sweep's cost model, pending until a
+// worker claims it (the most expensive first); a claim holds a lease that
+// the worker renews while it computes and that another worker takes over once it runs out (a
+// worker killed mid-job). A job's cells go into sweep_cells in the transaction that marks it done.
+constexpr std::string_view kVersion7 = R"sql(
+CREATE TABLE sweep_claims(
+  sweep_id INTEGER NOT NULL REFERENCES sweeps(id) ON DELETE CASCADE,
+  job INTEGER NOT NULL,
+  cells INTEGER NOT NULL,
+  cost REAL NOT NULL DEFAULT 0,
+  state TEXT NOT NULL CHECK(state IN ('pending','running','done','failed')),
+  worker TEXT NOT NULL DEFAULT '',
+  lease_until REAL NOT NULL DEFAULT 0,
+  attempts INTEGER NOT NULL DEFAULT 0,
+  error TEXT NOT NULL DEFAULT '',
+  seconds REAL NOT NULL DEFAULT 0,
+  finished_at TEXT NOT NULL DEFAULT '',
+  PRIMARY KEY(sweep_id, job)
+);
+CREATE INDEX sweep_claims_by_state ON sweep_claims(sweep_id, state, cost DESC, job);
+)sql";
+
+constexpr std::array<Migration, 7> kMigrations{{
     {1, "runs, steps, truth, step summaries, scenes", kVersion1},
     {2, "label sets and segments", kVersion2},
     {3, "models, sweeps and sweep cells", kVersion3},
     {4, "truth packed into the steps, sparse sensors and summary blobs", kVersion4},
     {5, "checksums of every run, step and summary block row", kVersion5},
     {6, "label revisions and assignments", kVersion6},
+    {7, "claims of planned sweep jobs", kVersion7},
 }};
 static_assert(kMigrations.back().version == kSchemaVersion);
 

@@ -16,7 +16,7 @@ namespace tactile::storage::db {
 
 // The schema version this program writes. A database with a higher user_version was written by
 // a newer program and is refused rather than misread.
-inline constexpr int kSchemaVersion = 6;
+inline constexpr int kSchemaVersion = 7;
 
 // PRAGMA application_id of tactile databases ("TACT"), so that another program's SQLite file is
 // recognised and refused instead of being "migrated".

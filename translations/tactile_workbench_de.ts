@@ -2676,6 +2676,33 @@ Zelle %1 (zum Auswählen klicken)</translation>
         <source>Model written to %1 (not stored in the database).</source>
         <translation>Modell nach %1 geschrieben (nicht in der Datenbank gespeichert).</translation>
     </message>
+    <message>
+        <source>The sweep&apos;s status cannot be read: %1</source>
+        <translation>Der Status des Sweeps lässt sich nicht lesen: %1</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n cell(s)</source>
+        <translation>
+            <numerusform>%n Zelle</numerusform>
+            <numerusform>%n Zellen</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>%1 of %2 cells done, %3 running, %4 pending, %5 failed</source>
+        <translation>%1 von %2 Zellen fertig, %3 laufen, %4 ausstehend, %5 fehlgeschlagen</translation>
+    </message>
+    <message>
+        <source>; about %1 left</source>
+        <translation>; noch etwa %1</translation>
+    </message>
+    <message>
+        <source>; waiting for workers (tactile sweep work)</source>
+        <translation>; wartet auf Worker (tactile sweep work)</translation>
+    </message>
+    <message>
+        <source>job %1 on %2: %3</source>
+        <translation>Job %1 auf %2: %3</translation>
+    </message>
 </context>
 <context>
     <name>tactile::gui::TableView</name>
@@ -3179,6 +3206,37 @@ grau: blockiert</translation>
     <message>
         <source>Cannot be scored: %1. Their cells would be fitted but read &quot;no test data&quot;.</source>
         <translation>Nicht bewertbar: %1. Ihre Zellen würden angepasst, zeigten aber „keine Testdaten“.</translation>
+    </message>
+    <message>
+        <source>Plan for workers</source>
+        <translation>Für Worker planen</translation>
+    </message>
+    <message>
+        <source>Store the sweep with every cell pending, to be filled by tactile sweep work processes on any machine that reaches the database, or by a Slurm job array</source>
+        <translation>Den Sweep mit allen Zellen ausstehend speichern, damit tactile-sweep-work-Prozesse auf jedem Rechner, der die Datenbank erreicht, oder ein Slurm-Job-Array ihn füllen</translation>
+    </message>
+    <message>
+        <source>Copy Commands</source>
+        <translation>Befehle kopieren</translation>
+    </message>
+    <message>
+        <source>The sweep was not planned: %1</source>
+        <translation>Der Sweep wurde nicht geplant: %1</translation>
+    </message>
+    <message>
+        <source># One worker; start as many as you like, on any machine that reaches the database:</source>
+        <translation># Ein Worker; starten Sie beliebig viele, auf jedem Rechner, der die Datenbank erreicht:</translation>
+    </message>
+    <message>
+        <source># Or 4 workers as a Slurm job array:</source>
+        <translation># Oder 4 Worker als Slurm-Job-Array:</translation>
+    </message>
+    <message numerus="yes">
+        <source>Sweep %1 planned: %n cell(s), all pending, for the workers below.</source>
+        <translation>
+            <numerusform>Sweep %1 geplant: %n Zelle, ausstehend, für die Worker unten.</numerusform>
+            <numerusform>Sweep %1 geplant: %n Zellen, alle ausstehend, für die Worker unten.</numerusform>
+        </translation>
     </message>
 </context>
 <context>

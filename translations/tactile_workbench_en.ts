@@ -78,6 +78,16 @@
     </message>
 </context>
 <context>
+    <name>tactile::gui::SweepResultsWindow</name>
+    <message numerus="yes">
+        <source>%n cell(s)</source>
+        <translation>
+            <numerusform>%n cell</numerusform>
+            <numerusform>%n cells</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
     <name>tactile::gui::TrainingDialog</name>
     <message numerus="yes">
         <source>%n cell(s)</source>
@@ -112,6 +122,13 @@
         <translation>
             <numerusform>Sweep %1 finished: %n cell in %2 s.</numerusform>
             <numerusform>Sweep %1 finished: %n cells in %2 s.</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>Sweep %1 planned: %n cell(s), all pending, for the workers below.</source>
+        <translation>
+            <numerusform>Sweep %1 planned: %n cell, all pending, for the workers below.</numerusform>
+            <numerusform>Sweep %1 planned: %n cells, all pending, for the workers below.</numerusform>
         </translation>
     </message>
 </context>

@@ -2666,6 +2666,32 @@ cell %1 (click to select)</source>
         <source>Model written to %1 (not stored in the database).</source>
         <translation>模型已写入 %1（未存入数据库）。</translation>
     </message>
+    <message>
+        <source>The sweep&apos;s status cannot be read: %1</source>
+        <translation>无法读取扫描的状态：%1</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n cell(s)</source>
+        <translation>
+            <numerusform>%n 个单元</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>%1 of %2 cells done, %3 running, %4 pending, %5 failed</source>
+        <translation>%2 个单元中已完成 %1 个，运行中 %3 个，待处理 %4 个，失败 %5 个</translation>
+    </message>
+    <message>
+        <source>; about %1 left</source>
+        <translation>；约剩 %1</translation>
+    </message>
+    <message>
+        <source>; waiting for workers (tactile sweep work)</source>
+        <translation>；正在等待工作进程（tactile sweep work）</translation>
+    </message>
+    <message>
+        <source>job %1 on %2: %3</source>
+        <translation>任务 %1（%2）：%3</translation>
+    </message>
 </context>
 <context>
     <name>tactile::gui::TableView</name>
@@ -3164,6 +3190,36 @@ grey: blocked</source>
     <message>
         <source>Cannot be scored: %1. Their cells would be fitted but read &quot;no test data&quot;.</source>
         <translation>无法评分：%1。其单元会被拟合，但显示“无测试数据”。</translation>
+    </message>
+    <message>
+        <source>Plan for workers</source>
+        <translation>为工作进程规划</translation>
+    </message>
+    <message>
+        <source>Store the sweep with every cell pending, to be filled by tactile sweep work processes on any machine that reaches the database, or by a Slurm job array</source>
+        <translation>保存扫描并将所有单元设为待处理，由任何能访问数据库的机器上的 tactile sweep work 进程或 Slurm 作业数组来完成</translation>
+    </message>
+    <message>
+        <source>Copy Commands</source>
+        <translation>复制命令</translation>
+    </message>
+    <message>
+        <source>The sweep was not planned: %1</source>
+        <translation>扫描未规划：%1</translation>
+    </message>
+    <message>
+        <source># One worker; start as many as you like, on any machine that reaches the database:</source>
+        <translation># 一个工作进程；可在任何能访问数据库的机器上启动任意多个：</translation>
+    </message>
+    <message>
+        <source># Or 4 workers as a Slurm job array:</source>
+        <translation># 或者以 Slurm 作业数组启动 4 个工作进程：</translation>
+    </message>
+    <message numerus="yes">
+        <source>Sweep %1 planned: %n cell(s), all pending, for the workers below.</source>
+        <translation>
+            <numerusform>扫描 %1 已规划：%n 个单元，全部待处理，由下方的工作进程完成。</numerusform>
+        </translation>
     </message>
 </context>
 <context>

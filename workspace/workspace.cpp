@@ -26,13 +26,6 @@ Error failure(std::string message) {
   return Error(std::move(message));
 }
 
-json runsJson(const std::vector<storage::RunInfo>& infos) {
-  json out = json::array();
-  for (const storage::RunInfo& r : infos)
-    out.push_back({{"name", r.name}, {"steps", r.stepCount}, {"checksum", r.checksum}});
-  return out;
-}
-
 std::vector<analysis::RunReference> runRefs(const std::vector<storage::RunInfo>& infos) {
   std::vector<analysis::RunReference> out;
   for (const storage::RunInfo& r : infos)
@@ -47,6 +40,13 @@ std::vector<std::string> sorted(std::vector<std::string> v) {
 }
 
 }  // namespace
+
+json runsJson(const std::vector<storage::RunInfo>& infos) {
+  json out = json::array();
+  for (const storage::RunInfo& r : infos)
+    out.push_back({{"name", r.name}, {"steps", r.stepCount}, {"checksum", r.checksum}});
+  return out;
+}
 
 std::optional<SplitMode> parseSplitMode(std::string_view name) {
   if (name == "by-run") return SplitMode::ByRun;
@@ -591,120 +591,6 @@ Result<TrainOutcome> Workspace::storeTrained(TrainOutcome outcome, const TrainRe
   if (!id) return id.error();
   outcome.modelName = name;
   outcome.modelId = id.value();
-  return outcome;
-}
-
-Result<SweepOutcome> Workspace::sweep(
-    const SweepRequest& request,
-    const std::function<void(const analysis::SweepCellResult&)>& onCell,
-    const ProgressFn& progress) {
-  auto set = db_->labels().find(request.labelSet);
-  if (!set) return set.error();
-  const bool byScene = request.split == SplitMode::ByScene;
-  if (request.split == SplitMode::LeaveOneRunOut) {
-    return failure("a sweep splits by run (training and test runs) or by scene");
-  }
-  if (byScene && !request.testRuns.empty()) {
-    return failure(
-        "a by-scene sweep scores every scene of the training runs in turn; give no "
-        "test runs");
-  }
-  if (request.trainRuns.empty() || (!byScene && request.testRuns.empty())) {
-    return failure(byScene ? "a by-scene sweep needs training runs"
-                           : "a sweep needs training runs and test runs");
-  }
-  for (const std::string& t : request.testRuns) {
-    if (std::find(request.trainRuns.begin(), request.trainRuns.end(), t) !=
-        request.trainRuns.end()) {
-      return failure("run '" + t + "' is given both for training and for testing");
-    }
-  }
-  auto train = loadLabelled(set->id, request.trainRuns);
-  if (!train) return train.error();
-  auto test = loadLabelled(set->id, request.testRuns);
-  if (!test) return test.error();
-  std::vector<std::string> sceneOfRun;
-  if (byScene) {
-    std::set<std::string> distinct;
-    for (const storage::RunInfo& r : train->infos) {
-      sceneOfRun.push_back(r.scene.empty() ? r.name : r.scene);
-      distinct.insert(sceneOfRun.back());
-    }
-    if (distinct.size() < 2) {
-      return failure("a by-scene sweep needs runs of at least two scenes, found " +
-                     std::to_string(distinct.size()));
-    }
-  }
-
-  analysis::SweepResult empty;
-  empty.grid = request.grid;
-  json configuration = analysis::sweepToJson(empty);
-  configuration.erase("cells");
-  configuration["label_set"] = request.labelSet;
-  configuration["train_runs"] = runsJson(train->infos);
-  configuration["test_runs"] = runsJson(test->infos);
-  configuration["split"] = splitModeName(request.split);
-  configuration["state"] = "running";
-  configuration["program_version"] = programVersion();
-  const std::string name =
-      request.name.empty() ? defaultSweepName(request.labelSet, request.grid) : request.name;
-  auto sweepId = db_->sweeps().create(name, dumpJson(configuration));
-  if (!sweepId) return sweepId.error();
-
-  Error storeError;
-  bool storeFailed = false;
-  analysis::SweepOptions options;
-  options.threads = request.threads;
-  options.onCell = [&](const analysis::SweepCellResult& cell) {
-    auto stored = db_->sweeps().addCell(sweepId.value(),
-                                        dumpJson(analysis::sweepCellSettingsToJson(cell.cell)),
-                                        dumpJson(analysis::sweepCellToJson(cell)));
-    if (!stored && !storeFailed) {
-      storeFailed = true;
-      storeError = stored.error();
-    }
-    if (onCell) onCell(cell);
-  };
-  const ProgressFn guard = [&](std::size_t done, std::size_t total) {
-    if (storeFailed) return false;
-    return !progress || progress(done, total);
-  };
-  SweepOutcome outcome;
-  outcome.sweepId = sweepId.value();
-  // A sweep that stops on an error is stored as "failed" with the error, never left "running".
-  const auto markFailed = [&](const std::string& error) {
-    json failed = configuration;
-    failed["state"] = "failed";
-    failed["error"] = error;
-    (void)db_->sweeps().update(sweepId.value(), dumpJson(failed));  // best effort (a full disk)
-  };
-  try {
-    outcome.result =
-        byScene
-            ? analysis::runSweepByScene(train->labelled, sceneOfRun, request.grid, options, guard)
-            : analysis::runSweep(train->labelled, test->labelled, request.grid, options, guard);
-  } catch (const std::bad_alloc&) {
-    markFailed("out of memory");
-    return failure("sweep " + std::to_string(sweepId.value()) + ": out of memory");
-  } catch (const std::exception& e) {
-    markFailed(e.what());
-    return failure("sweep " + std::to_string(sweepId.value()) + ": " + e.what());
-  }
-
-  json final = analysis::sweepToJson(outcome.result);
-  final.erase("cells");
-  final["label_set"] = request.labelSet;
-  final["train_runs"] = configuration["train_runs"];
-  final["test_runs"] = configuration["test_runs"];
-  final["split"] = configuration["split"];
-  final["state"] = storeFailed ? "failed" : outcome.result.cancelled ? "cancelled" : "finished";
-  final["program_version"] = programVersion();
-  if (storeFailed) final["error"] = storeError.text();
-  if (Status s = db_->sweeps().update(sweepId.value(), dumpJson(final)); !s) {
-    markFailed(s.errorText());
-    return s.error();
-  }
-  if (storeFailed) return storeError;
   return outcome;
 }
 

@@ -41,6 +41,9 @@ enum class SplitMode {
 std::optional<SplitMode> parseSplitMode(std::string_view name);
 std::string_view splitModeName(SplitMode mode);
 
+// Runs as a stored model's or sweep's provenance records them: [{"name","steps","checksum"}].
+nlohmann::json runsJson(const std::vector<storage::RunInfo>& infos);
+
 // The default hold-out: every fourth run by name is a test run, and at least one when there are
 // two or more runs.
 struct RunSplit {
@@ -100,21 +103,131 @@ struct TrainOutcome {
 // one analysis::groupReportJson entry per requested group.
 nlohmann::json trainReportJson(const TrainOutcome& outcome, const TrainRequest& request);
 
+// ---- sweeps (workspace/sweep_job.cpp, docs/cluster.md) ----------------------------------------
+
+// Where a sweep's runs come from: stored runs of a database, or run files (`tactile sweep --runs`).
+enum class SweepSource { Database, Files };
+
+// One sweep as asked for, by the CLI (files and database), the workbench and the Python module
+// alike; checked by checkSweepRequest, run by one function (a session over the selected data), and
+// turned into JSON only where it is written to a file or a database.
 struct SweepRequest {
+  // Data selection. Database: a stored label set and stored run names. Run files: run-file paths,
+  // labelled by `labelsFile` (empty: the runs' truth columns).
   std::string labelSet;
   std::vector<std::string> trainRuns;
   std::vector<std::string> testRuns;
-  analysis::SweepGrid grid;
-  std::string name;  // empty: defaultSweepName(labelSet, grid)
-  int threads = 0;
+  std::string labelsFile;
+  // Run files without test runs: the last fraction of each run's steps is held out.
+  double holdout = 0.3;
   // ByRun: train on trainRuns, score on testRuns. ByScene: no test runs; every scene of the
   // training runs is scored by cells trained without it. (LeaveOneRunOut is not offered.)
   SplitMode split = SplitMode::ByRun;
+  analysis::SweepGrid grid;  // grid, decision modes, seeds and the settings shared by every cell
+  std::string name;          // empty: defaultSweepName(labelSet, grid)
+  int threads = 0;           // 0 = all cores
 };
+
 // A sweep's name from what it sweeps: the label set, then each setting with more than one value
 // ("truth: order 1-16 x floor 0.01-0.1 x covariance nodal-full/nodal-diag"), or the one cell's
 // settings when nothing varies; groups are named when not all eight.
 std::string defaultSweepName(const std::string& labelSet, const analysis::SweepGrid& grid);
+
+// The one check of a sweep request: the grid (analysis::checkSweepGrid), the split and the run
+// selection, the name rule. The same bad request gets the same words from every front end.
+Status checkSweepRequest(const SweepRequest& request, SweepSource source = SweepSource::Database);
+
+// A sweep request as the CLI's options and the Python module's arguments spell it (names and
+// numbers), parsed and checked in one place: unknown names and bad values are errors in the same
+// words for both.
+struct SweepRequestText {
+  std::string labelSet;
+  std::vector<std::string> trainRuns;
+  std::vector<std::string> testRuns;
+  std::string labelsFile;
+  double holdout = 0.3;
+  std::string split = "by-run";
+  std::vector<std::string> groups;  // empty: all eight
+  std::vector<std::string> methods{"gmm"};
+  std::vector<int> orders{1, 2, 4, 8, 16, 32, 64};
+  std::vector<std::string> covariances{"nodal-full", "nodal-diag", "grand-full", "grand-diag"};
+  std::vector<double> floors{0.01, 0.03, 0.1};
+  std::vector<std::string> features{"normal"};
+  std::vector<std::uint64_t> seeds{1};
+  std::vector<std::string> decisions{"step"};
+  std::string reg = "floor";
+  std::string init = "kmeans++";
+  int restarts = 1;
+  int maxIterations = 100;
+  double tolerance = 1e-3;
+  std::string name;
+  int threads = 0;
+};
+Result<SweepRequest> parseSweepRequest(const SweepRequestText& text,
+                                       SweepSource source = SweepSource::Database);
+
+// The selected data of a sweep, however it was read: labelled training and test runs, and the
+// scene of each training run (by-scene).
+struct SweepData {
+  std::vector<analysis::LabelledRun> train;
+  std::vector<analysis::LabelledRun> test;
+  std::vector<std::string> sceneOfTrain;
+};
+// The session (data extracted once, fit jobs) of a request over its data, after the split's checks
+// (by-scene: at least two scenes). Every way of running a sweep starts here.
+Result<std::unique_ptr<analysis::SweepSession>> makeSweepSession(const SweepRequest& request,
+                                                                 const SweepData& data);
+
+// A sweep stored for workers (Workspace::planSweep).
+struct PlannedSweep {
+  std::int64_t sweepId = 0;
+  std::size_t cells = 0;
+  std::size_t jobs = 0;
+};
+
+// What a worker does (Workspace::workSweep).
+struct WorkOptions {
+  int threads = 1;           // claims in flight at once (each fit single-threaded); 0 = all cores
+  std::size_t maxCells = 0;  // stop after storing at least this many cells (0: until none is left)
+  std::string worker;        // the name claims carry (empty: host:pid)
+  double leaseSeconds = 120.0;
+  // A read-only copy of the database (an SQLite snapshot on node-local disk) to read the runs
+  // and labels from; empty: this database.
+  std::filesystem::path data;
+};
+struct WorkReport {
+  std::size_t jobs = 0;       // jobs this worker stored
+  std::size_t cells = 0;      // their cells
+  std::size_t failed = 0;     // jobs that failed here
+  std::size_t overtaken = 0;  // jobs another worker finished first (after this one's lease ran out)
+  bool cancelled = false;
+  double seconds = 0.0;
+  double extractSeconds = 0.0;
+  // Time spent claiming jobs and storing their cells (the database's share of the work).
+  double claimStoreSeconds = 0.0;
+};
+
+// Where a planned sweep stands (Workspace::sweepStatus): counts in cells, the claims that run or
+// failed, and an estimate of the time left.
+struct SweepStatus {
+  std::int64_t sweepId = 0;
+  std::string name;
+  std::string state;  // "planned", "running", "finished", "failed", "cancelled"
+  std::size_t cells = 0, done = 0, pending = 0, running = 0, failed = 0;
+  std::vector<storage::SweepClaim> runningClaims;
+  std::vector<storage::SweepClaim> failedClaims;
+  std::optional<double> secondsLeft;  // from the done jobs' times and the workers running
+  bool planned = true;                // false: an older sweep run in one process (no claims)
+};
+nlohmann::json sweepStatusJson(const SweepStatus& status, double now);
+
+// Single quotes for a POSIX shell.
+std::string shellQuoted(const std::string& text);
+// The commands that fill planned sweep `sweepId` of `database` (a file, made absolute, or a server
+// address shown without its password), as `tactile sweep plan` prints them and the workbench shows
+// them to copy: one worker process of one thread, and a Slurm job array of `workers` such tasks.
+std::string sweepWorkCommand(const std::string& database, std::int64_t sweepId);
+std::string sweepSubmitCommand(const std::string& database, std::int64_t sweepId, int workers);
 
 struct SweepOutcome {
   std::int64_t sweepId = 0;
@@ -245,8 +358,27 @@ class Workspace {
   // Stores an outcome of train() with request.store == false under request.modelName (or the
   // first free "<label set>-<n>").
   Result<TrainOutcome> storeTrained(TrainOutcome outcome, const TrainRequest& request);
-  // Runs a sweep over stored runs; every cell is stored as it finishes (a cancelled sweep keeps
-  // its finished cells). onCell sees each stored cell.
+  // Stores a sweep with every fit job pending, for workers (`tactile sweep plan`): the request is
+  // checked and its label set, runs and scenes looked up first; nothing is fitted. Each job carries
+  // its cost (analysis::sweepCellUnits of its group's labelled contact rows): the workers claim the
+  // most expensive first.
+  Result<PlannedSweep> planSweep(const SweepRequest& request);
+  // Claims pending jobs of a planned sweep one at a time (options.threads at once) and stores
+  // each job's cells once (`tactile sweep work`); onCell sees each stored cell, progress gets
+  // (cells done, cells) and stops the work when it returns false (running claims go back to
+  // pending). When no job is left it records the sweep's final state.
+  Result<WorkReport> workSweep(
+      std::int64_t sweepId, const WorkOptions& options,
+      const std::function<void(const analysis::SweepCellResult&)>& onCell = {},
+      const ProgressFn& progress = {});
+  Result<SweepStatus> sweepStatus(std::int64_t sweepId);
+  // A stored sweep's request (grid, label set, runs, split, name), read back from its
+  // configuration; `configuration` gets the configuration itself.
+  Result<SweepRequest> plannedRequest(std::int64_t sweepId,
+                                      nlohmann::json* configuration = nullptr);
+  // A sweep in one process: planSweep, then workSweep with request.threads (a cancelled sweep
+  // keeps its finished cells; its other jobs stay pending for `tactile sweep work`). onCell sees
+  // each stored cell.
   Result<SweepOutcome> sweep(
       const SweepRequest& request,
       const std::function<void(const analysis::SweepCellResult&)>& onCell = {},
@@ -287,6 +419,8 @@ class Workspace {
                               const analysis::ClassifyOptions& options = {});
 
  private:
+  // A stored sweep's configuration (its grid, data selection and state), parsed.
+  static Result<nlohmann::json> sweepConfigurationOf(const storage::SweepInfo& info);
   // Loads the named runs and the set's labels for them; every name must be a stored run.
   struct Labelled {
     std::vector<std::unique_ptr<RunData>> runs;

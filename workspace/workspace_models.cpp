@@ -64,13 +64,9 @@ Result<TrainOutcome> Workspace::trainSweepCell(std::int64_t sweepId, std::size_t
                    std::to_string(sweep->cells.size()) + " cells; there is no cell " +
                    std::to_string(cellIndex));
   }
-  json configuration;
-  try {
-    configuration = json::parse(info->configurationJson);
-  } catch (const json::exception& e) {
-    return failure("sweep " + std::to_string(sweepId) +
-                   ": stored JSON is malformed: " + plainJsonError(e));
-  }
+  auto parsed = sweepConfigurationOf(info.value());
+  if (!parsed) return parsed.error();
+  const json& configuration = parsed.value();
   if (!sweep->cells[cellIndex].ok) {
     return failure("cell " + std::to_string(cellIndex) + " of sweep " + std::to_string(sweepId) +
                    " has no model: " + sweep->cells[cellIndex].reason);

@@ -24,6 +24,7 @@
 #include "app/cli/cli_classifier_options.h"
 #include "app/cli/cli_common.h"
 #include "app/cli/cli_labels.h"
+#include "app/cli/cli_sweep.h"
 #include "base/file_text.h"
 #include "base/text_rules.h"
 #include "run/json_text.h"
@@ -33,6 +34,50 @@
 #include "workspace/workspace.h"
 
 namespace tactile::cli {
+
+workspace::SweepRequest sweepRequestOrUsage(const workspace::SweepRequestText& text,
+                                            workspace::SweepSource source) {
+  auto request = workspace::parseSweepRequest(text, source);
+  if (!request) throw UsageError(request.errorText());
+  return request.value();
+}
+
+void addSweepRequestOptions(CLI::App* cmd, workspace::SweepRequestText& r) {
+  cmd->add_option("--set", r.labelSet, "Label set (with --db)");
+  cmd->add_option("--train-runs", r.trainRuns, "Stored runs to train on (with --db)")
+      ->delimiter(',');
+  cmd->add_option("--name", r.name, "Name of the stored sweep (with --db)");
+  cmd->add_option("--test-runs", r.testRuns,
+                  "Score on these runs (stored run names with --db, A B or A,B; run files "
+                  "otherwise, A B, instead of a holdout)");
+  cmd->add_option("--groups", r.groups, "Groups (default all)")->delimiter(',');
+  cmd->add_option("--methods", r.methods, "gmm and/or gaussian")
+      ->delimiter(',')
+      ->capture_default_str();
+  cmd->add_option("--orders", r.orders, "Model orders")->delimiter(',')->capture_default_str();
+  cmd->add_option("--covs", r.covariances, "Covariance forms")
+      ->delimiter(',')
+      ->capture_default_str();
+  cmd->add_option("--floors", r.floors, "Variance floors")->delimiter(',')->capture_default_str();
+  cmd->add_option("--features", r.features, "Feature kinds")->delimiter(',')->capture_default_str();
+  cmd->add_option("--seeds", r.seeds, "Seeds")->delimiter(',')->capture_default_str();
+  cmd->add_option("--decisions", r.decisions,
+                  "Decision modes scored: step, online (HMM forward filter), offline "
+                  "(forward-backward); cells differing only here share one fit")
+      ->delimiter(',')
+      ->capture_default_str();
+  cmd->add_option("--split", r.split,
+                  "by-run (--test-runs, else the --holdout of each run) or by-scene (each "
+                  "scene's runs scored by cells trained without it)")
+      ->capture_default_str();
+  cmd->add_option("--reg", r.reg, "floor or add")->capture_default_str();
+  cmd->add_option("--init", r.init, "kmeans++ or random-from-data")->capture_default_str();
+  cmd->add_option("--restarts", r.restarts, "EM restarts per fit")->capture_default_str();
+  cmd->add_option("--max-iter", r.maxIterations, "EM iteration limit")->capture_default_str();
+  cmd->add_option("--tol", r.tolerance, "Relative convergence tolerance")->capture_default_str();
+  cmd->add_option("--threads", r.threads, "Worker threads (0 = all cores)")->capture_default_str();
+}
+
 namespace {
 
 using analysis::ClassifierMethod;
@@ -390,29 +435,9 @@ int runTrain(const TrainArgs& a) {
 // sweep
 
 struct SweepArgs {
-  std::string db;  // database form
-  std::string set;
-  std::vector<std::string> trainRuns;
-  std::string name;
-  std::vector<std::string> runs;
-  std::vector<std::string> testRuns;
-  std::string labels;
-  double holdout = 0.3;
-  std::vector<std::string> groups;
-  std::vector<std::string> methods{"gmm"};
-  std::vector<int> orders{1, 2, 4, 8, 16, 32, 64};
-  std::vector<std::string> covs{"nodal-full", "nodal-diag", "grand-full", "grand-diag"};
-  std::vector<double> floors{0.01, 0.03, 0.1};
-  std::vector<std::string> features{"normal"};
-  std::vector<std::uint64_t> seeds{1};
-  std::vector<std::string> decisions{"step"};
-  std::string split = "by-run";
-  std::string reg = "floor";
-  std::string init = "kmeans++";
-  int restarts = 1;
-  int maxIterations = 100;
-  double tolerance = 1e-3;
-  int threads = 0;
+  std::string db;                 // database form
+  std::vector<std::string> runs;  // run-file form: the run files (request.trainRuns)
+  workspace::SweepRequestText request;
   bool progress = false;
   std::string out;
   bool json = false;
@@ -427,32 +452,18 @@ ProgressFn sweepProgress(bool show) {
   };
 }
 
-int runSweepDb(const SweepArgs& a, const analysis::SweepGrid& grid) {
-  if (a.set.empty()) throw UsageError("--db needs --set SET (the label set to sweep on)");
-  if (!a.name.empty()) requireValidName(a.name, "--name", "sweep");
-  if (!a.runs.empty() || !a.labels.empty()) {
+int runSweepDb(const SweepArgs& a) {
+  if (!a.runs.empty() || !a.request.labelsFile.empty()) {
     throw UsageError(
         "--runs and --labels are for run files; with --db use --train-runs and "
         "--test-runs");
   }
-  if (a.trainRuns.empty() || (a.testRuns.empty() && a.split != "by-scene")) {
-    throw UsageError(
-        "--db needs --train-runs and --test-runs (stored run names), or "
-        "--train-runs and --split by-scene");
-  }
+  workspace::SweepRequestText text = a.request;
+  text.testRuns = splitNames(text.testRuns);
+  const workspace::SweepRequest request =
+      sweepRequestOrUsage(text, workspace::SweepSource::Database);
   checkOutput(a.out, {a.db});
   auto ws = openWorkspace(a.db, true);
-  workspace::SweepRequest request;
-  request.labelSet = a.set;
-  request.trainRuns = a.trainRuns;
-  request.testRuns = splitNames(a.testRuns);
-  request.grid = grid;
-  request.name = a.name;
-  request.threads = a.threads;
-  const auto split = workspace::parseSplitMode(a.split);
-  if (!split || *split == workspace::SplitMode::LeaveOneRunOut)
-    throw UsageError("unknown --split " + quotedInput(a.split) + " for a sweep (by-run, by-scene)");
-  request.split = *split;
   auto outcome = ws->sweep(request, {}, sweepProgress(a.progress));
   if (!outcome) throw std::runtime_error(a.db + ": " + outcome.errorText());
   const analysis::SweepResult& result = outcome->result;
@@ -477,79 +488,42 @@ int runSweepDb(const SweepArgs& a, const analysis::SweepGrid& grid) {
 }
 
 int runSweepVerb(const SweepArgs& a) {
-  analysis::SweepGrid grid;
-  grid.groups = parseGroups(a.groups);
-  grid.methods = parseNames<ClassifierMethod>(a.methods, parseClassifierMethod, "method");
-  grid.forms = parseNames<CovarianceForm>(a.covs, parseCovarianceForm, "covariance form");
-  grid.features = parseNames<FeatureKind>(a.features, analysis::parseFeatureKind, "features");
-  grid.orders = a.orders;
-  grid.varianceFloors = a.floors;
-  grid.seeds = a.seeds;
-  grid.decisions =
-      parseNames<analysis::DecisionMode>(a.decisions, analysis::parseDecisionMode, "decision");
-  // The same checks as train's --order and --floor.
-  for (int k : grid.orders)
-    checkOrderOption("--orders", k);
-  for (double f : grid.varianceFloors)
-    checkFloorOption("--floors", f);
-  if (a.restarts < 1) throw UsageError("--restarts must be at least 1");
-  if (a.maxIterations < 1) throw UsageError("--max-iter must be at least 1");
-  checkNumberOption("--tol", a.tolerance, 0.0, RangeEnd::Closed, HUGE_VAL, RangeEnd::Open);
-  const auto reg = parseRegularization(a.reg);
-  if (!reg) throw UsageError("unknown --reg " + quotedInput(a.reg));
-  const auto init = parseGmmInit(a.init);
-  if (!init) throw UsageError("unknown --init " + quotedInput(a.init));
-  grid.regularization = *reg;
-  grid.init = *init;
-  grid.restarts = a.restarts;
-  grid.maxIterations = a.maxIterations;
-  grid.tolerance = a.tolerance;
-  if (!a.db.empty()) return runSweepDb(a, grid);
+  if (!a.db.empty()) return runSweepDb(a);
   if (a.runs.empty()) throw UsageError("give --runs FILES (run files) or --db DB --set SET");
   if (a.out.empty()) throw UsageError("--runs needs --out SWEEP.json");
-  if (!a.set.empty() || !a.trainRuns.empty() || !a.name.empty()) {
+  if (!a.request.labelSet.empty() || !a.request.trainRuns.empty() || !a.request.name.empty()) {
     throw UsageError("--set, --train-runs and --name need --db (run files: --out names the file)");
   }
-  checkNumberOption("--holdout", a.holdout, 0.0, RangeEnd::Open, 1.0, RangeEnd::Open);
-  checkOutput(a.out, joined(a.runs, a.testRuns, a.labels));
+  workspace::SweepRequestText text = a.request;
+  text.trainRuns = a.runs;
+  const workspace::SweepRequest request = sweepRequestOrUsage(text, workspace::SweepSource::Files);
+  const bool byScene = request.split == workspace::SplitMode::ByScene;
+  checkOutput(a.out, joined(a.runs, request.testRuns, request.labelsFile));
 
   LoadedRuns loaded, loadedTest;
   readRuns(a.runs, loaded);
-  attachLabels(loaded, a.labels);
-  std::vector<LabelledRun> train, test;
-  const bool byScene = a.split == "by-scene";
-  if (!byScene && a.split != "by-run") {
-    throw UsageError("unknown --split " + quotedInput(a.split) + " for a sweep (by-run, by-scene)");
-  }
-  if (byScene && !a.testRuns.empty()) {
-    throw UsageError("--split by-scene scores every scene of --runs in turn; give no --test-runs");
-  }
-  std::vector<std::string> sceneOfRun;
+  attachLabels(loaded, request.labelsFile);
+  workspace::SweepData data;
   for (std::size_t i = 0; i < loaded.runs.size(); ++i) {
     const std::string* scene = loaded.runs[i].meta("scene");
-    sceneOfRun.push_back(scene != nullptr && !scene->empty() ? *scene : loaded.paths[i]);
+    data.sceneOfTrain.push_back(scene != nullptr && !scene->empty() ? *scene : loaded.paths[i]);
   }
   if (byScene) {
-    train = loaded.labelled;
-  } else if (!a.testRuns.empty()) {
-    readRuns(a.testRuns, loadedTest);
-    attachLabels(loadedTest, a.labels);
-    train = loaded.labelled;
-    test = loadedTest.labelled;
+    data.train = loaded.labelled;
+  } else if (!request.testRuns.empty()) {
+    readRuns(request.testRuns, loadedTest);
+    attachLabels(loadedTest, request.labelsFile);
+    data.train = loaded.labelled;
+    data.test = loadedTest.labelled;
   } else {
-    analysis::splitLabelledRuns(loaded.labelled, a.holdout, train, test);
+    analysis::splitLabelledRuns(loaded.labelled, request.holdout, data.train, data.test);
   }
+  auto session = workspace::makeSweepSession(request, data);
+  if (!session) throw std::runtime_error(session.errorText());
   analysis::SweepOptions options;
-  options.threads = a.threads;
-  const ProgressFn progress = sweepProgress(a.progress);
-  if (byScene && std::set<std::string>(sceneOfRun.begin(), sceneOfRun.end()).size() < 2) {
-    throw std::runtime_error(
-        "--split by-scene needs runs of at least two scenes (their `scene` "
-        "metadata)");
-  }
+  options.threads = request.threads;
   const analysis::SweepResult result =
-      byScene ? analysis::runSweepByScene(train, sceneOfRun, grid, options, progress)
-              : analysis::runSweep(train, test, grid, options, progress);
+      analysis::runSweepSession(*session.value(), options, sweepProgress(a.progress));
   // Each distinct warning once (cells of one group and variance floor share them).
   std::vector<std::string> warnings;
   for (const auto& c : result.cells) {
@@ -564,9 +538,9 @@ int runSweepVerb(const SweepArgs& a) {
   json doc = analysis::sweepToJson(result);
   doc["runs"] = loaded.paths;
   doc["test_runs"] = loadedTest.paths;
-  doc["labels"] = a.labels.empty() ? "truth columns" : a.labels;
-  doc["holdout"] = a.testRuns.empty() && !byScene ? a.holdout : 0.0;
-  doc["split"] = a.split;
+  doc["labels"] = request.labelsFile.empty() ? "truth columns" : request.labelsFile;
+  doc["holdout"] = request.testRuns.empty() && !byScene ? request.holdout : 0.0;
+  doc["split"] = std::string(workspace::splitModeName(request.split));
   writeText(a.out, dumpJson(doc, 1) + "\n");
   std::size_t ok = 0;
   for (const auto& c : result.cells)
@@ -952,59 +926,23 @@ void registerLearnVerbs(CLI::App& app, CLI::App& /*bench*/) {
     cmd->add_option("--db", args->db,
                     "Database holding the runs and label sets (default: TACTILE_DB when no "
                     "--runs are given)");
-    cmd->add_option("--set", args->set, "Label set (with --db)");
-    cmd->add_option("--train-runs", args->trainRuns, "Stored runs to train on (with --db)")
-        ->delimiter(',');
-    cmd->add_option("--name", args->name, "Name of the stored sweep (with --db)");
     cmd->add_option("--runs", args->runs, "Run CSV files (A B; a path is never split at a comma)");
-    cmd->add_option("--labels", args->labels, "Label CSV (default: the runs' truth columns)");
-    cmd->add_option("--test-runs", args->testRuns,
-                    "Score on these runs (stored run names with --db, A B or A,B; run files "
-                    "otherwise, A B, instead of a holdout)");
-    cmd->add_option("--holdout", args->holdout, "Last fraction of each run's steps held out")
+    cmd->add_option("--labels", args->request.labelsFile,
+                    "Label CSV (default: the runs' truth columns)");
+    cmd->add_option("--holdout", args->request.holdout,
+                    "Last fraction of each run's steps held out")
         ->capture_default_str();
-    cmd->add_option("--groups", args->groups, "Groups (default all)")->delimiter(',');
-    cmd->add_option("--methods", args->methods, "gmm and/or gaussian")
-        ->delimiter(',')
-        ->capture_default_str();
-    cmd->add_option("--orders", args->orders, "Model orders")
-        ->delimiter(',')
-        ->capture_default_str();
-    cmd->add_option("--covs", args->covs, "Covariance forms")
-        ->delimiter(',')
-        ->capture_default_str();
-    cmd->add_option("--floors", args->floors, "Variance floors")
-        ->delimiter(',')
-        ->capture_default_str();
-    cmd->add_option("--features", args->features, "Feature kinds")
-        ->delimiter(',')
-        ->capture_default_str();
-    cmd->add_option("--seeds", args->seeds, "Seeds")->delimiter(',')->capture_default_str();
-    cmd->add_option("--decisions", args->decisions,
-                    "Decision modes scored: step, online (HMM forward filter), offline "
-                    "(forward-backward); cells differing only here share one fit")
-        ->delimiter(',')
-        ->capture_default_str();
-    cmd->add_option("--split", args->split,
-                    "by-run (--test-runs, else the --holdout of each run) or by-scene (each "
-                    "scene's runs scored by cells trained without it)")
-        ->capture_default_str();
-    cmd->add_option("--reg", args->reg, "floor or add")->capture_default_str();
-    cmd->add_option("--init", args->init, "kmeans++ or random-from-data")->capture_default_str();
-    cmd->add_option("--restarts", args->restarts, "EM restarts per fit")->capture_default_str();
-    cmd->add_option("--max-iter", args->maxIterations, "EM iteration limit")->capture_default_str();
-    cmd->add_option("--tol", args->tolerance, "Relative convergence tolerance")
-        ->capture_default_str();
-    cmd->add_option("--threads", args->threads, "Worker threads (0 = all cores)")
-        ->capture_default_str();
+    addSweepRequestOptions(cmd, args->request);
     cmd->add_flag("--progress", args->progress, "Print progress on stderr");
     cmd->add_option("--out", args->out, "SWEEP.json to write (optional with --db)");
     cmd->add_flag("--json", args->json, "Print a JSON summary");
-    setAction(cmd, [args] {
+    setAction(cmd, [args, cmd] {
+      if (!cmd->get_subcommands().empty()) return lastExitCode();  // a sub-verb ran
       SweepArgs a = *args;
       if (a.db.empty() && a.runs.empty()) a.db = databaseFromEnvironment();
       return runSweepVerb(a);
     });
+    registerSweepJobVerbs(*cmd);
   }
   // report
   {

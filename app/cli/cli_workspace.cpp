@@ -13,6 +13,7 @@
 
 #include "analysis/model_file.h"
 #include "app/cli/cli_common.h"
+#include "app/cli/cli_sweep.h"
 #include "base/file_text.h"
 #include "run/json_text.h"
 #include "storage/run_database.h"
@@ -278,7 +279,7 @@ void registerWorkspaceVerbs(CLI::App& app) {
     setAction(cmd, [c, names] { return modelsDelete(*c, *names); });
   }
 
-  CLI::App* sweeps = app.add_subcommand("sweeps", "List and delete stored sweeps");
+  CLI::App* sweeps = app.add_subcommand("sweeps", "List, export and delete stored sweeps");
   sweeps->require_subcommand(1);
   {
     auto c = std::make_shared<Common>();
@@ -294,6 +295,7 @@ void registerWorkspaceVerbs(CLI::App& app) {
     cmd->add_option("IDS", *ids, "Sweep ids")->required()->delimiter(',');
     setAction(cmd, [c, ids] { return sweepsDelete(*c, *ids); });
   }
+  registerSweepExportVerb(*sweeps);
 }
 
 }  // namespace tactile::cli

@@ -1198,9 +1198,11 @@ TrainingDialog* MainWindow::trainingDialog() {
   if (!workspace_) return nullptr;
   if (training_ == nullptr) {
     training_ = new TrainingDialog(*workspace_, dbPath_, this);
-    connect(training_, &TrainingDialog::sweepStored, this, [this](qint64 id) {
-      if (Status s = openSweep(id); !s) showError(QString::fromStdString(s.errorText()));
-    });
+    for (auto signal : {&TrainingDialog::sweepStored, &TrainingDialog::sweepPlanned}) {
+      connect(training_, signal, this, [this](qint64 id) {
+        if (Status s = openSweep(id); !s) showError(QString::fromStdString(s.errorText()));
+      });
+    }
     connect(training_, &TrainingDialog::modelTrained, this,
             [this](const QString& name) { showMessage(tr("Model '%1' stored").arg(name)); });
   }

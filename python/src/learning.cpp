@@ -422,73 +422,18 @@ py::tuple train(Database& db, const TrainArgs& a) {
   return py::make_tuple(report, model);
 }
 
-struct SweepArgs {
-  std::string set;
-  std::vector<std::string> trainRuns, testRuns, groups;
-  std::vector<std::string> methods{"gmm"};
-  std::vector<int> orders{1, 2, 4, 8, 16, 32, 64};
-  std::vector<std::string> covariances{"nodal-full", "nodal-diag", "grand-full", "grand-diag"};
-  std::vector<double> floors{0.01, 0.03, 0.1};
-  std::vector<std::string> features{"normal"};
-  std::vector<std::uint64_t> seeds{1};
-  std::vector<std::string> decisions{"step"};
-  std::string split = "by-run";
-  std::string reg = "floor";
-  std::string init = "kmeans++";
-  int restarts = 1;
-  int maxIterations = 100;
-  double tolerance = 1e-3;
-  std::string name;
-  int threads = 0;
-};
-
-py::tuple sweep(Database& db, const SweepArgs& a) {
-  analysis::SweepGrid grid;
-  for (const std::string& g : a.groups)
-    grid.groups.push_back(parseGroup(g));
-  grid.methods.clear();
-  for (const std::string& m : a.methods) {
-    grid.methods.push_back(parsed<analysis::ClassifierMethod>(m, analysis::parseClassifierMethod,
-                                                              "method (gmm or gaussian)"));
+// The sweep's arguments are the request's text form, parsed and checked by the same function as
+// the CLI's options (workspace::parseSweepRequest): the same bad request, the same words.
+// scikit-learn's covariance names ("diag", "tied", ...) are this module's everywhere, the sweep's
+// too: they are spelt in this product's words before the request is parsed.
+py::tuple sweep(Database& db, workspace::SweepRequestText a) {
+  for (std::string& c : a.covariances) {
+    if (c == "full" || c == "diag" || c == "tied")
+      c = std::string(analysis::covarianceFormName(parseForm(c)));
   }
-  grid.forms.clear();
-  for (const std::string& c : a.covariances)
-    grid.forms.push_back(parseForm(c));
-  grid.features.clear();
-  for (const std::string& f : a.features)
-    grid.features.push_back(parseKind(f));
-  grid.decisions.clear();
-  for (const std::string& d : a.decisions)
-    grid.decisions.push_back(parseDecision(d));
-  for (int k : a.orders)
-    if (k < 1) throw py::value_error("orders must be >= 1");
-  for (double f : a.floors)
-    if (!(f >= 0.0)) throw py::value_error("floors must be >= 0");
-  grid.orders = a.orders;
-  grid.varianceFloors = a.floors;
-  grid.seeds = a.seeds;
-  grid.regularization =
-      parsed<analysis::Regularization>(a.reg, analysis::parseRegularization, "reg");
-  grid.init = parsed<analysis::GmmInit>(a.init, analysis::parseGmmInit, "init");
-  grid.restarts = a.restarts;
-  grid.maxIterations = a.maxIterations;
-  grid.tolerance = a.tolerance;
-  const auto split = workspace::parseSplitMode(a.split);
-  if (!split || *split == workspace::SplitMode::LeaveOneRunOut)
-    throw py::value_error("unknown split '" + a.split + "' for a sweep (by-run, by-scene)");
-  if (a.trainRuns.empty() || (a.testRuns.empty() && *split != workspace::SplitMode::ByScene)) {
-    throw py::value_error(
-        "a sweep needs train_runs and test_runs, or train_runs and "
-        "split='by-scene'");
-  }
-  workspace::SweepRequest request;
-  request.labelSet = a.set;
-  request.trainRuns = a.trainRuns;
-  request.testRuns = a.testRuns;
-  request.grid = grid;
-  request.name = a.name;
-  request.threads = a.threads;
-  request.split = *split;
+  auto parsedRequest = workspace::parseSweepRequest(a, workspace::SweepSource::Database);
+  if (!parsedRequest) raiseValueError(parsedRequest.error());
+  const workspace::SweepRequest& request = parsedRequest.value();
   Result<workspace::SweepOutcome> outcome = Error("not swept");
   workspace::Workspace& ws = db.ws();
   runInterruptible([&](const ProgressFn& progress) { outcome = ws.sweep(request, {}, progress); });
@@ -624,27 +569,28 @@ void bindLearning(py::module_& m) {
       .def_readwrite("store", &TrainArgs::store);
   m.def("train", &train, py::arg("db"), py::arg("args"));
 
-  py::class_<SweepArgs>(m, "SweepArgs")
+  using SweepText = workspace::SweepRequestText;
+  py::class_<SweepText>(m, "SweepArgs")
       .def(py::init<>())
-      .def_readwrite("set", &SweepArgs::set)
-      .def_readwrite("train_runs", &SweepArgs::trainRuns)
-      .def_readwrite("test_runs", &SweepArgs::testRuns)
-      .def_readwrite("groups", &SweepArgs::groups)
-      .def_readwrite("methods", &SweepArgs::methods)
-      .def_readwrite("orders", &SweepArgs::orders)
-      .def_readwrite("covariance_types", &SweepArgs::covariances)
-      .def_readwrite("variance_floors", &SweepArgs::floors)
-      .def_readwrite("features", &SweepArgs::features)
-      .def_readwrite("seeds", &SweepArgs::seeds)
-      .def_readwrite("decisions", &SweepArgs::decisions)
-      .def_readwrite("split", &SweepArgs::split)
-      .def_readwrite("reg", &SweepArgs::reg)
-      .def_readwrite("init", &SweepArgs::init)
-      .def_readwrite("n_init", &SweepArgs::restarts)
-      .def_readwrite("max_iter", &SweepArgs::maxIterations)
-      .def_readwrite("tol", &SweepArgs::tolerance)
-      .def_readwrite("name", &SweepArgs::name)
-      .def_readwrite("n_jobs", &SweepArgs::threads);
+      .def_readwrite("set", &SweepText::labelSet)
+      .def_readwrite("train_runs", &SweepText::trainRuns)
+      .def_readwrite("test_runs", &SweepText::testRuns)
+      .def_readwrite("groups", &SweepText::groups)
+      .def_readwrite("methods", &SweepText::methods)
+      .def_readwrite("orders", &SweepText::orders)
+      .def_readwrite("covariance_types", &SweepText::covariances)
+      .def_readwrite("variance_floors", &SweepText::floors)
+      .def_readwrite("features", &SweepText::features)
+      .def_readwrite("seeds", &SweepText::seeds)
+      .def_readwrite("decisions", &SweepText::decisions)
+      .def_readwrite("split", &SweepText::split)
+      .def_readwrite("reg", &SweepText::reg)
+      .def_readwrite("init", &SweepText::init)
+      .def_readwrite("n_init", &SweepText::restarts)
+      .def_readwrite("max_iter", &SweepText::maxIterations)
+      .def_readwrite("tol", &SweepText::tolerance)
+      .def_readwrite("name", &SweepText::name)
+      .def_readwrite("n_jobs", &SweepText::threads);
   m.def("sweep", &sweep, py::arg("db"), py::arg("args"));
 }
 

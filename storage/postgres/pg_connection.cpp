@@ -107,7 +107,7 @@ std::string missingRight(PGconn* conn, const std::string& text) {
   if (at == std::string::npos) return {};
   const std::string table = text.substr(at + marker.size());
   std::string right = "admin right (importing, renaming and deleting runs)";
-  if (table == "models" || table == "sweeps" || table == "sweep_cells") {
+  if (table == "models" || table == "sweeps" || table == "sweep_cells" || table == "sweep_claims") {
     right = "researcher right (keeping models and sweeps)";
   } else if (table.starts_with("label_") || table == "assignments") {
     right = "annotator right (editing labels)";
@@ -442,6 +442,7 @@ class PgConnection : public ConnectionBackend {
     noteChanges(result.get());
   }
   void begin() override { exec(kBeginWrite); }
+  void beginRowLocking() override { exec("BEGIN"); }
   void commit() override {
     // COMMIT of a failed transaction rolls it back without an error: say so instead.
     if (PQtransactionStatus(conn_) == PQTRANS_INERROR) {

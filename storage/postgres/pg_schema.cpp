@@ -7,7 +7,7 @@
 namespace tactile::storage::db {
 namespace {
 
-// Schema version 6 of storage/schema.cpp in PostgreSQL's types. Text that is sorted or compared
+// Schema version 7 of storage/schema.cpp in PostgreSQL's types. Text that is sorted or compared
 // uses the "C" collation, so names sort byte by byte as they do in an SQLite file, whatever the
 // server's locale. The step and summary rows carry no foreign key: PostgreSQL checks one with a
 // trigger per row, which made an import three times slower (docs/bench-storage.md); every delete
@@ -157,6 +157,26 @@ CREATE TRIGGER label_revisions_notify AFTER INSERT ON label_revisions
   FOR EACH ROW EXECUTE FUNCTION tactile_notify_labels();
 )sql";
 
+// What version 7 added to version 6 (storage/schema.cpp), also run by `tactile db create` on an
+// older server: the claims of planned sweep jobs.
+constexpr std::string_view kVersion7 = R"sql(
+CREATE TABLE sweep_claims(
+  sweep_id BIGINT NOT NULL REFERENCES sweeps(id) ON DELETE CASCADE,
+  job BIGINT NOT NULL,
+  cells BIGINT NOT NULL,
+  cost DOUBLE PRECISION NOT NULL DEFAULT 0,
+  state TEXT COLLATE "C" NOT NULL CHECK(state IN ('pending','running','done','failed')),
+  worker TEXT COLLATE "C" NOT NULL DEFAULT '',
+  lease_until DOUBLE PRECISION NOT NULL DEFAULT 0,
+  attempts BIGINT NOT NULL DEFAULT 0,
+  error TEXT NOT NULL DEFAULT '',
+  seconds DOUBLE PRECISION NOT NULL DEFAULT 0,
+  finished_at TEXT COLLATE "C" NOT NULL DEFAULT '',
+  PRIMARY KEY(sweep_id, job)
+);
+CREATE INDEX sweep_claims_by_state ON sweep_claims(sweep_id, state, cost DESC, job);
+)sql";
+
 // Serialises schema creation between processes (pg_advisory_xact_lock); "tactmeta" in ASCII.
 constexpr const char* kCreateLock = "SELECT pg_advisory_xact_lock(8386658459335026017)";
 
@@ -188,9 +208,11 @@ void createServerSchema(Connection& connection) {
   const ServerContent content = inspectServer(connection);
   if (content.tactile) {
     // Made by another process meanwhile, or before: brought to this version where it is older.
-    if (content.version == 5 && kSchemaVersion == 6) {
-      connection.exec(kVersion6);
-      connection.exec("UPDATE tactile_meta SET value = '6' WHERE key = 'schema_version'");
+    if (content.version >= 5 && content.version < kSchemaVersion) {
+      if (content.version < 6) connection.exec(kVersion6);
+      connection.exec(kVersion7);
+      connection.exec("UPDATE tactile_meta SET value = '" + std::to_string(kSchemaVersion) +
+                      "' WHERE key = 'schema_version'");
       transaction.commit();
     }
     return;
@@ -204,6 +226,7 @@ void createServerSchema(Connection& connection) {
   }
   connection.exec(kSchema);
   connection.exec(kVersion6);
+  connection.exec(kVersion7);
   connection.exec("INSERT INTO tactile_meta(key, value) VALUES ('application_id', '" +
                   std::to_string(kApplicationId) + "'), ('schema_version', '" +
                   std::to_string(kSchemaVersion) + "')");
@@ -253,7 +276,7 @@ DO $$ DECLARE s text := quote_ident(current_schema()); BEGIN
   EXECUTE 'GRANT INSERT, UPDATE, DELETE ON ' || s || '.label_sets, ' || s || '.label_segments, '
     || s || '.label_revisions, ' || s || '.assignments TO tactile_annotator';
   EXECUTE 'GRANT INSERT, UPDATE, DELETE ON ' || s || '.models, ' || s || '.sweeps, ' || s
-    || '.sweep_cells TO tactile_researcher';
+    || '.sweep_cells, ' || s || '.sweep_claims TO tactile_researcher';
   EXECUTE 'GRANT ALL ON ALL TABLES IN SCHEMA ' || s || ' TO tactile_admin';
 END $$)sql");
   // The login role, with exactly the right asked for.

@@ -264,7 +264,7 @@ EOF
     fail "round $round: $(cat imp$round.*.err)"
   fi
   "$T" db check --db "$db" > "check$round.out" || fail "round $round check: $(cat "check$round.out")"
-  grep -q "ok, schema version 6, $files runs, $((files * 200)) steps" "check$round.out" ||
+  grep -q "ok, schema version 7, $files runs, $((files * 200)) steps" "check$round.out" ||
     fail "round $round: $(cat "check$round.out")"
   round=$((round + 1))
 done

@@ -61,17 +61,17 @@ expect_usage() {
 R="--runs sim/run_0000.csv sim/run_0001.csv"
 # shellcheck disable=SC2086
 {
-  expect_usage "sweep --floors nan" "tactile: error: --floors must be a finite number >= 0, got nan" \
+  expect_usage "sweep --floors nan" "tactile: error: variance floor nan is out of range" \
     "$T" sweep $R --groups R --floors nan --out s.json
-  expect_usage "sweep --floors inf" "--floors must be a finite number >= 0, got inf" \
+  expect_usage "sweep --floors inf" "variance floor inf is out of range" \
     "$T" sweep $R --groups R --floors inf --out s.json
-  expect_usage "sweep --floors 1e-320" "--floors must be 0 (no floor) or at least" \
+  expect_usage "sweep --floors 1e-320" "a floor is 0 (none) or a finite number of at least" \
     "$T" sweep $R --groups R --floors 1e-320 --out s.json
-  expect_usage "sweep --holdout nan" "--holdout must be a number in (0, 1), got nan" \
+  expect_usage "sweep --holdout nan" "the held-out share must be between 0 and 1" \
     "$T" sweep $R --groups R --holdout nan --out s.json
-  expect_usage "sweep --orders 1000000000" "--orders must be between 1 and 4096, got 1000000000" \
+  expect_usage "sweep --orders 1000000000" "model order 1000000000 is out of range: an order is a whole number from 1 to 4096" \
     "$T" sweep $R --groups R --orders 1000000000 --out s.json
-  expect_usage "sweep --tol nan" "--tol must be a finite number >= 0, got nan" \
+  expect_usage "sweep --tol nan" "the tolerance must be a finite number of at least 0" \
     "$T" sweep $R --groups R --tol nan --out s.json
   expect_usage "train --holdout nan" "--holdout must be a number in \[0, 1), got nan" \
     "$T" train $R --groups R --holdout nan --out m.json

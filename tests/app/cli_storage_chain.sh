@@ -37,7 +37,7 @@ done
 cmp -s back.csv runs/run_0001.csv || fail "exported run differs from the imported file"
 
 "$T" db check --db c.db > check.out || fail "db check exited $?"
-grep -q "ok, schema version 6, 4 runs, $steps steps" check.out || fail "check: $(cat check.out)"
+grep -q "ok, schema version 7, 4 runs, $steps steps" check.out || fail "check: $(cat check.out)"
 
 # A file broken in its 100th row: named by file and line, nothing of it stored.
 awk 'NR == 1, /^step,/ { print; next } { n++; if (n == 100) sub(/^[0-9]+,[^,]*/, "99,abc"); print }' \

@@ -10,6 +10,7 @@
 #include <QHeaderView>
 #include <QLabel>
 #include <QLineEdit>
+#include <QPlainTextEdit>
 #include <QProcess>
 #include <QProgressBar>
 #include <QPushButton>
@@ -116,6 +117,8 @@ class TrainingDialogTest : public QObject {
   void resultsTableHasRoomForEightGroups();
   void planNamesGroupsTheTestRunsCannotScore();
   void planEstimatesFromEachCellsOwnCost();
+  void orderOutOfRangeGetsTheCommandLinesWords();
+  void resultsWindowFillsAsAWorkerProcessStoresCells();
 
  private:
   std::unique_ptr<QTemporaryDir> settingsDir_;
@@ -362,14 +365,16 @@ void TrainingDialogTest::badGridIsReportedAndNothingStarts() {
   dialog.setGrid(QStringLiteral("1"), QStringLiteral("-0.1"), QStringLiteral("1"));
   dialog.startSweep();
   QVERIFY(!dialog.worker()->isRunning());
-  QVERIFY(dialog.statusLabel()->text().contains(QStringLiteral("negative")));
-  QVERIFY(dialog.planLabel()->text().contains(QStringLiteral("negative")));
+  QVERIFY2(dialog.statusLabel()->text().contains(QStringLiteral("-0.1 is out of range")),
+           qPrintable(dialog.statusLabel()->text()));
+  QVERIFY2(dialog.planLabel()->text().contains(QStringLiteral("-0.1 is out of range")),
+           qPrintable(dialog.planLabel()->text()));
   auto sweeps = f.workspace->sweeps();
   QVERIFY(sweeps.ok());
   QVERIFY(sweeps->empty());
   // Once the form is fixed the message goes, and the plan counts the cells before any start.
   dialog.setGrid(QStringLiteral("1, 2"), QStringLiteral("0.1"), QStringLiteral("1"));
-  QVERIFY2(!dialog.statusLabel()->text().contains(QStringLiteral("negative")),
+  QVERIFY2(!dialog.statusLabel()->text().contains(QStringLiteral("out of range")),
            qPrintable(dialog.statusLabel()->text()));
   auto request = dialog.sweepRequest();
   QVERIFY(request.ok());
@@ -616,6 +621,114 @@ void TrainingDialogTest::planEstimatesFromEachCellsOwnCost() {
   // Full covariance costs more per row than diagonal, at the same orders.
   dialog.setFormsChecked({analysis::CovarianceForm::NodalFull});
   QVERIFY(dialog.plannedSeconds() > large);
+}
+
+// The dialog checks a sweep with the one check of a request: order 5000 gets the words
+// `tactile sweep plan` gives, and nothing is planned.
+void TrainingDialogTest::orderOutOfRangeGetsTheCommandLinesWords() {
+  LearningFixture f;
+  TrainingDialog dialog(*f.workspace, QString::fromStdString(f.dbPath));
+  smallGrid(dialog);
+  dialog.setGrid(QStringLiteral("1, 5000"), QStringLiteral("0.1"), QStringLiteral("1"));
+  auto request = dialog.sweepRequest();
+  QVERIFY(!request.ok());
+  const QString words = QString::fromStdString(request.errorText());
+  QCOMPARE(words,
+           QStringLiteral("model order 5000 is out of range: an order is a whole number from 1 "
+                          "to 4096"));
+  QVERIFY2(dialog.planLabel()->text().contains(words), qPrintable(dialog.planLabel()->text()));
+  dialog.planForWorkers();
+  QVERIFY2(dialog.statusLabel()->text().contains(words), qPrintable(dialog.statusLabel()->text()));
+  QVERIFY(!dialog.workerCommands()->isVisible());
+
+  QProcess cli;
+  cli.start(QStringLiteral(TACTILE_CLI),
+            {QStringLiteral("sweep"), QStringLiteral("plan"), QStringLiteral("--db"),
+             QString::fromStdString(f.dbPath), QStringLiteral("--set"), QStringLiteral("truth"),
+             QStringLiteral("--train-runs"), QStringLiteral("room1_demo,room2_demo"),
+             QStringLiteral("--test-runs"), QStringLiteral("room3_demo"),
+             QStringLiteral("--orders"), QStringLiteral("1,5000")});
+  QVERIFY(cli.waitForFinished(60000));
+  QVERIFY(cli.exitCode() != 0);
+  const QString cliWords = QString::fromUtf8(cli.readAllStandardError());
+  QVERIFY2(cliWords.startsWith(QStringLiteral("tactile: error: ") + words), qPrintable(cliWords));
+  auto sweeps = f.workspace->sweeps();
+  QVERIFY(sweeps.ok());
+  QVERIFY(sweeps->empty());
+}
+
+// Plan for workers stores the sweep with every cell pending and shows the commands that fill it;
+// the results window follows it while the real `tactile sweep work`, run as shown, stores cells:
+// the counts, the cells and the title follow, and the window stops looking once all are done.
+void TrainingDialogTest::resultsWindowFillsAsAWorkerProcessStoresCells() {
+  LearningFixture f;
+  TrainingDialog dialog(*f.workspace, QString::fromStdString(f.dbPath));
+  smallGrid(dialog);
+  QSignalSpy planned(&dialog, &TrainingDialog::sweepPlanned);
+  dialog.planForWorkers();
+  QCOMPARE(planned.count(), 1);
+  const qint64 id = planned.first().at(0).toLongLong();
+  QVERIFY(id > 0);
+  const QStringList lines = dialog.workerCommands()->toPlainText().split(QLatin1Char('\n'));
+  const QString work = QStringLiteral("tactile sweep work --db %1 --sweep %2 --threads 1")
+                           .arg(QString::fromStdString(f.dbPath))
+                           .arg(id);
+  QVERIFY2(lines.contains(work), qPrintable(dialog.workerCommands()->toPlainText()));
+  QVERIFY2(lines.contains(QStringLiteral("tactile sweep submit --db %1 --sweep %2 --workers 4")
+                              .arg(QString::fromStdString(f.dbPath))
+                              .arg(id)),
+           qPrintable(dialog.workerCommands()->toPlainText()));
+
+  gui::SweepResultsWindow window(*f.workspace, QString::fromStdString(f.dbPath));
+  QVERIFY(window.showSweep(id).ok());
+  window.show();
+  QVERIFY(QTest::qWaitForWindowExposed(&window));
+  QVERIFY(window.following());
+  QVERIFY(window.sweep().cells.empty());
+  QVERIFY2(window.statusLabel()->text().startsWith(QStringLiteral("0 of 8 cells done")),
+           qPrintable(window.statusLabel()->text()));
+  QVERIFY2(window.statusLabel()->text().contains(QStringLiteral("waiting for workers")),
+           qPrintable(window.statusLabel()->text()));
+
+  // The shown command, run: first stopping after two cells, then to the end.
+  QStringList args = work.split(QLatin1Char(' '));
+  args.removeFirst();
+  QProcess worker;
+  worker.start(QStringLiteral(TACTILE_CLI),
+               args + QStringList{QStringLiteral("--max-cells"), QStringLiteral("2")});
+  QVERIFY(worker.waitForFinished(120000));
+  QVERIFY2(worker.exitCode() == 0, worker.readAllStandardError().constData());
+  QTRY_COMPARE_WITH_TIMEOUT(window.sweep().cells.size(), std::size_t{2}, 10000);
+  QVERIFY(window.following());
+  QVERIFY2(window.statusLabel()->text().startsWith(QStringLiteral("2 of 8 cells done")),
+           qPrintable(window.statusLabel()->text()));
+  QVERIFY2(window.windowTitle().contains(QStringLiteral("cancelled")) ||
+               window.windowTitle().contains(QStringLiteral("running")),
+           qPrintable(window.windowTitle()));
+
+  worker.start(QStringLiteral(TACTILE_CLI), args);
+  QVERIFY(worker.waitForStarted(10000));
+  QTRY_COMPARE_WITH_TIMEOUT(window.sweep().cells.size(), std::size_t{8}, 120000);
+  // (The process may have ended while the window was being waited for.)
+  if (worker.state() != QProcess::NotRunning) QVERIFY(worker.waitForFinished(120000));
+  QCOMPARE(worker.exitStatus(), QProcess::NormalExit);
+  QCOMPARE(worker.exitCode(), 0);
+  QTRY_VERIFY_WITH_TIMEOUT(!window.following(), 10000);
+  QVERIFY2(window.statusLabel()->text().startsWith(QStringLiteral("8 of 8 cells done")),
+           qPrintable(window.statusLabel()->text()));
+  QVERIFY2(window.windowTitle().contains(QStringLiteral("finished")),
+           qPrintable(window.windowTitle()));
+  // The shown cells are the stored ones, each once.
+  auto stored = f.workspace->loadSweep(id);
+  QVERIFY(stored.ok());
+  QCOMPARE(window.view()->findChild<QTableView*>() != nullptr, true);
+  QCOMPARE(window.sweep().cells.size(), stored->cells.size());
+  for (const analysis::SweepCellResult& c : stored->cells) {
+    const auto shown =
+        std::count_if(window.sweep().cells.begin(), window.sweep().cells.end(),
+                      [&c](const analysis::SweepCellResult& s) { return s.cell == c.cell; });
+    QCOMPARE(shown, std::ptrdiff_t{1});
+  }
 }
 
 QTEST_MAIN(TrainingDialogTest)

@@ -89,6 +89,32 @@ TEST_P(BackendTest, ModelsAndSweepsKeepTheirText) {
   EXPECT_EQ(cells->front().metricsJson, R"({"rate":0.9})");
 }
 
+// Workers take the most expensive job first (a long fit left for the end keeps one worker busy
+// alone while the others wait); jobs of equal cost go in grid order; a lease that ran out is
+// taken over.
+TEST_P(BackendTest, SweepJobsAreClaimedMostExpensiveFirst) {
+  auto sweep = db_->sweeps().plan("s", "{}", {1, 1, 2, 1}, {5.0, 40.0, 5.0, 12.0});
+  ASSERT_TRUE(sweep.ok()) << sweep.errorText();
+  std::vector<std::int64_t> order;
+  for (int i = 0; i < 4; ++i) {
+    auto claim = db_->sweeps().claim(sweep.value(), "w", 100.0, 10.0);
+    ASSERT_TRUE(claim.ok()) << claim.errorText();
+    ASSERT_TRUE(claim.value().has_value());
+    order.push_back(claim.value()->job);
+  }
+  EXPECT_EQ(order, (std::vector<std::int64_t>{1, 3, 0, 2}));
+  auto none = db_->sweeps().claim(sweep.value(), "v", 105.0, 10.0);
+  ASSERT_TRUE(none.ok()) << none.errorText();
+  EXPECT_FALSE(none.value().has_value());
+  // Past the leases, the most expensive running job is taken over first.
+  auto takeOver = db_->sweeps().claim(sweep.value(), "v", 111.0, 10.0);
+  ASSERT_TRUE(takeOver.ok()) << takeOver.errorText();
+  ASSERT_TRUE(takeOver.value().has_value());
+  EXPECT_EQ(takeOver.value()->job, 1);
+  EXPECT_EQ(takeOver.value()->attempts, 2);
+  EXPECT_FALSE(db_->sweeps().plan("t", "{}", {1, 1}, {1.0}).ok()) << "one cost per job";
+}
+
 TEST_P(BackendTest, RenameKeepsTheRowChecksumAndTheCatalogSortsByteWise) {
   ASSERT_EQ(db_->runs().importRun(makeRun(40, false, 5), "b_run").status, ImportStatus::Imported);
   ASSERT_EQ(db_->runs().importRun(makeRun(40, false, 6), "B_run").status, ImportStatus::Imported);

@@ -169,7 +169,7 @@ TEST(Checksums, AnOlderDatabaseGetsItsChecksumsOnMigration) {
   sqliteExec(path,
              "ALTER TABLE runs DROP COLUMN crc; ALTER TABLE steps DROP COLUMN crc; "
              "ALTER TABLE step_blocks DROP COLUMN crc; DROP TABLE label_revisions; "
-             "DROP TABLE assignments; PRAGMA user_version = 4;");
+             "DROP TABLE assignments; DROP TABLE sweep_claims; PRAGMA user_version = 4;");
   {
     auto old = RunDatabase::open(path, OpenMode::ReadOnly);
     ASSERT_FALSE(old.ok());  // read-only never migrates

@@ -316,7 +316,8 @@ TEST(HistoryMigration, AVersion5FileGainsTheHistory) {
     ASSERT_TRUE(db->labels().addSegment(set.value(), seg).ok());
   }
   test::sqliteExec(path,
-                   "DROP TABLE label_revisions; DROP TABLE assignments; PRAGMA user_version = 5;");
+                   "DROP TABLE sweep_claims; DROP TABLE label_revisions; DROP TABLE assignments; "
+                   "PRAGMA user_version = 5;");
   auto db = RunDatabase::open(path, OpenMode::ReadWrite);
   ASSERT_TRUE(db.ok()) << db.errorText();
   EXPECT_EQ(db.value()->migrationBackup().filename(), "v5.db.v5.bak");
@@ -345,10 +346,11 @@ TEST(HistoryMigration, AVersion5ServerIsMigratedByCreate) {
     ASSERT_EQ(db.value()->runs().importRun(test::makeRun(30, false, 1), "r").status,
               ImportStatus::Imported);
   }
-  test::serverExec(address,
-                   "DROP TABLE label_revisions; DROP TABLE assignments; DROP FUNCTION "
-                   "tactile_notify_labels(); UPDATE tactile_meta SET value = '5' WHERE key = "
-                   "'schema_version'");
+  test::serverExec(
+      address,
+      "DROP TABLE sweep_claims; DROP TABLE label_revisions; DROP TABLE assignments; "
+      "DROP FUNCTION tactile_notify_labels(); UPDATE tactile_meta SET value = '5' WHERE key = "
+      "'schema_version'");
   auto refused = RunDatabase::open(address, OpenMode::ReadWrite);
   ASSERT_FALSE(refused.ok());
   EXPECT_NE(refused.errorText().find("tactile db create"), std::string::npos)
@@ -365,6 +367,83 @@ TEST(HistoryMigration, AVersion5ServerIsMigratedByCreate) {
                   .setRange(set.value(), run, {SensorGroup::Front}, 0, 4, ContactClass::Wall, {})
                   .ok());
   EXPECT_EQ(migrated.value()->labels().history(set.value(), run)->size(), 1u);
+}
+
+// A file of schema 6 (before sweeps were planned for workers) gets the claims table on its first
+// writing open, with a backup of the file as it was; its sweeps stay.
+TEST(SweepClaimsMigration, AVersion6FileGainsTheClaimsWithABackup) {
+  test::TempDir dir;
+  const auto path = dir / "v6.db";
+  {
+    auto db = test::openDb(path);
+    ASSERT_NE(db, nullptr);
+    auto sweep = db->sweeps().create("old", R"({"state":"finished"})");
+    ASSERT_TRUE(sweep.ok()) << sweep.errorText();
+    ASSERT_TRUE(db->sweeps().addCell(sweep.value(), R"({"order":2})", R"({"rate":0.5})").ok());
+  }
+  test::sqliteExec(path, "DROP TABLE sweep_claims; PRAGMA user_version = 6;");
+  {
+    // A read-only open leaves the file as it is and says what migrates it.
+    auto readOnly = RunDatabase::open(path, OpenMode::ReadOnly);
+    ASSERT_FALSE(readOnly.ok());
+    EXPECT_NE(readOnly.errorText().find("schema version 6, older than this program's 7"),
+              std::string::npos)
+        << readOnly.errorText();
+    EXPECT_FALSE(std::filesystem::exists(dir / "v6.db.v6.bak"));
+  }
+  auto db = RunDatabase::open(path, OpenMode::ReadWrite);
+  ASSERT_TRUE(db.ok()) << db.errorText();
+  EXPECT_EQ(db.value()->migrationBackup().filename(), "v6.db.v6.bak");
+  EXPECT_TRUE(std::filesystem::exists(db.value()->migrationBackup()));
+  EXPECT_TRUE(db.value()->check().ok);
+  EXPECT_EQ(db.value()->check().schemaVersion, db::kSchemaVersion);
+  auto sweeps = db.value()->sweeps().list();
+  ASSERT_TRUE(sweeps.ok());
+  ASSERT_EQ(sweeps->size(), 1u);
+  EXPECT_EQ(sweeps->front().cellCount, 1);
+  // The old sweep was not planned: it has no claims. A new plan has one per job.
+  EXPECT_TRUE(db.value()->sweeps().claims(sweeps->front().id)->empty());
+  auto planned = db.value()->sweeps().plan("new", "{}", {2, 1});
+  ASSERT_TRUE(planned.ok()) << planned.errorText();
+  auto claim = db.value()->sweeps().claim(planned.value(), "w", 100.0, 10.0);
+  ASSERT_TRUE(claim.ok()) << claim.errorText();
+  ASSERT_TRUE(claim.value().has_value());
+  EXPECT_EQ(claim.value()->state, "running");
+  EXPECT_EQ(db.value()->sweeps().claims(planned.value())->size(), 2u);
+}
+
+// A server of schema 6 is refused by a plain open with the command that migrates it, and
+// `db create` migrates it.
+TEST(SweepClaimsMigration, AVersion6ServerIsMigratedByCreate) {
+  const std::string address = test::freshServerSchema();
+  if (address.empty()) GTEST_SKIP() << "no PostgreSQL test server (the tests start one in ctest)";
+  std::int64_t oldSweep = 0;
+  {
+    auto db = RunDatabase::open(address, OpenMode::Create);
+    ASSERT_TRUE(db.ok()) << db.errorText();
+    auto sweep = db.value()->sweeps().create("old", R"({"state":"finished"})");
+    ASSERT_TRUE(sweep.ok()) << sweep.errorText();
+    oldSweep = sweep.value();
+  }
+  test::serverExec(address,
+                   "DROP TABLE sweep_claims; UPDATE tactile_meta SET value = '6' WHERE key = "
+                   "'schema_version'");
+  auto refused = RunDatabase::open(address, OpenMode::ReadWrite);
+  ASSERT_FALSE(refused.ok());
+  EXPECT_NE(refused.errorText().find("`tactile db create --db ADDRESS` migrates it"),
+            std::string::npos)
+      << refused.errorText();
+  auto migrated = RunDatabase::open(address, OpenMode::Create);
+  ASSERT_TRUE(migrated.ok()) << migrated.errorText();
+  EXPECT_TRUE(migrated.value()->check().ok);
+  EXPECT_EQ(migrated.value()->check().schemaVersion, db::kSchemaVersion);
+  EXPECT_TRUE(migrated.value()->sweeps().claims(oldSweep)->empty());
+  auto planned = migrated.value()->sweeps().plan("new", "{}", {1, 1, 1});
+  ASSERT_TRUE(planned.ok()) << planned.errorText();
+  auto claim = migrated.value()->sweeps().claim(planned.value(), "w", 100.0, 10.0);
+  ASSERT_TRUE(claim.ok()) << claim.errorText();
+  ASSERT_TRUE(claim.value().has_value());
+  EXPECT_EQ(migrated.value()->sweeps().claims(planned.value())->size(), 3u);
 }
 
 }  // namespace

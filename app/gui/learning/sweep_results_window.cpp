@@ -4,19 +4,23 @@
 #include <QFileDialog>
 #include <QFileInfo>
 #include <QInputDialog>
+#include <QLabel>
 #include <QMessageBox>
 #include <QStatusBar>
+#include <QTimer>
 #include <QToolBar>
 
 #include <utility>
 
 #include "analysis/model_file.h"
 #include "analysis/report.h"
+#include "app/gui/common/duration_text.h"
 #include "app/gui/common/file_dialog_memory.h"
 #include "app/gui/common/window_geometry.h"
 #include "app/gui/learning/sweep_results_view.h"
 #include "app/gui/learning/sweep_worker.h"
 #include "base/text_rules.h"
+#include "run/json_text.h"
 #include "workspace/workspace.h"
 
 namespace tactile::gui {
@@ -58,8 +62,100 @@ SweepResultsWindow::SweepResultsWindow(workspace::Workspace& workspace, QString 
   close->setShortcutContext(Qt::WindowShortcut);
   close->setToolTip(
       tr("Close this window (%1)").arg(close->shortcut().toString(QKeySequence::NativeText)));
+  status_ = new QLabel;
+  status_->setObjectName(QStringLiteral("sweepStatus"));
+  status_->setTextInteractionFlags(Qt::TextSelectableByMouse);
+  statusBar()->addPermanentWidget(status_, 1);
+  poll_ = new QTimer(this);
+  poll_->setInterval(1000);
+  connect(poll_, &QTimer::timeout, this, &SweepResultsWindow::refreshStatus);
   resize(1400, 900);
   keepWithinScreen(this);
+}
+
+namespace {
+
+// A cell's settings as its key (two results of one cell never both show).
+std::string cellKey(const analysis::SweepCell& cell) {
+  return dumpJson(analysis::sweepCellSettingsToJson(cell));
+}
+
+}  // namespace
+
+bool SweepResultsWindow::following() const {
+  return poll_->isActive();
+}
+
+void SweepResultsWindow::showEvent(QShowEvent* event) {
+  QMainWindow::showEvent(event);
+  if (sweepId_ != 0) refreshStatus();
+}
+
+void SweepResultsWindow::hideEvent(QHideEvent* event) {
+  QMainWindow::hideEvent(event);
+  poll_->stop();  // a closed window follows nothing; showing it again looks again
+}
+
+void SweepResultsWindow::updateTitle(const std::string& name, const std::string& state) {
+  setWindowTitle(tr("Sweep %1: %2 (%3)")
+                     .arg(sweepId_)
+                     .arg(QString::fromStdString(name), QString::fromStdString(state)));
+}
+
+void SweepResultsWindow::showCell(const analysis::SweepCellResult& cell) {
+  if (!shownCells_.insert(cellKey(cell.cell)).second) return;
+  sweep_.cells.push_back(cell);
+  view_->addCell(cell);
+}
+
+void SweepResultsWindow::refreshStatus() {
+  if (sweepId_ == 0) return;
+  auto status = workspace_.sweepStatus(sweepId_);
+  if (!status) {
+    poll_->stop();
+    status_->setText(tr("The sweep's status cannot be read: %1")
+                         .arg(QString::fromStdString(status.errorText())));
+    return;
+  }
+  const workspace::SweepStatus& s = status.value();
+  if (s.done > sweep_.cells.size()) {
+    // Cells stored since the last look, by any worker: the shown ones stay as they are.
+    auto stored = workspace_.loadSweep(sweepId_);
+    if (stored) {
+      for (const analysis::SweepCellResult& cell : stored->cells)
+        showCell(cell);
+    }
+  }
+  if (s.state != shownState_) {
+    shownState_ = s.state;
+    updateTitle(s.name, s.state);
+  }
+  if (!s.planned) {
+    status_->setText(tr("%n cell(s)", nullptr, static_cast<int>(s.cells)));
+    poll_->stop();
+    return;
+  }
+  QString text = tr("%1 of %2 cells done, %3 running, %4 pending, %5 failed")
+                     .arg(s.done)
+                     .arg(s.cells)
+                     .arg(s.running)
+                     .arg(s.pending)
+                     .arg(s.failed);
+  const bool open = s.pending + s.running > 0;
+  if (open && s.secondsLeft) {
+    text += tr("; about %1 left").arg(durationText(*s.secondsLeft));
+  } else if (open && s.running == 0) {
+    text += tr("; waiting for workers (tactile sweep work)");
+  }
+  QStringList failures;
+  for (const storage::SweepClaim& c : s.failedClaims)
+    failures << tr("job %1 on %2: %3")
+                    .arg(c.job)
+                    .arg(QString::fromStdString(c.worker), QString::fromStdString(c.error));
+  status_->setText(text);
+  status_->setToolTip(failures.join(QLatin1Char('\n')));
+  if (open && !poll_->isActive()) poll_->start();
+  if (!open) poll_->stop();
 }
 
 QString SweepResultsWindow::automaticModelName() const {
@@ -89,17 +185,18 @@ Status SweepResultsWindow::showSweep(std::int64_t sweepId) {
     configuration_ = nlohmann::json::object();
   }
   view_->setSweep(sweepId, sweep_);
-  const std::string state = configuration_.value("state", std::string());
-  setWindowTitle(tr("Sweep %1: %2 (%3)")
-                     .arg(sweepId)
-                     .arg(QString::fromStdString(info->name), QString::fromStdString(state)));
+  shownCells_.clear();
+  for (const analysis::SweepCellResult& cell : sweep_.cells)
+    shownCells_.insert(cellKey(cell.cell));
+  shownState_ = configuration_.value("state", std::string());
+  updateTitle(info->name, shownState_);
+  refreshStatus();
   return {};
 }
 
 void SweepResultsWindow::addCell(std::int64_t sweepId, const analysis::SweepCellResult& cell) {
   if (sweepId != sweepId_) return;
-  sweep_.cells.push_back(cell);
-  view_->addCell(cell);
+  showCell(cell);
 }
 
 Status SweepResultsWindow::exportReport(const QString& path) {

@@ -1,17 +1,21 @@
 #include "app/gui/learning/training_dialog.h"
 
 #include <QCheckBox>
+#include <QClipboard>
 #include <QCloseEvent>
 #include <QComboBox>
 #include <QDialogButtonBox>
+#include <QFontDatabase>
 #include <QFormLayout>
 #include <QGridLayout>
 #include <QGroupBox>
+#include <QGuiApplication>
 #include <QHBoxLayout>
 #include <QHeaderView>
 #include <QLabel>
 #include <QLineEdit>
 #include <QMessageBox>
+#include <QPlainTextEdit>
 #include <QProgressBar>
 #include <QPushButton>
 #include <QRegularExpression>
@@ -30,6 +34,7 @@
 #include <cmath>
 #include <utility>
 
+#include "app/gui/common/duration_text.h"
 #include "app/gui/common/settings_keys.h"
 #include "app/gui/common/window_geometry.h"
 #include "app/gui/learning/sweep_cells_model.h"
@@ -65,15 +70,6 @@ Result<std::vector<double>> parseNumbers(const QString& text, const QString& wha
   }
   if (out.empty()) return failure(what.toStdString() + ": give at least one value");
   return out;
-}
-
-QString duration(double seconds) {
-  const long s = std::lround(std::max(0.0, seconds));
-  return s >= 3600 ? QStringLiteral("%1:%2:%3")
-                         .arg(s / 3600)
-                         .arg((s / 60) % 60, 2, 10, QLatin1Char('0'))
-                         .arg(s % 60, 2, 10, QLatin1Char('0'))
-                   : QStringLiteral("%1:%2").arg(s / 60).arg(s % 60, 2, 10, QLatin1Char('0'));
 }
 
 }  // namespace
@@ -191,9 +187,11 @@ void TrainingDialog::buildUi() {
   floors_->setToolTip(tr("Variance floors, comma-separated"));
   form->addRow(tr("Variance floors:"), floors_);
 
-  // Two rows of four: eight kinds in one row would make the dialog wider than a laptop screen.
+  // Two columns: the longer kinds' names ("normal+shear+touch+motion+neighbours") four to a row
+  // made the settings wider than the dialog, and the runs' Train and Test columns scrolled out of
+  // sight.
   auto* featureRow = new QGridLayout;
-  constexpr int kFeatureColumns = 4;
+  constexpr int kFeatureColumns = 2;
   int featureIndex = 0;
   for (analysis::FeatureKind k : analysis::kFeatureKinds) {
     auto* box = new QCheckBox(qs(analysis::featureKindName(k)));
@@ -295,6 +293,11 @@ void TrainingDialog::buildUi() {
   sweepButton_ = new QPushButton(tr("Run sweep"));
   sweepButton_->setObjectName(QStringLiteral("runSweep"));
   sweepButton_->setDefault(true);
+  planButton_ = new QPushButton(tr("Plan for workers"));
+  planButton_->setObjectName(QStringLiteral("planForWorkers"));
+  planButton_->setToolTip(
+      tr("Store the sweep with every cell pending, to be filled by tactile sweep work processes "
+         "on any machine that reaches the database, or by a Slurm job array"));
   trainButton_ = new QPushButton(tr("Train model"));
   trainButton_->setObjectName(QStringLiteral("trainModel"));
   trainButton_->setToolTip(tr("Train one model per group and store it in the database"));
@@ -303,6 +306,7 @@ void TrainingDialog::buildUi() {
   cancelButton_->setEnabled(false);
   auto* close = new QPushButton(tr("Close"));
   connect(sweepButton_, &QPushButton::clicked, this, &TrainingDialog::startSweep);
+  connect(planButton_, &QPushButton::clicked, this, &TrainingDialog::planForWorkers);
   connect(trainButton_, &QPushButton::clicked, this, &TrainingDialog::startTrain);
   connect(cancelButton_, &QPushButton::clicked, this, &TrainingDialog::cancel);
   connect(close, &QPushButton::clicked, this, &QDialog::close);
@@ -329,6 +333,7 @@ void TrainingDialog::buildUi() {
 
   auto* buttons = new QHBoxLayout;
   buttons->addWidget(sweepButton_);
+  buttons->addWidget(planButton_);
   buttons->addWidget(trainButton_);
   buttons->addWidget(cancelButton_);
   buttons->addStretch();
@@ -339,6 +344,22 @@ void TrainingDialog::buildUi() {
   resultsLayout->setContentsMargins(0, 0, 0, 0);
   resultsLayout->addWidget(progress_);
   resultsLayout->addWidget(status_);
+  commands_ = new QPlainTextEdit;
+  commands_->setObjectName(QStringLiteral("workerCommands"));
+  commands_->setReadOnly(true);
+  commands_->setLineWrapMode(QPlainTextEdit::NoWrap);
+  commands_->setFont(QFontDatabase::systemFont(QFontDatabase::FixedFont));
+  commands_->setFixedHeight(commands_->fontMetrics().lineSpacing() * 5 + 12);
+  copyCommands_ = new QPushButton(tr("Copy Commands"));
+  copyCommands_->setObjectName(QStringLiteral("copyCommands"));
+  connect(copyCommands_, &QPushButton::clicked, this,
+          [this] { QGuiApplication::clipboard()->setText(commands_->toPlainText()); });
+  auto* commandsRow = new QHBoxLayout;
+  commandsRow->addWidget(commands_, 1);
+  commandsRow->addWidget(copyCommands_, 0, Qt::AlignTop);
+  resultsLayout->addLayout(commandsRow);
+  commands_->hide();
+  copyCommands_->hide();
   trainResult_ = new QTableWidget(0, 6);
   trainResult_->setObjectName(QStringLiteral("trainResult"));
   trainResult_->setHorizontalHeaderLabels({tr("Group"), tr("Balanced accuracy %"), tr("Accuracy %"),
@@ -451,24 +472,6 @@ void TrainingDialog::reload() {
   refreshRows();
 }
 
-namespace {
-
-// The work of one cell, in the cost model's units: every EM iteration visits each row once per
-// component, at a cost per row that grows with the dimension (diagonal forms) or its square (full
-// forms); prediction visits the test rows the same way. A Gaussian is one component.
-double cellUnits(const analysis::SweepCell& cell, std::size_t trainRows, std::size_t testRows) {
-  const double d = static_cast<double>(groupInfo(cell.group).sensorCount) *
-                   (cell.features == analysis::FeatureKind::Normal ? 1.0 : 2.0);
-  const bool full = cell.form == analysis::CovarianceForm::NodalFull ||
-                    cell.form == analysis::CovarianceForm::GrandFull;
-  const double perRow = full ? d * d : d;
-  const double components =
-      cell.method == analysis::ClassifierMethod::Gmm ? static_cast<double>(cell.order) : 1.0;
-  return static_cast<double>(trainRows + testRows) * components * perRow + 1.0;
-}
-
-}  // namespace
-
 void TrainingDialog::refreshTiming() {
   // Calibrates the cost model on every stored cell (newest sweeps first, at most 2000 cells): the
   // median of seconds per unit, so that one grid's estimate holds for another's.
@@ -482,7 +485,7 @@ void TrainingDialog::refreshTiming() {
       for (const analysis::SweepCellResult& c : stored->cells) {
         const double seconds = c.fitSeconds + c.predictSeconds;
         if (!c.ok || !std::isfinite(seconds) || c.trainRows == 0) continue;
-        rates.push_back(seconds / cellUnits(c.cell, c.trainRows, c.testRows));
+        rates.push_back(seconds / analysis::sweepCellUnits(c.cell, c.trainRows, c.testRows));
       }
     }
   }
@@ -527,7 +530,7 @@ void TrainingDialog::refreshPlan() {
     double units = 0;
     for (const analysis::SweepCell& cell : planned) {
       const auto gi = static_cast<std::size_t>(groupIndex(cell.group));
-      units += cellUnits(cell, trainRows_[gi], byRun ? testRows_[gi] : 0);
+      units += analysis::sweepCellUnits(cell, trainRows_[gi], byRun ? testRows_[gi] : 0);
     }
     const int threads = threads_->value() > 0 ? threads_->value() : QThread::idealThreadCount();
     const double seconds =
@@ -536,7 +539,7 @@ void TrainingDialog::refreshPlan() {
     text += tr(", about %1 on %n thread(s) (each cell's rows, order and covariance form, timed "
                "by %2 stored cells)",
                nullptr, threads)
-                .arg(duration(seconds))
+                .arg(durationText(seconds))
                 .arg(timedCells_);
   } else {
     text +=
@@ -672,9 +675,9 @@ Result<analysis::SweepGrid> TrainingDialog::grid() const {
   if (!orders) return orders.error();
   g.orders.clear();
   for (double o : orders.value()) {
-    if (o < 1 || o > 4096 || o != std::floor(o)) {
-      return failure("Orders: " + QString::number(o).toStdString() +
-                     " is not a whole number from 1 to 4096");
+    // The range is the one grid check's (below), in the words every front end gives.
+    if (o != std::floor(o) || std::abs(o) > 1.0e9) {
+      return failure("Orders: " + QString::number(o).toStdString() + " is not a whole number");
     }
     g.orders.push_back(static_cast<int>(o));
   }
@@ -685,9 +688,6 @@ Result<analysis::SweepGrid> TrainingDialog::grid() const {
   if (g.forms.empty()) g.forms.push_back(analysis::CovarianceForm::NodalFull);
   auto floors = parseNumbers(floors_->text(), tr("Variance floors"));
   if (!floors) return floors.error();
-  for (double f : floors.value())
-    if (f < 0)
-      return failure("Variance floors: " + QString::number(f).toStdString() + " is negative");
   g.varianceFloors = floors.value();
   g.features.clear();
   for (std::size_t i = 0; i < features_.size(); ++i)
@@ -707,6 +707,7 @@ Result<analysis::SweepGrid> TrainingDialog::grid() const {
     }
     g.seeds.push_back(static_cast<std::uint64_t>(s));
   }
+  if (Status ok = analysis::checkSweepGrid(g); !ok) return ok.error();
   return g;
 }
 
@@ -728,6 +729,8 @@ Result<workspace::SweepRequest> TrainingDialog::sweepRequest() const {
   request.grid = std::move(g.value());
   request.name = name_->text().trimmed().toStdString();
   request.threads = threads_->value();
+  // The one check of a sweep request, as `tactile sweep` makes it.
+  if (Status ok = workspace::checkSweepRequest(request); !ok) return ok.error();
   return request;
 }
 
@@ -777,6 +780,7 @@ Result<workspace::TrainRequest> TrainingDialog::trainRequest() const {
 
 void TrainingDialog::setBusy(bool busy) {
   sweepButton_->setEnabled(!busy);
+  planButton_->setEnabled(!busy);
   trainButton_->setEnabled(!busy);
   cancelButton_->setEnabled(busy);
   // The whole form is locked while a job runs: what is shown is what runs.
@@ -827,6 +831,36 @@ void TrainingDialog::startTrain() {
   status_->setText(tr("Training started."));
 }
 
+void TrainingDialog::planForWorkers() {
+  auto request = sweepRequest();
+  if (!request) {
+    showError(QString::fromStdString(request.errorText()));
+    return;
+  }
+  auto planned = workspace_.planSweep(request.value());
+  if (!planned) {
+    showError(tr("The sweep was not planned: %1").arg(QString::fromStdString(planned.errorText())));
+    return;
+  }
+  statusIsError_ = false;
+  const std::string db = databasePath_.toStdString();
+  commands_->setPlainText(
+      tr("# One worker; start as many as you like, on any machine that reaches the database:") +
+      QLatin1Char('\n') +
+      QString::fromStdString(workspace::sweepWorkCommand(db, planned->sweepId)) +
+      QLatin1Char('\n') + tr("# Or 4 workers as a Slurm job array:") + QLatin1Char('\n') +
+      QString::fromStdString(workspace::sweepSubmitCommand(db, planned->sweepId, 4)));
+  commands_->show();
+  copyCommands_->show();
+  status_->setText(tr("Sweep %1 planned: %n cell(s), all pending, for the workers below.", nullptr,
+                      static_cast<int>(planned->cells))
+                       .arg(planned->sweepId));
+  emit sweepPlanned(planned->sweepId);
+  // The results window that opens for the sweep must not hide the commands still to be copied.
+  raise();
+  activateWindow();
+}
+
 void TrainingDialog::cancel() {
   if (!worker_->isRunning()) return;
   worker_->cancel();
@@ -842,7 +876,7 @@ void TrainingDialog::onProgress(qint64 done, qint64 total, double secondsLeft) {
   if (!cancelButton_->isEnabled()) return;  // cancelling
   status_->setText(
       secondsLeft >= 0
-          ? tr("%1 of %2 done, about %3 left").arg(done).arg(total).arg(duration(secondsLeft))
+          ? tr("%1 of %2 done, about %3 left").arg(done).arg(total).arg(durationText(secondsLeft))
           : tr("%1 of %2 done").arg(done).arg(total));
 }
 

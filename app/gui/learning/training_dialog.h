@@ -21,6 +21,7 @@ class QComboBox;
 class QDoubleSpinBox;
 class QLabel;
 class QLineEdit;
+class QPlainTextEdit;
 class QProgressBar;
 class QPushButton;
 class QSortFilterProxyModel;
@@ -79,15 +80,22 @@ class TrainingDialog : public QDialog {
   QTableWidget* trainResultView() const { return trainResult_; }
   // Whether the form (set, runs, grid) can be edited: not while a job runs.
   bool formEditable() const;
+  // After Plan for workers: the commands that fill the planned sweep, to copy.
+  QPlainTextEdit* workerCommands() const { return commands_; }
 
  public slots:
   void startSweep();
+  // Stores the sweep with every cell pending for `tactile sweep work` processes or a Slurm job
+  // array (Workspace::planSweep, as `tactile sweep plan`) and shows their commands.
+  void planForWorkers();
   void startTrain();
   void cancel();
 
  signals:
   // A sweep stored cells (finished or cancelled); the main window opens its results.
   void sweepStored(qint64 sweepId);
+  // A sweep was planned for workers; the main window opens its results, which fill as they land.
+  void sweepPlanned(qint64 sweepId);
   void modelTrained(const QString& name);
   // Any job is over (ok, cancelled or failed).
   void jobFinished();
@@ -137,6 +145,9 @@ class TrainingDialog : public QDialog {
   QCheckBox* groupDefaults_ = nullptr;  // Train model: each group's defaults, or the lists' firsts
   QDoubleSpinBox* emissionWeight_ = nullptr;  // Train model: 0 = each group's default
   QPushButton* sweepButton_ = nullptr;
+  QPushButton* planButton_ = nullptr;
+  QPlainTextEdit* commands_ = nullptr;
+  QPushButton* copyCommands_ = nullptr;
   QPushButton* trainButton_ = nullptr;
   QPushButton* cancelButton_ = nullptr;
   QProgressBar* progress_ = nullptr;
