@@ -2562,8 +2562,8 @@ Zelle %1 (zum Auswählen klicken)</translation>
         <translation>Alle Entscheidungen</translation>
     </message>
     <message>
-        <source>Sweep %1: %2 cells, %3 fitted, %4 failed</source>
-        <translation>Sweep %1: %2 Zellen, %3 angepasst, %4 fehlgeschlagen</translation>
+        <source>Sweep %1: %2 cells stored, %3 fitted, %4 could not be fitted</source>
+        <translation>Sweep %1: %2 Zellen gespeichert, %3 angepasst, %4 nicht anpassbar</translation>
     </message>
     <message>
         <source>no model of it is stored (Store Model of Cell stores one)</source>

@@ -2552,8 +2552,8 @@ cell %1 (click to select)</source>
         <translation>全部决策</translation>
     </message>
     <message>
-        <source>Sweep %1: %2 cells, %3 fitted, %4 failed</source>
-        <translation>扫描 %1：%2 个单元，%3 个已拟合，%4 个失败</translation>
+        <source>Sweep %1: %2 cells stored, %3 fitted, %4 could not be fitted</source>
+        <translation>扫描 %1：已存储 %2 个单元，%3 个已拟合，%4 个无法拟合</translation>
     </message>
     <message>
         <source>no model of it is stored (Store Model of Cell stores one)</source>

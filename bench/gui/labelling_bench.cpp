@@ -217,7 +217,8 @@ int main(int argc, char** argv) {
     Effort e;
     QElapsedTimer clock;
     clock.start();
-    if (auto s = labels->createSet("bench_by_hand_" + std::string(argv[2])); !s) return fail(s.errorText());
+    if (auto s = labels->createSet("bench_by_hand_" + std::string(argv[2])); !s)
+      return fail(s.errorText());
     workingZoom();
     ++e.drags;  // the wheel turn to the working zoom, counted as a gesture
     const std::vector<Stretch> todo = stretchesToFix(readClasses(*labels, steps), truth);
@@ -232,7 +233,8 @@ int main(int argc, char** argv) {
     Effort e;
     QElapsedTimer clock;
     clock.start();
-    if (auto s = labels->createSet("bench_from_model_" + std::string(argv[2])); !s) return fail(s.errorText());
+    if (auto s = labels->createSet("bench_from_model_" + std::string(argv[2])); !s)
+      return fail(s.errorText());
     workingZoom();
     ++e.drags;
     // Learn > Show Predictions (Ctrl+P, the model picked, Enter).

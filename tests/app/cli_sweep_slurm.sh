@@ -13,15 +13,16 @@ trap '"$SOURCE/tests/support/slurm_cluster.sh" stop "$cluster"' EXIT
 
 json() { python3 -c "import json,sys; d=json.load(sys.stdin); print($1)"; }
 
-"$T" simulate --scene room1 --runs 3 --steps 300 --out-dir b1 --prefix room1 --quiet > /dev/null
-"$T" simulate --scene chapter5 --runs 3 --steps 300 --out-dir b2 --prefix ch5 --quiet > /dev/null
-"$T" import --db "$W/s.db" b1 b2 > /dev/null
+"$T" simulate --plan training --runs 6 --seed 1 --out-dir recipe --quiet > /dev/null
+"$T" import --db "$W/s.db" recipe > /dev/null
 "$T" autolabel --db "$W/s.db" --all --set truth > /dev/null
-# 48 cells in 24 jobs; no convergence, so that every fit runs all its iterations (a job takes
-# long enough to be cancelled in the middle).
-GRID="--set truth --train-runs room1_0000,ch5_0000,ch5_0002 --test-runs room1_0002,ch5_0001
-  --groups F,R,L --orders 2,8 --covs nodal-diag,nodal-full --floors 0.01,0.1
-  --decisions step,online --max-iter 3000 --tol 0"
+# 48 cells in 24 jobs on runs of the training recipe (thousands of contact rows); no tolerance and
+# three restarts, so that the first jobs handed out (the most expensive) take seconds and a task
+# is reliably caught holding one. Runs of a few hundred steps gave jobs of milliseconds, and
+# catching a claim then depended on luck.
+GRID="--set truth --train-runs run_0001,run_0002,run_0004 --test-runs run_0003
+  --groups F,R,L --orders 8,16 --covs nodal-diag,nodal-full --floors 0.01,0.1
+  --decisions step,online --max-iter 3000 --tol 0 --restarts 3"
 # shellcheck disable=SC2086
 "$T" sweep --db "$W/s.db" $GRID --threads 2 --out ref.json > /dev/null || fail "one-process sweep"
 # shellcheck disable=SC2086

@@ -408,8 +408,10 @@ void SweepResultsView::refreshTitle() {
   std::size_t fitted = 0;
   for (const analysis::SweepCellResult& r : sweep_.cells)
     fitted += r.ok ? 1 : 0;
-  // A sweep fits and scores its cells and keeps their numbers; it stores no model itself.
-  QString text = tr("Sweep %1: %2 cells, %3 fitted, %4 failed")
+  // A sweep fits and scores its cells and keeps their numbers; it stores no model itself. A cell
+  // that could not be fitted (a group without training rows) is not a failed job of a worker,
+  // which the status bar counts: the two words differ.
+  QString text = tr("Sweep %1: %2 cells stored, %3 fitted, %4 could not be fitted")
                      .arg(sweepId_)
                      .arg(sweep_.cells.size())
                      .arg(fitted)
