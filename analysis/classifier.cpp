@@ -244,7 +244,12 @@ ClassifierFit trainTrees(const std::vector<Eigen::MatrixXd>& samplesPerClass,
   const auto start = std::chrono::steady_clock::now();
   GbtSettings settings = options.gbt;
   settings.seed = options.gmm.seed;
-  auto trees = GbtModel::train(samplesPerClass, settings);
+  // The caller's progress sees the rounds as its work units; a refusal stops the fit.
+  const std::size_t classes = samplesPerClass.size();
+  auto trees = GbtModel::train(samplesPerClass, settings,
+                               [&progress, classes](std::size_t done, std::size_t total) {
+                                 return !progress || progress(done * classes / total, classes);
+                               });
   if (!trees) {
     fit.reason = trees.error().message;
     return fit;
@@ -256,7 +261,6 @@ ClassifierFit trainTrees(const std::vector<Eigen::MatrixXd>& samplesPerClass,
     fit.reason = set.error().message;
     return fit;
   }
-  const std::size_t classes = samplesPerClass.size();
   fit.model = std::move(set.value());
   fit.iterations.assign(classes, settings.trees);
   fit.converged.assign(classes, true);

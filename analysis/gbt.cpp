@@ -78,7 +78,7 @@ GbtModel::GbtModel(GbtModel&&) noexcept = default;
 GbtModel& GbtModel::operator=(GbtModel&&) noexcept = default;
 
 Result<GbtModel> GbtModel::train(const std::vector<Eigen::MatrixXd>& samplesPerClass,
-                                 const GbtSettings& settings) {
+                                 const GbtSettings& settings, const ProgressFn& progress) {
   if (std::string problem = checkGbtSettings(settings); !problem.empty())
     return Result<GbtModel>::failure(problem);
   const auto classes = static_cast<int>(samplesPerClass.size());
@@ -155,6 +155,9 @@ Result<GbtModel> GbtModel::train(const std::vector<Eigen::MatrixXd>& samplesPerC
   for (int round = 0; round < settings.trees; ++round) {
     if (XGBoosterUpdateOneIter(model.booster_->handle, round, train.handle) != 0)
       return Result<GbtModel>::failure(xgboostError("training failed"));
+    if (progress &&
+        !progress(static_cast<std::size_t>(round) + 1, static_cast<std::size_t>(settings.trees)))
+      return Result<GbtModel>::failure("cancelled");
   }
   return model;
 }

@@ -20,6 +20,7 @@
 #include <vector>
 
 #include "base/error.h"
+#include "base/progress.h"
 
 namespace tactile::analysis {
 
@@ -51,8 +52,10 @@ class GbtModel {
   // Trains on samplesPerClass[c] (N_c x D rows of class c), each class weighted so that all
   // classes weigh the same in total. Errors: fewer than two classes, a class without rows,
   // mismatched dimensions, a non-finite value, settings out of range, XGBoost's own failure.
+  // `progress` is called after each round with (rounds done, trees); returning false stops the
+  // fit with the error "cancelled".
   static Result<GbtModel> train(const std::vector<Eigen::MatrixXd>& samplesPerClass,
-                                const GbtSettings& settings);
+                                const GbtSettings& settings, const ProgressFn& progress = {});
   // A model from the bytes of `serialize()`; errors name what is wrong.
   static Result<GbtModel> load(const std::string& bytes, int classCount, int dimension);
 

@@ -157,6 +157,11 @@ TrainSettings defaultTrainSettings(SensorGroup group) {
   return s;
 }
 
+double defaultEmissionWeight(SensorGroup group, ClassifierMethod method) {
+  if (method == ClassifierMethod::Gbt) return 1.0;
+  return kGroupDefaults[static_cast<std::size_t>(groupIndex(group))].emissionWeight;
+}
+
 GroupSettings defaultGroupSettings() {
   GroupSettings out;
   for (const GroupInfo& g : kSensorGroups)

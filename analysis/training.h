@@ -46,6 +46,11 @@ struct GroupSettings {
 // (docs/learning.md#training-defaults).
 GroupSettings defaultGroupSettings();
 TrainSettings defaultTrainSettings(SensorGroup group);
+// The default weight of each step's evidence in the class chain of a group's model of the given
+// method: for the mixtures, the group's chosen weight (kept with its other defaults); for boosted
+// trees 1, the plain chain: their scaled likelihoods (posterior over prior) span far fewer nats
+// than the mixtures' densities, and the mixtures' weights below 1 let the chain outweigh them.
+double defaultEmissionWeight(SensorGroup group, ClassifierMethod method);
 
 // Classes of a data set that get a model: present with at least max(2, D) samples (the engine
 // rejects fewer samples than dimensions). The others are listed in `unmodelled`; their test rows

@@ -51,7 +51,7 @@ void addSweepRequestOptions(CLI::App* cmd, workspace::SweepRequestText& r) {
                   "Score on these runs (stored run names with --db, A B or A,B; run files "
                   "otherwise, A B, instead of a holdout)");
   cmd->add_option("--groups", r.groups, "Groups (default all)")->delimiter(',');
-  cmd->add_option("--methods", r.methods, "gmm and/or gaussian")
+  cmd->add_option("--methods", r.methods, "gmm, gaussian and/or gbt (boosted trees)")
       ->delimiter(',')
       ->capture_default_str();
   cmd->add_option("--orders", r.orders, "Model orders")->delimiter(',')->capture_default_str();
@@ -59,6 +59,18 @@ void addSweepRequestOptions(CLI::App* cmd, workspace::SweepRequestText& r) {
       ->delimiter(',')
       ->capture_default_str();
   cmd->add_option("--floors", r.floors, "Variance floors")->delimiter(',')->capture_default_str();
+  cmd->add_option("--trees", r.trees, "Boosting rounds (gbt)")
+      ->delimiter(',')
+      ->capture_default_str();
+  cmd->add_option("--depths", r.depths, "Largest tree depths (gbt)")
+      ->delimiter(',')
+      ->capture_default_str();
+  cmd->add_option("--learning-rates", r.learningRates, "Learning rates (gbt)")
+      ->delimiter(',')
+      ->capture_default_str();
+  cmd->add_option("--min-child-weights", r.minChildWeights, "Least leaf weights (gbt)")
+      ->delimiter(',')
+      ->capture_default_str();
   cmd->add_option("--features", r.features, "Feature kinds")->delimiter(',')->capture_default_str();
   cmd->add_option("--seeds", r.seeds, "Seeds")->delimiter(',')->capture_default_str();
   cmd->add_option("--decisions", r.decisions,
@@ -341,7 +353,9 @@ int runTrainDb(const TrainArgs& a, const analysis::GroupSettings& settings,
 analysis::GroupSettings trainSettings(const TrainArgs& a) {
   const analysis::ClassifierOptions typed = toClassifierOptions(a.classifier);
   analysis::GroupSettings out = analysis::defaultGroupSettings();
-  for (analysis::TrainSettings& s : out.byGroup) {
+  for (const GroupInfo& info : kSensorGroups) {
+    const SensorGroup g = info.group;
+    analysis::TrainSettings& s = out.of(g);
     analysis::ClassifierOptions o = typed;
     if (!a.given.method) o.method = s.classifier.method;
     if (!a.given.order) o.gmm.components = s.classifier.gmm.components;
@@ -355,6 +369,8 @@ analysis::GroupSettings trainSettings(const TrainArgs& a) {
       throw UsageError("--decision must be online or step (a model's default decision is causal)");
     }
     s.decision = *decision;
+    // A method given for every group brings its own default weight of the chain's evidence.
+    if (a.given.method) s.emissionWeight = analysis::defaultEmissionWeight(g, o.method);
     if (a.emissionWeight) {
       checkNumberOption("--emission-weight", *a.emissionWeight, 0.0, RangeEnd::Open, HUGE_VAL,
                         RangeEnd::Open);
