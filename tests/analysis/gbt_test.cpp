@@ -8,6 +8,7 @@
 #include <random>
 
 #include "analysis/gbt.h"
+#include "analysis/temporal.h"
 
 namespace tactile::analysis {
 namespace {
@@ -135,6 +136,62 @@ TEST(Gbt, ConstantFeaturesGiveEqualPosteriorsNeverNaN) {
   // Class-balanced weights: the larger class gets no head start.
   EXPECT_NEAR(logPost(0, 0), std::log(0.5), 1e-6);
   EXPECT_NEAR(logPost(0, 1), std::log(0.5), 1e-6);
+}
+
+// The hybrid chain: the online and offline decisions over the trees' scaled likelihoods (posterior
+// over the balanced prior 1/C, in log space) are the posteriors of the chain whose evidence at
+// each step is P(c | x) / (1/C), checked against brute-force enumeration of every class path in
+// plain probabilities on a tiny chain.
+TEST(Gbt, TheChainOverScaledLikelihoodsMatchesBruteForceEnumeration) {
+  const auto train = blobs(3, 150, 11);
+  auto model = GbtModel::train(train, quick());
+  ASSERT_TRUE(model.ok()) << model.errorText();
+  // Six steps drifting from class 0 to class 2, some between classes.
+  Eigen::MatrixXd x(6, 3);
+  for (int t = 0; t < 6; ++t)
+    x.row(t) << 1.2 * t, -1.2 * t, 0.1 * t;
+  Eigen::MatrixXd logPost;
+  model->logPosteriors(x, logPost);
+  StepLikelihoods steps;
+  model->logScaledLikelihoods(x, steps.logLik);
+  steps.observed.assign(6, 1);
+  Eigen::MatrixXd a(3, 3);
+  a << 0.8, 0.15, 0.05, 0.1, 0.7, 0.2, 0.05, 0.15, 0.8;
+  Eigen::VectorXd pi(3);
+  pi << 0.5, 0.3, 0.2;
+  TransitionModel chain;
+  chain.set(a.array().log().matrix(), pi.array().log().matrix());
+  const HmmFilterResult online = hmmForward(steps, chain);
+  const HmmFilterResult offline = hmmForwardBackward(steps, chain);
+  // Every path's weight in plain probabilities: pi, A and 3 P(c | x) at every step.
+  const auto marginal = [&](int at, int end) {
+    Eigen::VectorXd out = Eigen::VectorXd::Zero(3);
+    std::vector<int> path(static_cast<std::size_t>(end + 1), 0);
+    while (true) {
+      double p = pi[path[0]] * 3.0 * std::exp(logPost(0, path[0]));
+      for (int k = 1; k <= end; ++k)
+        p *= a(path[static_cast<std::size_t>(k - 1)], path[static_cast<std::size_t>(k)]) * 3.0 *
+             std::exp(logPost(k, path[static_cast<std::size_t>(k)]));
+      out[path[static_cast<std::size_t>(at)]] += p;
+      int k = 0;
+      while (k <= end && ++path[static_cast<std::size_t>(k)] == 3)
+        path[static_cast<std::size_t>(k++)] = 0;
+      if (k > end) break;
+    }
+    return Eigen::VectorXd(out / out.sum());
+  };
+  for (int t = 0; t < 6; ++t) {
+    const Eigen::VectorXd filtered = marginal(t, t);
+    const Eigen::VectorXd smoothed = marginal(t, 5);
+    for (int c = 0; c < 3; ++c) {
+      EXPECT_NEAR(std::exp(online.logPosterior(t, c)), filtered[c], 1e-12) << t << " " << c;
+      EXPECT_NEAR(std::exp(offline.logPosterior(t, c)), smoothed[c], 1e-12) << t << " " << c;
+    }
+  }
+  // The drift is followed: class 0 first, class 2 last.
+  ASSERT_TRUE(online.decisions[0].has_value() && online.decisions[5].has_value());
+  EXPECT_EQ(*online.decisions[0], 0);
+  EXPECT_EQ(*online.decisions[5], 2);
 }
 
 }  // namespace
