@@ -4,6 +4,8 @@
 
 #include <cfloat>
 #include <cmath>
+#include <cstdint>
+#include <cstdio>
 #include <limits>
 #include <sstream>
 
@@ -201,27 +203,36 @@ bool GbtModel::predict(const Eigen::MatrixXd& samples, Eigen::MatrixXd& out) con
   const Eigen::Index n = samples.rows();
   out.resize(n, classes_);
   if (n == 0) return true;
+  if (!booster_) return false;
   const std::vector<float> data = rowMajorFloats(samples);
-  Matrix rows;
-  bst_ulong length = 0;
-  const float* probabilities = nullptr;
-  if (!booster_ ||
-      XGDMatrixCreateFromMat(data.data(), static_cast<bst_ulong>(n),
-                             static_cast<bst_ulong>(samples.cols()),
-                             std::numeric_limits<float>::quiet_NaN(), &rows.handle) != 0 ||
-      XGBoosterPredict(booster_->handle, rows.handle, 0, 0, 0, &length, &probabilities) != 0 ||
-      length != static_cast<bst_ulong>(n * classes_)) {
+  // In place from the dense rows (no DMatrix is built), as raw margins: the log posteriors are
+  // their log-softmax, taken here in double precision (no probability rounded to float, none
+  // clamped away from 0 before its log).
+  char values[192];
+  std::snprintf(values, sizeof values,
+                R"({"data": [%llu, true], "shape": [%lld, %lld], "typestr": "<f4", "version": 3})",
+                static_cast<unsigned long long>(reinterpret_cast<std::uintptr_t>(data.data())),
+                static_cast<long long>(n), static_cast<long long>(samples.cols()));
+  static constexpr const char* kMarginConfig =
+      R"({"type": 1, "training": false, "iteration_begin": 0, "iteration_end": 0, )"
+      R"("strict_shape": true, "missing": NaN, "cache_id": 0})";
+  const bst_ulong* shape = nullptr;
+  bst_ulong dimensions = 0;
+  const float* margins = nullptr;
+  if (XGBoosterPredictFromDense(booster_->handle, values, kMarginConfig, nullptr, &shape,
+                                &dimensions, &margins) != 0 ||
+      dimensions != 2 || shape[0] != static_cast<bst_ulong>(n) ||
+      shape[1] != static_cast<bst_ulong>(classes_)) {
     return false;
   }
   for (Eigen::Index r = 0; r < n; ++r) {
     double largest = -std::numeric_limits<double>::infinity();
     for (int c = 0; c < classes_; ++c) {
-      const float p = probabilities[r * classes_ + c];
-      const double kept = std::log(std::max<double>(std::isfinite(p) ? p : 0.0, FLT_MIN));
-      out(r, c) = kept;
-      largest = std::max(largest, kept);
+      const float m = margins[r * classes_ + c];
+      if (!std::isfinite(m)) return false;
+      out(r, c) = m;
+      largest = std::max(largest, static_cast<double>(m));
     }
-    // Normalised in double precision: the exponentials of a row sum to 1.
     double sum = 0.0;
     for (int c = 0; c < classes_; ++c)
       sum += std::exp(out(r, c) - largest);

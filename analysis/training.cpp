@@ -242,9 +242,13 @@ GroupEvaluation evaluateClassifier(const ClassModelSet& classifier,
     ev.decideSeconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - decideStart).count();
   }
-  const HeldOutLogLikelihood ll = heldOutLogLikelihood(logLik, truthColumn);
-  ev.meanLogLikelihood = ll.mean;
-  ev.negInfRows = ll.negInfRows;
+  // A density's held-out log-likelihood; trees have no density (their scaled likelihoods are
+  // log posterior ratios), so none is reported for them.
+  if (classifier.trees() == nullptr) {
+    const HeldOutLogLikelihood ll = heldOutLogLikelihood(logLik, truthColumn);
+    ev.meanLogLikelihood = ll.mean;
+    ev.negInfRows = ll.negInfRows;
+  }
   if (classifier.hasRestModels()) {
     Eigen::VectorXd ratio;
     for (std::size_t c = 0; c < classes.size(); ++c) {
