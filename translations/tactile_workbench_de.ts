@@ -2471,8 +2471,12 @@ Zelle %1 (zum Auswählen klicken)</translation>
         <translation>Gruppe %1, Boosted Trees</translation>
     </message>
     <message>
-        <source>group %1, mixtures</source>
-        <translation>Gruppe %1, Mischmodelle</translation>
+        <source>dots: Gaussian mixtures</source>
+        <translation>Punkte: Gaußsche Mischmodelle</translation>
+    </message>
+    <message>
+        <source>squares: boosted trees</source>
+        <translation>Quadrate: Boosted Trees</translation>
     </message>
 </context>
 <context>
@@ -2596,6 +2600,10 @@ Zelle %1 (zum Auswählen klicken)</translation>
     <message>
         <source>Correct rate per class of this cell (of the steps of a class, the share predicted as it), %</source>
         <translation>Trefferquote je Klasse dieser Zelle (von den Schritten einer Klasse der als sie vorhergesagte Anteil), %</translation>
+    </message>
+    <message>
+        <source>Group %1, boosted trees: %2 trees, depth %3, rate %4, min child weight %5, %6 features, seed %7, %8 decision</source>
+        <translation>Gruppe %1, Boosted Trees: %2 Bäume, Tiefe %3, Rate %4, min. Blattgewicht %5, %6 Merkmale, Seed %7, Entscheidung %8</translation>
     </message>
 </context>
 <context>

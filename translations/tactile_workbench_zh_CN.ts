@@ -2461,8 +2461,12 @@ cell %1 (click to select)</source>
         <translation>组 %1，提升树</translation>
     </message>
     <message>
-        <source>group %1, mixtures</source>
-        <translation>组 %1，混合模型</translation>
+        <source>dots: Gaussian mixtures</source>
+        <translation>圆点：高斯混合模型</translation>
+    </message>
+    <message>
+        <source>squares: boosted trees</source>
+        <translation>方块：提升树</translation>
     </message>
 </context>
 <context>
@@ -2586,6 +2590,10 @@ cell %1 (click to select)</source>
     <message>
         <source>Correct rate per class of this cell (of the steps of a class, the share predicted as it), %</source>
         <translation>此单元每类正确率（在某类的步中，被预测为该类的比例），%</translation>
+    </message>
+    <message>
+        <source>Group %1, boosted trees: %2 trees, depth %3, rate %4, min child weight %5, %6 features, seed %7, %8 decision</source>
+        <translation>组 %1，提升树：%2 棵树，深度 %3，学习率 %4，最小子节点权重 %5，%6 特征，种子 %7，%8 决策</translation>
     </message>
 </context>
 <context>

@@ -390,11 +390,11 @@ void SweepPlot::showTimeError(const analysis::SweepResult& sweep,
     const std::string_view name = kSensorGroups[static_cast<std::size_t>(g)].shortName;
     const QString groupName = QString::fromUtf8(name.data(), static_cast<qsizetype>(name.size()));
     QCPGraph* graph = plot_->addGraph();
-    // The family is named only when the plot shows both.
-    graph->setName(
-        anyTrees && anyMixtures
-            ? (trees ? tr("group %1, boosted trees") : tr("group %1, mixtures")).arg(groupName)
-            : tr("group %1").arg(groupName));
+    // The legend names each group once, by its colour (the shapes have entries of their own
+    // below); a point's series names its family where the plot shows both.
+    graph->setName(anyTrees && anyMixtures && trees ? tr("group %1, boosted trees").arg(groupName)
+                                                    : tr("group %1").arg(groupName));
+    if (trees && bySeries.count({g, false}) != 0) graph->removeFromLegend();
     graph->setLineStyle(QCPGraph::lsNone);
     graph->setScatterStyle(QCPScatterStyle(
         trees ? QCPScatterStyle::ssSquare : QCPScatterStyle::ssDisc, colour, colour, 6));
@@ -409,6 +409,17 @@ void SweepPlot::showTimeError(const analysis::SweepResult& sweep,
     graph->setData(keys, values, true);
     pointCount_ += static_cast<int>(keys.size());
     ++seriesCount_;
+  }
+  if (anyTrees && anyMixtures) {
+    // Legend entries for the two shapes (graphs without points).
+    for (const auto& [shape, name] :
+         {std::pair{QCPScatterStyle::ssDisc, tr("dots: Gaussian mixtures")},
+          std::pair{QCPScatterStyle::ssSquare, tr("squares: boosted trees")}}) {
+      QCPGraph* key = plot_->addGraph();
+      key->setName(name);
+      key->setLineStyle(QCPGraph::lsNone);
+      key->setScatterStyle(QCPScatterStyle(shape, Qt::darkGray, Qt::darkGray, 6));
+    }
   }
   const std::vector<std::size_t> front = analysis::paretoFront(sweep, group);
   if (!front.empty()) {

@@ -84,6 +84,14 @@ QString describe(const analysis::SweepCell& c) {
                "decision")
         .arg(group, s(analysis::covarianceFormName(c.form)), QString::number(c.order), floor,
              features, seed, decision);
+  if (c.method == analysis::ClassifierMethod::Gbt) {
+    return SweepResultsView::tr(
+               "Group %1, boosted trees: %2 trees, depth %3, rate %4, min child weight %5, %6 "
+               "features, seed %7, %8 decision")
+        .arg(group, QString::number(c.trees), QString::number(c.depth),
+             QString::number(c.learningRate, 'g', 4), QString::number(c.minChildWeight, 'g', 4),
+             features, seed, decision);
+  }
   return SweepResultsView::tr("Group %1, %2, variance floor %3, %4 features, seed %5, %6 decision")
       .arg(group, s(analysis::classifierMethodName(c.method)), floor, features, seed, decision);
 }
