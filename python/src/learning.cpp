@@ -368,10 +368,17 @@ analysis::GroupSettings trainSettings(const TrainArgs& a) {
   for (const GroupInfo& info : kSensorGroups) {
     analysis::TrainSettings& s = out.of(info.group);
     ClassifierOptions& o = s.classifier;
+    std::optional<analysis::ClassifierMethod> given;
     if (a.method) {
-      o.method = parsed<analysis::ClassifierMethod>(*a.method, analysis::parseClassifierMethod,
-                                                    "method (gmm, gaussian or gbt)");
+      given = parsed<analysis::ClassifierMethod>(*a.method, analysis::parseClassifierMethod,
+                                                 "method (gmm, gaussian or gbt)");
     }
+    // Options of one family without a method train that family, as `tactile train` does.
+    const auto method =
+        analysis::impliedMethod(given, a.components || a.covariance || a.floor || a.restarts,
+                                a.trees || a.depth || a.learningRate || a.minChildWeight, o.method);
+    if (!method) throw py::value_error(method.errorText());
+    o.method = method.value();
     if (a.components) o.gmm.components = *a.components;
     if (a.covariance) o.gmm.form = parseForm(*a.covariance);
     if (a.floor) o.gmm.varianceFloor = *a.floor;
@@ -387,8 +394,8 @@ analysis::GroupSettings trainSettings(const TrainArgs& a) {
       o.gmm.reg = parsed<analysis::Regularization>(*a.reg, analysis::parseRegularization, "reg");
     }
     if (a.features) s.features = parseKind(*a.features);
-    // A method given for every group brings its own default weight of the chain's evidence.
-    if (a.method) s.emissionWeight = analysis::defaultEmissionWeight(info.group, o.method);
+    // The method brings its own default weight of the chain's evidence.
+    s.emissionWeight = analysis::defaultEmissionWeight(info.group, o.method);
     if (a.emissionWeight) {
       if (!std::isfinite(*a.emissionWeight) || *a.emissionWeight <= 0.0)
         throw py::value_error("emission_weight must be a finite number > 0");

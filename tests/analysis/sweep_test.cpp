@@ -52,7 +52,7 @@ TEST(Training, SplitKeepsTimeOrderAndPartitionsLabels) {
   }
 }
 
-TEST(Training, DefaultsAreEachGroupsOwnTunedGmm) {
+TEST(Training, DefaultsAreEachGroupsOwnTunedModel) {
   const GroupSettings d = defaultGroupSettings();
   bool ordersDiffer = false;
   for (const GroupInfo& g : kSensorGroups) {
@@ -71,7 +71,12 @@ TEST(Training, DefaultsAreEachGroupsOwnTunedGmm) {
     // A model's default decision is one a navigator may use.
     EXPECT_TRUE(isCausal(s.decision)) << g.shortName;
     EXPECT_EQ(s.decision, DecisionMode::Online) << g.shortName;
-    EXPECT_EQ(s.classifier.method, ClassifierMethod::Gmm) << g.shortName;
+    // The family that won on the selection corpus; the mixtures' settings are kept either way
+    // (for --method gmm on a group of trees).
+    EXPECT_TRUE(s.classifier.method == ClassifierMethod::Gmm ||
+                s.classifier.method == ClassifierMethod::Gbt)
+        << g.shortName;
+    EXPECT_EQ(s.emissionWeight, defaultEmissionWeight(g.group, s.classifier.method)) << g.shortName;
     EXPECT_EQ(s.classifier.gmm.form, CovarianceForm::NodalFull) << g.shortName;
     EXPECT_EQ(s.classifier.gmm.restarts, 3) << g.shortName;
     EXPECT_GE(s.classifier.gmm.components, 1) << g.shortName;
@@ -89,32 +94,59 @@ TEST(Training, DefaultsAreEachGroupsOwnTunedGmm) {
               defaultTrainSettings(SensorGroup::Back).classifier.gmm.components);
 }
 
+// Options of one family without a method train that family; both families' options without a
+// method are refused; a method given always wins.
+TEST(Training, OptionsOfOneFamilyImplyIt) {
+  constexpr auto kGmm = ClassifierMethod::Gmm;
+  constexpr auto kTrees = ClassifierMethod::Gbt;
+  constexpr auto kGaussian = ClassifierMethod::Gaussian;
+  EXPECT_EQ(impliedMethod(std::nullopt, false, false, kTrees).value(), kTrees);
+  EXPECT_EQ(impliedMethod(std::nullopt, false, false, kGmm).value(), kGmm);
+  EXPECT_EQ(impliedMethod(std::nullopt, true, false, kTrees).value(), kGmm);
+  EXPECT_EQ(impliedMethod(std::nullopt, true, false, kGmm).value(), kGmm);
+  EXPECT_EQ(impliedMethod(std::nullopt, false, true, kGmm).value(), kTrees);
+  EXPECT_EQ(impliedMethod(kGaussian, true, true, kTrees).value(), kGaussian);
+  const auto both = impliedMethod(std::nullopt, true, true, kGmm);
+  ASSERT_FALSE(both.ok());
+  EXPECT_NE(both.errorText().find("say which"), std::string::npos) << both.errorText();
+}
+
 // The table of docs/learning.md#training-defaults, group by group: features, order, floor and
 // the chain's evidence weight, as chosen on the selection corpus.
 TEST(Training, DefaultsAreTheDocumentedTable) {
   struct Row {
     SensorGroup group;
+    ClassifierMethod method;
     FeatureKind features;
     int order;
     double floor;
-    double weight;
+    double mixtureWeight;  // the mixtures' chain weight; trees decide through the plain chain
   };
+  constexpr ClassifierMethod kTrees = ClassifierMethod::Gbt;
+  constexpr ClassifierMethod kGmm = ClassifierMethod::Gmm;
   const std::array<Row, 8> table{{
-      {SensorGroup::Front, FeatureKind::Context, 8, 0.01, 0.3},
-      {SensorGroup::FrontLeftCorner, FeatureKind::Neighbours, 8, 0.01, 1.0},
-      {SensorGroup::Left, FeatureKind::Neighbours, 8, 0.01, 0.3},
-      {SensorGroup::RearLeftCorner, FeatureKind::Neighbours, 16, 0.01, 1.0},
-      {SensorGroup::Back, FeatureKind::NormalShear, 4, 0.01, 0.3},
-      {SensorGroup::RearRightCorner, FeatureKind::Context, 8, 0.01, 0.3},
-      {SensorGroup::Right, FeatureKind::Neighbours, 8, 0.01, 0.1},
-      {SensorGroup::FrontRightCorner, FeatureKind::Neighbours, 16, 0.01, 1.0},
+      {SensorGroup::Front, kTrees, FeatureKind::Context, 8, 0.01, 0.3},
+      {SensorGroup::FrontLeftCorner, kGmm, FeatureKind::Neighbours, 8, 0.01, 1.0},
+      {SensorGroup::Left, kTrees, FeatureKind::Neighbours, 8, 0.01, 0.3},
+      {SensorGroup::RearLeftCorner, kGmm, FeatureKind::Neighbours, 16, 0.01, 1.0},
+      {SensorGroup::Back, kGmm, FeatureKind::NormalShear, 4, 0.01, 0.3},
+      {SensorGroup::RearRightCorner, kTrees, FeatureKind::Context, 8, 0.01, 0.3},
+      {SensorGroup::Right, kTrees, FeatureKind::Neighbours, 8, 0.01, 0.1},
+      {SensorGroup::FrontRightCorner, kGmm, FeatureKind::Neighbours, 16, 0.01, 1.0},
   }};
   for (const Row& r : table) {
     const TrainSettings s = defaultTrainSettings(r.group);
+    EXPECT_EQ(s.classifier.method, r.method) << groupInfo(r.group).shortName;
     EXPECT_EQ(s.features, r.features) << groupInfo(r.group).shortName;
     EXPECT_EQ(s.classifier.gmm.components, r.order) << groupInfo(r.group).shortName;
     EXPECT_DOUBLE_EQ(s.classifier.gmm.varianceFloor, r.floor) << groupInfo(r.group).shortName;
-    EXPECT_DOUBLE_EQ(s.emissionWeight, r.weight) << groupInfo(r.group).shortName;
+    EXPECT_DOUBLE_EQ(defaultEmissionWeight(r.group, ClassifierMethod::Gmm), r.mixtureWeight)
+        << groupInfo(r.group).shortName;
+    EXPECT_DOUBLE_EQ(s.emissionWeight, r.method == kTrees ? 1.0 : r.mixtureWeight)
+        << groupInfo(r.group).shortName;
+    // The trees' settings are the method's defaults.
+    EXPECT_EQ(s.classifier.gbt.trees, GbtSettings{}.trees) << groupInfo(r.group).shortName;
+    EXPECT_EQ(s.classifier.gbt.depth, GbtSettings{}.depth) << groupInfo(r.group).shortName;
   }
 }
 
@@ -348,8 +380,8 @@ TEST(Sweep, OnlineCellsDecideWithTheGroupsDefaultEmissionWeight) {
   grid.varianceFloors = {0.1};
   grid.decisions = {DecisionMode::Online};
   grid.maxIterations = 30;
-  const double weight = defaultTrainSettings(SensorGroup::Right).emissionWeight;
-  ASSERT_NE(weight, 1.0) << "the test needs a group whose default weight is not 1";
+  const double weight = defaultEmissionWeight(SensorGroup::Right, ClassifierMethod::Gmm);
+  ASSERT_NE(weight, 1.0) << "the test needs a group whose mixtures' default weight is not 1";
   const SweepResult r = runSweep(train, test, grid);
   ASSERT_EQ(r.cells.size(), 1u);
   const SweepCellResult& cell = r.cells.front();

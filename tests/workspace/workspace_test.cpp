@@ -1202,7 +1202,7 @@ TEST(WorkspaceCellModel, ModelOfACellScoresExactlyAsTheCell) {
     EXPECT_EQ(m->classifier.models().front().components(), cell.cell.order);
     EXPECT_EQ(m->decision, cell.cell.decision);
     EXPECT_EQ(m->transitions.emissionWeight,
-              analysis::defaultTrainSettings(cell.cell.group).emissionWeight);
+              analysis::defaultEmissionWeight(cell.cell.group, cell.cell.method));
     ++checked;
   }
   EXPECT_GE(checked, 2u);
