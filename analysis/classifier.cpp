@@ -18,9 +18,10 @@
 namespace tactile::analysis {
 
 namespace {
-constexpr std::array<std::pair<ClassifierMethod, std::string_view>, 2> kMethodNames{{
+constexpr std::array<std::pair<ClassifierMethod, std::string_view>, 3> kMethodNames{{
     {ClassifierMethod::Gaussian, "gaussian"},
     {ClassifierMethod::Gmm, "gmm"},
+    {ClassifierMethod::Gbt, "gbt"},
 }};
 constexpr std::array<std::pair<PriorMode, std::string_view>, 2> kPriorNames{{
     {PriorMode::Equal, "equal"},
@@ -51,12 +52,50 @@ std::optional<PriorMode> parsePriorMode(std::string_view name) {
 
 // ---------------------------------------------------------------------------------------------
 
+namespace {
+
+// Fills empty log priors with equal ones; otherwise the reason they are unusable, or "".
+std::string checkLogPriors(Eigen::VectorXd& logPriors, std::size_t classCount) {
+  const auto classes = static_cast<Eigen::Index>(classCount);
+  if (logPriors.size() == 0) {
+    logPriors = Eigen::VectorXd::Constant(classes, -std::log(static_cast<double>(classes)));
+    return {};
+  }
+  if (logPriors.size() != classes)
+    return std::to_string(logPriors.size()) + " priors for " + std::to_string(classes) + " classes";
+  if (!logPriors.allFinite()) return "the class priors must be positive";
+  const double total = logSumExp(logPriors.data(), static_cast<int>(logPriors.size()));
+  if (!(std::abs(total) <= 1e-9)) return "the class priors do not sum to 1";
+  return {};
+}
+
+}  // namespace
+
+Result<ClassModelSet> ClassModelSet::createTrees(std::vector<std::string> classNames,
+                                                 std::shared_ptr<const GbtModel> trees,
+                                                 Eigen::VectorXd logPriors) {
+  if (!trees) return Error("a classifier of trees needs its trees");
+  if (static_cast<int>(classNames.size()) != trees->classCount()) {
+    return Error(std::to_string(classNames.size()) + " class names for trees of " +
+                 std::to_string(trees->classCount()) + " classes");
+  }
+  if (std::string problem = checkLogPriors(logPriors, classNames.size()); !problem.empty())
+    return Error(problem);
+  ClassModelSet set;
+  set.method_ = ClassifierMethod::Gbt;
+  set.names_ = std::move(classNames);
+  set.trees_ = std::move(trees);
+  set.logPriors_ = std::move(logPriors);
+  return set;
+}
+
 Result<ClassModelSet> ClassModelSet::create(ClassifierMethod method,
                                             std::vector<std::string> classNames,
                                             std::vector<GaussianMixture> models,
                                             Eigen::VectorXd logPriors,
                                             std::vector<GaussianMixture> restModels) {
   const auto fail = [](std::string message) { return Error(std::move(message)); };
+  if (method == ClassifierMethod::Gbt) return fail("a classifier of trees is made by createTrees");
   if (models.empty()) return fail("a classifier needs at least one class model");
   if (classNames.size() != models.size())
     return fail(std::to_string(classNames.size()) + " class names for " +
@@ -69,17 +108,8 @@ Result<ClassModelSet> ClassModelSet::create(ClassifierMethod method,
       return fail("the model of class '" + classNames[c] + "' has dimension " +
                   std::to_string(models[c].dimension()) + ", expected " + std::to_string(d));
   }
-  const Eigen::Index classes = static_cast<Eigen::Index>(models.size());
-  if (logPriors.size() == 0) {
-    logPriors = Eigen::VectorXd::Constant(classes, -std::log(static_cast<double>(classes)));
-  } else {
-    if (logPriors.size() != classes)
-      return fail(std::to_string(logPriors.size()) + " priors for " + std::to_string(classes) +
-                  " classes");
-    if (!logPriors.allFinite()) return fail("the class priors must be positive");
-    const double total = logSumExp(logPriors.data(), static_cast<int>(logPriors.size()));
-    if (!(std::abs(total) <= 1e-9)) return fail("the class priors do not sum to 1");
-  }
+  if (std::string problem = checkLogPriors(logPriors, models.size()); !problem.empty())
+    return fail(problem);
   if (!restModels.empty()) {
     if (restModels.size() != models.size())
       return fail(std::to_string(restModels.size()) + " one-vs-rest models for " +
@@ -98,6 +128,7 @@ Result<ClassModelSet> ClassModelSet::create(ClassifierMethod method,
 }
 
 void ClassModelSet::logLikelihoods(const Eigen::MatrixXd& samples, Eigen::MatrixXd& out) const {
+  if (trees_) return trees_->logScaledLikelihoods(samples, out);
   out.resize(samples.rows(), classCount());
   Eigen::VectorXd col;
   for (int c = 0; c < classCount(); ++c) {
@@ -186,6 +217,69 @@ Result<GaussianMixture> fitGaussian(const Eigen::MatrixXd& samples, double varia
   return model;
 }
 
+namespace {
+
+// The class priors a fit keeps: equal, or each class's share of the training rows.
+Eigen::VectorXd fitLogPriors(const std::vector<Eigen::MatrixXd>& samplesPerClass, PriorMode mode) {
+  const auto classes = static_cast<Eigen::Index>(samplesPerClass.size());
+  Eigen::Index totalRows = 0;
+  for (const auto& x : samplesPerClass)
+    totalRows += x.rows();
+  Eigen::VectorXd logPriors(classes);
+  for (Eigen::Index c = 0; c < classes; ++c)
+    logPriors(c) =
+        mode == PriorMode::Equal
+            ? -std::log(static_cast<double>(classes))
+            : std::log(static_cast<double>(samplesPerClass[static_cast<std::size_t>(c)].rows()) /
+                       static_cast<double>(totalRows));
+  return logPriors;
+}
+
+// The Gbt method: one multi-class model of boosted trees over every class's rows (checked by the
+// caller), on one thread with the fit's seed.
+ClassifierFit trainTrees(const std::vector<Eigen::MatrixXd>& samplesPerClass,
+                         const std::vector<std::string>& classNames,
+                         const ClassifierOptions& options, const ProgressFn& progress) {
+  ClassifierFit fit;
+  const auto start = std::chrono::steady_clock::now();
+  GbtSettings settings = options.gbt;
+  settings.seed = options.gmm.seed;
+  // The caller's progress sees the rounds as its work units; a refusal stops the fit.
+  const std::size_t classes = samplesPerClass.size();
+  auto trees = GbtModel::train(samplesPerClass, settings,
+                               [&progress, classes](std::size_t done, std::size_t total) {
+                                 return !progress || progress(done * classes / total, classes);
+                               });
+  if (!trees) {
+    fit.reason = trees.error().message;
+    return fit;
+  }
+  auto shared = std::make_shared<const GbtModel>(std::move(trees.value()));
+  auto set =
+      ClassModelSet::createTrees(classNames, shared, fitLogPriors(samplesPerClass, options.priors));
+  if (!set) {
+    fit.reason = set.error().message;
+    return fit;
+  }
+  fit.model = std::move(set.value());
+  fit.iterations.assign(classes, settings.trees);
+  fit.converged.assign(classes, true);
+  fit.droppedComponents.assign(classes, 0);
+  fit.likelihoodDrop.assign(classes, 0.0);
+  // Each class's mean scaled log-likelihood over its own training rows.
+  for (std::size_t c = 0; c < classes; ++c) {
+    Eigen::MatrixXd scaled;
+    shared->logScaledLikelihoods(samplesPerClass[c], scaled);
+    fit.trainMeanLogLikelihood.push_back(scaled.col(static_cast<Eigen::Index>(c)).mean());
+  }
+  fit.fitSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  if (progress) progress(classes, classes);
+  fit.ok = true;
+  return fit;
+}
+
+}  // namespace
+
 ClassifierFit trainClassifier(const std::vector<Eigen::MatrixXd>& samplesPerClass,
                               const std::vector<std::string>& classNames,
                               const ClassifierOptions& options, const ProgressFn& progress) {
@@ -208,15 +302,20 @@ ClassifierFit trainClassifier(const std::vector<Eigen::MatrixXd>& samplesPerClas
     if (x.cols() != d)
       return fail(who + " has " + std::to_string(x.cols()) + " features, expected " +
                   std::to_string(d));
-    if (x.rows() < d && !options.fewSamples)
+    // Trees need no more rows than features; a density does.
+    const bool density = options.method != ClassifierMethod::Gbt;
+    if (density && x.rows() < d && !options.fewSamples)
       return fail(who + " has " + std::to_string(x.rows()) + " training samples, fewer than its " +
                   std::to_string(d) + " dimensions");
-    if (x.rows() < d && !(options.gmm.varianceFloor > 0.0))
+    if (density && x.rows() < d && !(options.gmm.varianceFloor > 0.0))
       return fail(who + " has " + std::to_string(x.rows()) + " training samples, fewer than its " +
                   std::to_string(d) +
                   " dimensions: its covariance would be singular without a variance floor > 0");
     if (!x.allFinite()) return fail(who + " has a non-finite feature value");
   }
+
+  if (options.method == ClassifierMethod::Gbt)
+    return trainTrees(samplesPerClass, classNames, options, progress);
 
   // Tasks: one fit per class, plus (Gaussian, one-vs-rest, more than one class) one "rest" fit.
   const bool withRest =
@@ -333,15 +432,8 @@ ClassifierFit trainClassifier(const std::vector<Eigen::MatrixXd>& samplesPerClas
     }
     (t < classes ? models : rest).push_back(std::move(*results[t]));
   }
-  Eigen::VectorXd logPriors(static_cast<Eigen::Index>(classes));
-  for (std::size_t c = 0; c < classes; ++c)
-    logPriors(static_cast<Eigen::Index>(c)) =
-        options.priors == PriorMode::Equal
-            ? -std::log(static_cast<double>(classes))
-            : std::log(static_cast<double>(samplesPerClass[c].rows()) /
-                       static_cast<double>(totalRows));
-  auto set = ClassModelSet::create(options.method, classNames, std::move(models), logPriors,
-                                   std::move(rest));
+  auto set = ClassModelSet::create(options.method, classNames, std::move(models),
+                                   fitLogPriors(samplesPerClass, options.priors), std::move(rest));
   if (!set) return fail(set.error().message);
   fit.model = std::move(set.value());
   // The floor against each feature's variance over every class's rows together: the spread that

@@ -6,18 +6,22 @@
 
 #include <Eigen/Core>
 
+#include <memory>
 #include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
 
+#include "analysis/gbt.h"
 #include "analysis/gmm.h"
 #include "base/progress.h"
 
 namespace tactile::analysis {
 
-enum class ClassifierMethod { Gaussian, Gmm };
-// "gaussian", "gmm".
+// Gradient-boosted trees (Gbt, analysis/gbt.h) give the class chain scaled likelihoods instead of
+// densities; everything downstream of logLikelihoods() treats the three alike.
+enum class ClassifierMethod { Gaussian, Gmm, Gbt };
+// "gaussian", "gmm", "gbt".
 std::string_view classifierMethodName(ClassifierMethod method);
 std::optional<ClassifierMethod> parseClassifierMethod(std::string_view name);
 
@@ -32,6 +36,8 @@ struct ClassifierOptions {
   // 0 = plain unbiased covariance (singular is an error); > 0 = its eigenvalues clamped at the
   // floor (reg Floor) or the floor added to its diagonal (reg Add).
   GmmOptions gmm;
+  // Tree settings (method Gbt); its seed is gmm.seed, so that sweeps' fit seeds apply alike.
+  GbtSettings gbt;
   PriorMode priors = PriorMode::Equal;
   // Gaussian method: also fit a "rest" Gaussian per class (all other classes' samples) for the
   // one-vs-rest log-likelihood ratio of thesis 4.3.
@@ -61,9 +67,19 @@ class ClassModelSet {
                                       Eigen::VectorXd logPriors = {},
                                       std::vector<GaussianMixture> restModels = {});
 
+  // A set of boosted trees (method Gbt) over the named classes, shared by the copies of the set.
+  static Result<ClassModelSet> createTrees(std::vector<std::string> classNames,
+                                           std::shared_ptr<const GbtModel> trees,
+                                           Eigen::VectorXd logPriors = {});
+
   ClassifierMethod method() const { return method_; }
-  int classCount() const { return static_cast<int>(models_.size()); }
-  int dimension() const { return models_.empty() ? 0 : models_.front().dimension(); }
+  int classCount() const { return static_cast<int>(names_.size()); }
+  int dimension() const {
+    if (trees_) return trees_->dimension();
+    return models_.empty() ? 0 : models_.front().dimension();
+  }
+  // The trees of a Gbt set (null for the Gaussian methods, whose model(c) are the mixtures).
+  const GbtModel* trees() const { return trees_.get(); }
   const std::vector<std::string>& classNames() const { return names_; }
   const GaussianMixture& model(int c) const { return models_[static_cast<std::size_t>(c)]; }
   const std::vector<GaussianMixture>& models() const { return models_; }
@@ -72,7 +88,7 @@ class ClassModelSet {
   const std::vector<GaussianMixture>& restModels() const { return restModels_; }
   const Eigen::VectorXd& logPriors() const { return logPriors_; }  // always C entries
 
-  // log p(x_n | class c) for every row: out is N x C.
+  // log p(x_n | class c) for every row: out is N x C (for trees, the scaled likelihoods).
   void logLikelihoods(const Eigen::MatrixXd& samples, Eigen::MatrixXd& out) const;
   // argmax_c [log p(x | c) + log P(c)]; ties go to the lowest class index. Every row gets a
   // defined class even when all likelihoods underflow (log space throughout).
@@ -90,6 +106,7 @@ class ClassModelSet {
   std::vector<std::string> names_;
   std::vector<GaussianMixture> models_;
   std::vector<GaussianMixture> restModels_;
+  std::shared_ptr<const GbtModel> trees_;
   Eigen::VectorXd logPriors_;
 };
 

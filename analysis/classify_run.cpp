@@ -65,14 +65,20 @@ struct GroupPass {
   std::vector<double> row;
   Eigen::MatrixXd ll;  // kDensityBlockRows x classes
   GaussianMixture::BlockScratch scratch;
+  Eigen::MatrixXd treeScores;  // a block's scaled likelihoods from trees
 
   void evaluate() {
     const Eigen::Index rows = static_cast<Eigen::Index>(blockSteps.size());
     if (rows == 0) return;
     const ClassModelSet& classifier = out->model->classifier;
-    for (int c = 0; c < classes; ++c)
-      classifier.model(c).blockLogDensities(block.data(), kDensityBlockRows, rows, ll.col(c).data(),
-                                            scratch);
+    if (const GbtModel* trees = classifier.trees()) {
+      trees->logScaledLikelihoods(block.topRows(rows), treeScores);
+      ll.topRows(rows) = treeScores;
+    } else {
+      for (int c = 0; c < classes; ++c)
+        classifier.model(c).blockLogDensities(block.data(), kDensityBlockRows, rows,
+                                              ll.col(c).data(), scratch);
+    }
     const Eigen::VectorXd& logPriors = classifier.logPriors();
     Eigen::MatrixXd& target = out->logLikelihoods;
     for (Eigen::Index i = 0; i < rows; ++i) {

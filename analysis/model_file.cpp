@@ -286,6 +286,12 @@ json settingsToJson(const GroupModel& model) {
     out["tolerance"] = c.gmm.tolerance;
     out["tolerance_rule"] = convergenceRuleName(c.gmm.rule);
   }
+  if (c.method == ClassifierMethod::Gbt) {
+    out["trees"] = c.gbt.trees;
+    out["depth"] = c.gbt.depth;
+    out["learning_rate"] = c.gbt.learningRate;
+    out["min_child_weight"] = c.gbt.minChildWeight;
+  }
   out["variance_floor"] = c.gmm.varianceFloor;
   out["regularization"] = regularizationName(c.gmm.reg);
   out["seed"] = c.gmm.seed;
@@ -315,6 +321,13 @@ ClassifierOptions settingsOf(const json& v, const GroupModel& model) {
   if (auto r = parseRegularization(v.value("regularization", std::string()))) c.gmm.reg = *r;
   if (v.contains("seed") && v["seed"].is_number_unsigned()) c.gmm.seed = v["seed"];
   if (auto p = parsePriorMode(v.value("priors", std::string()))) c.priors = *p;
+  c.gbt.trees = v.value("trees", c.gbt.trees);
+  c.gbt.depth = v.value("depth", c.gbt.depth);
+  if (v.contains("learning_rate") && v["learning_rate"].is_number())
+    c.gbt.learningRate = v["learning_rate"];
+  if (v.contains("min_child_weight") && v["min_child_weight"].is_number())
+    c.gbt.minChildWeight = v["min_child_weight"];
+  c.gbt.seed = c.gmm.seed;
   return c;
 }
 
@@ -551,6 +564,31 @@ json transitionsToJson(const TransitionModel& m) {
   return out;
 }
 
+GroupModel finishModel(const json& v, const std::string& path, int fileVersion,
+                       const std::vector<std::string>& names, GroupModel& model);
+
+// A gbt model's classifier: the trees of its "gbt" object over the named classes.
+ClassModelSet treesOf(const json& v, const std::string& path, const std::vector<std::string>& names,
+                      int dimension) {
+  const json& gbt = field(v, path, "gbt");
+  if (!gbt.is_object()) fail(path + ".gbt", "expected an object with the trees");
+  const json& trees = field(gbt, path + ".gbt", "model");
+  if (!trees.is_object()) fail(path + ".gbt.model", "expected XGBoost's JSON form of the trees");
+  auto loaded = GbtModel::load(trees.dump(), static_cast<int>(names.size()), dimension);
+  if (!loaded) fail(path + ".gbt.model", loaded.error().message);
+  Eigen::VectorXd logPriors;
+  if (auto it = v.find("priors"); it != v.end()) {
+    logPriors = vectorOf(*it, path + ".priors");
+    if (logPriors.size() != static_cast<Eigen::Index>(names.size())) {
+      fail(path + ".priors", "expected one log prior per class");
+    }
+  }
+  auto set = ClassModelSet::createTrees(
+      names, std::make_shared<const GbtModel>(std::move(loaded.value())), logPriors);
+  if (!set) fail(path, set.error().message);
+  return std::move(set.value());
+}
+
 GroupModel modelOf(const json& v, const std::string& path) {
   if (!v.is_object()) fail(path, "expected a model object");
   if (stringField(v, path, "format") != kModelFormat) {
@@ -581,7 +619,13 @@ GroupModel modelOf(const json& v, const std::string& path) {
   const int dim = featureDimension(model.group, model.features);
   const std::string methodName = stringField(v, path, "method");
   const std::optional<ClassifierMethod> method = parseClassifierMethod(methodName);
-  if (!method) fail(path + ".method", "expected gaussian or gmm, found " + quotedInput(methodName));
+  if (!method) {
+    fail(path + ".method", "expected gaussian, gmm or gbt, found " + quotedInput(methodName));
+  }
+  if (*method == ClassifierMethod::Gbt && fileVersion < kGbtModelVersion) {
+    fail(path + ".method", "gbt needs version " + std::to_string(kGbtModelVersion) +
+                               ", the file has " + std::to_string(fileVersion));
+  }
   const std::string covName = stringField(v, path, "covariance");
   const std::optional<CovarianceForm> form = parseCovarianceForm(covName);
   if (!form) fail(path + ".covariance", "unknown covariance form " + quotedInput(covName));
@@ -608,6 +652,10 @@ GroupModel modelOf(const json& v, const std::string& path) {
     if (!seen.insert(name).second) fail(cpath, "class " + quotedInput(name) + " listed twice");
     model.classes.push_back(*cls);
     names.push_back(name);
+  }
+  if (*method == ClassifierMethod::Gbt) {
+    model.classifier = treesOf(v, path, names, dim);
+    return finishModel(v, path, fileVersion, names, model);
   }
   // The Gaussian method stores one full Gaussian per class, whatever `covariance` says.
   const CovarianceForm storedForm =
@@ -646,6 +694,12 @@ GroupModel modelOf(const json& v, const std::string& path) {
       ClassModelSet::create(*method, names, std::move(mixtures), logPriors, std::move(rest));
   if (!set) fail(path, set.error().message);
   model.classifier = std::move(set.value());
+  return finishModel(v, path, fileVersion, names, model);
+}
+
+// The parts after the classifier: chain, default decision, provenance and metrics.
+GroupModel finishModel(const json& v, const std::string& path, int fileVersion,
+                       const std::vector<std::string>& names, GroupModel& model) {
   model.decision = DecisionMode::Step;
   if (fileVersion >= 2) {
     const int c = static_cast<int>(names.size());
@@ -711,11 +765,25 @@ json modelToJson(const GroupModel& model) {
   for (Eigen::Index c = 0; c < set.logPriors().size(); ++c)
     priors.push_back(set.logPriors()[c]);
   out["priors"] = std::move(priors);
-  json components = json::object();
-  for (int c = 0; c < set.classCount(); ++c) {
-    components[set.classNames()[static_cast<std::size_t>(c)]] = mixtureToJson(set.model(c));
+  if (const GbtModel* trees = set.trees()) {
+    // The trees in XGBoost's own JSON form, under the settings that grew them.
+    const GbtSettings& g = model.provenance.classifier.gbt;
+    json gbt;
+    gbt["trees"] = g.trees;
+    gbt["depth"] = g.depth;
+    gbt["learning_rate"] = g.learningRate;
+    gbt["min_child_weight"] = g.minChildWeight;
+    auto text = trees->serialize();
+    gbt["model"] = text ? json::parse(text.value(), nullptr, false) : json();
+    out["gbt"] = std::move(gbt);
+    out["version"] = std::max(out["version"].get<int>(), kGbtModelVersion);
+  } else {
+    json components = json::object();
+    for (int c = 0; c < set.classCount(); ++c) {
+      components[set.classNames()[static_cast<std::size_t>(c)]] = mixtureToJson(set.model(c));
+    }
+    out["components"] = std::move(components);
   }
-  out["components"] = std::move(components);
   if (set.hasRestModels()) {
     json rest = json::object();
     for (int c = 0; c < set.classCount(); ++c) {

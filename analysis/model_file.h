@@ -52,7 +52,9 @@ inline constexpr std::string_view kModelBundleFormat = "tactile-model-bundle";
 // neighbours features (normal+shear+touch+context+neighbours, new in version 3) or a motion kind
 // (normal+shear+touch+motion[+neighbours], new in version 4), so that older programs read every
 // file they can use and refuse the others by version.
-inline constexpr int kModelVersion = 4;
+inline constexpr int kModelVersion = 5;
+// Gradient-boosted trees came with version 5.
+inline constexpr int kGbtModelVersion = 5;
 inline constexpr int kOldestModelVersion = 1;
 // The version a file with these models is written as.
 int modelVersionFor(FeatureKind features);

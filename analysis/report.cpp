@@ -55,8 +55,24 @@ std::string floorText(double f) {  // as "%g"
 }
 
 std::vector<std::string> cellKey(const SweepCell& c) {
+  const bool trees = c.method == ClassifierMethod::Gbt;
   return {std::string(groupInfo(c.group).shortName), std::string(featureKindName(c.features)),
-          std::string(classifierMethodName(c.method)), std::string(covarianceFormName(c.form))};
+          std::string(classifierMethodName(c.method)),
+          trees ? std::string() : std::string(covarianceFormName(c.form))};
+}
+
+// A cell's order and floor as the tables show them: empty for boosted trees, which have neither.
+std::string orderText(const SweepCell& c) {
+  return c.method == ClassifierMethod::Gbt ? std::string() : std::to_string(c.order);
+}
+std::string cellFloorText(const SweepCell& c) {
+  return c.method == ClassifierMethod::Gbt ? std::string() : floorText(c.varianceFloor);
+}
+
+bool hasTrees(const SweepResult& sweep) {
+  return std::any_of(sweep.cells.begin(), sweep.cells.end(), [](const SweepCellResult& r) {
+    return r.cell.method == ClassifierMethod::Gbt;
+  });
 }
 
 Table spreadTable(const SweepResult& sweep, SweptVariable variable) {
@@ -356,17 +372,29 @@ std::string cellRate(const SweepCellResult& r, double value, int digits) {
   return fixed(value, digits);
 }
 
-Table bestCellsTable(const SweepResult& sweep) {
+namespace {
+
+// The best-cell tables: one row per cell of `cells`; the tree settings' column only when the
+// sweep has trees.
+Table bestTable(const SweepResult& sweep, const std::vector<std::size_t>& cells,
+                const std::string& title) {
+  const bool trees = hasTrees(sweep);
   Table t;
-  t.title = "Best cell per group (balanced accuracy on held-out rows)";
-  t.header = {"group",      "features",   "method",   "covariance",  "order", "floor",  "seed",
-              "balanced_%", "accuracy_%", "macro_f1", "mean_loglik", "fit_s", "dropped"};
-  for (const std::size_t i : bestCells(sweep)) {
+  t.title = title;
+  t.header = {"group", "features", "method", "covariance", "order", "floor"};
+  if (trees) t.header.push_back("trees");
+  t.header.push_back("seed");
+  if (trees) t.header.push_back("decision");
+  for (const char* h : {"balanced_%", "accuracy_%", "macro_f1", "mean_loglik", "fit_s", "dropped"})
+    t.header.push_back(h);
+  for (const std::size_t i : cells) {
     const SweepCellResult* r = &sweep.cells[i];
     std::vector<std::string> row = cellKey(r->cell);
-    row.push_back(std::to_string(r->cell.order));
-    row.push_back(floorText(r->cell.varianceFloor));
+    row.push_back(orderText(r->cell));
+    row.push_back(cellFloorText(r->cell));
+    if (trees) row.push_back(treeSettingsText(r->cell));
     row.push_back(std::to_string(r->cell.seed));
+    if (trees) row.push_back(std::string(decisionModeName(r->cell.decision)));
     row.push_back(cellRate(*r, 100.0 * r->metrics.balancedAccuracy, 1));
     row.push_back(cellRate(*r, 100.0 * r->metrics.accuracy, 1));
     row.push_back(cellRate(*r, r->metrics.macroF1, 3));
@@ -378,20 +406,36 @@ Table bestCellsTable(const SweepResult& sweep) {
   return t;
 }
 
+}  // namespace
+
+Table bestCellsTable(const SweepResult& sweep) {
+  return bestTable(sweep, bestCells(sweep),
+                   "Best cell per group (balanced accuracy on held-out rows)");
+}
+
+Table bestCellsByMethodTable(const SweepResult& sweep) {
+  return bestTable(sweep, bestCellsByMethod(sweep),
+                   "Best cell per group and method, side by side (balanced accuracy on held-out "
+                   "rows)");
+}
+
 Table sweepCellsTable(const SweepResult& sweep) {
   Table t;
   t.title = "Sweep cells";
+  const bool trees = hasTrees(sweep);
   t.header = {"cell",      "group",       "features",     "method",     "covariance",
               "order",     "floor",       "seed",         "ok",         "fit_s",
               "predict_s", "iterations",  "converged",    "accuracy_%", "balanced_%",
               "macro_f1",  "mean_loglik", "neg_inf_rows", "dropped",    "reason"};
+  if (trees) t.header.insert(t.header.begin() + 7, "trees");
   for (std::size_t i = 0; i < sweep.cells.size(); ++i) {
     const SweepCellResult& r = sweep.cells[i];
     std::vector<std::string> row{std::to_string(i)};
     const std::vector<std::string> key = cellKey(r.cell);
     row.insert(row.end(), key.begin(), key.end());
-    row.push_back(std::to_string(r.cell.order));
-    row.push_back(floorText(r.cell.varianceFloor));
+    row.push_back(orderText(r.cell));
+    row.push_back(cellFloorText(r.cell));
+    if (trees) row.push_back(treeSettingsText(r.cell));
     row.push_back(std::to_string(r.cell.seed));
     row.push_back(r.ok ? "yes" : "no");
     row.push_back(fixed(r.fitSeconds, 4));
@@ -493,6 +537,12 @@ Table configurationTable(const SweepResult& sweep, const json& configuration) {
   add("covariance forms",
       joinedNames(g.forms, [](CovarianceForm f) { return std::string(covarianceFormName(f)); }));
   add("variance floors", joinedNames(g.varianceFloors, [](double f) { return floorText(f); }));
+  if (std::find(g.methods.begin(), g.methods.end(), ClassifierMethod::Gbt) != g.methods.end()) {
+    add("trees", joinedNames(g.treeCounts, [](int n) { return std::to_string(n); }));
+    add("tree depths", joinedNames(g.depths, [](int d) { return std::to_string(d); }));
+    add("learning rates", joinedNames(g.learningRates, [](double r) { return floorText(r); }));
+    add("min child weights", joinedNames(g.minChildWeights, [](double w) { return floorText(w); }));
+  }
   add("features",
       joinedNames(g.features, [](FeatureKind k) { return std::string(featureKindName(k)); }));
   add("seeds", joinedNames(g.seeds, [](std::uint64_t x) { return std::to_string(x); }));
@@ -507,6 +557,12 @@ Table configurationTable(const SweepResult& sweep, const json& configuration) {
 }
 
 std::string cellName(const SweepCell& c) {
+  if (c.method == ClassifierMethod::Gbt) {
+    return "Group " + std::string(groupInfo(c.group).shortName) + ", gbt " + treeSettingsText(c) +
+           (c.features != FeatureKind::Normal ? ", " + std::string(featureKindName(c.features))
+                                              : std::string()) +
+           ", seed " + std::to_string(c.seed) + ", " + std::string(decisionModeName(c.decision));
+  }
   return "Group " + std::string(groupInfo(c.group).shortName) + ", " +
          std::string(classifierMethodName(c.method)) + " " +
          std::string(covarianceFormName(c.form)) + " order " + std::to_string(c.order) +
@@ -584,6 +640,7 @@ std::string sweepReport(const SweepResult& sweep, TableStyle style,
   }
   out += configurationTable(sweep, options.configuration).render(style) + sep;
   out += bestCellsTable(sweep).render(style) + sep;
+  if (mixesMethods(sweep)) out += bestCellsByMethodTable(sweep).render(style) + sep;
 
   // Figures: inline in HTML, linked files in Markdown (when written beside it).
   if (style == TableStyle::Html ||
@@ -703,7 +760,7 @@ std::string modelReport(const ModelBundle& bundle, TableStyle style, std::size_t
     // The order asked for (components dropped for lack of mass are in "dropped"); models without
     // their settings show the most components any class kept.
     int order = 0;
-    for (int c = 0; c < m.classifier.classCount(); ++c)
+    for (int c = 0; c < m.classifier.classCount() && m.classifier.trees() == nullptr; ++c)
       order = std::max(order, static_cast<int>(m.classifier.model(c).weights().size()));
     if (m.classifier.method() == ClassifierMethod::Gmm && !e.fit.empty())
       order = std::max(order, m.provenance.classifier.gmm.components);

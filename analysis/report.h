@@ -65,6 +65,8 @@ Table rateAgainstOrderTable(const SweepResult& sweep);
 
 // The best cell per group (bestCells): settings and metrics.
 Table bestCellsTable(const SweepResult& sweep);
+// Each (group, method)'s best cell (bestCellsByMethod): the families side by side.
+Table bestCellsByMethodTable(const SweepResult& sweep);
 
 // Every cell: settings, fit / predict time, iterations, converged, metrics, held-out loglik.
 Table sweepCellsTable(const SweepResult& sweep);

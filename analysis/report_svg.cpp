@@ -271,12 +271,22 @@ std::string timeErrorChartSvg(const SweepResult& sweep, const std::string& title
       continue;
     const auto [px, py] = point(r);
     const SweepCell& c = r.cell;
+    const std::string settings = c.method == ClassifierMethod::Gbt
+                                     ? treeSettingsText(c)
+                                     : std::string(covarianceFormName(c.form)) + " order " +
+                                           std::to_string(c.order) + " floor " +
+                                           tickText(c.varianceFloor);
+    const std::string colour = colourOf[groupIndex(c.group)];
+    // Boosted trees as squares, the mixtures as dots: the families apart at a glance.
+    const std::string marker = c.method == ClassifierMethod::Gbt
+                                   ? "<rect x=\"" + num(px - 3.0) + "\" y=\"" + num(py - 3.0) +
+                                         "\" width=\"6\" height=\"6\" fill=\"" + colour + "\"/>"
+                                   : "<circle cx=\"" + num(px) + "\" cy=\"" + num(py) +
+                                         "\" r=\"3\" fill=\"" + colour + "\"/>";
     out += "<g><title>cell " + std::to_string(i) + ": " +
            std::string(groupInfo(c.group).shortName) + " " +
-           std::string(classifierMethodName(c.method)) + " " +
-           std::string(covarianceFormName(c.form)) + " order " + std::to_string(c.order) +
-           " floor " + tickText(c.varianceFloor) + "</title><circle cx=\"" + num(px) + "\" cy=\"" +
-           num(py) + "\" r=\"3\" fill=\"" + colourOf[groupIndex(c.group)] + "\"/></g>\n";
+           std::string(classifierMethodName(c.method)) + " " + settings + "</title>" + marker +
+           "</g>\n";
   }
   // Each group's own front (cells of different groups are no alternatives to each other), in the
   // group's colour, as a staircase: from each front cell right to the next one's time, then down.
@@ -309,9 +319,16 @@ std::string timeErrorChartSvg(const SweepResult& sweep, const std::string& title
                         " (front: " + std::to_string(frontSize[g]) + ")");
   }
   if (ringed > 0 && row < kLegendRows) {
-    out += legendEntry(row, "#000000",
+    out += legendEntry(row++, "#000000",
                        "ringed: the group's Pareto front (" + std::to_string(ringed) + ")");
   }
+  const auto isTrees = [](const SweepCellResult& r) {
+    return r.cell.method == ClassifierMethod::Gbt;
+  };
+  const bool anyTrees = std::any_of(sweep.cells.begin(), sweep.cells.end(), isTrees);
+  const bool anyMixtures = !std::all_of(sweep.cells.begin(), sweep.cells.end(), isTrees);
+  if (anyTrees && anyMixtures && row < kLegendRows)
+    out += legendEntry(row, "#000000", "squares: boosted trees; dots: Gaussian mixtures");
   out += "</svg>\n";
   return out;
 }

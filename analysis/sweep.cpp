@@ -95,9 +95,10 @@ std::vector<SweepCellResult> runCells(const std::vector<SweepCell>& cells, const
   bool temporal = false;
   for (const SweepCell& c : cells)
     temporal = temporal || c.decision != DecisionMode::Step;
-  const GroupEvaluation ev =
-      evaluateClassifier(fit.model, data.selection.modelled, data.test, &data.testPatterns,
-                         temporal ? &data.chain : nullptr);
+  TransitionModel chain = data.chain;
+  chain.emissionWeight = defaultEmissionWeight(r.cell.group, r.cell.method);
+  const GroupEvaluation ev = evaluateClassifier(fit.model, data.selection.modelled, data.test,
+                                                &data.testPatterns, temporal ? &chain : nullptr);
   r.patterns = ev.patterns;
   r.meanLogLikelihood = ev.meanLogLikelihood;
   r.negInfRows = ev.negInfRows;
@@ -132,7 +133,18 @@ ClassifierOptions cellClassifierOptions(const SweepGrid& grid, const SweepCell& 
   options.gmm.maxIterations = grid.maxIterations;
   options.gmm.tolerance = grid.tolerance;
   options.gmm.threads = 1;
+  if (cell.method == ClassifierMethod::Gbt) options.gbt = cellTreeSettings(cell);
   return options;
+}
+
+GbtSettings cellTreeSettings(const SweepCell& cell) {
+  GbtSettings s;
+  s.trees = cell.trees;
+  s.depth = cell.depth;
+  s.learningRate = cell.learningRate;
+  s.minChildWeight = cell.minChildWeight;
+  s.seed = cell.seed;
+  return s;
 }
 
 namespace {
@@ -150,7 +162,25 @@ std::vector<SweepCell> expandGrid(const SweepGrid& grid) {
         if (m == ClassifierMethod::Gaussian) {
           for (double floor : grid.varianceFloors) {
             for (std::uint64_t seed : grid.seeds) {
-              cells.push_back({g, m, 1, CovarianceForm::NodalFull, floor, f, seed});
+              for (DecisionMode d : decisionsOf(grid))
+                cells.push_back({g, m, 1, CovarianceForm::NodalFull, floor, f, seed, d});
+            }
+          }
+          continue;
+        }
+        if (m == ClassifierMethod::Gbt) {
+          for (int trees : grid.treeCounts) {
+            for (int depth : grid.depths) {
+              for (double rate : grid.learningRates) {
+                for (double weight : grid.minChildWeights) {
+                  for (std::uint64_t seed : grid.seeds) {
+                    for (DecisionMode d : decisionsOf(grid)) {
+                      cells.push_back({g, m, 1, CovarianceForm::NodalFull, 0.0, f, seed, d, trees,
+                                       depth, rate, weight});
+                    }
+                  }
+                }
+              }
             }
           }
           continue;
@@ -183,8 +213,30 @@ std::string numberText(double v) {
 Status checkSweepGrid(const SweepGrid& grid) {
   if (grid.methods.empty()) return Status::failure("a sweep needs at least one method");
   if (grid.features.empty()) return Status::failure("a sweep needs at least one feature kind");
-  if (grid.varianceFloors.empty())
+  const auto uses = [&grid](ClassifierMethod m) {
+    return std::find(grid.methods.begin(), grid.methods.end(), m) != grid.methods.end();
+  };
+  const bool mixtures = uses(ClassifierMethod::Gmm) || uses(ClassifierMethod::Gaussian);
+  if (mixtures && grid.varianceFloors.empty())
     return Status::failure("a sweep needs at least one variance floor");
+  if (uses(ClassifierMethod::Gbt)) {
+    if (grid.treeCounts.empty() || grid.depths.empty() || grid.learningRates.empty() ||
+        grid.minChildWeights.empty()) {
+      return Status::failure(
+          "a sweep of boosted trees needs at least one tree count, depth, learning rate and "
+          "minimum child weight");
+    }
+    for (int trees : grid.treeCounts) {
+      for (int depth : grid.depths) {
+        for (double rate : grid.learningRates) {
+          for (double weight : grid.minChildWeights) {
+            const std::string bad = checkGbtSettings({trees, depth, rate, weight});
+            if (!bad.empty()) return Status::failure(bad);
+          }
+        }
+      }
+    }
+  }
   if (grid.seeds.empty()) return Status::failure("a sweep needs at least one seed");
   const bool gmm = std::find(grid.methods.begin(), grid.methods.end(), ClassifierMethod::Gmm) !=
                    grid.methods.end();
@@ -239,9 +291,10 @@ void prepareFold(Fold& fold, const std::vector<LabelledRun>& train,
     }
     d.chain = estimateTransitions(classSequences(d.train, d.selection.modelled),
                                   static_cast<int>(d.selection.modelled.size()));
-    // The chain weighs the evidence as the group's trained models do by default, so that the
-    // online and offline scores of a cell are those of the model trained with its settings.
-    d.chain.emissionWeight = defaultTrainSettings(cell.group).emissionWeight;
+    // The chain weighs the evidence as the group's trained mixtures do by default (runCells sets
+    // each method's own default), so that the online and offline scores of a cell are those of
+    // the model trained with its settings.
+    d.chain.emissionWeight = defaultEmissionWeight(cell.group, ClassifierMethod::Gmm);
     SweepDataSummary s;
     s.group = cell.group;
     s.features = cell.features;
@@ -503,6 +556,12 @@ std::vector<std::vector<std::size_t>> fitJobs(const std::vector<SweepCell>& cell
 
 double sweepCellUnits(const SweepCell& cell, std::size_t trainRows, std::size_t testRows) {
   const double d = featureDimension(cell.group, cell.features);
+  if (cell.method == ClassifierMethod::Gbt) {
+    const double rounds = static_cast<double>(std::max(cell.trees, 1));
+    return static_cast<double>(trainRows) * d * rounds +
+           static_cast<double>(testRows) * static_cast<double>(std::max(cell.depth, 1)) * rounds +
+           1.0;
+  }
   const double perRow = isDiagonal(cell.form) ? d : d * d;
   const double components =
       cell.method == ClassifierMethod::Gaussian ? 1.0 : static_cast<double>(cell.order);
@@ -562,6 +621,12 @@ json sweepCellSettingsToJson(const SweepCell& cell) {
   c["features"] = featureKindName(cell.features);
   c["seed"] = cell.seed;
   c["decision"] = decisionModeName(cell.decision);
+  if (cell.method == ClassifierMethod::Gbt) {
+    c["trees"] = cell.trees;
+    c["depth"] = cell.depth;
+    c["learning_rate"] = cell.learningRate;
+    c["min_child_weight"] = cell.minChildWeight;
+  }
   return c;
 }
 
@@ -628,6 +693,10 @@ json sweepGridToJson(const SweepGrid& g) {
     forms.push_back(covarianceFormName(f));
   grid["covariances"] = std::move(forms);
   grid["floors"] = g.varianceFloors;
+  grid["trees"] = g.treeCounts;
+  grid["depths"] = g.depths;
+  grid["learning_rates"] = g.learningRates;
+  grid["min_child_weights"] = g.minChildWeights;
   json features = json::array();
   for (FeatureKind f : g.features)
     features.push_back(featureKindName(f));
@@ -709,6 +778,12 @@ std::string readGrid(const json& grid, SweepGrid& g) {
     g.orders = grid.value("orders", std::vector<int>{});
     g.varianceFloors = grid.value("floors", std::vector<double>{});
     g.seeds = grid.value("seeds", std::vector<std::uint64_t>{});
+    // Sweeps from before boosted trees have no tree settings: the defaults.
+    const SweepGrid treeDefaults;
+    g.treeCounts = grid.value("trees", treeDefaults.treeCounts);
+    g.depths = grid.value("depths", treeDefaults.depths);
+    g.learningRates = grid.value("learning_rates", treeDefaults.learningRates);
+    g.minChildWeights = grid.value("min_child_weights", treeDefaults.minChildWeights);
     // Sweeps from before decision modes scored the per-step decision only.
     if (grid.contains("decisions")) {
       if (!parseList(grid, "decisions", g.decisions, parseDecisionMode))
@@ -793,6 +868,12 @@ std::string readSweep(const json& value, SweepResult& out) {
         const auto d = parseDecisionMode(c.value("decision", std::string()));
         if (!d) return where + "unknown decision";
         r.cell.decision = *d;
+      }
+      if (r.cell.method == ClassifierMethod::Gbt) {
+        r.cell.trees = c.at("trees").get<int>();
+        r.cell.depth = c.at("depth").get<int>();
+        r.cell.learningRate = c.at("learning_rate").get<double>();
+        r.cell.minChildWeight = c.at("min_child_weight").get<double>();
       }
       r.ok = c.at("ok").get<bool>();
       r.reason = c.value("reason", "");

@@ -34,6 +34,11 @@ struct SweepGrid {
   std::vector<CovarianceForm> forms{CovarianceForm::NodalFull, CovarianceForm::NodalDiag,
                                     CovarianceForm::GrandFull, CovarianceForm::GrandDiag};
   std::vector<double> varianceFloors{0.01, 0.03, 0.1};
+  // Tree settings (method Gbt, analysis/gbt.h): every combination is a cell.
+  std::vector<int> treeCounts{100};
+  std::vector<int> depths{6};
+  std::vector<double> learningRates{0.1};
+  std::vector<double> minChildWeights{1.0};
   std::vector<FeatureKind> features{FeatureKind::Normal};
   std::vector<std::uint64_t> seeds{1};
   // Decision modes scored (temporal.h): cells that differ only in the decision share one fit;
@@ -49,7 +54,9 @@ struct SweepGrid {
 };
 
 // One cell's settings. The Gaussian method has no order or form: its cells carry order 1 and
-// nodal-full and appear once per (group, variance floor, features, seed).
+// nodal-full and appear once per (group, variance floor, features, seed, decision). Boosted trees
+// have neither order, form nor floor (order 1, nodal-full, floor 0) but the tree settings, which
+// are 0 in the cells of the other methods.
 struct SweepCell {
   SensorGroup group = SensorGroup::Front;
   ClassifierMethod method = ClassifierMethod::Gmm;
@@ -59,6 +66,10 @@ struct SweepCell {
   FeatureKind features = FeatureKind::Normal;
   std::uint64_t seed = 1;
   DecisionMode decision = DecisionMode::Step;
+  int trees = 0;
+  int depth = 0;
+  double learningRate = 0.0;
+  double minChildWeight = 0.0;
 
   // Same cell (every setting equal).
   bool operator==(const SweepCell&) const = default;
@@ -68,8 +79,11 @@ struct SweepCell {
 // (results do not depend on it). A model trained with them reproduces the cell.
 ClassifierOptions cellClassifierOptions(const SweepGrid& grid, const SweepCell& cell);
 
+// The tree settings of a Gbt cell.
+GbtSettings cellTreeSettings(const SweepCell& cell);
+
 // Cells of a grid in a fixed order (group, features, method, form, order, variance floor, seed,
-// decision).
+// decision; for trees: trees, depth, learning rate, min child weight, seed, decision).
 std::vector<SweepCell> expandGrid(const SweepGrid& grid);
 // The fit jobs of expanded cells: the grid positions of cells equal but for the decision mode
 // (adjacent in grid order), which share one fit.
@@ -78,8 +92,9 @@ std::vector<std::vector<std::size_t>> fitJobs(const std::vector<SweepCell>& cell
 // that no worker is left alone with a long fit at the end) and the workbench's time estimate: every
 // EM iteration visits each training row once per component (a Gaussian is one) at a cost per row
 // of the feature dimension D (diagonal forms) or D^2 (full forms); prediction visits the test rows
-// the same way. In units of that work, +1 so that an empty cell costs something. No result depends
-// on it.
+// the same way. Boosted trees visit each training row once per feature and round (the histogram
+// of every class's tree) and each test row once per tree level and round. In units of that work,
+// +1 so that an empty cell costs something. No result depends on it.
 double sweepCellUnits(const SweepCell& cell, std::size_t trainRows, std::size_t testRows);
 
 struct SweepCellResult {
@@ -156,7 +171,8 @@ SweepResult runSweepByScene(const std::vector<LabelledRun>& runs,
 
 // The one check of a grid, used by every way a sweep is asked for (CLI, workbench, Python,
 // stored plans): every list has a value, every order is a whole number from 1 to kMaxModelOrder,
-// every floor is 0 or at least kMinVarianceFloor, restarts and the iteration limit are at least
+// every floor is 0 or at least kMinVarianceFloor, every tree setting passes checkGbtSettings
+// (when trees are swept), restarts and the iteration limit are at least
 // 1, the tolerance is finite and not negative. The message names the first bad value.
 Status checkSweepGrid(const SweepGrid& grid);
 
@@ -211,7 +227,8 @@ nlohmann::json sweepToJson(const SweepResult& result);
 // All of it but "cells": what a database stores as a sweep's configuration beside its cells.
 nlohmann::json sweepHeaderToJson(const SweepResult& result);
 // One cell as written in SWEEP.json's "cells" (and stored per cell in a database), and its
-// settings alone (group, method, order, covariance, floor, features, seed, decision).
+// settings alone (group, method, order, covariance, floor, features, seed, decision; for trees
+// also trees, depth, learning_rate and min_child_weight).
 nlohmann::json sweepCellToJson(const SweepCellResult& cell);
 nlohmann::json sweepCellSettingsToJson(const SweepCell& cell);
 // {"Wall": 12, "Corner": 3, ...}: the classes with a non-zero count.

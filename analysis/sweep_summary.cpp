@@ -53,7 +53,7 @@ std::vector<RateSeries> rateSeries(const SweepResult& sweep, SweptVariable varia
   std::map<Key, std::vector<std::size_t>> members;
   for (std::size_t i = 0; i < sweep.cells.size(); ++i) {
     const SweepCellResult& r = sweep.cells[i];
-    if (!r.ok || !spreadOf(r.metrics).any) continue;
+    if (!r.ok || !spreadOf(r.metrics).any || r.cell.method == ClassifierMethod::Gbt) continue;
     const SweepCell& c = r.cell;
     members[Key{groupIndex(c.group), static_cast<int>(c.features), static_cast<int>(c.method),
                 static_cast<int>(c.form),
@@ -163,6 +163,33 @@ std::vector<std::size_t> bestCells(const SweepResult& sweep, std::size_t minTest
   for (const auto& [g, i] : best)
     out.push_back(i);
   return out;
+}
+
+std::vector<std::size_t> bestCellsByMethod(const SweepResult& sweep, std::size_t minTestSteps) {
+  std::map<std::pair<int, int>, std::size_t> best;
+  for (std::size_t i = 0; i < sweep.cells.size(); ++i) {
+    const SweepCellResult& r = sweep.cells[i];
+    if (!r.ok) continue;
+    const auto [it, inserted] =
+        best.try_emplace(std::pair{groupIndex(r.cell.group), static_cast<int>(r.cell.method)}, i);
+    if (!inserted && betterCell(r, sweep.cells[it->second], minTestSteps)) it->second = i;
+  }
+  std::vector<std::size_t> out;
+  for (const auto& [key, i] : best)
+    out.push_back(i);
+  return out;
+}
+
+bool mixesMethods(const SweepResult& sweep) {
+  for (const SweepCellResult& r : sweep.cells)
+    if (r.cell.method != sweep.cells.front().cell.method) return true;
+  return false;
+}
+
+std::string treeSettingsText(const SweepCell& cell) {
+  if (cell.method != ClassifierMethod::Gbt) return {};
+  return std::to_string(cell.trees) + " trees, depth " + std::to_string(cell.depth) + ", rate " +
+         floorText(cell.learningRate) + ", min child weight " + floorText(cell.minChildWeight);
 }
 
 }  // namespace tactile::analysis

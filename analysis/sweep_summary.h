@@ -15,7 +15,8 @@
 namespace tactile::analysis {
 
 // Figures 4.13 / 4.14 as data: one series per fixed setting (group, features, method, form, the
-// other of order / floor, seed) with a point per value of the swept variable, ascending. Each
+// other of order / floor, seed) with a point per value of the swept variable, ascending. Cells of
+// boosted trees, which have neither order nor floor, are in none. Each
 // point is one successful cell with per-class rates (recall, percent): their mean, min and max
 // over the cell's classes, and the cell's accuracy and balanced accuracy (percent).
 enum class SweptVariable { Floor, Order };
@@ -52,5 +53,14 @@ bool betterCell(const SweepCellResult& a, const SweepCellResult& b,
 // in group order; groups without one are left out.
 std::vector<std::size_t> bestCells(const SweepResult& sweep,
                                    std::size_t minTestSteps = kMinTestSteps);
+// The same for each (group, method) pair: the families side by side. In group order, then
+// method order (gaussian, gmm, gbt).
+std::vector<std::size_t> bestCellsByMethod(const SweepResult& sweep,
+                                           std::size_t minTestSteps = kMinTestSteps);
+// The sweep has cells of more than one method.
+bool mixesMethods(const SweepResult& sweep);
+// A Gbt cell's tree settings as text ("100 trees, depth 6, rate 0.1, min child weight 1"); empty
+// for the other methods.
+std::string treeSettingsText(const SweepCell& cell);
 
 }  // namespace tactile::analysis

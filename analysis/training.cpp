@@ -89,10 +89,11 @@ namespace {
 
 struct GroupDefault {
   SensorGroup group;
+  ClassifierMethod method;  // the family that won on the selection corpus
   FeatureKind features;
-  int order;
+  int order;  // the mixtures' settings (kept for --method gmm on a trees group)
   double floor;
-  double emissionWeight;  // of the class chain's evidence (TransitionModel::emissionWeight)
+  double emissionWeight;  // of the mixtures' class chain (TransitionModel::emissionWeight)
 };
 
 // Per group, the setting with the best leave-one-scene-out score (`sweep --split by-scene`) over
@@ -121,18 +122,25 @@ struct GroupDefault {
 // held-out draws). F keeps its setting (+touch 16 scored 0.002 higher and lost 0.037 on the
 // held-out draws); L keeps its own (context 16 scored 0.002 higher and took classifying a
 // million steps at 15% contact from 1.75 s to 2.43 s, over the 2 s target).
+// The family: each group's mixtures at these settings against boosted trees (100 trees, depth 6,
+// learning rate 0.1, min child weight 1, the same features, the plain chain) by the same rule
+// (bench/learning/family_choice.sh, median of fit seeds 1-3, online): the trees won in F, L, RRC
+// and R (0.926, 0.936, 0.926, 0.949 against 0.916, 0.924, 0.900, 0.932), the mixtures in FLC,
+// RLC, B and FRC (0.916, 0.921, 0.907, 0.932 against 0.899, 0.903, 0.880, 0.896).
 constexpr FeatureKind kShear = FeatureKind::NormalShear;
 constexpr FeatureKind kContext = FeatureKind::Context;
 constexpr FeatureKind kNeighbours = FeatureKind::Neighbours;
+constexpr ClassifierMethod kGmm = ClassifierMethod::Gmm;
+constexpr ClassifierMethod kTrees = ClassifierMethod::Gbt;
 constexpr std::array<GroupDefault, kGroupCount> kGroupDefaults{{
-    {SensorGroup::Front, kContext, 8, 0.01, 0.3},
-    {SensorGroup::FrontLeftCorner, kNeighbours, 8, 0.01, 1.0},
-    {SensorGroup::Left, kNeighbours, 8, 0.01, 0.3},
-    {SensorGroup::RearLeftCorner, kNeighbours, 16, 0.01, 1.0},
-    {SensorGroup::Back, kShear, 4, 0.01, 0.3},
-    {SensorGroup::RearRightCorner, kContext, 8, 0.01, 0.3},
-    {SensorGroup::Right, kNeighbours, 8, 0.01, 0.1},
-    {SensorGroup::FrontRightCorner, kNeighbours, 16, 0.01, 1.0},
+    {SensorGroup::Front, kTrees, kContext, 8, 0.01, 0.3},
+    {SensorGroup::FrontLeftCorner, kGmm, kNeighbours, 8, 0.01, 1.0},
+    {SensorGroup::Left, kTrees, kNeighbours, 8, 0.01, 0.3},
+    {SensorGroup::RearLeftCorner, kGmm, kNeighbours, 16, 0.01, 1.0},
+    {SensorGroup::Back, kGmm, kShear, 4, 0.01, 0.3},
+    {SensorGroup::RearRightCorner, kTrees, kContext, 8, 0.01, 0.3},
+    {SensorGroup::Right, kTrees, kNeighbours, 8, 0.01, 0.1},
+    {SensorGroup::FrontRightCorner, kGmm, kNeighbours, 16, 0.01, 1.0},
 }};
 
 constexpr bool inGroupOrder() {
@@ -148,13 +156,31 @@ TrainSettings defaultTrainSettings(SensorGroup group) {
   const GroupDefault& d = kGroupDefaults[static_cast<std::size_t>(groupIndex(group))];
   TrainSettings s;
   s.features = d.features;
-  s.classifier.method = ClassifierMethod::Gmm;
+  s.classifier.method = d.method;
   s.classifier.gmm.form = CovarianceForm::NodalFull;
   s.classifier.gmm.components = d.order;
   s.classifier.gmm.varianceFloor = d.floor;
   s.classifier.gmm.restarts = 3;  // the best of three fits: one start alone sometimes lands badly
-  s.emissionWeight = d.emissionWeight;
+  s.emissionWeight = defaultEmissionWeight(group, d.method);
   return s;
+}
+
+double defaultEmissionWeight(SensorGroup group, ClassifierMethod method) {
+  if (method == ClassifierMethod::Gbt) return 1.0;
+  return kGroupDefaults[static_cast<std::size_t>(groupIndex(group))].emissionWeight;
+}
+
+Result<ClassifierMethod> impliedMethod(std::optional<ClassifierMethod> given, bool mixtureOptions,
+                                       bool treeOptions, ClassifierMethod groupDefault) {
+  if (given) return *given;
+  if (mixtureOptions && treeOptions) {
+    return Result<ClassifierMethod>::failure(
+        "options of the mixtures (order, covariance, floor, restarts) and of boosted trees (trees, "
+        "depth, learning rate, min child weight) were both given: say which with the method");
+  }
+  if (treeOptions) return ClassifierMethod::Gbt;
+  if (mixtureOptions && groupDefault == ClassifierMethod::Gbt) return ClassifierMethod::Gmm;
+  return groupDefault;
 }
 
 GroupSettings defaultGroupSettings() {
@@ -237,9 +263,13 @@ GroupEvaluation evaluateClassifier(const ClassModelSet& classifier,
     ev.decideSeconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - decideStart).count();
   }
-  const HeldOutLogLikelihood ll = heldOutLogLikelihood(logLik, truthColumn);
-  ev.meanLogLikelihood = ll.mean;
-  ev.negInfRows = ll.negInfRows;
+  // A density's held-out log-likelihood; trees have no density (their scaled likelihoods are
+  // log posterior ratios), so none is reported for them.
+  if (classifier.trees() == nullptr) {
+    const HeldOutLogLikelihood ll = heldOutLogLikelihood(logLik, truthColumn);
+    ev.meanLogLikelihood = ll.mean;
+    ev.negInfRows = ll.negInfRows;
+  }
   if (classifier.hasRestModels()) {
     Eigen::VectorXd ratio;
     for (std::size_t c = 0; c < classes.size(); ++c) {

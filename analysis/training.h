@@ -39,13 +39,25 @@ struct GroupSettings {
   TrainSettings& of(SensorGroup group) { return byGroup[groupIndex(group)]; }
 };
 
-// What `tactile train` and the workbench train with unless told otherwise: GMM, nodal-full,
-// k-means++ with 3 restarts, seed 1, the online decision, and per group the feature kind (mostly
-// the context kind), order and variance floor (clamp) with the best leave-one-scene-out score on
-// a selection corpus apart from the scenes scores are quoted on
-// (docs/learning.md#training-defaults).
+// What `tactile train` and the workbench train with unless told otherwise: per group the family
+// (GMM or boosted trees), the feature kind (mostly the context kinds), order and variance floor
+// (clamp) with the best score on a selection corpus apart from the scenes scores are quoted on;
+// the mixtures nodal-full, k-means++ with 3 restarts, the trees at their defaults; seed 1, the
+// online decision (docs/learning.md#training-defaults).
 GroupSettings defaultGroupSettings();
 TrainSettings defaultTrainSettings(SensorGroup group);
+// The default weight of each step's evidence in the class chain of a group's model of the given
+// method: for the mixtures, the group's chosen weight (kept with its other defaults); for boosted
+// trees 1, the plain chain: their scaled likelihoods (posterior over prior) span far fewer nats
+// than the mixtures' densities, and the mixtures' weights below 1 let the chain outweigh them.
+double defaultEmissionWeight(SensorGroup group, ClassifierMethod method);
+// The family a group trains with when a front end (CLI, Python) applies options to every group:
+// the method given, else the family the given options belong to (mixtureOptions: order,
+// covariance, floor or restarts; treeOptions: trees, depth, learning rate or min child weight),
+// else the group's default. Options of both families without a method are refused: which was
+// meant cannot be told.
+Result<ClassifierMethod> impliedMethod(std::optional<ClassifierMethod> given, bool mixtureOptions,
+                                       bool treeOptions, ClassifierMethod groupDefault);
 
 // Classes of a data set that get a model: present with at least max(2, D) samples (the engine
 // rejects fewer samples than dimensions). The others are listed in `unmodelled`; their test rows

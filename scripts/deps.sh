@@ -10,7 +10,7 @@ TACTILE_PACKAGES=(
   libqcustomplot-dev libqcustomplot2.1-qt6
   libeigen3-dev libsqlite3-dev sqlite3 libpq-dev postgresql nlohmann-json3-dev libcli11-dev
   libgtest-dev libgmock-dev libbenchmark-dev
-  libzstd-dev liblz4-dev nodejs
+  libzstd-dev liblz4-dev libxgboost-dev nodejs
   python3-dev pybind11-dev python3-numpy python3-pandas python3-sklearn python3-pytest
   xvfb xauth fonts-noto-cjk qt6-translations-l10n locales
   slurm-wlm munge

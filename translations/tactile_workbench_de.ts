@@ -2377,6 +2377,14 @@ pausiert: „Abspielen“ (P) lässt den Navigator fahren, „Schritt“ (N) mac
         <source>no test data</source>
         <translation>keine Testdaten</translation>
     </message>
+    <message>
+        <source>%1 trees, depth %2, rate %3, weight %4</source>
+        <translation>%1 Bäume, Tiefe %2, Rate %3, Gewicht %4</translation>
+    </message>
+    <message>
+        <source>Trees</source>
+        <translation>Bäume</translation>
+    </message>
 </context>
 <context>
     <name>tactile::gui::SweepPlot</name>
@@ -2457,6 +2465,18 @@ Zelle %1 (zum Auswählen klicken)</translation>
     <message>
         <source>Fit + predict time</source>
         <translation>Zeit für Anpassen + Vorhersagen</translation>
+    </message>
+    <message>
+        <source>group %1, boosted trees</source>
+        <translation>Gruppe %1, Boosted Trees</translation>
+    </message>
+    <message>
+        <source>dots: Gaussian mixtures</source>
+        <translation>Punkte: Gaußsche Mischmodelle</translation>
+    </message>
+    <message>
+        <source>squares: boosted trees</source>
+        <translation>Quadrate: Boosted Trees</translation>
     </message>
 </context>
 <context>
@@ -2580,6 +2600,10 @@ Zelle %1 (zum Auswählen klicken)</translation>
     <message>
         <source>Correct rate per class of this cell (of the steps of a class, the share predicted as it), %</source>
         <translation>Trefferquote je Klasse dieser Zelle (von den Schritten einer Klasse der als sie vorhergesagte Anteil), %</translation>
+    </message>
+    <message>
+        <source>Group %1, boosted trees: %2 trees, depth %3, rate %4, min child weight %5, %6 features, seed %7, %8 decision</source>
+        <translation>Gruppe %1, Boosted Trees: %2 Bäume, Tiefe %3, Rate %4, min. Blattgewicht %5, %6 Merkmale, Seed %7, Entscheidung %8</translation>
     </message>
 </context>
 <context>
@@ -3237,6 +3261,66 @@ grau: blockiert</translation>
             <numerusform>Sweep %1 geplant: %n Zelle, ausstehend, für die Worker unten.</numerusform>
             <numerusform>Sweep %1 geplant: %n Zellen, alle ausstehend, für die Worker unten.</numerusform>
         </translation>
+    </message>
+    <message>
+        <source>Boosted trees</source>
+        <translation>Boosted Trees</translation>
+    </message>
+    <message>
+        <source>Gradient-boosted trees (XGBoost) under the same class chain: the online and offline decisions use their class posteriors divided by the priors</source>
+        <translation>Gradient-Boosted Trees (XGBoost) unter derselben Klassenkette: die Online- und Offline-Entscheidungen verwenden ihre A-posteriori-Wahrscheinlichkeiten geteilt durch die Prioren</translation>
+    </message>
+    <message>
+        <source>Boosting rounds (trees per class), comma-separated</source>
+        <translation>Boosting-Runden (Bäume je Klasse), durch Kommas getrennt</translation>
+    </message>
+    <message>
+        <source>Largest tree depths, comma-separated</source>
+        <translation>Größte Baumtiefen, durch Kommas getrennt</translation>
+    </message>
+    <message>
+        <source>Learning rates (shrinkage of each round), comma-separated</source>
+        <translation>Lernraten (Schrumpfung jeder Runde), durch Kommas getrennt</translation>
+    </message>
+    <message>
+        <source>Least summed weight in a leaf, comma-separated</source>
+        <translation>Kleinstes summiertes Gewicht in einem Blatt, durch Kommas getrennt</translation>
+    </message>
+    <message>
+        <source>rounds</source>
+        <translation>Runden</translation>
+    </message>
+    <message>
+        <source>depth</source>
+        <translation>Tiefe</translation>
+    </message>
+    <message>
+        <source>rate</source>
+        <translation>Rate</translation>
+    </message>
+    <message>
+        <source>min weight</source>
+        <translation>Min.-Gewicht</translation>
+    </message>
+    <message>
+        <source>Trees:</source>
+        <translation>Bäume:</translation>
+    </message>
+    <message>
+        <source>Trees</source>
+        <translation>Bäume</translation>
+    </message>
+    <message>
+        <source>Depths</source>
+        <translation>Tiefen</translation>
+    </message>
+    <message>
+        <source>Learning rates</source>
+        <translation>Lernraten</translation>
+    </message>
+    <message>
+        <source>Min child weights</source>
+        <translation>Min. Blattgewichte</translation>
     </message>
 </context>
 <context>

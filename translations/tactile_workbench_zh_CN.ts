@@ -2367,6 +2367,14 @@ paused: Play (P) lets the navigator drive, Step (N) takes one step</source>
         <source>no test data</source>
         <translation>没有测试数据</translation>
     </message>
+    <message>
+        <source>%1 trees, depth %2, rate %3, weight %4</source>
+        <translation>%1 棵树，深度 %2，学习率 %3，权重 %4</translation>
+    </message>
+    <message>
+        <source>Trees</source>
+        <translation>树</translation>
+    </message>
 </context>
 <context>
     <name>tactile::gui::SweepPlot</name>
@@ -2447,6 +2455,18 @@ cell %1 (click to select)</source>
     <message>
         <source>Fit + predict time</source>
         <translation>拟合 + 预测时间</translation>
+    </message>
+    <message>
+        <source>group %1, boosted trees</source>
+        <translation>组 %1，提升树</translation>
+    </message>
+    <message>
+        <source>dots: Gaussian mixtures</source>
+        <translation>圆点：高斯混合模型</translation>
+    </message>
+    <message>
+        <source>squares: boosted trees</source>
+        <translation>方块：提升树</translation>
     </message>
 </context>
 <context>
@@ -2570,6 +2590,10 @@ cell %1 (click to select)</source>
     <message>
         <source>Correct rate per class of this cell (of the steps of a class, the share predicted as it), %</source>
         <translation>此单元每类正确率（在某类的步中，被预测为该类的比例），%</translation>
+    </message>
+    <message>
+        <source>Group %1, boosted trees: %2 trees, depth %3, rate %4, min child weight %5, %6 features, seed %7, %8 decision</source>
+        <translation>组 %1，提升树：%2 棵树，深度 %3，学习率 %4，最小子节点权重 %5，%6 特征，种子 %7，%8 决策</translation>
     </message>
 </context>
 <context>
@@ -3220,6 +3244,66 @@ grey: blocked</source>
         <translation>
             <numerusform>扫描 %1 已规划：%n 个单元，全部待处理，由下方的工作进程完成。</numerusform>
         </translation>
+    </message>
+    <message>
+        <source>Boosted trees</source>
+        <translation>提升树</translation>
+    </message>
+    <message>
+        <source>Gradient-boosted trees (XGBoost) under the same class chain: the online and offline decisions use their class posteriors divided by the priors</source>
+        <translation>在同一类别链下的梯度提升树（XGBoost）：在线和离线决策使用其类别后验概率除以先验</translation>
+    </message>
+    <message>
+        <source>Boosting rounds (trees per class), comma-separated</source>
+        <translation>提升轮数（每类的树数），以逗号分隔</translation>
+    </message>
+    <message>
+        <source>Largest tree depths, comma-separated</source>
+        <translation>最大树深度，以逗号分隔</translation>
+    </message>
+    <message>
+        <source>Learning rates (shrinkage of each round), comma-separated</source>
+        <translation>学习率（每轮的收缩），以逗号分隔</translation>
+    </message>
+    <message>
+        <source>Least summed weight in a leaf, comma-separated</source>
+        <translation>叶节点的最小权重和，以逗号分隔</translation>
+    </message>
+    <message>
+        <source>rounds</source>
+        <translation>轮数</translation>
+    </message>
+    <message>
+        <source>depth</source>
+        <translation>深度</translation>
+    </message>
+    <message>
+        <source>rate</source>
+        <translation>学习率</translation>
+    </message>
+    <message>
+        <source>min weight</source>
+        <translation>最小权重</translation>
+    </message>
+    <message>
+        <source>Trees:</source>
+        <translation>树：</translation>
+    </message>
+    <message>
+        <source>Trees</source>
+        <translation>树</translation>
+    </message>
+    <message>
+        <source>Depths</source>
+        <translation>深度</translation>
+    </message>
+    <message>
+        <source>Learning rates</source>
+        <translation>学习率</translation>
+    </message>
+    <message>
+        <source>Min child weights</source>
+        <translation>最小子节点权重</translation>
     </message>
 </context>
 <context>

@@ -124,7 +124,7 @@ Result<SweepRequest> parseSweepRequest(const SweepRequestText& t, SweepSource so
   if (!groups) return groups.error();
   g.groups = groups.value();
   auto methods = parseNames<analysis::ClassifierMethod>(t.methods, analysis::parseClassifierMethod,
-                                                        "method (gmm, gaussian)");
+                                                        "method (gmm, gaussian, gbt)");
   if (!methods) return methods.error();
   g.methods = methods.value();
   auto forms = parseNames<analysis::CovarianceForm>(t.covariances, analysis::parseCovarianceForm,
@@ -147,6 +147,10 @@ Result<SweepRequest> parseSweepRequest(const SweepRequestText& t, SweepSource so
                    " (kmeans++, random-from-data)");
   g.orders = t.orders;
   g.varianceFloors = t.floors;
+  g.treeCounts = t.trees;
+  g.depths = t.depths;
+  g.learningRates = t.learningRates;
+  g.minChildWeights = t.minChildWeights;
   g.seeds = t.seeds;
   g.regularization = *reg;
   g.init = *init;

@@ -253,8 +253,25 @@ std::string defaultSweepName(const std::string& labelSet, const analysis::SweepG
     parts.emplace_back(names(grid.forms, analysis::covarianceFormName));
     parts.back().second = "covariance " + parts.back().second;
   }
-  parts.emplace_back(numbers(grid.varianceFloors));
-  parts.back().second = "floor " + parts.back().second;
+  const bool mixtures =
+      gmm || std::find(grid.methods.begin(), grid.methods.end(),
+                       analysis::ClassifierMethod::Gaussian) != grid.methods.end();
+  if (mixtures) {
+    parts.emplace_back(numbers(grid.varianceFloors));
+    parts.back().second = "floor " + parts.back().second;
+  }
+  if (std::find(grid.methods.begin(), grid.methods.end(), analysis::ClassifierMethod::Gbt) !=
+      grid.methods.end()) {
+    parts.emplace_back(
+        numbers(std::vector<double>(grid.treeCounts.begin(), grid.treeCounts.end())));
+    parts.back().second = "trees " + parts.back().second;
+    parts.emplace_back(numbers(std::vector<double>(grid.depths.begin(), grid.depths.end())));
+    parts.back().second = "depth " + parts.back().second;
+    parts.emplace_back(numbers(grid.learningRates));
+    parts.back().second = "learning rate " + parts.back().second;
+    parts.emplace_back(numbers(grid.minChildWeights));
+    parts.back().second = "min child weight " + parts.back().second;
+  }
   parts.emplace_back(names(grid.features, analysis::featureKindName));
   parts.back().second = "features " + parts.back().second;
   parts.emplace_back(numbers(std::vector<double>(grid.seeds.begin(), grid.seeds.end())));

@@ -152,6 +152,10 @@ struct SweepRequestText {
   std::vector<int> orders{1, 2, 4, 8, 16, 32, 64};
   std::vector<std::string> covariances{"nodal-full", "nodal-diag", "grand-full", "grand-diag"};
   std::vector<double> floors{0.01, 0.03, 0.1};
+  std::vector<int> trees{100};  // boosted trees' settings (method gbt)
+  std::vector<int> depths{6};
+  std::vector<double> learningRates{0.1};
+  std::vector<double> minChildWeights{1.0};
   std::vector<std::string> features{"normal"};
   std::vector<std::uint64_t> seeds{1};
   std::vector<std::string> decisions{"step"};

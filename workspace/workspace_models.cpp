@@ -86,8 +86,9 @@ Result<TrainOutcome> Workspace::trainSweepCell(std::int64_t sweepId, std::size_t
   settings.classifier = analysis::cellClassifierOptions(sweep->grid, cell);
   settings.classifier.threads = 0;
   settings.classifier.gmm.threads = 0;
-  // The class chain weighs the evidence as the sweep scored it: the group's default weight.
-  settings.emissionWeight = analysis::defaultTrainSettings(cell.group).emissionWeight;
+  // The class chain weighs the evidence as the sweep scored it: the default weight of the group
+  // and method.
+  settings.emissionWeight = analysis::defaultEmissionWeight(cell.group, cell.method);
   // A model's default decision is causal: an offline cell's model decides online by default (its
   // stored scores give every mode).
   settings.decision =

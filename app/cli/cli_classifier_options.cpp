@@ -10,9 +10,17 @@ using namespace tactile::analysis;
 
 void addClassifierOptions(CLI::App* cmd, ClassifierArgs& a, bool withMethodAndForm) {
   if (withMethodAndForm) {
-    cmd->add_option("--method", a.method, "gmm or gaussian")->capture_default_str();
+    cmd->add_option("--method", a.method, "gmm, gaussian or gbt (gradient-boosted trees)")
+        ->capture_default_str();
     cmd->add_option("--order", a.order, "GMM components per class")->capture_default_str();
     cmd->add_option("--cov", a.cov, "nodal-full, nodal-diag, grand-full or grand-diag")
+        ->capture_default_str();
+    cmd->add_option("--trees", a.trees, "gbt: boosting rounds (a tree per class each)")
+        ->capture_default_str();
+    cmd->add_option("--depth", a.depth, "gbt: largest tree depth")->capture_default_str();
+    cmd->add_option("--learning-rate", a.learningRate, "gbt: shrinkage of each round")
+        ->capture_default_str();
+    cmd->add_option("--min-child-weight", a.minChildWeight, "gbt: least weight in a leaf")
         ->capture_default_str();
   }
   cmd->add_option("--floor", a.floor, "variance floor (or reg_covar with --reg add)")
@@ -37,8 +45,16 @@ void addClassifierOptions(CLI::App* cmd, ClassifierArgs& a, bool withMethodAndFo
 ClassifierOptions toClassifierOptions(const ClassifierArgs& a) {
   ClassifierOptions o;
   const auto method = parseClassifierMethod(a.method);
-  if (!method) throw UsageError("--method must be gmm or gaussian, got " + quotedInput(a.method));
+  if (!method) {
+    throw UsageError("--method must be gmm, gaussian or gbt, got " + quotedInput(a.method));
+  }
   o.method = *method;
+  o.gbt.trees = a.trees;
+  o.gbt.depth = a.depth;
+  o.gbt.learningRate = a.learningRate;
+  o.gbt.minChildWeight = a.minChildWeight;
+  if (std::string problem = checkGbtSettings(o.gbt); !problem.empty())
+    throw UsageError("gbt: " + problem);
   const auto form = parseCovarianceForm(a.cov);
   if (!form)
     throw UsageError("--cov must be nodal-full, nodal-diag, grand-full or grand-diag, got " +

@@ -26,9 +26,15 @@ struct ClassifierArgs {
   std::string tolRule = "relative";
   int kmeansIterations = 10;
   std::string priors = "equal";
+  // Gradient-boosted trees (--method gbt).
+  int trees = 100;
+  int depth = 6;
+  double learningRate = 0.1;
+  double minChildWeight = 1.0;
 };
 
-// Adds the options to `cmd`; `withMethodAndForm` adds --method, --order and --cov too.
+// Adds the options to `cmd`; `withMethodAndForm` adds --method, --order, --cov and the trees'
+// --trees, --depth, --learning-rate and --min-child-weight too.
 void addClassifierOptions(CLI::App* cmd, ClassifierArgs& a, bool withMethodAndForm);
 
 // Checks the typed options; throws UsageError naming the option at fault.

@@ -51,7 +51,7 @@ void addSweepRequestOptions(CLI::App* cmd, workspace::SweepRequestText& r) {
                   "Score on these runs (stored run names with --db, A B or A,B; run files "
                   "otherwise, A B, instead of a holdout)");
   cmd->add_option("--groups", r.groups, "Groups (default all)")->delimiter(',');
-  cmd->add_option("--methods", r.methods, "gmm and/or gaussian")
+  cmd->add_option("--methods", r.methods, "gmm, gaussian and/or gbt (boosted trees)")
       ->delimiter(',')
       ->capture_default_str();
   cmd->add_option("--orders", r.orders, "Model orders")->delimiter(',')->capture_default_str();
@@ -59,6 +59,18 @@ void addSweepRequestOptions(CLI::App* cmd, workspace::SweepRequestText& r) {
       ->delimiter(',')
       ->capture_default_str();
   cmd->add_option("--floors", r.floors, "Variance floors")->delimiter(',')->capture_default_str();
+  cmd->add_option("--trees", r.trees, "Boosting rounds (gbt)")
+      ->delimiter(',')
+      ->capture_default_str();
+  cmd->add_option("--depths", r.depths, "Largest tree depths (gbt)")
+      ->delimiter(',')
+      ->capture_default_str();
+  cmd->add_option("--learning-rates", r.learningRates, "Learning rates (gbt)")
+      ->delimiter(',')
+      ->capture_default_str();
+  cmd->add_option("--min-child-weights", r.minChildWeights, "Least leaf weights (gbt)")
+      ->delimiter(',')
+      ->capture_default_str();
   cmd->add_option("--features", r.features, "Feature kinds")->delimiter(',')->capture_default_str();
   cmd->add_option("--seeds", r.seeds, "Seeds")->delimiter(',')->capture_default_str();
   cmd->add_option("--decisions", r.decisions,
@@ -187,6 +199,7 @@ struct TrainArgs {
   std::optional<double> emissionWeight;  // unless given, each group's own
   struct Given {
     bool method = false, order = false, cov = false, floor = false, restarts = false;
+    bool trees = false;  // any of --trees, --depth, --learning-rate, --min-child-weight
   } given;
   std::vector<std::string> groups;
   double holdout = 0.0;
@@ -341,9 +354,17 @@ int runTrainDb(const TrainArgs& a, const analysis::GroupSettings& settings,
 analysis::GroupSettings trainSettings(const TrainArgs& a) {
   const analysis::ClassifierOptions typed = toClassifierOptions(a.classifier);
   analysis::GroupSettings out = analysis::defaultGroupSettings();
-  for (analysis::TrainSettings& s : out.byGroup) {
+  for (const GroupInfo& info : kSensorGroups) {
+    const SensorGroup g = info.group;
+    analysis::TrainSettings& s = out.of(g);
     analysis::ClassifierOptions o = typed;
-    if (!a.given.method) o.method = s.classifier.method;
+    // Options of one family without --method train that family (--order 16 means mixtures).
+    const auto method =
+        analysis::impliedMethod(a.given.method ? std::optional(typed.method) : std::nullopt,
+                                a.given.order || a.given.cov || a.given.floor || a.given.restarts,
+                                a.given.trees, s.classifier.method);
+    if (!method) throw UsageError(method.errorText());
+    o.method = method.value();
     if (!a.given.order) o.gmm.components = s.classifier.gmm.components;
     if (!a.given.cov) o.gmm.form = s.classifier.gmm.form;
     if (!a.given.floor) o.gmm.varianceFloor = s.classifier.gmm.varianceFloor;
@@ -355,6 +376,8 @@ analysis::GroupSettings trainSettings(const TrainArgs& a) {
       throw UsageError("--decision must be online or step (a model's default decision is causal)");
     }
     s.decision = *decision;
+    // The method brings its own default weight of the chain's evidence.
+    s.emissionWeight = analysis::defaultEmissionWeight(g, o.method);
     if (a.emissionWeight) {
       checkNumberOption("--emission-weight", *a.emissionWeight, 0.0, RangeEnd::Open, HUGE_VAL,
                         RangeEnd::Open);
@@ -909,6 +932,9 @@ void registerLearnVerbs(CLI::App& app, CLI::App& /*bench*/) {
       args->given.cov = cmd->get_option("--cov")->count() > 0;
       args->given.floor = cmd->get_option("--floor")->count() > 0;
       args->given.restarts = cmd->get_option("--restarts")->count() > 0;
+      args->given.trees = false;
+      for (const char* name : {"--trees", "--depth", "--learning-rate", "--min-child-weight"})
+        args->given.trees = args->given.trees || cmd->get_option(name)->count() > 0;
       TrainArgs a = *args;
       if (a.db.empty() && a.runs.empty()) a.db = databaseFromEnvironment();
       return runTrain(a);

@@ -27,6 +27,8 @@ struct BenchData {
   // the domes 0.1 units a step: every lag walks back the whole kMotionLagCap steps, the worst
   // case).
   ModelBundle motion;
+  // Boosted trees in every group (100 trees, depth 6), each group's own features.
+  ModelBundle trees;
 };
 
 const BenchData& benchData() {
@@ -46,6 +48,14 @@ const BenchData& benchData() {
       s.features = FeatureKind::Motion;
     auto motion = trainAndEvaluate(job);
     if (motion) b.motion = std::move(motion->bundle);
+    job.settings = defaultGroupSettings();
+    for (const GroupInfo& info : kSensorGroups) {
+      TrainSettings& s = job.settings.of(info.group);
+      s.classifier.method = ClassifierMethod::Gbt;
+      s.emissionWeight = defaultEmissionWeight(info.group, ClassifierMethod::Gbt);
+    }
+    auto trees = trainAndEvaluate(job);
+    if (trees) b.trees = std::move(trees->bundle);
     return b;
   }();
   return d;
@@ -79,6 +89,10 @@ void BM_ClassifyRunSparse(benchmark::State& state) {
 void BM_ClassifyRunSparseMotion(benchmark::State& state) {
   classify(state, benchData().sparse, benchData().motion);
 }
+// The sparse run with boosted trees in every group.
+void BM_ClassifyRunSparseTrees(benchmark::State& state) {
+  classify(state, benchData().sparse, benchData().trees);
+}
 // Every case: one timed pass per repetition, three repetitions, the process's CPU time.
 void onePassThreeTimes(benchmark::internal::Benchmark* b) {
   b->Unit(benchmark::kSecond)
@@ -93,6 +107,10 @@ BENCHMARK(BM_ClassifyRun)
     ->Arg(static_cast<int>(DecisionMode::Offline))
     ->Apply(onePassThreeTimes);
 BENCHMARK(BM_ClassifyRunSparse)
+    ->Arg(static_cast<int>(DecisionMode::Step))
+    ->Arg(static_cast<int>(DecisionMode::Online))
+    ->Apply(onePassThreeTimes);
+BENCHMARK(BM_ClassifyRunSparseTrees)
     ->Arg(static_cast<int>(DecisionMode::Step))
     ->Arg(static_cast<int>(DecisionMode::Online))
     ->Apply(onePassThreeTimes);

@@ -1,5 +1,6 @@
 // Full default sweep (8 groups x 7 orders x 4 covariance forms x 3 floors = 672 cells) on 100k
-// labelled steps, on all cores. Target: under 1 minute on 2 cores.
+// labelled steps, on all cores, and a sweep of boosted trees' settings on the same steps. Target:
+// each under 1 minute on 2 cores.
 //
 // Data: 10 synthetic runs of 10,000 steps (tests/analysis/learn_test_data.h), sensor noise 0.5,
 // each group in contact for the given percentage of steps (argument); the last 30% of each run is
@@ -95,6 +96,43 @@ void BM_FullDefaultSweepWithDecisions(benchmark::State& state) {
   state.counters["threads"] = result.threads;
 }
 BENCHMARK(BM_FullDefaultSweepWithDecisions)
+    ->Arg(30)
+    ->Unit(benchmark::kSecond)
+    ->Iterations(1)
+    ->Repetitions(3)
+    ->ReportAggregatesOnly(false)
+    ->MeasureProcessCPUTime()
+    ->UseRealTime();
+
+// Boosted trees: 8 groups x 3 tree counts x 3 depths (72 fits, learning rate 0.1, min child weight
+// 1) on the same 100k steps, scored step, online and offline (216 cells). Target: under 1 minute on
+// 2 cores.
+void BM_TreeSweep(benchmark::State& state) {
+  const BenchData& data = benchData(static_cast<int>(state.range(0)));
+  SweepOptions options;
+  options.threads = 0;  // all cores
+  SweepGrid grid;
+  grid.methods = {ClassifierMethod::Gbt};
+  grid.treeCounts = {50, 100, 200};
+  grid.depths = {4, 6, 8};
+  grid.decisions = {DecisionMode::Step, DecisionMode::Online, DecisionMode::Offline};
+  SweepResult result;
+  for (auto _ : state) {
+    result = runSweep(data.train, data.test, grid, options);
+    benchmark::DoNotOptimize(result.cells.data());
+  }
+  std::size_t ok = 0;
+  double fitSeconds = 0.0;
+  for (const SweepCellResult& c : result.cells) {
+    ok += c.ok ? 1 : 0;
+    fitSeconds += c.cell.decision == DecisionMode::Step ? c.fitSeconds : 0.0;
+  }
+  state.counters["cells"] = static_cast<double>(result.cells.size());
+  state.counters["fitted"] = static_cast<double>(ok);
+  state.counters["threads"] = result.threads;
+  state.counters["sum_fit_s"] = fitSeconds;
+}
+BENCHMARK(BM_TreeSweep)
     ->Arg(30)
     ->Unit(benchmark::kSecond)
     ->Iterations(1)

@@ -455,8 +455,8 @@ struct TrainArgs {
   std::string name;
   std::size_t minRows = 20;
   std::optional<std::string> method, covariance, features, init, reg;
-  std::optional<int> components, restarts, maxIterations;
-  std::optional<double> floor, tolerance, emissionWeight;
+  std::optional<int> components, restarts, maxIterations, trees, depth;
+  std::optional<double> floor, tolerance, emissionWeight, learningRate, minChildWeight;
   std::uint64_t seed = 1;
   std::string decision = "online";
   int threads = 0;
@@ -471,23 +471,37 @@ analysis::GroupSettings trainSettings(const TrainArgs& a) {
   if (!analysis::isCausal(decision)) {
     throw py::value_error("decision must be online or step (a model's default is causal)");
   }
-  for (analysis::TrainSettings& s : out.byGroup) {
+  for (const GroupInfo& info : kSensorGroups) {
+    analysis::TrainSettings& s = out.of(info.group);
     ClassifierOptions& o = s.classifier;
+    std::optional<analysis::ClassifierMethod> given;
     if (a.method) {
-      o.method = parsed<analysis::ClassifierMethod>(*a.method, analysis::parseClassifierMethod,
-                                                    "method (gmm or gaussian)");
+      given = parsed<analysis::ClassifierMethod>(*a.method, analysis::parseClassifierMethod,
+                                                 "method (gmm, gaussian or gbt)");
     }
+    // Options of one family without a method train that family, as `tactile train` does.
+    const auto method =
+        analysis::impliedMethod(given, a.components || a.covariance || a.floor || a.restarts,
+                                a.trees || a.depth || a.learningRate || a.minChildWeight, o.method);
+    if (!method) throw py::value_error(method.errorText());
+    o.method = method.value();
     if (a.components) o.gmm.components = *a.components;
     if (a.covariance) o.gmm.form = parseForm(*a.covariance);
     if (a.floor) o.gmm.varianceFloor = *a.floor;
     if (a.restarts) o.gmm.restarts = *a.restarts;
     if (a.maxIterations) o.gmm.maxIterations = *a.maxIterations;
     if (a.tolerance) o.gmm.tolerance = *a.tolerance;
+    if (a.trees) o.gbt.trees = *a.trees;
+    if (a.depth) o.gbt.depth = *a.depth;
+    if (a.learningRate) o.gbt.learningRate = *a.learningRate;
+    if (a.minChildWeight) o.gbt.minChildWeight = *a.minChildWeight;
     if (a.init) o.gmm.init = parsed<analysis::GmmInit>(*a.init, analysis::parseGmmInit, "init");
     if (a.reg) {
       o.gmm.reg = parsed<analysis::Regularization>(*a.reg, analysis::parseRegularization, "reg");
     }
     if (a.features) s.features = parseKind(*a.features);
+    // The method brings its own default weight of the chain's evidence.
+    s.emissionWeight = analysis::defaultEmissionWeight(info.group, o.method);
     if (a.emissionWeight) {
       if (!std::isfinite(*a.emissionWeight) || *a.emissionWeight <= 0.0)
         throw py::value_error("emission_weight must be a finite number > 0");
@@ -669,6 +683,10 @@ void bindLearning(py::module_& m) {
       .def_readwrite("max_iter", &TrainArgs::maxIterations)
       .def_readwrite("variance_floor", &TrainArgs::floor)
       .def_readwrite("tol", &TrainArgs::tolerance)
+      .def_readwrite("n_estimators", &TrainArgs::trees)
+      .def_readwrite("max_depth", &TrainArgs::depth)
+      .def_readwrite("learning_rate", &TrainArgs::learningRate)
+      .def_readwrite("min_child_weight", &TrainArgs::minChildWeight)
       .def_readwrite("emission_weight", &TrainArgs::emissionWeight)
       .def_readwrite("seed", &TrainArgs::seed)
       .def_readwrite("decision", &TrainArgs::decision)
@@ -687,6 +705,10 @@ void bindLearning(py::module_& m) {
       .def_readwrite("orders", &SweepText::orders)
       .def_readwrite("covariance_types", &SweepText::covariances)
       .def_readwrite("variance_floors", &SweepText::floors)
+      .def_readwrite("n_estimators", &SweepText::trees)
+      .def_readwrite("max_depths", &SweepText::depths)
+      .def_readwrite("learning_rates", &SweepText::learningRates)
+      .def_readwrite("min_child_weights", &SweepText::minChildWeights)
       .def_readwrite("features", &SweepText::features)
       .def_readwrite("seeds", &SweepText::seeds)
       .def_readwrite("decisions", &SweepText::decisions)

@@ -158,10 +158,12 @@ def train(db, set, *, train_runs=None, test_runs=None, split="by-run", groups=No
           min_rows=20, method=None, n_components=None, covariance_type=None,
           variance_floor=None, n_init=None, features=None, max_iter=None, tol=None, init=None,
           reg=None, emission_weight=None, decision="online", random_state=1, n_jobs=0,
-          store=True):
+          store=True, n_estimators=None, max_depth=None, learning_rate=None,
+          min_child_weight=None):
     """Trains one model per group on a label set of the database, as `tactile train --db`:
     each group's own default settings unless given (then for every group), scored as `split`
-    says, stored under `name` (default SET-N)."""
+    says, stored under `name` (default SET-N). method="gbt" trains boosted trees, with
+    n_estimators, max_depth, learning_rate and min_child_weight as XGBoost names them."""
     a = _core.TrainArgs()
     a.set = set
     a.train_runs = list(train_runs or [])
@@ -185,6 +187,10 @@ def train(db, set, *, train_runs=None, test_runs=None, split="by-run", groups=No
     a.seed = int(1 if random_state is None else random_state)
     a.n_jobs = int(n_jobs)
     a.store = bool(store)
+    a.n_estimators = n_estimators
+    a.max_depth = max_depth
+    a.learning_rate = learning_rate
+    a.min_child_weight = min_child_weight
     report, model = _core.train(db._db, a)
     return TrainResult(_json.loads(report), model)
 
@@ -194,11 +200,14 @@ def sweep(db, set, *, train_runs, test_runs=None, split="by-run", groups=None,
           covariance_types=("nodal-full", "nodal-diag", "grand-full", "grand-diag"),
           variance_floors=(0.01, 0.03, 0.1), features=("normal",), seeds=(1,),
           decisions=("step",), reg="floor", init="kmeans++", n_init=1, max_iter=100, tol=1e-3,
-          name=None, n_jobs=0, detail=False):
+          name=None, n_jobs=0, detail=False, n_estimators=(100,), max_depths=(6,),
+          learning_rates=(0.1,), min_child_weights=(1.0,)):
     """Trains and scores a grid of classifiers on stored runs, as `tactile sweep --db`, and
     stores every cell. Returns a DataFrame with one row per cell (settings, balanced accuracy,
     accuracy, macro F1, fit time, ...); detail=True keeps the confusion matrices and patterns.
-    The sweep's id is in the frame's attrs["sweep"] (a list of dicts without pandas)."""
+    The sweep's id is in the frame's attrs["sweep"] (a list of dicts without pandas).
+    methods may name "gbt" (boosted trees), whose cells sweep n_estimators x max_depths x
+    learning_rates x min_child_weights."""
     a = _core.SweepArgs()
     a.set = set
     a.train_runs = list(train_runs)
@@ -209,6 +218,10 @@ def sweep(db, set, *, train_runs, test_runs=None, split="by-run", groups=None,
     a.orders = [int(k) for k in orders]
     a.covariance_types = list(covariance_types)
     a.variance_floors = [float(f) for f in variance_floors]
+    a.n_estimators = [int(k) for k in n_estimators]
+    a.max_depths = [int(k) for k in max_depths]
+    a.learning_rates = [float(r) for r in learning_rates]
+    a.min_child_weights = [float(w) for w in min_child_weights]
     a.features = list(features)
     a.seeds = [int(s) for s in seeds]
     a.decisions = list(decisions)

@@ -258,12 +258,16 @@ void expectStepByStep(const RunData& run, const ModelBundle& bundle) {
   }
 }
 
-ModelBundle trainBundle(FeatureKind kind, int order) {
+ModelBundle trainBundle(FeatureKind kind, int order,
+                        ClassifierMethod method = ClassifierMethod::Gmm) {
   const RunData train = testdata::makeLabelledRun(2500, 21);
   TrainJob job;
   job.runs = {{&train, labelsFromTruth(train)}};
   TrainSettings s;
   s.features = kind;
+  s.classifier.method = method;
+  s.classifier.gbt.trees = 30;
+  s.classifier.gbt.depth = 4;
   s.classifier.gmm.components = order;
   s.classifier.gmm.form = CovarianceForm::NodalFull;
   s.classifier.gmm.varianceFloor = 0.01;  // hit by the sensors a class never presses
@@ -296,6 +300,11 @@ TEST(ClassifyRun, EqualsAStepByStepReference) {
     moving.omega[t] = (t / 11) % 3 == 0 ? 0.7 : 0.0;
   }
   expectStepByStep(moving, motion);
+  // Boosted trees: their scaled likelihoods through the same blocks and chain.
+  const ModelBundle trees = trainBundle(FeatureKind::Context, 3, ClassifierMethod::Gbt);
+  ASSERT_EQ(trees.models.size(), 4u);
+  ASSERT_NE(trees.models[0].classifier.trees(), nullptr);
+  expectStepByStep(testdata::makeLabelledRun(1337, 81, 0.3, 0.9), trees);
 }
 
 TEST(ClassifyRun, EmptyAndContactFreeRuns) {

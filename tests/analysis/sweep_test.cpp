@@ -6,9 +6,12 @@
 #include <atomic>
 #include <cmath>
 #include <new>
+#include <set>
+#include <tuple>
 
 #include "analysis/report.h"
 #include "analysis/sweep.h"
+#include "analysis/sweep_summary.h"
 #include "analysis/training.h"
 #include "tests/analysis/learn_test_data.h"
 
@@ -49,7 +52,7 @@ TEST(Training, SplitKeepsTimeOrderAndPartitionsLabels) {
   }
 }
 
-TEST(Training, DefaultsAreEachGroupsOwnTunedGmm) {
+TEST(Training, DefaultsAreEachGroupsOwnTunedModel) {
   const GroupSettings d = defaultGroupSettings();
   bool ordersDiffer = false;
   for (const GroupInfo& g : kSensorGroups) {
@@ -68,7 +71,12 @@ TEST(Training, DefaultsAreEachGroupsOwnTunedGmm) {
     // A model's default decision is one a navigator may use.
     EXPECT_TRUE(isCausal(s.decision)) << g.shortName;
     EXPECT_EQ(s.decision, DecisionMode::Online) << g.shortName;
-    EXPECT_EQ(s.classifier.method, ClassifierMethod::Gmm) << g.shortName;
+    // The family that won on the selection corpus; the mixtures' settings are kept either way
+    // (for --method gmm on a group of trees).
+    EXPECT_TRUE(s.classifier.method == ClassifierMethod::Gmm ||
+                s.classifier.method == ClassifierMethod::Gbt)
+        << g.shortName;
+    EXPECT_EQ(s.emissionWeight, defaultEmissionWeight(g.group, s.classifier.method)) << g.shortName;
     EXPECT_EQ(s.classifier.gmm.form, CovarianceForm::NodalFull) << g.shortName;
     EXPECT_EQ(s.classifier.gmm.restarts, 3) << g.shortName;
     EXPECT_GE(s.classifier.gmm.components, 1) << g.shortName;
@@ -86,32 +94,59 @@ TEST(Training, DefaultsAreEachGroupsOwnTunedGmm) {
               defaultTrainSettings(SensorGroup::Back).classifier.gmm.components);
 }
 
+// Options of one family without a method train that family; both families' options without a
+// method are refused; a method given always wins.
+TEST(Training, OptionsOfOneFamilyImplyIt) {
+  constexpr auto kGmm = ClassifierMethod::Gmm;
+  constexpr auto kTrees = ClassifierMethod::Gbt;
+  constexpr auto kGaussian = ClassifierMethod::Gaussian;
+  EXPECT_EQ(impliedMethod(std::nullopt, false, false, kTrees).value(), kTrees);
+  EXPECT_EQ(impliedMethod(std::nullopt, false, false, kGmm).value(), kGmm);
+  EXPECT_EQ(impliedMethod(std::nullopt, true, false, kTrees).value(), kGmm);
+  EXPECT_EQ(impliedMethod(std::nullopt, true, false, kGmm).value(), kGmm);
+  EXPECT_EQ(impliedMethod(std::nullopt, false, true, kGmm).value(), kTrees);
+  EXPECT_EQ(impliedMethod(kGaussian, true, true, kTrees).value(), kGaussian);
+  const auto both = impliedMethod(std::nullopt, true, true, kGmm);
+  ASSERT_FALSE(both.ok());
+  EXPECT_NE(both.errorText().find("say which"), std::string::npos) << both.errorText();
+}
+
 // The table of docs/learning.md#training-defaults, group by group: features, order, floor and
 // the chain's evidence weight, as chosen on the selection corpus.
 TEST(Training, DefaultsAreTheDocumentedTable) {
   struct Row {
     SensorGroup group;
+    ClassifierMethod method;
     FeatureKind features;
     int order;
     double floor;
-    double weight;
+    double mixtureWeight;  // the mixtures' chain weight; trees decide through the plain chain
   };
+  constexpr ClassifierMethod kTrees = ClassifierMethod::Gbt;
+  constexpr ClassifierMethod kGmm = ClassifierMethod::Gmm;
   const std::array<Row, 8> table{{
-      {SensorGroup::Front, FeatureKind::Context, 8, 0.01, 0.3},
-      {SensorGroup::FrontLeftCorner, FeatureKind::Neighbours, 8, 0.01, 1.0},
-      {SensorGroup::Left, FeatureKind::Neighbours, 8, 0.01, 0.3},
-      {SensorGroup::RearLeftCorner, FeatureKind::Neighbours, 16, 0.01, 1.0},
-      {SensorGroup::Back, FeatureKind::NormalShear, 4, 0.01, 0.3},
-      {SensorGroup::RearRightCorner, FeatureKind::Context, 8, 0.01, 0.3},
-      {SensorGroup::Right, FeatureKind::Neighbours, 8, 0.01, 0.1},
-      {SensorGroup::FrontRightCorner, FeatureKind::Neighbours, 16, 0.01, 1.0},
+      {SensorGroup::Front, kTrees, FeatureKind::Context, 8, 0.01, 0.3},
+      {SensorGroup::FrontLeftCorner, kGmm, FeatureKind::Neighbours, 8, 0.01, 1.0},
+      {SensorGroup::Left, kTrees, FeatureKind::Neighbours, 8, 0.01, 0.3},
+      {SensorGroup::RearLeftCorner, kGmm, FeatureKind::Neighbours, 16, 0.01, 1.0},
+      {SensorGroup::Back, kGmm, FeatureKind::NormalShear, 4, 0.01, 0.3},
+      {SensorGroup::RearRightCorner, kTrees, FeatureKind::Context, 8, 0.01, 0.3},
+      {SensorGroup::Right, kTrees, FeatureKind::Neighbours, 8, 0.01, 0.1},
+      {SensorGroup::FrontRightCorner, kGmm, FeatureKind::Neighbours, 16, 0.01, 1.0},
   }};
   for (const Row& r : table) {
     const TrainSettings s = defaultTrainSettings(r.group);
+    EXPECT_EQ(s.classifier.method, r.method) << groupInfo(r.group).shortName;
     EXPECT_EQ(s.features, r.features) << groupInfo(r.group).shortName;
     EXPECT_EQ(s.classifier.gmm.components, r.order) << groupInfo(r.group).shortName;
     EXPECT_DOUBLE_EQ(s.classifier.gmm.varianceFloor, r.floor) << groupInfo(r.group).shortName;
-    EXPECT_DOUBLE_EQ(s.emissionWeight, r.weight) << groupInfo(r.group).shortName;
+    EXPECT_DOUBLE_EQ(defaultEmissionWeight(r.group, ClassifierMethod::Gmm), r.mixtureWeight)
+        << groupInfo(r.group).shortName;
+    EXPECT_DOUBLE_EQ(s.emissionWeight, r.method == kTrees ? 1.0 : r.mixtureWeight)
+        << groupInfo(r.group).shortName;
+    // The trees' settings are the method's defaults.
+    EXPECT_EQ(s.classifier.gbt.trees, GbtSettings{}.trees) << groupInfo(r.group).shortName;
+    EXPECT_EQ(s.classifier.gbt.depth, GbtSettings{}.depth) << groupInfo(r.group).shortName;
   }
 }
 
@@ -201,6 +236,71 @@ TEST(Sweep, ExpandGridCountsCellsAndDedupesGaussian) {
   EXPECT_EQ(expandGrid(g).size(), 3u + 7u * 4u * 3u);
 }
 
+// Boosted trees have neither order, form nor floor: one cell per combination of their own
+// settings, seed and decision, whatever the mixtures' lists hold.
+TEST(Sweep, TreeCellsSweepTheirOwnSettings) {
+  SweepGrid g;
+  g.groups = {SensorGroup::Right, SensorGroup::Front};
+  g.methods = {ClassifierMethod::Gbt};
+  g.treeCounts = {50, 100, 200};
+  g.depths = {4, 6, 8};
+  g.learningRates = {0.1, 0.3};
+  g.seeds = {1, 2};
+  g.decisions = {DecisionMode::Step, DecisionMode::Online};
+  const std::vector<SweepCell> cells = expandGrid(g);
+  ASSERT_EQ(cells.size(), 2u * 3u * 3u * 2u * 1u * 2u * 2u);
+  std::set<std::tuple<int, int, int, double, std::uint64_t, DecisionMode>> distinct;
+  for (const SweepCell& c : cells) {
+    EXPECT_EQ(c.method, ClassifierMethod::Gbt);
+    EXPECT_EQ(c.order, 1);
+    EXPECT_EQ(c.varianceFloor, 0.0);
+    EXPECT_EQ(c.minChildWeight, 1.0);
+    distinct.insert({groupIndex(c.group), c.trees, c.depth, c.learningRate, c.seed, c.decision});
+    const GbtSettings s = cellTreeSettings(c);
+    EXPECT_EQ(s.trees, c.trees);
+    EXPECT_EQ(s.depth, c.depth);
+    EXPECT_EQ(s.seed, c.seed);
+    const ClassifierOptions o = cellClassifierOptions(g, c);
+    EXPECT_EQ(o.method, ClassifierMethod::Gbt);
+    EXPECT_EQ(o.gbt.learningRate, c.learningRate);
+    EXPECT_EQ(o.gmm.seed, c.seed);
+  }
+  EXPECT_EQ(distinct.size(), cells.size());
+  // Cells differing only in the decision share one fit.
+  EXPECT_EQ(fitJobs(cells).size(), cells.size() / 2);
+  // Deeper and longer boosting costs more in the scheduler's units.
+  SweepCell small = cells.front(), big = cells.front();
+  big.trees = 200;
+  big.depth = 8;
+  EXPECT_GT(sweepCellUnits(big, 1000, 100), sweepCellUnits(small, 1000, 100));
+  // The mixtures' lists do not multiply the trees' cells.
+  g.orders = {1, 2, 4, 8};
+  g.varianceFloors = {0.01, 0.1};
+  EXPECT_EQ(expandGrid(g).size(), cells.size());
+  // Gaussian cells are scored with every decision mode too.
+  g.methods = {ClassifierMethod::Gaussian};
+  EXPECT_EQ(expandGrid(g).size(), 2u * 2u * 2u * 2u);
+}
+
+TEST(Sweep, BadTreeSettingsAreRefusedByTheGridCheck) {
+  SweepGrid g;
+  g.methods = {ClassifierMethod::Gbt};
+  EXPECT_TRUE(checkSweepGrid(g).ok());
+  g.depths = {6, 0};
+  const Status bad = checkSweepGrid(g);
+  ASSERT_FALSE(bad.ok());
+  EXPECT_NE(bad.errorText().find("depth"), std::string::npos) << bad.errorText();
+  g.depths = {6};
+  g.learningRates = {};
+  EXPECT_FALSE(checkSweepGrid(g).ok());
+  // Floors are the mixtures' setting: a trees-only grid needs none.
+  g.learningRates = {0.1};
+  g.varianceFloors = {};
+  EXPECT_TRUE(checkSweepGrid(g).ok());
+  g.methods.push_back(ClassifierMethod::Gmm);
+  EXPECT_FALSE(checkSweepGrid(g).ok());
+}
+
 TEST(Sweep, ResultsDoNotDependOnThreadCount) {
   const Fixture& f = fixture();
   std::vector<LabelledRun> train, test;
@@ -280,8 +380,8 @@ TEST(Sweep, OnlineCellsDecideWithTheGroupsDefaultEmissionWeight) {
   grid.varianceFloors = {0.1};
   grid.decisions = {DecisionMode::Online};
   grid.maxIterations = 30;
-  const double weight = defaultTrainSettings(SensorGroup::Right).emissionWeight;
-  ASSERT_NE(weight, 1.0) << "the test needs a group whose default weight is not 1";
+  const double weight = defaultEmissionWeight(SensorGroup::Right, ClassifierMethod::Gmm);
+  ASSERT_NE(weight, 1.0) << "the test needs a group whose mixtures' default weight is not 1";
   const SweepResult r = runSweep(train, test, grid);
   ASSERT_EQ(r.cells.size(), 1u);
   const SweepCellResult& cell = r.cells.front();
@@ -362,10 +462,14 @@ SweepResult mixedSweep() {
   }
   SweepGrid g;
   g.groups = {SensorGroup::Right, SensorGroup::Back};
-  g.methods = {ClassifierMethod::Gaussian, ClassifierMethod::Gmm};
+  g.methods = {ClassifierMethod::Gaussian, ClassifierMethod::Gmm, ClassifierMethod::Gbt};
   g.orders = {1, 2};
   g.forms = {CovarianceForm::NodalDiag, CovarianceForm::GrandFull};
   g.varianceFloors = {0.01, 1000.0};
+  g.treeCounts = {3, 8};
+  g.depths = {2};
+  g.learningRates = {0.3};
+  g.minChildWeights = {0.5};
   g.seeds = {1, 7};
   g.regularization = Regularization::Add;
   g.init = GmmInit::RandomFromData;
@@ -399,6 +503,10 @@ TEST(Sweep, JsonRoundTripReadsBackEveryField) {
   EXPECT_EQ(h.orders, g.orders);
   EXPECT_EQ(h.forms, g.forms);
   EXPECT_EQ(h.varianceFloors, g.varianceFloors);
+  EXPECT_EQ(h.treeCounts, g.treeCounts);
+  EXPECT_EQ(h.depths, g.depths);
+  EXPECT_EQ(h.learningRates, g.learningRates);
+  EXPECT_EQ(h.minChildWeights, g.minChildWeights);
   EXPECT_EQ(h.features, g.features);
   EXPECT_EQ(h.seeds, g.seeds);
   EXPECT_EQ(h.regularization, g.regularization);
@@ -436,6 +544,7 @@ TEST(Sweep, JsonRoundTripReadsBackEveryField) {
     EXPECT_EQ(y.cell.varianceFloor, x.cell.varianceFloor);
     EXPECT_EQ(y.cell.features, x.cell.features);
     EXPECT_EQ(y.cell.seed, x.cell.seed);
+    EXPECT_TRUE(y.cell == x.cell);  // the trees' settings too
     EXPECT_EQ(y.ok, x.ok);
     EXPECT_EQ(y.reason, x.reason);
     EXPECT_EQ(y.classes, x.classes);
@@ -462,6 +571,44 @@ TEST(Sweep, JsonRoundTripReadsBackEveryField) {
   // The report tables render both the live and the re-read result the same way.
   EXPECT_EQ(sweepReport(back, TableStyle::Csv), sweepReport(r, TableStyle::Csv));
   EXPECT_EQ(sweepReport(back, TableStyle::Csv).find("nan"), std::string::npos);
+}
+
+// The families side by side: each group's best cell of each method, the trees' settings in their
+// own column (empty for the mixtures, whose order and floor are empty for the trees), squares for
+// the trees in the run time against error figure.
+TEST(Sweep, ReportsPutTheFamiliesSideBySide) {
+  const SweepResult r = mixedSweep();
+  bool treesFitted = false;
+  for (const SweepCellResult& c : r.cells)
+    treesFitted = treesFitted || (c.ok && c.cell.method == ClassifierMethod::Gbt);
+  ASSERT_TRUE(treesFitted);
+  ASSERT_TRUE(mixesMethods(r));
+  const Table t = bestCellsByMethodTable(r);
+  const auto column = [&t](const std::string& name) {
+    return static_cast<std::size_t>(std::find(t.header.begin(), t.header.end(), name) -
+                                    t.header.begin());
+  };
+  ASSERT_LT(column("trees"), t.header.size());
+  std::set<std::string> methodsOfRight;
+  for (const auto& row : t.rows) {
+    if (row[column("group")] != "R") continue;
+    methodsOfRight.insert(row[column("method")]);
+    const bool trees = row[column("method")] == "gbt";
+    EXPECT_EQ(row[column("trees")].empty(), !trees);
+    EXPECT_EQ(row[column("order")].empty(), trees);
+    EXPECT_EQ(row[column("floor")].empty(), trees);
+  }
+  EXPECT_EQ(methodsOfRight, (std::set<std::string>{"gaussian", "gbt", "gmm"}));
+  const std::string report = sweepReport(r, TableStyle::Markdown);
+  EXPECT_NE(report.find("Best cell per group and method"), std::string::npos);
+  EXPECT_NE(report.find("3 trees, depth 2, rate 0.3, min child weight 0.5"), std::string::npos);
+  const std::vector<SweepFigure> figures = sweepFigures(r);
+  const SweepFigure& timeError = figures.back();
+  EXPECT_NE(timeError.svg.find("width=\"6\" height=\"6\""), std::string::npos);
+  EXPECT_NE(timeError.svg.find("squares: boosted trees"), std::string::npos);
+  // The rate figures are over orders and floors, which trees do not have.
+  for (const RateSeries& series : rateSeries(r, SweptVariable::Order))
+    EXPECT_NE(series.method, ClassifierMethod::Gbt);
 }
 
 // Cancellation reaches the running fits: progress is consulted after every EM iteration, so a

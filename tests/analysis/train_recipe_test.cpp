@@ -152,6 +152,63 @@ TEST(TrainRecipe, MinRowsSkipsAGroup) {
   EXPECT_NE(out.errorText().find("at least 1000000 needed"), std::string::npos) << out.errorText();
 }
 
+// Degenerate groups under boosted trees: a group whose contact has one class only is skipped with
+// its reason, and a group whose features are all the same trains to equal posteriors whose
+// decisions stay finite; never a crash, never a NaN.
+TEST(TrainRecipe, TreesOnDegenerateGroupsGiveAReasonOrEqualPosteriors) {
+  Runs train = makeRuns({"a", "b"}, 600);
+  for (LabelledRun& lr : train.labelled) {
+    for (std::size_t t = 0; t < lr.run->stepCount(); ++t) {
+      auto& right = lr.labels[t * kGroupCount + groupIndex(SensorGroup::Right)];
+      if (right) right = ContactClass::Wall;  // one class only
+    }
+  }
+  TrainJob job;
+  job.runs = train.labelled;
+  job.runRefs = train.refs;
+  job.settings = quick();
+  for (TrainSettings& s : job.settings.byGroup) {
+    s.classifier.method = ClassifierMethod::Gbt;
+    s.classifier.gbt.trees = 10;
+  }
+  job.groups = {SensorGroup::Right, SensorGroup::Left};
+  job.minRowsPerGroup = 1;
+  auto out = trainAndEvaluate(job);
+  ASSERT_TRUE(out.ok()) << out.errorText();
+  ASSERT_EQ(out->groups.size(), 2u);
+  EXPECT_EQ(out->groups[0].group, SensorGroup::Right);
+  EXPECT_FALSE(out->groups[0].skippedBecause.empty());
+  EXPECT_NE(out->groups[0].skippedBecause.find("class"), std::string::npos)
+      << out->groups[0].skippedBecause;
+  EXPECT_TRUE(out->groups[1].skippedBecause.empty()) << out->groups[1].skippedBecause;
+
+  // Constant features: every row of every class the same.
+  Runs flatRuns = makeRuns({"a", "b"}, 600);
+  std::vector<RunData>& flat = flatRuns.data;
+  for (RunData& run : flat)
+    for (std::size_t t = 0; t < run.stepCount(); ++t)
+      for (int d = 0; d < kSensorCount; ++d) {
+        double& n = run.sensors[t * kValuesPerStep + static_cast<std::size_t>(normalOffset(d))];
+        if (n != 0.0) n = 0.5;
+      }
+  job.runs = flatRuns.labelled;
+  job.runRefs = flatRuns.refs;
+  job.groups = {SensorGroup::Left};
+  auto constant = trainAndEvaluate(job);
+  ASSERT_TRUE(constant.ok()) << constant.errorText();
+  ASSERT_EQ(constant->bundle.models.size(), 1u);
+  const RunClassification r = classifyRun(flat[0], constant->bundle, {});
+  const GroupClassification& left =
+      r.groups[static_cast<std::size_t>(groupIndex(SensorGroup::Left))];
+  ASSERT_GT(left.logLikelihoods.size(), 0);
+  std::size_t decided = 0;
+  for (Eigen::Index i = 0; i < left.logLikelihoods.size(); ++i)
+    EXPECT_FALSE(std::isnan(left.logLikelihoods.data()[i]));
+  for (const auto& d : left.decided)
+    decided += d.has_value() ? 1 : 0;
+  EXPECT_GT(decided, 0u);
+}
+
 // The online decider fed step by step decides exactly what classifyRun's online decision says,
 // and its decision at t does not depend on later steps.
 TEST(OnlineDecider, AgreesWithTheWholeRunOnlineDecision) {

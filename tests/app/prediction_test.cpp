@@ -44,7 +44,7 @@ struct Predicted {
   std::string model = "m";
   std::int64_t runId = 0;
 
-  Predicted() {
+  explicit Predicted(analysis::ClassifierMethod method = analysis::ClassifierMethod::Gmm) {
     auto info = fx.workspace->runStore().find(fx.runName);
     if (!info) throw std::runtime_error(info.errorText());
     runId = info->id;
@@ -55,8 +55,11 @@ struct Predicted {
     request.trainRuns = {fx.runName};
     request.modelName = model;
     request.minRowsPerGroup = 5;
-    for (analysis::TrainSettings& s : request.settings.byGroup)
+    for (analysis::TrainSettings& s : request.settings.byGroup) {
       s.classifier.gmm.components = 1;
+      s.classifier.method = method;
+      s.classifier.gbt.trees = 20;
+    }
     auto trained = fx.workspace->train(request);
     if (!trained) throw std::runtime_error(trained.errorText());
   }
@@ -99,6 +102,9 @@ class PredictionTest : public QObject {
   void mainWindowShowsAModelAndKeyNJumps();
   void pickerChoosesOneOrPerGroup();
   void windowFitsASmallScreenWithPredictionsOn();
+
+ private:
+  static void predictionsEqualCore(Predicted& p);
 };
 
 void PredictionTest::posteriorsAreProbabilitiesInLogSpace() {
@@ -121,7 +127,16 @@ void PredictionTest::posteriorsAreProbabilitiesInLogSpace() {
 }
 
 void PredictionTest::predictionsEqualTheCoreClassification() {
-  Predicted p;
+  for (analysis::ClassifierMethod method :
+       {analysis::ClassifierMethod::Gmm, analysis::ClassifierMethod::Gbt}) {
+    Predicted p(method);
+    predictionsEqualCore(p);
+  }
+}
+
+// The strip of `p`'s model equals the core's classification step for step (the same function
+// `tactile classify` calls).
+void PredictionTest::predictionsEqualCore(Predicted& p) {
   gui::LabelModel labels;
   PredictionModel predictions(&labels);
   QSignalSpy ready(&predictions, &PredictionModel::ready);

@@ -187,7 +187,11 @@ void TrainingDialogTest::evidenceWeightIsEachGroupsDefaultUnlessSet() {
     QVERIFY2(request.ok(), request.ok() ? "" : request.errorText().c_str());
     bool someGroupIsNotOne = false;
     for (const GroupInfo& info : kSensorGroups) {
-      const double expected = analysis::defaultTrainSettings(info.group).emissionWeight;
+      // Each group's default model's weight, or, unticked, the default of the form's method
+      // (GMM here) for the group.
+      const double expected =
+          defaults ? analysis::defaultTrainSettings(info.group).emissionWeight
+                   : analysis::defaultEmissionWeight(info.group, analysis::ClassifierMethod::Gmm);
       QCOMPARE(request->settings.of(info.group).emissionWeight, expected);
       someGroupIsNotOne = someGroupIsNotOne || expected != 1.0;
     }
@@ -417,7 +421,8 @@ void TrainingDialogTest::trainStoresAModel() {
   for (const analysis::GroupModel& m : bundle->models) {
     QCOMPARE(m.varianceFloor, 0.03);
     // The class chain weighs the evidence as a sweep of these settings scored it.
-    QCOMPARE(m.transitions.emissionWeight, analysis::defaultTrainSettings(m.group).emissionWeight);
+    QCOMPARE(m.transitions.emissionWeight,
+             analysis::defaultEmissionWeight(m.group, analysis::ClassifierMethod::Gmm));
     for (const analysis::GaussianMixture& mixture : m.classifier.models())
       QCOMPARE(mixture.components(), 1);
   }
@@ -437,15 +442,26 @@ void TrainingDialogTest::trainWithGroupDefaultsUsesEachGroupsOwn() {
   QVERIFY2(bundle.ok(), bundle.ok() ? "" : bundle.errorText().c_str());
   QVERIFY(!bundle->models.empty());
   // Not the lists' firsts (order 1, floor 0.03, normal): each group's own defaults.
+  bool trees = false;
   for (const analysis::GroupModel& m : bundle->models) {
     const analysis::TrainSettings d = analysis::defaultTrainSettings(m.group);
     QCOMPARE(m.features, d.features);
+    QCOMPARE(m.transitions.emissionWeight, d.emissionWeight);
+    // Each group's own family too.
+    QCOMPARE(m.classifier.trees() != nullptr,
+             d.classifier.method == analysis::ClassifierMethod::Gbt);
+    if (m.classifier.trees() != nullptr) {
+      trees = true;
+      QCOMPARE(m.provenance.classifier.gbt.trees, d.classifier.gbt.trees);
+      continue;
+    }
     QCOMPARE(m.covariance, d.classifier.gmm.form);
     QCOMPARE(m.varianceFloor, d.classifier.gmm.varianceFloor);
     for (const analysis::GaussianMixture& mixture : m.classifier.models())
       QVERIFY(mixture.components() <= d.classifier.gmm.components);
     QCOMPARE(m.provenance.classifier.gmm.components, d.classifier.gmm.components);
   }
+  QVERIFY(trees);  // F, L and R are trees by default
 }
 
 void TrainingDialogTest::resultsWindowExportsReportAndCellModel() {

@@ -58,7 +58,7 @@ def test_estimator_predicts_as_the_trained_model(trained):
     """GmmClassifier fitted on the rows training fitted gives the stored model's step decisions."""
     _, _, db, result = trained
     model = result.model
-    group = next(g for g in model.groups if len(g["classes"]) >= 2)
+    group = next(g for g in model.groups if len(g["classes"]) >= 2 and g["method"] == "gmm")
     name = group["group"]
     X, y, _, _ = tactile.dataset(db, "truth", result.report["train_runs"], name,
                                  group["features"])

@@ -602,7 +602,7 @@ TEST(WorkspaceTrain, StoredModelNamesItsProvenance) {
 // One training recipe: the same runs and labels trained from files (the core function the file
 // form of `tactile train` calls) and from the database give the same model and the same scores,
 // and the model exported from the database reports them.
-TEST(WorkspaceTrain, FilesAndDatabaseGiveTheSameModelAndScores) {
+void filesAndDatabaseAgree(analysis::ClassifierMethod method) {
   TrainFixture f;
   ASSERT_TRUE(f.ws);
   TrainRequest request;
@@ -611,6 +611,10 @@ TEST(WorkspaceTrain, FilesAndDatabaseGiveTheSameModelAndScores) {
   request.testRuns = {"run_d"};
   request.groups = {SensorGroup::Front, SensorGroup::Right};
   request.settings = quickSettings();
+  for (analysis::TrainSettings& s : request.settings.byGroup) {
+    s.classifier.method = method;
+    s.classifier.gbt.trees = 15;
+  }
   auto stored = f.ws->train(request);
   ASSERT_TRUE(stored.ok()) << stored.errorText();
 
@@ -634,7 +638,9 @@ TEST(WorkspaceTrain, FilesAndDatabaseGiveTheSameModelAndScores) {
     const analysis::GroupModel& a = files->bundle.models[i];
     const analysis::GroupModel& b = exported->models[i];
     EXPECT_EQ(a.group, b.group);
+    EXPECT_EQ(a.classifier.trees() != nullptr, method == analysis::ClassifierMethod::Gbt);
     EXPECT_EQ(analysis::modelToJson(a)["components"], analysis::modelToJson(b)["components"]);
+    EXPECT_EQ(analysis::modelToJson(a)["gbt"], analysis::modelToJson(b)["gbt"]);
     EXPECT_EQ(analysis::modelToJson(a)["transitions"], analysis::modelToJson(b)["transitions"]);
     EXPECT_GT(a.evaluation.samplesTest(), 0u);
     EXPECT_EQ(a.evaluation.byDecision, b.evaluation.byDecision);
@@ -649,6 +655,14 @@ TEST(WorkspaceTrain, FilesAndDatabaseGiveTheSameModelAndScores) {
   std::snprintf(text, sizeof text, "%.1f", 100.0 * ba);
   EXPECT_NE(report.find(text), std::string::npos) << report;
   EXPECT_EQ(report.find("no test data"), std::string::npos) << report;
+}
+
+TEST(WorkspaceTrain, FilesAndDatabaseGiveTheSameModelAndScores) {
+  filesAndDatabaseAgree(analysis::ClassifierMethod::Gmm);
+}
+
+TEST(WorkspaceTrain, FilesAndDatabaseGiveTheSameTreesAndScores) {
+  filesAndDatabaseAgree(analysis::ClassifierMethod::Gbt);
 }
 
 // By scene: runs of two scenes, each scored by a model trained on the other.
@@ -1188,7 +1202,7 @@ TEST(WorkspaceCellModel, ModelOfACellScoresExactlyAsTheCell) {
     EXPECT_EQ(m->classifier.models().front().components(), cell.cell.order);
     EXPECT_EQ(m->decision, cell.cell.decision);
     EXPECT_EQ(m->transitions.emissionWeight,
-              analysis::defaultTrainSettings(cell.cell.group).emissionWeight);
+              analysis::defaultEmissionWeight(cell.cell.group, cell.cell.method));
     ++checked;
   }
   EXPECT_GE(checked, 2u);

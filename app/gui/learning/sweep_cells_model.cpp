@@ -12,6 +12,10 @@ QString text(std::string_view s) {
   return QString::fromUtf8(s.data(), static_cast<qsizetype>(s.size()));
 }
 
+bool isTrees(const analysis::SweepCell& c) {
+  return c.method == analysis::ClassifierMethod::Gbt;
+}
+
 bool isGaussian(const analysis::SweepCell& c) {
   return c.method == analysis::ClassifierMethod::Gaussian;
 }
@@ -96,11 +100,20 @@ QVariant SweepCellsModel::data(const QModelIndex& index, int role) const {
     case Method:
       return text(analysis::classifierMethodName(c.method));
     case Form:
-      return isGaussian(c) ? QString() : text(analysis::covarianceFormName(c.form));
+      return isGaussian(c) || isTrees(c) ? QString() : text(analysis::covarianceFormName(c.form));
     case Order:
-      return isGaussian(c) && !sort ? QVariant(QString()) : QVariant(c.order);
+      return (isGaussian(c) || isTrees(c)) && !sort ? QVariant(QString()) : QVariant(c.order);
     case Floor:
+      if (isTrees(c)) return sort ? QVariant(-1.0) : QVariant(QString());
       return sort ? QVariant(c.varianceFloor) : QVariant(QString::number(c.varianceFloor, 'g', 4));
+    case Trees:
+      if (!isTrees(c)) return sort ? QVariant(-1.0) : QVariant(QString());
+      if (sort) return QVariant(c.trees * 100.0 + c.depth + c.learningRate);
+      return tr("%1 trees, depth %2, rate %3, weight %4")
+          .arg(c.trees)
+          .arg(c.depth)
+          .arg(c.learningRate, 0, 'g', 4)
+          .arg(c.minChildWeight, 0, 'g', 4);
     case Features:
       return text(analysis::featureKindName(c.features));
     case Decision:
@@ -155,6 +168,8 @@ QVariant SweepCellsModel::headerData(int section, Qt::Orientation orientation, i
       return tr("Order");
     case Floor:
       return tr("Floor");
+    case Trees:
+      return tr("Trees");
     case Features:
       return tr("Features");
     case Decision:

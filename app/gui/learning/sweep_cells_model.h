@@ -24,6 +24,7 @@ class SweepCellsModel : public QAbstractTableModel {
     Form,
     Order,
     Floor,
+    Trees,  // boosted trees' settings; empty for the mixtures
     Decision,
     BalancedAccuracy,
     TestSteps,

@@ -365,28 +365,39 @@ void SweepPlot::showTimeError(const analysis::SweepResult& sweep,
   auto errorOf = [&](std::size_t i) {
     return 100.0 - 100.0 * sweep.cells[i].metrics.balancedAccuracy;
   };
-  // One graph of points per group, points by ascending time (QCustomPlot keeps data sorted).
-  std::map<int, std::vector<std::size_t>> byGroup;
+  // One graph of points per group and family (boosted trees as squares, the mixtures as dots),
+  // points by ascending time (QCustomPlot keeps data sorted).
+  std::map<std::pair<int, bool>, std::vector<std::size_t>> bySeries;
   std::vector<double> times;
+  bool anyTrees = false, anyMixtures = false;
   for (std::size_t i = 0; i < sweep.cells.size(); ++i) {
     const analysis::SweepCellResult& r = sweep.cells[i];
     if (!r.ok || r.confusion.total() == 0 || (group && r.cell.group != *group)) continue;
     if (!std::isfinite(r.fitSeconds + r.predictSeconds) ||
         !std::isfinite(r.metrics.balancedAccuracy))
       continue;
-    byGroup[groupIndex(r.cell.group)].push_back(i);
+    const bool trees = r.cell.method == analysis::ClassifierMethod::Gbt;
+    anyTrees = anyTrees || trees;
+    anyMixtures = anyMixtures || !trees;
+    bySeries[{groupIndex(r.cell.group), trees}].push_back(i);
     times.push_back(timeOf(i));
   }
-  for (auto& [g, cells] : byGroup) {
+  for (auto& [key, cells] : bySeries) {
+    const auto [g, trees] = key;
     std::stable_sort(cells.begin(), cells.end(),
                      [&](std::size_t a, std::size_t b) { return timeOf(a) < timeOf(b); });
     const QColor colour = groupColour(g);
     const std::string_view name = kSensorGroups[static_cast<std::size_t>(g)].shortName;
+    const QString groupName = QString::fromUtf8(name.data(), static_cast<qsizetype>(name.size()));
     QCPGraph* graph = plot_->addGraph();
-    graph->setName(
-        tr("group %1").arg(QString::fromUtf8(name.data(), static_cast<qsizetype>(name.size()))));
+    // The legend names each group once, by its colour (the shapes have entries of their own
+    // below); a point's series names its family where the plot shows both.
+    graph->setName(anyTrees && anyMixtures && trees ? tr("group %1, boosted trees").arg(groupName)
+                                                    : tr("group %1").arg(groupName));
+    if (trees && bySeries.count({g, false}) != 0) graph->removeFromLegend();
     graph->setLineStyle(QCPGraph::lsNone);
-    graph->setScatterStyle(QCPScatterStyle(QCPScatterStyle::ssDisc, colour, colour, 6));
+    graph->setScatterStyle(QCPScatterStyle(
+        trees ? QCPScatterStyle::ssSquare : QCPScatterStyle::ssDisc, colour, colour, 6));
     QVector<double> keys, values;
     std::vector<int>& cellIndex = cellsOf_[graph];
     for (std::size_t i : cells) {
@@ -398,6 +409,17 @@ void SweepPlot::showTimeError(const analysis::SweepResult& sweep,
     graph->setData(keys, values, true);
     pointCount_ += static_cast<int>(keys.size());
     ++seriesCount_;
+  }
+  if (anyTrees && anyMixtures) {
+    // Legend entries for the two shapes (graphs without points).
+    for (const auto& [shape, name] :
+         {std::pair{QCPScatterStyle::ssDisc, tr("dots: Gaussian mixtures")},
+          std::pair{QCPScatterStyle::ssSquare, tr("squares: boosted trees")}}) {
+      QCPGraph* key = plot_->addGraph();
+      key->setName(name);
+      key->setLineStyle(QCPGraph::lsNone);
+      key->setScatterStyle(QCPScatterStyle(shape, Qt::darkGray, Qt::darkGray, 6));
+    }
   }
   const std::vector<std::size_t> front = analysis::paretoFront(sweep, group);
   if (!front.empty()) {

@@ -84,6 +84,14 @@ QString describe(const analysis::SweepCell& c) {
                "decision")
         .arg(group, s(analysis::covarianceFormName(c.form)), QString::number(c.order), floor,
              features, seed, decision);
+  if (c.method == analysis::ClassifierMethod::Gbt) {
+    return SweepResultsView::tr(
+               "Group %1, boosted trees: %2 trees, depth %3, rate %4, min child weight %5, %6 "
+               "features, seed %7, %8 decision")
+        .arg(group, QString::number(c.trees), QString::number(c.depth),
+             QString::number(c.learningRate, 'g', 4), QString::number(c.minChildWeight, 'g', 4),
+             features, seed, decision);
+  }
   return SweepResultsView::tr("Group %1, %2, variance floor %3, %4 features, seed %5, %6 decision")
       .arg(group, s(analysis::classifierMethodName(c.method)), floor, features, seed, decision);
 }
@@ -249,6 +257,19 @@ void SweepResultsView::setSweep(std::int64_t sweepId, const analysis::SweepResul
   selected_ = -1;
   refreshTimer_->stop();
   cells_->setCells(sweep_.cells);
+  {
+    // The trees' settings only where the sweep has trees; the mixtures' only where it has them.
+    const auto& methods = sweep_.grid.methods;
+    const auto uses = [&methods](analysis::ClassifierMethod m) {
+      return std::find(methods.begin(), methods.end(), m) != methods.end();
+    };
+    const bool trees = uses(analysis::ClassifierMethod::Gbt);
+    const bool mixtures =
+        uses(analysis::ClassifierMethod::Gmm) || uses(analysis::ClassifierMethod::Gaussian);
+    cellsView_->setColumnHidden(SweepCellsModel::Trees, !trees);
+    for (int column : {SweepCellsModel::Form, SweepCellsModel::Order, SweepCellsModel::Floor})
+      cellsView_->setColumnHidden(column, !mixtures);
+  }
   if (isVisible()) QTimer::singleShot(0, this, [this] { widenTableToTestSteps(); });
   {
     // The decision modes the sweep scored, in the grid's order.

@@ -160,10 +160,48 @@ void TrainingDialog::buildUi() {
   gaussian_ = new QCheckBox(tr("Gaussian"));
   gmm_ = new QCheckBox(tr("GMM"));
   gmm_->setChecked(true);
+  gbt_ = new QCheckBox(tr("Boosted trees"));
+  gbt_->setObjectName(QStringLiteral("methodGbt"));
+  gbt_->setToolTip(
+      tr("Gradient-boosted trees (XGBoost) under the same class chain: the online "
+         "and offline decisions use their class posteriors divided by the priors"));
   methodRow->addWidget(gaussian_);
   methodRow->addWidget(gmm_);
+  methodRow->addWidget(gbt_);
   methodRow->addStretch();
   form->addRow(tr("Methods:"), methodRow);
+
+  // The trees' own settings, swept like orders and floors (shown when boosted trees are ticked).
+  auto treeEdit = [](const QString& name, const QString& text, const QString& tip) {
+    auto* e = new QLineEdit(text);
+    e->setObjectName(name);
+    e->setToolTip(tip);
+    e->setMaximumWidth(110);
+    return e;
+  };
+  trees_ = treeEdit(QStringLiteral("trees"), QStringLiteral("100"),
+                    tr("Boosting rounds (trees per class), comma-separated"));
+  depths_ = treeEdit(QStringLiteral("depths"), QStringLiteral("6"),
+                     tr("Largest tree depths, comma-separated"));
+  learningRates_ = treeEdit(QStringLiteral("learningRates"), QStringLiteral("0.1"),
+                            tr("Learning rates (shrinkage of each round), comma-separated"));
+  minChildWeights_ = treeEdit(QStringLiteral("minChildWeights"), QStringLiteral("1"),
+                              tr("Least summed weight in a leaf, comma-separated"));
+  auto* treeLayout = new QHBoxLayout;
+  treeLayout->setContentsMargins(0, 0, 0, 0);
+  for (const auto& [label, edit] :
+       {std::pair{tr("rounds"), trees_}, std::pair{tr("depth"), depths_},
+        std::pair{tr("rate"), learningRates_}, std::pair{tr("min weight"), minChildWeights_}}) {
+    treeLayout->addWidget(new QLabel(label));
+    treeLayout->addWidget(edit);
+  }
+  treeLayout->addStretch();
+  treeRow_ = new QWidget;
+  treeRow_->setLayout(treeLayout);
+  form->addRow(tr("Trees:"), treeRow_);
+  const auto showTrees = [this, form] { form->setRowVisible(treeRow_, gbt_->isChecked()); };
+  connect(gbt_, &QCheckBox::toggled, this, showTrees);
+  showTrees();
 
   orders_ = new QLineEdit(QStringLiteral("1, 2, 4, 8, 16"));
   orders_->setObjectName(QStringLiteral("orders"));
@@ -279,12 +317,12 @@ void TrainingDialog::buildUi() {
   leaveOut_->hide();
   form->addRow(QString(), unscorableRow);
   // The plan follows every edit, and an error shown for a bad form goes once it is fixed.
-  for (QLineEdit* e : {orders_, floors_, seeds_})
+  for (QLineEdit* e : {orders_, floors_, seeds_, trees_, depths_, learningRates_, minChildWeights_})
     connect(e, &QLineEdit::textChanged, this, &TrainingDialog::refreshPlan);
   for (const std::vector<QCheckBox*>* list : {&groups_, &forms_, &features_})
     for (QCheckBox* box : *list)
       connect(box, &QCheckBox::toggled, this, &TrainingDialog::refreshPlan);
-  for (QCheckBox* box : {gaussian_, gmm_})
+  for (QCheckBox* box : {gaussian_, gmm_, gbt_})
     connect(box, &QCheckBox::toggled, this, &TrainingDialog::refreshPlan);
   connect(threads_, &QSpinBox::valueChanged, this, &TrainingDialog::refreshPlan);
   connect(runs_, &QTableWidget::itemChanged, this, &TrainingDialog::refreshRows);
@@ -408,6 +446,10 @@ void TrainingDialog::rememberForm() const {
   settings.setValue(keys::kTrainingLabelSet, labelSet_->currentText());
   settings.setValue(keys::kTrainingOrders, orders_->text());
   settings.setValue(keys::kTrainingFloors, floors_->text());
+  settings.setValue(keys::kTrainingTrees, trees_->text());
+  settings.setValue(keys::kTrainingDepths, depths_->text());
+  settings.setValue(keys::kTrainingLearningRates, learningRates_->text());
+  settings.setValue(keys::kTrainingMinChildWeights, minChildWeights_->text());
   settings.setValue(keys::kTrainingSeeds, seeds_->text());
   settings.setValue(keys::kTrainingSplit, split_->currentData());
   QStringList ticked;
@@ -416,6 +458,7 @@ void TrainingDialog::rememberForm() const {
       if (box->isChecked()) ticked << box->property("key").toString();
   if (gaussian_->isChecked()) ticked << QStringLiteral("method:gaussian");
   if (gmm_->isChecked()) ticked << QStringLiteral("method:gmm");
+  if (gbt_->isChecked()) ticked << QStringLiteral("method:gbt");
   settings.setValue(keys::kTrainingTicked, ticked);
 }
 
@@ -428,6 +471,12 @@ void TrainingDialog::restoreForm() {
     floors_->setText(settings.value(keys::kTrainingFloors).toString());
   if (settings.contains(keys::kTrainingSeeds))
     seeds_->setText(settings.value(keys::kTrainingSeeds).toString());
+  for (const auto& [key, edit] :
+       {std::pair{keys::kTrainingTrees, trees_}, std::pair{keys::kTrainingDepths, depths_},
+        std::pair{keys::kTrainingLearningRates, learningRates_},
+        std::pair{keys::kTrainingMinChildWeights, minChildWeights_}}) {
+    if (settings.contains(key)) edit->setText(settings.value(key).toString());
+  }
   if (settings.contains(keys::kTrainingSplit)) {
     const int i = split_->findData(settings.value(keys::kTrainingSplit));
     if (i >= 0) split_->setCurrentIndex(i);
@@ -439,6 +488,7 @@ void TrainingDialog::restoreForm() {
         box->setChecked(ticked.contains(box->property("key").toString()));
     gaussian_->setChecked(ticked.contains(QStringLiteral("method:gaussian")));
     gmm_->setChecked(ticked.contains(QStringLiteral("method:gmm")));
+    gbt_->setChecked(ticked.contains(QStringLiteral("method:gbt")));
   }
   if (settings.contains(keys::kTrainingLabelSet))
     setLabelSet(settings.value(keys::kTrainingLabelSet).toString());
@@ -670,7 +720,31 @@ Result<analysis::SweepGrid> TrainingDialog::grid() const {
   g.methods.clear();
   if (gaussian_->isChecked()) g.methods.push_back(analysis::ClassifierMethod::Gaussian);
   if (gmm_->isChecked()) g.methods.push_back(analysis::ClassifierMethod::Gmm);
+  if (gbt_->isChecked()) g.methods.push_back(analysis::ClassifierMethod::Gbt);
   if (g.methods.empty()) return failure("choose at least one method");
+  if (gbt_->isChecked()) {
+    const auto wholeNumbers = [](QLineEdit* edit, const QString& what,
+                                 std::vector<int>& out) -> Status {
+      auto values = parseNumbers(edit->text(), what);
+      if (!values) return values.error();
+      out.clear();
+      for (double v : values.value()) {
+        if (v != std::floor(v) || std::abs(v) > 1.0e9)
+          return Status::failure(what.toStdString() + ": " + QString::number(v).toStdString() +
+                                 " is not a whole number");
+        out.push_back(static_cast<int>(v));
+      }
+      return Status::success();
+    };
+    if (Status ok = wholeNumbers(trees_, tr("Trees"), g.treeCounts); !ok) return ok.error();
+    if (Status ok = wholeNumbers(depths_, tr("Depths"), g.depths); !ok) return ok.error();
+    auto rates = parseNumbers(learningRates_->text(), tr("Learning rates"));
+    if (!rates) return rates.error();
+    g.learningRates = rates.value();
+    auto weights = parseNumbers(minChildWeights_->text(), tr("Min child weights"));
+    if (!weights) return weights.error();
+    g.minChildWeights = weights.value();
+  }
   auto orders = parseNumbers(orders_->text(), tr("Orders"));
   if (!orders) return orders.error();
   g.orders.clear();
@@ -749,8 +823,12 @@ Result<workspace::TrainRequest> TrainingDialog::trainRequest() const {
     request.settings = analysis::defaultGroupSettings();
   } else {
     analysis::SweepCell first;
-    first.method = g->methods.back();  // GMM when both are chosen
+    first.method = g->methods.back();  // the last ticked: GMM over Gaussian, trees over both
     first.order = g->orders.front();
+    first.trees = g->treeCounts.front();
+    first.depth = g->depths.front();
+    first.learningRate = g->learningRates.front();
+    first.minChildWeight = g->minChildWeights.front();
     first.form = g->forms.front();
     first.varianceFloor = g->varianceFloors.front();
     first.features = g->features.front();
@@ -760,10 +838,11 @@ Result<workspace::TrainRequest> TrainingDialog::trainRequest() const {
     settings.classifier = analysis::cellClassifierOptions(g.value(), first);
     settings.classifier.oneVsRest = true;
     request.settings = analysis::GroupSettings::same(settings);
-    // The chain weighs the evidence as the sweep scored these settings: each group's default.
+    // The chain weighs the evidence as the sweep scored these settings: each group's default for
+    // the method.
     for (const GroupInfo& info : kSensorGroups) {
       request.settings.of(info.group).emissionWeight =
-          analysis::defaultTrainSettings(info.group).emissionWeight;
+          analysis::defaultEmissionWeight(info.group, first.method);
     }
   }
   if (emissionWeight_->value() > 0.0) {

@@ -134,6 +134,12 @@ class TrainingDialog : public QDialog {
   std::vector<QCheckBox*> groups_;
   QCheckBox* gaussian_ = nullptr;
   QCheckBox* gmm_ = nullptr;
+  QCheckBox* gbt_ = nullptr;
+  QLineEdit* trees_ = nullptr;  // boosted trees' settings, comma-separated lists
+  QLineEdit* depths_ = nullptr;
+  QLineEdit* learningRates_ = nullptr;
+  QLineEdit* minChildWeights_ = nullptr;
+  QWidget* treeRow_ = nullptr;
   std::vector<QCheckBox*> forms_;
   std::vector<QCheckBox*> features_;
   std::vector<QCheckBox*> decisions_;  // step, online, offline
