@@ -2,6 +2,8 @@
 
 #include <QString>
 
+#include <algorithm>
+
 #include <utility>
 
 namespace tactile::gui {
@@ -199,6 +201,19 @@ QVariant SweepCellsModel::headerData(int section, Qt::Orientation orientation, i
     default:
       return {};
   }
+}
+
+std::vector<std::pair<int, bool>> SweepCellsModel::settingsColumns(
+    const std::vector<analysis::ClassifierMethod>& methods) {
+  const auto uses = [&methods](analysis::ClassifierMethod m) {
+    return std::find(methods.begin(), methods.end(), m) != methods.end();
+  };
+  const bool mixtures =
+      uses(analysis::ClassifierMethod::Gmm) || uses(analysis::ClassifierMethod::Gaussian);
+  return {{Form, mixtures},
+          {Order, mixtures},
+          {Floor, mixtures},
+          {Trees, uses(analysis::ClassifierMethod::Gbt)}};
 }
 
 }  // namespace tactile::gui

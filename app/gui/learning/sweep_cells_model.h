@@ -7,6 +7,7 @@
 
 #include <QAbstractTableModel>
 
+#include <utility>
 #include <vector>
 
 #include "analysis/sweep.h"
@@ -42,6 +43,12 @@ class SweepCellsModel : public QAbstractTableModel {
   };
 
   explicit SweepCellsModel(QObject* parent = nullptr);
+
+  // Which settings' columns a view of a sweep with these methods shows: (column, shown) for the
+  // covariance, order and floor (only with the mixtures) and the trees' column (only with boosted
+  // trees).
+  static std::vector<std::pair<int, bool>> settingsColumns(
+      const std::vector<analysis::ClassifierMethod>& methods);
 
   void setCells(std::vector<analysis::SweepCellResult> cells);
   void addCell(const analysis::SweepCellResult& cell);

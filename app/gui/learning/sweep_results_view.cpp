@@ -257,19 +257,8 @@ void SweepResultsView::setSweep(std::int64_t sweepId, const analysis::SweepResul
   selected_ = -1;
   refreshTimer_->stop();
   cells_->setCells(sweep_.cells);
-  {
-    // The trees' settings only where the sweep has trees; the mixtures' only where it has them.
-    const auto& methods = sweep_.grid.methods;
-    const auto uses = [&methods](analysis::ClassifierMethod m) {
-      return std::find(methods.begin(), methods.end(), m) != methods.end();
-    };
-    const bool trees = uses(analysis::ClassifierMethod::Gbt);
-    const bool mixtures =
-        uses(analysis::ClassifierMethod::Gmm) || uses(analysis::ClassifierMethod::Gaussian);
-    cellsView_->setColumnHidden(SweepCellsModel::Trees, !trees);
-    for (int column : {SweepCellsModel::Form, SweepCellsModel::Order, SweepCellsModel::Floor})
-      cellsView_->setColumnHidden(column, !mixtures);
-  }
+  for (const auto& [column, shown] : SweepCellsModel::settingsColumns(sweep_.grid.methods))
+    cellsView_->setColumnHidden(column, !shown);
   if (isVisible()) QTimer::singleShot(0, this, [this] { widenTableToTestSteps(); });
   {
     // The decision modes the sweep scored, in the grid's order.

@@ -364,6 +364,9 @@ void TrainingDialog::buildUi() {
   cellsView_->setModel(sorted_);
   cellsView_->setSortingEnabled(true);
   cellsView_->sortByColumn(SweepCellsModel::BalancedAccuracy, Qt::DescendingOrder);
+  for (const auto& [column, shown] :
+       SweepCellsModel::settingsColumns({analysis::ClassifierMethod::Gmm}))
+    cellsView_->setColumnHidden(column, !shown);
   cellsView_->setSelectionBehavior(QAbstractItemView::SelectRows);
   cellsView_->verticalHeader()->hide();
   cellsView_->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
@@ -881,6 +884,8 @@ void TrainingDialog::startSweep() {
   }
   const std::size_t total = analysis::expandGrid(request->grid).size();
   cells_->clear();
+  for (const auto& [column, shown] : SweepCellsModel::settingsColumns(request->grid.methods))
+    cellsView_->setColumnHidden(column, !shown);
   statusIsError_ = false;
   resultStack_->setCurrentWidget(cellsView_);
   if (!worker_->startSweep(databasePath_, request.value())) return;
