@@ -27,6 +27,10 @@ struct FileHead {
   std::string file;  // as given, for messages
   std::string name;
   std::string checksum;
+  // Instead of `checksum` (then empty): the checksum as it is computed beside the writer, waited
+  // for once the steps are written (or when the name is taken). Returns false with `error` set when
+  // it could not be computed; the run is then not stored.
+  std::function<bool(std::string& checksum, std::string& error)> lateChecksum;
   std::string error;  // non-empty: the file is rejected
   std::vector<std::string> warnings;
   RunData header;  // metadata and x_ column names, no steps
@@ -58,6 +62,8 @@ std::string validateRun(const RunData& run);
 void describeHead(FileHead& head, const std::filesystem::path& baseDir,
                   const SceneResolver& resolver);
 StepChunk encodeChunk(RunData rows, std::size_t firstStep, std::size_t extraColumns);
+// The steps [first, first + count) of `run`, encoded (only those rows' columns are copied).
+StepChunk encodeSteps(const RunData& run, std::size_t first, std::size_t count);
 // Never throws: any failure (even out of memory on a worker thread) becomes the chunk's error.
 StepChunk parseChunk(const RunCsvChunks& chunks, std::size_t index, const std::string& file);
 // The head of a file's text once split into chunks (the header read).
@@ -75,7 +81,8 @@ void writeStepChunk(RunDatabase::Impl& impl, std::int64_t runId, const StepChunk
 
 // The SQL writer: stores one run in its own transaction: the run row, then the steps chunk by
 // chunk as `takeChunk(i)` hands them over, then the summary blocks. A chunk with an error, or any
-// failure, rolls everything back.
+// failure, rolls everything back. With head.lateChecksum the check for a run of the same content
+// comes after the steps are written (same outcome: skipped, nothing stored).
 ImportOutcome writeRun(RunDatabase::Impl& impl, FileHead& head,
                        const std::function<StepChunk(std::size_t)>& takeChunk,
                        std::int64_t failAfterSteps);

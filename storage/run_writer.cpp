@@ -120,32 +120,51 @@ ImportOutcome writeRun(RunDatabase::Impl& impl, FileHead& head,
     // looked (docs/storage.md#concurrency), and then it is skipped or refused, never a raw
     // UNIQUE-constraint error.
     db::Transaction transaction(impl.connection);
-    {
+    // True (with the outcome filled in) when a run of the same content is stored.
+    const auto storedAlready = [&](const std::string& checksum) {
       db::Statement& dup =
           impl.statement("SELECT id, name, step_count FROM runs WHERE checksum = ?");
-      dup.bind(1, head.checksum);
+      dup.bind(1, checksum);
       if (dup.step()) {
         outcome.status = ImportStatus::Skipped;
         outcome.runId = dup.columnInt(0);
         outcome.runName = dup.columnText(1);
         outcome.steps = dup.columnInt(2);
         outcome.message = head.file + ": already imported as run '" + outcome.runName +
-                          "' (same checksum " + head.checksum + "); skipped";
+                          "' (same checksum " + checksum + "); skipped";
         dup.reset();
-        return outcome;
+        return true;
       }
       dup.reset();
-    }
+      return false;
+    };
+    // A checksum computed beside this writer: waited for here. False: it failed (outcome set).
+    bool checksumKnown = !head.lateChecksum;
+    const auto awaitChecksum = [&] {
+      if (checksumKnown) return true;
+      std::string error;
+      if (!head.lateChecksum(head.checksum, error)) {
+        outcome.message = std::move(error);
+        return false;
+      }
+      checksumKnown = true;
+      return true;
+    };
+    if (checksumKnown && storedAlready(head.checksum)) return outcome;
     {
       db::Statement& named = impl.statement("SELECT source_file FROM runs WHERE name = ?");
       named.bind(1, head.name);
       if (named.step()) {
+        const std::string sourceFile = named.columnText(0);
+        named.reset();
+        // The same content under this name is a skip, not a clash (as when checked first).
+        if (!awaitChecksum()) return outcome;
+        if (storedAlready(head.checksum)) return outcome;
         outcome.message = head.file + ": a run named '" + head.name +
-                          "' already exists (imported from " + named.columnText(0) +
+                          "' already exists (imported from " + sourceFile +
                           ", other content); not imported: give this batch a name prefix "
                           "(tactile import --prefix P names runs P_<stem>) or the file "
                           "another name (--name)";
-        named.reset();
         return outcome;
       }
       named.reset();
@@ -219,6 +238,13 @@ ImportOutcome writeRun(RunDatabase::Impl& impl, FileHead& head,
     if (steps == 0 && !head.noStepsError.empty()) {
       outcome.message = std::move(head.noStepsError);
       return outcome;  // rolls back
+    }
+    if (!checksumKnown) {
+      if (!awaitChecksum() || storedAlready(head.checksum)) return outcome;  // rolls back
+      impl.statement("UPDATE runs SET checksum = ? WHERE id = ?")
+          .bind(1, head.checksum)
+          .bind(2, runId)
+          .run();
     }
 
     const std::vector<EncodedBlobs> levels = encodeSummaryBlocks(std::move(summary).finish());
