@@ -2,11 +2,16 @@
 
 #include <algorithm>
 #include <array>
+#include <condition_variable>
 #include <cstdio>
+#include <memory>
+#include <mutex>
 #include <set>
 #include <stdexcept>
+#include <thread>
 
 #include "base/file_text.h"
+#include "base/parallel.h"
 #include "mcap/bytes.h"
 #include "mcap/compression.h"
 #include "mcap/crc32.h"
@@ -144,10 +149,150 @@ class Fields {
   std::string what_;
 };
 
+// Decompresses the chunks, and checks their CRCs, on one more thread ahead of the scan, which
+// then only walks their records. The chunk records are found by their record headers alone (a
+// cheap walk over the file, no summary needed); a chunk whose fields, decompression or CRC are at
+// fault is left to the scan, which reads it again and reports the fault exactly as it would
+// without this. Chunks are handed over in batches (fewer waits), in file order.
+class ChunkPrefetch {
+ public:
+  // Nothing to do (no thread started) when the records before `footerStart` hold fewer than two
+  // chunks.
+  ChunkPrefetch(std::string_view bytes, std::uint64_t footerStart) : bytes_(bytes) {
+    std::uint64_t pos = kMagic.size();
+    while (pos < footerStart && footerStart - pos >= 9) {
+      const auto op = static_cast<std::uint8_t>(bytes[pos]);
+      const std::uint64_t len = getU64(bytes.data() + pos + 1);
+      if (len > footerStart - pos - 9) break;
+      if (op == static_cast<std::uint8_t>(Opcode::Chunk)) chunks_.push_back(pos);
+      pos += 9 + len;
+    }
+    if (chunks_.size() < 2) return;
+    ring_.resize(kSlots);
+    for (Batch& batch : ring_)
+      batch.items = std::make_unique<Item[]>(kBatchChunks);
+    worker_ = std::make_unique<BackgroundWorkers>(
+        1, [this] { produce(); }, failure_);
+  }
+  ChunkPrefetch(const ChunkPrefetch&) = delete;
+  ChunkPrefetch& operator=(const ChunkPrefetch&) = delete;
+  ~ChunkPrefetch() {
+    {
+      std::lock_guard lock(mutex_);
+      stop_ = true;
+    }
+    changed_.notify_all();
+    worker_.reset();  // joins
+  }
+
+  // The records of the chunk record at `pos`, decompressed and checked against the chunk's CRC,
+  // when the worker has them (valid until the next call); else nothing, and the caller reads the
+  // chunk itself.
+  std::optional<std::string_view> take(std::uint64_t pos) {
+    if (!worker_ || next_ >= chunks_.size() || chunks_[next_] != pos) return std::nullopt;
+    const std::size_t batch = next_ / kBatchChunks;
+    {
+      std::unique_lock lock(mutex_);
+      if (batch > released_) {
+        released_ = batch;  // the ones before are done with
+        changed_.notify_all();
+      }
+      changed_.wait(lock, [&] { return produced_ > batch || failure_.failed(); });
+      if (produced_ <= batch) return std::nullopt;
+    }
+    const Item& item = ring_[batch % kSlots].items[next_ - batch * kBatchChunks];
+    ++next_;
+    if (!item.ok) return std::nullopt;
+    return item.inPlace ? item.plain : item.buffer.view();
+  }
+
+ private:
+  static constexpr std::size_t kBatchChunks = 64;
+  static constexpr std::size_t kSlots = 4;
+
+  struct Item {
+    bool ok = false;
+    bool inPlace = false;    // uncompressed: the records in the file
+    std::string_view plain;  // when inPlace
+    Buffer buffer;
+  };
+  struct Batch {
+    std::unique_ptr<Item[]> items;  // kBatchChunks (a Buffer does not move)
+  };
+
+  void produce() {
+    const std::size_t batches = (chunks_.size() + kBatchChunks - 1) / kBatchChunks;
+    for (std::size_t b = 0; b < batches; ++b) {
+      {
+        std::unique_lock lock(mutex_);
+        changed_.wait(lock, [&] { return stop_ || b < released_ + kSlots; });
+        if (stop_) return;
+      }
+      Batch& batch = ring_[b % kSlots];
+      const std::size_t first = b * kBatchChunks;
+      const std::size_t end = std::min(chunks_.size(), first + kBatchChunks);
+      for (std::size_t c = first; c < end; ++c)
+        prepare(chunks_[c], batch.items[c - first]);
+      {
+        std::lock_guard lock(mutex_);
+        produced_ = b + 1;
+      }
+      changed_.notify_all();
+    }
+  }
+
+  // The chunk's records as Scanner::chunkRecord reads them; `ok` only when all is in order.
+  void prepare(std::uint64_t pos, Item& item) {
+    item.ok = false;
+    item.inPlace = false;
+    const std::uint64_t len = getU64(bytes_.data() + pos + 1);
+    const std::string_view content = bytes_.substr(pos + 9, static_cast<std::size_t>(len));
+    constexpr std::size_t kFixed = 8 + 8 + 8 + 4;
+    if (content.size() < kFixed + 4) return;
+    const std::uint64_t uncompressedSize = getU64(content.data() + 16);
+    const std::uint32_t crc = getU32(content.data() + 24);
+    const std::uint32_t nameLen = getU32(content.data() + kFixed);
+    if (nameLen > content.size() - kFixed - 4 || content.size() - kFixed - 4 - nameLen < 8) return;
+    const auto kind = parseCompression(content.substr(kFixed + 4, nameLen));
+    if (!kind) return;
+    const std::size_t recordsAt = kFixed + 4 + nameLen + 8;
+    const std::uint64_t recordsLen = getU64(content.data() + recordsAt - 8);
+    if (recordsLen > content.size() - recordsAt) return;
+    const std::string_view records =
+        content.substr(recordsAt, static_cast<std::size_t>(recordsLen));
+    std::string_view plain = records;
+    if (*kind != Compression::None) {
+      if (decompressor_.decompress(*kind, records, uncompressedSize, item.buffer)) return;
+      plain = item.buffer.view();
+    } else if (records.size() != uncompressedSize) {
+      return;
+    } else {
+      item.inPlace = true;
+      item.plain = records;
+    }
+    if (crc != 0 && crc32(plain) != crc) return;
+    item.ok = true;
+  }
+
+  std::string_view bytes_;
+  std::vector<std::uint64_t> chunks_;  // offsets of the chunk records, in file order
+  std::vector<Batch> ring_;            // batch b in slot b % kSlots
+  Decompressor decompressor_;          // the worker's
+  std::size_t next_ = 0;               // the caller's: the next chunk it takes
+  std::mutex mutex_;
+  std::condition_variable changed_;
+  std::size_t produced_ = 0;  // batches ready
+  std::size_t released_ = 0;  // batches the caller is done with
+  bool stop_ = false;
+  FirstException failure_;
+  std::unique_ptr<BackgroundWorkers> worker_;  // last: joined before the rest goes
+};
+
 class Scanner {
  public:
-  Scanner(std::string_view bytes, const std::string& file, const MessageFn& onMessage)
-      : bytes_(bytes), file_(file), onMessage_(onMessage) {
+  Scanner(std::string_view bytes, const std::string& file, const MessageFn& onMessage,
+          unsigned threads)
+      : bytes_(bytes), file_(file), onMessage_(onMessage), threads_(threads) {
     channelById_.fill(nullptr);
     schemaOfChannel_.fill(nullptr);
   }
@@ -190,6 +335,9 @@ class Scanner {
                                         " lies outside the summary"};
     }
 
+    if (workerThreadCount(threads_, 2) >= 2) {
+      prefetch_ = std::make_unique<ChunkPrefetch>(bytes_, footerStart);
+    }
     std::uint64_t pos = kMagic.size();
     bool first = true;
     bool inSummary = false;
@@ -530,7 +678,11 @@ class Scanner {
                                      "' (this reader knows zstd, lz4 and none)"};
     }
     std::string_view plain = records;
-    if (*kind != Compression::None) {
+    std::optional<std::string_view> prefetched;
+    if (prefetch_) prefetched = prefetch_->take(pos);
+    if (prefetched) {
+      plain = *prefetched;  // decompressed and its CRC checked
+    } else if (*kind != Compression::None) {
       if (auto problem = decompressor_.decompress(*kind, records, uncompressedSize, chunkBuffer_)) {
         throw Fault{recordsAt, "Chunk record: " + *problem};
       }
@@ -540,7 +692,7 @@ class Scanner {
                                  " bytes of uncompressed records, its uncompressed_size says " +
                                  std::to_string(uncompressedSize)};
     }
-    if (crc != 0) {
+    if (crc != 0 && !prefetched) {
       const std::uint32_t actual = crc32(plain);
       if (actual != crc) {
         throw Fault{pos + 9 + 24, "Chunk record: the CRC of its records does not match (it says " +
@@ -694,6 +846,8 @@ class Scanner {
   std::vector<std::pair<std::uint64_t, std::uint64_t>> chunks_;  // (offset, length)
   std::vector<std::uint64_t> chunkIndexAt_;
   std::uint64_t statisticsAt_ = 0;
+  unsigned threads_;
+  std::unique_ptr<ChunkPrefetch> prefetch_;
 };
 
 }  // namespace
@@ -741,9 +895,9 @@ std::optional<std::uint64_t> summaryTopicMessageCount(std::string_view bytes,
 }
 
 Result<ScanResult> scan(std::string_view bytes, const std::string& fileName,
-                        const MessageFn& onMessage) {
+                        const MessageFn& onMessage, unsigned threads) {
   try {
-    auto scanner = std::make_unique<Scanner>(bytes, fileName, onMessage);
+    auto scanner = std::make_unique<Scanner>(bytes, fileName, onMessage, threads);
     return scanner->run();
   } catch (const Fault& fault) {
     return errorAt(fileName, fault.offset, fault.message);
