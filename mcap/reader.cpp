@@ -815,9 +815,13 @@ class Scanner {
     }
     for (std::size_t i = 0; i < out_.chunkIndexes.size(); ++i) {
       const ChunkIndex& c = out_.chunkIndexes[i];
-      const bool found = std::any_of(chunks_.begin(), chunks_.end(), [&](const auto& chunk) {
-        return chunk.first == c.chunkStartOffset && chunk.second == c.chunkLength;
-      });
+      // chunks_ is in file order, so sorted by offset (a search per index: a file of 70,000
+      // chunks took 0.7 s looking through them all for each).
+      const auto at = std::lower_bound(
+          chunks_.begin(), chunks_.end(), c.chunkStartOffset,
+          [](const auto& chunk, std::uint64_t offset) { return chunk.first < offset; });
+      const bool found =
+          at != chunks_.end() && at->first == c.chunkStartOffset && at->second == c.chunkLength;
       if (!found) {
         throw Fault{chunkIndexAt_[i], "Chunk Index record: no chunk of " +
                                           std::to_string(c.chunkLength) + " bytes starts at byte " +
