@@ -15,6 +15,7 @@
 #include "run/run_csv.h"
 #include "storage/database_impl.h"
 #include "storage/run_codec.h"
+#include "storage/step_checksum.h"
 
 namespace tactile::storage::importing {
 
@@ -31,6 +32,8 @@ struct FileHead {
   // for once the steps are written (or when the name is taken). Returns false with `error` set when
   // it could not be computed; the run is then not stored.
   std::function<bool(std::string& checksum, std::string& error)> lateChecksum;
+  // Optional: told the run's id once its row is written (the steps' checksums include it).
+  std::function<void(std::int64_t runId)> runStarted;
   std::string error;  // non-empty: the file is rejected
   std::vector<std::string> warnings;
   RunData header;  // metadata and x_ column names, no steps
@@ -54,6 +57,10 @@ struct StepChunk {
   std::vector<std::int64_t> packedTruth;  // one per step when the run has truth
   std::vector<std::string> extraBlobs;    // one per step when there are x_ columns
   PartialSummary summary;                 // finest-level blocks of these steps
+  // Optional: each row's stepChecksum for run `checksumsRunId` (taken off the writer thread);
+  // the writer takes them itself when they are missing or for another run id.
+  std::vector<std::int32_t> checksums;
+  std::int64_t checksumsRunId = 0;
 };
 
 // Rejects runs that cannot be stored faithfully (hand-built ones; the reader checks files).
@@ -71,6 +78,11 @@ void describeText(FileHead& head, const RunCsvChunks& chunks, const SceneResolve
 // The given name, else `PREFIX_<stem>` (or the stem without a prefix); docs/storage.md#import.
 std::string runName(const ImportOptions& options, const std::filesystem::path& file);
 ImportOutcome cancelledOutcome(const std::filesystem::path& file);
+
+// The steps row of the chunk's i-th step in run `runId`, as it is written.
+StepRow stepRowOf(const StepChunk& chunk, std::size_t i, std::int64_t runId, bool hasTruth);
+// Fills chunk.checksums for run `runId`.
+void checksumSteps(StepChunk& chunk, std::int64_t runId, bool hasTruth);
 
 // Writes the steps rows of one chunk of run `runId` (steps chunk.firstStep, ...) with their
 // checksums, inside the caller's transaction. Every writer of step rows goes through here, so

@@ -80,9 +80,9 @@ ImportOutcome RunStore::importRun(RunData&& run, const std::string& name,
   if (!head.error.empty()) return writeRun(*impl_, head, {}, -1);
 
   // Three threads at once: this one writes the rows (SQLite's work, the longest part), one
-  // encodes the steps a block at a time just ahead of it, and one takes the checksum of the run's
-  // file form, which the writer needs only once the steps are in. The run is read by both
-  // helpers and changed by none.
+  // encodes the steps a block at a time just ahead of it (with the rows' checksums, once the run's
+  // row is written and its id known), and one takes the checksum of the run's file form, which the
+  // writer needs only once the steps are in. The run is read by both helpers and changed by none.
   const std::size_t steps = run.stepCount();
   const std::size_t blocks =
       std::max<std::size_t>(1, (steps + kRunBlockSteps - 1) / kRunBlockSteps);
@@ -94,6 +94,7 @@ ImportOutcome RunStore::importRun(RunData&& run, const std::string& name,
   bool stop = false;
   std::optional<std::string> checksum;
   std::string checksumError;
+  std::optional<std::int64_t> runId;  // once the writer has written the run's row
   struct Stopped {};
 
   auto encodeAll = [&] {
@@ -107,6 +108,15 @@ ImportOutcome RunStore::importRun(RunData&& run, const std::string& name,
       StepChunk chunk;
       try {
         chunk = encodeSteps(run, first, std::min(steps, first + kRunBlockSteps) - first);
+        // The rows' checksums too, once the writer has the run's id (they include it).
+        std::int64_t id = 0;
+        {
+          std::unique_lock lock(mutex);
+          changed.wait(lock, [&] { return stop || runId.has_value(); });
+          if (stop) return;
+          id = *runId;
+        }
+        checksumSteps(chunk, id, head.hasTruth);
       } catch (const std::exception& e) {
         chunk = StepChunk{};
         chunk.error = head.file + ": " + e.what();
@@ -167,6 +177,13 @@ ImportOutcome RunStore::importRun(RunData&& run, const std::string& name,
         helpers.join();
       }
     } joiner{helpers, stopHelpers};
+    head.runStarted = [&](std::int64_t id) {
+      {
+        std::lock_guard lock(mutex);
+        runId = id;
+      }
+      changed.notify_all();
+    };
     head.lateChecksum = [&](std::string& out, std::string& error) {
       std::unique_lock lock(mutex);
       changed.wait(lock, [&] { return checksum.has_value() || failure.failed(); });

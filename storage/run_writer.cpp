@@ -13,33 +13,19 @@ namespace {
 template <class Target, class Emit>
 void writeRows(Target& target, Emit emit, std::int64_t runId, const StepChunk& chunk, bool hasTruth,
                std::int64_t failAfterSteps) {
-  const RunData& rows = chunk.rows;
   const bool hasExtra = !chunk.extraBlobs.empty();
+  // Checksums taken beside the writer, for this run's id (else taken here).
+  const bool checksummed =
+      chunk.checksumsRunId == runId && chunk.checksums.size() == chunk.rows.stepCount();
   target.bind(1, runId);
   if (!hasExtra) target.bindNull(10);
   if (!hasTruth) target.bindNull(11);
-  StepRow row;
-  row.runId = runId;
-  row.hasTruth = hasTruth;
-  const std::size_t n = rows.stepCount();
+  const std::size_t n = chunk.rows.stepCount();
   for (std::size_t i = 0; i < n; ++i) {
-    row.step = static_cast<std::int64_t>(chunk.firstStep + i);
+    const StepRow row = stepRowOf(chunk, i, runId, hasTruth);
     if (row.step == failAfterSteps) {
       throw db::DbError("injected failure after " + std::to_string(row.step) + " steps");
     }
-    row.x = rows.x[i];
-    row.y = rows.y[i];
-    row.theta = rows.theta[i];
-    row.v = rows.v[i];
-    row.omega = rows.omega[i];
-    row.blocked = static_cast<std::int64_t>(rows.blocked[i]);
-    row.sensors = chunk.sensors.data(i);
-    row.sensorBytes = chunk.sensors.bytes(i);
-    if (hasExtra) {
-      row.extra = chunk.extraBlobs[i].data();
-      row.extraBytes = chunk.extraBlobs[i].size();
-    }
-    if (hasTruth) row.truth = chunk.packedTruth[i];
     target.bind(1, runId)
         .bind(2, row.step)
         .bind(3, row.x)
@@ -51,7 +37,8 @@ void writeRows(Target& target, Emit emit, std::int64_t runId, const StepChunk& c
         .bindBlob(9, row.sensors, row.sensorBytes);
     if (hasExtra) target.bindBlob(10, row.extra, row.extraBytes);
     if (hasTruth) target.bind(11, row.truth);
-    target.bind(12, static_cast<std::int64_t>(stepChecksum(row)));
+    target.bind(12,
+                static_cast<std::int64_t>(checksummed ? chunk.checksums[i] : stepChecksum(row)));
     emit();
   }
 }
@@ -60,6 +47,36 @@ constexpr const char* kStepColumns =
     "run_id, step, x, y, theta, v, omega, blocked, sensors, extra, truth, crc";
 
 }  // namespace
+
+StepRow stepRowOf(const StepChunk& chunk, std::size_t i, std::int64_t runId, bool hasTruth) {
+  const RunData& rows = chunk.rows;
+  StepRow row;
+  row.runId = runId;
+  row.hasTruth = hasTruth;
+  row.step = static_cast<std::int64_t>(chunk.firstStep + i);
+  row.x = rows.x[i];
+  row.y = rows.y[i];
+  row.theta = rows.theta[i];
+  row.v = rows.v[i];
+  row.omega = rows.omega[i];
+  row.blocked = static_cast<std::int64_t>(rows.blocked[i]);
+  row.sensors = chunk.sensors.data(i);
+  row.sensorBytes = chunk.sensors.bytes(i);
+  if (!chunk.extraBlobs.empty()) {
+    row.extra = chunk.extraBlobs[i].data();
+    row.extraBytes = chunk.extraBlobs[i].size();
+  }
+  if (hasTruth) row.truth = chunk.packedTruth[i];
+  return row;
+}
+
+void checksumSteps(StepChunk& chunk, std::int64_t runId, bool hasTruth) {
+  const std::size_t n = chunk.rows.stepCount();
+  chunk.checksums.resize(n);
+  for (std::size_t i = 0; i < n; ++i)
+    chunk.checksums[i] = stepChecksum(stepRowOf(chunk, i, runId, hasTruth));
+  chunk.checksumsRunId = runId;
+}
 
 void writeStepChunk(RunDatabase::Impl& impl, std::int64_t runId, const StepChunk& chunk,
                     bool hasTruth, std::int64_t failAfterSteps) {
@@ -218,6 +235,7 @@ ImportOutcome writeRun(RunDatabase::Impl& impl, FileHead& head,
         .bindBlob(11, head.extraColumnsBlob.data(), head.extraColumnsBlob.size())
         .bind(12, now);
     const std::int64_t runId = insertRun.runReturningId();
+    if (head.runStarted) head.runStarted(runId);
 
     SummaryBuilder summary;
     std::int64_t steps = 0;
