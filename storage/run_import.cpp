@@ -133,7 +133,8 @@ ImportOutcome RunStore::importRun(RunData&& run, const std::string& name,
     std::string error;
     try {
       RunningChecksum sum;
-      formatRunCsvPieces(run, 1, [&](std::string_view piece) {
+      // Formatted on two threads: on two cores the writer is at times faster than one.
+      formatRunCsvPieces(run, 2, [&](std::string_view piece) {
         {
           std::lock_guard lock(mutex);
           if (stop) throw Stopped{};
