@@ -190,49 +190,59 @@ class ChunkPrefetch {
   // chunk itself.
   std::optional<std::string_view> take(std::uint64_t pos) {
     if (!worker_ || next_ >= chunks_.size() || chunks_[next_] != pos) return std::nullopt;
-    const std::size_t batch = next_ / kBatchChunks;
-    {
+    if (held_ == kNone || taken_ == ring_[held_ % kSlots].count) {
+      // The next batch; the one held so far is done with.
+      const std::size_t batch = held_ == kNone ? 0 : held_ + 1;
       std::unique_lock lock(mutex_);
-      if (batch > released_) {
-        released_ = batch;  // the ones before are done with
-        changed_.notify_all();
-      }
+      released_ = batch;
+      changed_.notify_all();
       changed_.wait(lock, [&] { return produced_ > batch || failure_.failed(); });
       if (produced_ <= batch) return std::nullopt;
+      held_ = batch;
+      taken_ = 0;
     }
-    const Item& item = ring_[batch % kSlots].items[next_ - batch * kBatchChunks];
+    const Item& item = ring_[held_ % kSlots].items[taken_++];
     ++next_;
     if (!item.ok) return std::nullopt;
-    return item.inPlace ? item.plain : item.buffer.view();
+    return item.inPlace ? item.plain : item.buffer->view();
   }
 
  private:
+  // A batch ends after this many chunks or once its records reach this size, so a file of big
+  // chunks holds at most a few of them (and each slot at most one buffer above the size).
   static constexpr std::size_t kBatchChunks = 64;
+  static constexpr std::uint64_t kBatchBytes = std::uint64_t{1} << 20;
   static constexpr std::size_t kSlots = 4;
+  static constexpr std::size_t kNone = static_cast<std::size_t>(-1);
 
   struct Item {
     bool ok = false;
     bool inPlace = false;    // uncompressed: the records in the file
     std::string_view plain;  // when inPlace
-    Buffer buffer;
+    std::unique_ptr<Buffer> buffer = std::make_unique<Buffer>();
   };
   struct Batch {
-    std::unique_ptr<Item[]> items;  // kBatchChunks (a Buffer does not move)
+    std::unique_ptr<Item[]> items;  // kBatchChunks
+    std::size_t count = 0;          // items filled
   };
 
   void produce() {
-    const std::size_t batches = (chunks_.size() + kBatchChunks - 1) / kBatchChunks;
-    for (std::size_t b = 0; b < batches; ++b) {
+    std::size_t next = 0;
+    for (std::size_t b = 0; next < chunks_.size(); ++b) {
       {
         std::unique_lock lock(mutex_);
         changed_.wait(lock, [&] { return stop_ || b < released_ + kSlots; });
         if (stop_) return;
       }
       Batch& batch = ring_[b % kSlots];
-      const std::size_t first = b * kBatchChunks;
-      const std::size_t end = std::min(chunks_.size(), first + kBatchChunks);
-      for (std::size_t c = first; c < end; ++c)
-        prepare(chunks_[c], batch.items[c - first]);
+      for (std::size_t k = 0; k < kBatchChunks; ++k) {
+        if (batch.items[k].buffer->capacity() > kBatchBytes)
+          batch.items[k].buffer = std::make_unique<Buffer>();
+      }
+      batch.count = 0;
+      std::uint64_t bytes = 0;
+      while (next < chunks_.size() && batch.count < kBatchChunks && bytes < kBatchBytes)
+        bytes += prepare(chunks_[next++], batch.items[batch.count++]);
       {
         std::lock_guard lock(mutex_);
         produced_ = b + 1;
@@ -242,43 +252,48 @@ class ChunkPrefetch {
   }
 
   // The chunk's records as Scanner::chunkRecord reads them; `ok` only when all is in order.
-  void prepare(std::uint64_t pos, Item& item) {
+  // Returns the bytes it holds for them.
+  std::uint64_t prepare(std::uint64_t pos, Item& item) {
     item.ok = false;
     item.inPlace = false;
     const std::uint64_t len = getU64(bytes_.data() + pos + 1);
     const std::string_view content = bytes_.substr(pos + 9, static_cast<std::size_t>(len));
     constexpr std::size_t kFixed = 8 + 8 + 8 + 4;
-    if (content.size() < kFixed + 4) return;
+    if (content.size() < kFixed + 4) return 0;
     const std::uint64_t uncompressedSize = getU64(content.data() + 16);
     const std::uint32_t crc = getU32(content.data() + 24);
     const std::uint32_t nameLen = getU32(content.data() + kFixed);
-    if (nameLen > content.size() - kFixed - 4 || content.size() - kFixed - 4 - nameLen < 8) return;
+    if (nameLen > content.size() - kFixed - 4 || content.size() - kFixed - 4 - nameLen < 8)
+      return 0;
     const auto kind = parseCompression(content.substr(kFixed + 4, nameLen));
-    if (!kind) return;
+    if (!kind) return 0;
     const std::size_t recordsAt = kFixed + 4 + nameLen + 8;
     const std::uint64_t recordsLen = getU64(content.data() + recordsAt - 8);
-    if (recordsLen > content.size() - recordsAt) return;
+    if (recordsLen > content.size() - recordsAt) return 0;
     const std::string_view records =
         content.substr(recordsAt, static_cast<std::size_t>(recordsLen));
     std::string_view plain = records;
     if (*kind != Compression::None) {
-      if (decompressor_.decompress(*kind, records, uncompressedSize, item.buffer)) return;
-      plain = item.buffer.view();
+      if (decompressor_.decompress(*kind, records, uncompressedSize, *item.buffer)) return 0;
+      plain = item.buffer->view();
     } else if (records.size() != uncompressedSize) {
-      return;
+      return 0;
     } else {
       item.inPlace = true;
       item.plain = records;
     }
-    if (crc != 0 && crc32(plain) != crc) return;
+    if (crc != 0 && crc32(plain) != crc) return 0;
     item.ok = true;
+    return item.inPlace ? 0 : plain.size();
   }
 
   std::string_view bytes_;
   std::vector<std::uint64_t> chunks_;  // offsets of the chunk records, in file order
   std::vector<Batch> ring_;            // batch b in slot b % kSlots
   Decompressor decompressor_;          // the worker's
-  std::size_t next_ = 0;               // the caller's: the next chunk it takes
+  std::size_t next_ = 0;               // the caller's: the next chunk it takes,
+  std::size_t held_ = kNone;           // the batch it takes from,
+  std::size_t taken_ = 0;              // and how many of that batch's chunks it took
   std::mutex mutex_;
   std::condition_variable changed_;
   std::size_t produced_ = 0;  // batches ready

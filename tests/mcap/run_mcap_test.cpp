@@ -105,11 +105,12 @@ struct Bag {
   std::vector<std::uint64_t> times;
 };
 
-Bag makeBag(std::size_t steps, Compression compression, bool summary = true) {
+Bag makeBag(std::size_t steps, Compression compression, bool summary = true,
+            std::size_t chunkBytes = 4096) {
   WriterOptions o;
   o.profile = "ros2";
   o.compression = compression;
-  o.chunkBytes = 4096;
+  o.chunkBytes = chunkBytes;
   o.summary = summary;
   Writer w(o);
   const auto tactile = w.addChannel(
@@ -242,6 +243,16 @@ TEST(Ros2Bag, ChunksReadAheadOnAnotherThreadGiveTheSameRun) {
       EXPECT_EQ(one->warnings, two->warnings);
     }
   }
+  // Chunks of 300 KiB: batches of the read-ahead end by their size (a few chunks each).
+  const Bag big = makeBag(8000, Compression::Zstd, true, 300 * 1024);
+  auto info = scan(big.bytes, "b.mcap", {}, 1);
+  ASSERT_TRUE(info.ok()) << info.errorText();
+  ASSERT_GT(info->chunkCount, 10U);
+  EXPECT_EQ(messagesOf(big.bytes, 1), messagesOf(big.bytes, 2));
+  auto one = readRos2Bag(big.bytes, "b.mcap", mapping.value(), 1);
+  auto two = readRos2Bag(big.bytes, "b.mcap", mapping.value(), 2);
+  ASSERT_TRUE(one.ok() && two.ok());
+  EXPECT_EQ(formatRunCsv(one->run), formatRunCsv(two->run));
 }
 
 TEST(Ros2Bag, DamagedChunkAmongManyGivesTheSameErrorOnAnyThreadCount) {
