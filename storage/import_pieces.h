@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -48,6 +49,15 @@ struct FileHead {
   std::string extraColumnsBlob;
 };
 
+// A whole run's summary blocks, encoded, with each block row's checksum for run `runId`.
+struct SummaryRows {
+  std::int64_t runId = 0;
+  std::vector<EncodedBlobs> levels;
+  std::vector<std::vector<std::int32_t>> checksums;  // [level][block]
+};
+// The rows of `summary` for run `runId`.
+SummaryRows summaryRows(SummaryBlocks summary, std::int64_t runId);
+
 // Consecutive steps of a run, parsed and encoded off the writer thread.
 struct StepChunk {
   std::string error;  // non-empty: the file is rejected (the reader's message)
@@ -61,6 +71,9 @@ struct StepChunk {
   // the writer takes them itself when they are missing or for another run id.
   std::vector<std::int32_t> checksums;
   std::int64_t checksumsRunId = 0;
+  // Optional, on the last chunk: the whole run's summary rows, made off the writer thread (the
+  // chunks' `summary` are then empty).
+  std::optional<SummaryRows> wholeSummary;
 };
 
 // Rejects runs that cannot be stored faithfully (hand-built ones; the reader checks files).

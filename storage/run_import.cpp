@@ -97,6 +97,7 @@ ImportOutcome RunStore::importRun(RunData&& run, const std::string& name,
   std::optional<std::int64_t> runId;  // once the writer has written the run's row
   struct Stopped {};
 
+  SummaryBuilder wholeSummary;  // the encoding thread's
   auto encodeAll = [&] {
     for (std::size_t b = 0; b < blocks; ++b) {
       {
@@ -117,6 +118,11 @@ ImportOutcome RunStore::importRun(RunData&& run, const std::string& name,
           id = *runId;
         }
         checksumSteps(chunk, id, head.hasTruth);
+        // The run's summary rows too, with the last block (the writer then has only to write
+        // them).
+        if (chunk.rows.stepCount() > 0) wholeSummary.merge(chunk.summary);
+        chunk.summary = PartialSummary{};
+        if (b + 1 == blocks) chunk.wholeSummary = summaryRows(std::move(wholeSummary).finish(), id);
       } catch (const std::exception& e) {
         chunk = StepChunk{};
         chunk.error = head.file + ": " + e.what();

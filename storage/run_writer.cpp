@@ -70,6 +70,23 @@ StepRow stepRowOf(const StepChunk& chunk, std::size_t i, std::int64_t runId, boo
   return row;
 }
 
+SummaryRows summaryRows(SummaryBlocks summary, std::int64_t runId) {
+  SummaryRows rows;
+  rows.runId = runId;
+  rows.levels = encodeSummaryBlocks(summary);
+  rows.checksums.resize(rows.levels.size());
+  for (std::size_t level = 0; level < rows.levels.size(); ++level) {
+    const EncodedBlobs& blobs = rows.levels[level];
+    rows.checksums[level].resize(blobs.size());
+    for (std::size_t b = 0; b < blobs.size(); ++b) {
+      rows.checksums[level][b] =
+          blockChecksum(runId, static_cast<std::int64_t>(level), static_cast<std::int64_t>(b),
+                        blobs.data(b), blobs.bytes(b));
+    }
+  }
+  return rows;
+}
+
 void checksumSteps(StepChunk& chunk, std::int64_t runId, bool hasTruth) {
   const std::size_t n = chunk.rows.stepCount();
   chunk.checksums.resize(n);
@@ -238,6 +255,7 @@ ImportOutcome writeRun(RunDatabase::Impl& impl, FileHead& head,
     if (head.runStarted) head.runStarted(runId);
 
     SummaryBuilder summary;
+    std::optional<SummaryRows> given;  // made beside the writer
     std::int64_t steps = 0;
     for (std::size_t c = 0; c < head.chunkCount; ++c) {
       StepChunk chunk = takeChunk(c);
@@ -251,7 +269,11 @@ ImportOutcome writeRun(RunDatabase::Impl& impl, FileHead& head,
       }
       writeStepChunk(impl, runId, chunk, head.hasTruth, failAfterSteps);
       steps += static_cast<std::int64_t>(n);
-      if (n > 0) summary.merge(chunk.summary);
+      if (chunk.wholeSummary) {
+        given = std::move(chunk.wholeSummary);
+      } else if (n > 0 && chunk.summary.steps > 0) {
+        summary.merge(chunk.summary);
+      }
     }
     if (steps == 0 && !head.noStepsError.empty()) {
       outcome.message = std::move(head.noStepsError);
@@ -265,7 +287,8 @@ ImportOutcome writeRun(RunDatabase::Impl& impl, FileHead& head,
           .run();
     }
 
-    const std::vector<EncodedBlobs> levels = encodeSummaryBlocks(std::move(summary).finish());
+    if (!given || given->runId != runId) given = summaryRows(std::move(summary).finish(), runId);
+    const std::vector<EncodedBlobs>& levels = given->levels;
     const auto writeBlocks = [&](auto& block, auto emit) {
       block.bind(1, runId);
       for (std::size_t level = 0; level < levels.size(); ++level) {
@@ -275,9 +298,7 @@ ImportOutcome writeRun(RunDatabase::Impl& impl, FileHead& head,
               .bind(2, static_cast<std::int64_t>(level))
               .bind(3, static_cast<std::int64_t>(b))
               .bindBlob(4, blobs.data(b), blobs.bytes(b))
-              .bind(5, static_cast<std::int64_t>(blockChecksum(
-                           runId, static_cast<std::int64_t>(level), static_cast<std::int64_t>(b),
-                           blobs.data(b), blobs.bytes(b))));
+              .bind(5, static_cast<std::int64_t>(given->checksums[level][b]));
           emit();
         }
       }
