@@ -153,7 +153,9 @@ class Fields {
 // then only walks their records. The chunk records are found by their record headers alone (a
 // cheap walk over the file, no summary needed); a chunk whose fields, decompression or CRC are at
 // fault is left to the scan, which reads it again and reports the fault exactly as it would
-// without this. Chunks are handed over in batches (fewer waits), in file order.
+// without this. Chunks are handed over in batches (fewer waits), in file order. An exception on the
+// worker (out of memory) stops it, and the scan reads the remaining chunks itself, failing as one
+// thread would.
 class ChunkPrefetch {
  public:
   // Nothing to do (no thread started) when the records before `footerStart` hold fewer than two
@@ -172,7 +174,15 @@ class ChunkPrefetch {
     for (Batch& batch : ring_)
       batch.items = std::make_unique<Item[]>(kBatchChunks);
     worker_ = std::make_unique<BackgroundWorkers>(
-        1, [this] { produce(); }, failure_);
+        1,
+        [this] {
+          if (!failure_.capture([this] { produce(); })) {
+            // failed() holds now: a scan waiting for a batch is woken to see it.
+            { std::lock_guard lock(mutex_); }
+            changed_.notify_all();
+          }
+        },
+        failure_);
   }
   ChunkPrefetch(const ChunkPrefetch&) = delete;
   ChunkPrefetch& operator=(const ChunkPrefetch&) = delete;
