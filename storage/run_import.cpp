@@ -79,10 +79,11 @@ ImportOutcome RunStore::importRun(RunData&& run, const std::string& name,
   }
   if (!head.error.empty()) return writeRun(*impl_, head, {}, -1);
 
-  // Three threads at once: this one writes the rows (SQLite's work, the longest part), one
+  // Side by side: this thread writes the rows (SQLite's work, the longest part), one helper
   // encodes the steps a block at a time just ahead of it (with the rows' checksums, once the run's
-  // row is written and its id known), and one takes the checksum of the run's file form, which the
-  // writer needs only once the steps are in. The run is read by both helpers and changed by none.
+  // row is written and its id known), and one takes the checksum of the run's file form (formatted
+  // on itself and one more thread), which the writer needs only once the steps are in. The run is
+  // read by the helpers and changed by none.
   const std::size_t steps = run.stepCount();
   const std::size_t blocks =
       std::max<std::size_t>(1, (steps + kRunBlockSteps - 1) / kRunBlockSteps);
@@ -139,7 +140,7 @@ ImportOutcome RunStore::importRun(RunData&& run, const std::string& name,
     std::string error;
     try {
       RunningChecksum sum;
-      // Formatted on two threads: on two cores the writer is at times faster than one.
+      // On two threads: on two cores the writer at times gets ahead of one.
       formatRunCsvPieces(run, 2, [&](std::string_view piece) {
         {
           std::lock_guard lock(mutex);
