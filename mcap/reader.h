@@ -55,9 +55,12 @@ struct ScanResult {
 // channel without one). An error it returns stops the scan and is returned as is.
 using MessageFn = std::function<Status(const MessageView&, const Channel&, const Schema*)>;
 
-// Reads the MCAP file held in `bytes`; `fileName` names it in errors.
+// Reads the MCAP file held in `bytes`; `fileName` names it in errors. With `threads` other than 1
+// (0: one per core) and two cores or more, chunks are decompressed and their CRCs checked on
+// another thread ahead of the scan; the result, the calls to `onMessage` and any error are the
+// same as with one thread.
 Result<ScanResult> scan(std::string_view bytes, const std::string& fileName,
-                        const MessageFn& onMessage = {});
+                        const MessageFn& onMessage = {}, unsigned threads = 0);
 // Reads the file at `path` (memory-mapped).
 Result<ScanResult> scanFile(const std::filesystem::path& path, const MessageFn& onMessage = {});
 

@@ -221,7 +221,7 @@ void sortByTime(std::vector<Timed>& v) {
 }  // namespace
 
 Result<McapRun> readRos2Bag(std::string_view bytes, const std::string& fileName,
-                            const BagMapping& mapping) {
+                            const BagMapping& mapping, unsigned threads) {
   McapRun out;
   RunData& run = out.run;
   std::vector<Role> roles(65536, Role::Unknown);
@@ -386,7 +386,7 @@ Result<McapRun> readRos2Bag(std::string_view bytes, const std::string& fileName,
     return {};
   };
 
-  auto scanned = scan(bytes, fileName, onMessage);
+  auto scanned = scan(bytes, fileName, onMessage, threads);
   if (!scanned) return scanned.error();
   const std::size_t steps = stepTimes.size();
   if (steps == 0) {

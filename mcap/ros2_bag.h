@@ -48,8 +48,9 @@ struct BagMapping {
 Result<BagMapping> parseMapping(std::string_view text, const std::string& fileName);
 
 // Reads a ROS 2 bag into a run (metadata: format, dt, and the source topics). Errors name the
-// file and the byte offset of the record at fault.
+// file and the byte offset of the record at fault. `threads`: as for scan() (1: all on the
+// calling thread); the run and any error are the same whatever the number.
 Result<McapRun> readRos2Bag(std::string_view bytes, const std::string& fileName,
-                            const BagMapping& mapping);
+                            const BagMapping& mapping, unsigned threads = 0);
 
 }  // namespace tactile::mcap

@@ -324,6 +324,7 @@ class Cursor {
   Cursor(const unsigned char* data, std::size_t size, bool swap, std::size_t maxAlign)
       : data_(data), size_(size), swap_(swap), maxAlign_(maxAlign) {}
 
+  bool swaps() const { return swap_; }
   void align(std::size_t n) {
     const std::size_t a = std::min(n, maxAlign_);
     const std::size_t next = (pos_ + a - 1) / a * a;
@@ -487,8 +488,20 @@ struct Walker {
     c.needElements(n, size);
     out.resize(static_cast<std::size_t>(n));
     const unsigned char* at = c.here();
-    for (std::size_t i = 0; i < out.size(); ++i)
-      out[i] = c.value(f.type, at + i * size);
+    if (!c.swaps() && f.type == Primitive::Float32) {
+      // The common case (a ROS 2 Float32MultiArray on a little-endian host) without a type
+      // switch per value.
+      for (std::size_t i = 0; i < out.size(); ++i) {
+        float v;
+        std::memcpy(&v, at + i * 4, 4);
+        out[i] = v;
+      }
+    } else if (!c.swaps() && f.type == Primitive::Float64) {
+      std::memcpy(out.data(), at, out.size() * 8);
+    } else {
+      for (std::size_t i = 0; i < out.size(); ++i)
+        out[i] = c.value(f.type, at + i * size);
+    }
     c.skip(static_cast<std::size_t>(n) * size);
   }
 

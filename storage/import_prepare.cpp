@@ -11,6 +11,7 @@
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <thread>
+#include <type_traits>
 #include <unordered_set>
 
 #include <fcntl.h>
@@ -253,12 +254,11 @@ void describeHead(FileHead& head, const std::filesystem::path& baseDir,
   resolveScene(head, baseDir, resolver);
 }
 
-StepChunk encodeChunk(RunData rows, std::size_t firstStep, std::size_t extraColumns) {
-  StepChunk chunk;
-  chunk.firstStep = firstStep;
+namespace {
+
+// Truth and x_ columns of a chunk whose sensors are encoded, then the rows moved in.
+void encodeRest(StepChunk& chunk, RunData& rows, std::size_t extraColumns) {
   const std::size_t n = rows.stepCount();
-  chunk.sensors = encodeStepSensors(rows.sensors.data(), n);
-  chunk.summary = summarizeSteps(rows.sensors.data(), firstStep, n);
   if (rows.hasTruth()) {
     chunk.packedTruth.resize(n);
     for (std::size_t i = 0; i < n; ++i)
@@ -270,6 +270,42 @@ StepChunk encodeChunk(RunData rows, std::size_t firstStep, std::size_t extraColu
       chunk.extraBlobs[i] = encodeExtra(rows.extraValues.data() + i * extraColumns, extraColumns);
   }
   chunk.rows = std::move(rows);
+}
+
+}  // namespace
+
+StepChunk encodeChunk(RunData rows, std::size_t firstStep, std::size_t extraColumns) {
+  StepChunk chunk;
+  chunk.firstStep = firstStep;
+  const std::size_t n = rows.stepCount();
+  chunk.sensors = encodeStepSensors(rows.sensors.data(), n);
+  chunk.summary = summarizeSteps(rows.sensors.data(), firstStep, n);
+  encodeRest(chunk, rows, extraColumns);
+  return chunk;
+}
+
+StepChunk encodeSteps(const RunData& run, std::size_t first, std::size_t count) {
+  StepChunk chunk;
+  chunk.firstStep = first;
+  const double* sensors = run.sensors.data() + first * kValuesPerStep;
+  chunk.sensors = encodeStepSensors(sensors, count);
+  chunk.summary = summarizeSteps(sensors, first, count);
+  RunData rows;
+  const auto slice = [&](const auto& column, std::size_t width) {
+    using Column = std::decay_t<decltype(column)>;
+    const auto from = column.begin() + static_cast<std::ptrdiff_t>(first * width);
+    return Column(from, from + static_cast<std::ptrdiff_t>(count * width));
+  };
+  rows.x = slice(run.x, 1);
+  rows.y = slice(run.y, 1);
+  rows.theta = slice(run.theta, 1);
+  rows.v = slice(run.v, 1);
+  rows.omega = slice(run.omega, 1);
+  rows.blocked = slice(run.blocked, 1);
+  if (run.hasTruth()) rows.truth = slice(run.truth, kGroupCount);
+  const std::size_t extras = run.extraColumns.size();
+  if (extras > 0) rows.extraValues = slice(run.extraValues, extras);
+  encodeRest(chunk, rows, extras);
   return chunk;
 }
 

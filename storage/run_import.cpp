@@ -21,6 +21,15 @@ namespace tactile::storage {
 
 using namespace importing;
 
+namespace {
+
+// importRun encodes the steps in blocks of this many, at most this many blocks ahead of the
+// writer: a block's blobs (a few MB) reuse the memory of the ones before instead of fresh pages.
+constexpr std::size_t kRunBlockSteps = 16384;
+constexpr std::size_t kRunBlocksAhead = 3;
+
+}  // namespace
+
 ImportOutcome RunStore::importText(std::string_view text, const std::string& fileName,
                                    const ImportOptions& options) {
   const ResetStatements reset{*impl_};
@@ -56,26 +65,169 @@ ImportOutcome RunStore::importRun(RunData&& run, const std::string& name,
   FileHead head;
   head.file = sourceFile.empty() ? name : sourceFile;
   head.name = name;
-  std::optional<StepChunk> chunk;
   if (std::string problem = validateRun(run); !problem.empty()) {
     head.error = head.file + ": " + problem;
   } else {
     try {
-      head.checksum = runFileChecksumHex(run);
       head.header.metadata = run.metadata;
       head.header.extraColumns = run.extraColumns;
       head.hasTruth = run.hasTruth();
-      head.chunkCount = 1;
       describeHead(head, std::filesystem::path(sourceFile).parent_path(), sceneResolver);
-      const std::size_t extras = run.extraColumns.size();
-      run.metadata.clear();
-      chunk = encodeChunk(std::move(run), 0, extras);
     } catch (const std::exception& e) {
       head.error = head.file + ": " + e.what();
     }
   }
-  ImportOutcome outcome = writeRun(
-      *impl_, head, [&](std::size_t) { return std::move(*chunk); }, -1);
+  if (!head.error.empty()) return writeRun(*impl_, head, {}, -1);
+
+  // Side by side: this thread writes the rows (SQLite's work, the longest part), one helper
+  // encodes the steps a block at a time just ahead of it (with the rows' checksums, once the run's
+  // row is written and its id known), and one takes the checksum of the run's file form (formatted
+  // on itself and one more thread), which the writer needs only once the steps are in. The run is
+  // read by the helpers and changed by none.
+  const std::size_t steps = run.stepCount();
+  const std::size_t blocks =
+      std::max<std::size_t>(1, (steps + kRunBlockSteps - 1) / kRunBlockSteps);
+  head.chunkCount = blocks;
+  std::mutex mutex;
+  std::condition_variable changed;
+  std::deque<StepChunk> encoded;  // blocks ready, in order, from block `taken`
+  std::size_t taken = 0;
+  bool stop = false;
+  std::optional<std::string> checksum;
+  std::string checksumError;
+  std::optional<std::int64_t> runId;  // once the writer has written the run's row
+  struct Stopped {};
+
+  SummaryBuilder wholeSummary;  // the encoding thread's
+  auto encodeAll = [&] {
+    for (std::size_t b = 0; b < blocks; ++b) {
+      {
+        std::unique_lock lock(mutex);
+        changed.wait(lock, [&] { return stop || b < taken + kRunBlocksAhead; });
+        if (stop) return;
+      }
+      const std::size_t first = b * kRunBlockSteps;
+      StepChunk chunk;
+      try {
+        chunk = encodeSteps(run, first, std::min(steps, first + kRunBlockSteps) - first);
+        // The rows' checksums too, once the writer has the run's id (they include it).
+        std::int64_t id = 0;
+        {
+          std::unique_lock lock(mutex);
+          changed.wait(lock, [&] { return stop || runId.has_value(); });
+          if (stop) return;
+          id = *runId;
+        }
+        checksumSteps(chunk, id, head.hasTruth);
+        // The run's summary rows too, with the last block (the writer then has only to write
+        // them).
+        if (chunk.rows.stepCount() > 0) wholeSummary.merge(chunk.summary);
+        chunk.summary = PartialSummary{};
+        if (b + 1 == blocks) chunk.wholeSummary = summaryRows(std::move(wholeSummary).finish(), id);
+      } catch (const std::exception& e) {
+        chunk = StepChunk{};
+        chunk.error = head.file + ": " + e.what();
+      }
+      {
+        std::lock_guard lock(mutex);
+        encoded.push_back(std::move(chunk));
+      }
+      changed.notify_all();
+    }
+  };
+  auto hashAll = [&] {
+    std::string hex;
+    std::string error;
+    try {
+      RunningChecksum sum;
+      // On two threads: on two cores the writer at times gets ahead of one.
+      formatRunCsvPieces(run, 2, [&](std::string_view piece) {
+        {
+          std::lock_guard lock(mutex);
+          if (stop) throw Stopped{};
+        }
+        sum.update(piece);
+      });
+      hex = sum.hex();
+    } catch (const Stopped&) {
+      return;
+    } catch (const std::exception& e) {
+      error = head.file + ": " + e.what();
+    }
+    {
+      std::lock_guard lock(mutex);
+      checksum = std::move(hex);
+      checksumError = std::move(error);
+    }
+    changed.notify_all();
+  };
+  std::atomic<int> nextJob{0};
+  FirstException failure;
+  auto stopHelpers = [&] {
+    {
+      std::lock_guard lock(mutex);
+      stop = true;
+    }
+    changed.notify_all();
+  };
+  auto work = [&] {
+    const int job = nextJob.fetch_add(1);
+    if (!failure.capture([&] { job == 0 ? hashAll() : encodeAll(); })) stopHelpers();
+  };
+  ImportOutcome outcome;
+  {
+    BackgroundWorkers helpers(2, work, failure);
+    struct Joiner {
+      BackgroundWorkers& helpers;
+      const std::function<void()> stop;
+      ~Joiner() {
+        stop();
+        helpers.join();
+      }
+    } joiner{helpers, stopHelpers};
+    head.runStarted = [&](std::int64_t id) {
+      {
+        std::lock_guard lock(mutex);
+        runId = id;
+      }
+      changed.notify_all();
+    };
+    head.lateChecksum = [&](std::string& out, std::string& error) {
+      std::unique_lock lock(mutex);
+      changed.wait(lock, [&] { return checksum.has_value() || failure.failed(); });
+      if (!checksum) {
+        error = head.file + ": the checksum could not be taken";
+        return false;
+      }
+      out = *checksum;
+      error = checksumError;
+      return error.empty();
+    };
+    outcome = writeRun(
+        *impl_, head,
+        [&](std::size_t) {
+          std::unique_lock lock(mutex);
+          changed.wait(lock, [&] { return !encoded.empty() || failure.failed(); });
+          StepChunk chunk;
+          if (encoded.empty()) {
+            chunk.error = head.file + ": the steps could not be encoded";
+            try {
+              failure.rethrow();
+            } catch (const std::exception& e) {
+              chunk.error = head.file + ": " + e.what();
+            } catch (...) {
+            }
+          } else {
+            chunk = std::move(encoded.front());
+            encoded.pop_front();
+          }
+          ++taken;
+          lock.unlock();
+          changed.notify_all();
+          return chunk;
+        },
+        -1);
+  }
   if (outcome.status == ImportStatus::Imported) impl_->refreshStepStatistics(outcome.steps);
   return outcome;
 }

@@ -13,33 +13,19 @@ namespace {
 template <class Target, class Emit>
 void writeRows(Target& target, Emit emit, std::int64_t runId, const StepChunk& chunk, bool hasTruth,
                std::int64_t failAfterSteps) {
-  const RunData& rows = chunk.rows;
   const bool hasExtra = !chunk.extraBlobs.empty();
+  // Checksums taken beside the writer, for this run's id (else taken here).
+  const bool checksummed =
+      chunk.checksumsRunId == runId && chunk.checksums.size() == chunk.rows.stepCount();
   target.bind(1, runId);
   if (!hasExtra) target.bindNull(10);
   if (!hasTruth) target.bindNull(11);
-  StepRow row;
-  row.runId = runId;
-  row.hasTruth = hasTruth;
-  const std::size_t n = rows.stepCount();
+  const std::size_t n = chunk.rows.stepCount();
   for (std::size_t i = 0; i < n; ++i) {
-    row.step = static_cast<std::int64_t>(chunk.firstStep + i);
+    const StepRow row = stepRowOf(chunk, i, runId, hasTruth);
     if (row.step == failAfterSteps) {
       throw db::DbError("injected failure after " + std::to_string(row.step) + " steps");
     }
-    row.x = rows.x[i];
-    row.y = rows.y[i];
-    row.theta = rows.theta[i];
-    row.v = rows.v[i];
-    row.omega = rows.omega[i];
-    row.blocked = static_cast<std::int64_t>(rows.blocked[i]);
-    row.sensors = chunk.sensors.data(i);
-    row.sensorBytes = chunk.sensors.bytes(i);
-    if (hasExtra) {
-      row.extra = chunk.extraBlobs[i].data();
-      row.extraBytes = chunk.extraBlobs[i].size();
-    }
-    if (hasTruth) row.truth = chunk.packedTruth[i];
     target.bind(1, runId)
         .bind(2, row.step)
         .bind(3, row.x)
@@ -51,7 +37,8 @@ void writeRows(Target& target, Emit emit, std::int64_t runId, const StepChunk& c
         .bindBlob(9, row.sensors, row.sensorBytes);
     if (hasExtra) target.bindBlob(10, row.extra, row.extraBytes);
     if (hasTruth) target.bind(11, row.truth);
-    target.bind(12, static_cast<std::int64_t>(stepChecksum(row)));
+    target.bind(12,
+                static_cast<std::int64_t>(checksummed ? chunk.checksums[i] : stepChecksum(row)));
     emit();
   }
 }
@@ -60,6 +47,53 @@ constexpr const char* kStepColumns =
     "run_id, step, x, y, theta, v, omega, blocked, sensors, extra, truth, crc";
 
 }  // namespace
+
+StepRow stepRowOf(const StepChunk& chunk, std::size_t i, std::int64_t runId, bool hasTruth) {
+  const RunData& rows = chunk.rows;
+  StepRow row;
+  row.runId = runId;
+  row.hasTruth = hasTruth;
+  row.step = static_cast<std::int64_t>(chunk.firstStep + i);
+  row.x = rows.x[i];
+  row.y = rows.y[i];
+  row.theta = rows.theta[i];
+  row.v = rows.v[i];
+  row.omega = rows.omega[i];
+  row.blocked = static_cast<std::int64_t>(rows.blocked[i]);
+  row.sensors = chunk.sensors.data(i);
+  row.sensorBytes = chunk.sensors.bytes(i);
+  if (!chunk.extraBlobs.empty()) {
+    row.extra = chunk.extraBlobs[i].data();
+    row.extraBytes = chunk.extraBlobs[i].size();
+  }
+  if (hasTruth) row.truth = chunk.packedTruth[i];
+  return row;
+}
+
+SummaryRows summaryRows(SummaryBlocks summary, std::int64_t runId) {
+  SummaryRows rows;
+  rows.runId = runId;
+  rows.levels = encodeSummaryBlocks(summary);
+  rows.checksums.resize(rows.levels.size());
+  for (std::size_t level = 0; level < rows.levels.size(); ++level) {
+    const EncodedBlobs& blobs = rows.levels[level];
+    rows.checksums[level].resize(blobs.size());
+    for (std::size_t b = 0; b < blobs.size(); ++b) {
+      rows.checksums[level][b] =
+          blockChecksum(runId, static_cast<std::int64_t>(level), static_cast<std::int64_t>(b),
+                        blobs.data(b), blobs.bytes(b));
+    }
+  }
+  return rows;
+}
+
+void checksumSteps(StepChunk& chunk, std::int64_t runId, bool hasTruth) {
+  const std::size_t n = chunk.rows.stepCount();
+  chunk.checksums.resize(n);
+  for (std::size_t i = 0; i < n; ++i)
+    chunk.checksums[i] = stepChecksum(stepRowOf(chunk, i, runId, hasTruth));
+  chunk.checksumsRunId = runId;
+}
 
 void writeStepChunk(RunDatabase::Impl& impl, std::int64_t runId, const StepChunk& chunk,
                     bool hasTruth, std::int64_t failAfterSteps) {
@@ -120,32 +154,51 @@ ImportOutcome writeRun(RunDatabase::Impl& impl, FileHead& head,
     // looked (docs/storage.md#concurrency), and then it is skipped or refused, never a raw
     // UNIQUE-constraint error.
     db::Transaction transaction(impl.connection);
-    {
+    // True (with the outcome filled in) when a run of the same content is stored.
+    const auto storedAlready = [&](const std::string& checksum) {
       db::Statement& dup =
           impl.statement("SELECT id, name, step_count FROM runs WHERE checksum = ?");
-      dup.bind(1, head.checksum);
+      dup.bind(1, checksum);
       if (dup.step()) {
         outcome.status = ImportStatus::Skipped;
         outcome.runId = dup.columnInt(0);
         outcome.runName = dup.columnText(1);
         outcome.steps = dup.columnInt(2);
         outcome.message = head.file + ": already imported as run '" + outcome.runName +
-                          "' (same checksum " + head.checksum + "); skipped";
+                          "' (same checksum " + checksum + "); skipped";
         dup.reset();
-        return outcome;
+        return true;
       }
       dup.reset();
-    }
+      return false;
+    };
+    // A checksum computed beside this writer: waited for here. False: it failed (outcome set).
+    bool checksumKnown = !head.lateChecksum;
+    const auto awaitChecksum = [&] {
+      if (checksumKnown) return true;
+      std::string error;
+      if (!head.lateChecksum(head.checksum, error)) {
+        outcome.message = std::move(error);
+        return false;
+      }
+      checksumKnown = true;
+      return true;
+    };
+    if (checksumKnown && storedAlready(head.checksum)) return outcome;
     {
       db::Statement& named = impl.statement("SELECT source_file FROM runs WHERE name = ?");
       named.bind(1, head.name);
       if (named.step()) {
+        const std::string sourceFile = named.columnText(0);
+        named.reset();
+        // The same content under this name is a skip, not a clash (as when checked first).
+        if (!awaitChecksum()) return outcome;
+        if (storedAlready(head.checksum)) return outcome;
         outcome.message = head.file + ": a run named '" + head.name +
-                          "' already exists (imported from " + named.columnText(0) +
+                          "' already exists (imported from " + sourceFile +
                           ", other content); not imported: give this batch a name prefix "
                           "(tactile import --prefix P names runs P_<stem>) or the file "
                           "another name (--name)";
-        named.reset();
         return outcome;
       }
       named.reset();
@@ -199,8 +252,10 @@ ImportOutcome writeRun(RunDatabase::Impl& impl, FileHead& head,
         .bindBlob(11, head.extraColumnsBlob.data(), head.extraColumnsBlob.size())
         .bind(12, now);
     const std::int64_t runId = insertRun.runReturningId();
+    if (head.runStarted) head.runStarted(runId);
 
     SummaryBuilder summary;
+    std::optional<SummaryRows> given;  // made beside the writer
     std::int64_t steps = 0;
     for (std::size_t c = 0; c < head.chunkCount; ++c) {
       StepChunk chunk = takeChunk(c);
@@ -214,14 +269,26 @@ ImportOutcome writeRun(RunDatabase::Impl& impl, FileHead& head,
       }
       writeStepChunk(impl, runId, chunk, head.hasTruth, failAfterSteps);
       steps += static_cast<std::int64_t>(n);
-      if (n > 0) summary.merge(chunk.summary);
+      if (chunk.wholeSummary) {
+        given = std::move(chunk.wholeSummary);
+      } else if (n > 0 && chunk.summary.steps > 0) {
+        summary.merge(chunk.summary);
+      }
     }
     if (steps == 0 && !head.noStepsError.empty()) {
       outcome.message = std::move(head.noStepsError);
       return outcome;  // rolls back
     }
+    if (!checksumKnown) {
+      if (!awaitChecksum() || storedAlready(head.checksum)) return outcome;  // rolls back
+      impl.statement("UPDATE runs SET checksum = ? WHERE id = ?")
+          .bind(1, head.checksum)
+          .bind(2, runId)
+          .run();
+    }
 
-    const std::vector<EncodedBlobs> levels = encodeSummaryBlocks(std::move(summary).finish());
+    if (!given || given->runId != runId) given = summaryRows(std::move(summary).finish(), runId);
+    const std::vector<EncodedBlobs>& levels = given->levels;
     const auto writeBlocks = [&](auto& block, auto emit) {
       block.bind(1, runId);
       for (std::size_t level = 0; level < levels.size(); ++level) {
@@ -231,9 +298,7 @@ ImportOutcome writeRun(RunDatabase::Impl& impl, FileHead& head,
               .bind(2, static_cast<std::int64_t>(level))
               .bind(3, static_cast<std::int64_t>(b))
               .bindBlob(4, blobs.data(b), blobs.bytes(b))
-              .bind(5, static_cast<std::int64_t>(blockChecksum(
-                           runId, static_cast<std::int64_t>(level), static_cast<std::int64_t>(b),
-                           blobs.data(b), blobs.bytes(b))));
+              .bind(5, static_cast<std::int64_t>(given->checksums[level][b]));
           emit();
         }
       }

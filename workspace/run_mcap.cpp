@@ -199,6 +199,7 @@ storage::ImportOutcome importMcap(storage::RunStore runs, const McapImportReques
       failed.message = fileName + ": " + ok.errorText() + " (give a name with --name)";
       return failed;
     }
+    text = FileText();  // the bag's pages are no longer needed while the run is stored
     storage::ImportOutcome outcome =
         runs.importRun(std::move(bag->run), name, fileName, request.sceneResolver);
     for (std::string& w : bag->warnings)

@@ -145,8 +145,9 @@ struct BenchMcapArgs {
   bool json = false;
 };
 
-// CPU seconds (user + system) of this process so far: the process is single-threaded here, so
-// this is the work on one core whatever else the machine runs.
+// CPU seconds (user + system) of this process so far, all its threads: the work done whatever
+// else the machine runs (the export runs on one thread; reading a bag and storing it use more, so
+// their wall time on an idle machine is below their CPU time).
 double cpuSeconds() {
   rusage u{};
   getrusage(RUSAGE_SELF, &u);

@@ -105,11 +105,13 @@ struct Bag {
   std::vector<std::uint64_t> times;
 };
 
-Bag makeBag(std::size_t steps, Compression compression) {
+Bag makeBag(std::size_t steps, Compression compression, bool summary = true,
+            std::size_t chunkBytes = 4096) {
   WriterOptions o;
   o.profile = "ros2";
   o.compression = compression;
-  o.chunkBytes = 4096;
+  o.chunkBytes = chunkBytes;
+  o.summary = summary;
   Writer w(o);
   const auto tactile = w.addChannel(
       w.addSchema("std_msgs/msg/Float32MultiArray", "ros2msg", test::float32ArraySchema()),
@@ -198,6 +200,90 @@ TEST(Ros2Bag, ImportsValuesFromTheMapping) {
     // The run passes the run-file reader.
     auto csv = parseRunCsv(formatRunCsv(run), "bag.csv");
     EXPECT_TRUE(csv.ok()) << csv.errorText();
+  }
+}
+
+const char* kFullMapping =
+    R"({"tactile": {"topic": "/tactile", "layout": "normal-then-shear"},
+        "pose": {"topic": "/pose"}, "command": {"topic": "/cmd_vel"},
+        "blocked": {"topic": "/bumper"}, "scale": 1000})";
+
+// Every message the scan hands over, in order: channel, log time and the message bytes.
+std::vector<std::string> messagesOf(const std::string& bytes, unsigned threads) {
+  std::vector<std::string> seen;
+  auto r = scan(
+      bytes, "b.mcap",
+      [&](const MessageView& m, const Channel& c, const Schema*) {
+        seen.push_back(c.topic + " " + std::to_string(m.logTime) + " " + std::string(m.data));
+        return Status{};
+      },
+      threads);
+  EXPECT_TRUE(r.ok()) << r.errorText();
+  return seen;
+}
+
+TEST(Ros2Bag, ChunksReadAheadOnAnotherThreadGiveTheSameRun) {
+  auto mapping = parseMapping(kFullMapping, "map.json");
+  ASSERT_TRUE(mapping.ok()) << mapping.errorText();
+  for (const Compression compression : {Compression::Zstd, Compression::None, Compression::Lz4}) {
+    for (const bool summary : {true, false}) {
+      SCOPED_TRACE(std::string(compressionName(compression)) + (summary ? "" : ", no summary"));
+      // Chunks of 4 KiB: hundreds of them, several batches of the read-ahead.
+      const Bag bag = makeBag(1500, compression, summary);
+      auto info = scan(bag.bytes, "b.mcap", {}, 1);
+      ASSERT_TRUE(info.ok()) << info.errorText();
+      ASSERT_GT(info->chunkCount, 150U);
+      EXPECT_EQ(messagesOf(bag.bytes, 1), messagesOf(bag.bytes, 2));
+      auto one = readRos2Bag(bag.bytes, "b.mcap", mapping.value(), 1);
+      auto two = readRos2Bag(bag.bytes, "b.mcap", mapping.value(), 2);
+      ASSERT_TRUE(one.ok()) << one.errorText();
+      ASSERT_TRUE(two.ok()) << two.errorText();
+      ASSERT_EQ(two->run.stepCount(), 1500U);
+      EXPECT_EQ(formatRunCsv(one->run), formatRunCsv(two->run));
+      EXPECT_EQ(one->warnings, two->warnings);
+    }
+  }
+  // Chunks of 300 KiB: batches of the read-ahead end by their size (a few chunks each).
+  const Bag big = makeBag(8000, Compression::Zstd, true, 300 * 1024);
+  auto info = scan(big.bytes, "b.mcap", {}, 1);
+  ASSERT_TRUE(info.ok()) << info.errorText();
+  ASSERT_GT(info->chunkCount, 10U);
+  EXPECT_EQ(messagesOf(big.bytes, 1), messagesOf(big.bytes, 2));
+  auto one = readRos2Bag(big.bytes, "b.mcap", mapping.value(), 1);
+  auto two = readRos2Bag(big.bytes, "b.mcap", mapping.value(), 2);
+  ASSERT_TRUE(one.ok() && two.ok());
+  EXPECT_EQ(formatRunCsv(one->run), formatRunCsv(two->run));
+}
+
+TEST(Ros2Bag, DamagedChunkAmongManyGivesTheSameErrorOnAnyThreadCount) {
+  auto mapping = parseMapping(kFullMapping, "map.json");
+  ASSERT_TRUE(mapping.ok()) << mapping.errorText();
+  for (const Compression compression : {Compression::Zstd, Compression::None, Compression::Lz4}) {
+    SCOPED_TRACE(std::string(compressionName(compression)));
+    const Bag bag = makeBag(1500, compression);
+    auto info = scan(bag.bytes, "b.mcap", {}, 1);
+    ASSERT_TRUE(info.ok()) << info.errorText();
+    ASSERT_GT(info->chunkIndexes.size(), 150U);
+    // A chunk in the middle (past the first batches read ahead): a flipped byte in its records,
+    // then a wrong CRC of its records.
+    const ChunkIndex& chunk = info->chunkIndexes[info->chunkIndexes.size() / 2 + 3];
+    const std::size_t recordsEnd = chunk.chunkStartOffset + chunk.chunkLength;
+    const std::size_t crcAt = chunk.chunkStartOffset + 9 + 24;
+    for (const std::size_t at : {recordsEnd - 40, crcAt}) {
+      std::string damaged = bag.bytes;
+      damaged[at] = static_cast<char>(damaged[at] ^ 0x5A);
+      auto one = readRos2Bag(damaged, "b.mcap", mapping.value(), 1);
+      auto two = readRos2Bag(damaged, "b.mcap", mapping.value(), 2);
+      ASSERT_FALSE(one.ok());
+      ASSERT_FALSE(two.ok());
+      EXPECT_EQ(one.errorText(), two.errorText());
+      // Named by the chunk it is in: its offset, or an offset inside it.
+      const std::string text = two.errorText();
+      ASSERT_EQ(text.rfind("b.mcap: byte ", 0), 0U) << text;
+      const std::uint64_t offset = std::stoull(text.substr(13));
+      EXPECT_GE(offset, chunk.chunkStartOffset) << text;
+      EXPECT_LT(offset, recordsEnd) << text;
+    }
   }
 }
 

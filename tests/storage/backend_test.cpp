@@ -55,6 +55,25 @@ TEST_P(BackendTest, ARunReadsBackValueForValueWindowTrackAndExport) {
   EXPECT_EQ(check.runs, 1);
 }
 
+TEST_P(BackendTest, AnInMemoryRunOfManyBlocksPassesTheCheckAndIsStoredOnce) {
+  // importRun's blocks, row and block checksums are made beside the writer; `db check` verifies
+  // every one. The same run again, under another name, is found once its steps are written and
+  // rolled back.
+  const RunData run = makeRun(40000, true, 12);
+  const ImportOutcome outcome = db_->runs().importRun(run, "many");
+  ASSERT_EQ(outcome.status, ImportStatus::Imported) << outcome.message;
+  const ImportOutcome again = db_->runs().importRun(run, "many-again");
+  EXPECT_EQ(again.status, ImportStatus::Skipped) << again.message;
+  EXPECT_EQ(again.runId, outcome.runId);
+  EXPECT_EQ(db_->runs().list()->size(), 1U);
+  const IntegrityReport check = db_->check();
+  EXPECT_TRUE(check.ok) << (check.problems.empty() ? "" : check.problems[0]);
+  EXPECT_EQ(check.steps, 40000);
+  auto loaded = db_->runs().load(outcome.runId);
+  ASSERT_TRUE(loaded.ok()) << loaded.errorText();
+  test::expectSameRun(run, loaded.value());
+}
+
 TEST_P(BackendTest, TheSameFileTwiceIsStoredOnce) {
   const RunData run = makeRun(50, false, 3);
   const std::string text = formatRunCsv(run);

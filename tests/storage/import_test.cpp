@@ -431,6 +431,78 @@ TEST(Import, RecordedRunThenItsExportedFileIsADuplicate) {
   EXPECT_EQ(again[0].status, ImportStatus::Skipped);
 }
 
+// The runs row's file checksum and row checksum, and the step and block rows' checksums, of the
+// one run in `db`.
+std::string storedRunDigest(const std::filesystem::path& db) {
+  db::Connection c = db::Connection::open(db, false, true);
+  std::string digest;
+  db::Statement run(c, "SELECT checksum, step_count, crc FROM runs");
+  while (run.step())
+    digest += run.columnText(0) + " " + std::to_string(run.columnInt(1)) + " " +
+              std::to_string(run.columnInt(2)) + "\n";
+  for (const char* sql : {"SELECT step, crc, length(sensors) FROM steps ORDER BY step",
+                          "SELECT level * 1000000 + block, crc, length(minmax) FROM step_blocks "
+                          "ORDER BY level, block"}) {
+    db::Statement rows(c, sql);
+    while (rows.step())
+      digest += std::to_string(rows.columnInt(0)) + " " + std::to_string(rows.columnInt(1)) + " " +
+                std::to_string(rows.columnInt(2)) + "\n";
+  }
+  return digest;
+}
+
+TEST(Import, InMemoryRunStoredInBlocksIsTheRunItsFileStores) {
+  // Several of importRun's blocks (encoded beside the writer), truth and x_ columns: the same
+  // rows, checksums and file checksum as the run file's import.
+  TempDir dir;
+  RunData run = makeRun(40000, true, 3);
+  run.extraColumns = {"x_note"};
+  for (std::size_t k = 0; k < run.stepCount(); ++k)
+    run.extraValues.push_back(k % 3 == 0 ? "" : "n" + std::to_string(k));
+  const std::string text = formatRunCsv(run);
+  {
+    auto db = test::openDb(dir / "memory.db");
+    const auto outcome = db->runs().importRun(run, "run");
+    ASSERT_EQ(outcome.status, ImportStatus::Imported) << outcome.message;
+    EXPECT_EQ(outcome.steps, 40000);
+    auto info = db->runs().find("run");
+    ASSERT_TRUE(info.ok());
+    EXPECT_EQ(info->checksum, checksumHex(text));
+  }
+  {
+    auto db = test::openDb(dir / "file.db");
+    ImportOptions options;
+    options.name = "run";
+    ASSERT_EQ(db->runs().importText(text, "run.csv", options).status, ImportStatus::Imported);
+  }
+  const std::string digest = storedRunDigest(dir / "memory.db");
+  EXPECT_GT(std::count(digest.begin(), digest.end(), '\n'), 1 + 40000);  // and blocks
+  EXPECT_EQ(digest, storedRunDigest(dir / "file.db"));
+}
+
+TEST(Import, InMemoryRunAlreadyStoredIsSkippedUnderAnyName) {
+  // The checksum is taken beside the writer: a run of the same content is found under its own
+  // name (before writing) and under another (after writing, then rolled back).
+  TempDir dir;
+  auto db = test::openDb(dir / "runs.db");
+  const RunData run = makeRun(20000, false, 4);
+  const auto first = db->runs().importRun(run, "a");
+  ASSERT_EQ(first.status, ImportStatus::Imported) << first.message;
+  for (const char* name : {"a", "b"}) {
+    const auto again = db->runs().importRun(run, name);
+    EXPECT_EQ(again.status, ImportStatus::Skipped) << name << ": " << again.message;
+    EXPECT_EQ(again.runId, first.runId);
+    EXPECT_NE(again.message.find("already imported as run 'a'"), std::string::npos)
+        << again.message;
+  }
+  // Other content under a taken name is refused as before.
+  const auto clash = db->runs().importRun(makeRun(30, false, 5), "a");
+  EXPECT_EQ(clash.status, ImportStatus::Failed);
+  EXPECT_NE(clash.message.find("already exists"), std::string::npos) << clash.message;
+  EXPECT_EQ(db->runs().list()->size(), 1u);
+  EXPECT_EQ(countRows(dir / "runs.db", "steps"), 20000);
+}
+
 TEST(Import, NonFiniteInMemoryRunIsRejected) {
   auto db = test::openDb(":memory:");
   RunData run = makeRun(4, false);
