@@ -74,48 +74,12 @@ BENCHMARK(BM_FullDefaultSweep)
     ->MeasureProcessCPUTime()
     ->UseRealTime();
 
-// The same full default sweep scoring every decision mode (step, online, offline): cells that
-// differ only in the decision share one fit, so this is 672 fits scored three ways (2,016 cells).
-// Target: under 1 minute on 2 cores.
-void BM_FullDefaultSweepWithDecisions(benchmark::State& state) {
+// Runs `grid` on all cores over the data of state.range(0) % contact, with its counters: cells,
+// fitted cells, threads, and the summed fit seconds of the step cells (one per fit).
+void sweepGrid(benchmark::State& state, const SweepGrid& grid) {
   const BenchData& data = benchData(static_cast<int>(state.range(0)));
   SweepOptions options;
   options.threads = 0;  // all cores
-  SweepGrid grid;
-  grid.decisions = {DecisionMode::Step, DecisionMode::Online, DecisionMode::Offline};
-  SweepResult result;
-  for (auto _ : state) {
-    result = runSweep(data.train, data.test, grid, options);
-    benchmark::DoNotOptimize(result.cells.data());
-  }
-  std::size_t ok = 0;
-  for (const SweepCellResult& c : result.cells)
-    ok += c.ok ? 1 : 0;
-  state.counters["cells"] = static_cast<double>(result.cells.size());
-  state.counters["fitted"] = static_cast<double>(ok);
-  state.counters["threads"] = result.threads;
-}
-BENCHMARK(BM_FullDefaultSweepWithDecisions)
-    ->Arg(30)
-    ->Unit(benchmark::kSecond)
-    ->Iterations(1)
-    ->Repetitions(3)
-    ->ReportAggregatesOnly(false)
-    ->MeasureProcessCPUTime()
-    ->UseRealTime();
-
-// Boosted trees: 8 groups x 3 tree counts x 3 depths (72 fits, learning rate 0.1, min child weight
-// 1) on the same 100k steps, scored step, online and offline (216 cells). Target: under 1 minute on
-// 2 cores.
-void BM_TreeSweep(benchmark::State& state) {
-  const BenchData& data = benchData(static_cast<int>(state.range(0)));
-  SweepOptions options;
-  options.threads = 0;  // all cores
-  SweepGrid grid;
-  grid.methods = {ClassifierMethod::Gbt};
-  grid.treeCounts = {50, 100, 200};
-  grid.depths = {4, 6, 8};
-  grid.decisions = {DecisionMode::Step, DecisionMode::Online, DecisionMode::Offline};
   SweepResult result;
   for (auto _ : state) {
     result = runSweep(data.train, data.test, grid, options);
@@ -131,6 +95,35 @@ void BM_TreeSweep(benchmark::State& state) {
   state.counters["fitted"] = static_cast<double>(ok);
   state.counters["threads"] = result.threads;
   state.counters["sum_fit_s"] = fitSeconds;
+}
+
+// The same full default sweep scoring every decision mode (step, online, offline): cells that
+// differ only in the decision share one fit, so this is 672 fits scored three ways (2,016 cells).
+// Target: under 1 minute on 2 cores.
+void BM_FullDefaultSweepWithDecisions(benchmark::State& state) {
+  SweepGrid grid;
+  grid.decisions = {DecisionMode::Step, DecisionMode::Online, DecisionMode::Offline};
+  sweepGrid(state, grid);
+}
+BENCHMARK(BM_FullDefaultSweepWithDecisions)
+    ->Arg(30)
+    ->Unit(benchmark::kSecond)
+    ->Iterations(1)
+    ->Repetitions(3)
+    ->ReportAggregatesOnly(false)
+    ->MeasureProcessCPUTime()
+    ->UseRealTime();
+
+// Boosted trees: 8 groups x 3 tree counts x 3 depths (72 fits, learning rate 0.1, min child weight
+// 1) on the same 100k steps, scored step, online and offline (216 cells). Target: under 1 minute on
+// 2 cores.
+void BM_TreeSweep(benchmark::State& state) {
+  SweepGrid grid;
+  grid.methods = {ClassifierMethod::Gbt};
+  grid.treeCounts = {50, 100, 200};
+  grid.depths = {4, 6, 8};
+  grid.decisions = {DecisionMode::Step, DecisionMode::Online, DecisionMode::Offline};
+  sweepGrid(state, grid);
 }
 BENCHMARK(BM_TreeSweep)
     ->Arg(30)
