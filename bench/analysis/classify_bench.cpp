@@ -31,8 +31,10 @@ struct BenchData {
   ModelBundle trees;
 };
 
+// Never destroyed: XGBoost keeps per-thread state that the main thread's exit tears down before
+// objects of static duration, so freeing a booster from a static destructor frees it twice.
 const BenchData& benchData() {
-  static BenchData d = [] {
+  static const BenchData& d = *new BenchData([] {
     BenchData b;
     b.train = testdata::makeLabelledRun(30000, 7, 0.3);
     b.run = testdata::makeLabelledRun(1000000, 8, 0.3);
@@ -57,7 +59,7 @@ const BenchData& benchData() {
     auto trees = trainAndEvaluate(job);
     if (trees) b.trees = std::move(trees->bundle);
     return b;
-  }();
+  }());
   return d;
 }
 
