@@ -437,14 +437,9 @@ ClassifierFit trainClassifier(const std::vector<Eigen::MatrixXd>& samplesPerClas
   if (!set) return fail(set.error().message);
   fit.model = std::move(set.value());
   // The floor against each feature's variance over every class's rows together: the spread that
-  // could tell the classes apart.
-  Eigen::MatrixXd all(totalRows, d);
-  Eigen::Index row = 0;
-  for (const auto& x : samplesPerClass) {
-    all.middleRows(row, x.rows()) = x;
-    row += x.rows();
-  }
-  fit.warnings = varianceFloorWarnings(all, options.gmm.varianceFloor, options.featureNames);
+  // could tell the classes apart (read where the rows are, not copied into one table).
+  fit.warnings =
+      varianceFloorWarnings(samplesPerClass, options.gmm.varianceFloor, options.featureNames);
   fit.ok = true;
   return fit;
 }

@@ -153,25 +153,27 @@ std::vector<Eigen::MatrixXd> splitByClass(const double* features, Eigen::Index r
                                           Eigen::Index cols, Eigen::Index rowStride,
                                           Eigen::Index colStride, const int* labels,
                                           std::size_t classes) {
-  // Each row's place in its class first, then one column at a time: reads and writes run along
-  // columns, as both sides are stored in a column-major table.
+  // Counts first, then one column at a time, each class's rows in row order: reads and writes
+  // run along columns, as both sides are stored in a column-major table. No per-row index: the
+  // split allocates nothing beside its result.
   std::vector<Eigen::Index> counts(classes, 0);
-  std::vector<Eigen::Index> place(static_cast<std::size_t>(rows));
   for (Eigen::Index r = 0; r < rows; ++r) {
     const int l = labels[r];
     if (l < 0 || static_cast<std::size_t>(l) >= classes)
       throw std::invalid_argument("label " + std::to_string(l) + " of row " + std::to_string(r) +
                                   " is not a class index below " + std::to_string(classes));
-    place[static_cast<std::size_t>(r)] = counts[static_cast<std::size_t>(l)]++;
+    ++counts[static_cast<std::size_t>(l)];
   }
   std::vector<Eigen::MatrixXd> out(classes);
   for (std::size_t c = 0; c < classes; ++c)
     out[c].resize(counts[c], cols);
+  std::vector<double*> next(classes);
   for (Eigen::Index j = 0; j < cols; ++j) {
+    for (std::size_t c = 0; c < classes; ++c)
+      next[c] = out[c].col(j).data();
     const double* column = features + j * colStride;
     for (Eigen::Index r = 0; r < rows; ++r)
-      out[static_cast<std::size_t>(labels[r])](place[static_cast<std::size_t>(r)], j) =
-          column[r * rowStride];
+      *next[static_cast<std::size_t>(labels[r])]++ = column[r * rowStride];
   }
   return out;
 }

@@ -95,13 +95,29 @@ std::optional<ConvergenceRule> parseConvergenceRule(std::string_view name) {
 
 std::vector<std::string> varianceFloorWarnings(const Eigen::MatrixXd& samples, double varianceFloor,
                                                const std::vector<std::string>& featureNames) {
+  return varianceFloorWarnings(std::span<const Eigen::MatrixXd>(&samples, 1), varianceFloor,
+                               featureNames);
+}
+
+std::vector<std::string> varianceFloorWarnings(std::span<const Eigen::MatrixXd> parts,
+                                               double varianceFloor,
+                                               const std::vector<std::string>& featureNames) {
   std::vector<std::string> out;
-  const Eigen::Index n = samples.rows();
+  Eigen::Index n = 0;
+  for (const Eigen::MatrixXd& p : parts)
+    n += p.rows();
   if (n < 2 || !(varianceFloor > 0.0)) return out;
-  const Eigen::RowVectorXd mean = samples.colwise().mean();
-  for (Eigen::Index j = 0; j < samples.cols(); ++j) {
-    const double variance =
-        (samples.col(j).array() - mean(j)).square().sum() / static_cast<double>(n);
+  const double rows = static_cast<double>(n);
+  // var_j = (1/N) sum_n (x_nj - mean_j)^2, two passes over the rows of every part.
+  for (Eigen::Index j = 0; j < parts.front().cols(); ++j) {
+    double sum = 0.0;
+    for (const Eigen::MatrixXd& p : parts)
+      sum += p.col(j).sum();
+    const double mean = sum / rows;
+    double squares = 0.0;
+    for (const Eigen::MatrixXd& p : parts)
+      squares += (p.col(j).array() - mean).square().sum();
+    const double variance = squares / rows;
     if (!(variance > 0.0) || !std::isfinite(variance) || varianceFloor < 100.0 * variance) continue;
     const std::size_t js = static_cast<std::size_t>(j);
     const std::string name = "feature " + std::to_string(j) +

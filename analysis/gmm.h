@@ -12,6 +12,7 @@
 #include <functional>
 #include <limits>
 #include <optional>
+#include <span>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -87,6 +88,11 @@ struct GmmOptions {
 // variance carry no information whatever the floor and are not reported. featureNames (optional,
 // one per column) name the features in the messages; otherwise "feature j" (0-based).
 std::vector<std::string> varianceFloorWarnings(const Eigen::MatrixXd& samples, double varianceFloor,
+                                               const std::vector<std::string>& featureNames = {});
+// The same over the rows of every matrix of `parts` together (all with the same columns), read
+// where they are: the variance over all classes' rows without copying them into one table.
+std::vector<std::string> varianceFloorWarnings(std::span<const Eigen::MatrixXd> parts,
+                                               double varianceFloor,
                                                const std::vector<std::string>& featureNames = {});
 
 struct GmmFit {

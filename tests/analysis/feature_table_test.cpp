@@ -5,6 +5,8 @@
 
 #include <gtest/gtest.h>
 
+#include <stdexcept>
+
 #include "analysis/gmm_synthetic.h"
 
 namespace tactile::analysis {
@@ -24,6 +26,33 @@ TEST(FeatureTable, ParsesRowsLabelsAndClassOrder) {
   ASSERT_EQ(split.size(), 2u);
   EXPECT_EQ(split[0].rows(), 2);
   EXPECT_EQ(split[0](1, 0), 0.0);
+}
+
+// The split of a strided array (a numpy array in C order) keeps each class's rows in row order
+// and agrees with the split of the same table in column-major order.
+TEST(FeatureTable, SplitByClassOfAnyLayoutKeepsRowOrder) {
+  FeatureTable table;
+  table.classNames = {"a", "b", "c"};
+  table.labels = {2, 0, 0, 1, 2, 0, 2};
+  table.features.resize(7, 2);
+  for (Eigen::Index r = 0; r < 7; ++r)
+    table.features.row(r) << static_cast<double>(r), -0.5 * static_cast<double>(r);
+  const Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> rowMajor =
+      table.features;
+  const auto split = splitByClass(rowMajor.data(), 7, 2, 2, 1, table.labels.data(), 3);
+  ASSERT_EQ(split.size(), 3u);
+  EXPECT_TRUE(split[0].col(0) == Eigen::Vector3d(1, 2, 5)) << split[0];
+  ASSERT_EQ(split[1].rows(), 1);
+  EXPECT_EQ(split[1](0, 0), 3.0);
+  EXPECT_EQ(split[1](0, 1), -1.5);
+  EXPECT_TRUE(split[2].col(0) == Eigen::Vector3d(0, 4, 6)) << split[2];
+  EXPECT_TRUE(split[2].col(1) == Eigen::Vector3d(0, -2, -3)) << split[2];
+  const auto fromTable = splitByClass(table);
+  ASSERT_EQ(fromTable.size(), 3u);
+  for (std::size_t c = 0; c < 3; ++c)
+    EXPECT_TRUE(fromTable[c] == split[c]) << c;
+  const int bad[] = {0, 3};
+  EXPECT_THROW(splitByClass(rowMajor.data(), 2, 2, 2, 1, bad, 3), std::invalid_argument);
 }
 
 TEST(FeatureTable, BadNumberNamesFileLineAndColumn) {

@@ -7,6 +7,9 @@
 
 #include <Eigen/Dense>
 #include <cmath>
+#include <span>
+#include <string>
+#include <vector>
 
 #include "tests/analysis/gmm_test_util.h"
 
@@ -34,6 +37,31 @@ TEST(GmmNames, EveryNameRoundTrips) {
   EXPECT_EQ(parseGmmInit("random-from-data"), GmmInit::RandomFromData);
   EXPECT_FALSE(parseCovarianceForm("full").has_value());
   EXPECT_EQ(parseConvergenceRule("absolute"), ConvergenceRule::Absolute);
+}
+
+// The floor warnings over several tables' rows read in place (trainClassifier's check over every
+// class) say what they say over the same rows copied into one table: the variance pooled over all
+// parts, not any one part's.
+TEST(VarianceFloorWarnings, OverPartsEqualOverTheirRowsTogether) {
+  const Eigen::Vector3d sd(1.0, 1e-6, 2e-4);
+  const Eigen::MatrixXd a = gaussianRows(300, Eigen::Vector3d(0.0, 0.0, 0.0), sd, 7);
+  const Eigen::MatrixXd b = gaussianRows(200, Eigen::Vector3d(1.0, 4e-6, 0.0), sd, 8);
+  const Eigen::MatrixXd c = gaussianRows(1, Eigen::Vector3d(0.5, 2e-6, 1e-4), sd, 9);
+  const Eigen::MatrixXd none(0, 3);
+  Eigen::MatrixXd all(a.rows() + b.rows() + c.rows(), 3);
+  all << a, b, c;
+  const std::vector<std::string> names = {"f0", "f1", "f2"};
+  const std::vector<std::string> together = varianceFloorWarnings(all, 0.01, names);
+  // Features 1 and 2 are far below the floor; 0 is not.
+  ASSERT_EQ(together.size(), 2u);
+  EXPECT_NE(together[0].find("feature 1 (f1)"), std::string::npos) << together[0];
+  EXPECT_NE(together[1].find("feature 2 (f2)"), std::string::npos) << together[1];
+  const std::vector<Eigen::MatrixXd> parts = {a, none, b, c};
+  EXPECT_EQ(varianceFloorWarnings(parts, 0.01, names), together);
+  // Within a part, feature 1 varies 1e-6; between the parts 4e-6: the pooled figure is reported.
+  EXPECT_NE(varianceFloorWarnings(std::vector<Eigen::MatrixXd>{a}, 0.01, names)[0], together[0]);
+  EXPECT_TRUE(varianceFloorWarnings(std::vector<Eigen::MatrixXd>{c, none}, 0.01).empty());
+  EXPECT_TRUE(varianceFloorWarnings(std::span<const Eigen::MatrixXd>(), 0.01).empty());
 }
 
 TEST(GaussianMixtureCreate, RejectsWeightsNotSummingToOne) {
