@@ -453,6 +453,7 @@ void TrainingDialogTest::trainWithGroupDefaultsUsesEachGroupsOwn() {
     if (m.classifier.trees() != nullptr) {
       trees = true;
       QCOMPARE(m.provenance.classifier.gbt.trees, d.classifier.gbt.trees);
+      QCOMPARE(m.provenance.classifier.gbt.depth, d.classifier.gbt.depth);
       continue;
     }
     QCOMPARE(m.covariance, d.classifier.gmm.form);
