@@ -143,7 +143,7 @@ TEST(Training, DefaultsAreTheDocumentedTable) {
   const std::array<Row, 8> table{{
       {SensorGroup::Front, kTrees, kContext, 8, 0.01, 0.3, 200, 6, 3.0},
       {SensorGroup::FrontLeftCorner, kTrees, kNeighbours, 8, 0.01, 1.0, 100, 6, 3.0},
-      {SensorGroup::Left, kTrees, kNeighbours, 8, 0.01, 0.3, 300, 6, 1.0},
+      {SensorGroup::Left, kTrees, kNeighbours, 8, 0.01, 0.3, 200, 6, 2.0},
       {SensorGroup::RearLeftCorner, kGmm, kNeighbours, 16, 0.01, 1.0, 100, 4, 1.5},
       {SensorGroup::Back, kGmm, FeatureKind::NormalShear, 4, 0.01, 0.3, 100, 4, 1.0},
       {SensorGroup::RearRightCorner, kTrees, kContext, 8, 0.01, 0.3, 100, 4, 2.0},
