@@ -742,6 +742,11 @@ std::string modelReport(const ModelBundle& bundle, TableStyle style, std::size_t
   settings.title = "Models";
   settings.header = {"group",   "features", "method",  "covariance", "order",   "floor",
                      "dropped", "classes",  "samples", "test",       "decision"};
+  // Boosted trees have no covariance, order or floor: their settings get a column of their own,
+  // shown when the bundle has trees.
+  const bool anyTrees = std::any_of(bundle.models.begin(), bundle.models.end(),
+                                    [](const GroupModel& m) { return m.classifier.trees(); });
+  if (anyTrees) settings.header.insert(settings.header.begin() + 6, "trees");
   Table decisions;
   decisions.title = "Balanced accuracy by decision (%; test steps in brackets)";
   decisions.header = {"group", "evaluated on", "test", "step", "online", "offline"};
@@ -772,14 +777,23 @@ std::string modelReport(const ModelBundle& bundle, TableStyle style, std::size_t
       dropped = std::to_string(sum);
     }
     const DecisionMode d = m.transitions.empty() ? DecisionMode::Step : m.decision;
-    settings.rows.push_back(
-        {groupName, std::string(featureKindName(m.features)),
-         std::string(classifierMethodName(m.classifier.method())),
-         std::string(covarianceFormName(m.covariance)), std::to_string(order),
-         floorText(m.varianceFloor), dropped, classes,
-         std::to_string(e.samplesTrain > 0 ? e.samplesTrain : m.provenance.samples),
-         e.scored() ? std::to_string(e.samplesTest()) : "no test data",
-         decisionText(d, m.transitions)});
+    const bool isTrees = m.classifier.trees() != nullptr;
+    std::vector<std::string> row = {
+        groupName,
+        std::string(featureKindName(m.features)),
+        std::string(classifierMethodName(m.classifier.method())),
+        isTrees ? "" : std::string(covarianceFormName(m.covariance)),
+        isTrees ? "" : std::to_string(order),
+        isTrees ? "" : floorText(m.varianceFloor),
+        dropped,
+        classes,
+        std::to_string(e.samplesTrain > 0 ? e.samplesTrain : m.provenance.samples),
+        e.scored() ? std::to_string(e.samplesTest()) : "no test data",
+        decisionText(d, m.transitions)};
+    if (anyTrees)
+      row.insert(row.begin() + 6,
+                 isTrees ? describeGbtSettings(m.provenance.classifier.gbt) : std::string());
+    settings.rows.push_back(std::move(row));
     decisions.rows.push_back({groupName, e.evaluatedOn, std::to_string(e.samplesTest()),
                               rate(e.confusion(DecisionMode::Step)),
                               rate(e.confusion(DecisionMode::Online)),

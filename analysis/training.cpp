@@ -94,6 +94,9 @@ struct GroupDefault {
   int order;  // the mixtures' settings (kept for --method gmm on a trees group)
   double floor;
   double emissionWeight;  // of the mixtures' class chain (TransitionModel::emissionWeight)
+  int trees;          // the boosted trees' settings (kept for --method gbt on a mixtures group):
+  int depth;          // rounds and largest depth; learning rate 0.1, min child weight 1
+  double treeWeight;  // the weight of the trees' evidence in their class chain
 };
 
 // Per group, the setting with the best leave-one-scene-out score (`sweep --split by-scene`) over
@@ -133,14 +136,14 @@ constexpr FeatureKind kNeighbours = FeatureKind::Neighbours;
 constexpr ClassifierMethod kGmm = ClassifierMethod::Gmm;
 constexpr ClassifierMethod kTrees = ClassifierMethod::Gbt;
 constexpr std::array<GroupDefault, kGroupCount> kGroupDefaults{{
-    {SensorGroup::Front, kTrees, kContext, 8, 0.01, 0.3},
-    {SensorGroup::FrontLeftCorner, kGmm, kNeighbours, 8, 0.01, 1.0},
-    {SensorGroup::Left, kTrees, kNeighbours, 8, 0.01, 0.3},
-    {SensorGroup::RearLeftCorner, kGmm, kNeighbours, 16, 0.01, 1.0},
-    {SensorGroup::Back, kGmm, kShear, 4, 0.01, 0.3},
-    {SensorGroup::RearRightCorner, kTrees, kContext, 8, 0.01, 0.3},
-    {SensorGroup::Right, kTrees, kNeighbours, 8, 0.01, 0.1},
-    {SensorGroup::FrontRightCorner, kGmm, kNeighbours, 16, 0.01, 1.0},
+    {SensorGroup::Front, kTrees, kContext, 8, 0.01, 0.3, 200, 6, 3.0},
+    {SensorGroup::FrontLeftCorner, kTrees, kNeighbours, 8, 0.01, 1.0, 100, 6, 3.0},
+    {SensorGroup::Left, kTrees, kNeighbours, 8, 0.01, 0.3, 200, 6, 2.0},
+    {SensorGroup::RearLeftCorner, kGmm, kNeighbours, 16, 0.01, 1.0, 100, 4, 1.5},
+    {SensorGroup::Back, kGmm, kShear, 4, 0.01, 0.3, 100, 4, 1.0},
+    {SensorGroup::RearRightCorner, kTrees, kContext, 8, 0.01, 0.3, 100, 4, 2.0},
+    {SensorGroup::Right, kTrees, kNeighbours, 8, 0.01, 0.1, 200, 6, 2.0},
+    {SensorGroup::FrontRightCorner, kGmm, kNeighbours, 16, 0.01, 1.0, 100, 6, 4.0},
 }};
 
 constexpr bool inGroupOrder() {
@@ -161,13 +164,15 @@ TrainSettings defaultTrainSettings(SensorGroup group) {
   s.classifier.gmm.components = d.order;
   s.classifier.gmm.varianceFloor = d.floor;
   s.classifier.gmm.restarts = 3;  // the best of three fits: one start alone sometimes lands badly
+  s.classifier.gbt.trees = d.trees;
+  s.classifier.gbt.depth = d.depth;
   s.emissionWeight = defaultEmissionWeight(group, d.method);
   return s;
 }
 
 double defaultEmissionWeight(SensorGroup group, ClassifierMethod method) {
-  if (method == ClassifierMethod::Gbt) return 1.0;
-  return kGroupDefaults[static_cast<std::size_t>(groupIndex(group))].emissionWeight;
+  const GroupDefault& d = kGroupDefaults[static_cast<std::size_t>(groupIndex(group))];
+  return method == ClassifierMethod::Gbt ? d.treeWeight : d.emissionWeight;
 }
 
 Result<ClassifierMethod> impliedMethod(std::optional<ClassifierMethod> given, bool mixtureOptions,

@@ -3078,10 +3078,6 @@ grau: blockiert</translation>
         <translation>Standardeinstellungen jeder Gruppe</translation>
     </message>
     <message>
-        <source>Train model uses each group&apos;s default order, covariance, floor and features, as tactile train does; unticked, the first value of every list above</source>
-        <translation>„Modell trainieren“ nimmt wie tactile train Ordnung, Kovarianz, Untergrenze und Merkmale aus den Vorgaben jeder Gruppe; ohne Haken den ersten Wert jeder Liste oben</translation>
-    </message>
-    <message>
         <source>Train model with:</source>
         <translation>Modell trainieren mit:</translation>
     </message>
@@ -3195,10 +3191,6 @@ grau: blockiert</translation>
     <message>
         <source>each group&apos;s default</source>
         <translation>Standard jeder Gruppe</translation>
-    </message>
-    <message>
-        <source>Train model: the weight of each step&apos;s evidence in the online and offline decisions (1 is the plain HMM; smaller lets the class chain outweigh single steps), as tactile train --emission-weight. Sweeps always use each group&apos;s default</source>
-        <translation>Modell trainieren: das Gewicht der Evidenz jedes Schritts in den Online- und Offline-Entscheidungen (1 ist das einfache HMM; kleiner lässt die Klassenkette einzelne Schritte überwiegen), wie tactile train --emission-weight. Sweeps verwenden immer den Standard jeder Gruppe</translation>
     </message>
     <message>
         <source>Evidence weight:</source>
@@ -3321,6 +3313,14 @@ grau: blockiert</translation>
     <message>
         <source>Min child weights</source>
         <translation>Min. Blattgewichte</translation>
+    </message>
+    <message>
+        <source>Train model uses each group&apos;s default family with its settings (order, covariance and floor, or rounds and depth), features and evidence weight, as tactile train does; unticked, the first value of every list above</source>
+        <translation>„Modell trainieren“ nimmt wie tactile train die Standardfamilie jeder Gruppe mit ihren Einstellungen (Ordnung, Kovarianz und Untergrenze oder Runden und Tiefe), Merkmale und Evidenzgewicht; ohne Haken den ersten Wert jeder Liste oben</translation>
+    </message>
+    <message>
+        <source>Train model: the weight of each step&apos;s evidence in the online and offline decisions (1 is the plain HMM; smaller lets the class chain outweigh single steps, larger lets a few steps outweigh the chain), as tactile train --emission-weight. Sweeps always use each group&apos;s default for the method</source>
+        <translation>Modell trainieren: das Gewicht der Evidenz jedes Schritts in den Online- und Offline-Entscheidungen (1 ist das einfache HMM; kleiner lässt die Klassenkette einzelne Schritte überwiegen, größer lässt wenige Schritte die Kette überwiegen), wie tactile train --emission-weight. Sweeps verwenden immer den Standard jeder Gruppe für die Methode</translation>
     </message>
 </context>
 <context>

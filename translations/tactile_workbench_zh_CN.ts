@@ -2978,10 +2978,6 @@ grey: blocked</source>
         <translation>每组的默认设置</translation>
     </message>
     <message>
-        <source>Train model uses each group&apos;s default order, covariance, floor and features, as tactile train does; unticked, the first value of every list above</source>
-        <translation>“训练模型”与 tactile train 一样使用每组默认的阶数、协方差、下限和特征；取消勾选时使用上方每个列表的第一个值</translation>
-    </message>
-    <message>
         <source>Train model with:</source>
         <translation>训练模型时使用：</translation>
     </message>
@@ -3182,10 +3178,6 @@ grey: blocked</source>
         <translation>各组默认值</translation>
     </message>
     <message>
-        <source>Train model: the weight of each step&apos;s evidence in the online and offline decisions (1 is the plain HMM; smaller lets the class chain outweigh single steps), as tactile train --emission-weight. Sweeps always use each group&apos;s default</source>
-        <translation>训练模型：在线和离线判定中每一步证据的权重（1 为普通 HMM；更小的值让类别链压过单个步骤），同 tactile train --emission-weight。扫描始终使用各组默认值</translation>
-    </message>
-    <message>
         <source>Evidence weight:</source>
         <translation>证据权重：</translation>
     </message>
@@ -3304,6 +3296,14 @@ grey: blocked</source>
     <message>
         <source>Min child weights</source>
         <translation>最小子节点权重</translation>
+    </message>
+    <message>
+        <source>Train model uses each group&apos;s default family with its settings (order, covariance and floor, or rounds and depth), features and evidence weight, as tactile train does; unticked, the first value of every list above</source>
+        <translation>“训练模型”与 tactile train 一样，使用每组的默认模型族及其设置（阶数、协方差和下限，或轮数和深度）、特征和证据权重；不勾选时使用上面每个列表的第一个值</translation>
+    </message>
+    <message>
+        <source>Train model: the weight of each step&apos;s evidence in the online and offline decisions (1 is the plain HMM; smaller lets the class chain outweigh single steps, larger lets a few steps outweigh the chain), as tactile train --emission-weight. Sweeps always use each group&apos;s default for the method</source>
+        <translation>训练模型：每一步证据在在线和离线决策中的权重（1 为普通 HMM；较小时类别链可压过单步，较大时几步证据可压过类别链），同 tactile train --emission-weight。扫描始终使用每组对该方法的默认值</translation>
     </message>
 </context>
 <context>

@@ -191,15 +191,17 @@ struct TrainArgs {
   std::vector<std::string> runs;
   std::vector<std::string> testRuns;
   std::string labels;
-  // Unless given, --method, --order, --cov, --floor, --restarts and --features are each group's
-  // default (analysis::defaultGroupSettings(), the workbench's too).
+  // Unless given, --method, --order, --cov, --floor, --restarts, --trees, --depth, --learning-rate,
+  // --min-child-weight and --features are each group's default (analysis::defaultGroupSettings(),
+  // the workbench's too).
   ClassifierArgs classifier;
   std::string features;
   std::string decision = "online";
   std::optional<double> emissionWeight;  // unless given, each group's own
   struct Given {
     bool method = false, order = false, cov = false, floor = false, restarts = false;
-    bool trees = false;  // any of --trees, --depth, --learning-rate, --min-child-weight
+    bool trees = false, depth = false, learningRate = false, minChildWeight = false;
+    bool anyTrees() const { return trees || depth || learningRate || minChildWeight; }
   } given;
   std::vector<std::string> groups;
   double holdout = 0.0;
@@ -362,13 +364,17 @@ analysis::GroupSettings trainSettings(const TrainArgs& a) {
     const auto method =
         analysis::impliedMethod(a.given.method ? std::optional(typed.method) : std::nullopt,
                                 a.given.order || a.given.cov || a.given.floor || a.given.restarts,
-                                a.given.trees, s.classifier.method);
+                                a.given.anyTrees(), s.classifier.method);
     if (!method) throw UsageError(method.errorText());
     o.method = method.value();
     if (!a.given.order) o.gmm.components = s.classifier.gmm.components;
     if (!a.given.cov) o.gmm.form = s.classifier.gmm.form;
     if (!a.given.floor) o.gmm.varianceFloor = s.classifier.gmm.varianceFloor;
     if (!a.given.restarts) o.gmm.restarts = s.classifier.gmm.restarts;
+    if (!a.given.trees) o.gbt.trees = s.classifier.gbt.trees;
+    if (!a.given.depth) o.gbt.depth = s.classifier.gbt.depth;
+    if (!a.given.learningRate) o.gbt.learningRate = s.classifier.gbt.learningRate;
+    if (!a.given.minChildWeight) o.gbt.minChildWeight = s.classifier.gbt.minChildWeight;
     s.classifier = o;
     if (!a.features.empty()) s.features = parseFeatures(a.features);
     const auto decision = analysis::parseDecisionMode(a.decision);
@@ -903,7 +909,8 @@ void registerLearnVerbs(CLI::App& app, CLI::App& /*bench*/) {
         ->capture_default_str();
     addClassifierOptions(cmd, args->classifier, true);
     // These default to each group's own setting; given, they apply to every group.
-    for (const char* name : {"--method", "--order", "--cov", "--floor", "--restarts"}) {
+    for (const char* name : {"--method", "--order", "--cov", "--floor", "--restarts", "--trees",
+                             "--depth", "--learning-rate", "--min-child-weight"}) {
       CLI::Option* o = cmd->get_option(name);
       o->default_str("");
       o->description(o->get_description() + " (default: each group's own)");
@@ -932,9 +939,10 @@ void registerLearnVerbs(CLI::App& app, CLI::App& /*bench*/) {
       args->given.cov = cmd->get_option("--cov")->count() > 0;
       args->given.floor = cmd->get_option("--floor")->count() > 0;
       args->given.restarts = cmd->get_option("--restarts")->count() > 0;
-      args->given.trees = false;
-      for (const char* name : {"--trees", "--depth", "--learning-rate", "--min-child-weight"})
-        args->given.trees = args->given.trees || cmd->get_option(name)->count() > 0;
+      args->given.trees = cmd->get_option("--trees")->count() > 0;
+      args->given.depth = cmd->get_option("--depth")->count() > 0;
+      args->given.learningRate = cmd->get_option("--learning-rate")->count() > 0;
+      args->given.minChildWeight = cmd->get_option("--min-child-weight")->count() > 0;
       TrainArgs a = *args;
       if (a.db.empty() && a.runs.empty()) a.db = databaseFromEnvironment();
       return runTrain(a);

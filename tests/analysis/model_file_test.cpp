@@ -151,6 +151,37 @@ TEST(ModelFile, BoostedTreesRoundTripBitForBit) {
   EXPECT_NE(broken.errorText().find("gbt.model"), std::string::npos) << broken.errorText();
 }
 
+// The report of a bundle mixing families: trees show their settings in a column of their own and
+// no covariance, order or floor (they have none); a bundle of mixtures alone has no such column.
+TEST(ModelFile, ReportGivesTreesTheirOwnSettingsColumn) {
+  GroupModel trees;
+  ASSERT_NO_FATAL_FAILURE(trainModel(trees, ClassifierMethod::Gbt, CovarianceForm::NodalDiag));
+  GroupModel mixture;
+  ASSERT_NO_FATAL_FAILURE(trainModel(mixture, ClassifierMethod::Gmm, CovarianceForm::NodalDiag));
+  const std::string settings = describeGbtSettings(trees.provenance.classifier.gbt);
+  ModelBundle both;
+  both.models.push_back(std::move(trees));
+  both.models.push_back(std::move(mixture));
+  const std::string report = modelReport(both, TableStyle::Csv);
+  const auto line = [&](const std::string& method) {
+    const std::size_t at = report.find("," + method + ",");
+    if (at == std::string::npos) return std::string();
+    const std::size_t begin = report.rfind('\n', at) + 1;
+    return report.substr(begin, report.find('\n', at) - begin);
+  };
+  EXPECT_NE(report.find("group,features,method,covariance,order,floor,trees,dropped"),
+            std::string::npos)
+      << report;
+  const std::string treeRow = line("gbt");
+  ASSERT_FALSE(treeRow.empty()) << report;
+  EXPECT_NE(treeRow.find(",gbt,,,,\"" + settings + "\","), std::string::npos) << treeRow;
+  const std::string gmmRow = line("gmm");
+  ASSERT_FALSE(gmmRow.empty()) << report;
+  EXPECT_NE(gmmRow.find(",gmm,nodal-diag,"), std::string::npos) << gmmRow;
+  both.models.erase(both.models.begin());
+  EXPECT_EQ(modelReport(both, TableStyle::Csv).find(",trees,"), std::string::npos);
+}
+
 TEST(ModelFile, BundleFileRoundTripThroughDisk) {
   ModelBundle bundle;
   GroupModel first;

@@ -55,6 +55,7 @@ TEST(Training, SplitKeepsTimeOrderAndPartitionsLabels) {
 TEST(Training, DefaultsAreEachGroupsOwnTunedModel) {
   const GroupSettings d = defaultGroupSettings();
   bool ordersDiffer = false;
+  bool treesDiffer = false;
   for (const GroupInfo& g : kSensorGroups) {
     const TrainSettings& s = d.of(g.group);
     // The touch flags of F, L and R (alone or within the context kinds) in every group that can
@@ -81,13 +82,22 @@ TEST(Training, DefaultsAreEachGroupsOwnTunedModel) {
     EXPECT_EQ(s.classifier.gmm.restarts, 3) << g.shortName;
     EXPECT_GE(s.classifier.gmm.components, 1) << g.shortName;
     EXPECT_GT(s.classifier.gmm.varianceFloor, 0.0) << g.shortName;
-    // The chain's evidence weight: tempered (< 1) or plain (1), never amplified.
-    EXPECT_GT(s.emissionWeight, 0.0) << g.shortName;
-    EXPECT_LE(s.emissionWeight, 1.0) << g.shortName;
+    // The chain's evidence weight: the mixtures' tempered (< 1) or plain (1), never amplified;
+    // the trees' plain or amplified (their scaled likelihoods span few nats), never tempered.
+    const double mixtures = defaultEmissionWeight(g.group, ClassifierMethod::Gmm);
+    const double trees = defaultEmissionWeight(g.group, ClassifierMethod::Gbt);
+    EXPECT_GT(mixtures, 0.0) << g.shortName;
+    EXPECT_LE(mixtures, 1.0) << g.shortName;
+    EXPECT_GE(trees, 1.0) << g.shortName;
+    EXPECT_TRUE(std::isfinite(trees)) << g.shortName;
+    EXPECT_TRUE(checkGbtSettings(s.classifier.gbt).empty()) << g.shortName;
+    treesDiffer |= s.classifier.gbt.trees != d.byGroup[0].classifier.gbt.trees ||
+                   s.classifier.gbt.depth != d.byGroup[0].classifier.gbt.depth;
     EXPECT_EQ(s.classifier.gmm.components, defaultTrainSettings(g.group).classifier.gmm.components);
     ordersDiffer |= s.classifier.gmm.components != d.byGroup[0].classifier.gmm.components;
   }
   EXPECT_TRUE(ordersDiffer) << "the defaults are per group, not one setting for all";
+  EXPECT_TRUE(treesDiffer) << "the trees' defaults are per group too";
   const GroupSettings same = GroupSettings::same(defaultTrainSettings(SensorGroup::Back));
   for (const TrainSettings& s : same.byGroup)
     EXPECT_EQ(s.classifier.gmm.components,
@@ -111,8 +121,9 @@ TEST(Training, OptionsOfOneFamilyImplyIt) {
   EXPECT_NE(both.errorText().find("say which"), std::string::npos) << both.errorText();
 }
 
-// The table of docs/learning.md#training-defaults, group by group: features, order, floor and
-// the chain's evidence weight, as chosen on the selection corpus.
+// The table of docs/learning.md#training-defaults, group by group: the family, the features, the
+// mixtures' order, floor and chain weight, and the trees' rounds, depth and chain weight, as chosen
+// on the selection corpus.
 TEST(Training, DefaultsAreTheDocumentedTable) {
   struct Row {
     SensorGroup group;
@@ -120,33 +131,40 @@ TEST(Training, DefaultsAreTheDocumentedTable) {
     FeatureKind features;
     int order;
     double floor;
-    double mixtureWeight;  // the mixtures' chain weight; trees decide through the plain chain
+    double mixtureWeight;
+    int trees;
+    int depth;
+    double treeWeight;
   };
   constexpr ClassifierMethod kTrees = ClassifierMethod::Gbt;
   constexpr ClassifierMethod kGmm = ClassifierMethod::Gmm;
+  constexpr FeatureKind kContext = FeatureKind::Context;
+  constexpr FeatureKind kNeighbours = FeatureKind::Neighbours;
   const std::array<Row, 8> table{{
-      {SensorGroup::Front, kTrees, FeatureKind::Context, 8, 0.01, 0.3},
-      {SensorGroup::FrontLeftCorner, kGmm, FeatureKind::Neighbours, 8, 0.01, 1.0},
-      {SensorGroup::Left, kTrees, FeatureKind::Neighbours, 8, 0.01, 0.3},
-      {SensorGroup::RearLeftCorner, kGmm, FeatureKind::Neighbours, 16, 0.01, 1.0},
-      {SensorGroup::Back, kGmm, FeatureKind::NormalShear, 4, 0.01, 0.3},
-      {SensorGroup::RearRightCorner, kTrees, FeatureKind::Context, 8, 0.01, 0.3},
-      {SensorGroup::Right, kTrees, FeatureKind::Neighbours, 8, 0.01, 0.1},
-      {SensorGroup::FrontRightCorner, kGmm, FeatureKind::Neighbours, 16, 0.01, 1.0},
+      {SensorGroup::Front, kTrees, kContext, 8, 0.01, 0.3, 200, 6, 3.0},
+      {SensorGroup::FrontLeftCorner, kTrees, kNeighbours, 8, 0.01, 1.0, 100, 6, 3.0},
+      {SensorGroup::Left, kTrees, kNeighbours, 8, 0.01, 0.3, 200, 6, 2.0},
+      {SensorGroup::RearLeftCorner, kGmm, kNeighbours, 16, 0.01, 1.0, 100, 4, 1.5},
+      {SensorGroup::Back, kGmm, FeatureKind::NormalShear, 4, 0.01, 0.3, 100, 4, 1.0},
+      {SensorGroup::RearRightCorner, kTrees, kContext, 8, 0.01, 0.3, 100, 4, 2.0},
+      {SensorGroup::Right, kTrees, kNeighbours, 8, 0.01, 0.1, 200, 6, 2.0},
+      {SensorGroup::FrontRightCorner, kGmm, kNeighbours, 16, 0.01, 1.0, 100, 6, 4.0},
   }};
   for (const Row& r : table) {
     const TrainSettings s = defaultTrainSettings(r.group);
-    EXPECT_EQ(s.classifier.method, r.method) << groupInfo(r.group).shortName;
-    EXPECT_EQ(s.features, r.features) << groupInfo(r.group).shortName;
-    EXPECT_EQ(s.classifier.gmm.components, r.order) << groupInfo(r.group).shortName;
-    EXPECT_DOUBLE_EQ(s.classifier.gmm.varianceFloor, r.floor) << groupInfo(r.group).shortName;
-    EXPECT_DOUBLE_EQ(defaultEmissionWeight(r.group, ClassifierMethod::Gmm), r.mixtureWeight)
-        << groupInfo(r.group).shortName;
-    EXPECT_DOUBLE_EQ(s.emissionWeight, r.method == kTrees ? 1.0 : r.mixtureWeight)
-        << groupInfo(r.group).shortName;
-    // The trees' settings are the method's defaults.
-    EXPECT_EQ(s.classifier.gbt.trees, GbtSettings{}.trees) << groupInfo(r.group).shortName;
-    EXPECT_EQ(s.classifier.gbt.depth, GbtSettings{}.depth) << groupInfo(r.group).shortName;
+    const std::string_view name = groupInfo(r.group).shortName;
+    EXPECT_EQ(s.classifier.method, r.method) << name;
+    EXPECT_EQ(s.features, r.features) << name;
+    EXPECT_EQ(s.classifier.gmm.components, r.order) << name;
+    EXPECT_DOUBLE_EQ(s.classifier.gmm.varianceFloor, r.floor) << name;
+    EXPECT_DOUBLE_EQ(defaultEmissionWeight(r.group, kGmm), r.mixtureWeight) << name;
+    EXPECT_DOUBLE_EQ(defaultEmissionWeight(r.group, kTrees), r.treeWeight) << name;
+    EXPECT_DOUBLE_EQ(s.emissionWeight, r.method == kTrees ? r.treeWeight : r.mixtureWeight) << name;
+    EXPECT_EQ(s.classifier.gbt.trees, r.trees) << name;
+    EXPECT_EQ(s.classifier.gbt.depth, r.depth) << name;
+    // Learning rate and min child weight are the method's defaults in every group.
+    EXPECT_DOUBLE_EQ(s.classifier.gbt.learningRate, GbtSettings{}.learningRate) << name;
+    EXPECT_DOUBLE_EQ(s.classifier.gbt.minChildWeight, GbtSettings{}.minChildWeight) << name;
   }
 }
 

@@ -106,6 +106,25 @@ fi
 "$T" report e.json > e.txt || fail "report exited $?"
 grep -Eq '^R +normal +gmm +nodal-diag +8 +0\.5 ' e.txt || fail "R overridden: $(cat e.txt)"
 grep -Eq '^RRC +normal +gmm +nodal-diag +8 +0\.5 ' e.txt || fail "RRC overridden: $(cat e.txt)"
+# Boosted trees: each group's own rounds, depth and evidence weight unless given; a given setting
+# applies to every group and leaves the others per group (R: 200 rounds of depth 6, RRC: 100 of
+# depth 4, as docs/learning.md#training-defaults lists them).
+"$T" train --runs runs/run_0000.csv runs/run_0001.csv --groups R,RRC --method gbt --min-rows 1 \
+  --out t.json > /dev/null 2>&1 || fail "train --method gbt exited $?"
+"$T" report t.json > t.txt || fail "report exited $?"
+grep -Eq '^R +.* gbt +trees 200, depth 6, learning rate 0\.1, min child weight 1 .*online \(evidence x 2\)$' t.txt ||
+  fail "R trees defaults: $(cat t.txt)"
+if grep -q '^RRC ' t.txt; then
+  grep -Eq '^RRC +.* gbt +trees 100, depth 4, .*online \(evidence x 2\)$' t.txt ||
+    fail "RRC trees defaults: $(cat t.txt)"
+fi
+"$T" train --runs runs/run_0000.csv runs/run_0001.csv --groups R,RRC --trees 7 --min-rows 1 \
+  --out t7.json > /dev/null 2>&1 || fail "train --trees 7 exited $?"
+"$T" report t7.json > t7.txt || fail "report exited $?"
+grep -Eq '^R +.* gbt +trees 7, depth 6, ' t7.txt || fail "R --trees 7: $(cat t7.txt)"
+if grep -q '^RRC ' t7.txt; then
+  grep -Eq '^RRC +.* gbt +trees 7, depth 4, ' t7.txt || fail "RRC --trees 7: $(cat t7.txt)"
+fi
 # --emission-weight: every group's chain weighs each step's evidence by it; the model file and
 # the report say so; a weight that is not > 0 is a usage error (exit 2).
 "$T" train --runs runs/run_0000.csv runs/run_0001.csv --groups R --emission-weight 0.25 \

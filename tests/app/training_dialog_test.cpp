@@ -201,6 +201,13 @@ void TrainingDialogTest::evidenceWeightIsEachGroupsDefaultUnlessSet() {
     QVERIFY(request.ok());
     for (const analysis::TrainSettings& s : request->settings.byGroup)
       QCOMPARE(s.emissionWeight, 0.45);
+    // Above 1 too: the trees' defaults weigh their evidence by up to 4.
+    weight->setValue(4.0);
+    QCOMPARE(weight->value(), 4.0);
+    request = dialog.trainRequest();
+    QVERIFY(request.ok());
+    for (const analysis::TrainSettings& s : request->settings.byGroup)
+      QCOMPARE(s.emissionWeight, 4.0);
   }
 }
 
@@ -453,6 +460,7 @@ void TrainingDialogTest::trainWithGroupDefaultsUsesEachGroupsOwn() {
     if (m.classifier.trees() != nullptr) {
       trees = true;
       QCOMPARE(m.provenance.classifier.gbt.trees, d.classifier.gbt.trees);
+      QCOMPARE(m.provenance.classifier.gbt.depth, d.classifier.gbt.depth);
       continue;
     }
     QCOMPARE(m.covariance, d.classifier.gmm.form);

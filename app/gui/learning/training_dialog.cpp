@@ -279,20 +279,22 @@ void TrainingDialog::buildUi() {
   groupDefaults_->setObjectName(QStringLiteral("groupDefaults"));
   groupDefaults_->setChecked(true);
   groupDefaults_->setToolTip(
-      tr("Train model uses each group's default order, covariance, floor and features, as "
-         "tactile train does; unticked, the first value of every list above"));
+      tr("Train model uses each group's default family with its settings (order, covariance and "
+         "floor, or rounds and depth), features and evidence weight, as tactile train does; "
+         "unticked, the first value of every list above"));
   form->addRow(tr("Train model with:"), groupDefaults_);
 
   emissionWeight_ = new QDoubleSpinBox;
   emissionWeight_->setObjectName(QStringLiteral("emissionWeight"));
-  emissionWeight_->setRange(0.0, 1.0);
+  emissionWeight_->setRange(0.0, 10.0);
   emissionWeight_->setSingleStep(0.05);
   emissionWeight_->setDecimals(2);
   emissionWeight_->setSpecialValueText(tr("each group's default"));
   emissionWeight_->setToolTip(
       tr("Train model: the weight of each step's evidence in the online and offline decisions "
-         "(1 is the plain HMM; smaller lets the class chain outweigh single steps), as tactile "
-         "train --emission-weight. Sweeps always use each group's default"));
+         "(1 is the plain HMM; smaller lets the class chain outweigh single steps, larger lets "
+         "a few steps outweigh the chain), as tactile train --emission-weight. Sweeps always use "
+         "each group's default for the method"));
   form->addRow(tr("Evidence weight:"), emissionWeight_);
 
   plan_ = new QLabel;
