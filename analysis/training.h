@@ -47,9 +47,9 @@ struct GroupSettings {
 GroupSettings defaultGroupSettings();
 TrainSettings defaultTrainSettings(SensorGroup group);
 // The default weight of each step's evidence in the class chain of a group's model of the given
-// method: for the mixtures, the group's chosen weight (kept with its other defaults); for boosted
-// trees 1, the plain chain: their scaled likelihoods (posterior over prior) span far fewer nats
-// than the mixtures' densities, and the mixtures' weights below 1 let the chain outweigh them.
+// method: for either family, the group's weight chosen with its other settings of that family.
+// The trees' weights are 1 or more: their scaled likelihoods (posterior over prior) span far
+// fewer nats than the mixtures' densities, whose weights are 1 or less.
 double defaultEmissionWeight(SensorGroup group, ClassifierMethod method);
 // The family a group trains with when a front end (CLI, Python) applies options to every group:
 // the method given, else the family the given options belong to (mixtureOptions: order,
