@@ -769,8 +769,8 @@ std::string modelReport(const ModelBundle& bundle, TableStyle style, std::size_t
       order = std::max(order, static_cast<int>(m.classifier.model(c).weights().size()));
     if (m.classifier.method() == ClassifierMethod::Gmm && !e.fit.empty())
       order = std::max(order, m.provenance.classifier.gmm.components);
-    std::string dropped;
-    if (!e.fit.empty()) {
+    std::string dropped;  // components dropped for lack of mass: the mixtures' figure
+    if (!e.fit.empty() && m.classifier.trees() == nullptr) {
       int sum = 0;
       for (const ClassFitRecord& f : e.fit)
         sum += f.droppedComponents;
