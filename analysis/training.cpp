@@ -93,10 +93,11 @@ struct GroupDefault {
   FeatureKind features;
   int order;  // the mixtures' settings (kept for --method gmm on a trees group)
   double floor;
-  double emissionWeight;  // of the mixtures' class chain (TransitionModel::emissionWeight)
-  int trees;          // the boosted trees' settings (kept for --method gbt on a mixtures group):
-  int depth;          // rounds and largest depth; learning rate 0.1, min child weight 1
-  double treeWeight;  // the weight of the trees' evidence in their class chain
+  double emissionWeight;     // of the mixtures' class chain (TransitionModel::emissionWeight)
+  FeatureKind treeFeatures;  // the boosted trees' settings (kept for --method gbt on a mixtures
+  int trees;                 // group): feature kind, rounds and largest depth; learning rate 0.1,
+  int depth;                 // min child weight 1
+  double treeWeight;         // the weight of the trees' evidence in their class chain
 };
 
 // Per group, the setting with the best leave-one-scene-out score (`sweep --split by-scene`) over
@@ -140,17 +141,18 @@ struct GroupDefault {
 constexpr FeatureKind kShear = FeatureKind::NormalShear;
 constexpr FeatureKind kContext = FeatureKind::Context;
 constexpr FeatureKind kNeighbours = FeatureKind::Neighbours;
+constexpr FeatureKind kMotion = FeatureKind::Motion;
 constexpr ClassifierMethod kGmm = ClassifierMethod::Gmm;
 constexpr ClassifierMethod kTrees = ClassifierMethod::Gbt;
 constexpr std::array<GroupDefault, kGroupCount> kGroupDefaults{{
-    {SensorGroup::Front, kTrees, kContext, 8, 0.01, 0.3, 200, 6, 3.0},
-    {SensorGroup::FrontLeftCorner, kTrees, kNeighbours, 8, 0.01, 1.0, 100, 6, 3.0},
-    {SensorGroup::Left, kTrees, kNeighbours, 8, 0.01, 0.3, 200, 6, 2.0},
-    {SensorGroup::RearLeftCorner, kGmm, kNeighbours, 16, 0.01, 1.0, 100, 4, 1.5},
-    {SensorGroup::Back, kGmm, kShear, 4, 0.01, 0.3, 100, 4, 1.0},
-    {SensorGroup::RearRightCorner, kTrees, kContext, 8, 0.01, 0.3, 100, 4, 2.0},
-    {SensorGroup::Right, kTrees, kNeighbours, 8, 0.01, 0.1, 200, 6, 2.0},
-    {SensorGroup::FrontRightCorner, kGmm, kNeighbours, 16, 0.01, 1.0, 100, 6, 4.0},
+    {SensorGroup::Front, kTrees, kContext, 8, 0.01, 0.3, kNeighbours, 200, 6, 3.0},
+    {SensorGroup::FrontLeftCorner, kTrees, kNeighbours, 8, 0.01, 1.0, kNeighbours, 100, 6, 3.0},
+    {SensorGroup::Left, kTrees, kNeighbours, 8, 0.01, 0.3, kContext, 200, 6, 2.0},
+    {SensorGroup::RearLeftCorner, kGmm, kNeighbours, 16, 0.01, 1.0, kContext, 100, 4, 1.5},
+    {SensorGroup::Back, kTrees, kShear, 4, 0.01, 0.3, kMotion, 100, 4, 1.0},
+    {SensorGroup::RearRightCorner, kTrees, kContext, 8, 0.01, 0.3, kContext, 100, 4, 2.0},
+    {SensorGroup::Right, kTrees, kNeighbours, 8, 0.01, 0.1, kNeighbours, 200, 6, 2.0},
+    {SensorGroup::FrontRightCorner, kTrees, kNeighbours, 16, 0.01, 1.0, kMotion, 100, 6, 4.0},
 }};
 
 constexpr bool inGroupOrder() {
@@ -165,7 +167,7 @@ static_assert(inGroupOrder(), "kGroupDefaults lists the groups in groupIndex() o
 TrainSettings defaultTrainSettings(SensorGroup group) {
   const GroupDefault& d = kGroupDefaults[static_cast<std::size_t>(groupIndex(group))];
   TrainSettings s;
-  s.features = d.features;
+  s.features = defaultFeatures(group, d.method);
   s.classifier.method = d.method;
   s.classifier.gmm.form = CovarianceForm::NodalFull;
   s.classifier.gmm.components = d.order;
@@ -175,6 +177,11 @@ TrainSettings defaultTrainSettings(SensorGroup group) {
   s.classifier.gbt.depth = d.depth;
   s.emissionWeight = defaultEmissionWeight(group, d.method);
   return s;
+}
+
+FeatureKind defaultFeatures(SensorGroup group, ClassifierMethod method) {
+  const GroupDefault& d = kGroupDefaults[static_cast<std::size_t>(groupIndex(group))];
+  return method == ClassifierMethod::Gbt ? d.treeFeatures : d.features;
 }
 
 double defaultEmissionWeight(SensorGroup group, ClassifierMethod method) {

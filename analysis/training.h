@@ -46,6 +46,9 @@ struct GroupSettings {
 // online decision (docs/learning.md#training-defaults).
 GroupSettings defaultGroupSettings();
 TrainSettings defaultTrainSettings(SensorGroup group);
+// The default feature kind of a group's model of the given method: for either family, the kind
+// chosen with its other settings of that family.
+FeatureKind defaultFeatures(SensorGroup group, ClassifierMethod method);
 // The default weight of each step's evidence in the class chain of a group's model of the given
 // method: for either family, the group's weight chosen with its other settings of that family.
 // The trees' weights are 1 or more: their scaled likelihoods (posterior over prior) span far

@@ -376,13 +376,14 @@ analysis::GroupSettings trainSettings(const TrainArgs& a) {
     if (!a.given.learningRate) o.gbt.learningRate = s.classifier.gbt.learningRate;
     if (!a.given.minChildWeight) o.gbt.minChildWeight = s.classifier.gbt.minChildWeight;
     s.classifier = o;
-    if (!a.features.empty()) s.features = parseFeatures(a.features);
+    // The method brings its own default features and weight of the chain's evidence.
+    s.features =
+        a.features.empty() ? analysis::defaultFeatures(g, o.method) : parseFeatures(a.features);
     const auto decision = analysis::parseDecisionMode(a.decision);
     if (!decision || !analysis::isCausal(*decision)) {
       throw UsageError("--decision must be online or step (a model's default decision is causal)");
     }
     s.decision = *decision;
-    // The method brings its own default weight of the chain's evidence.
     s.emissionWeight = analysis::defaultEmissionWeight(g, o.method);
     if (a.emissionWeight) {
       checkNumberOption("--emission-weight", *a.emissionWeight, 0.0, RangeEnd::Open, HUGE_VAL,

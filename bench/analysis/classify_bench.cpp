@@ -54,6 +54,7 @@ const BenchData& benchData() {
     for (const GroupInfo& info : kSensorGroups) {
       TrainSettings& s = job.settings.of(info.group);
       s.classifier.method = ClassifierMethod::Gbt;
+      s.features = defaultFeatures(info.group, ClassifierMethod::Gbt);
       s.emissionWeight = defaultEmissionWeight(info.group, ClassifierMethod::Gbt);
     }
     auto trees = trainAndEvaluate(job);

@@ -499,8 +499,9 @@ analysis::GroupSettings trainSettings(const TrainArgs& a) {
     if (a.reg) {
       o.gmm.reg = parsed<analysis::Regularization>(*a.reg, analysis::parseRegularization, "reg");
     }
-    if (a.features) s.features = parseKind(*a.features);
-    // The method brings its own default weight of the chain's evidence.
+    // The method brings its own default features and weight of the chain's evidence.
+    s.features =
+        a.features ? parseKind(*a.features) : analysis::defaultFeatures(info.group, o.method);
     s.emissionWeight = analysis::defaultEmissionWeight(info.group, o.method);
     if (a.emissionWeight) {
       if (!std::isfinite(*a.emissionWeight) || *a.emissionWeight <= 0.0)

@@ -132,6 +132,7 @@ TEST(Training, DefaultsAreTheDocumentedTable) {
     int order;
     double floor;
     double mixtureWeight;
+    FeatureKind treeFeatures;
     int trees;
     int depth;
     double treeWeight;
@@ -140,21 +141,25 @@ TEST(Training, DefaultsAreTheDocumentedTable) {
   constexpr ClassifierMethod kGmm = ClassifierMethod::Gmm;
   constexpr FeatureKind kContext = FeatureKind::Context;
   constexpr FeatureKind kNeighbours = FeatureKind::Neighbours;
+  constexpr FeatureKind kMotion = FeatureKind::Motion;
   const std::array<Row, 8> table{{
-      {SensorGroup::Front, kTrees, kContext, 8, 0.01, 0.3, 200, 6, 3.0},
-      {SensorGroup::FrontLeftCorner, kTrees, kNeighbours, 8, 0.01, 1.0, 100, 6, 3.0},
-      {SensorGroup::Left, kTrees, kNeighbours, 8, 0.01, 0.3, 200, 6, 2.0},
-      {SensorGroup::RearLeftCorner, kGmm, kNeighbours, 16, 0.01, 1.0, 100, 4, 1.5},
-      {SensorGroup::Back, kGmm, FeatureKind::NormalShear, 4, 0.01, 0.3, 100, 4, 1.0},
-      {SensorGroup::RearRightCorner, kTrees, kContext, 8, 0.01, 0.3, 100, 4, 2.0},
-      {SensorGroup::Right, kTrees, kNeighbours, 8, 0.01, 0.1, 200, 6, 2.0},
-      {SensorGroup::FrontRightCorner, kGmm, kNeighbours, 16, 0.01, 1.0, 100, 6, 4.0},
+      {SensorGroup::Front, kTrees, kContext, 8, 0.01, 0.3, kNeighbours, 200, 6, 3.0},
+      {SensorGroup::FrontLeftCorner, kTrees, kNeighbours, 8, 0.01, 1.0, kNeighbours, 100, 6, 3.0},
+      {SensorGroup::Left, kTrees, kNeighbours, 8, 0.01, 0.3, kContext, 200, 6, 2.0},
+      {SensorGroup::RearLeftCorner, kGmm, kNeighbours, 16, 0.01, 1.0, kContext, 100, 4, 1.5},
+      {SensorGroup::Back, kTrees, FeatureKind::NormalShear, 4, 0.01, 0.3, kMotion, 100, 4, 1.0},
+      {SensorGroup::RearRightCorner, kTrees, kContext, 8, 0.01, 0.3, kContext, 100, 4, 2.0},
+      {SensorGroup::Right, kTrees, kNeighbours, 8, 0.01, 0.1, kNeighbours, 200, 6, 2.0},
+      {SensorGroup::FrontRightCorner, kTrees, kNeighbours, 16, 0.01, 1.0, kMotion, 100, 6, 4.0},
   }};
   for (const Row& r : table) {
     const TrainSettings s = defaultTrainSettings(r.group);
     const std::string_view name = groupInfo(r.group).shortName;
     EXPECT_EQ(s.classifier.method, r.method) << name;
-    EXPECT_EQ(s.features, r.features) << name;
+    // Each family has its own feature kind; the default model takes its family's.
+    EXPECT_EQ(defaultFeatures(r.group, kGmm), r.features) << name;
+    EXPECT_EQ(defaultFeatures(r.group, kTrees), r.treeFeatures) << name;
+    EXPECT_EQ(s.features, r.method == kTrees ? r.treeFeatures : r.features) << name;
     EXPECT_EQ(s.classifier.gmm.components, r.order) << name;
     EXPECT_DOUBLE_EQ(s.classifier.gmm.varianceFloor, r.floor) << name;
     EXPECT_DOUBLE_EQ(defaultEmissionWeight(r.group, kGmm), r.mixtureWeight) << name;

@@ -93,6 +93,7 @@ grep -Eq '^R +normal\+shear\+touch\+context\+neighbours +gmm +nodal-full +4 +0\.
 # RRC's and FRC's defaults may need more rows per class than these short runs have; when they
 # train, they keep their own feature kind, floor and evidence weight (RRC's kind,
 # normal+shear+touch+context, differs from R's neighbours features; FRC's weight, 1, from R's 0.1).
+# FRC's default family is trees: --order 4 makes it mixtures, with the mixtures' own features.
 if grep -q '^RRC ' d.txt; then
   grep -Eq '^RRC +normal\+shear\+touch\+context +gmm +nodal-full +4 +0\.01 .*online \(evidence x 0\.3\)$' d.txt ||
     fail "RRC defaults: $(cat d.txt)"
@@ -106,17 +107,22 @@ fi
 "$T" report e.json > e.txt || fail "report exited $?"
 grep -Eq '^R +normal +gmm +nodal-diag +8 +0\.5 ' e.txt || fail "R overridden: $(cat e.txt)"
 grep -Eq '^RRC +normal +gmm +nodal-diag +8 +0\.5 ' e.txt || fail "RRC overridden: $(cat e.txt)"
-# Boosted trees: each group's own rounds, depth and evidence weight unless given; a given setting
-# applies to every group and leaves the others per group (R: 200 rounds of depth 6, RRC: 100 of
-# depth 4, as docs/learning.md#training-defaults lists them).
-"$T" train --runs runs/run_0000.csv runs/run_0001.csv --groups R,RRC --method gbt --min-rows 1 \
+# Boosted trees: each group's own features, rounds, depth and evidence weight unless given; a given
+# setting applies to every group and leaves the others per group (R: 200 rounds of depth 6; RRC:
+# 100 of depth 4 and the context features; FRC: the motion features, not its mixtures'
+# neighbours; as docs/learning.md#training-defaults lists them).
+"$T" train --runs runs/run_0000.csv runs/run_0001.csv --groups R,RRC,FRC --method gbt --min-rows 1 \
   --out t.json > /dev/null 2>&1 || fail "train --method gbt exited $?"
 "$T" report t.json > t.txt || fail "report exited $?"
-grep -Eq '^R +.* gbt +trees 200, depth 6, learning rate 0\.1, min child weight 1 .*online \(evidence x 2\)$' t.txt ||
+grep -Eq '^R +normal\+shear\+touch\+context\+neighbours +gbt +trees 200, depth 6, learning rate 0\.1, min child weight 1 .*online \(evidence x 2\)$' t.txt ||
   fail "R trees defaults: $(cat t.txt)"
 if grep -q '^RRC ' t.txt; then
-  grep -Eq '^RRC +.* gbt +trees 100, depth 4, .*online \(evidence x 2\)$' t.txt ||
+  grep -Eq '^RRC +normal\+shear\+touch\+context +gbt +trees 100, depth 4, .*online \(evidence x 2\)$' t.txt ||
     fail "RRC trees defaults: $(cat t.txt)"
+fi
+if grep -q '^FRC ' t.txt; then
+  grep -Eq '^FRC +normal\+shear\+touch\+motion +gbt +trees 100, depth 6, .*online \(evidence x 4\)$' t.txt ||
+    fail "FRC trees defaults: $(cat t.txt)"
 fi
 "$T" train --runs runs/run_0000.csv runs/run_0001.csv --groups R,RRC --trees 7 --min-rows 1 \
   --out t7.json > /dev/null 2>&1 || fail "train --trees 7 exited $?"

@@ -56,7 +56,9 @@ def test_classify_equals_the_cli(cli, trained):
 
 def test_estimator_predicts_as_the_trained_model(trained):
     """GmmClassifier fitted on the rows training fitted gives the stored model's step decisions."""
-    _, _, db, result = trained
+    _, _, db, _ = trained
+    # Mixtures in every group (the defaults train trees in most groups).
+    result = tactile.train(db, set="truth", name="g", method="gmm", random_state=1, store=False)
     model = result.model
     group = next(g for g in model.groups if len(g["classes"]) >= 2 and g["method"] == "gmm")
     name = group["group"]
@@ -121,3 +123,24 @@ def test_sweep_is_a_dataframe_of_stored_cells(db_copy):
     assert len(sweeps) == before + 1
     assert int(sweeps["cells"].iloc[-1]) == 8
     assert cells.attrs["sweep"] == int(sweeps["id"].iloc[-1])
+
+
+def test_trees_take_their_own_features_as_the_cli(cli, demo, tmp_path):
+    """method="gbt" trains each group's trees with the trees' own default features (F: the
+    neighbours, its mixtures: context), rounds, depth and evidence weight, as `tactile train
+    --method gbt` does for the same database and seed."""
+    for name in ("cli.db", "py.db"):
+        (tmp_path / name).write_bytes((demo / "demo.db").read_bytes())
+    cli_report = json.loads(run_cli(cli, "train", "--db", str(tmp_path / "cli.db"), "--set",
+                                    "truth", "--name", "t", "--method", "gbt", "--groups", "F",
+                                    "--seed", "1", "--json"))
+    result = tactile.train(tactile.open(tmp_path / "py.db"), set="truth", name="t",
+                           method="gbt", groups=["F"], random_state=1)
+    assert without_times(result.report) == without_times(cli_report)
+    group = next(g for g in result.model.groups if g["group"] == "F")
+    assert group["method"] == "gbt"
+    assert group["features"] == "normal+shear+touch+context+neighbours"
+    mixtures = tactile.train(tactile.open(tmp_path / "py.db"), set="truth", name="m",
+                             method="gmm", groups=["F"], random_state=1, store=False)
+    assert next(g for g in mixtures.model.groups
+                if g["group"] == "F")["features"] == "normal+shear+touch+context"
