@@ -920,7 +920,8 @@ void registerLearnVerbs(CLI::App& app, CLI::App& /*bench*/) {
                     "normal, magnitude, normal+shear, normal+shear+touch, "
                     "normal+shear+touch+context, normal+shear+touch+context+neighbours, "
                     "normal+shear+touch+motion or normal+shear+touch+motion+neighbours "
-                    "(default: each group's own)");
+                    "(default: each group's own for the method: the mixtures and the trees have "
+                    "kinds of their own)");
     cmd->add_option("--decision", args->decision,
                     "The models' default decision: online (HMM forward filter, causal) or step "
                     "(per-step argmax); scores are given for step, online and offline either way")
