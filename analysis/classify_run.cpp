@@ -66,6 +66,8 @@ struct GroupPass {
   Eigen::MatrixXd ll;  // kDensityBlockRows x classes
   GaussianMixture::BlockScratch scratch;
   Eigen::MatrixXd treeScores;  // a block's scaled likelihoods from trees
+  // The contact steps' log-likelihoods so far, a row of `classes` values per step, in step order.
+  std::vector<double> rows;
 
   void evaluate() {
     const Eigen::Index rows = static_cast<Eigen::Index>(blockSteps.size());
@@ -80,7 +82,6 @@ struct GroupPass {
                                               ll.col(c).data(), scratch);
     }
     const Eigen::VectorXd& logPriors = classifier.logPriors();
-    Eigen::MatrixXd& target = out->logLikelihoods;
     for (Eigen::Index i = 0; i < rows; ++i) {
       const auto t = static_cast<Eigen::Index>(blockSteps[static_cast<std::size_t>(i)]);
       // The argmax of ClassModelSet::predictFromLogLikelihoods: strict, so ties keep the lowest
@@ -89,7 +90,7 @@ struct GroupPass {
       double bestScore = -std::numeric_limits<double>::infinity();
       for (int c = 0; c < classes; ++c) {
         const double v = ll(i, c);
-        target(t, c) = v;
+        this->rows.push_back(v);
         const double score = v + logPriors(c);
         if (score > bestScore) {
           bestScore = score;
@@ -122,8 +123,6 @@ RunClassification classifyRun(const RunData& run, const ModelBundle& bundle,
       p.kind = go.model->features;
       p.dims = featureDimension(info.group, p.kind);
       p.classes = go.model->classifier.classCount();
-      go.logLikelihoods = Eigen::MatrixXd::Constant(static_cast<Eigen::Index>(steps), p.classes,
-                                                    -std::numeric_limits<double>::infinity());
       p.block.resize(kDensityBlockRows, p.dims);
       p.blockSteps.reserve(static_cast<std::size_t>(kDensityBlockRows));
       p.row.resize(static_cast<std::size_t>(p.dims));
@@ -177,8 +176,16 @@ RunClassification classifyRun(const RunData& run, const ModelBundle& bundle,
       }
     }
   }
-  for (GroupPass& p : passes)
-    if (p.out->model != nullptr) p.evaluate();
+  for (GroupPass& p : passes) {
+    if (p.out->model == nullptr) continue;
+    p.evaluate();
+    const auto contactRows =
+        p.classes > 0 ? static_cast<Eigen::Index>(p.rows.size()) / p.classes : 0;
+    p.out->logLikelihoods =
+        Eigen::Map<const Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>>(
+            p.rows.data(), contactRows, p.classes);
+    std::vector<double>().swap(p.rows);
+  }
 
   for (const GroupInfo& info : kSensorGroups) {
     GroupClassification& go = out.groups[static_cast<std::size_t>(groupIndex(info.group))];

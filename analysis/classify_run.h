@@ -41,7 +41,9 @@ struct GroupClassification {
   const GroupModel* model = nullptr;          // null: the bundle has no model for the group
   std::vector<std::uint8_t> noContactRule;    // 1 where every value is zero (NoContact by rule)
   std::vector<std::optional<int>> predicted;  // class index into model->classes; contact steps
-  Eigen::MatrixXd logLikelihoods;             // steps x classes; -inf on rule steps
+  // A row of per-class log-likelihoods for each contact step (noContactRule 0), in step order:
+  // contact steps x classes (StepLikelihoods' compact layout).
+  Eigen::MatrixXd logLikelihoods;
   Decisions decided;         // the chosen decision (steps entries when a model exists)
   std::string decisionName;  // "step", "online", "offline", or the temporal rule's name
   Decisions online;          // with allDecisions: the forward filter's decisions

@@ -20,6 +20,37 @@ bool isObserved(const StepLikelihoods& steps, Eigen::Index t) {
   return i < steps.observed.size() ? steps.observed[i] != 0 : true;
 }
 
+// Whether the likelihoods can be read: a compact layout needs a row for every observed step.
+bool readable(const StepLikelihoods& steps) {
+  if (!steps.compact()) return true;
+  const auto observed = std::count_if(steps.observed.begin(), steps.observed.end(),
+                                      [](std::uint8_t o) { return o != 0; });
+  return static_cast<Eigen::Index>(observed) == steps.logLik.rows();
+}
+
+// The row of logLik that holds an observed step's likelihoods, for a walk over the steps in order
+// (forward, or backward with Backward): compact layouts count the observed steps walked.
+class RowWalk {
+ public:
+  enum Direction { Forward, Backward };
+  RowWalk(const StepLikelihoods& steps, Direction direction)
+      : compact_(steps.compact()),
+        direction_(direction),
+        next_(direction == Forward ? 0 : steps.logLik.rows() - 1) {}
+  // Called once for each observed step t, in the walk's order.
+  Eigen::Index rowOf(Eigen::Index t) {
+    if (!compact_) return t;
+    const Eigen::Index row = next_;
+    next_ += direction_ == Forward ? 1 : -1;
+    return row;
+  }
+
+ private:
+  bool compact_;
+  Direction direction_;
+  Eigen::Index next_;
+};
+
 // Index of the largest finite-or-not entry, ties to the lowest index; 0 when all are -inf/NaN.
 int argmaxOf(const Eigen::Ref<const Eigen::VectorXd>& v) {
   int best = 0;
@@ -42,6 +73,14 @@ Eigen::VectorXd logPosteriorOf(const Eigen::Ref<const Eigen::VectorXd>& logLik,
 
 }  // namespace
 
+Eigen::Index StepLikelihoods::steps() const {
+  return std::max(static_cast<Eigen::Index>(observed.size()), logLik.rows());
+}
+
+bool StepLikelihoods::compact() const {
+  return static_cast<Eigen::Index>(observed.size()) > logLik.rows();
+}
+
 double logSumExp(const Eigen::Ref<const Eigen::VectorXd>& v) {
   // Plain loops: GCC 12 reports a false maybe-uninitialized inside Eigen's AVX-512 reductions.
   if (v.size() == 0) return kNegInf;
@@ -57,10 +96,13 @@ double logSumExp(const Eigen::Ref<const Eigen::VectorXd>& v) {
 
 Decisions argmaxDecisions(const StepLikelihoods& steps) {
   const Eigen::VectorXd priors = priorsOf(steps);
-  Decisions out(static_cast<std::size_t>(steps.logLik.rows()));
-  for (Eigen::Index t = 0; t < steps.logLik.rows(); ++t) {
-    if (!isObserved(steps, t) || steps.logLik.cols() == 0) continue;
-    out[static_cast<std::size_t>(t)] = argmaxOf(steps.logLik.row(t).transpose() + priors);
+  Decisions out(static_cast<std::size_t>(steps.steps()));
+  if (steps.logLik.cols() == 0 || !readable(steps)) return out;
+  RowWalk rows(steps, RowWalk::Forward);
+  for (Eigen::Index t = 0; t < steps.steps(); ++t) {
+    if (!isObserved(steps, t)) continue;
+    out[static_cast<std::size_t>(t)] =
+        argmaxOf(steps.logLik.row(rows.rowOf(t)).transpose() + priors);
   }
   return out;
 }
@@ -90,11 +132,12 @@ Decisions consecutiveCountDecisions(const StepLikelihoods& steps, int requiredCo
 
 Decisions summedLogProbabilityDecisions(const StepLikelihoods& steps, double thresholdNats,
                                         int window) {
-  const Eigen::Index n = steps.logLik.rows();
+  const Eigen::Index n = steps.steps();
   const Eigen::Index c = steps.logLik.cols();
   const Eigen::VectorXd priors = priorsOf(steps);
   Decisions out(static_cast<std::size_t>(n));
-  if (c == 0) return out;
+  if (c == 0 || !readable(steps)) return out;
+  RowWalk rows(steps, RowWalk::Forward);
   // Per-step log posteriors of the current episode, kept for the sliding window.
   std::vector<Eigen::VectorXd> episode;
   Eigen::VectorXd sum = Eigen::VectorXd::Zero(c);
@@ -104,7 +147,7 @@ Decisions summedLogProbabilityDecisions(const StepLikelihoods& steps, double thr
       sum.setZero();
       continue;
     }
-    episode.push_back(logPosteriorOf(steps.logLik.row(t).transpose(), priors));
+    episode.push_back(logPosteriorOf(steps.logLik.row(rows.rowOf(t)).transpose(), priors));
     sum += episode.back();
     if (window > 0 && static_cast<int>(episode.size()) > window) {
       // Recompute rather than subtract, so that -inf terms leaving the window do not leave NaN.
@@ -226,11 +269,12 @@ namespace {
 
 // The evidence of one step: its log-likelihoods, or no evidence (zeros) when every class is -inf
 // (or NaN), so that the chain alone carries the belief through an underflowing step.
-// Writes step t's evidence into `l` (sized already: no allocation per step).
-void evidenceInto(const StepLikelihoods& steps, Eigen::Index t, double weight, Eigen::VectorXd& l) {
+// Writes the evidence of logLik's row `row` into `l` (sized already: no allocation per step).
+void evidenceInto(const StepLikelihoods& steps, Eigen::Index row, double weight,
+                  Eigen::VectorXd& l) {
   bool any = false;
   for (Eigen::Index j = 0; j < l.size(); ++j) {
-    const double v = steps.logLik(t, j);
+    const double v = steps.logLik(row, j);
     l[j] = std::isnan(v) ? kNegInf : weight * v;
     any = any || l[j] > kNegInf;
   }
@@ -277,7 +321,8 @@ double logSumExpOf(const double* v, Eigen::Index n) {
 // of the plain formulation. Fills decisions (n entries) and, when logPosterior is given, its rows.
 void forwardPass(const StepLikelihoods& steps, const TransitionModel& chain,
                  Eigen::MatrixXd* logPosterior, Decisions& decisions) {
-  const Eigen::Index n = steps.logLik.rows();
+  const Eigen::Index n = steps.steps();
+  const Eigen::Index rowCount = steps.logLik.rows();
   const Eigen::Index c = steps.logLik.cols();
   const auto cs = static_cast<std::size_t>(c);
   // A(i, j) at a[i * c + j]: the cached probabilities, or exp of the logs as hmmPredict takes them.
@@ -296,11 +341,13 @@ void forwardPass(const StepLikelihoods& steps, const TransitionModel& chain,
   double* weights = joint + c;    // exp(alpha - max alpha)
   const double* logLik = steps.logLik.data();
   bool episode = false;  // whether alpha belongs to the current contact episode
+  RowWalk rows(steps, RowWalk::Forward);
   for (Eigen::Index t = 0; t < n; ++t) {
     if (!isObserved(steps, t)) {
       episode = false;
       continue;
     }
+    const Eigen::Index row = rows.rowOf(t);
     if (!episode) {
       for (Eigen::Index j = 0; j < c; ++j)
         predicted[j] = chain.logInitial[j];
@@ -320,7 +367,7 @@ void forwardPass(const StepLikelihoods& steps, const TransitionModel& chain,
     // The evidence, weighted (zeros when every class is -inf or NaN), then the prediction added.
     bool any = false;
     for (Eigen::Index j = 0; j < c; ++j) {
-      const double v = logLik[t + j * n];
+      const double v = logLik[row + j * rowCount];
       joint[j] = std::isnan(v) ? kNegInf : weight * v;
       any = any || joint[j] > kNegInf;
     }
@@ -354,31 +401,33 @@ void forwardPass(const StepLikelihoods& steps, const TransitionModel& chain,
 }  // namespace
 
 HmmFilterResult hmmForward(const StepLikelihoods& steps, const TransitionModel& chain) {
-  const Eigen::Index n = steps.logLik.rows();
+  const Eigen::Index n = steps.steps();
   const Eigen::Index c = steps.logLik.cols();
   HmmFilterResult result;
   result.logPosterior = Eigen::MatrixXd::Constant(n, c, kNegInf);
   result.decisions.resize(static_cast<std::size_t>(n));
-  if (c == 0 || chain.classCount() != c) return result;
+  if (c == 0 || chain.classCount() != c || !readable(steps)) return result;
   forwardPass(steps, chain, &result.logPosterior, result.decisions);
   return result;
 }
 
 Decisions hmmForwardDecisions(const StepLikelihoods& steps, const TransitionModel& chain) {
   const Eigen::Index c = steps.logLik.cols();
-  Decisions decisions(static_cast<std::size_t>(steps.logLik.rows()));
-  if (c == 0 || chain.classCount() != c) return decisions;
+  Decisions decisions(static_cast<std::size_t>(steps.steps()));
+  if (c == 0 || chain.classCount() != c || !readable(steps)) return decisions;
   forwardPass(steps, chain, nullptr, decisions);
   return decisions;
 }
 
 HmmFilterResult hmmForwardBackward(const StepLikelihoods& steps, const TransitionModel& chain) {
   HmmFilterResult result = hmmForward(steps, chain);
-  const Eigen::Index n = steps.logLik.rows();
+  const Eigen::Index n = steps.steps();
   const Eigen::Index c = steps.logLik.cols();
-  if (c == 0 || chain.classCount() != c) return result;
+  if (c == 0 || chain.classCount() != c || !readable(steps)) return result;
   Eigen::VectorXd beta(c), next(c), terms(c), message(c);
   bool haveNext = false;  // whether step t+1 belongs to the same episode
+  RowWalk rows(steps, RowWalk::Backward);
+  Eigen::Index nextRow = 0;  // the row of step t+1 when haveNext
   // Backwards over the steps: beta_t(i) = logsumexp_j(logA(i, j) + l_{t+1}(j) + beta_{t+1}(j)),
   // normalised at every step (any per-step constant cancels in gamma).
   for (Eigen::Index t = n - 1; t >= 0; --t) {
@@ -386,11 +435,12 @@ HmmFilterResult hmmForwardBackward(const StepLikelihoods& steps, const Transitio
       haveNext = false;
       continue;
     }
+    const Eigen::Index row = rows.rowOf(t);
     if (!haveNext) {
       beta.setZero();
     } else {
       // beta_t(i) = mm + log(sum_j A(i, j) exp(message_j - mm)), mm = max message.
-      evidenceInto(steps, t + 1, chain.emissionWeight, message);
+      evidenceInto(steps, nextRow, chain.emissionWeight, message);
       message += next;
       double mm = kNegInf;
       for (Eigen::Index j = 0; j < c; ++j)
@@ -417,6 +467,7 @@ HmmFilterResult hmmForwardBackward(const StepLikelihoods& steps, const Transitio
     result.logPosterior.row(t) = gamma.transpose();
     result.decisions[static_cast<std::size_t>(t)] = argmaxOf(gamma);
     next = beta;
+    nextRow = row;
     haveNext = true;
   }
   return result;

@@ -19,13 +19,23 @@
 
 namespace tactile::analysis {
 
-// Per-step observations of one group over a run: logLik(t, c) = log p(x_t | class c) (N x C,
-// classes in the model's order), and observed[t] = 0 where the group had no contact (that row of
-// logLik is ignored). Log priors (C entries, or empty for equal) are added to each step.
+// Per-step observations of one group over a run: observed[t] = 0 where the group had no contact,
+// and the log-likelihoods log p(x_t | class c) (classes in the model's order) in one of two
+// layouts:
+//  - a row per step: logLik is N x C, logLik(t, c), the rows of unobserved steps ignored;
+//  - compact: a row per observed step, in step order (a run's contact steps are few: classifyRun
+//    keeps only theirs). The layout is compact when `observed` has more entries than logLik has
+//    rows; its rows must then number the observed steps, else no decider decides any step.
+// Log priors (C entries, or empty for equal) are added to each step.
 struct StepLikelihoods {
   Eigen::MatrixXd logLik;
   std::vector<std::uint8_t> observed;
   Eigen::VectorXd logPriors;
+
+  // The number of steps N.
+  Eigen::Index steps() const;
+  // True when logLik holds a row per observed step only.
+  bool compact() const;
 };
 
 // A per-step decision: class index, or nullopt while undecided / without contact.

@@ -778,10 +778,9 @@ int printClassification(const ClassifyArgs& a, const analysis::RunClassification
         json ll = json::object();
         for (int c = 0; c < go.model->classifier.classCount(); ++c) {
           json col = json::array();
+          Eigen::Index row = 0;  // the contact steps' rows, in step order
           for (std::size_t t = 0; t < steps; ++t) {
-            col.push_back(go.noContactRule[t]
-                              ? json(nullptr)
-                              : json(go.logLikelihoods(static_cast<Eigen::Index>(t), c)));
+            col.push_back(go.noContactRule[t] ? json(nullptr) : json(go.logLikelihoods(row++, c)));
           }
           ll[go.model->classifier.classNames()[static_cast<std::size_t>(c)]] = std::move(col);
         }
@@ -806,22 +805,23 @@ int printClassification(const ClassifyArgs& a, const analysis::RunClassification
   for (std::string_view n : kContactClassNames)
     csv += ",loglik_" + std::string(n);
   csv += ",decision,step_class\n";
+  std::array<Eigen::Index, kGroupCount> rows{};  // each group's next contact row
   for (std::size_t t = 0; t < steps; ++t) {
     for (const GroupInfo& info : kSensorGroups) {
-      const analysis::GroupClassification& go =
-          result.groups[static_cast<std::size_t>(groupIndex(info.group))];
+      const auto g = static_cast<std::size_t>(groupIndex(info.group));
+      const analysis::GroupClassification& go = result.groups[g];
       csv += std::to_string(t) + "," + std::string(info.shortName) + "," + go.className(t) + "," +
              (go.noContactRule[t] ? "1" : "0");
+      const bool scored = go.model != nullptr && !go.noContactRule[t];
       for (int c = 0; c < kContactClassCount; ++c) {
         csv += ",";
-        if (go.model == nullptr || go.noContactRule[t]) continue;
+        if (!scored) continue;
         for (std::size_t k = 0; k < go.model->classes.size(); ++k) {
-          if (static_cast<int>(go.model->classes[k]) == c) {
-            csv += dumpJson(json(
-                go.logLikelihoods(static_cast<Eigen::Index>(t), static_cast<Eigen::Index>(k))));
-          }
+          if (static_cast<int>(go.model->classes[k]) == c)
+            csv += dumpJson(json(go.logLikelihoods(rows[g], static_cast<Eigen::Index>(k))));
         }
       }
+      if (scored) ++rows[g];
       csv += "," + go.decisionName + "," + go.stepClassName(t) + "\n";
     }
   }

@@ -414,6 +414,76 @@ TEST(Hmm, UnderflowingStepAndForbiddingChainStayFinite) {
   }
 }
 
+// The compact layout (a row per observed step) decides exactly what the row-per-step layout does,
+// for every decider, with episodes at the run's start and end, single steps, an underflowing
+// step and weighted evidence; a compact layout short of a row decides nothing.
+TEST(Hmm, CompactLikelihoodsDecideAsARowPerStep) {
+  for (unsigned seed = 1; seed <= 6; ++seed) {
+    const int c = 2 + static_cast<int>(seed % 3);
+    const int n = 400;
+    StepLikelihoods full = randomSteps(n, c, seed);
+    std::srand(seed * 7919u);
+    for (int t = 0; t < n; ++t)
+      full.observed[static_cast<std::size_t>(t)] = (std::rand() % 5 == 0) ? 0 : 1;
+    full.observed[static_cast<std::size_t>(n - 1)] = seed % 2;  // an episode at the end, or not
+    full.observed[0] = 1;
+    for (int j = 0; j < c; ++j)
+      full.logLik(7, j) = -kInf;  // an underflowing step (observed or not)
+    full.logPriors = Eigen::VectorXd::Constant(c, -std::log(static_cast<double>(c)));
+    full.logPriors[0] += 0.1;
+    StepLikelihoods compact;
+    compact.observed = full.observed;
+    compact.logPriors = full.logPriors;
+    std::vector<Eigen::Index> rows;
+    for (int t = 0; t < n; ++t)
+      if (full.observed[static_cast<std::size_t>(t)]) rows.push_back(t);
+    compact.logLik.resize(static_cast<Eigen::Index>(rows.size()), c);
+    for (std::size_t r = 0; r < rows.size(); ++r)
+      compact.logLik.row(static_cast<Eigen::Index>(r)) = full.logLik.row(rows[r]);
+    // Rows of unobserved steps in the full layout are ignored: make them noise.
+    for (int t = 0; t < n; ++t)
+      if (!full.observed[static_cast<std::size_t>(t)]) full.logLik.row(t).setConstant(123.0);
+    ASSERT_TRUE(compact.compact());
+    ASSERT_FALSE(full.compact());
+    ASSERT_EQ(compact.steps(), n);
+
+    TransitionModel chain = randomChain(c, seed);
+    chain.emissionWeight = 0.5 + 0.5 * static_cast<double>(seed % 3);
+    EXPECT_EQ(argmaxDecisions(compact), argmaxDecisions(full)) << seed;
+    EXPECT_EQ(consecutiveCountDecisions(compact, 3), consecutiveCountDecisions(full, 3)) << seed;
+    EXPECT_EQ(summedLogProbabilityDecisions(compact, 2.0, 4),
+              summedLogProbabilityDecisions(full, 2.0, 4))
+        << seed;
+    for (DecisionMode mode : kDecisionModes)
+      EXPECT_EQ(decide(compact, chain, mode), decide(full, chain, mode)) << seed;
+    const HmmFilterResult a = hmmForwardBackward(compact, chain);
+    const HmmFilterResult b = hmmForwardBackward(full, chain);
+    EXPECT_EQ(a.decisions, b.decisions) << seed;
+    ASSERT_EQ(a.logPosterior.rows(), n);
+    for (int t = 0; t < n; ++t)
+      for (int j = 0; j < c; ++j)
+        if (full.observed[static_cast<std::size_t>(t)]) {
+          ASSERT_EQ(a.logPosterior(t, j), b.logPosterior(t, j)) << seed << " t " << t;
+        } else {
+          ASSERT_EQ(a.logPosterior(t, j), -kInf);
+        }
+    std::size_t decided = 0;
+    for (const auto& d : a.decisions)
+      decided += d.has_value() ? 1 : 0;
+    EXPECT_EQ(decided, rows.size());
+
+    // One row short: nothing is decided, nothing is read past the end.
+    StepLikelihoods shortOfOne = compact;
+    shortOfOne.logLik.conservativeResize(compact.logLik.rows() - 1, c);
+    for (DecisionMode mode : kDecisionModes) {
+      const Decisions d = decide(shortOfOne, chain, mode);
+      ASSERT_EQ(d.size(), static_cast<std::size_t>(n));
+      for (const auto& x : d)
+        EXPECT_FALSE(x.has_value());
+    }
+  }
+}
+
 TEST(Hmm, DecisionModeNames) {
   for (DecisionMode m : kDecisionModes)
     EXPECT_EQ(parseDecisionMode(decisionModeName(m)), m);

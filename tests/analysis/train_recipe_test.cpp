@@ -298,11 +298,11 @@ TEST(ClassifyRun, ChunkedEvaluationEqualsTheWholeMatrixAtOnce) {
       EXPECT_FALSE(gc.predicted[t].has_value()) << t;
       continue;
     }
-    ++contact;
+    // A row per contact step, in step order.
+    const auto row = static_cast<Eigen::Index>(contact++);
+    ASSERT_LT(row, gc.logLikelihoods.rows()) << t;
     for (Eigen::Index c = 0; c < all.cols(); ++c)
-      ASSERT_EQ(gc.logLikelihoods(static_cast<Eigen::Index>(t), c),
-                all(static_cast<Eigen::Index>(t), c))
-          << t;
+      ASSERT_EQ(gc.logLikelihoods(row, c), all(static_cast<Eigen::Index>(t), c)) << t;
     ASSERT_EQ(gc.predicted[t], pred[t]) << t;
   }
   EXPECT_GT(contact, 3u * 4096u);  // several chunks

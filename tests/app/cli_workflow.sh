@@ -78,6 +78,38 @@ steps=$(grep -v '^#' b1/room1_0001.csv | tail -n +2 | wc -l)
   fail "classify --db: $(wc -l < db.csv) lines for $steps steps"
 head -1 db.csv | grep -q '^step,group,class,no_contact_rule' || fail "classify header"
 cmp -s file.csv db.csv || fail "the exported and the stored model classify differently"
+# Each contact step's log-likelihoods, in the CSV and in the JSON, are that step's own: with the
+# model's log priors their argmax is the step's per-step class.
+"$T" classify --model wf.json --run b1/room1_0001.csv --json --out file.json > /dev/null \
+  2> /dev/null || fail "classify --json exited $?"
+python3 - wf.json file.csv file.json << 'EOF' || fail "classify's log-likelihoods are not their steps'"
+import csv, json, sys
+models = {m["group"]: m for m in json.load(open(sys.argv[1]))["models"]}
+def best(group, values):  # a log-likelihood of -inf is written empty (CSV) or null (JSON)
+    values = [float("-inf") if v in ("", None) else float(v) for v in values]
+    m = models[group]
+    return max(range(len(m["classes"])), key=lambda k: (values[k] + m["priors"][k], -k))
+contact = 0
+for row in csv.DictReader(open(sys.argv[2])):
+    if row["no_contact_rule"] == "1" or row["group"] not in models:
+        continue
+    m = models[row["group"]]
+    values = [row["loglik_" + c] for c in m["classes"]]
+    assert m["classes"][best(row["group"], values)] == row["step_class"], row
+    contact += 1
+doc = json.load(open(sys.argv[3]))
+for group, g in doc["groups"].items():
+    if not g["model"]:
+        continue
+    names = models[group]["classes"]
+    for t, rule in enumerate(g["no_contact_rule"]):
+        values = [g["loglik"][c][t] for c in names]
+        if rule:
+            assert all(v is None for v in values), (group, t)
+            continue
+        assert names[best(group, values)] == g["step_class"][t], (group, t)
+assert contact > 0, "no contact step"
+EOF
 
 # A sweep over stored runs, listed and reported.
 "$T" sweep --db w.db --set truth --train-runs room1_0000 room1_0001 ch5_0000 \

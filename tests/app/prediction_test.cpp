@@ -16,7 +16,9 @@
 #include <memory>
 
 #include "analysis/classify_run.h"
+#include "analysis/features.h"
 #include "analysis/hole_detection.h"
+#include "analysis/temporal.h"
 #include "app/gui/common/window_geometry.h"
 #include "app/gui/labels/label_model.h"
 #include "app/gui/learning/model_picker_dialog.h"
@@ -161,8 +163,17 @@ void PredictionTest::predictionsEqualCore(Predicted& p) {
       QVERIFY(std::isfinite(conf) && conf >= 0.0f && conf <= 1.0f);
       if (cls && *cls != ContactClass::NoContact) {
         ++predicted;
-        // With C classes the winner's posterior is at least 1 / C.
+        // With C classes the winner's posterior is at least 1 / C...
         QVERIFY(conf >= 1.0f / static_cast<float>(core.model->classes.size()) - 1e-6f);
+        // ...and it is the classifier's own posterior of that step's features.
+        const analysis::ClassModelSet& classifier = core.model->classifier;
+        Eigen::MatrixXd x(1, analysis::featureDimension(g.group, core.model->features));
+        analysis::groupFeatures(classified->run, t, g.group, core.model->features, x.data());
+        Eigen::MatrixXd ll;
+        classifier.logLikelihoods(x, ll);
+        const Eigen::VectorXd joint = ll.row(0).transpose() + classifier.logPriors();
+        const double expected = std::exp(joint[*core.predicted[t]] - analysis::logSumExp(joint));
+        QVERIFY2(std::abs(conf - expected) < 1e-5, qPrintable(QString::number(t)));
       }
     }
   }

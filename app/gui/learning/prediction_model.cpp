@@ -89,12 +89,16 @@ void fillGroup(const analysis::GroupClassification& g, std::size_t steps, GroupP
             static_cast<std::int8_t>(g.model->classes[static_cast<std::size_t>(*(*from)[t])]);
     }
   }
+  // A row of likelihoods per contact step, in step order.
   const Eigen::MatrixXd post = logPosteriors(g.logLikelihoods, g.model->classifier.logPriors());
+  Eigen::Index row = 0;
   for (std::size_t t = 0; t < steps && t < g.predicted.size(); ++t) {
+    if (t < g.noContactRule.size() && g.noContactRule[t]) continue;
+    const Eigen::Index here = row++;
     if (!g.predicted[t]) continue;
     const int c = *g.predicted[t];
     out.cls[t] = static_cast<std::int8_t>(g.model->classes[static_cast<std::size_t>(c)]);
-    const double p = std::exp(post(static_cast<Eigen::Index>(t), c));
+    const double p = here < post.rows() ? std::exp(post(here, c)) : 0.0;
     out.confidence[t] = std::isfinite(p) ? static_cast<float>(std::clamp(p, 0.0, 1.0)) : 0.0f;
   }
 }
